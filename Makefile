@@ -1,0 +1,91 @@
+# uasrisk: drone-on-person impact risk workbench.
+#   make          build ./uasrisk and build/libuasrisk.a
+#   make run      set up, build, start the workbench (replays sessions/demo.ses without a terminal)
+#   make check    set up, build, run every test
+#   make bench    benchmarks (not part of check)
+#   make install PREFIX=/usr/local
+
+PREFIX  ?= /usr/local
+CC      ?= cc
+OPT     ?= -O2 -g
+BUILD   ?= build
+CFLAGS  += $(OPT) -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Wall -Wextra -Wshadow \
+           -Wno-unused-parameter -Wno-missing-field-initializers -Iinclude -MMD -MP -pthread
+LDFLAGS += -pthread
+
+CORE_LIBS = -lgsl -lgslcblas -lm
+APP_LIBS  = -lreadline -lncursesw -ltinfo
+TEST_LIBS = -lcmocka
+
+CORE_SRC  = $(sort $(wildcard src/core/*.c))
+APP_SRC   = $(filter-out src/app/main.c,$(sort $(wildcard src/app/*.c)))
+TEST_SRC  = $(sort $(wildcard tests/test_*.c))
+BENCH_SRC = $(sort $(wildcard tests/bench_*.c))
+MODELS    = $(sort $(wildcard src/models/*.urm))
+
+CORE_OBJ  = $(CORE_SRC:%.c=$(BUILD)/%.o) $(if $(MODELS),$(BUILD)/models/builtin.o)
+APP_OBJ   = $(APP_SRC:%.c=$(BUILD)/%.o)
+TEST_BIN  = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
+
+LIB     = $(BUILD)/libuasrisk.a
+APPLIB  = $(BUILD)/libuasrisk-app.a
+
+.PHONY: all deps run check test bench install clean
+all: uasrisk $(LIB)
+
+# install missing Debian packages (quick no-op when all are there)
+deps:
+	@sh scripts/setup.sh
+
+$(BUILD)/%.o: %.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -c $< -o $@
+
+# built-in models: the .urm text files compiled in verbatim
+$(BUILD)/models/builtin.c: $(MODELS) scripts/embed.sh
+	@mkdir -p $(dir $@)
+	sh scripts/embed.sh $(MODELS) > $@
+$(BUILD)/models/builtin.o: $(BUILD)/models/builtin.c
+	$(CC) $(CFLAGS) -c $< -o $@
+
+$(LIB): $(CORE_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(APPLIB): $(APP_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+uasrisk: $(BUILD)/src/app/main.o $(APPLIB) $(LIB)
+	$(CC) $(LDFLAGS) -o $@ $^ $(APP_LIBS) $(CORE_LIBS)
+
+$(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(TEST_LIBS) $(APP_LIBS) $(CORE_LIBS)
+
+run: all
+	@if [ -t 0 ]; then ./uasrisk; else ./uasrisk sessions/demo.ses; fi
+
+check: all $(TEST_BIN)
+	@sh scripts/runtests.sh $(TEST_BIN)
+
+test: check
+
+bench: all $(BENCH_BIN)
+	@for b in $(BENCH_BIN); do $$b || exit 1; done
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/uasrisk \
+	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
+	install -m 755 uasrisk $(DESTDIR)$(PREFIX)/bin/
+	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/
+	install -m 644 include/uasrisk/*.h $(DESTDIR)$(PREFIX)/include/uasrisk/
+	install -m 644 man/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
+	for f in man/*.5; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man5/; done; true
+	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man7/; done; true
+
+clean:
+	rm -rf $(BUILD) uasrisk
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

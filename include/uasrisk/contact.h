@@ -1,0 +1,129 @@
+/* contact.h: contact geometry (ellipsoids, planes), force-penetration laws and the
+ * uniform-pressure airbag gas law. Pure functions on caller-owned data: no globals, no I/O,
+ * safe to call from any number of threads.
+ *
+ * Conventions: SI units. A rotation matrix R is row-major, local -> world (x_world = c + R x_local),
+ * so column k of R is the k-th local axis in world coordinates. Penetration depth g > 0 means
+ * overlap, g < 0 separation. Rates are d(depth)/dt: positive while approaching.
+ */
+#ifndef UASRISK_CONTACT_H
+#define UASRISK_CONTACT_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define urMAXCURVE 48              /* points in a tabulated curve */
+
+/* ---- geometry ---- */
+
+typedef struct {
+  double c[3];                     /* centre, world */
+  double R[9];                     /* orientation, row-major, local -> world */
+  double r[3];                     /* semi-axes along the local axes */
+} urEllipsoid;
+
+typedef struct {
+  double g;                        /* signed depth: > 0 overlap, < 0 -(separation distance) */
+  double n[3];                     /* unit normal from A towards B (plane: the plane normal) */
+  double pa[3];                    /* deepest point of A (support point of A along n) */
+  double pb[3];                    /* deepest point of B (support point of B along -n) */
+  double p[3];                     /* contact point: midpoint of pa and pb */
+  int iters;                       /* iterations used (ellipsoid pairs) */
+} urGeomContact;
+
+/* Ellipsoid against the half-space {x : n.x <= d} (n unit, pointing out of the solid).
+   The normal reported is -n (from the ellipsoid into the solid) so that the force on the
+   ellipsoid is -F*out.n = +F*n. Returns 1 if g > 0, else 0 (out is filled either way). */
+int ur_collide_ellipsoid_plane(const urEllipsoid* e, const double n[3], double d,
+                               urGeomContact* out);
+
+/* Exact signed distance between two ellipsoids by minimising the support function of the
+   Minkowski difference over the unit sphere. u: in, warm start direction (A towards B) or
+   all zeros for a cold start; out, the minimiser. Returns 1 if g > 0, else 0. */
+int ur_collide_ellipsoids(const urEllipsoid* a, const urEllipsoid* b, double u[3],
+                          urGeomContact* out);
+
+/* Area of the section of an ellipsoid by the plane normal to unit n at depth d below its
+   support point in direction n, and the volume of the cap cut off; d clamped to [0, 2 sigma]. */
+double ur_section_area(const urEllipsoid* e, const double n[3], double d);
+double ur_cap_volume(const urEllipsoid* e, const double n[3], double d);
+
+/* ---- force laws ---- */
+
+typedef struct {
+  int n;                           /* number of points; 0 = absent */
+  double x[urMAXCURVE];            /* ascending */
+  double y[urMAXCURVE];
+} urCurve;
+
+/* piecewise-linear interpolation, linear extrapolation beyond the ends */
+double ur_curve_eval(const urCurve* c, double x);
+
+typedef enum {
+  urLAW_HERTZ = 0,                 /* Hertz, optional Jackson-Green plastic loading + Brake unloading */
+  urLAW_TABLE,                     /* tabulated force-penetration loading/unloading with hysteresis */
+  urLAW_FOAM                       /* section area(penetration) x stress(strain), load/unload */
+} urLawType;
+
+typedef struct {
+  urLawType type;
+  /* Hertz / Brake */
+  double estar;                    /* effective modulus E*, Pa */
+  double radius;                   /* effective radius, m */
+  double sy;                       /* yield strength of the softer body, Pa */
+  double nu;                       /* Poisson ratio of the yielding body */
+  int plastic;                     /* 1: JG loading beyond yield and Brake elastic unloading */
+  /* tabulated (urLAW_TABLE): force (N) against penetration (m) */
+  urCurve load;
+  urCurve unload;                  /* empty: unload along the loading curve (elastic) */
+  /* foam (urLAW_FOAM) */
+  urCurve stress;                  /* loading stress (Pa) against strain */
+  double thickness;                /* foam thickness, m: strain = depth / thickness */
+  double unload_r;                 /* residual strain as a fraction of the maximum strain */
+  double unload_p;                 /* exponent of the unloading curve */
+  /* all laws */
+  double damping;                  /* linear viscous term, N s/m, acts while in contact */
+  double chi;                      /* Hunt-Crossley-type factor, s/m: F *= 1 + chi*rate */
+  double mu;                       /* Coulomb friction coefficient */
+  double v_eps;                    /* friction regularisation speed, m/s */
+} urLaw;
+
+/* per-run, per-pair history (lives in the run data, never in the model) */
+typedef struct {
+  double dmax;                     /* largest depth reached */
+  double fmax;                     /* elastic (rate-free) force at dmax */
+  double dres;                     /* residual depth after unloading (permanent set) */
+  int touching;
+} urLawState;
+
+/* fill a Hertz law from the two materials (R2 = 0 means a flat) */
+void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, double nu2, double R2,
+                  double sy, double nu_yield, int plastic);
+
+/* normal force (>= 0) at depth d (> 0) and rate; area is the section area (foam only).
+   Does not change the state. */
+double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate, double area);
+
+/* record depth d on an accepted step (updates dmax, fmax, dres, touching) */
+void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, double area);
+
+/* ---- uniform-pressure airbag gas law ---- */
+
+typedef struct {
+  double v0;                       /* inflated volume, m^3 */
+  double p0;                       /* initial absolute pressure, Pa */
+  double patm;                     /* ambient pressure, Pa */
+  double gamma;                    /* ratio of specific heats */
+} urGas;
+
+/* absolute pressure after the volume has dropped by dv (adiabatic, closed: P V^gamma = const) */
+double ur_gas_pressure(const urGas* gas, double dv);
+
+/* work done on the gas when the volume drops from v0 by dv (J) */
+double ur_gas_work(const urGas* gas, double dv);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,25 @@
+#!/bin/sh
+# setup.sh: install the Debian packages uasrisk needs, only those that are missing.
+# Called by the Makefile (make deps, run, check); safe to run again; prints nothing when all is there.
+set -e
+
+pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev gnuplot-nox tmux"
+[ -n "$UASRISK_EXTRA_PKGS" ] && pkgs="$pkgs $UASRISK_EXTRA_PKGS"
+
+missing=""
+for p in $pkgs; do
+  st=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  case "$st" in
+    *"install ok installed"*) ;;
+    *) missing="$missing $p" ;;
+  esac
+done
+[ -z "$missing" ] && exit 0
+
+echo "setup: installing missing Debian packages:$missing"
+if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+# shellcheck disable=SC2086
+$SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
+echo "setup: done"
