@@ -1,3 +1,75 @@
-/* main.c: placeholder entry point, replaced by the REPL */
+/* main.c: command line: uasrisk [-i] [-c COMMANDS] [FILE]... */
 #include <stdio.h>
-int main(void) { puts("uasrisk"); return 0; }
+#include <string.h>
+#include <unistd.h>
+
+#include "app.h"
+
+static void usage(FILE* f) {
+  fprintf(f,
+          "usage: uasrisk [-i] [-c COMMANDS] [FILE]...\n"
+          "  with no arguments: interactive on a terminal, else replay standard input\n"
+          "  FILE         replay a session script\n"
+          "  -c COMMANDS  run commands (separated by ';')\n"
+          "  -i           stay interactive after the scripts and commands\n"
+          "  -h, --help   this text; see uasrisk(1)\n");
+}
+
+int main(int argc, char** argv) {
+  static uraCtx ctx;
+  uraCtx* c = &ctx;
+  ura_init(c);
+
+  /* options first: -i anywhere, help */
+  int stay = 0, work = 0;
+  for (int i = 1; i < argc; i++) {
+    if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
+      usage(stdout);
+      return 0;
+    } else if (!strcmp(argv[i], "-i")) {
+      stay = 1;
+    } else if (!strcmp(argv[i], "-c")) {
+      if (i + 1 >= argc) {
+        fprintf(stderr, "uasrisk: -c needs the commands as its argument\n");
+        return 2;
+      }
+      i++;
+      work = 1;
+    } else if (argv[i][0] == '-' && argv[i][1]) {
+      fprintf(stderr, "uasrisk: unknown option '%s'\n", argv[i]);
+      usage(stderr);
+      return 2;
+    } else {
+      work = 1;
+    }
+  }
+
+  /* scripts and -c commands in the order given; the first failure ends the run */
+  for (int i = 1; i < argc && !c->quit; i++) {
+    int rc = 0;
+    if (!strcmp(argv[i], "-i")) continue;
+    if (!strcmp(argv[i], "-c")) {
+      rc = ura_run_line(c, argv[++i]);
+      if (rc) ura_locate(c, "-c", 1);
+    } else {
+      rc = ura_run_file(c, argv[i]);
+      if (rc) ura_locate(c, argv[i], 0);
+    }
+    if (rc) {
+      fprintf(stderr, "%s\n", c->err);
+      if (!stay) return 1;
+      break;
+    }
+  }
+  if (c->quit) return 0;
+
+  /* interactive on a terminal; otherwise standard input is a script */
+  if (stay || (!work && isatty(STDIN_FILENO))) return ura_repl(c);
+  if (!work) {
+    if (ura_run_stream(c, stdin, "<stdin>")) {
+      fprintf(stderr, "%s\n", c->err);
+      return 1;
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,138 @@
+/* app.h: the application layer of uasrisk: live case state, command table, output.
+ * Prefix ura_ (application), types ura*. The numerical core (libuasrisk) knows nothing of this.
+ */
+#ifndef UASRISK_APP_H
+#define UASRISK_APP_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "uasrisk/descent.h"
+#include "uasrisk/parametric.h"
+
+#define uraMAXLIST 64              /* values in a list parameter */
+#define uraERRLEN 1024
+
+/* ---- live case state ---- */
+
+typedef enum { uraFMT_TABLE = 0, uraFMT_CSV } uraFormat;
+
+typedef struct {
+  char casename[8];                /* A, B, C, A1, A2 */
+  urDescentParams descent;         /* descent model parameters (wind is the live wind) */
+  urParametricParams para;         /* Appendix D parameters */
+  double winds[uraMAXLIST];        /* wind list for descent/parametric/sweeps, m/s */
+  int nwinds;
+  double speed, angle;             /* impact speed (m/s) and descent angle (deg) when set */
+  int speed_set, angle_set;        /* 0: derived from the descent model */
+  double face;                     /* face direction phi, deg */
+  int format;                      /* uraFormat */
+} uraState;
+
+/* ---- context ---- */
+
+typedef struct uraCtx {
+  uraState st;
+  FILE* out;                       /* results */
+  FILE* msg;                       /* errors and notes */
+  char err[uraERRLEN];             /* message of the last failure */
+  int err_located;                 /* err already starts with FILE:LINE: */
+  int interactive;                 /* a person is typing: errors do not stop anything */
+  int depth;                       /* nesting of source */
+  int quit;                        /* set by quit */
+} uraCtx;
+
+/* record a failure message; always returns -1 */
+int ura_fail(uraCtx* c, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+
+void ura_init(uraCtx* c);
+void ura_state_defaults(uraState* s);
+
+/* ---- strict parsing ---- */
+
+/* a finite decimal number (no hex, nan, inf, empty, or trailing text) */
+int ura_parse_number(const char* s, double* v);
+/* a comma-separated list of numbers; returns count or -1 */
+int ura_parse_list(const char* s, double* v, int max);
+
+/* ---- parameters (one table drives set, show, save and completion) ---- */
+
+typedef enum { uraP_NUM = 0, uraP_LIST, uraP_ENUM, uraP_CASE } uraPKind;
+
+typedef struct {
+  const char* name;
+  uraPKind kind;
+  size_t off;                      /* offset of the value in uraState */
+  size_t setoff;                   /* offset of the int "set" flag of a derivable value, or 0 */
+  const char* unit;
+  double min, max;                 /* accepted closed range (numbers and list items) */
+  const char* help;
+  const char* const* choices;      /* uraP_ENUM: NULL-terminated names */
+} uraParam;
+
+extern const uraParam ura_params[];
+const uraParam* ura_param_find(const char* name);
+int ura_param_set(uraCtx* c, const uraParam* p, const char* value);
+/* the value as text (without unit) into buf, exact (round-trips through set); a derivable
+   value that is not set prints as auto */
+void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n);
+
+/* current impact speed and angle: set values, or the descent model at the live wind */
+int ura_impact_conditions(uraCtx* c, double* speed, double* angle);
+
+/* load a paper case preset: A, B, C, A1, A2 (wind and face are kept) */
+int ura_case_load(uraCtx* c, const char* name);
+extern const char* const ura_case_names[];
+
+/* ---- tabular output ---- */
+
+typedef struct uraTable uraTable;
+uraTable* ura_table_new(int ncol, const char* const* names);
+void ura_table_cell(uraTable* t, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+void ura_table_note(uraTable* t, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+/* print (aligned table or CSV, per the format setting) and free */
+void ura_table_print(uraCtx* c, uraTable* t);
+
+/* ---- commands ---- */
+
+typedef int (*uraCmdFn)(uraCtx* c, int argc, char** argv);
+
+typedef enum { uraC_NONE = 0, uraC_PARAM, uraC_CASE, uraC_COMMAND, uraC_FILE, uraC_POF }
+  uraCompl;
+
+typedef struct {
+  const char* name;
+  uraCmdFn fn;
+  int minargs, maxargs;            /* argument count range (maxargs -1: any) */
+  uraCompl compl;                  /* what the first argument completes to */
+  const char* usage;
+  const char* help;
+} uraCmd;
+
+extern const uraCmd ura_cmds[];
+const uraCmd* ura_cmd_find(const char* name);
+
+/* run one command line (may hold several commands separated by ';'); 0 or -1 */
+int ura_run_line(uraCtx* c, const char* line);
+/* prefix the failure message with NAME:LINE: (LINE 0: NAME: only), once */
+void ura_locate(uraCtx* c, const char* name, int lineno);
+/* run a script file; errors are reported as FILE:LINE: message; 0 or -1 */
+int ura_run_file(uraCtx* c, const char* path);
+/* run a script from an open stream, naming it name in messages */
+int ura_run_stream(uraCtx* c, FILE* f, const char* name);
+
+/* command handlers, one file per group */
+int ura_cmd_help(uraCtx* c, int argc, char** argv);
+int ura_cmd_set(uraCtx* c, int argc, char** argv);
+int ura_cmd_show(uraCtx* c, int argc, char** argv);
+int ura_cmd_reset(uraCtx* c, int argc, char** argv);
+int ura_cmd_case(uraCtx* c, int argc, char** argv);
+int ura_cmd_source(uraCtx* c, int argc, char** argv);
+int ura_cmd_quit(uraCtx* c, int argc, char** argv);
+int ura_cmd_descent(uraCtx* c, int argc, char** argv);
+int ura_cmd_parametric(uraCtx* c, int argc, char** argv);
+
+/* interactive loop on GNU readline */
+int ura_repl(uraCtx* c);
+
+#endif

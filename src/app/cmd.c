@@ -1,0 +1,108 @@
+/* cmd.c: the command table (dispatch, help and completion all read it) and the state commands */
+#include <stdio.h>
+#include <string.h>
+
+#include "app.h"
+
+/* the one command table: name, handler, argument range, completion, usage, help */
+const uraCmd ura_cmds[] = {
+  {"help", ura_cmd_help, 0, 1, uraC_COMMAND, "help [COMMAND]",
+   "list the commands, or explain one"},
+  {"set", ura_cmd_set, 2, 2, uraC_PARAM, "set NAME VALUE",
+   "change a parameter of the live case (see 'show' for names, units and ranges)"},
+  {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
+   "print the live case state with units, or one parameter; derived values say so"},
+  {"case", ura_cmd_case, 1, 1, uraC_CASE, "case A|B|C|A1|A2",
+   "load the paper's preset for a case; wind and face keep their values"},
+  {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
+  {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
+   "impact speed and descent angle for each wind in 'winds' (paper Table 2); "
+   "columns case,wind,speed,angle"},
+  {"parametric", ura_cmd_parametric, 0, 0, uraC_NONE, "parametric",
+   "Appendix D parametric areas and fatality probabilities for each wind in 'winds' "
+   "(paper Table 3); columns case,wind,speed,angle,planform,mtow,gliding,pof_rcc,pof_bc,pof_awke"},
+  {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
+   "run the commands of a session script; errors name the file and line"},
+  {"quit", ura_cmd_quit, 0, 0, uraC_NONE, "quit", "leave uasrisk (also: exit, Ctrl-D)"},
+  {"exit", ura_cmd_quit, 0, 0, uraC_NONE, "exit", "leave uasrisk"},
+  {NULL, NULL, 0, 0, uraC_NONE, NULL, NULL}
+};
+
+const uraCmd* ura_cmd_find(const char* name) {
+  for (const uraCmd* k = ura_cmds; k->name; k++) {
+    if (!strcmp(k->name, name)) return k;
+  }
+  return NULL;
+}
+
+int ura_cmd_help(uraCtx* c, int argc, char** argv) {
+  /* one command in detail */
+  if (argc == 2) {
+    const uraCmd* k = ura_cmd_find(argv[1]);
+    if (!k) {
+      return ura_fail(c, "help: no command '%s'; type 'help' for the list", argv[1]);
+    }
+    fprintf(c->out, "usage: %s\n  %s\n", k->usage, k->help);
+    return 0;
+  }
+
+  /* the whole table */
+  fprintf(c->out, "commands (help COMMAND for one; set/show NAME for parameters):\n");
+  for (const uraCmd* k = ura_cmds; k->name; k++) {
+    fprintf(c->out, "  %-26s %s\n", k->usage, k->help);
+  }
+  return 0;
+}
+
+int ura_cmd_set(uraCtx* c, int argc, char** argv) {
+  const uraParam* p = ura_param_find(argv[1]);
+  if (!p) {
+    return ura_fail(c, "set: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
+  }
+  return ura_param_set(c, p, argv[2]);
+}
+
+/* one line of show: name, value, unit, and where a derived value comes from */
+static int show_one(uraCtx* c, const uraParam* p) {
+  char val[1024];
+  const char* note = "";
+  if (p->setoff && !*(const int*)((const char*)&c->st + p->setoff)) {
+    double speed, angle;
+    if (ura_impact_conditions(c, &speed, &angle)) return -1;
+    snprintf(val, sizeof val, "%.6g", !strcmp(p->name, "speed") ? speed : angle);
+    note = "  (derived: descent model at the live wind)";
+  } else {
+    ura_param_format(c, p, val, sizeof val);
+    if (p->setoff) note = "  (set)";
+  }
+  fprintf(c->out, "%-16s %s%s%s%s\n", p->name, val, *p->unit ? " " : "", p->unit, note);
+  return 0;
+}
+
+int ura_cmd_show(uraCtx* c, int argc, char** argv) {
+  if (argc == 2) {
+    const uraParam* p = ura_param_find(argv[1]);
+    if (!p) {
+      return ura_fail(c, "show: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
+    }
+    return show_one(c, p);
+  }
+  for (const uraParam* p = ura_params; p->name; p++) {
+    if (show_one(c, p)) return -1;
+  }
+  return 0;
+}
+
+int ura_cmd_case(uraCtx* c, int argc, char** argv) {
+  return ura_case_load(c, argv[1]);
+}
+
+int ura_cmd_reset(uraCtx* c, int argc, char** argv) {
+  ura_state_defaults(&c->st);
+  return 0;
+}
+
+int ura_cmd_quit(uraCtx* c, int argc, char** argv) {
+  c->quit = 1;
+  return 0;
+}

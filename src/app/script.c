@@ -1,0 +1,140 @@
+/* script.c: command lines and session scripts: comments, ';', quoting, FILE:LINE errors */
+#include <ctype.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+
+#define MAXARGS 64
+#define MAXDEPTH 16
+
+/* printable copy of untrusted text for messages (control and non-ASCII bytes as \xNN) */
+static void printable(const char* s, char* buf, size_t n) {
+  size_t k = 0;
+  for (; *s && k + 5 < n; s++) {
+    unsigned char ch = (unsigned char)*s;
+    if (ch >= 32 && ch < 127) buf[k++] = (char)ch;
+    else k += snprintf(buf + k, n - k, "\\x%02x", ch);
+  }
+  buf[k] = 0;
+}
+
+void ura_locate(uraCtx* c, const char* name, int lineno) {
+  if (c->err_located) return;
+  char tmp[uraERRLEN + 300];
+  if (lineno > 0) snprintf(tmp, sizeof tmp, "%.200s:%d: %s", name, lineno, c->err);
+  else snprintf(tmp, sizeof tmp, "%.200s: %s", name, c->err);
+  size_t n = strlen(tmp);
+  if (n >= sizeof c->err) n = sizeof c->err - 1;
+  memcpy(c->err, tmp, n);
+  c->err[n] = 0;
+  c->err_located = 1;
+}
+
+/* split one command into words in place; double quotes group; returns argc or -1 */
+static int split_words(char* s, char** argv, uraCtx* c) {
+  int argc = 0;
+  while (*s) {
+    while (isspace((unsigned char)*s)) s++;
+    if (!*s) break;
+    if (argc == MAXARGS) return ura_fail(c, "too many words in one command (at most %d)", MAXARGS);
+    if (*s == '"') {
+      char* end = strchr(++s, '"');
+      if (!end) return ura_fail(c, "unterminated quote");
+      *end = 0;
+      argv[argc++] = s;
+      s = end + 1;
+    } else {
+      argv[argc++] = s;
+      while (*s && !isspace((unsigned char)*s)) s++;
+      if (*s) *s++ = 0;
+    }
+  }
+  return argc;
+}
+
+/* run one command given as words */
+static int run_words(uraCtx* c, int argc, char** argv) {
+  char name[128];
+  const uraCmd* cmd = ura_cmd_find(argv[0]);
+  if (!cmd) {
+    printable(argv[0], name, sizeof name);
+    return ura_fail(c, "unknown command '%s'; type 'help' for the list of commands", name);
+  }
+  int nargs = argc - 1;
+  if (nargs < cmd->minargs || (cmd->maxargs >= 0 && nargs > cmd->maxargs)) {
+    return ura_fail(c, "%s: wrong number of arguments (%d); usage: %s", cmd->name, nargs,
+                    cmd->usage);
+  }
+  return cmd->fn(c, argc, argv);
+}
+
+int ura_run_line(uraCtx* c, const char* line) {
+  size_t n = strlen(line);
+  char* buf = malloc(n + 1);
+  memcpy(buf, line, n + 1);
+
+  /* cut the comment and split at ';' (both outside quotes), running each piece */
+  int rc = 0, inq = 0;
+  char* start = buf;
+  for (char* p = buf;; p++) {
+    int end = (*p == 0) || (!inq && *p == '#');
+    if (*p == '"') inq = !inq;
+    if (end || (!inq && *p == ';')) {
+      char save = *p;
+      *p = 0;
+      char* argv[MAXARGS];
+      int argc = split_words(start, argv, c);
+      if (argc < 0) rc = -1;
+      else if (argc > 0) rc = run_words(c, argc, argv);
+      if (rc || end || save == 0 || c->quit) break;
+      start = p + 1;
+    }
+  }
+  free(buf);
+  return rc;
+}
+
+int ura_run_stream(uraCtx* c, FILE* f, const char* name) {
+  char* line = NULL;
+  size_t cap = 0;
+  ssize_t len;
+  int lineno = 0, rc = 0;
+  while (!c->quit && (len = getline(&line, &cap, f)) >= 0) {
+    lineno++;
+
+    /* binary input: refuse before interpreting anything */
+    if (memchr(line, 0, len)) {
+      rc = ura_fail(c, "line contains a NUL byte; scripts are text files");
+    } else {
+      if (len > 0 && line[len - 1] == '\n') line[--len] = 0;
+      if (len > 0 && line[len - 1] == '\r') line[--len] = 0;
+      rc = ura_run_line(c, line);
+    }
+    if (rc) {
+      ura_locate(c, name, lineno);
+      break;
+    }
+  }
+  free(line);
+  return rc;
+}
+
+int ura_run_file(uraCtx* c, const char* path) {
+  if (c->depth >= MAXDEPTH) {
+    return ura_fail(c, "source: nesting deeper than %d (does a script source itself?)", MAXDEPTH);
+  }
+  FILE* f = fopen(path, "r");
+  if (!f) return ura_fail(c, "cannot open '%s': %s", path, strerror(errno));
+  c->depth++;
+  int rc = ura_run_stream(c, f, path);
+  c->depth--;
+  fclose(f);
+  return rc;
+}
+
+int ura_cmd_source(uraCtx* c, int argc, char** argv) {
+  return ura_run_file(c, argv[1]);
+}

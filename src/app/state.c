@@ -1,0 +1,231 @@
+/* state.c: the live case: defaults, paper presets, and the parameter table behind set/show */
+#include <math.h>
+#include <stdlib.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+#include "app.h"
+
+#define OFF(f) offsetof(uraState, f)
+
+static const char* const format_names[] = {"table", "csv", NULL};
+const char* const ura_case_names[] = {"A", "B", "C", "A1", "A2", NULL};
+
+/* one row per settable quantity: name, kind, offset, derived flag, unit, range, help */
+const uraParam ura_params[] = {
+  {"case", uraP_CASE, OFF(casename), 0, "", 0, 0,
+   "paper case: A (parachute, 1.0 atm bottom airbag), B (parachute), C (none), "
+   "A1 (1.1 atm bottom), A2 (1.1 atm bottom and front); change it with 'case'", NULL},
+  {"wind", uraP_NUM, OFF(descent.wind), 0, "m/s", 0, 60, "horizontal wind speed", NULL},
+  {"face", uraP_NUM, OFF(face), 0, "deg", -360, 360,
+   "face direction phi of the person; 0 faces the incoming drone (into the wind)", NULL},
+  {"winds", uraP_LIST, OFF(winds), 0, "m/s", 0, 60,
+   "wind speeds of the rows of descent and parametric", NULL},
+  {"speed", uraP_NUM, OFF(speed), OFF(speed_set), "m/s", 0.01, 200,
+   "impact speed; derived from the descent model unless set ('set speed auto')", NULL},
+  {"angle", uraP_NUM, OFF(angle), OFF(angle_set), "deg", 1, 90,
+   "descent angle psi from the horizontal; derived unless set ('set angle auto')", NULL},
+  {"altitude", uraP_NUM, OFF(descent.altitude), 0, "m", 0.1, 10000,
+   "height at which the descent starts (from rest)", NULL},
+  {"mass", uraP_NUM, OFF(descent.mass), 0, "kg", 0.01, 1000,
+   "mass of the UAS (descent, MTOW area, impact energy)", NULL},
+  {"area_drone", uraP_NUM, OFF(descent.area_drone), 0, "m^2", 0, 100,
+   "reference area of the drone A_S^d", NULL},
+  {"cd_drone", uraP_NUM, OFF(descent.cd_drone), 0, "", 0, 10, "drag coefficient of the drone", NULL},
+  {"area_chute", uraP_NUM, OFF(descent.area_chute), 0, "m^2", 0, 1000,
+   "reference area of the parachute A_S^p (0: no parachute)", NULL},
+  {"cd_chute", uraP_NUM, OFF(descent.cd_chute), 0, "", 0, 10,
+   "drag coefficient of the parachute", NULL},
+  {"rho", uraP_NUM, OFF(descent.rho), 0, "kg/m^3", 0.01, 10, "air density", NULL},
+  {"g", uraP_NUM, OFF(descent.g), 0, "m/s^2", 0.01, 100, "gravitational acceleration", NULL},
+  {"width", uraP_NUM, OFF(para.width), 0, "m", 0.001, 100,
+   "UAS width across the course (planform, gliding area)", NULL},
+  {"length", uraP_NUM, OFF(para.length), 0, "m", 0.001, 100,
+   "UAS length along the course (planform, gliding area)", NULL},
+  {"cfit", uraP_NUM, OFF(para.cfit), 0, "m^2/kg", 0, 100, "MTOW area coefficient c_fit", NULL},
+  {"person_height", uraP_NUM, OFF(para.person_height), 0, "m", 0.1, 3,
+   "person height H_P of the gliding area (D.1)", NULL},
+  {"person_diameter", uraP_NUM, OFF(para.person_diameter), 0, "m", 0, 2,
+   "person diameter 2R_P of the gliding area (D.1)", NULL},
+  {"slide", uraP_NUM, OFF(para.slide), 0, "m", 0, 1000, "slide distance D_slide (D.1)", NULL},
+  {"body_mass", uraP_NUM, OFF(para.body_mass), 0, "kg", 1, 500,
+   "whole-body mass of the person (Blunt Criterion)", NULL},
+  {"bc_diameter", uraP_NUM, OFF(para.bc_diameter), 0, "m", 0.001, 10,
+   "impactor diameter D_imp of the Blunt Criterion", NULL},
+  {"format", uraP_ENUM, OFF(format), 0, "", 0, 0,
+   "output of tabular commands: aligned table or CSV with one header line", format_names},
+  {NULL, 0, 0, 0, NULL, 0, 0, NULL, NULL}
+};
+
+int ura_fail(uraCtx* c, const char* fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(c->err, sizeof c->err, fmt, ap);
+  va_end(ap);
+  c->err_located = 0;
+  return -1;
+}
+
+void ura_state_defaults(uraState* s) {
+  memset(s, 0, sizeof *s);
+  strcpy(s->casename, "A");
+  ur_descent_defaults(&s->descent);
+  ur_parametric_defaults(&s->para);
+  for (int i = 0; i < 6; i++) s->winds[i] = 2.0 * i;
+  s->nwinds = 6;
+  s->face = 0;
+  s->format = uraFMT_TABLE;
+}
+
+void ura_init(uraCtx* c) {
+  memset(c, 0, sizeof *c);
+  ura_state_defaults(&c->st);
+  c->out = stdout;
+  c->msg = stderr;
+}
+
+const uraParam* ura_param_find(const char* name) {
+  for (const uraParam* p = ura_params; p->name; p++) {
+    if (!strcmp(p->name, name)) return p;
+  }
+  return NULL;
+}
+
+/* accepted values of a parameter, for error messages */
+static void accepted(const uraParam* p, char* buf, size_t n) {
+  if (p->kind == uraP_ENUM) {
+    size_t k = 0;
+    buf[0] = 0;
+    for (int i = 0; p->choices[i]; i++) {
+      k += snprintf(buf + k, k < n ? n - k : 0, "%s%s", i ? " or " : "", p->choices[i]);
+    }
+  } else {
+    snprintf(buf, n, "%s in [%g, %g]%s%s%s", p->kind == uraP_LIST ?
+             "comma-separated numbers, each" : "a number", p->min, p->max,
+             *p->unit ? " " : "", p->unit, p->setoff ? ", or auto" : "");
+  }
+}
+
+int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
+  char* base = (char*)&c->st;
+  char acc[256];
+  accepted(p, acc, sizeof acc);
+
+  switch (p->kind) {
+  case uraP_CASE:
+    return ura_fail(c, "set case: use the command 'case A|B|C|A1|A2'");
+
+  case uraP_ENUM:
+    for (int i = 0; p->choices[i]; i++) {
+      if (!strcmp(value, p->choices[i])) {
+        *(int*)(base + p->off) = i;
+        return 0;
+      }
+    }
+    return ura_fail(c, "set %s: '%s' is not accepted; accepted: %s", p->name, value, acc);
+
+  case uraP_LIST: {
+    double v[uraMAXLIST];
+    int k = ura_parse_list(value, v, uraMAXLIST);
+    if (k < 0) {
+      return ura_fail(c, "set %s: '%s' is not a list of numbers; accepted: %s (at most %d)",
+                      p->name, value, acc, uraMAXLIST);
+    }
+    for (int i = 0; i < k; i++) {
+      if (v[i] < p->min || v[i] > p->max) {
+        return ura_fail(c, "set %s: %g is out of range; accepted: %s", p->name, v[i], acc);
+      }
+    }
+    memcpy(base + p->off, v, k * sizeof(double));
+    c->st.nwinds = k;
+    return 0;
+  }
+
+  case uraP_NUM: {
+    double v;
+    if (p->setoff && !strcmp(value, "auto")) {
+      *(int*)(base + p->setoff) = 0;
+      return 0;
+    }
+    if (ura_parse_number(value, &v)) {
+      return ura_fail(c, "set %s: '%s' is not a number; accepted: %s", p->name, value, acc);
+    }
+    if (v < p->min || v > p->max) {
+      return ura_fail(c, "set %s: %g is out of range; accepted: %s", p->name, v, acc);
+    }
+    *(double*)(base + p->off) = v;
+    if (p->setoff) *(int*)(base + p->setoff) = 1;
+    return 0;
+  }
+  }
+  return ura_fail(c, "set %s: internal error", p->name);
+}
+
+/* shortest of %.15g..%.17g that reads back exactly */
+static int fmt_exact(char* buf, size_t n, double v) {
+  for (int prec = 15; prec <= 17; prec++) {
+    int k = snprintf(buf, n, "%.*g", prec, v);
+    if (strtod(buf, NULL) == v || prec == 17) return k;
+  }
+  return 0;
+}
+
+void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
+  const char* base = (const char*)&c->st;
+  switch (p->kind) {
+  case uraP_CASE:
+    snprintf(buf, n, "%s", c->st.casename);
+    break;
+  case uraP_ENUM:
+    snprintf(buf, n, "%s", p->choices[*(const int*)(base + p->off)]);
+    break;
+  case uraP_LIST: {
+    size_t k = 0;
+    buf[0] = 0;
+    for (int i = 0; i < c->st.nwinds && k < n; i++) {
+      if (i) k += snprintf(buf + k, n - k, ",");
+      if (k < n) k += fmt_exact(buf + k, n - k, c->st.winds[i]);
+    }
+    break;
+  }
+  case uraP_NUM:
+    if (p->setoff && !*(const int*)(base + p->setoff)) snprintf(buf, n, "auto");
+    else fmt_exact(buf, n, *(const double*)(base + p->off));
+    break;
+  }
+}
+
+int ura_impact_conditions(uraCtx* c, double* speed, double* angle) {
+  urDescentResult r;
+  char err[256];
+  if (!c->st.speed_set || !c->st.angle_set) {
+    if (ur_descent(&c->st.descent, &r, err, sizeof err)) return ura_fail(c, "%s", err);
+  }
+  *speed = c->st.speed_set ? c->st.speed : r.speed;
+  *angle = c->st.angle_set ? c->st.angle : r.angle;
+  return 0;
+}
+
+int ura_case_load(uraCtx* c, const char* name) {
+  int k = -1;
+  for (int i = 0; ura_case_names[i]; i++) {
+    if (!strcasecmp(name, ura_case_names[i])) k = i;
+  }
+  if (k < 0) return ura_fail(c, "case: unknown case '%s'; accepted: A, B, C, A1 or A2", name);
+
+  /* keep the live wind, face, lists and output settings; everything else from the paper */
+  uraState keep = c->st, *s = &c->st;
+  ura_state_defaults(s);
+  s->descent.wind = keep.descent.wind;
+  s->face = keep.face;
+  memcpy(s->winds, keep.winds, sizeof s->winds);
+  s->nwinds = keep.nwinds;
+  s->format = keep.format;
+  strcpy(s->casename, ura_case_names[k]);
+
+  /* case C has no parachute; A, A1, A2 descend as B (the airbag does not change the descent) */
+  if (!strcmp(s->casename, "C")) s->descent.area_chute = 0;
+  return 0;
+}

@@ -1,0 +1,90 @@
+# test_cli.sh: the scripting contract of uasrisk(1): -c, script files, stdin, exit status,
+# FILE:LINE messages, CSV headers, and the man page covering every command
+. tests/lib.sh
+
+# -c runs commands and exits 0; CSV has one header and one row per wind
+run -c 'set format csv; case B; descent'
+check c_descent_status [ "$RC" -eq 0 ]
+check c_descent_header [ "$(head -1 "$TMP/out")" = "case,wind,speed,angle" ]
+check c_descent_rows [ "$(grep -c '^B,' "$TMP/out")" -eq 6 ]
+check c_descent_stderr_empty [ ! -s "$TMP/err" ]
+
+# case B zero-wind row of Table 2 (7.5 m/s, 90 deg) and 10 m/s row (12.5 m/s, 37.0 deg)
+b0=$(grep '^B,0,' "$TMP/out"); b10=$(grep '^B,10,' "$TMP/out")
+check table2_b0 awk -F, -v l="$b0" 'BEGIN{split(l,a,","); exit !((a[3]-7.5)^2<0.0225 && (a[4]-90)^2<0.36)}'
+check table2_b10 awk -F, -v l="$b10" 'BEGIN{split(l,a,","); exit !((a[3]-12.5)^2<0.0225 && (a[4]-37)^2<0.36)}'
+
+# parametric: Table 3 numbers for case B
+run -c 'set format csv; case B; parametric'
+check parametric_header has "$TMP/out" '^case,wind,speed,angle,planform,mtow,gliding,pof_rcc,pof_bc,pof_awke$'
+check parametric_b0 has "$TMP/out" '^B,0,7.480,90.00,1.430,3.000,2.550,1.0000,1.0000,'
+check parametric_one_header [ "$(grep -vc '^#' "$TMP/out")" -eq 7 ]
+
+# errors: one clear line, non-zero status
+run -c 'bogus'
+check bogus_status [ "$RC" -ne 0 ]
+check bogus_one_line [ "$(lines "$TMP/err")" -eq 1 ]
+check bogus_message has "$TMP/err" "^-c:1: unknown command 'bogus'"
+run -c 'set wind abc'
+check setwind_status [ "$RC" -ne 0 ]
+check setwind_one_line [ "$(lines "$TMP/err")" -eq 1 ]
+check setwind_message has "$TMP/err" "set wind: 'abc' is not a number; accepted: a number in \[0, 60\] m/s"
+for bad in 'set wind nan' 'set wind 1e400' 'set wind inf' 'set wind 0x' 'set wind -2' 'set winds 1,a' \
+           'set dt_nonexistent 1' 'show nosuch' 'case Q' 'help nosuch' 'set wind 1 2' 'descent x'; do
+  run -c "$bad"
+  check "refused: $bad" cond '[ "$RC" -ne 0 ] && [ "$(lines "$TMP/err")" -eq 1 ]'
+done
+
+# a script stops at the first failing command with FILE:LINE and a non-zero status
+printf 'case C\n# a comment\nset wind 3 ; set face 10\nset wind zz\nset wind 9\n' >"$TMP/s.ses"
+run "$TMP/s.ses"
+check script_status [ "$RC" -ne 0 ]
+check script_file_line has "$TMP/err" "^$TMP/s.ses:4: set wind: 'zz'"
+run_in "$TMP/s.ses"
+check stdin_file_line has "$TMP/err" "^<stdin>:4: set wind"
+check stdin_status [ "$RC" -ne 0 ]
+
+# nested source: the innermost file and line are named
+printf 'set wind 1\nsource %s/inner.ses\n' "$TMP" >"$TMP/outer.ses"
+printf 'set wind 2\nset face north\n' >"$TMP/inner.ses"
+run "$TMP/outer.ses"
+check nested_status [ "$RC" -ne 0 ]
+check nested_inner_line has "$TMP/err" "^$TMP/inner.ses:2: set face"
+
+# scripts and -c run in order; state carries over
+printf 'case C\nset wind 4\n' >"$TMP/state.ses"
+run "$TMP/state.ses" -c 'show case; show wind'
+check order_case has "$TMP/out" '^case  *C$'
+check order_wind has "$TMP/out" '^wind  *4 m/s$'
+
+# missing file, NUL bytes, random bytes: one message, non-zero, no crash
+run /nonexistent/x.ses
+check missing_file cond '[ "$RC" -eq 1 ] && has "$TMP/err" "cannot open ./nonexistent/x.ses."'
+printf 'show wind\n\000\000binary\n' >"$TMP/nul.ses"
+run "$TMP/nul.ses"
+check nul_bytes cond '[ "$RC" -eq 1 ] && has "$TMP/err" "NUL byte"'
+head -c 4096 /dev/urandom >"$TMP/rand.ses"
+run "$TMP/rand.ses"
+check random_bytes cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ]'
+
+# quit ends a script successfully; replaying stdin without errors exits 0
+printf 'set wind 1\nquit\nbogus\n' >"$TMP/q.ses"
+run "$TMP/q.ses"
+check quit_status [ "$RC" -eq 0 ]
+printf 'case B\nset format csv\ndescent\n' >"$TMP/ok.ses"
+run_in "$TMP/ok.ses"
+check stdin_ok cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^B," "$TMP/out")" -eq 6 ]'
+run -h
+check help_option cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^usage: uasrisk"'
+run -x
+check bad_option [ "$RC" -eq 2 ]
+
+# every command listed by help is documented in the man page
+run -c help
+cmds=$(sed -n 's/^  \([a-z][a-z]*\).*/\1/p' "$TMP/out" | sort -u)
+check help_lists_commands [ -n "$cmds" ]
+for k in $cmds; do
+  check "man documents $k" grep -q "^\.BI* $k\( \|\$\)" man/uasrisk.1
+done
+
+finish

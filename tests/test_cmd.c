@@ -1,0 +1,184 @@
+/* test_cmd.c: the command layer: table, set/show, cases, output formats, errors */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "../src/app/app.h"
+
+/* run lines on a fresh context, capturing what they print */
+typedef struct {
+  uraCtx c;
+  char* buf;
+  size_t len;
+} fixture;
+
+static int setup(void** state) {
+  fixture* f = calloc(1, sizeof *f);
+  ura_init(&f->c);
+  f->c.out = open_memstream(&f->buf, &f->len);
+  *state = f;
+  return 0;
+}
+
+static int teardown(void** state) {
+  fixture* f = *state;
+  fclose(f->c.out);
+  free(f->buf);
+  free(f);
+  return 0;
+}
+
+/* output of one line, from a clean buffer */
+static const char* run(fixture* f, const char* line, int expect_rc) {
+  fflush(f->c.out);
+  rewind(f->c.out);
+  f->buf[0] = 0;
+  assert_int_equal(ura_run_line(&f->c, line), expect_rc);
+  fputc(0, f->c.out);
+  fflush(f->c.out);
+  return f->buf;
+}
+
+static int count_lines(const char* s, const char* prefix) {
+  int n = 0;
+  for (const char* p = s; p && *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : NULL) {
+    if (!strncmp(p, prefix, strlen(prefix))) n++;
+  }
+  return n;
+}
+
+static void set_and_show(void** state) {
+  fixture* f = *state;
+  run(f, "set wind 4", 0);
+  assert_true(f->c.st.descent.wind == 4);
+  const char* out = run(f, "show wind", 0);
+  assert_non_null(strstr(out, "wind"));
+  assert_non_null(strstr(out, "4 m/s"));
+  out = run(f, "show speed", 0);
+  assert_non_null(strstr(out, "derived"));
+  run(f, "set speed 9", 0);
+  out = run(f, "show speed", 0);
+  assert_non_null(strstr(out, "9 m/s"));
+  assert_null(strstr(out, "derived"));
+  run(f, "set speed auto", 0);
+  assert_int_equal(f->c.st.speed_set, 0);
+}
+
+/* a refused value names the parameter and the accepted range and changes nothing */
+static void bad_values_leave_state(void** state) {
+  fixture* f = *state;
+  run(f, "set wind 3", 0);
+  static const char* const bad[] = {"set wind abc", "set wind -1", "set wind nan",
+                                    "set wind 1e400", "set wind 0x10", "set wind 3m",
+                                    "set wind \"\"", "set winds 1,,2", "set format xml",
+                                    "set nosuch 1", "set wind", "set wind 1 2", NULL};
+  for (int i = 0; bad[i]; i++) {
+    run(f, bad[i], -1);
+    assert_true(f->c.st.descent.wind == 3);
+    assert_true(strlen(f->c.err) > 10);
+  }
+  run(f, "set wind abc", -1);
+  assert_non_null(strstr(f->c.err, "wind"));
+  assert_non_null(strstr(f->c.err, "[0, 60]"));
+  run(f, "bogus", -1);
+  assert_non_null(strstr(f->c.err, "unknown command"));
+}
+
+/* case presets keep wind and face; C drops the parachute; reset restores everything */
+static void cases(void** state) {
+  fixture* f = *state;
+  run(f, "set wind 6; set face 45; set rho 1.1", 0);
+  run(f, "case C", 0);
+  assert_string_equal(f->c.st.casename, "C");
+  assert_true(f->c.st.descent.wind == 6 && f->c.st.face == 45);
+  assert_true(f->c.st.descent.area_chute == 0);
+  assert_true(f->c.st.descent.rho == 1.23);
+  run(f, "case B", 0);
+  assert_true(f->c.st.descent.area_chute == 2.72);
+  run(f, "case Z", -1);
+  assert_string_equal(f->c.st.casename, "B");
+  run(f, "reset", 0);
+  assert_string_equal(f->c.st.casename, "A");
+  assert_true(f->c.st.descent.wind == 0);
+}
+
+/* CSV: exactly one header line with the contract's column names, one row per wind */
+static void csv_headers(void** state) {
+  fixture* f = *state;
+  const char* out = run(f, "set format csv; case B; descent", 0);
+  assert_int_equal(count_lines(out, "case,wind,speed,angle\n"), 1);
+  assert_int_equal(count_lines(out, "B,"), 6);
+  out = run(f, "parametric", 0);
+  assert_int_equal(count_lines(out, "case,wind,speed,angle,planform,mtow,gliding,pof_rcc,"
+                               "pof_bc,pof_awke\n"), 1);
+  assert_int_equal(count_lines(out, "B,"), 6);
+  assert_non_null(strstr(out, "B,0,7.480,90.00,1.430,3.000,2.550,"));
+  out = run(f, "set winds 10; descent", 0);
+  assert_int_equal(count_lines(out, "B,10,"), 1);
+}
+
+/* aligned table: header and rows of equal width */
+static void table_format(void** state) {
+  fixture* f = *state;
+  const char* out = run(f, "case B; descent", 0);
+  const char* nl = strchr(out, '\n');
+  assert_non_null(nl);
+  size_t w = nl - out;
+  assert_true(strlen(nl + 1) >= w);
+  assert_int_equal(nl[1 + w], '\n');
+}
+
+/* ';' separates, '#' comments, quotes group, the first failure stops the line */
+static void line_syntax(void** state) {
+  fixture* f = *state;
+  run(f, "set wind 2 ; set face 10 # set wind 9", 0);
+  assert_true(f->c.st.descent.wind == 2 && f->c.st.face == 10);
+  run(f, "   # only a comment", 0);
+  run(f, "", 0);
+  run(f, "set wind 5; bogus; set wind 7", -1);
+  assert_true(f->c.st.descent.wind == 5);
+  run(f, "set wind \"8\"", 0);
+  assert_true(f->c.st.descent.wind == 8);
+  run(f, "set wind \"8", -1);
+}
+
+/* help lists every command of the table; help COMMAND explains one */
+static void help_from_table(void** state) {
+  fixture* f = *state;
+  const char* out = run(f, "help", 0);
+  for (const uraCmd* k = ura_cmds; k->name; k++) assert_non_null(strstr(out, k->usage));
+  out = run(f, "help descent", 0);
+  assert_non_null(strstr(out, "usage: descent"));
+  run(f, "help nosuch", -1);
+}
+
+/* every parameter can be shown, and set back to the value show printed */
+static void show_set_roundtrip(void** state) {
+  fixture* f = *state;
+  for (const uraParam* p = ura_params; p->name; p++) {
+    char val[1024], line[1200];
+    if (p->kind == uraP_CASE) continue;
+    ura_param_format(&f->c, p, val, sizeof val);
+    snprintf(line, sizeof line, "set %s %s", p->name, val);
+    run(f, line, 0);
+  }
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test_setup_teardown(set_and_show, setup, teardown),
+    cmocka_unit_test_setup_teardown(bad_values_leave_state, setup, teardown),
+    cmocka_unit_test_setup_teardown(cases, setup, teardown),
+    cmocka_unit_test_setup_teardown(csv_headers, setup, teardown),
+    cmocka_unit_test_setup_teardown(table_format, setup, teardown),
+    cmocka_unit_test_setup_teardown(line_syntax, setup, teardown),
+    cmocka_unit_test_setup_teardown(help_from_table, setup, teardown),
+    cmocka_unit_test_setup_teardown(show_set_roundtrip, setup, teardown),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
