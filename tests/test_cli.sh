@@ -20,6 +20,17 @@ check parametric_header has "$TMP/out" '^case,wind,speed,angle,planform,mtow,gli
 check parametric_b0 has "$TMP/out" '^B,0,7.480,90.00,1.430,3.000,2.550,1.0000,1.0000,'
 check parametric_one_header [ "$(grep -vc '^#' "$TMP/out")" -eq 7 ]
 
+# pof: curves as x,p, monotone, 0 at 0 and reaching p ~ 1 (vc_thorax is bounded by P{F|AIS4}=0.5)
+for k in hic nij vc vc_abdomen; do
+  run -c "set format csv; pof $k"
+  check "pof_$k" cond '[ "$RC" -eq 0 ] && [ "$(grep -v "^#" "$TMP/out" | head -1)" = "x,p" ] &&
+    grep -v "^#" "$TMP/out" | awk -F, "NR==2&&\$2!=0{exit 1} NR>1{if(\$2+0<p)exit 1; p=\$2+0; n++} END{exit !(n>=50 && p>0.99)}"'
+done
+run -c 'set hic_window 0.036; show hic_window'
+check injury_setting has "$TMP/out" '^hic_window  *0.036 s$'
+run -c 'set nij_order 1.5'
+check injury_setting_range cond '[ "$RC" -eq 1 ] && has "$TMP/err" "accepted: an integer in \[0, 2\]"'
+
 # errors: one clear line, non-zero status
 run -c 'bogus'
 check bogus_status [ "$RC" -ne 0 ]

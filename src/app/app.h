@@ -8,6 +8,8 @@
 #include <stdio.h>
 
 #include "uasrisk/descent.h"
+#include "uasrisk/grid.h"
+#include "uasrisk/injury.h"
 #include "uasrisk/parametric.h"
 
 #define uraMAXLIST 64              /* values in a list parameter */
@@ -27,7 +29,27 @@ typedef struct {
   int speed_set, angle_set;        /* 0: derived from the descent model */
   double face;                     /* face direction phi, deg */
   int format;                      /* uraFormat */
+  urInjuryParams injury;           /* injury criteria and PoF curve settings */
+  char terminal[64];               /* gnuplot terminal; empty: gnuplot's default */
+  char output[512];                /* gnuplot output file; empty: a window */
 } uraState;
+
+/* the last grid with the conditions it was computed (or loaded) for */
+typedef struct {
+  urGrid* g;                       /* NULL: none yet */
+  char casename[8];
+  double wind, face, speed, angle; /* m/s, deg, m/s, deg */
+  char source[512];                /* "computed", or the file it was loaded from */
+} uraGridResult;
+
+/* time histories of one impact, for inspection and plotting */
+typedef struct {
+  int n, nsig;                     /* samples, signals */
+  double* t;                       /* n times, s */
+  double* v;                       /* nsig*n values, signal-major */
+  const char* const* names;        /* nsig signal names (e.g. head_acc, neck_fz) */
+  const char* const* units;        /* nsig units */
+} uraTrace;
 
 /* ---- context ---- */
 
@@ -40,6 +62,9 @@ typedef struct uraCtx {
   int interactive;                 /* a person is typing: errors do not stop anything */
   int depth;                       /* nesting of source */
   int quit;                        /* set by quit */
+  uraGridResult last;              /* the last grid */
+  /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
+  int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
 } uraCtx;
 
 /* record a failure message; always returns -1 */
@@ -57,7 +82,7 @@ int ura_parse_list(const char* s, double* v, int max);
 
 /* ---- parameters (one table drives set, show, save and completion) ---- */
 
-typedef enum { uraP_NUM = 0, uraP_LIST, uraP_ENUM, uraP_CASE } uraPKind;
+typedef enum { uraP_NUM = 0, uraP_LIST, uraP_ENUM, uraP_CASE, uraP_STR } uraPKind;
 
 typedef struct {
   const char* name;
@@ -65,7 +90,7 @@ typedef struct {
   size_t off;                      /* offset of the value in uraState */
   size_t setoff;                   /* offset of the int "set" flag of a derivable value, or 0 */
   const char* unit;
-  double min, max;                 /* accepted closed range (numbers and list items) */
+  double min, max;                 /* accepted closed range (numbers, list items); STR: size */
   const char* help;
   const char* const* choices;      /* uraP_ENUM: NULL-terminated names */
 } uraParam;
@@ -76,6 +101,11 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value);
 /* the value as text (without unit) into buf, exact (round-trips through set); a derivable
    value that is not set prints as auto */
 void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n);
+
+/* the injury settings (core table) through set/show: index of NAME or -1; set; one show line */
+int ura_injury_find(const char* name);
+int ura_injury_set(uraCtx* c, int i, const char* value);
+void ura_injury_line(uraCtx* c, int i, char* buf, size_t n, int with_unit);
 
 /* current impact speed and angle: set values, or the descent model at the live wind */
 int ura_impact_conditions(uraCtx* c, double* speed, double* angle);
@@ -131,6 +161,16 @@ int ura_cmd_source(uraCtx* c, int argc, char** argv);
 int ura_cmd_quit(uraCtx* c, int argc, char** argv);
 int ura_cmd_descent(uraCtx* c, int argc, char** argv);
 int ura_cmd_parametric(uraCtx* c, int argc, char** argv);
+int ura_cmd_pof(uraCtx* c, int argc, char** argv);
+extern const char* const ura_pof_names[];
+
+/* workbench (view.c, gridshow.c, gridload.c, plot.c) */
+int ura_cmd_grid(uraCtx* c, int argc, char** argv);
+int ura_grid_show(uraCtx* c);
+int ura_grid_load(uraCtx* c, const char* path);
+int ura_cmd_view(uraCtx* c, int argc, char** argv);
+int ura_cmd_plot(uraCtx* c, int argc, char** argv);
+void ura_last_free(uraCtx* c);
 
 /* interactive loop on GNU readline */
 int ura_repl(uraCtx* c);

@@ -21,6 +21,18 @@ const uraCmd ura_cmds[] = {
   {"parametric", ura_cmd_parametric, 0, 0, uraC_NONE, "parametric",
    "Appendix D parametric areas and fatality probabilities for each wind in 'winds' "
    "(paper Table 3); columns case,wind,speed,angle,planform,mtow,gliding,pof_rcc,pof_bc,pof_awke"},
+  {"grid", ura_cmd_grid, 0, 2, uraC_NONE, "grid [show|cells|load FILE]",
+   "run the offset grid of the live case (summary row), print it as coloured text (show), "
+   "every cell (cells), or load a grid CSV (the paper's tables) as the last grid"},
+  {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
+   "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
+   "q returns"},
+  {"plot", ura_cmd_plot, 1, -1, uraC_NONE, "plot pof|grid|history SIGNAL...|sweep",
+   "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
+   "the last impact, or the last sweeps (set terminal/output to write files)"},
+  {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
+   "print a probability-of-fatality curve of the injury criteria as columns x,p "
+   "(Appendix C; settings in uasrisk-injury(7))"},
   {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
    "run the commands of a session script; errors name the file and line"},
   {"quit", ura_cmd_quit, 0, 0, uraC_NONE, "quit", "leave uasrisk (also: exit, Ctrl-D)"},
@@ -56,10 +68,11 @@ int ura_cmd_help(uraCtx* c, int argc, char** argv) {
 
 int ura_cmd_set(uraCtx* c, int argc, char** argv) {
   const uraParam* p = ura_param_find(argv[1]);
-  if (!p) {
+  int i = p ? -1 : ura_injury_find(argv[1]);
+  if (!p && i < 0) {
     return ura_fail(c, "set: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
   }
-  return ura_param_set(c, p, argv[2]);
+  return p ? ura_param_set(c, p, argv[2]) : ura_injury_set(c, i, argv[2]);
 }
 
 /* one line of show: name, value, unit, and where a derived value comes from */
@@ -79,17 +92,31 @@ static int show_one(uraCtx* c, const uraParam* p) {
   return 0;
 }
 
+/* one injury setting */
+static void show_injury(uraCtx* c, int i) {
+  const char* name;
+  char val[128];
+  ur_injury_param_info(i, &name, NULL, NULL);
+  ura_injury_line(c, i, val, sizeof val, 1);
+  fprintf(c->out, "%-16s %s\n", name, val);
+}
+
 int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   if (argc == 2) {
     const uraParam* p = ura_param_find(argv[1]);
-    if (!p) {
+    int i = p ? -1 : ura_injury_find(argv[1]);
+    if (!p && i < 0) {
       return ura_fail(c, "show: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
     }
-    return show_one(c, p);
+    if (p) return show_one(c, p);
+    show_injury(c, i);
+    return 0;
   }
   for (const uraParam* p = ura_params; p->name; p++) {
     if (show_one(c, p)) return -1;
   }
+  fprintf(c->out, "# injury criteria (uasrisk-injury(7))\n");
+  for (int i = 0; i < ur_injury_param_count(); i++) show_injury(c, i);
   return 0;
 }
 

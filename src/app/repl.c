@@ -22,6 +22,7 @@ static char* gen(const char* text, int state) {
     case uraC_COMMAND: name = ura_cmds[i].name; break;
     case uraC_PARAM: name = ura_params[i].name; break;
     case uraC_CASE: name = ura_case_names[i]; break;
+    case uraC_POF: name = ura_pof_names[i]; break;
     default: return NULL;
     }
     if (!name) return NULL;

@@ -56,6 +56,10 @@ const uraParam ura_params[] = {
    "impactor diameter D_imp of the Blunt Criterion", NULL},
   {"format", uraP_ENUM, OFF(format), 0, "", 0, 0,
    "output of tabular commands: aligned table or CSV with one header line", format_names},
+  {"terminal", uraP_STR, OFF(terminal), 0, "", 0, 64,
+   "gnuplot terminal for plot (png, svg, pdfcairo, ...); 'default' for gnuplot's own", NULL},
+  {"output", uraP_STR, OFF(output), 0, "", 0, 512,
+   "file that plot writes (with a file terminal); 'none' for a window", NULL},
   {NULL, 0, 0, 0, NULL, 0, 0, NULL, NULL}
 };
 
@@ -73,6 +77,7 @@ void ura_state_defaults(uraState* s) {
   strcpy(s->casename, "A");
   ur_descent_defaults(&s->descent);
   ur_parametric_defaults(&s->para);
+  ur_injury_defaults(&s->injury);
   for (int i = 0; i < 6; i++) s->winds[i] = 2.0 * i;
   s->nwinds = 6;
   s->face = 0;
@@ -116,6 +121,17 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
   switch (p->kind) {
   case uraP_CASE:
     return ura_fail(c, "set case: use the command 'case A|B|C|A1|A2'");
+
+  case uraP_STR: {
+    size_t n = strlen(value);
+    if (n >= (size_t)p->max) {
+      return ura_fail(c, "set %s: value too long; accepted: at most %d characters", p->name,
+                      (int)p->max - 1);
+    }
+    int none = !strcmp(value, "default") || !strcmp(value, "none") || n == 0;
+    strcpy(base + p->off, none ? "" : value);
+    return 0;
+  }
 
   case uraP_ENUM:
     for (int i = 0; p->choices[i]; i++) {
@@ -178,6 +194,10 @@ void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
   case uraP_CASE:
     snprintf(buf, n, "%s", c->st.casename);
     break;
+  case uraP_STR:
+    snprintf(buf, n, "%s", *(base + p->off) ? base + p->off :
+             (!strcmp(p->name, "output") ? "none" : "default"));
+    break;
   case uraP_ENUM:
     snprintf(buf, n, "%s", p->choices[*(const int*)(base + p->off)]);
     break;
@@ -195,6 +215,41 @@ void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
     else fmt_exact(buf, n, *(const double*)(base + p->off));
     break;
   }
+}
+
+int ura_injury_find(const char* name) {
+  const char* nm;
+  for (int i = 0; ur_injury_param_info(i, &nm, NULL, NULL) == 0; i++) {
+    if (!strcmp(nm, name)) return i;
+  }
+  return -1;
+}
+
+int ura_injury_set(uraCtx* c, int i, const char* value) {
+  const char *name, *unit;
+  double lo, hi, v;
+  int open_lo, isint;
+  char acc[160];
+  ur_injury_param_info(i, &name, &unit, NULL);
+  ur_injury_param_range(i, &lo, &hi, &open_lo, &isint);
+  snprintf(acc, sizeof acc, "%s in %c%g, %g]%s%s", isint ? "an integer" : "a number",
+           open_lo ? '(' : '[', lo, hi, *unit ? " " : "", unit);
+  if (ura_parse_number(value, &v)) {
+    return ura_fail(c, "set %s: '%s' is not a number; accepted: %s", name, value, acc);
+  }
+  if (ur_injury_param_set(&c->st.injury, name, v)) {
+    return ura_fail(c, "set %s: %g is out of range; accepted: %s", name, v, acc);
+  }
+  return 0;
+}
+
+void ura_injury_line(uraCtx* c, int i, char* buf, size_t n, int with_unit) {
+  const char *name, *unit;
+  double v;
+  ur_injury_param_info(i, &name, &unit, NULL);
+  ur_injury_param_get(&c->st.injury, name, &v);
+  int k = fmt_exact(buf, n, v);
+  if (with_unit && *unit && k < (int)n) snprintf(buf + k, n - k, " %s", unit);
 }
 
 int ura_impact_conditions(uraCtx* c, double* speed, double* angle) {
@@ -223,6 +278,8 @@ int ura_case_load(uraCtx* c, const char* name) {
   memcpy(s->winds, keep.winds, sizeof s->winds);
   s->nwinds = keep.nwinds;
   s->format = keep.format;
+  strcpy(s->terminal, keep.terminal);
+  strcpy(s->output, keep.output);
   strcpy(s->casename, ura_case_names[k]);
 
   /* case C has no parachute; A, A1, A2 descend as B (the airbag does not change the descent) */

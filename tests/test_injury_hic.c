@@ -1,0 +1,203 @@
+/* test_injury_hic.c: HIC15/HIC36 on closed-form pulses, uniform and non-uniform samples. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "uasrisk/injury.h"
+
+#define DT 1e-5                    /* sample step, s */
+#define NMAX 8001
+
+/* rectangular pulse of amp g from t0 to t0 + T (sample-aligned), zero elsewhere */
+static int rect(double* t, double* a, double amp, double t0, double T, double tend)
+{
+  int n = (int)lround(tend / DT) + 1;
+  int k0 = (int)lround(t0 / DT), k1 = (int)lround((t0 + T) / DT);
+  for (int k = 0; k < n; k++) {
+    t[k] = k * DT;
+    a[k] = (k >= k0 && k <= k1) ? amp : 0.0;
+  }
+  return n;
+}
+
+/* half-sine amp sin(pi (t - t0) / T) on [t0, t0 + T] */
+static double halfsine(double tt, double amp, double t0, double T)
+{
+  double s = tt - t0;
+  return (s >= 0 && s <= T) ? amp * sin(M_PI * s / T) : 0.0;
+}
+
+/* closed-form half-sine HIC: x = pi D / (2 T), optimum tan x = 5x/3 unless the window binds */
+static double halfsine_hic(double amp, double T, double window, double* width)
+{
+  // bisection for tan x = 5x/3 on (0.5, 1.5)
+  double lo = 0.5, hi = 1.5;
+  for (int it = 0; it < 200; it++) {
+    double mid = 0.5 * (lo + hi);
+    if (tan(mid) - 5.0 * mid / 3.0 < 0) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  double x = 0.5 * (lo + hi);
+  double d = 2.0 * T * x / M_PI;
+  if (d > window) {
+    d = window;
+    x = M_PI * d / (2.0 * T);
+  }
+  *width = d;
+  return pow(amp, 2.5) * (2.0 * T / M_PI) * pow(sin(x), 2.5) / pow(x, 1.5);
+}
+
+static void test_rect_10ms(void** state)
+{
+  static double t[NMAX], a[NMAX];
+  int n = rect(t, a, 100.0, 0.005, 0.010, 0.030);
+  urHic h15, h36;
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h15), 0);
+  assert_int_equal(ur_hic(t, a, n, 0.036, NULL, &h36), 0);
+  assert_true(fabs(h15.hic - 1000.0) / 1000.0 < 1e-6);
+  assert_true(fabs(h36.hic - 1000.0) / 1000.0 < 1e-6);
+  assert_true(fabs(h15.t1 - 0.005) < 0.5 * DT);
+  assert_true(fabs(h15.t2 - 0.015) < 0.5 * DT);
+}
+
+static void test_rect_long_window_limit(void** state)
+{
+  // 100 g for 30 ms: HIC15 = 100^2.5 * 0.015, HIC36 = 100^2.5 * 0.030
+  static double t[NMAX], a[NMAX];
+  int n = rect(t, a, 100.0, 0.005, 0.030, 0.045);
+  urHic h15, h36;
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h15), 0);
+  assert_int_equal(ur_hic(t, a, n, 0.036, NULL, &h36), 0);
+  assert_true(fabs(h15.hic - 1500.0) / 1500.0 < 1e-6);
+  assert_true(fabs(h36.hic - 3000.0) / 3000.0 < 1e-6);
+  assert_true(h15.t2 - h15.t1 <= 0.015 * (1 + 1e-9));
+  assert_true(h15.t2 - h15.t1 > 0.015 - 0.5 * DT);
+  assert_true(h15.t1 >= 0.005 - 0.5 * DT && h15.t2 <= 0.035 + 0.5 * DT);
+}
+
+static void test_halfsine_10ms(void** state)
+{
+  static double t[NMAX], a[NMAX];
+  int n = 2001;
+  for (int k = 0; k < n; k++) {
+    t[k] = k * DT;
+    a[k] = halfsine(t[k], 100.0, 0.005, 0.010);
+  }
+  double w;
+  double ref = halfsine_hic(100.0, 0.010, 0.015, &w);
+  assert_true(fabs(ref - 414.646) < 1e-3);
+  urHic h;
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h), 0);
+  assert_true(fabs(h.hic - 414.646) / 414.646 < 1e-3);
+  assert_true(fabs(h.hic - ref) / ref < 1e-4);
+
+  // unconstrained optimum: centred window of 0.6702 T, a(t1) = a(t2) = 0.6 mean
+  assert_true(fabs(0.5 * (h.t1 + h.t2) - 0.010) < 2 * DT);
+  assert_true(fabs((h.t2 - h.t1) - w) < 0.05e-3);
+  double mean = 2.0 * 100.0 * 0.010 / M_PI * sin(M_PI * w / (2 * 0.010)) / w;
+  assert_true(fabs(a[h.i1] - 0.6 * mean) / mean < 0.01);
+  assert_true(fabs(a[h.i2] - 0.6 * mean) / mean < 0.01);
+}
+
+static void test_halfsine_30ms(void** state)
+{
+  static double t[NMAX], a[NMAX];
+  int n = 4001;
+  for (int k = 0; k < n; k++) {
+    t[k] = k * DT;
+    a[k] = halfsine(t[k], 100.0, 0.0, 0.030);
+  }
+  urHic h15, h36;
+  double w15, w36;
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h15), 0);
+  assert_int_equal(ur_hic(t, a, n, 0.036, NULL, &h36), 0);
+  double r15 = halfsine_hic(100.0, 0.030, 0.015, &w15);
+  double r36 = halfsine_hic(100.0, 0.030, 0.036, &w36);
+  assert_true(fabs(r15 - 1153.663) < 1e-2 && fabs(r36 - 1243.937) < 1e-2);
+
+  // HIC15 = 1153.66 with the window 7.5-22.5 ms
+  assert_true(fabs(h15.hic - 1153.66) / 1153.66 < 1e-3);
+  assert_true(fabs(h15.t1 - 0.0075) < 1.5 * DT);
+  assert_true(fabs(h15.t2 - 0.0225) < 1.5 * DT);
+
+  // HIC36 = 1243.94, window 0.6702 T = 20.1 ms centred on 15 ms
+  assert_true(fabs(h36.hic - 1243.94) / 1243.94 < 1e-3);
+  assert_true(fabs(w36 - 0.6702297 * 0.030) < 1e-6);
+  assert_true(fabs(h36.t1 - (0.015 - 0.5 * w36)) < 0.05e-3);
+  assert_true(fabs(h36.t2 - (0.015 + 0.5 * w36)) < 0.05e-3);
+}
+
+static void test_nonuniform(void** state)
+{
+  // alternating steps of 5 and 15 us, plus a 7 us step, with the pulse edges on samples
+  static double t[NMAX], a[NMAX];
+  int n = 0;
+  double tt = 0;
+  const double steps[3] = {5e-6, 15e-6, 10e-6};
+  while (tt <= 0.030 && n < NMAX) {
+    t[n++] = tt;
+    tt += steps[n % 3];
+  }
+  // rectangular pulse between two chosen samples
+  int k0 = 300, k1 = k0;
+  while (t[k1] - t[k0] < 0.010 - 1e-12) {
+    k1++;
+  }
+  double T = t[k1] - t[k0];
+  for (int k = 0; k < n; k++) {
+    a[k] = (k >= k0 && k <= k1) ? 100.0 : 0.0;
+  }
+  urHic h;
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h), 0);
+  assert_true(fabs(h.hic - 1e5 * T) / (1e5 * T) < 1e-6);
+
+  // half-sine 10 ms on the same grid
+  for (int k = 0; k < n; k++) {
+    a[k] = halfsine(t[k], 100.0, 0.005, 0.010);
+  }
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h), 0);
+  assert_true(fabs(h.hic - 414.646) / 414.646 < 1e-3);
+}
+
+static void test_workspace_and_errors(void** state)
+{
+  static double t[NMAX], a[NMAX], work[NMAX];
+  int n = rect(t, a, 80.0, 0.002, 0.004, 0.010);
+  urHic h1, h2;
+  assert_int_equal(ur_hic(t, a, n, 0.015, work, &h1), 0);
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h2), 0);
+  assert_true(h1.hic == h2.hic && h1.i1 == h2.i1 && h1.i2 == h2.i2);
+
+  // no positive window: HIC 0
+  for (int k = 0; k < n; k++) {
+    a[k] = -50.0;
+  }
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h1), 0);
+  assert_true(h1.hic == 0.0);
+
+  // bad input
+  assert_int_equal(ur_hic(t, a, n, 0.0, NULL, &h1), -1);
+  assert_int_equal(ur_hic(NULL, a, n, 0.015, NULL, &h1), -1);
+  t[5] = t[4];
+  assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h1), -1);
+}
+
+int main(void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_rect_10ms),
+    cmocka_unit_test(test_rect_long_window_limit),
+    cmocka_unit_test(test_halfsine_10ms),
+    cmocka_unit_test(test_halfsine_30ms),
+    cmocka_unit_test(test_nonuniform),
+    cmocka_unit_test(test_workspace_and_errors),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
