@@ -102,11 +102,25 @@ void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, doubl
                   double sy, double nu_yield, int plastic);
 
 /* normal force (>= 0) at depth d (> 0) and rate; area is the section area (foam only).
-   Does not change the state. */
+   Does not change the state. Below dmax the laws unload and reload along:
+   HERTZ (plastic): Brake F = fmax ((d - dres)/(dmax - dres))^1.5;
+   TABLE: the unloading curve shifted along the depth axis to pass through (dmax, fmax),
+          capped by the loading curve (elastic when unload.n < 2);
+   FOAM: stress sm ((e - er)/(em - er))^unload_p, er = unload_r em (elastic if unload_p <= 0).
+   F = Fe (1 + chi rate) + damping rate while Fe > 0, then clamped at >= 0. */
 double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate, double area);
 
-/* record depth d on an accepted step (updates dmax, fmax, dres, touching) */
+/* record depth d on an accepted step (updates dmax, fmax, dres, touching); d <= 0 only clears
+   touching. touching = 1 while the rate-free force is positive. */
 void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, double area);
+
+/* Hertz constants of a law: K = 4/3 E* sqrt(R) (N/m^1.5), Jackson-Green yield onset depth dy
+   and force fy (HUGE_VAL when sy <= 0) */
+void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy);
+
+/* regularised Coulomb friction on the body moving with tangential velocity vt:
+   out = -mu fn vt / max(|vt|, v_eps) (v_eps <= 0: plain Coulomb, zero at vt = 0) */
+void ur_friction(const urLaw* law, double fn, const double vt[3], double out[3]);
 
 /* ---- uniform-pressure airbag gas law ---- */
 

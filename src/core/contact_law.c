@@ -1,0 +1,246 @@
+/* contact_law.c: force-penetration laws (Hertz with Jackson-Green loading and Brake unloading,
+ * tabulated MADYMO-style load/unload, foam area x stress), tabulated curves and friction.
+ * Sources: contact-airbag sheet §1.2-1.4 (Hertz; JG 2005 via Willert 2020 eq. 3.289-3.291;
+ * Brake 2015 unloading as coded in tmd-lab SPHERE_PLASTIC_PRE.m), §3 (Chou 1994 foam model),
+ * §2.6 (regularised Coulomb friction).
+ */
+#include <math.h>
+
+#include "uasrisk/contact.h"
+
+#define JG_LO 1.9                  /* JG law used beyond JG_LO * dy (sheet §1.4) */
+#define JG_HI 2.2                  /* end of the smoothstep blend Hertz -> JG */
+
+/* ---- tabulated curves ---- */
+
+/* index i of the segment [x_i, x_i+1] used for x (clamped to the end segments) */
+static int segment(const urCurve* c, double x)
+{
+  int lo = 0, hi = c->n - 1;
+  while (hi - lo > 1) {
+    int mid = (lo + hi) / 2;
+    if (x < c->x[mid]) hi = mid;
+    else lo = mid;
+  }
+  return lo;
+}
+
+double ur_curve_eval(const urCurve* c, double x)
+{
+  // empty and single-point curves
+  if (c->n <= 0) return 0;
+  if (c->n == 1) return c->y[0];
+
+  // linear on the segment, extrapolated beyond the ends
+  int i = segment(c, x);
+  double dx = c->x[i + 1] - c->x[i];
+  if (!(dx > 0)) return c->y[i + 1];
+  return c->y[i] + (c->y[i + 1] - c->y[i]) * (x - c->x[i]) / dx;
+}
+
+/* smallest x where the curve rises through level y (y_i <= y < y_i+1), else linear
+   extrapolation of the first or last segment; for the unloading-curve shift */
+static double curve_inverse(const urCurve* c, double y)
+{
+  int n = c->n;
+  if (n <= 0) return 0;
+  if (n == 1) return c->x[0];
+
+  // first rising crossing inside the table
+  for (int i = 0; i < n - 1; i++) {
+    if (c->y[i] <= y && y < c->y[i + 1]) {
+      return c->x[i] + (y - c->y[i]) * (c->x[i + 1] - c->x[i]) / (c->y[i + 1] - c->y[i]);
+    }
+  }
+
+  // extrapolate the end segment on the side of y
+  int i = y < c->y[0] ? 0 : n - 2;
+  double dy = c->y[i + 1] - c->y[i];
+  if (!(dy > 0)) return i == 0 ? c->x[0] : c->x[n - 1];
+  return c->x[i] + (y - c->y[i]) * (c->x[i + 1] - c->x[i]) / dy;
+}
+
+/* ---- Hertz, Jackson-Green, Brake ---- */
+
+void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, double nu2, double R2,
+                  double sy, double nu_yield, int plastic)
+{
+  // effective modulus and radius, R = 0 meaning a flat (sheet §1.1)
+  law->type = urLAW_HERTZ;
+  law->estar = 1.0 / ((1 - nu1*nu1)/E1 + (1 - nu2*nu2)/E2);
+  double k = (R1 > 0 ? 1/R1 : 0) + (R2 > 0 ? 1/R2 : 0);
+  law->radius = k > 0 ? 1/k : 0;
+  law->sy = sy;
+  law->nu = nu_yield;
+  law->plastic = plastic;
+}
+
+void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy)
+{
+  // K = 4/3 E* sqrt(R) (sheet §1.2); JG yield onset dy = R (pi C Sy / (2 E*))^2,
+  // C = 1.295 exp(0.736 nu) (sheet §1.4 step 2; Jackson & Green 2005)
+  double k = 4.0/3.0 * law->estar * sqrt(law->radius);
+  *K = k;
+  if (law->sy > 0 && law->estar > 0) {
+    double C = 1.295 * exp(0.736 * law->nu);
+    double t = M_PI * C * law->sy / (2 * law->estar);
+    *dy = law->radius * t*t;
+    *fy = k * (*dy) * sqrt(*dy);
+  } else {
+    *dy = HUGE_VAL;
+    *fy = HUGE_VAL;
+  }
+}
+
+/* Jackson-Green elastic-plastic loading force at w = d/dy (sheet §1.4; JG 2005) */
+static double jackson_green(const urLaw* law, double d, double dy, double fy)
+{
+  double R = law->radius, sy = law->sy;
+  double w = d / dy;
+
+  // contact radius a = sqrt(R d (w/1.9)^B), B = 0.14 exp(23 Sy/E*), capped at R
+  double B = 0.14 * exp(23 * sy / law->estar);
+  double a = sqrt(R * d * pow(w / JG_LO, B));
+  if (a > R) a = R;
+
+  // hardness H/Sy = 2.84 (1 - exp(-0.82 (a/R)^-0.7)) (JG 2005 form)
+  double hs = 2.84 * (1 - exp(-0.82 * pow(a / R, -0.7)));
+  double C = 1.295 * exp(0.736 * law->nu);
+  return fy * (exp(-0.25 * pow(w, 5.0/12.0)) * w * sqrt(w)
+               + 4 * hs / C * (1 - exp(-pow(w, 5.0/9.0) / 25)) * w);
+}
+
+/* Hertz loading curve, with the JG branch blended in over [1.9, 2.2] dy when plastic */
+static double hertz_load(const urLaw* law, double d, double K, double dy, double fy)
+{
+  double fh = K * d * sqrt(d);
+  if (!law->plastic || d <= JG_LO * dy) return fh;
+
+  // smoothstep blend removes the ~1% jump of the JG fit at 1.9 dy
+  double fj = jackson_green(law, d, dy, fy);
+  double w = d / dy;
+  if (w >= JG_HI) return fj;
+  double s = (w - JG_LO) / (JG_HI - JG_LO);
+  s = s*s*(3 - 2*s);
+  return (1 - s)*fh + s*fj;
+}
+
+/* ---- elastic (rate-free) force of each law ---- */
+
+/* the depth at which the unloading curve, shifted to pass through (dmax, fmax), reaches
+   zero: dres = dmax - U^-1(fmax) + U^-1(0) */
+static double table_shift(const urLaw* law, double fmax)
+{
+  return curve_inverse(&law->unload, fmax);
+}
+
+static double elastic_force(const urLaw* law, const urLawState* s, double d, double area)
+{
+  switch (law->type) {
+  case urLAW_HERTZ: {
+    double K, dy, fy;
+    ur_law_hertz_params(law, &K, &dy, &fy);
+    if (!law->plastic) return K * d * sqrt(d);
+    if (d >= s->dmax) return hertz_load(law, d, K, dy, fy);
+
+    // Brake (2015) unloading: F = 4/3 E* sqrt(Ru) (d - dr)^1.5 with
+    // Ru = Fm^2 / ((4/3 E*)^2 (dm - dr)^3), i.e. F = Fm ((d - dr)/(dm - dr))^1.5 (sheet §1.4)
+    if (d <= s->dres) return 0;
+    double x = (d - s->dres) / (s->dmax - s->dres);
+    return s->fmax * x * sqrt(x);
+  }
+
+  case urLAW_TABLE: {
+    // loading curve; elastic without an unloading curve
+    double fl = ur_curve_eval(&law->load, d);
+    if (law->unload.n < 2 || d >= s->dmax) return fl;
+
+    // unload/reload along the unloading curve shifted along the depth axis through
+    // (dmax, fmax), never above the loading curve
+    double xs = table_shift(law, s->fmax);
+    double fu = ur_curve_eval(&law->unload, d - s->dmax + xs);
+    if (d <= s->dres) fu = 0;
+    return fu < fl ? fu : fl;
+  }
+
+  case urLAW_FOAM: {
+    // F = area x stress(strain), strain = d / thickness (sheet §3.1; Chou 1994)
+    if (!(law->thickness > 0)) return 0;
+    double e = d / law->thickness;
+    if (d >= s->dmax || !(law->unload_p > 0)) return area * ur_curve_eval(&law->stress, e);
+
+    // unloading from (em, sm): s = sm ((e - er)/(em - er))^p, er = r em (sheet §3.2)
+    double em = s->dmax / law->thickness;
+    double sm = ur_curve_eval(&law->stress, em);
+    double er = law->unload_r * em;
+    if (e <= er || !(em > er)) return 0;
+    return area * sm * pow((e - er) / (em - er), law->unload_p);
+  }
+  }
+  return 0;
+}
+
+double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate, double area)
+{
+  // no force without overlap, none while clear of the permanently deformed surface
+  if (!(d > 0)) return 0;
+  double fe = elastic_force(law, s, d, area);
+  if (!(fe > 0)) return 0;
+
+  // rate terms: Hunt-Crossley-type factor and linear damping (sheet §1.3); no adhesion
+  double f = fe * (1 + law->chi * rate) + law->damping * rate;
+  return f > 0 ? f : 0;
+}
+
+void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, double area)
+{
+  // out of contact: keep the history (permanent set)
+  if (!(d > 0)) {
+    s->touching = 0;
+    return;
+  }
+
+  // new maximum depth: record the loading force and the residual depth of each law
+  if (d > s->dmax) {
+    s->dmax = d;
+    switch (law->type) {
+    case urLAW_HERTZ: {
+      double K, dy, fy;
+      ur_law_hertz_params(law, &K, &dy, &fy);
+      s->fmax = law->plastic ? hertz_load(law, d, K, dy, fy) : K * d * sqrt(d);
+
+      // Brake (2015): dr = dm (1 - Fm / (K dm^1.5)), 0 for Hertzian loading (sheet §1.4)
+      double dr = d * (1 - s->fmax / (K * d * sqrt(d)));
+      s->dres = law->plastic && dr > 0 ? dr : 0;
+      break;
+    }
+    case urLAW_TABLE:
+      s->fmax = ur_curve_eval(&law->load, d);
+      if (law->unload.n >= 2) {
+        double dr = d - table_shift(law, s->fmax) + curve_inverse(&law->unload, 0);
+        s->dres = dr > 0 ? dr : 0;
+      } else {
+        s->dres = 0;
+      }
+      break;
+    case urLAW_FOAM:
+      s->fmax = law->thickness > 0 ? area * ur_curve_eval(&law->stress, d / law->thickness) : 0;
+      s->dres = law->unload_p > 0 ? law->unload_r * d : 0;
+      break;
+    }
+  }
+  s->touching = elastic_force(law, s, d, area) > 0;
+}
+
+/* ---- friction ---- */
+
+void ur_friction(const urLaw* law, double fn, const double vt[3], double out[3])
+{
+  // regularised Coulomb: Ft = -mu Fn vt / max(|vt|, v_eps) (sheet §2.6)
+  double v = sqrt(vt[0]*vt[0] + vt[1]*vt[1] + vt[2]*vt[2]);
+  double den = v > law->v_eps ? v : law->v_eps;
+  double k = den > 0 && fn > 0 ? -law->mu * fn / den : 0;
+  out[0] = k * vt[0];
+  out[1] = k * vt[1];
+  out[2] = k * vt[2];
+}
