@@ -9,10 +9,14 @@
 
 #include "uasrisk/descent.h"
 #include "uasrisk/grid.h"
+#include "uasrisk/impact.h"
 #include "uasrisk/injury.h"
+#include "uasrisk/modellang.h"
 #include "uasrisk/parametric.h"
 
 #define uraMAXLIST 64              /* values in a list parameter */
+#define uraMAXOV 64                /* model parameters set by the case or the user */
+#define uraMAXPARTS 32             /* model parts */
 #define uraERRLEN 1024
 
 /* ---- live case state ---- */
@@ -30,9 +34,25 @@ typedef struct {
   double face;                     /* face direction phi, deg */
   int format;                      /* uraFormat */
   urInjuryParams injury;           /* injury criteria and PoF curve settings */
+  double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
+  double step;                     /* grid pitch, m */
+  double par_min, par_max, perp_max; /* grid extents when set, m */
+  int extent_set;                  /* 0: extents sized automatically */
+  double threads;                  /* grid worker threads (a whole number) */
+  char ov_name[uraMAXOV][urNAMELEN]; /* model parameters overridden (SI values) */
+  double ov_val[uraMAXOV];
+  int ov_user[uraMAXOV];           /* 1: set by the user, 0: by the case preset */
+  int nov;
   char terminal[64];               /* gnuplot terminal; empty: gnuplot's default */
   char output[512];                /* gnuplot output file; empty: a window */
 } uraState;
+
+/* one part of the model set (human, ra3, airbags, sim, or loaded from a file) */
+typedef struct {
+  char name[urNAMELEN];
+  char* text;                      /* owned */
+  char origin[256];                /* "built-in" or the file it came from */
+} uraPart;
 
 /* the last grid with the conditions it was computed (or loaded) for */
 typedef struct {
@@ -63,6 +83,16 @@ typedef struct uraCtx {
   int depth;                       /* nesting of source */
   int quit;                        /* set by quit */
   uraGridResult last;              /* the last grid */
+  uraPart part[uraMAXPARTS];       /* the model set, in order */
+  int npart;
+  urModel* model;                  /* compiled with the overrides; NULL: stale */
+  urImpactSetup setup;             /* settled stance of the model; valid if have_setup */
+  int have_setup;
+  urImpactWork work;               /* the single-impact work space (histories of the last impact) */
+  int have_work;
+  int have_impact;                 /* the work holds a finished impact */
+  urImpactResult last_impact;
+  double last_dpar, last_dperp;
   /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
   int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
 } uraCtx;
@@ -82,7 +112,7 @@ int ura_parse_list(const char* s, double* v, int max);
 
 /* ---- parameters (one table drives set, show, save and completion) ---- */
 
-typedef enum { uraP_NUM = 0, uraP_LIST, uraP_ENUM, uraP_CASE, uraP_STR } uraPKind;
+typedef enum { uraP_NUM = 0, uraP_LIST, uraP_ENUM, uraP_CASE, uraP_STR, uraP_INT } uraPKind;
 
 typedef struct {
   const char* name;
@@ -166,11 +196,26 @@ extern const char* const ura_pof_names[];
 
 /* workbench (view.c, gridshow.c, gridload.c, plot.c) */
 int ura_cmd_grid(uraCtx* c, int argc, char** argv);
+int ura_grid_run(uraCtx* c, int quiet);
 int ura_grid_show(uraCtx* c);
 int ura_grid_load(uraCtx* c, const char* path);
 int ura_cmd_view(uraCtx* c, int argc, char** argv);
 int ura_cmd_plot(uraCtx* c, int argc, char** argv);
 void ura_last_free(uraCtx* c);
+
+/* models (model.c) */
+int ura_models_init(uraCtx* c);
+void ura_models_free(uraCtx* c);
+const urModel* ura_model(uraCtx* c);          /* compiled model, or NULL with c->err */
+const urImpactSetup* ura_setup(uraCtx* c);    /* settled stance, or NULL with c->err */
+void ura_model_stale(uraCtx* c);
+int ura_model_param_find(uraCtx* c, const char* name);   /* index in the model, or -1 */
+int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit,
+                        int user);
+int ura_cmd_model(uraCtx* c, int argc, char** argv);
+int ura_cmd_impact(uraCtx* c, int argc, char** argv);
+int ura_cmd_history(uraCtx* c, int argc, char** argv);
+int ura_impact_cond(uraCtx* c, urImpactCond* cond);
 
 /* interactive loop on GNU readline */
 int ura_repl(uraCtx* c);

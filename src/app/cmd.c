@@ -8,8 +8,9 @@
 const uraCmd ura_cmds[] = {
   {"help", ura_cmd_help, 0, 1, uraC_COMMAND, "help [COMMAND]",
    "list the commands, or explain one"},
-  {"set", ura_cmd_set, 2, 2, uraC_PARAM, "set NAME VALUE",
-   "change a parameter of the live case (see 'show' for names, units and ranges)"},
+  {"set", ura_cmd_set, 2, 3, uraC_PARAM, "set NAME VALUE [UNIT]",
+   "change a parameter of the live case (see 'show' for names, units and ranges); model "
+   "parameters take an optional unit"},
   {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
    "print the live case state with units, or one parameter; derived values say so"},
   {"case", ura_cmd_case, 1, 1, uraC_CASE, "case A|B|C|A1|A2",
@@ -30,6 +31,14 @@ const uraCmd ura_cmds[] = {
   {"plot", ura_cmd_plot, 1, -1, uraC_NONE, "plot pof|grid|history SIGNAL...|sweep",
    "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
    "the last impact, or the last sweeps (set terminal/output to write files)"},
+  {"impact", ura_cmd_impact, 2, 2, uraC_NONE, "impact DPAR DPERP",
+   "simulate one impact at the offset (along, across the course; m) of the live case; columns "
+   "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
+   "p_vc,p"},
+  {"history", ura_cmd_history, 0, 0, uraC_NONE, "history",
+   "print the time histories of the last impact (time and every sensor channel)"},
+  {"model", ura_cmd_model, 1, 2, uraC_NONE, "model show|params|parts|save FILE|load FILE",
+   "print, list, write or load the model set (human, drone, airbags, options: uasrisk-model(5))"},
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
@@ -70,7 +79,14 @@ int ura_cmd_set(uraCtx* c, int argc, char** argv) {
   const uraParam* p = ura_param_find(argv[1]);
   int i = p ? -1 : ura_injury_find(argv[1]);
   if (!p && i < 0) {
+    if (ura_model_param_find(c, argv[1]) >= 0) {
+      return ura_model_param_set(c, argv[1], argv[2], argc == 4 ? argv[3] : NULL, 1);
+    }
     return ura_fail(c, "set: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
+  }
+  if (argc == 4) {
+    return ura_fail(c, "set %s: takes no unit (it is in %s)", argv[1],
+                    p && *p->unit ? p->unit : "the unit 'show' prints");
   }
   return p ? ura_param_set(c, p, argv[2]) : ura_injury_set(c, i, argv[2]);
 }
@@ -105,6 +121,11 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   if (argc == 2) {
     const uraParam* p = ura_param_find(argv[1]);
     int i = p ? -1 : ura_injury_find(argv[1]);
+    int k = p || i >= 0 ? -1 : ura_model_param_find(c, argv[1]);
+    if (k >= 0) {
+      fprintf(c->out, "%-16s %.10g (SI)\n", argv[1], c->model->param[k].value);
+      return 0;
+    }
     if (!p && i < 0) {
       return ura_fail(c, "show: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
     }
@@ -117,6 +138,12 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   }
   fprintf(c->out, "# injury criteria (uasrisk-injury(7))\n");
   for (int i = 0; i < ur_injury_param_count(); i++) show_injury(c, i);
+  fprintf(c->out, "# model parameters, SI units (uasrisk-model(5); 'model params' says who set "
+          "them)\n");
+  const urModel* m = ura_model(c);
+  for (int i = 0; m && i < m->nparam; i++) {
+    fprintf(c->out, "%-16s %.10g\n", m->param[i].name, m->param[i].value);
+  }
   return 0;
 }
 
@@ -125,8 +152,10 @@ int ura_cmd_case(uraCtx* c, int argc, char** argv) {
 }
 
 int ura_cmd_reset(uraCtx* c, int argc, char** argv) {
+  ura_models_free(c);
   ura_state_defaults(&c->st);
-  return 0;
+  if (ura_models_init(c)) return -1;
+  return ura_case_load(c, "A");
 }
 
 int ura_cmd_quit(uraCtx* c, int argc, char** argv) {

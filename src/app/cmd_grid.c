@@ -1,9 +1,199 @@
 /* cmd_grid.c: the grid command: run the offset grid, print its cells, show or load it */
+#include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "app.h"
+
+/* set by SIGINT while a grid runs; workers stop taking cells */
+static volatile sig_atomic_t interrupted;
+static volatile int stop_flag;
+
+static void on_sigint(int sig) {
+  interrupted = 1;
+  stop_flag = 1;
+}
+
+typedef struct {
+  const urImpactSetup* s;
+  urImpactCond cond;
+  const urInjuryParams* ip;
+  urImpactWork* w;
+  int tty;
+} gridRun;
+
+static int cb_may(void* ctx, double dpar, double dperp) {
+  gridRun* g = ctx;
+  return ur_impact_may_contact(g->s, &g->cond, dpar, dperp);
+}
+
+static int cb_impact(void* ctx, int worker, urCell* cell) {
+  gridRun* g = ctx;
+  urImpactResult r;
+  if (ur_impact_run(g->s, &g->w[worker], &g->cond, g->ip, cell->dpar, cell->dperp, &r)) {
+    snprintf(cell->reason, sizeof cell->reason, "%.63s", r.reason);
+    return -1;
+  }
+  cell->contact = r.contact;
+  cell->hic15 = r.inj.hic15.hic;
+  cell->hic_t1 = r.inj.hic15.t1;
+  cell->hic_t2 = r.inj.hic15.t2;
+  cell->nij = r.inj.nij.nij;
+  cell->nij_mode = r.inj.nij.which;
+  cell->vc_thorax = r.inj.vc_thorax.vc;
+  cell->vc_abdomen = r.inj.vc_abdomen.vc;
+  cell->p_hic = r.inj.p_hic;
+  cell->p_nij = r.inj.p_nij;
+  cell->p_vc = r.inj.p_vc;
+  cell->p = r.contact ? r.p : 0.0;
+  return 0;
+}
+
+static void cb_progress(void* ctx, int done, int total) {
+  gridRun* g = ctx;
+  if (g->tty && (done == total || done % 8 == 0)) {
+    fprintf(stderr, "\rgrid: %d/%d impacts", done, total);
+    if (done == total) fputs("\r\033[K", stderr);
+  }
+}
+
+/* the lattice extents: grow a box until no cell on its border can be touched */
+static void auto_extents(const urImpactSetup* s, const urImpactCond* cond, double step,
+                         double* par_min, double* par_max, double* perp_max) {
+  long lo = -1, hi = 1, kp = 1;
+  for (int it = 0; it < 400; it++) {
+    int grow_lo = 0, grow_hi = 0, grow_p = 0;
+    for (long j = -kp; j <= kp; j++) {
+      if (ur_impact_may_contact(s, cond, lo * step, j * step)) grow_lo = 1;
+      if (ur_impact_may_contact(s, cond, hi * step, j * step)) grow_hi = 1;
+    }
+    for (long i = lo; i <= hi; i++) {
+      if (ur_impact_may_contact(s, cond, i * step, kp * step) ||
+          ur_impact_may_contact(s, cond, i * step, -kp * step)) {
+        grow_p = 1;
+      }
+    }
+    if (!grow_lo && !grow_hi && !grow_p) break;
+    lo -= grow_lo;
+    hi += grow_hi;
+    kp += grow_p;
+  }
+  *par_min = lo * step;
+  *par_max = hi * step;
+  *perp_max = kp * step;
+}
+
+/* the set-up is mirror-symmetric about the course: face 0 or 180, no roll or yaw */
+static int mirrored(const uraCtx* c) {
+  double f = fmod(fabs(c->st.face), 180.0);
+  return f == 0 && c->st.roll == 0 && c->st.yaw == 0;
+}
+
+/* run the grid of the live case into c->last */
+int ura_grid_run(uraCtx* c, int quiet) {
+  const urImpactSetup* s = ura_setup(c);
+  urImpactCond cond;
+  if (!s || ura_impact_cond(c, &cond)) return -1;
+
+  /* extents, lattice, refusing what memory cannot hold */
+  urGridSpec spec = {c->st.step, 0, 0, 0, mirrored(c), (int)c->st.threads, cb_may, cb_impact,
+                     cb_progress, NULL, &stop_flag};
+  if (c->st.extent_set) {
+    spec.par_min = c->st.par_min;
+    spec.par_max = c->st.par_max;
+    spec.perp_max = c->st.perp_max;
+  } else {
+    auto_extents(s, &cond, c->st.step, &spec.par_min, &spec.par_max, &spec.perp_max);
+  }
+  long ncell = ur_grid_cell_count(&spec);
+  if (ncell < 0 || ncell > 4000000L) {
+    return ura_fail(c, "grid: %ld cells of %g m (%.0f MB) is too large; accepted: at most "
+                    "4000000 cells (raise 'step' or set the extents)", ncell, spec.step,
+                    ncell * (double)sizeof(urCell) / 1e6);
+  }
+  urGrid* g = ur_grid_new(&spec);
+  int nw = spec.threads;
+  urImpactWork* w = calloc(nw, sizeof(urImpactWork));
+  if (!g || !w) {
+    ur_grid_free(g);
+    free(w);
+    return ura_fail(c, "grid: out of memory for %ld cells", ncell);
+  }
+  for (int i = 0; i < nw; i++) {
+    if (ur_impact_work_init(s, &w[i])) {
+      for (int k = 0; k <= i; k++) ur_impact_work_free(&w[k]);
+      free(w);
+      ur_grid_free(g);
+      return ura_fail(c, "grid: out of memory for the work spaces");
+    }
+  }
+
+  /* run with Ctrl-C stopping the workers */
+  gridRun run = {s, cond, &c->st.injury, w, !quiet && isatty(STDERR_FILENO)};
+  spec.ctx = &run;
+  interrupted = 0;
+  stop_flag = 0;
+  struct sigaction sa = {0}, old;
+  sa.sa_handler = on_sigint;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &old);
+  ur_grid_run(g, &spec);
+  sigaction(SIGINT, &old, NULL);
+  for (int i = 0; i < nw; i++) ur_impact_work_free(&w[i]);
+  free(w);
+
+  /* keep it as the last grid */
+  ura_last_free(c);
+  c->last.g = g;
+  snprintf(c->last.casename, sizeof c->last.casename, "%s", c->st.casename);
+  c->last.wind = c->st.descent.wind;
+  c->last.face = c->st.face;
+  c->last.speed = cond.speed;
+  c->last.angle = cond.angle;
+  snprintf(c->last.source, sizeof c->last.source, "computed");
+  if (interrupted) {
+    return ura_fail(c, "grid: interrupted; %d of %d cells finished, kept as a partial grid "
+                    "(no Q)", g->ndone, g->nrow * g->ncol);
+  }
+  return 0;
+}
+
+/* the summary row of the last grid */
+static int grid_summary(uraCtx* c) {
+  static const char* const cols[] = {"case", "wind", "speed", "angle", "face", "step", "cells",
+                                     "contact_cells", "q", "seconds"};
+  urGrid* g = c->last.g;
+  uraTable* t = ura_table_new(10, cols);
+  if (!g->complete) {
+    ura_table_note(t, "PARTIAL grid: %d cells failed, %d not computed; q is not given",
+                   g->nfailed, g->npending);
+  }
+  ura_table_note(t, "Q = sum of P{F|Delta} x %g m x %g m over the full plane (eq. 4.5); "
+                 "%d impacts simulated, %d cells decided geometrically", g->step, g->step,
+                 g->nsimulated, g->nrow * g->ncol - g->nsimulated - g->npending - g->nfailed);
+  ura_table_cell(t, "%s", c->last.casename);
+  ura_table_cell(t, "%g", c->last.wind);
+  ura_table_cell(t, "%.3f", c->last.speed);
+  ura_table_cell(t, "%.2f", c->last.angle);
+  ura_table_cell(t, "%g", c->last.face);
+  ura_table_cell(t, "%g", g->step);
+  ura_table_cell(t, "%d", g->nrow * g->ncol);
+  ura_table_cell(t, "%d", g->ncontact);
+  if (g->complete) ura_table_cell(t, "%.4f", g->q);
+  else ura_table_cell(t, "%s", "partial");
+  ura_table_cell(t, "%.2f", g->seconds);
+  ura_table_print(c, t);
+  for (int k = 0; k < g->nrow * g->ncol; k++) {
+    if (g->cell[k].status == urCELL_FAILED && !g->cell[k].mirrored) {
+      fprintf(c->msg, "grid: cell (%g, %g) failed: %s\n", g->cell[k].dpar, g->cell[k].dperp,
+              g->cell[k].reason);
+    }
+  }
+  return 0;
+}
 
 void ura_last_free(uraCtx* c) {
   ur_grid_free(c->last.g);
@@ -38,8 +228,17 @@ static int grid_cells(uraCtx* c) {
 
 int ura_cmd_grid(uraCtx* c, int argc, char** argv) {
   if (argc == 1) {
-    return ura_fail(c, "grid: the impact simulation of the human and drone models is not built "
-                    "yet; 'grid load FILE' views a grid CSV");
+    int rc = ura_grid_run(c, 0);
+    if (c->last.g) {
+      char keep[uraERRLEN];
+      snprintf(keep, sizeof keep, "%s", c->err);
+      grid_summary(c);
+      snprintf(c->err, sizeof c->err, "%s", keep);
+    }
+    if (rc == 0 && !c->last.g->complete) {
+      return ura_fail(c, "grid: %d cells failed; Q is not complete", c->last.g->nfailed);
+    }
+    return rc;
   }
   if (!strcmp(argv[1], "cells") && argc == 2) return grid_cells(c);
   if (!strcmp(argv[1], "show") && argc == 2) return ura_grid_show(c);

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   static uraCtx ctx;
   uraCtx* c = &ctx;
   ura_init(c);
+  if (!c->model) fprintf(stderr, "uasrisk: warning: built-in model: %s\n", c->err);
 
   /* options first: -i anywhere, help */
   int stay = 0, work = 0;

@@ -1,3 +1,666 @@
-/* plot.c: placeholder, replaced by the gnuplot pipe */
-#include "app.h"
-int ura_cmd_plot(uraCtx* c, int argc, char** argv) { return ura_fail(c, "plot: not built yet"); }
+/* plot.c: gnuplot as an external process. A plot is a complete script (commands and named
+ * datablocks $D << EOD ... EOD) built in memory, then written to gnuplot's standard input
+ * through a pipe; we wait for gnuplot to exit, so an output file is complete on return, and
+ * read its error output from a temporary file. SIGPIPE is ignored around the writes, a missing
+ * gnuplot or a missing display gives one clear message, and nothing here ends the program.
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "colors.h"
+#include "plot.h"
+
+#define GP_TIMEOUT 60.0            /* s: gnuplot taking longer than this is stopped */
+#define NPOF 241                   /* points per PoF curve */
+
+/* what a gnuplot terminal draws on */
+enum { TERM_WINDOW = 0, TERM_TEXT, TERM_FILE };
+
+static int term_kind(const char* t) {
+  static const char* const window[] = {"qt", "wxt", "x11", "aqua", "windows", NULL};
+  static const char* const text[] = {"dumb", "caca", "sixelgd", "sixeltek", "kittygd",
+                                     "kittycairo", "block", NULL};
+  char name[32];
+  size_t n = 0;
+  while (isspace((unsigned char)*t)) t++;
+  while (t[n] && !isspace((unsigned char)t[n]) && n < sizeof name - 1) n++;
+  memcpy(name, t, n);
+  name[n] = 0;
+  if (!n) return TERM_WINDOW;
+  for (int i = 0; window[i]; i++) if (!strcmp(name, window[i])) return TERM_WINDOW;
+  for (int i = 0; text[i]; i++) if (!strcmp(name, text[i])) return TERM_TEXT;
+  return TERM_FILE;
+}
+
+/* a terminal for an output file without one, from its extension */
+static const char* term_for_ext(const char* path) {
+  static const char* const map[][2] = {
+    {".png", "pngcairo"}, {".svg", "svg"}, {".pdf", "pdfcairo"}, {".eps", "epscairo"},
+    {".txt", "dumb"}, {".jpg", "jpeg"}, {".jpeg", "jpeg"}, {".gif", "gif"}, {NULL, NULL}
+  };
+  const char* dot = strrchr(path, '.');
+  if (!dot) return NULL;
+  for (int i = 0; map[i][0]; i++) if (!strcasecmp(dot, map[i][0])) return map[i][1];
+  return NULL;
+}
+
+/* gnuplot on PATH */
+static int have_gnuplot(void) {
+  const char* path = getenv("PATH");
+  if (!path) path = "/usr/local/bin:/usr/bin:/bin";
+  char dir[4096];
+  while (*path) {
+    size_t n = strcspn(path, ":");
+    if (n < sizeof dir - 16) {
+      memcpy(dir, path, n);
+      dir[n] = 0;
+      if (!n) strcpy(dir, ".");
+      strcat(dir, "/gnuplot");
+      if (!access(dir, X_OK)) return 1;
+    }
+    path += n;
+    if (*path == ':') path++;
+  }
+  return 0;
+}
+
+/* a string for gnuplot in double quotes */
+static void quote(FILE* f, const char* s) {
+  fputc('"', f);
+  for (; s && *s; s++) {
+    if (*s == '"' || *s == '\\') fputc('\\', f);
+    fputc(*s == '\n' || *s == '\r' ? ' ' : *s, f);
+  }
+  fputc('"', f);
+}
+
+/* set NAME "text" noenhanced */
+static void set_text(FILE* f, const char* name, const char* text) {
+  fprintf(f, "set %s ", name);
+  quote(f, text);
+  fprintf(f, " noenhanced\n");
+}
+
+/* a value for a datablock */
+static void num(FILE* f, double v) {
+  if (isfinite(v)) fprintf(f, "%.9g", v);
+  else fputs("NaN", f);
+}
+
+/* seconds on a monotonic clock */
+static double now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* write everything to a non-blocking pipe before the deadline; 0, errno, or ETIMEDOUT */
+static int write_all(int fd, const char* p, size_t n, double deadline) {
+  while (n) {
+    ssize_t k = write(fd, p, n);
+    if (k >= 0) {
+      p += k;
+      n -= (size_t)k;
+      continue;
+    }
+    if (errno == EINTR) continue;
+    if (errno != EAGAIN && errno != EWOULDBLOCK) return errno;
+    double left = deadline - now();
+    if (left <= 0) return ETIMEDOUT;
+    struct pollfd pf = {fd, POLLOUT, 0};
+    poll(&pf, 1, (int)(left * 1000) + 1);
+  }
+  return 0;
+}
+
+/* the whole of a temporary file (at most max bytes) as a string (caller frees) */
+static char* slurp(FILE* f, long max) {
+  fflush(f);
+  fseek(f, 0, SEEK_END);
+  long n = ftell(f);
+  if (n < 0) n = 0;
+  if (n > max) n = max;
+  char* s = malloc((size_t)n + 1);
+  if (!s) return NULL;
+  rewind(f);
+  size_t k = fread(s, 1, (size_t)n, f);
+  s[k] = 0;
+  return s;
+}
+
+/* the telling line of gnuplot's error output ("FILE" line N: message) into buf; returns N
+   (0 when no line is named) */
+static int gp_error(const char* err, char* buf, size_t n) {
+  int lineno = 0;
+  snprintf(buf, n, "no message");
+  for (const char* p = err; p && *p;) {
+    const char* e = strchr(p, '\n');
+    int len = e ? (int)(e - p) : (int)strlen(p);
+    const char* at = strstr(p, "line ");
+    int k = 0;
+    if (at && at < p + len && sscanf(at, "line %d: %n", &lineno, &k) == 1 && k > 0) {
+      const char* m = at + k;
+      while (*m == ' ') m++;
+      snprintf(buf, n, "%.*s", (int)(p + len - m), m);
+      return lineno;
+    }
+    while (len > 0 && isspace((unsigned char)*p)) p++, len--;
+    if (len > 0 && !lineno && !strcmp(buf, "no message")) snprintf(buf, n, "%.*s", len, p);
+    p = e ? e + 1 : NULL;
+  }
+  return 0;
+}
+
+/* the terminal and output preamble, or -1 with the error recorded */
+static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
+  const char* term = c->st.terminal;
+  const char* out = c->st.output;
+  if (strpbrk(term, "\n\r;`")) {
+    return ura_fail(c, "%s: terminal '%s' holds ';', '`' or a line break", who, term);
+  }
+  if (strpbrk(out, "\n\r'")) {
+    return ura_fail(c, "%s: output file name '%s' holds a quote or a line break", who, out);
+  }
+  if (*out && !*term) {
+    term = term_for_ext(out);
+    if (!term) {
+      return ura_fail(c, "%s: no terminal for output '%s'; use 'set terminal png' (or svg, "
+                      "pdfcairo, ...)", who, out);
+    }
+  }
+  int kind = term_kind(term);
+  if (!*out && kind == TERM_FILE) {
+    return ura_fail(c, "%s: terminal '%s' writes a file; use 'set output FILE'", who, term);
+  }
+  *window = !*out && kind == TERM_WINDOW;
+  if (*term) fprintf(f, "set terminal %s\n", term);
+  if (*out) fprintf(f, "set output '%s'\n", out);
+  return 0;
+}
+
+int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) {
+  /* the settings, then gnuplot and a display */
+  char* pre = NULL;
+  size_t npre = 0;
+  FILE* pf = open_memstream(&pre, &npre);
+  if (!pf) return ura_fail(c, "%s: out of memory", who);
+  int window = 0;
+  int rc = preamble(c, who, pf, &window);
+  fclose(pf);
+  if (rc) {
+    free(pre);
+    return -1;
+  }
+  if (!have_gnuplot()) {
+    free(pre);
+    return ura_fail(c, "%s: gnuplot not found; install it (Debian: gnuplot-nox) or use export",
+                    who);
+  }
+  const char* d = getenv("DISPLAY");
+  const char* w = getenv("WAYLAND_DISPLAY");
+  if (window && !(d && *d) && !(w && *w)) {
+    free(pre);
+    return ura_fail(c, "plot: no display; use 'set terminal png' and 'set output FILE.png'");
+  }
+
+  /* gnuplot reads the pipe; its output and errors go to temporary files */
+  FILE* ef = tmpfile();
+  FILE* of = tmpfile();
+  int fd[2] = {-1, -1};
+  if (!ef || !of || pipe(fd)) {
+    if (ef) fclose(ef);
+    if (of) fclose(of);
+    free(pre);
+    return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(errno));
+  }
+  fflush(NULL);
+  pid_t pid = fork();
+  if (pid == 0) {
+    dup2(fd[0], STDIN_FILENO);
+    dup2(fileno(of), STDOUT_FILENO);
+    dup2(fileno(ef), STDERR_FILENO);
+    close(fd[0]);
+    close(fd[1]);
+    /* a script file (not interactive input) stops at its first error */
+    if (window) execlp("gnuplot", "gnuplot", "-persist", "/dev/stdin", (char*)NULL);
+    else execlp("gnuplot", "gnuplot", "/dev/stdin", (char*)NULL);
+    _exit(127);
+  }
+  close(fd[0]);
+  if (pid < 0) {
+    close(fd[1]);
+    fclose(ef);
+    fclose(of);
+    free(pre);
+    return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(errno));
+  }
+
+  /* the script, with SIGPIPE ignored (a gnuplot that died shows as EPIPE) and a deadline
+     (a gnuplot that stops reading does not hold us) */
+  struct sigaction ign = {0}, old;
+  ign.sa_handler = SIG_IGN;
+  sigemptyset(&ign.sa_mask);
+  sigaction(SIGPIPE, &ign, &old);
+  double deadline = now() + GP_TIMEOUT;
+  fcntl(fd[1], F_SETFL, fcntl(fd[1], F_GETFL) | O_NONBLOCK);
+  int werr = write_all(fd[1], pre, npre, deadline);
+  if (!werr) werr = write_all(fd[1], script, len, deadline);
+  if (!werr && strstr(pre, "set output")) {
+    werr = write_all(fd[1], "unset output\n", 13, deadline);
+  }
+  close(fd[1]);
+  sigaction(SIGPIPE, &old, NULL);
+
+  /* wait for gnuplot, stopping it at the deadline */
+  int status = 0, waited = 0;
+  struct timespec tick = {0, 5000000};
+  for (;;) {
+    pid_t r = waitpid(pid, &status, WNOHANG);
+    if (r == pid || (r < 0 && errno != EINTR)) {
+      waited = r == pid;
+      break;
+    }
+    if (now() > deadline) break;
+    nanosleep(&tick, NULL);
+  }
+  if (!waited) {
+    kill(pid, SIGKILL);
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+  }
+
+  /* text terminals' drawings to the output stream, then the verdict */
+  char* outtext = slurp(of, 1L << 24);
+  char* errtext = slurp(ef, 65536);
+  fclose(of);
+  fclose(ef);
+  if (outtext && *outtext && c->out) fputs(outtext, c->out);
+  free(outtext);
+
+  /* name the setting when gnuplot refused the preamble */
+  char msg[512], full[700];
+  int at = gp_error(errtext, msg, sizeof msg);
+  int npl = 0;
+  for (const char* p = pre; p && *p; p++) npl += *p == '\n';
+  if (at >= 1 && at <= npl) {
+    const char* p = pre;
+    for (int i = 1; i < at; i++) p = strchr(p, '\n') + 1;
+    snprintf(full, sizeof full, "%.*s: %s", (int)strcspn(p, "\n"), p, msg);
+  } else {
+    snprintf(full, sizeof full, "%s", msg);
+  }
+  /* the verdict: stopped, not found, killed, failed, or no file */
+  rc = 0;
+  if (!waited) {
+    rc = ura_fail(c, "%s: gnuplot did not finish within %g s and was stopped", who, GP_TIMEOUT);
+  } else if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
+    rc = ura_fail(c, "%s: gnuplot not found; install it (Debian: gnuplot-nox) or use export",
+                  who);
+  } else if (WIFSIGNALED(status)) {
+    rc = ura_fail(c, "%s: gnuplot was killed by signal %d%s%s", who, WTERMSIG(status),
+                  errtext && *errtext ? ": " : "", errtext && *errtext ? full : "");
+  } else if (WEXITSTATUS(status) != 0 || werr) {
+    rc = ura_fail(c, "%s: gnuplot failed%s: %s", who, werr == EPIPE ? " (it stopped reading)" :
+                  "", full);
+  } else if (*c->st.output) {
+    struct stat sb;
+    if (stat(c->st.output, &sb) || sb.st_size == 0) {
+      rc = ura_fail(c, "%s: gnuplot wrote nothing to '%s'", who, c->st.output);
+    }
+  }
+
+  /* on success, gnuplot's warnings as notes */
+  if (!rc && errtext && c->msg) {
+    char* save = NULL;
+    for (char* p = strtok_r(errtext, "\n", &save); p; p = strtok_r(NULL, "\n", &save)) {
+      while (isspace((unsigned char)*p)) p++;
+      if (*p) fprintf(c->msg, "%s: gnuplot: %s\n", who, p);
+    }
+  }
+  free(errtext);
+  free(pre);
+  return rc;
+}
+
+/* build a script with a writer function, then run it */
+typedef int (*writer)(uraCtx* c, FILE* f, const void* arg);
+
+static int run_script(uraCtx* c, const char* who, writer fn, const void* arg) {
+  char* s = NULL;
+  size_t n = 0;
+  FILE* f = open_memstream(&s, &n);
+  if (!f) return ura_fail(c, "%s: out of memory", who);
+  int rc = fn(c, f, arg);
+  fclose(f);
+  if (!rc) rc = ura_gnuplot_run(c, who, s, n);
+  free(s);
+  return rc;
+}
+
+/* ---- x-y curves ---- */
+
+typedef struct {
+  const char* title;
+  const char* xlabel;
+  const char* ylabel;
+  int nser;
+  const uraSeries* s;
+} xyargs;
+
+static int write_xy(uraCtx* c, FILE* f, const void* arg) {
+  const xyargs* a = arg;
+  for (int k = 0; k < a->nser; k++) {
+    fprintf(f, "$S%d << EOD\n", k);
+    for (int i = 0; i < a->s[k].n; i++) {
+      num(f, a->s[k].x[i]);
+      fputc(' ', f);
+      num(f, a->s[k].y[i]);
+      fputc('\n', f);
+    }
+    fprintf(f, "EOD\n");
+  }
+  fprintf(f, "set grid\nset key noenhanced\n");
+  if (a->title) set_text(f, "title", a->title);
+  if (a->xlabel) set_text(f, "xlabel", a->xlabel);
+  if (a->ylabel) set_text(f, "ylabel", a->ylabel);
+  fprintf(f, "plot ");
+  for (int k = 0; k < a->nser; k++) {
+    fprintf(f, "%s$S%d using 1:2 with linespoints pt 7 ps 0.5 lw 2 ", k ? ", " : "", k);
+    if (a->s[k].title) {
+      fprintf(f, "title ");
+      quote(f, a->s[k].title);
+    } else {
+      fprintf(f, "notitle");
+    }
+  }
+  fprintf(f, "\n");
+  return 0;
+}
+
+int ura_plot_xy(uraCtx* c, const char* who, const char* title, const char* xlabel,
+                const char* ylabel, int nser, const uraSeries* s) {
+  if (nser < 1 || !s) return ura_fail(c, "%s: nothing to plot", who);
+  for (int k = 0; k < nser; k++) {
+    if (s[k].n < 1 || !s[k].x || !s[k].y) return ura_fail(c, "%s: empty curve", who);
+  }
+  xyargs a = {title, xlabel, ylabel, nser, s};
+  return run_script(c, who, write_xy, &a);
+}
+
+/* ---- the grid as a heat map ---- */
+
+/* the band colours as a stepped palette over 0..100 % */
+static void band_palette(FILE* f) {
+  fprintf(f, "set palette defined (0 '#ffffff', 0.001 '#fff3b0', %g '#fff3b0', %g '#ffe000', "
+          "%g '#ffe000', %g '#ff9000', %g '#ff9000', %g '#d7191c', 100 '#d7191c')\n",
+          uraBAND_MED, uraBAND_MED, uraBAND_HIGH, uraBAND_HIGH, uraBAND_SEVERE, uraBAND_SEVERE);
+  fprintf(f, "set cbrange [0:100]\nset cbtics (0, %g, %g, %g, 100)\n", uraBAND_MED,
+          uraBAND_HIGH, uraBAND_SEVERE);
+}
+
+static int write_grid(uraCtx* c, FILE* f, const void* arg) {
+  const urGrid* g = c->last.g;
+  char cond[256], q[256], title[600];
+
+  /* the data: one scan line per along offset; unfinished cells are NaN */
+  fprintf(f, "$D << EOD\n");
+  for (int i = g->nrow - 1; i >= 0; i--) {
+    for (int j = 0; j < g->ncol; j++) {
+      const urCell* cl = &g->cell[(size_t)i * g->ncol + j];
+      int fin = cl->status == urCELL_DONE || cl->status == urCELL_NOCONTACT;
+      num(f, g->perp_min + j * g->step);
+      fputc(' ', f);
+      num(f, g->par_max - i * g->step);
+      fputc(' ', f);
+      num(f, fin ? cl->p * 100.0 : NAN);
+      fputc('\n', f);
+    }
+    fputc('\n', f);
+  }
+  fprintf(f, "EOD\n");
+
+  /* axes in metres, square cells, the band palette */
+  ura_grid_conditions(c, cond, sizeof cond);
+  ura_grid_qtext(g, q, sizeof q);
+  snprintf(title, sizeof title, "P{F|Delta} in %%; %s", q);
+  double h = g->step / 2;
+  double width = (g->ncol - 1) * g->step;
+  fprintf(f, "set title ");
+  quote(f, cond);
+  fprintf(f, ".\"\\n\".");
+  quote(f, title);
+  fprintf(f, " noenhanced\n");
+  fprintf(f, "set xtics %g\n", width > 1.2 ? 0.4 : 0.2);
+  fprintf(f, "set xlabel \"cross offset dperp (m)\" noenhanced\n");
+  fprintf(f, "set ylabel \"along offset dpar (m)\" noenhanced\n");
+  fprintf(f, "set cblabel \"P{F|Delta} (%%)\" noenhanced\n");
+  fprintf(f, "set size ratio -1\nset xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n",
+          g->perp_min - h, g->perp_min + (g->ncol - 1) * g->step + h,
+          g->par_max - (g->nrow - 1) * g->step - h, g->par_max + h);
+  fprintf(f, "set tics out\nset grid front lc rgb '#999999'\n");
+  band_palette(f);
+  fprintf(f, "plot $D using 1:2:3 with image notitle\n");
+  return 0;
+}
+
+int ura_plot_grid(uraCtx* c) {
+  if (!c->last.g) return ura_fail(c, "plot grid: no grid yet; run 'grid' or 'grid load FILE'");
+  return run_script(c, "plot grid", write_grid, NULL);
+}
+
+/* ---- PoF curves ---- */
+
+static int write_pof(uraCtx* c, FILE* f, const void* arg) {
+  const urInjuryParams* p = arg;
+  double x[NPOF], y[NPOF];
+  static const char* const blocks[] = {"HIC", "NIJ", "VCT", "VCA", "VC"};
+  static const urPofKind kinds[] = {urPOF_HIC, urPOF_NIJ, urPOF_VC_THORAX, urPOF_VC_ABDOMEN,
+                                    urPOF_VC};
+  double vcmax = 0;
+
+  /* one datablock per curve; the Nij block also holds the AIS2+..AIS5+ curves */
+  for (int k = 0; k < 5; k++) {
+    if (ur_pof_curve(kinds[k], p, NPOF, x, y) != NPOF) {
+      return ura_fail(c, "plot pof: the %s PoF curve cannot be computed", blocks[k]);
+    }
+    if (k >= 2) vcmax = fmax(vcmax, x[NPOF - 1]);
+    fprintf(f, "$%s << EOD\n", blocks[k]);
+    for (int i = 0; i < NPOF; i++) {
+      fprintf(f, "%.9g %.9g", x[i], 100 * y[i]);
+      if (kinds[k] == urPOF_NIJ) {
+        double q[4];
+        ur_nij_ais(x[i], p, q);
+        fprintf(f, " %.9g %.9g %.9g %.9g", 100 * q[0], 100 * q[1], 100 * q[2], 100 * q[3]);
+      }
+      fputc('\n', f);
+    }
+    fprintf(f, "EOD\n");
+  }
+
+  /* four panels: HIC, Nij, the AIS curves of Nij, VC; keys in the empty top left */
+  fprintf(f, "set grid\nset yrange [0:100]\nset ylabel \"P (%%)\"\n"
+          "set key top left Left reverse samplen 2 noenhanced\n");
+  fprintf(f, "set multiplot layout 2,2 title \"probability of fatality curves "
+          "(uasrisk-injury(7))\" noenhanced\n");
+  fprintf(f, "set title \"HIC15 -> P_HIC\" noenhanced\nset xlabel \"HIC15\"\n"
+          "set xtics 1000\nplot $HIC using 1:2 with lines lw 2 notitle\n"
+          "set key bottom right\n");
+  fprintf(f, "set title \"Nij -> P_NI (C.3)\" noenhanced\nset xlabel \"Nij\"\n"
+          "set xtics autofreq\nplot $NIJ using 1:2 with lines lw 2 notitle\n");
+  fprintf(f, "set title \"Nij -> P(AIS >= k)\" noenhanced\n"
+          "plot for [k=2:5] $NIJ using 1:(column(k+1)) with lines lw 2 "
+          "title sprintf(\"AIS%%d+\", k)\n");
+  fprintf(f, "set title \"VC -> P_VC\" noenhanced\nset xlabel \"VC (m/s)\"\n"
+          "set key top left\n"
+          "set xrange [0:%.9g]\n"
+          "plot $VCT using 1:2 with lines lw 2 title \"thorax\", "
+          "$VCA using 1:2 with lines lw 2 title \"abdomen\", "
+          "$VC using 1:2 with lines lw 2 dt 2 title \"fused\"\n", vcmax);
+  fprintf(f, "unset multiplot\n");
+  return 0;
+}
+
+int ura_plot_pof(uraCtx* c, const urInjuryParams* p) {
+  urInjuryParams def;
+  if (!p) {
+    ur_injury_defaults(&def);
+    p = &def;
+  }
+  return run_script(c, "plot pof", write_pof, p);
+}
+
+/* ---- time histories ---- */
+
+typedef struct {
+  const uraTrace* tr;
+  int nsel;
+  const int* sel;
+  double t1, t2;
+} traceargs;
+
+/* head acceleration in m/s^2 is shown in g */
+static int in_g(const uraTrace* tr, int k) {
+  const char* u = tr->units ? tr->units[k] : NULL;
+  return !strcmp(tr->names[k], "head_acc") && u && (!strcmp(u, "m/s^2") || !strcmp(u, "m/s2"));
+}
+
+int ura_trace_find(const uraTrace* tr, const char* name) {
+  for (int k = 0; tr && tr->names && k < tr->nsig; k++) {
+    if (tr->names[k] && !strcmp(tr->names[k], name)) return k;
+  }
+  return -1;
+}
+
+double ura_trace_scale(const uraTrace* tr, int k, const char** unit) {
+  int g = in_g(tr, k);
+  if (unit) *unit = g ? "g" : tr->units && tr->units[k] ? tr->units[k] : "";
+  return g ? 1.0 / urGRAVITY : 1.0;
+}
+
+static int write_trace(uraCtx* c, FILE* f, const void* arg) {
+  const traceargs* a = arg;
+  const uraTrace* tr = a->tr;
+  int cols = a->nsel > 4 ? 2 : 1, rows = (a->nsel + cols - 1) / cols;
+
+  /* one datablock: time in ms, then the selected signals */
+  fprintf(f, "$T << EOD\n");
+  for (int i = 0; i < tr->n; i++) {
+    num(f, tr->t[i] * 1000.0);
+    for (int s = 0; s < a->nsel; s++) {
+      int k = a->sel[s];
+      double v = tr->v[(size_t)k * tr->n + i];
+      fputc(' ', f);
+      num(f, in_g(tr, k) ? v / urGRAVITY : v);
+    }
+    fputc('\n', f);
+  }
+  fprintf(f, "EOD\n");
+
+  /* one panel per signal; the HIC window shaded on head_acc */
+  fprintf(f, "set grid\nset xlabel \"t (ms)\"\nset key off\n");
+  if (a->nsel > 1) fprintf(f, "set multiplot layout %d,%d\n", rows, cols);
+  for (int s = 0; s < a->nsel; s++) {
+    int k = a->sel[s];
+    const char* unit = in_g(tr, k) ? "g" : tr->units && tr->units[k] ? tr->units[k] : "";
+    char label[128];
+    snprintf(label, sizeof label, "%s%s%s%s", tr->names[k], *unit ? " (" : "", unit,
+             *unit ? ")" : "");
+    set_text(f, "ylabel", label);
+    fprintf(f, "unset object\nunset title\n");
+    if (!strcmp(tr->names[k], "head_acc") && isfinite(a->t1) && a->t2 > a->t1) {
+      char title[128];
+      snprintf(title, sizeof title, "HIC15 window %.2f-%.2f ms", a->t1 * 1e3, a->t2 * 1e3);
+      fprintf(f, "set object 1 rect from %.9g, graph 0 to %.9g, graph 1 behind "
+              "fc rgb '#ffd580' fs solid 0.6 noborder\n", a->t1 * 1e3, a->t2 * 1e3);
+      set_text(f, "title", title);
+    }
+    fprintf(f, "plot $T using 1:%d with lines lw 2\n", s + 2);
+  }
+  if (a->nsel > 1) fprintf(f, "unset multiplot\n");
+  return 0;
+}
+
+int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names,
+                       double t1, double t2) {
+  const char* who = "plot history";
+  if (!tr || tr->n < 2 || tr->nsig < 1 || !tr->t || !tr->v || !tr->names) {
+    return ura_fail(c, "%s: no impact yet", who);
+  }
+
+  /* the selected signals by name; none named: all */
+  int* sel = malloc((size_t)(nsel > 0 ? nsel : tr->nsig) * sizeof *sel);
+  if (!sel) return ura_fail(c, "%s: out of memory", who);
+  int n = 0, head = -1;
+  for (int s = 0; s < (nsel > 0 ? nsel : tr->nsig); s++) {
+    int k = s;
+    if (nsel > 0) {
+      for (k = 0; k < tr->nsig && strcmp(tr->names[k], names[s]); k++) {}
+      if (k == tr->nsig) {
+        char list[512];
+        size_t m = 0;
+        list[0] = 0;
+        for (int j = 0; j < tr->nsig && m < sizeof list; j++) {
+          m += (size_t)snprintf(list + m, sizeof list - m, "%s%s", j ? ", " : "", tr->names[j]);
+        }
+        free(sel);
+        return ura_fail(c, "%s: no signal '%s'; signals: %s", who, names[s], list);
+      }
+    }
+    if (!strcmp(tr->names[k], "head_acc")) head = k;
+    sel[n++] = k;
+  }
+
+  /* HIC15 window from the head acceleration when not given */
+  if (head >= 0 && !(isfinite(t1) && t2 > t1)) {
+    double* a = malloc((size_t)tr->n * sizeof *a);
+    urHic h;
+    t1 = t2 = NAN;
+    if (a) {
+      for (int i = 0; i < tr->n; i++) {
+        double v = tr->v[(size_t)head * tr->n + i];
+        a[i] = in_g(tr, head) ? v / urGRAVITY : v;
+      }
+      if (!ur_hic(tr->t, a, tr->n, 0.015, NULL, &h) && h.hic > 0) {
+        t1 = h.t1;
+        t2 = h.t2;
+      }
+      free(a);
+    }
+  }
+  traceargs ta = {tr, n, sel, t1, t2};
+  int rc = run_script(c, who, write_trace, &ta);
+  free(sel);
+  return rc;
+}
+
+int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names) {
+  return ura_plot_trace_hic(c, tr, nsel, names, NAN, NAN);
+}
+
+/* ---- the command ---- */
+
+int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
+  const char* what = argv[1];
+  if (!strcmp(what, "history")) {
+    return ura_fail(c, "plot history: no impact yet");
+  }
+  if (argc > 2) return ura_fail(c, "plot %s: takes no arguments", what);
+  if (!strcmp(what, "pof")) return ura_plot_pof(c, &c->st.injury);
+  if (!strcmp(what, "grid")) return ura_plot_grid(c);
+  if (!strcmp(what, "sweep")) return ura_fail(c, "plot sweep: no sweep yet");
+  return ura_fail(c, "plot: unknown plot '%s'; accepted: pof, grid, history SIGNAL..., sweep",
+                  what);
+}

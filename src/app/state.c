@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
+#include <unistd.h>
 
 #include "app.h"
 
@@ -21,6 +22,14 @@ const uraParam ura_params[] = {
   {"wind", uraP_NUM, OFF(descent.wind), 0, "m/s", 0, 60, "horizontal wind speed", NULL},
   {"face", uraP_NUM, OFF(face), 0, "deg", -360, 360,
    "face direction phi of the person; 0 faces the incoming drone (into the wind)", NULL},
+  {"pitch", uraP_NUM, OFF(pitch), 0, "deg", -90, 90,
+   "drone pitch at impact, nose down > 0 (paper: 0, upright under the parachute)", NULL},
+  {"roll", uraP_NUM, OFF(roll), 0, "deg", -90, 90, "drone roll at impact (paper: 0)", NULL},
+  {"yaw", uraP_NUM, OFF(yaw), 0, "deg", -180, 180,
+   "drone yaw from its course (paper: 0, along axis on the course)", NULL},
+  {"step", uraP_NUM, OFF(step), 0, "m", 0.005, 1, "grid pitch", NULL},
+  {"threads", uraP_INT, OFF(threads), 0, "", 1, 64,
+   "grid worker threads (results do not depend on it)", NULL},
   {"winds", uraP_LIST, OFF(winds), 0, "m/s", 0, 60,
    "wind speeds of the rows of descent and parametric", NULL},
   {"speed", uraP_NUM, OFF(speed), OFF(speed_set), "m/s", 0.01, 200,
@@ -82,6 +91,9 @@ void ura_state_defaults(uraState* s) {
   s->nwinds = 6;
   s->face = 0;
   s->format = uraFMT_TABLE;
+  s->step = 0.05;
+  long n = sysconf(_SC_NPROCESSORS_ONLN);
+  s->threads = n > 0 ? (double)n : 1;
 }
 
 void ura_init(uraCtx* c) {
@@ -89,6 +101,7 @@ void ura_init(uraCtx* c) {
   ura_state_defaults(&c->st);
   c->out = stdout;
   c->msg = stderr;
+  if (ura_models_init(c) == 0) ura_case_load(c, "A");
 }
 
 const uraParam* ura_param_find(const char* name) {
@@ -108,7 +121,8 @@ static void accepted(const uraParam* p, char* buf, size_t n) {
     }
   } else {
     snprintf(buf, n, "%s in [%g, %g]%s%s%s", p->kind == uraP_LIST ?
-             "comma-separated numbers, each" : "a number", p->min, p->max,
+             "comma-separated numbers, each" : p->kind == uraP_INT ? "a whole number" :
+             "a number", p->min, p->max,
              *p->unit ? " " : "", p->unit, p->setoff ? ", or auto" : "");
   }
 }
@@ -159,6 +173,7 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
     return 0;
   }
 
+  case uraP_INT:
   case uraP_NUM: {
     double v;
     if (p->setoff && !strcmp(value, "auto")) {
@@ -168,7 +183,7 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
     if (ura_parse_number(value, &v)) {
       return ura_fail(c, "set %s: '%s' is not a number; accepted: %s", p->name, value, acc);
     }
-    if (v < p->min || v > p->max) {
+    if (v < p->min || v > p->max || (p->kind == uraP_INT && v != floor(v))) {
       return ura_fail(c, "set %s: %g is out of range; accepted: %s", p->name, v, acc);
     }
     *(double*)(base + p->off) = v;
@@ -210,6 +225,7 @@ void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
     }
     break;
   }
+  case uraP_INT:
   case uraP_NUM:
     if (p->setoff && !*(const int*)(base + p->setoff)) snprintf(buf, n, "auto");
     else fmt_exact(buf, n, *(const double*)(base + p->off));
@@ -276,6 +292,7 @@ int ura_case_load(uraCtx* c, const char* name) {
   s->descent.wind = keep.descent.wind;
   s->face = keep.face;
   memcpy(s->winds, keep.winds, sizeof s->winds);
+  s->threads = keep.threads;
   s->nwinds = keep.nwinds;
   s->format = keep.format;
   strcpy(s->terminal, keep.terminal);
@@ -284,5 +301,18 @@ int ura_case_load(uraCtx* c, const char* name) {
 
   /* case C has no parachute; A, A1, A2 descend as B (the airbag does not change the descent) */
   if (!strcmp(s->casename, "C")) s->descent.area_chute = 0;
+
+  /* airbags of the case, as model parameters (skipped if the model has no such parameter) */
+  static const double bags[5][3] = {{1, 0, 1.0}, {0, 0, 1.0}, {0, 0, 1.0}, {1, 0, 1.1},
+                                    {1, 1, 1.1}};
+  static const char* const names[3] = {"bag_bottom", "bag_front", "bag_p0"};
+  ura_model_stale(c);
+  for (int i = 0; i < 3; i++) {
+    char v[32];
+    snprintf(v, sizeof v, "%.17g", i == 2 ? bags[k][i] * 101325.0 : bags[k][i]);
+    if (ura_model_param_find(c, names[i]) >= 0 && ura_model_param_set(c, names[i], v, NULL, 0)) {
+      return -1;
+    }
+  }
   return 0;
 }

@@ -1,0 +1,426 @@
+/* engine.h: multibody impact engine (rigid bodies in reduced coordinates, articulated-body
+ * algorithm, ellipsoid contact, uniform-pressure airbag, sensors). MuJoCo-style split: a constant
+ * compiled model urModel and per-run data urData; any number of urData per model may run in
+ * parallel threads (no globals, no locks, no allocation inside ur_step).
+ *
+ * Conventions: SI units; world frame z up, gravity along -z by default. Rotation matrices are
+ * row-major, local -> world. Quaternions are (w, x, y, z), unit, local -> world. Spatial vectors
+ * are (angular, linear). Every body has exactly one joint to its parent (or to the world);
+ * body frame origin = joint anchor. Joint id = body id. Bodies are added parents first, so the
+ * body order is a topological order of the forest; each tree's root joins the world.
+ *
+ * Use:
+ *   urModel* m = ur_model_new();
+ *   int b = ur_model_add_body(m, "head", neck, urJNT_SPHERICAL, pos_in_neck, NULL);
+ *   ur_model_set_inertia(m, b, 4.5, com, I6);         // also set_joint, set_restraint
+ *   int g = ur_model_add_ellipsoid(m, "skull", b, centre, NULL, semiaxes);
+ *   ur_model_add_pair(m, "frame_skull", g, frame, &law); // law from contact.h
+ *   ur_model_add_sensor(m, "neck", urSENS_JOINTLOAD, b, 0, NULL, NULL);
+ *   ur_model_compile(m);                               // m is constant from here on
+ *   urData* d = ur_data_new(m);
+ *   for (...) ur_step(m, d);                           // e.g. settle the standing person
+ *   urData* run = ur_data_new(m);  ur_data_history(m, run, NULL, rows);
+ *   ur_data_copy(m, run, d);                           // start each run from the settled state
+ *   ur_run_impact(m, run, drone, pos, quat, vel);      // jump, step until the end, status > 0
+ *   run->peakmax[m->sensor[s].adr + k], run->hist[row * (1 + m->nsensordata) + 1 + adr + k]
+ */
+#ifndef UASRISK_ENGINE_H
+#define UASRISK_ENGINE_H
+
+#include <stddef.h>
+#include "uasrisk/contact.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define urNAMELEN     32           /* bytes in a name, including the terminating 0 */
+#define urMAXBAGTGT   32           /* target ellipsoids per airbag */
+#define urMSGLEN      160          /* bytes in error / status messages */
+
+//---------------------------------- enums ---------------------------------------------------------
+
+typedef enum {
+  urJNT_FREE = 0,                  /* 6 dof: qpos = CoM position in parent (3) + quat (4);
+                                      qvel = CoM velocity in parent frame (3) + omega in body (3) */
+  urJNT_FIXED,                     /* 0 dof */
+  urJNT_REVOLUTE,                  /* 1 dof: angle about axis[0] (body frame), rad */
+  urJNT_UNIVERSAL,                 /* 2 dof: R = Rot(axis[0], q0) Rot(axis[1], q1) (Cardan) */
+  urJNT_SPHERICAL,                 /* 3 dof: qpos = quat (4), qvel = relative omega in body (3) */
+  urJNT_PRISMATIC                  /* 1 dof: translation along axis[0] (body frame), m */
+} urJointType;
+
+typedef enum {
+  urINT_EULER = 0,                 /* semi-implicit (symplectic) Euler: v += dt a; q += dt v */
+  urINT_RK4                        /* classical Runge-Kutta 4 (accuracy cross-check) */
+} urIntegrator;
+
+typedef enum {
+  urSENS_ACCEL = 0,                /* 3: kinematic acceleration of a body point (gravity not
+                                      included: 0 at rest), world frame, m/s^2 */
+  urSENS_JOINTLOAD,                /* 6: force (3) and moment (3) that the parent exerts on the
+                                      child through the joint, at the joint anchor, in the child
+                                      frame rotated by quat, N, N m (all loads: restraint, contact
+                                      transmitted, inertial); a head resting on its neck reads
+                                      Fz = +m g, i.e. SAE J211 tension-positive Fz is -Fz here */
+  urSENS_JOINTPOS,                 /* 1: joint coordinate qpos[qadr + dof] (rad or m) */
+  urSENS_JOINTVEL,                 /* 1: joint velocity dof (rad/s or m/s) */
+  urSENS_CONTACT,                  /* 3: normal force N, penetration m, friction force N */
+  urSENS_AIRBAG,                   /* 2: absolute pressure Pa, gas volume m^3 */
+  urSENS_BODYPOS,                  /* 3: world position of a body point, m */
+  urSENS_BODYVEL                   /* 3: world velocity of a body point, m/s */
+} urSensorType;
+
+typedef enum {
+  urSTAT_OK = 0,                   /* running (or not started) */
+  urSTAT_SEPARATED = 1,            /* ended: contact over for opt.t_quiet */
+  urSTAT_SETTLED = 2,              /* ended: kinetic energy below opt.ke_settle for opt.t_quiet */
+  urSTAT_TMAX = 3,                 /* ended: opt.tmax reached */
+  urSTAT_NONFINITE = -1,           /* failed: NaN or Inf in the state */
+  urSTAT_EXPLODE = -2,             /* failed: a velocity beyond opt.vmax */
+  urSTAT_BADARG = -3               /* failed: bad call (message says which) */
+} urStatus;
+
+typedef enum {
+  urBAG_UNIFORM = 0                /* analytic uniform-pressure bag (contact sheet 4.2); a membrane
+                                      model may be added behind the same interface */
+} urAirbagType;
+
+//---------------------------------- model elements ------------------------------------------------
+
+/* one restraint acting on one joint dof: M = k x + load(x) [+ hysteresis] + c xdot + stops,
+   x = q - x0. Revolute, prismatic, universal: x is the joint coordinate (per Cardan axis).
+   Spherical: x is the k-th component of the rotation vector of the relative rotation (body
+   frame); the elastic moments are mapped to body torques exactly (inverse right Jacobian), so
+   the linear part is conservative; damping acts on the relative angular velocity, stop damping
+   is not applied. Free joints take no restraint. */
+typedef struct {
+  int active;                      /* 0: no restraint on this dof */
+  double k;                        /* linear stiffness, N m/rad or N/m */
+  urCurve load;                    /* loading curve (x -> generalised force); if all x >= 0 it is
+                                      extended odd-symmetrically to x < 0 */
+  urCurve unload;                  /* optional unloading curve: scaled through (xmax, load(xmax)) */
+  double c;                        /* viscous damping, N m s/rad or N s/m */
+  double lo, hi;                   /* end stops (lo < hi; lo == hi: none), rad or m */
+  double kstop, cstop;             /* stop stiffness and damping beyond lo/hi */
+  double x0;                       /* neutral position (deflection = q - x0) */
+} urRestraint;
+
+typedef struct {
+  char name[urNAMELEN];            /* body name */
+  char jname[urNAMELEN];           /* joint name (defaults to the body name) */
+  int parent;                      /* parent body, -1 = world */
+  int tree;                        /* root body of this body's tree */
+  double pos[3];                   /* body frame origin (= joint anchor) in the parent frame, m */
+  double quat[4];                  /* body frame orientation in the parent frame at q = 0 */
+  double mass;                     /* kg */
+  double com[3];                   /* centre of mass in the body frame, m */
+  double inertia[9];               /* inertia about the CoM in body axes, kg m^2 (3x3) */
+  double gravity;                  /* 1: gravity acts, 0: compensated (e.g. parachute-borne) */
+  urJointType jtype;               /* joint to the parent */
+  double axis[2][3];               /* joint axes in the body frame (unit) */
+  int qadr, nq;                    /* first index and count in qpos */
+  int vadr, nv;                    /* first index and count in qvel */
+  urRestraint rst[3];              /* restraint per rotational/translational dof (not free) */
+  // compiled
+  double sinert[36];               /* spatial inertia at the body origin, body frame (6x6) */
+  double iinv[9];                  /* inverse of the inertia about the CoM (3x3) */
+  double bmat[9];                  /* rotation matrix of quat */
+} urBody;
+
+typedef struct {
+  char name[urNAMELEN];
+  int body;                        /* body it is attached to */
+  double pos[3];                   /* centre in the body frame, m */
+  double quat[4];                  /* orientation in the body frame */
+  double size[3];                  /* semi-axes, m */
+  double rbound;                   /* bounding-sphere radius = max semi-axis, m */
+} urGeom;
+
+typedef struct {
+  char name[urNAMELEN];
+  int geom1;                       /* ellipsoid A */
+  int geom2;                       /* ellipsoid B, or -1 for the ground plane z = 0 */
+  urLaw law;                       /* force law (contact.h); foam uses the section area of A */
+} urPair;
+
+typedef struct {
+  char name[urNAMELEN];
+  urAirbagType type;
+  int geom;                        /* bag ellipsoid (attached to the carrying body) */
+  urGas gas;                       /* gas law (contact.h) */
+  double kappa;                    /* volume-loss factor: dV = kappa * sum of cap volumes */
+  double thickness;                /* bag thickness: depth beyond it is ignored (bottoming), m */
+  double fabric_k;                 /* optional penalty/fabric stiffness on depth, N/m */
+  double fabric_c;                 /* optional damping on depth rate, N s/m */
+  double mu, v_eps;                /* friction on the targets (regularised Coulomb) */
+  int ntarget;
+  int target[urMAXBAGTGT];         /* ellipsoids that can indent the bag */
+} urAirbag;
+
+typedef struct {
+  char name[urNAMELEN];
+  urSensorType type;
+  int obj;                         /* body, joint (= body), pair or airbag id */
+  int dof;                         /* joint dof for JOINTPOS / JOINTVEL */
+  double pos[3];                   /* point in the body frame (ACCEL, BODYPOS, BODYVEL) */
+  double quat[4];                  /* output frame relative to the child frame (JOINTLOAD) */
+  int dim;                         /* number of values */
+  int adr;                         /* first index in sensordata */
+} urSensor;
+
+typedef struct {
+  char name[urNAMELEN];
+  double value;
+} urParam;
+
+typedef struct {
+  double dt;                       /* time step, s (default 1e-5) */
+  double gravity[3];               /* m/s^2 (default 0, 0, -9.81) */
+  urIntegrator integrator;         /* default urINT_EULER */
+  double sample_dt;                /* longest history sampling interval, s (default 1e-4: 10 kHz);
+                                      rows every floor(sample_dt / dt) steps */
+  double tmax;                     /* maximum simulated time after the jump, s (default 0.2) */
+  double t_quiet;                  /* end when contact has been over this long, s (default 0.02) */
+  double ke_settle;                /* or kinetic energy below this for t_quiet, J (default 1e-3) */
+  double vmax;                     /* failure beyond this joint speed, m/s or rad/s (default 1e4) */
+  double jump_margin;              /* free-flight jump stops this far from contact, m (1e-3) */
+} urOption;
+
+typedef struct {
+  // sizes
+  int nbody, ngeom, npair, nbag, nsensor, nparam;
+  int nq, nv;                      /* generalised coordinates and velocities */
+  int nsensordata;                 /* sum of sensor dims */
+  int compiled;                    /* 1 after ur_model_compile succeeded */
+  int cap[6];                      /* builder capacities (internal) */
+  urOption opt;
+  // elements
+  urBody* body;                    /* nbody */
+  urGeom* geom;                    /* ngeom */
+  urPair* pair;                    /* npair */
+  urAirbag* bag;                   /* nbag */
+  urSensor* sensor;                /* nsensor */
+  urParam* param;                  /* nparam */
+  double* qpos0;                   /* nq: reference configuration */
+  char err[urMSGLEN];              /* last builder / compile error */
+} urModel;
+
+//---------------------------------- data ----------------------------------------------------------
+
+typedef struct {
+  urLawState ls;                   /* law history (committed on accepted steps) */
+  double u[3];                     /* warm-start direction */
+  double depth;                    /* penetration, m (< 0 separated; -inf if culled) */
+  double rate;                     /* penetration rate, m/s */
+  double fn;                       /* normal force, N */
+  double ft;                       /* friction force magnitude, N */
+  double area;                     /* section area used (foam), m^2 */
+  double n[3];                     /* normal A -> B, world */
+  double p[3];                     /* contact point, world, m */
+  int active;                      /* 1 if a force acts */
+} urPairData;
+
+typedef struct {
+  double pressure;                 /* absolute pressure, Pa */
+  double volume;                   /* gas volume, m^3 */
+  double dv;                       /* volume loss, m^3 */
+  double force;                    /* sum of normal forces on the targets, N */
+  double depth[urMAXBAGTGT];       /* depth of each target, m (< 0 separated) */
+  double rate[urMAXBAGTGT];        /* depth rate of each target, m/s */
+  double ftgt[urMAXBAGTGT];        /* normal force on each target, N */
+  double u[urMAXBAGTGT][3];        /* warm-start directions */
+  int active;                      /* 1 if some target indents the bag */
+} urBagData;
+
+typedef struct {
+  // state
+  double time;                     /* simulated time, s */
+  double* qpos;                    /* nq */
+  double* qvel;                    /* nv */
+  double* qacc;                    /* nv: accelerations from the last ur_forward */
+  double* qfrc;                    /* nv: passive generalised forces (restraints) */
+  double* rst;                     /* nv x 2: restraint hysteresis (max +, max - deflection) */
+  // kinematics (per body)
+  double* xpos;                    /* nbody x 3: body origin, world */
+  double* xmat;                    /* nbody x 9: body orientation, world */
+  double* xcom;                    /* nbody x 3: centre of mass, world */
+  double* gxpos;                   /* ngeom x 3: ellipsoid centre, world */
+  double* gxmat;                   /* ngeom x 9: ellipsoid orientation, world */
+  // dynamics scratch (per body, body coordinates)
+  double* Xe;                      /* nbody x 9: rotation parent -> child */
+  double* Xr;                      /* nbody x 3: child origin in the parent frame */
+  double* S;                       /* nbody x 36: motion subspace (6 x nv of the joint) */
+  double* cvel;                    /* nbody x 6: spatial velocity */
+  double* cbias;                   /* nbody x 6: velocity-product acceleration */
+  double* cacc;                    /* nbody x 6: spatial acceleration (incl. -gravity) */
+  double* IA;                      /* nbody x 36: articulated inertia */
+  double* pA;                      /* nbody x 6: articulated bias force */
+  double* U;                       /* nbody x 36 */
+  double* Dinv;                    /* nbody x 36 */
+  double* uu;                      /* nbody x 6 */
+  double* fext;                    /* nbody x 6: external force at the origin, body coords */
+  double* freact;                  /* nbody x 6: joint reaction on the child, body coords */
+  // contacts and airbags
+  urPairData* pair;                /* npair */
+  urBagData* bag;                  /* nbag */
+  // sensors and outputs
+  double* sensordata;              /* nsensordata: values at the last ur_forward */
+  double* peakmax;                 /* nsensordata: largest value since the run start */
+  double* peakmin;                 /* nsensordata: smallest value since the run start */
+  double* tpeak;                   /* nsensordata: time of the largest |value| */
+  double* hist;                    /* nhist_cap x (1 + nsensordata) rows (time, values), or NULL */
+  int nhist;                       /* rows written */
+  int nhist_cap;                   /* rows available */
+  int hist_own;                    /* 1 if the engine allocated hist */
+  // run control
+  int status;                      /* urStatus */
+  char msg[urMSGLEN];              /* reason for the status */
+  long nstep;                      /* steps taken since the run start */
+  int proj;                        /* projectile tree root (ur_run_start), -1 none */
+  double t_jump;                   /* free-flight time skipped analytically, s */
+  double t_first;                  /* time of first projectile contact, s (-1 none) */
+  double t_last;                   /* last time a projectile contact was active, s */
+  double t_calm;                   /* time since kinetic energy fell below ke_settle, s */
+  double energy;                   /* kinetic energy at the last ur_forward, J */
+  // integrator scratch
+  double* scratch;                 /* 2 nq + 8 nv */
+  // memory
+  void* buffer;                    /* one allocation holding the arrays above */
+} urData;
+
+//---------------------------------- model builder -------------------------------------------------
+
+/* New empty model with default options; NULL on allocation failure. */
+urModel* ur_model_new(void);
+
+/* Free a model (NULL allowed). */
+void ur_model_free(urModel* m);
+
+/* Add a body and its joint to parent (-1: world); pos/quat: body frame in the parent frame at
+   q = 0 (quat NULL: identity). Parents must be added first. Returns the body id or -1. */
+int ur_model_add_body(urModel* m, const char* name, int parent, urJointType type,
+                      const double pos[3], const double quat[4]);
+
+/* Mass, centre of mass (body frame) and inertia about the CoM: I = (xx, yy, zz, xy, xz, yz). */
+int ur_model_set_inertia(urModel* m, int body, double mass, const double com[3],
+                         const double inertia[6]);
+
+/* Joint axes in the body frame (a2 only for universal joints; NULL allowed); optional joint
+   name (NULL: keep). */
+int ur_model_set_joint(urModel* m, int body, const char* jname, const double a1[3],
+                       const double a2[3]);
+
+/* Restraint on joint dof of body (copied). */
+int ur_model_set_restraint(urModel* m, int body, int dof, const urRestraint* r);
+
+/* Add an ellipsoid to a body (pos/quat in the body frame, quat NULL: identity). Returns id. */
+int ur_model_add_ellipsoid(urModel* m, const char* name, int body, const double pos[3],
+                           const double quat[4], const double semiaxes[3]);
+
+/* Add a contact pair; geom2 = -1 means the ground plane z = 0. Returns the pair id or -1. */
+int ur_model_add_pair(urModel* m, const char* name, int geom1, int geom2, const urLaw* law);
+
+/* Add an airbag (copied; name taken from bag->name). Returns the airbag id or -1. */
+int ur_model_add_airbag(urModel* m, const urAirbag* bag);
+
+/* Add a sensor; obj is a body, joint (= body), pair or airbag id depending on type; pos is a point
+   in the body frame (NULL: origin); quat is the output frame for JOINTLOAD (NULL: identity).
+   Returns the sensor id or -1. */
+int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj, int dof,
+                        const double pos[3], const double quat[4]);
+
+/* Named parameter (set or overwrite). */
+int ur_model_set_param(urModel* m, const char* name, double value);
+
+/* Compile: check, assign addresses, reference configuration. 0 on success, else -1 and m->err. */
+int ur_model_compile(urModel* m);
+
+/* Look-up by name; -1 if absent. */
+int ur_name_body(const urModel* m, const char* name);
+int ur_name_joint(const urModel* m, const char* name);
+int ur_name_geom(const urModel* m, const char* name);
+int ur_name_pair(const urModel* m, const char* name);
+int ur_name_airbag(const urModel* m, const char* name);
+int ur_name_sensor(const urModel* m, const char* name);
+int ur_name_param(const urModel* m, const char* name);
+
+/* Value of a named parameter, or dflt if absent. */
+double ur_model_param(const urModel* m, const char* name, double dflt);
+
+//---------------------------------- data ----------------------------------------------------------
+
+/* New data for a compiled model, reset to the reference configuration; NULL on failure. */
+urData* ur_data_new(const urModel* m);
+
+/* Free data (and an engine-allocated history). */
+void ur_data_free(urData* d);
+
+/* Reset state, histories, peaks and status to the reference configuration. */
+void ur_data_reset(const urModel* m, urData* d);
+
+/* Copy the whole state and run data of src into dst (same model); the history buffer of dst is
+   kept (not copied). */
+void ur_data_copy(const urModel* m, urData* dst, const urData* src);
+
+/* Record full time histories: buf (caller-owned, rows x (1 + nsensordata) doubles) or, with
+   buf NULL, an engine-allocated buffer of rows rows; rows = 0 turns recording off.
+   Returns 0 or -1 on allocation failure. */
+int ur_data_history(const urModel* m, urData* d, double* buf, int rows);
+
+//---------------------------------- simulation ----------------------------------------------------
+
+/* Kinematics, forces (restraints, contacts, airbags), accelerations (articulated-body algorithm),
+   joint reactions and sensors at the current state. Returns d->status. */
+int ur_forward(const urModel* m, urData* d);
+
+/* Kinematics only (body and ellipsoid poses). */
+void ur_kinematics(const urModel* m, urData* d);
+
+/* One step of opt.dt: forward, record outputs, commit contact histories, integrate, check the
+   state; after ur_run_start also check the end of the run (status > 0, stepping may go on).
+   Returns d->status (< 0: failed run, nothing more is done). No allocation. */
+int ur_step(const urModel* m, urData* d);
+
+/* Place the tree rooted at body root (free joint) with its CoM at pos, orientation quat, and
+   velocity vel (world, m/s; all its joints at rest), reset peaks/histories/contacts, then jump
+   analytically along the straight line to just before the first possible contact (swept bounding
+   spheres against every pair and airbag target involving the tree). Other trees are assumed to
+   be at rest during the jump. Returns d->status. */
+int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
+                 const double quat[4], const double vel[3]);
+
+/* Step until the run ends (separated / settled / tmax) or fails. Returns d->status (> 0 ended,
+   < 0 failed). */
+int ur_run(const urModel* m, urData* d);
+
+/* ur_run_start then ur_run. */
+int ur_run_impact(const urModel* m, urData* d, int root, const double pos[3],
+                  const double quat[4], const double vel[3]);
+
+/* Kinetic energy of the system at the last ur_forward (velocities of that call), J. */
+double ur_energy_kinetic(const urModel* m, const urData* d);
+
+/* Potential energy of gravity and of the linear part (k) of the restraints (positions of the
+   last ur_forward or ur_kinematics), J. */
+double ur_energy_potential(const urModel* m, const urData* d);
+
+/* Total linear (3) and angular (3, about the world origin) momentum at the last ur_forward. */
+void ur_momentum(const urModel* m, const urData* d, double p[3], double L[3]);
+
+/* Set a free joint from the pose of its CoM and velocities (omega about the CoM); world frame
+   for a root body, parent frame otherwise; NULL arguments are left unchanged. */
+void ur_set_free(const urModel* m, urData* d, int body, const double pos[3], const double quat[4],
+                 const double vel[3], const double omega[3]);
+
+/* World position / velocity of a point given in the body frame (after ur_forward). */
+void ur_point_pos(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
+void ur_point_vel(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
+
+/* Human-readable name of a status. */
+const char* ur_status_str(int status);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

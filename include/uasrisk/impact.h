@@ -1,0 +1,104 @@
+/* impact.h: one drone-on-person impact at a horizontal offset, as the paper's section 4.2.
+ *
+ * At the moment tau the drone's centre is R_max above the top of the head (R_max: largest
+ * distance from the drone's centre of mass to its surface) and Delta = (dpar, dperp) is the
+ * horizontal offset of the drone's centre from the head CG, dpar along the drone's course and
+ * dperp across it (to the left of the course). Until its first contact the drone keeps its speed,
+ * descent angle and attitude. The person stands in a stance settled once under gravity; the face
+ * direction phi turns the course instead of the person (the ground is isotropic), so the stance
+ * is computed only once. phi = 0: the person faces the incoming drone; phi = 90 deg: the drone
+ * comes from the person's right.
+ *
+ * A urImpactSetup is constant after ur_impact_setup and shared by all threads; each thread owns
+ * a urImpactWork.
+ */
+#ifndef UASRISK_IMPACT_H
+#define UASRISK_IMPACT_H
+
+#include "uasrisk/engine.h"
+#include "uasrisk/injury.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* the roles the impact needs, found by name in the model */
+typedef struct {
+  const urModel* m;
+  int drone;                       /* root body of the drone (free joint) */
+  int head_geom;                   /* head ellipsoid whose top defines the start height */
+  int s_head_acc;                  /* sensor: head CG acceleration (3) */
+  int s_neck;                      /* sensor: upper-neck joint load (6) */
+  int s_chest, s_abd;              /* sensors: plate joint positions (deflections), or -1 */
+  int npair_drone;                 /* pairs and airbags involving the drone: */
+  int* pair_drone;                 /* ids of pairs with one side on the drone */
+  double rmax;                     /* R_max, m */
+  double head_cg[3];               /* settled head CG, world, m */
+  double head_top;                 /* settled height of the head top, m */
+  double neck_preload;             /* settled upper-neck axial force, N (tension > 0) */
+  urData* rest;                    /* the settled stance (drone parked far away) */
+  char err[160];
+} urImpactSetup;
+
+/* the conditions of an impact */
+typedef struct {
+  double speed;                    /* impact speed, m/s */
+  double angle;                    /* descent angle psi from the horizontal, deg */
+  double face;                     /* face direction phi, deg */
+  double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
+} urImpactCond;
+
+/* per-thread work space */
+typedef struct {
+  urData* d;
+  int rows;                        /* history rows */
+  double* chan;                    /* channel buffers */
+  double* work;                    /* injury work space */
+} urImpactWork;
+
+typedef struct {
+  int status;                      /* engine status (< 0: failed) */
+  char reason[urMSGLEN];
+  int contact;                     /* the drone touched the person */
+  double t_first;                  /* time of first contact from tau, s (-1: none) */
+  urInjuryResult inj;              /* criteria and PoFs */
+  double p;                        /* P{F | Delta} */
+} urImpactResult;
+
+/* Balance the standing posture: a passive stance under gravity is an inverted-pendulum chain
+   that sags and leans; real standing holds it with muscle tone. This shifts the neutral positions
+   x0 of the person's restraints (every tree but the drone's) by fixed-point iteration so that
+   the posture settled from the model's reference configuration is that configuration. Stiffness
+   and damping stay as modelled. residual: largest joint deflection of the last settling, rad or
+   m. 0, or -1 if the settling failed. */
+int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual);
+
+/* find the roles by name (drone root "main", head ellipsoid "head_cranium", sensors head_acc,
+   neck_load, chest_defl, abd_defl), compute R_max, settle the stance (settle_time s of gravity)
+   and check it; 0 or -1 with s->err */
+int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time);
+void ur_impact_free(urImpactSetup* s);
+
+int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w);
+void ur_impact_work_free(urImpactWork* w);
+
+/* drone pose and velocity at tau for an offset */
+void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar, double dperp,
+                     double pos[3], double quat[4], double vel[3]);
+
+/* 1 if the straight path of the drone's bounding spheres can reach the person's (conservative) */
+int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double dpar,
+                          double dperp);
+
+/* run one impact; the run's histories stay in w->d; 0, or -1 if the simulation failed */
+int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
+                  const urInjuryParams* ip, double dpar, double dperp, urImpactResult* r);
+
+/* a channel of the last run of w: sensor id, component; n rows into out (caller: w->rows) */
+int ur_impact_channel(const urImpactSetup* s, const urImpactWork* w, int sensor, int comp,
+                      double* out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,60 @@
+/* modellang.h: the uasrisk model language. Human, drone and airbag models are plain text
+ * (uasrisk-model(5)); this parses one or more texts into a compiled urModel and splits a text
+ * into named parts so that an application can replace or add parts. Pure library code: no I/O,
+ * no globals, reentrant.
+ */
+#ifndef UASRISK_MODELLANG_H
+#define UASRISK_MODELLANG_H
+
+#include <stddef.h>
+#include "uasrisk/engine.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* a parameter value forced by the caller, in SI units (replaces every definition of name) */
+typedef struct {
+  const char* name;
+  double value;
+} urOverride;
+
+/* one model text; file is the name used in messages ("FILE:LINE: ...") */
+typedef struct {
+  const char* text;
+  const char* file;
+} urModelSource;
+
+/* one part of a text: bytes [text, text + len) of the text given to ur_model_split */
+typedef struct {
+  char name[urNAMELEN];            /* part name; "" for the text before the first part line */
+  const char* text;                /* first byte (start of the line holding 'part NAME') */
+  size_t len;                      /* bytes, up to the start of the next part line */
+  int line;                        /* line number of the first byte (1-based) */
+} urModelPart;
+
+/* Parse the sources in order (parameters, curves, laws, bodies... are shared by all sources:
+   a later source may refer to names of an earlier one), apply the overrides, build and compile
+   the model. Returns the compiled model, or NULL with a one-line message in err (at most
+   errlen bytes, "FILE:LINE: what was wrong; expected ...") and nothing allocated. An override
+   naming a parameter that no source defines is an error. err may be NULL. */
+urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
+                        char* err, int errlen);
+
+/* Split text at its 'part NAME' lines. Each part starts at the beginning of the line holding its
+   'part' statement and ends where the next part starts, so the parts concatenated in order give
+   back the text exactly. Text before the first part line is a part named "", present only when
+   that text is not empty (an empty text has no parts). Fills at most maxpart parts (parts may be
+   NULL with maxpart 0) and returns the total number of parts, or -1 with a message in err
+   ("FILE:LINE: ...", FILE from file, may be NULL) for a malformed part line, a duplicate part
+   name or a continuation at the end of the text. */
+int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart,
+                   char* err, int errlen);
+
+/* factor from a unit of the language (m, mm, atm, deg, ...) to SI; 0, or -1 if unknown */
+int ur_unit_si(const char* unit, double* factor);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

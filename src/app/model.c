@@ -1,0 +1,274 @@
+/* model.c: the model set (parts of model-language text), its parameters, the compiled model and
+ * the settled stance, rebuilt lazily when something changes; the model command */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+
+#define SETTLE_SECONDS 1.0          /* settling of the stance, s (it is still within 0.1 mm) */
+#define BALANCE_ITERS 2             /* muscle-tone balancing of the upright posture */
+
+typedef struct {
+  const char* name;
+  const char* text;
+} urBuiltinModel;
+extern const urBuiltinModel ur_builtin_models[];
+
+/* built-in order: the person, the drone, its airbags, the simulation options */
+static const char* const builtin_order[] = {"human", "ra3", "airbags", "sim", NULL};
+
+void ura_model_stale(uraCtx* c) {
+  ur_model_free(c->model);
+  c->model = NULL;
+  if (c->have_setup) ur_impact_free(&c->setup);
+  c->have_setup = 0;
+  if (c->have_work) ur_impact_work_free(&c->work);
+  c->have_work = 0;
+  c->have_impact = 0;
+}
+
+static void parts_free(uraPart* p, int n) {
+  for (int i = 0; i < n; i++) free(p[i].text);
+}
+
+void ura_models_free(uraCtx* c) {
+  ura_model_stale(c);
+  parts_free(c->part, c->npart);
+  c->npart = 0;
+}
+
+/* add or replace the parts of a text; on error nothing changes */
+static int parts_merge(uraCtx* c, const char* text, const char* file, const char* origin) {
+  urModelPart sp[uraMAXPARTS];
+  char err[300];
+  int n = ur_model_split(text, file, sp, uraMAXPARTS, err, sizeof err);
+  if (n < 0) return ura_fail(c, "%s", err);
+  if (n > uraMAXPARTS) return ura_fail(c, "%s: more than %d parts", file, uraMAXPARTS);
+  if (n == 0) return ura_fail(c, "%s: no model text", file);
+
+  /* the new set: replace same-named parts, append new ones */
+  uraPart np[uraMAXPARTS];
+  int nn = c->npart;
+  memcpy(np, c->part, sizeof(uraPart) * nn);
+  for (int i = 0; i < nn; i++) np[i].text = NULL;
+  for (int k = 0; k < n; k++) {
+    int at = -1;
+    for (int i = 0; i < nn; i++) {
+      if (!strcmp(np[i].name, sp[k].name)) at = i;
+    }
+    if (at < 0) {
+      if (nn == uraMAXPARTS) return ura_fail(c, "%s: too many parts (at most %d)", file,
+                                              uraMAXPARTS);
+      at = nn++;
+      np[at].text = NULL;
+    }
+    snprintf(np[at].name, sizeof np[at].name, "%.*s", (int)sizeof np[at].name - 1, sp[k].name);
+    free(np[at].text);
+    np[at].text = strndup(sp[k].text, sp[k].len);
+    snprintf(np[at].origin, sizeof np[at].origin, "%s", origin);
+  }
+  for (int i = 0; i < nn; i++) {
+    if (!np[i].text) np[i].text = strdup(c->part[i].text);
+  }
+
+  /* it must compile with the current overrides before it replaces the old set */
+  urModelSource src[uraMAXPARTS];
+  char names[uraMAXPARTS][300];
+  for (int i = 0; i < nn; i++) {
+    snprintf(names[i], sizeof names[i], "%.299s", !strcmp(np[i].origin, "built-in") ?
+             np[i].name : np[i].origin);
+    src[i].text = np[i].text;
+    src[i].file = names[i];
+  }
+  urOverride ov[uraMAXOV];
+  for (int i = 0; i < c->st.nov; i++) {
+    ov[i].name = c->st.ov_name[i];
+    ov[i].value = c->st.ov_val[i];
+  }
+  urModel* m = ur_model_parse(src, nn, ov, c->st.nov, err, sizeof err);
+  if (!m) {
+    parts_free(np, nn);
+    return ura_fail(c, "%s", err);
+  }
+  ura_model_stale(c);
+  parts_free(c->part, c->npart);
+  memcpy(c->part, np, sizeof(uraPart) * nn);
+  c->npart = nn;
+  c->model = m;
+  return 0;
+}
+
+int ura_models_init(uraCtx* c) {
+  for (int i = 0; builtin_order[i]; i++) {
+    for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
+      if (!strcmp(b->name, builtin_order[i]) && parts_merge(c, b->text, b->name, "built-in")) {
+        return -1;
+      }
+    }
+  }
+  return 0;
+}
+
+const urModel* ura_model(uraCtx* c) {
+  if (c->model) return c->model;
+  urModelSource src[uraMAXPARTS];
+  urOverride ov[uraMAXOV];
+  for (int i = 0; i < c->npart; i++) {
+    src[i].text = c->part[i].text;
+    src[i].file = !strcmp(c->part[i].origin, "built-in") ? c->part[i].name : c->part[i].origin;
+  }
+  for (int i = 0; i < c->st.nov; i++) {
+    ov[i].name = c->st.ov_name[i];
+    ov[i].value = c->st.ov_val[i];
+  }
+  char err[300];
+  c->model = ur_model_parse(src, c->npart, ov, c->st.nov, err, sizeof err);
+  if (!c->model) ura_fail(c, "model: %s", err);
+  return c->model;
+}
+
+const urImpactSetup* ura_setup(uraCtx* c) {
+  if (c->have_setup) return &c->setup;
+  if (!ura_model(c)) return NULL;
+  urModel* m = c->model;
+  double res;
+  if (ur_impact_balance(m, SETTLE_SECONDS, BALANCE_ITERS, &res)) {
+    ura_fail(c, "model: the standing posture cannot be balanced (it falls)");
+    return NULL;
+  }
+  if (ur_impact_setup(&c->setup, m, SETTLE_SECONDS)) {
+    ura_fail(c, "model: %s", c->setup.err);
+    ur_impact_free(&c->setup);
+    return NULL;
+  }
+  c->have_setup = 1;
+  return &c->setup;
+}
+
+int ura_model_param_find(uraCtx* c, const char* name) {
+  const urModel* m = ura_model(c);
+  return m ? ur_name_param(m, name) : -1;
+}
+
+int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit,
+                        int user) {
+  double v, f = 1;
+  if (ura_parse_number(value, &v)) {
+    return ura_fail(c, "set %s: '%s' is not a number; accepted: a number, optionally with a "
+                    "unit (uasrisk-model(5))", name, value);
+  }
+  if (unit && ur_unit_si(unit, &f)) {
+    return ura_fail(c, "set %s: unknown unit '%s'; accepted: the units of uasrisk-model(5) "
+                    "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L)", name, unit);
+  }
+  v *= f;
+
+  /* the new override list; it must compile before it is kept */
+  uraState keep = c->st;
+  int at = -1;
+  for (int i = 0; i < c->st.nov; i++) {
+    if (!strcmp(c->st.ov_name[i], name)) at = i;
+  }
+  if (at < 0) {
+    if (c->st.nov == uraMAXOV) return ura_fail(c, "set %s: too many model parameters set", name);
+    at = c->st.nov++;
+    snprintf(c->st.ov_name[at], urNAMELEN, "%s", name);
+  }
+  c->st.ov_val[at] = v;
+  c->st.ov_user[at] = user;
+  urModel* old = c->model;
+  c->model = NULL;
+  if (!ura_model(c)) {
+    c->st = keep;
+    c->model = old;
+    char msg[uraERRLEN];
+    snprintf(msg, sizeof msg, "%s", c->err);
+    return ura_fail(c, "set %s: refused, the model does not accept it: %s", name, msg);
+  }
+  urModel* fresh = c->model;
+  c->model = old;
+  ura_model_stale(c);
+  c->model = fresh;
+  return 0;
+}
+
+/* ---- the model command ---- */
+
+static int model_show(uraCtx* c) {
+  for (int i = 0; i < c->npart; i++) {
+    fprintf(c->out, "# ---- part %s (%s) ----\n%s", c->part[i].name, c->part[i].origin,
+            c->part[i].text);
+    size_t n = strlen(c->part[i].text);
+    if (n && c->part[i].text[n - 1] != '\n') fputc('\n', c->out);
+  }
+  return 0;
+}
+
+static int model_save(uraCtx* c, const char* path) {
+  char tmp[1100];
+  snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", path);
+  FILE* f = NULL;
+  int fd = mkstemp(tmp);
+  if (fd >= 0) f = fdopen(fd, "w");
+  if (!f) return ura_fail(c, "model save: cannot write '%s': %s", path, strerror(errno));
+  for (int i = 0; i < c->npart; i++) {
+    fputs(c->part[i].text, f);
+    size_t n = strlen(c->part[i].text);
+    if (n && c->part[i].text[n - 1] != '\n') fputc('\n', f);
+  }
+  if (fclose(f) || rename(tmp, path)) {
+    remove(tmp);
+    return ura_fail(c, "model save: cannot write '%s': %s", path, strerror(errno));
+  }
+  return 0;
+}
+
+static int model_load(uraCtx* c, const char* path) {
+  FILE* f = fopen(path, "r");
+  if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+  char* text = NULL;
+  size_t len = 0;
+  FILE* mem = open_memstream(&text, &len);
+  char buf[4096];
+  size_t k;
+  while ((k = fread(buf, 1, sizeof buf, f)) > 0) fwrite(buf, 1, k, mem);
+  fclose(f);
+  fclose(mem);
+  if (memchr(text, 0, len)) {
+    free(text);
+    return ura_fail(c, "model load: '%s' contains NUL bytes; model files are text", path);
+  }
+  int rc = parts_merge(c, text, path, path);
+  free(text);
+  return rc;
+}
+
+/* parameters of the model: name, SI value, and who set it */
+static int model_params(uraCtx* c) {
+  const urModel* m = ura_model(c);
+  if (!m) return -1;
+  for (int i = 0; i < m->nparam; i++) {
+    const char* who = "model";
+    for (int k = 0; k < c->st.nov; k++) {
+      if (!strcmp(c->st.ov_name[k], m->param[i].name)) who = c->st.ov_user[k] ? "set" : "case";
+    }
+    fprintf(c->out, "%-16s %.10g  (SI; %s)\n", m->param[i].name, m->param[i].value, who);
+  }
+  return 0;
+}
+
+int ura_cmd_model(uraCtx* c, int argc, char** argv) {
+  if (argc == 2 && !strcmp(argv[1], "show")) return model_show(c);
+  if (argc == 2 && !strcmp(argv[1], "params")) return model_params(c);
+  if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
+  if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
+  if (argc == 2 && !strcmp(argv[1], "parts")) {
+    for (int i = 0; i < c->npart; i++) {
+      fprintf(c->out, "%-12s %s\n", c->part[i].name, c->part[i].origin);
+    }
+    return 0;
+  }
+  return ura_fail(c, "model: usage: model show|params|parts|save FILE|load FILE");
+}

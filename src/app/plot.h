@@ -1,0 +1,54 @@
+/* plot.h: gnuplot as an external process: scripts with inline datablocks sent through a pipe,
+ * under the terminal and output settings. Every function returns 0, or -1 with c->err set
+ * ("plot ...: what went wrong"); none of them can end the program.
+ *
+ * Settings (c->st): terminal empty = gnuplot's default (a window, needs DISPLAY or
+ * WAYLAND_DISPLAY), output empty = a window (or the text of a text terminal such as dumb).
+ * With an output file the file is complete when the function returns. Gnuplot's warnings go to
+ * c->msg; text terminals' drawings to c->out.
+ */
+#ifndef UASRISK_PLOT_H
+#define UASRISK_PLOT_H
+
+#include <stddef.h>
+
+#include "app.h"
+#include "uasrisk/injury.h"
+
+/* one x-y curve */
+typedef struct {
+  const char* title;               /* legend entry (NULL: none) */
+  const double* x;                 /* n abscissae */
+  const double* y;                 /* n ordinates; non-finite values leave a gap */
+  int n;
+} uraSeries;
+
+/* run a complete gnuplot script (commands and $NAME << EOD datablocks) after the terminal and
+   output settings; who names the command in messages ("plot grid") */
+int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len);
+
+/* curves in one panel: title, axis labels (NULL: none) */
+int ura_plot_xy(uraCtx* c, const char* who, const char* title, const char* xlabel,
+                const char* ylabel, int nser, const uraSeries* s);
+
+/* heat map of P{F|Delta} of c->last in the band colours, axes in m */
+int ura_plot_grid(uraCtx* c);
+
+/* the PoF curves of HIC, Nij (with its AIS curves) and VC; p NULL: the documented defaults */
+int ura_plot_pof(uraCtx* c, const urInjuryParams* p);
+
+/* time histories of one impact against time in ms, one panel per signal; nsel 0: every signal.
+   head_acc in m/s^2 is shown in g, with its HIC15 window shaded (computed from the signal) */
+int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names);
+
+/* the same, with the HIC window t1-t2 (s) given (NAN: computed from the signal) */
+int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names,
+                       double t1, double t2);
+
+/* index of a signal of a trace by name, or -1 */
+int ura_trace_find(const uraTrace* tr, const char* name);
+
+/* factor that shows signal k in its display unit (head_acc in m/s^2: 1/g), and that unit */
+double ura_trace_scale(const uraTrace* tr, int k, const char** unit);
+
+#endif

@@ -1,0 +1,220 @@
+/* engine_contact.c: contact pairs: broad phase by bounding spheres, narrow phase by contact.h
+ * (warm-started direction kept per pair), force from the pair's law, regularised Coulomb
+ * friction, equal and opposite forces at the contact point. */
+#include <math.h>
+#include <string.h>
+#include "engine_internal.h"
+
+//---------------------------------- helpers -------------------------------------------------------
+
+// ellipsoid g in world coordinates
+void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e) {
+  memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
+  memcpy(e->R, d->gxmat + 9*g, 9*sizeof(double));
+  memcpy(e->r, m->geom[g].size, 3*sizeof(double));
+}
+
+
+// half-width of ellipsoid g along unit u: |diag(r) R^T u|
+static double halfwidth(const urModel* m, const urData* d, int g, const double u[3]) {
+  const double* R = d->gxmat + 9*g;
+  const double* r = m->geom[g].size;
+  double w[3];
+  uru_mulmat3tvec(w, R, u);
+  w[0] *= r[0];
+  w[1] *= r[1];
+  w[2] *= r[2];
+  return uru_norm3(w);
+}
+
+
+// cheap upper bound on the signed depth of ellipsoids ga, gb: the support-function gap
+// f(u) = (cA - cB).u + hA(u) + hB(u) >= min f = depth, at the centre line and at the warm
+// start u (if set); a negative bound proves separation without the narrow phase
+double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]) {
+  const double* ca = d->gxpos + 3*ga;
+  const double* cb = d->gxpos + 3*gb;
+  double dc[3] = {ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]}, c[3];
+  double L = uru_norm3(dc), f = INFINITY;
+  if (L > 0) {
+    c[0] = -dc[0]/L;
+    c[1] = -dc[1]/L;
+    c[2] = -dc[2]/L;
+    f = -L + halfwidth(m, d, ga, c) + halfwidth(m, d, gb, c);
+  }
+  if (u[0] != 0 || u[1] != 0 || u[2] != 0) {
+    f = fmin(f, uru_dot3(dc, u) + halfwidth(m, d, ga, u) + halfwidth(m, d, gb, u));
+  }
+  return f;
+}
+
+
+// relative velocity of body a's point p minus body b's point p (b = -1: world)
+void ur_relvel(const urModel* m, const urData* d, int a, int b, const double p[3], double v[3]) {
+  double pl[3], r[3], va[3] = {0, 0, 0}, vb[3] = {0, 0, 0};
+  if (a >= 0) {
+    for (int k = 0; k < 3; k++) {
+      r[k] = p[k] - d->xpos[3*a + k];
+    }
+    uru_mulmat3tvec(pl, d->xmat + 9*a, r);
+    ur_point_vel(m, d, a, pl, va);
+  }
+  if (b >= 0) {
+    for (int k = 0; k < 3; k++) {
+      r[k] = p[k] - d->xpos[3*b + k];
+    }
+    uru_mulmat3tvec(pl, d->xmat + 9*b, r);
+    ur_point_vel(m, d, b, pl, vb);
+  }
+  for (int k = 0; k < 3; k++) {
+    v[k] = va[k] - vb[k];
+  }
+}
+
+
+// mobility (inverse apparent mass) of an isolated body at world point p along unit t
+static double mobility(const urModel* m, const urData* d, int body, const double p[3],
+                       const double t[3]) {
+  if (body < 0) {
+    return 0;
+  }
+  const urBody* b = m->body + body;
+  double r[3], c[3], cb[3], ic[3];
+  for (int k = 0; k < 3; k++) {
+    r[k] = p[k] - d->xcom[3*body + k];
+  }
+  uru_cross3(c, r, t);
+  uru_mulmat3tvec(cb, d->xmat + 9*body, c);
+  uru_mulmat3vec(ic, b->iinv, cb);
+  return 1/b->mass + uru_dot3(cb, ic);
+}
+
+
+// apply normal force fn along n (A -> B) plus friction: -(fn n) + ft on A, the opposite on B;
+// regularised Coulomb friction ft = -mu fn vt / max(|vt|, v_eps, v_stab) with mu and v_eps of
+// the law (or given, law NULL); v_stab = mu fn dt / m_t keeps the explicit step stable, with m_t
+// the apparent tangential mass of the two isolated bodies (a lower bound); returns |ft|
+double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double n[3],
+                        const double p[3], double fn, double rate, const urLaw* law, double mu,
+                        double v_eps) {
+  double v[3], vt[3], f[3], fr[3] = {0, 0, 0};
+  if (law) {
+    mu = law->mu;
+    v_eps = law->v_eps;
+  }
+
+  // tangential relative velocity and regularised Coulomb friction on A
+  ur_relvel(m, d, a, b, p, v);
+  for (int k = 0; k < 3; k++) {
+    vt[k] = v[k] - rate*n[k];
+  }
+  double s = uru_norm3(vt);
+  if (mu > 0 && s > 0) {
+    double t[3] = {vt[0]/s, vt[1]/s, vt[2]/s};
+    double w = mobility(m, d, a, p, t) + mobility(m, d, b, p, t);
+    double vs = fmax(fmax(s, v_eps), mu*fn*m->opt.dt*w);
+    for (int k = 0; k < 3; k++) {
+      fr[k] = -mu*fn*vt[k]/vs;
+    }
+  }
+  for (int k = 0; k < 3; k++) {
+    f[k] = -fn*n[k] + fr[k];
+  }
+  double ft = uru_norm3(fr);
+
+  // equal and opposite
+  if (a >= 0) {
+    ur_apply_force(m, d, a, f, p);
+  }
+  if (b >= 0) {
+    for (int k = 0; k < 3; k++) {
+      f[k] = -f[k];
+    }
+    ur_apply_force(m, d, b, f, p);
+  }
+  return ft;
+}
+
+//---------------------------------- pairs ---------------------------------------------------------
+
+void ur_contacts(const urModel* m, urData* d) {
+  static const double up[3] = {0, 0, 1};
+  for (int i = 0; i < m->npair; i++) {
+    const urPair* pr = m->pair + i;
+    urPairData* pd = d->pair + i;
+    const double* ca = d->gxpos + 3*pr->geom1;
+    double ra = m->geom[pr->geom1].rbound;
+    int ba = m->geom[pr->geom1].body;
+    int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
+    urEllipsoid ea, eb;
+    urGeomContact gc;
+    pd->active = 0;
+    pd->fn = pd->ft = pd->rate = pd->area = 0;
+
+    // broad phase: bounding spheres
+    double gap;
+    if (pr->geom2 < 0) {
+      gap = ca[2] - ra;
+    } else {
+      const double* cb = d->gxpos + 3*pr->geom2;
+      double dx[3] = {cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
+      gap = uru_norm3(dx) - ra - m->geom[pr->geom2].rbound;
+    }
+    if (gap > 0) {
+      pd->depth = -gap;
+      continue;
+    }
+
+    // oriented bound: separated at the centre line or at the last normal
+    if (pr->geom2 >= 0) {
+      double fb = ur_depth_bound(m, d, pr->geom1, pr->geom2, pd->u);
+      if (fb < 0) {
+        pd->depth = fb;
+        continue;
+      }
+    }
+
+    // narrow phase
+    ur_geom_ellipsoid(m, d, pr->geom1, &ea);
+    if (pr->geom2 < 0) {
+      ur_collide_ellipsoid_plane(&ea, up, 0, &gc);
+    } else {
+      ur_geom_ellipsoid(m, d, pr->geom2, &eb);
+      ur_collide_ellipsoids(&ea, &eb, pd->u, &gc);
+    }
+    pd->depth = gc.g;
+    memcpy(pd->n, gc.n, sizeof(pd->n));
+    memcpy(pd->p, gc.p, sizeof(pd->p));
+    if (!(gc.g > 0)) {
+      continue;
+    }
+
+    // rate, area, normal force
+    double v[3];
+    ur_relvel(m, d, ba, bb, gc.p, v);
+    pd->rate = uru_dot3(v, gc.n);
+    if (pr->law.type == urLAW_FOAM) {
+      pd->area = ur_section_area(&ea, gc.n, gc.g);
+    }
+    pd->fn = ur_law_force(&pr->law, &pd->ls, gc.g, pd->rate, pd->area);
+    if (!(pd->fn > 0)) {
+      pd->fn = 0;
+      continue;
+    }
+
+    // apply with friction
+    pd->active = 1;
+    pd->ft = ur_contact_apply(m, d, ba, bb, gc.n, gc.p, pd->fn, pd->rate, &pr->law, 0, 0);
+  }
+}
+
+
+// commit the law histories at the evaluated depths (accepted steps only)
+void ur_contacts_commit(const urModel* m, urData* d) {
+  for (int i = 0; i < m->npair; i++) {
+    urPairData* pd = d->pair + i;
+    if (pd->depth > 0 || pd->ls.touching) {
+      ur_law_commit(&m->pair[i].law, &pd->ls, pd->depth, pd->rate, pd->area);
+    }
+  }
+}

@@ -1,0 +1,166 @@
+/* engine_data.c: per-run data: allocation in one buffer, reset, copy, history buffers. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "engine_internal.h"
+
+//---------------------------------- layout --------------------------------------------------------
+
+// number of doubles in the array part of the buffer
+static size_t ndoubles(const urModel* m) {
+  size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, nq = (size_t)m->nq, nv = (size_t)m->nv;
+  size_t ns = (size_t)m->nsensordata;
+  return nq + 5*nv + nb*(3 + 9 + 3 + 9 + 3 + 36 + 6*3 + 36 + 6 + 36 + 36 + 6 + 6 + 6)
+         + ng*12 + 4*ns + 2*nq + 8*nv;
+}
+
+
+// point the arrays of d into its buffer
+static void carve(const urModel* m, urData* d) {
+  double* p = d->buffer;
+  int nb = m->nbody, ng = m->ngeom, nq = m->nq, nv = m->nv, ns = m->nsensordata;
+#define TAKE(field, n) d->field = p; p += (n);
+  TAKE(qpos, nq)
+  TAKE(qvel, nv)
+  TAKE(qacc, nv)
+  TAKE(qfrc, nv)
+  TAKE(rst, 2*nv)
+  TAKE(xpos, 3*nb)
+  TAKE(xmat, 9*nb)
+  TAKE(xcom, 3*nb)
+  TAKE(gxpos, 3*ng)
+  TAKE(gxmat, 9*ng)
+  TAKE(Xe, 9*nb)
+  TAKE(Xr, 3*nb)
+  TAKE(S, 36*nb)
+  TAKE(cvel, 6*nb)
+  TAKE(cbias, 6*nb)
+  TAKE(cacc, 6*nb)
+  TAKE(IA, 36*nb)
+  TAKE(pA, 6*nb)
+  TAKE(U, 36*nb)
+  TAKE(Dinv, 36*nb)
+  TAKE(uu, 6*nb)
+  TAKE(fext, 6*nb)
+  TAKE(freact, 6*nb)
+  TAKE(sensordata, ns)
+  TAKE(peakmax, ns)
+  TAKE(peakmin, ns)
+  TAKE(tpeak, ns)
+  TAKE(scratch, 2*nq + 8*nv)
+#undef TAKE
+  d->pair = (urPairData*)p;
+  d->bag = (urBagData*)(d->pair + m->npair);
+}
+
+
+static size_t buffersize(const urModel* m) {
+  return ndoubles(m)*sizeof(double) + (size_t)m->npair*sizeof(urPairData)
+         + (size_t)m->nbag*sizeof(urBagData) + sizeof(double);
+}
+
+//---------------------------------- public --------------------------------------------------------
+
+urData* ur_data_new(const urModel* m) {
+  if (!m || !m->compiled) {
+    return NULL;
+  }
+  urData* d = calloc(1, sizeof(urData));
+  if (!d) {
+    return NULL;
+  }
+  d->buffer = calloc(1, buffersize(m));
+  if (!d->buffer) {
+    free(d);
+    return NULL;
+  }
+  carve(m, d);
+  ur_data_reset(m, d);
+  return d;
+}
+
+
+void ur_data_free(urData* d) {
+  if (!d) {
+    return;
+  }
+  if (d->hist_own) {
+    free(d->hist);
+  }
+  free(d->buffer);
+  free(d);
+}
+
+
+void ur_data_reset(const urModel* m, urData* d) {
+  // clear the buffer, set the reference configuration
+  memset(d->buffer, 0, buffersize(m));
+  if (m->nq) {
+    memcpy(d->qpos, m->qpos0, (size_t)m->nq*sizeof(double));
+  }
+
+  // outputs and run control
+  for (int i = 0; i < m->nsensordata; i++) {
+    d->peakmax[i] = -INFINITY;
+    d->peakmin[i] = INFINITY;
+  }
+  for (int i = 0; i < m->npair; i++) {
+    d->pair[i].depth = -INFINITY;
+  }
+  d->time = 0;
+  d->nhist = 0;
+  d->status = urSTAT_OK;
+  d->msg[0] = 0;
+  d->nstep = 0;
+  d->proj = -1;
+  d->t_jump = 0;
+  d->t_first = -1;
+  d->t_last = -1;
+  d->t_calm = 0;
+  d->energy = 0;
+  ur_kinematics(m, d);
+}
+
+
+void ur_data_copy(const urModel* m, urData* dst, const urData* src) {
+  // keep the buffer and history of dst
+  void* buf = dst->buffer;
+  double* hist = dst->hist;
+  int cap = dst->nhist_cap, own = dst->hist_own;
+  memcpy(buf, src->buffer, buffersize(m));
+  *dst = *src;
+  dst->buffer = buf;
+  carve(m, dst);
+  dst->hist = hist;
+  dst->nhist_cap = cap;
+  dst->hist_own = own;
+  dst->nhist = 0;
+}
+
+
+int ur_data_history(const urModel* m, urData* d, double* buf, int rows) {
+  // release an old engine buffer
+  if (d->hist_own) {
+    free(d->hist);
+  }
+  d->hist = NULL;
+  d->hist_own = 0;
+  d->nhist = 0;
+  d->nhist_cap = 0;
+  if (rows <= 0) {
+    return 0;
+  }
+
+  // caller buffer or engine allocation
+  if (buf) {
+    d->hist = buf;
+  } else {
+    d->hist = malloc((size_t)rows*(size_t)(1 + m->nsensordata)*sizeof(double));
+    if (!d->hist) {
+      return -1;
+    }
+    d->hist_own = 1;
+  }
+  d->nhist_cap = rows;
+  return 0;
+}

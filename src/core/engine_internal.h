@@ -1,0 +1,69 @@
+/* engine_internal.h: functions shared between the engine source files (not public API). */
+#ifndef UASRISK_ENGINE_INTERNAL_H
+#define UASRISK_ENGINE_INTERNAL_H
+
+#include "uasrisk/engine.h"
+
+// unroll the small fixed-size loops of the 3x3 / 6x6 kernels (GCC and clang)
+#if defined(__GNUC__)
+#define urUNROLL _Pragma("GCC unroll 6")
+#else
+#define urUNROLL
+#endif
+
+//---------------------------------- vector and quaternion utilities (engine_util.c) --------------
+
+double uru_dot3(const double a[3], const double b[3]);
+void uru_cross3(double r[3], const double a[3], const double b[3]);
+double uru_norm3(const double a[3]);
+int uru_normalize3(double a[3]);
+void uru_mulmat3vec(double r[3], const double M[9], const double v[3]);
+void uru_mulmat3tvec(double r[3], const double M[9], const double v[3]);
+void uru_mulmat3(double r[9], const double A[9], const double B[9]);
+void uru_mulmat3ta(double r[9], const double A[9], const double B[9]);
+void uru_mulmat3tb(double r[9], const double A[9], const double B[9]);
+void uru_quat2mat(double R[9], const double q[4]);
+void uru_mulquat(double r[4], const double a[4], const double b[4]);
+void uru_normalizequat(double q[4]);
+void uru_axisangle2quat(double q[4], const double axis[3], double angle);
+void uru_quatintegrate(double q[4], const double omega[3], double dt);
+void uru_quat2rotvec(double v[3], const double q[4]);
+void uru_rotvec_jrinv(double J[9], const double v[3]);
+
+//---------------------------------- spatial algebra (engine_util.c) ------------------------------
+
+void uru_xmotion(double r[6], const double E[9], const double p[3], const double v[6]);
+void uru_xmotion_inv(double r[6], const double E[9], const double p[3], const double v[6]);
+void uru_xforce_t(double r[6], const double E[9], const double p[3], const double f[6]);
+void uru_crossmotion(double r[6], const double v[6], const double m[6]);
+void uru_crossforce(double r[6], const double v[6], const double f[6]);
+void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9]);
+void uru_mul6(double r[6], const double I[36], const double v[6]);
+void uru_xinertia_t(double r[36], const double E[9], const double p[3], const double I[36]);
+int uru_invsym(double* Ainv, const double* A, int n);
+
+//---------------------------------- engine passes -------------------------------------------------
+
+void ur_jcalc(const urModel* m, urData* d, int i);
+void ur_velocities(const urModel* m, urData* d);
+void ur_restraints_commit(const urModel* m, urData* d);
+void ur_aba(const urModel* m, urData* d);
+void ur_reactions(const urModel* m, urData* d);
+void ur_restraints(const urModel* m, urData* d);
+void ur_contacts(const urModel* m, urData* d);
+void ur_contacts_commit(const urModel* m, urData* d);
+void ur_airbags(const urModel* m, urData* d);
+void ur_sensors(const urModel* m, urData* d);
+void ur_outputs(const urModel* m, urData* d);
+void ur_apply_force(const urModel* m, urData* d, int body, const double f[3], const double p[3]);
+void ur_point_acc(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
+void ur_set_status(urData* d, int status, const char* msg);
+void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e);
+void ur_relvel(const urModel* m, const urData* d, int a, int b, const double p[3], double v[3]);
+double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double n[3],
+                        const double p[3], double fn, double rate, const urLaw* law, double mu,
+                        double v_eps);
+int ur_tree_active(const urModel* m, const urData* d, int tree);
+double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]);
+
+#endif

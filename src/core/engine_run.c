@@ -1,0 +1,445 @@
+/* engine_run.c: the forward pipeline, time stepping (semi-implicit Euler or RK4 with an exact
+ * Lie-group update of quaternions), failure detection, the free-flight jump to the first
+ * possible contact, and the end of a run. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "engine_internal.h"
+
+//---------------------------------- status --------------------------------------------------------
+
+void ur_set_status(urData* d, int status, const char* msg) {
+  if (d->status < 0) {
+    return;
+  }
+  d->status = status;
+  snprintf(d->msg, sizeof(d->msg), "%s", msg ? msg : "");
+}
+
+
+const char* ur_status_str(int status) {
+  switch (status) {
+  case urSTAT_OK:
+    return "ok";
+  case urSTAT_SEPARATED:
+    return "ended: contact over";
+  case urSTAT_SETTLED:
+    return "ended: motion settled";
+  case urSTAT_TMAX:
+    return "ended: maximum time";
+  case urSTAT_NONFINITE:
+    return "failed: non-finite state";
+  case urSTAT_EXPLODE:
+    return "failed: exploding state";
+  case urSTAT_BADARG:
+    return "failed: bad argument";
+  default:
+    return "unknown";
+  }
+}
+
+//---------------------------------- forward -------------------------------------------------------
+
+int ur_forward(const urModel* m, urData* d) {
+  if (d->status < 0) {
+    return d->status;
+  }
+
+  // positions and velocities
+  ur_kinematics(m, d);
+  ur_velocities(m, d);
+
+  // applied forces: gravity compensation, restraints, contacts, airbags
+  memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
+  memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    if (b->gravity != 1) {
+      double f[3];
+      for (int k = 0; k < 3; k++) {
+        f[k] = -(1 - b->gravity)*b->mass*m->opt.gravity[k];
+      }
+      ur_apply_force(m, d, i, f, d->xcom + 3*i);
+    }
+  }
+  ur_restraints(m, d);
+  ur_contacts(m, d);
+  ur_airbags(m, d);
+
+  // accelerations, joint loads, sensors
+  ur_aba(m, d);
+  ur_reactions(m, d);
+  ur_sensors(m, d);
+  for (int k = 0; k < m->nv; k++) {
+    if (!isfinite(d->qacc[k])) {
+      char msg[urMSGLEN];
+      snprintf(msg, sizeof(msg), "non-finite acceleration in joint dof %d at t = %.6g s", k,
+               d->time);
+      ur_set_status(d, urSTAT_NONFINITE, msg);
+      break;
+    }
+  }
+  return d->status;
+}
+
+//---------------------------------- integration ---------------------------------------------------
+
+// qout = q0 "+" h * dq (dq in tangent coordinates: nv values; exact exponential for quaternions)
+static void addpos(const urModel* m, double* qout, const double* q0, const double* dq, double h) {
+  if (qout != q0) {
+    memcpy(qout, q0, (size_t)m->nq*sizeof(double));
+  }
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    double* q = qout + b->qadr;
+    const double* v = dq + b->vadr;
+    switch (b->jtype) {
+    case urJNT_FREE:
+      for (int k = 0; k < 3; k++) {
+        q[k] += h*v[k];
+      }
+      uru_quatintegrate(q + 3, v + 3, h);
+      break;
+    case urJNT_SPHERICAL:
+      uru_quatintegrate(q, v, h);
+      break;
+    case urJNT_FIXED:
+      break;
+    default:
+      for (int k = 0; k < b->nv; k++) {
+        q[k] += h*v[k];
+      }
+    }
+  }
+}
+
+
+// tangent-coordinate derivative at offset th (h * previous stage) with velocity v
+static void tangent(const urModel* m, double* dq, const double* th, const double* v) {
+  memcpy(dq, v, (size_t)m->nv*sizeof(double));
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    int off = b->jtype == urJNT_FREE ? 3 : (b->jtype == urJNT_SPHERICAL ? 0 : -1);
+    if (off >= 0 && th) {
+      double J[9];
+      uru_rotvec_jrinv(J, th + b->vadr + off);
+      uru_mulmat3vec(dq + b->vadr + off, J, v + b->vadr + off);
+    }
+  }
+}
+
+
+// check the state after a step
+static void checkstate(const urModel* m, urData* d) {
+  char msg[urMSGLEN];
+  for (int k = 0; k < m->nq; k++) {
+    if (!isfinite(d->qpos[k])) {
+      snprintf(msg, sizeof(msg), "non-finite position (qpos %d) at t = %.6g s", k, d->time);
+      ur_set_status(d, urSTAT_NONFINITE, msg);
+      return;
+    }
+  }
+  for (int k = 0; k < m->nv; k++) {
+    if (!isfinite(d->qvel[k])) {
+      snprintf(msg, sizeof(msg), "non-finite velocity (qvel %d) at t = %.6g s", k, d->time);
+      ur_set_status(d, urSTAT_NONFINITE, msg);
+      return;
+    }
+    if (fabs(d->qvel[k]) > m->opt.vmax) {
+      snprintf(msg, sizeof(msg), "velocity %.3g beyond vmax (qvel %d) at t = %.6g s",
+               d->qvel[k], k, d->time);
+      ur_set_status(d, urSTAT_EXPLODE, msg);
+      return;
+    }
+  }
+}
+
+
+// end of a run (after ur_run_start): contact over, motion settled, or maximum time
+static void checkend(const urModel* m, urData* d) {
+  if (d->t_first >= 0 && d->time - d->t_last >= m->opt.t_quiet) {
+    ur_set_status(d, urSTAT_SEPARATED, "contact over");
+  } else if (d->t_first >= 0 && d->t_calm >= m->opt.t_quiet) {
+    ur_set_status(d, urSTAT_SETTLED, "motion settled");
+  } else if (d->time - d->t_jump >= m->opt.tmax - 0.5*m->opt.dt) {
+    ur_set_status(d, urSTAT_TMAX, d->t_first >= 0 ? "maximum time" : "maximum time, no contact");
+  }
+}
+
+
+// bookkeeping on an accepted state: histories, peaks, contact activity
+static void accept(const urModel* m, urData* d) {
+  ur_outputs(m, d);
+  ur_restraints_commit(m, d);
+  ur_contacts_commit(m, d);
+  if (d->proj >= 0 && ur_tree_active(m, d, d->proj)) {
+    if (d->t_first < 0) {
+      d->t_first = d->time;
+    }
+    d->t_last = d->time;
+  }
+  d->t_calm = d->energy < m->opt.ke_settle ? d->t_calm + m->opt.dt : 0;
+}
+
+
+int ur_step(const urModel* m, urData* d) {
+  double h = m->opt.dt;
+  int nv = m->nv, nq = m->nq;
+  if (d->status < 0) {
+    return d->status;
+  }
+
+  // forward at the current state, accept it
+  if (ur_forward(m, d) < 0) {
+    return d->status;
+  }
+  accept(m, d);
+
+  if (m->opt.integrator == urINT_RK4) {
+    // scratch: q0 | v0 | dq sum | a sum | stage dq | stage offset
+    double* q0 = d->scratch;
+    double* v0 = q0 + nq;
+    double* dqs = v0 + nv;
+    double* as = dqs + nv;
+    double* dqk = as + nv;
+    double* th = dqk + nv;
+    memcpy(q0, d->qpos, (size_t)nq*sizeof(double));
+    memcpy(v0, d->qvel, (size_t)nv*sizeof(double));
+
+    // stage 1
+    memcpy(dqk, v0, (size_t)nv*sizeof(double));
+    for (int k = 0; k < nv; k++) {
+      dqs[k] = dqk[k];
+      as[k] = d->qacc[k];
+    }
+
+    // stages 2-4
+    static const double c[3] = {0.5, 0.5, 1.0}, w[3] = {2, 2, 1};
+    for (int s = 0; s < 3; s++) {
+      for (int k = 0; k < nv; k++) {
+        th[k] = c[s]*h*dqk[k];
+        d->qvel[k] = v0[k] + c[s]*h*d->qacc[k];
+      }
+      addpos(m, d->qpos, q0, dqk, c[s]*h);
+      if (ur_forward(m, d) < 0) {
+        return d->status;
+      }
+      tangent(m, dqk, th, d->qvel);
+      for (int k = 0; k < nv; k++) {
+        dqs[k] += w[s]*dqk[k];
+        as[k] += w[s]*d->qacc[k];
+      }
+    }
+
+    // combine
+    addpos(m, d->qpos, q0, dqs, h/6);
+    for (int k = 0; k < nv; k++) {
+      d->qvel[k] = v0[k] + h/6*as[k];
+    }
+  } else {
+    // semi-implicit Euler: velocities first, positions with the new velocities
+    for (int k = 0; k < nv; k++) {
+      d->qvel[k] += h*d->qacc[k];
+    }
+    addpos(m, d->qpos, d->qpos, d->qvel, h);
+  }
+  d->time += h;
+  d->nstep++;
+  checkstate(m, d);
+  if (d->status == urSTAT_OK && d->proj >= 0) {
+    checkend(m, d);
+  }
+  return d->status;
+}
+
+//---------------------------------- runs ----------------------------------------------------------
+
+// does a geom belong to a tree
+static int intree(const urModel* m, int g, int tree) {
+  return g >= 0 && m->body[m->geom[g].body].tree == tree;
+}
+
+
+// any force between the tree and the rest of the world
+int ur_tree_active(const urModel* m, const urData* d, int tree) {
+  for (int i = 0; i < m->npair; i++) {
+    const urPair* p = m->pair + i;
+    if (d->pair[i].active && intree(m, p->geom1, tree) != intree(m, p->geom2, tree)) {
+      return 1;
+    }
+  }
+  for (int i = 0; i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    if (!d->bag[i].active) {
+      continue;
+    }
+    for (int t = 0; t < b->ntarget; t++) {
+      if (d->bag[i].ftgt[t] > 0 && intree(m, b->geom, tree) != intree(m, b->target[t], tree)) {
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+
+// earliest time at which sphere (c, r) moving with v touches sphere (cs, rs); INFINITY if never
+static double sweep(const double c[3], double r, const double v[3], const double cs[3],
+                    double rs) {
+  double D[3] = {c[0] - cs[0], c[1] - cs[1], c[2] - cs[2]};
+  double R = r + rs;
+  double a = uru_dot3(v, v), b = 2*uru_dot3(D, v), cc = uru_dot3(D, D) - R*R;
+  if (cc <= 0) {
+    return 0;
+  }
+  double disc = b*b - 4*a*cc;
+  if (a <= 0 || disc < 0) {
+    return INFINITY;
+  }
+  double t = (-b - sqrt(disc))/(2*a);
+  return t >= 0 ? t : INFINITY;
+}
+
+
+// earliest possible contact of the moving geom gm with geom gs (-1: ground) given margin
+static double firsthit(const urModel* m, const urData* d, int gm, int gs, const double v[3]) {
+  double r = m->geom[gm].rbound + m->opt.jump_margin;
+  const double* c = d->gxpos + 3*gm;
+  if (gs < 0) {
+    double gap = c[2] - r;
+    if (gap <= 0) {
+      return 0;
+    }
+    return v[2] < 0 ? gap/(-v[2]) : INFINITY;
+  }
+  return sweep(c, r, v, d->gxpos + 3*gs, m->geom[gs].rbound);
+}
+
+
+int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
+                 const double quat[4], const double vel[3]) {
+  // check
+  if (root < 0 || root >= m->nbody || m->body[root].parent >= 0 ||
+      m->body[root].jtype != urJNT_FREE || !pos || !vel) {
+    d->status = urSTAT_OK;
+    ur_set_status(d, urSTAT_BADARG, "ur_run_start: root must be a free body of the world");
+    return d->status;
+  }
+
+  // place the tree: CoM at pos, velocity vel, joints of the tree at rest
+  const urBody* rb = m->body + root;
+  memcpy(d->qpos + rb->qadr, pos, 3*sizeof(double));
+  if (quat) {
+    memcpy(d->qpos + rb->qadr + 3, quat, 4*sizeof(double));
+    uru_normalizequat(d->qpos + rb->qadr + 3);
+  }
+  for (int i = 0; i < m->nbody; i++) {
+    if (m->body[i].tree == root) {
+      memset(d->qvel + m->body[i].vadr, 0, (size_t)m->body[i].nv*sizeof(double));
+    }
+  }
+  memcpy(d->qvel + rb->vadr, vel, 3*sizeof(double));
+
+  // reset run outputs and the contact histories of the tree
+  for (int k = 0; k < m->nsensordata; k++) {
+    d->peakmax[k] = -INFINITY;
+    d->peakmin[k] = INFINITY;
+    d->tpeak[k] = 0;
+  }
+  for (int i = 0; i < m->npair; i++) {
+    if (intree(m, m->pair[i].geom1, root) || intree(m, m->pair[i].geom2, root)) {
+      memset(d->pair + i, 0, sizeof(urPairData));
+      d->pair[i].depth = -INFINITY;
+    }
+  }
+  for (int i = 0; i < m->nbag; i++) {
+    memset(d->bag + i, 0, sizeof(urBagData));
+  }
+  d->status = urSTAT_OK;
+  d->msg[0] = 0;
+  d->time = 0;
+  d->nstep = 0;
+  d->nhist = 0;
+  d->proj = root;
+  d->t_first = d->t_last = -1;
+  d->t_calm = 0;
+  ur_kinematics(m, d);
+
+  // earliest possible contact of the tree's swept bounding spheres
+  double tmin = INFINITY;
+  for (int i = 0; i < m->npair; i++) {
+    int g1 = m->pair[i].geom1, g2 = m->pair[i].geom2;
+    int in1 = intree(m, g1, root), in2 = intree(m, g2, root);
+    if (in1 && !in2) {
+      tmin = fmin(tmin, firsthit(m, d, g1, g2, vel));
+    } else if (in2 && !in1) {
+      tmin = fmin(tmin, firsthit(m, d, g2, g1, vel));
+    }
+  }
+  for (int i = 0; i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    for (int t = 0; t < b->ntarget; t++) {
+      int inb = intree(m, b->geom, root), int_ = intree(m, b->target[t], root);
+      if (inb && !int_) {
+        tmin = fmin(tmin, firsthit(m, d, b->geom, b->target[t], vel));
+      } else if (int_ && !inb) {
+        tmin = fmin(tmin, firsthit(m, d, b->target[t], b->geom, vel));
+      }
+    }
+  }
+
+  // jump along the straight line
+  if (isfinite(tmin) && tmin > 0) {
+    for (int k = 0; k < 3; k++) {
+      d->qpos[rb->qadr + k] += vel[k]*tmin;
+    }
+    d->time = tmin;
+    ur_kinematics(m, d);
+  }
+  d->t_jump = isfinite(tmin) ? tmin : 0;
+  return d->status;
+}
+
+
+int ur_run(const urModel* m, urData* d) {
+  while (d->status == urSTAT_OK) {
+    ur_step(m, d);
+  }
+  return d->status;
+}
+
+
+int ur_run_impact(const urModel* m, urData* d, int root, const double pos[3],
+                  const double quat[4], const double vel[3]) {
+  if (ur_run_start(m, d, root, pos, quat, vel) != urSTAT_OK) {
+    return d->status;
+  }
+  return ur_run(m, d);
+}
+
+
+void ur_set_free(const urModel* m, urData* d, int body, const double pos[3], const double quat[4],
+                 const double vel[3], const double omega[3]) {
+  const urBody* b = m->body + body;
+  if (b->jtype != urJNT_FREE) {
+    return;
+  }
+  double* q = d->qpos + b->qadr;
+  double* v = d->qvel + b->vadr;
+  if (pos) {
+    memcpy(q, pos, 3*sizeof(double));
+  }
+  if (quat) {
+    memcpy(q + 3, quat, 4*sizeof(double));
+    uru_normalizequat(q + 3);
+  }
+  if (vel) {
+    memcpy(v, vel, 3*sizeof(double));
+  }
+  if (omega) {
+    double R[9];
+    uru_quat2mat(R, q + 3);
+    uru_mulmat3tvec(v + 3, R, omega);
+  }
+  ur_kinematics(m, d);
+}

@@ -1,0 +1,89 @@
+/* engine_sensor.c: sensor values at the current state (after the accelerations and joint
+ * reactions are known), running peaks and sampled time histories. */
+#include <math.h>
+#include <string.h>
+#include "engine_internal.h"
+
+//---------------------------------- sensor values -------------------------------------------------
+
+void ur_sensors(const urModel* m, urData* d) {
+  for (int i = 0; i < m->nsensor; i++) {
+    const urSensor* s = m->sensor + i;
+    double* out = d->sensordata + s->adr;
+    const urBody* b = m->body + (s->obj < m->nbody ? s->obj : 0);
+
+    switch (s->type) {
+    case urSENS_ACCEL:
+      ur_point_acc(m, d, s->obj, s->pos, out);
+      break;
+    case urSENS_BODYPOS:
+      ur_point_pos(m, d, s->obj, s->pos, out);
+      break;
+    case urSENS_BODYVEL:
+      ur_point_vel(m, d, s->obj, s->pos, out);
+      break;
+    case urSENS_JOINTLOAD: {
+      // reaction on the child at the anchor, rotated into the sensor frame
+      double R[9];
+      const double* f = d->freact + 6*s->obj;
+      uru_quat2mat(R, s->quat);
+      uru_mulmat3tvec(out, R, f + 3);
+      uru_mulmat3tvec(out + 3, R, f);
+      break;
+    }
+    case urSENS_JOINTPOS:
+      out[0] = d->qpos[b->qadr + s->dof];
+      break;
+    case urSENS_JOINTVEL:
+      out[0] = d->qvel[b->vadr + s->dof];
+      break;
+    case urSENS_CONTACT: {
+      const urPairData* pd = d->pair + s->obj;
+      out[0] = pd->fn;
+      out[1] = pd->depth > 0 ? pd->depth : 0;
+      out[2] = pd->ft;
+      break;
+    }
+    case urSENS_AIRBAG:
+      out[0] = d->bag[s->obj].pressure;
+      out[1] = d->bag[s->obj].volume;
+      break;
+    }
+  }
+}
+
+//---------------------------------- peaks and histories -------------------------------------------
+
+// update peaks; append a history row at the sampling instants
+void ur_outputs(const urModel* m, urData* d) {
+  int ns = m->nsensordata;
+
+  // peaks
+  for (int k = 0; k < ns; k++) {
+    double v = d->sensordata[k];
+    if (v > d->peakmax[k]) {
+      d->peakmax[k] = v;
+    }
+    if (v < d->peakmin[k]) {
+      d->peakmin[k] = v;
+    }
+    if (fabs(v) >= fmax(fabs(d->peakmax[k]), fabs(d->peakmin[k]))) {
+      d->tpeak[k] = d->time;
+    }
+  }
+
+  // history row every k steps, k dt <= sample_dt (the rate is never below 1/sample_dt)
+  if (!d->hist || d->nhist >= d->nhist_cap) {
+    return;
+  }
+  long every = (long)floor(m->opt.sample_dt/m->opt.dt + 1e-9);
+  if (every < 1) {
+    every = 1;
+  }
+  if (d->nstep % every == 0) {
+    double* row = d->hist + (size_t)d->nhist*(size_t)(1 + ns);
+    row[0] = d->time;
+    memcpy(row + 1, d->sensordata, (size_t)ns*sizeof(double));
+    d->nhist++;
+  }
+}

@@ -1,0 +1,478 @@
+/* engine_util.c: self-contained vector, quaternion and spatial-algebra helpers (uru_ prefix).
+ * Spatial vectors are (angular, linear); a transform (E, p) maps parent to child coordinates with
+ * E the rotation parent -> child and p the child origin in parent coordinates. */
+#include <math.h>
+#include <string.h>
+#include "engine_internal.h"
+
+//---------------------------------- 3-vectors and 3x3 matrices ----------------------------------
+
+double uru_dot3(const double a[3], const double b[3]) {
+  return a[0]*b[0] + a[1]*b[1] + a[2]*b[2];
+}
+
+
+void uru_cross3(double r[3], const double a[3], const double b[3]) {
+  double t0 = a[1]*b[2] - a[2]*b[1];
+  double t1 = a[2]*b[0] - a[0]*b[2];
+  double t2 = a[0]*b[1] - a[1]*b[0];
+  r[0] = t0;
+  r[1] = t1;
+  r[2] = t2;
+}
+
+
+double uru_norm3(const double a[3]) {
+  return sqrt(a[0]*a[0] + a[1]*a[1] + a[2]*a[2]);
+}
+
+
+int uru_normalize3(double a[3]) {
+  double n = uru_norm3(a);
+  if (n <= 0 || !isfinite(n)) {
+    return -1;
+  }
+  a[0] /= n;
+  a[1] /= n;
+  a[2] /= n;
+  return 0;
+}
+
+
+void uru_mulmat3vec(double r[3], const double M[9], const double v[3]) {
+  double t0 = M[0]*v[0] + M[1]*v[1] + M[2]*v[2];
+  double t1 = M[3]*v[0] + M[4]*v[1] + M[5]*v[2];
+  double t2 = M[6]*v[0] + M[7]*v[1] + M[8]*v[2];
+  r[0] = t0;
+  r[1] = t1;
+  r[2] = t2;
+}
+
+
+void uru_mulmat3tvec(double r[3], const double M[9], const double v[3]) {
+  double t0 = M[0]*v[0] + M[3]*v[1] + M[6]*v[2];
+  double t1 = M[1]*v[0] + M[4]*v[1] + M[7]*v[2];
+  double t2 = M[2]*v[0] + M[5]*v[1] + M[8]*v[2];
+  r[0] = t0;
+  r[1] = t1;
+  r[2] = t2;
+}
+
+
+void uru_mulmat3(double r[9], const double A[9], const double B[9]) {
+  double t[9];
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      t[3*i+j] = A[3*i]*B[j] + A[3*i+1]*B[3+j] + A[3*i+2]*B[6+j];
+    }
+  }
+  memcpy(r, t, sizeof(t));
+}
+
+
+// r = A^T B
+void uru_mulmat3ta(double r[9], const double A[9], const double B[9]) {
+  double t[9];
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      t[3*i+j] = A[i]*B[j] + A[3+i]*B[3+j] + A[6+i]*B[6+j];
+    }
+  }
+  memcpy(r, t, sizeof(t));
+}
+
+
+// r = A B^T
+void uru_mulmat3tb(double r[9], const double A[9], const double B[9]) {
+  double t[9];
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      t[3*i+j] = A[3*i]*B[3*j] + A[3*i+1]*B[3*j+1] + A[3*i+2]*B[3*j+2];
+    }
+  }
+  memcpy(r, t, sizeof(t));
+}
+
+//---------------------------------- quaternions (w, x, y, z) -------------------------------------
+
+void uru_quat2mat(double R[9], const double q[4]) {
+  double w = q[0], x = q[1], y = q[2], z = q[3];
+  R[0] = 1 - 2*(y*y + z*z);
+  R[1] = 2*(x*y - w*z);
+  R[2] = 2*(x*z + w*y);
+  R[3] = 2*(x*y + w*z);
+  R[4] = 1 - 2*(x*x + z*z);
+  R[5] = 2*(y*z - w*x);
+  R[6] = 2*(x*z - w*y);
+  R[7] = 2*(y*z + w*x);
+  R[8] = 1 - 2*(x*x + y*y);
+}
+
+
+void uru_mulquat(double r[4], const double a[4], const double b[4]) {
+  double t[4];
+  t[0] = a[0]*b[0] - a[1]*b[1] - a[2]*b[2] - a[3]*b[3];
+  t[1] = a[0]*b[1] + a[1]*b[0] + a[2]*b[3] - a[3]*b[2];
+  t[2] = a[0]*b[2] - a[1]*b[3] + a[2]*b[0] + a[3]*b[1];
+  t[3] = a[0]*b[3] + a[1]*b[2] - a[2]*b[1] + a[3]*b[0];
+  memcpy(r, t, sizeof(t));
+}
+
+
+void uru_normalizequat(double q[4]) {
+  double n = sqrt(q[0]*q[0] + q[1]*q[1] + q[2]*q[2] + q[3]*q[3]);
+  if (n > 0 && isfinite(n)) {
+    urUNROLL
+    for (int i = 0; i < 4; i++) {
+      q[i] /= n;
+    }
+  } else {
+    q[0] = 1;
+    q[1] = q[2] = q[3] = 0;
+  }
+}
+
+
+void uru_axisangle2quat(double q[4], const double axis[3], double angle) {
+  double a[3] = {axis[0], axis[1], axis[2]};
+  double s = sin(0.5*angle);
+  uru_normalize3(a);
+  q[0] = cos(0.5*angle);
+  q[1] = s*a[0];
+  q[2] = s*a[1];
+  q[3] = s*a[2];
+}
+
+
+// q <- q * exp(omega dt / 2), omega in the local frame
+void uru_quatintegrate(double q[4], const double omega[3], double dt) {
+  double w = uru_norm3(omega);
+  double th = w*dt, dq[4];
+  if (th < 1e-300) {
+    return;
+  }
+  double s = sin(0.5*th)/w;
+  dq[0] = cos(0.5*th);
+  dq[1] = s*omega[0];
+  dq[2] = s*omega[1];
+  dq[3] = s*omega[2];
+  uru_mulquat(q, q, dq);
+  uru_normalizequat(q);
+}
+
+
+// rotation vector (axis * angle, angle in [0, pi]) of a unit quaternion
+void uru_quat2rotvec(double v[3], const double q[4]) {
+  double w = q[0], x = q[1], y = q[2], z = q[3];
+  if (w < 0) {
+    w = -w;
+    x = -x;
+    y = -y;
+    z = -z;
+  }
+  double s = sqrt(x*x + y*y + z*z);
+  double ang = 2*atan2(s, w);
+  double f = s > 1e-12 ? ang/s : 2.0/(w > 0 ? w : 1.0);
+  v[0] = f*x;
+  v[1] = f*y;
+  v[2] = f*z;
+}
+
+
+// inverse right Jacobian of SO(3): d(rotvec)/dt = Jrinv * omega_local
+void uru_rotvec_jrinv(double J[9], const double v[3]) {
+  double th = uru_norm3(v), c2;
+  if (th < 1e-4) {
+    c2 = 1.0/12.0 + th*th/720.0;
+  } else {
+    c2 = 1.0/(th*th) - (1 + cos(th))/(2*th*sin(th));
+  }
+  double K[9] = {0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0}, K2[9];
+  uru_mulmat3(K2, K, K);
+  urUNROLL
+  for (int i = 0; i < 9; i++) {
+    J[i] = 0.5*K[i] + c2*K2[i];
+  }
+  J[0] += 1;
+  J[4] += 1;
+  J[8] += 1;
+}
+
+//---------------------------------- spatial algebra -----------------------------------------------
+
+// motion vector parent -> child: w' = E w, v' = E (v - p x w)
+void uru_xmotion(double r[6], const double E[9], const double p[3], const double v[6]) {
+  double t[3];
+  uru_cross3(t, p, v);
+  t[0] = v[3] - t[0];
+  t[1] = v[4] - t[1];
+  t[2] = v[5] - t[2];
+  uru_mulmat3vec(r, E, v);
+  uru_mulmat3vec(r+3, E, t);
+}
+
+
+// motion vector child -> parent: w = E^T w', v = E^T v' + p x w
+void uru_xmotion_inv(double r[6], const double E[9], const double p[3], const double v[6]) {
+  double w[3], l[3], t[3];
+  uru_mulmat3tvec(w, E, v);
+  uru_mulmat3tvec(l, E, v+3);
+  uru_cross3(t, p, w);
+  r[0] = w[0];
+  r[1] = w[1];
+  r[2] = w[2];
+  r[3] = l[0] + t[0];
+  r[4] = l[1] + t[1];
+  r[5] = l[2] + t[2];
+}
+
+
+// force vector child -> parent (X^T f): f = E^T f', n = E^T n' + p x f
+void uru_xforce_t(double r[6], const double E[9], const double p[3], const double f[6]) {
+  double n[3], l[3], t[3];
+  uru_mulmat3tvec(n, E, f);
+  uru_mulmat3tvec(l, E, f+3);
+  uru_cross3(t, p, l);
+  r[0] = n[0] + t[0];
+  r[1] = n[1] + t[1];
+  r[2] = n[2] + t[2];
+  r[3] = l[0];
+  r[4] = l[1];
+  r[5] = l[2];
+}
+
+
+// motion cross product v x m
+void uru_crossmotion(double r[6], const double v[6], const double m[6]) {
+  double a[3], b[3], c[3];
+  uru_cross3(a, v, m);
+  uru_cross3(b, v, m+3);
+  uru_cross3(c, v+3, m);
+  r[0] = a[0];
+  r[1] = a[1];
+  r[2] = a[2];
+  r[3] = b[0] + c[0];
+  r[4] = b[1] + c[1];
+  r[5] = b[2] + c[2];
+}
+
+
+// force cross product v x* f
+void uru_crossforce(double r[6], const double v[6], const double f[6]) {
+  double a[3], b[3], c[3];
+  uru_cross3(a, v, f);
+  uru_cross3(b, v+3, f+3);
+  uru_cross3(c, v, f+3);
+  r[0] = a[0] + b[0];
+  r[1] = a[1] + b[1];
+  r[2] = a[2] + b[2];
+  r[3] = c[0];
+  r[4] = c[1];
+  r[5] = c[2];
+}
+
+
+// spatial inertia (6x6 row-major) at the body origin from mass, CoM and inertia about the CoM
+void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9]) {
+  double cc = uru_dot3(com, com);
+  double cx[9] = {0, -com[2], com[1], com[2], 0, -com[0], -com[1], com[0], 0};
+  memset(I, 0, 36*sizeof(double));
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      I[6*i+j] = Ic[3*i+j] + mass*((i == j)*cc - com[i]*com[j]);
+      I[6*i+3+j] = mass*cx[3*i+j];
+      I[6*(i+3)+j] = -mass*cx[3*i+j];
+    }
+    I[6*(i+3)+3+i] = mass;
+  }
+}
+
+
+void uru_mul6(double r[6], const double I[36], const double v[6]) {
+  double t[6];
+  urUNROLL
+  for (int i = 0; i < 6; i++) {
+    const double* row = I + 6*i;
+    t[i] = row[0]*v[0] + row[1]*v[1] + row[2]*v[2] + row[3]*v[3] + row[4]*v[4] + row[5]*v[5];
+  }
+  memcpy(r, t, sizeof(t));
+}
+
+
+// extract / insert a 3x3 block of a 6x6 matrix
+static void getblock(double B[9], const double I[36], int bi, int bj) {
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      B[3*i+j] = I[6*(3*bi+i) + 3*bj + j];
+    }
+  }
+}
+
+
+// r = [p]x M (cross product of p with each column of M)
+static void crossmat(double r[9], const double p[3], const double M[9]) {
+  urUNROLL
+  for (int c = 0; c < 3; c++) {
+    double x = M[c], y = M[3+c], z = M[6+c];
+    r[c] = p[1]*z - p[2]*y;
+    r[3+c] = p[2]*x - p[0]*z;
+    r[6+c] = p[0]*y - p[1]*x;
+  }
+}
+
+
+// symmetric inertia child -> parent: X^T I X with X = [E 0; -E px E]
+void uru_xinertia_t(double r[36], const double E[9], const double p[3], const double I[36]) {
+  double A11[9], A12[9], A22[9], T[9], J12[9], J11[9], U[9], V[9];
+
+  // rotate the three distinct blocks: E^T B E
+  getblock(T, I, 0, 0);
+  uru_mulmat3ta(T, E, T);
+  uru_mulmat3(A11, T, E);
+  getblock(T, I, 0, 1);
+  uru_mulmat3ta(T, E, T);
+  uru_mulmat3(A12, T, E);
+  getblock(T, I, 1, 1);
+  uru_mulmat3ta(T, E, T);
+  uru_mulmat3(A22, T, E);
+
+  // translate: J12 = A12 + px A22, J11 = A11 + px A12^T - J12 px, J21 = J12^T, J22 = A22
+  crossmat(T, p, A22);
+  urUNROLL
+  for (int i = 0; i < 9; i++) {
+    J12[i] = A12[i] + T[i];
+  }
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      U[3*i+j] = A12[3*j+i];
+    }
+  }
+  crossmat(T, p, U);
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      U[3*i+j] = J12[3*j+i];
+    }
+  }
+  crossmat(V, p, U);
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      // (J12 px) = -(px J12^T)^T
+      J11[3*i+j] = A11[3*i+j] + T[3*i+j] + V[3*j+i];
+    }
+  }
+
+  // symmetrise and store
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      r[6*i + j] = 0.5*(J11[3*i+j] + J11[3*j+i]);
+      r[6*i + 3 + j] = J12[3*i+j];
+      r[6*(3+j) + i] = J12[3*i+j];
+      r[6*(3+i) + 3 + j] = 0.5*(A22[3*i+j] + A22[3*j+i]);
+    }
+  }
+}
+
+
+// inverse of a small n x n symmetric matrix (closed forms up to 3, Cholesky beyond, which
+// needs positive definiteness); -1 if singular
+int uru_invsym(double* Ainv, const double* A, int n) {
+  // closed forms for 1 x 1 and 2 x 2
+  if (n == 1) {
+    if (!(A[0] != 0)) {
+      return -1;
+    }
+    Ainv[0] = 1/A[0];
+    return 0;
+  }
+  if (n == 2) {
+    double det = A[0]*A[3] - A[1]*A[2];
+    if (!(det != 0)) {
+      return -1;
+    }
+    Ainv[0] = A[3]/det;
+    Ainv[1] = -A[1]/det;
+    Ainv[2] = -A[2]/det;
+    Ainv[3] = A[0]/det;
+    return 0;
+  }
+  if (n == 3) {
+    double c0 = A[4]*A[8] - A[5]*A[7], c1 = A[5]*A[6] - A[3]*A[8], c2 = A[3]*A[7] - A[4]*A[6];
+    double det = A[0]*c0 + A[1]*c1 + A[2]*c2;
+    if (!(det != 0)) {
+      return -1;
+    }
+    double id = 1/det;
+    Ainv[0] = c0*id;
+    Ainv[1] = (A[2]*A[7] - A[1]*A[8])*id;
+    Ainv[2] = (A[1]*A[5] - A[2]*A[4])*id;
+    Ainv[3] = c1*id;
+    Ainv[4] = (A[0]*A[8] - A[2]*A[6])*id;
+    Ainv[5] = (A[2]*A[3] - A[0]*A[5])*id;
+    Ainv[6] = c2*id;
+    Ainv[7] = (A[1]*A[6] - A[0]*A[7])*id;
+    Ainv[8] = (A[0]*A[4] - A[1]*A[3])*id;
+    return 0;
+  }
+  // Cholesky A = L L^T, then A^-1 = L^-T L^-1 (A symmetric positive definite)
+  double L[36] = {0}, Li[36] = {0};
+  for (int j = 0; j < n; j++) {
+    double s = A[n*j + j];
+    for (int k = 0; k < j; k++) {
+      s -= L[6*j + k]*L[6*j + k];
+    }
+    if (!(s > 0)) {
+      return -1;
+    }
+    L[6*j + j] = sqrt(s);
+    for (int i = j + 1; i < n; i++) {
+      double t = A[n*i + j];
+      for (int k = 0; k < j; k++) {
+        t -= L[6*i + k]*L[6*j + k];
+      }
+      L[6*i + j] = t/L[6*j + j];
+    }
+  }
+
+  // invert the triangle
+  for (int j = 0; j < n; j++) {
+    Li[6*j + j] = 1/L[6*j + j];
+    for (int i = j + 1; i < n; i++) {
+      double t = 0;
+      for (int k = j; k < i; k++) {
+        t -= L[6*i + k]*Li[6*k + j];
+      }
+      Li[6*i + j] = t/L[6*i + i];
+    }
+  }
+
+  // A^-1 = Li^T Li
+  for (int i = 0; i < n; i++) {
+    for (int j = i; j < n; j++) {
+      double t = 0;
+      for (int k = j; k < n; k++) {
+        t += Li[6*k + i]*Li[6*k + j];
+      }
+      Ainv[n*i + j] = t;
+      Ainv[n*j + i] = t;
+    }
+  }
+  return 0;
+}

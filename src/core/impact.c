@@ -1,0 +1,425 @@
+/* impact.c: one drone-on-person impact at an offset (paper 4.2, Fig. 7) and its injuries */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "uasrisk/impact.h"
+
+#define DEG (M_PI / 180.0)
+#define HIST_SECONDS_MARGIN 1.2    /* history rows for tmax with this margin */
+
+/* ---- small vector helpers ---- */
+
+static double dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* quaternion product r = a b (w, x, y, z) */
+static void qmul(const double a[4], const double b[4], double r[4]) {
+  double w = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+  double x = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+  double y = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+  double z = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+  r[0] = w;
+  r[1] = x;
+  r[2] = y;
+  r[3] = z;
+}
+
+static void qaxis(double ax, double ay, double az, double ang, double q[4]) {
+  q[0] = cos(ang / 2);
+  q[1] = ax * sin(ang / 2);
+  q[2] = ay * sin(ang / 2);
+  q[3] = az * sin(ang / 2);
+}
+
+/* is body b in the tree rooted at root */
+static int intree(const urModel* m, int b, int root) {
+  return b >= 0 && m->body[b].tree == root;
+}
+
+/* the drone's course and its left normal for a face direction */
+static void course(double face_deg, double c[3], double l[3]) {
+  double f = face_deg * DEG;
+  c[0] = -cos(f);
+  c[1] = sin(f);
+  c[2] = 0;
+  l[0] = -c[1];
+  l[1] = c[0];
+  l[2] = 0;
+}
+
+/* height of the top of an ellipsoid in the world */
+static double ellipsoid_top(const urModel* m, const urData* d, int g) {
+  const double* R = d->gxmat + 9 * g;
+  double s = 0;
+  for (int k = 0; k < 3; k++) {
+    double v = R[6 + k] * m->geom[g].size[k];
+    s += v * v;
+  }
+  return d->gxpos[3 * g + 2] + sqrt(s);
+}
+
+/* ---- set-up ---- */
+
+/* joint deflections of body b (spherical: rotation vector); returns the count */
+static int deflections(const urModel* m, const urData* d, int b, double x[3]) {
+  const urBody* bd = m->body + b;
+  const double* q = d->qpos + bd->qadr;
+  if (bd->jtype == urJNT_SPHERICAL) {
+    double vn = sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    double ang = 2 * atan2(vn, q[0]);
+    for (int k = 0; k < 3; k++) x[k] = vn > 1e-15 ? ang * q[1 + k] / vn : 2 * q[1 + k];
+    return 3;
+  }
+  if (bd->jtype == urJNT_REVOLUTE || bd->jtype == urJNT_PRISMATIC ||
+      bd->jtype == urJNT_UNIVERSAL) {
+    for (int k = 0; k < bd->nq; k++) x[k] = q[k];
+    return bd->nq;
+  }
+  return 0;
+}
+
+/* settle the person from the reference posture for t seconds; the largest joint deflection.
+   The stance has no stiff contact, so it settles with a step of at least SETTLE_DT. */
+#define SETTLE_DT 5e-5
+#define BALANCE_GAIN 0.5
+static double settle(const urModel* m0, urData* d, int drone, double t) {
+  double park[3] = {0, 0, 1e4}, qid[4] = {1, 0, 0, 0}, zero[3] = {0, 0, 0};
+  urModel mc = *m0, *m = &mc;
+  mc.opt.dt = fmax(m0->opt.dt, SETTLE_DT);
+  ur_data_reset(m, d);
+  ur_set_free(m, d, drone, park, qid, zero, zero);
+  long nstep = (long)ceil(t / m->opt.dt);
+  for (long k = 0; k < nstep; k++) {
+    if (ur_step(m, d) < 0) return INFINITY;
+  }
+  double dmax = 0, x[3];
+  for (int b = 0; b < m->nbody; b++) {
+    if (intree(m, b, drone)) continue;
+    int n = deflections(m, d, b, x);
+    for (int k = 0; k < n; k++) dmax = fmax(dmax, fabs(x[k] - m->body[b].rst[k].x0));
+  }
+  return dmax;
+}
+
+int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual) {
+  int drone = ur_name_body(m, "main");
+  urData* d = ur_data_new(m);
+  if (!d || drone < 0) {
+    ur_data_free(d);
+    return -1;
+  }
+
+  /* the person's posture under gravity with the springs' neutral positions shifted by the
+     deflections of the last settling: x0 <- x0 - (x - x0) */
+  double res = INFINITY;
+  for (int it = 0; it < iters; it++) {
+    res = settle(m, d, drone, settle_time);
+    if (!isfinite(res)) break;
+    for (int b = 0; b < m->nbody; b++) {
+      double x[3];
+      if (intree(m, b, drone)) continue;
+      int n = deflections(m, d, b, x);
+      for (int k = 0; k < n; k++) {
+        urRestraint* r = &m->body[b].rst[k];
+        if (r->active) r->x0 -= BALANCE_GAIN * (x[k] - r->x0);
+      }
+    }
+  }
+  if (residual) *residual = res;
+  ur_data_free(d);
+  return isfinite(res) ? 0 : -1;
+}
+
+int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time) {
+  memset(s, 0, sizeof *s);
+  s->m = m;
+
+  /* roles by name */
+  s->drone = ur_name_body(m, "main");
+  s->head_geom = ur_name_geom(m, "head_cranium");
+  s->s_head_acc = ur_name_sensor(m, "head_acc");
+  s->s_neck = ur_name_sensor(m, "neck_load");
+  s->s_chest = ur_name_sensor(m, "chest_defl");
+  s->s_abd = ur_name_sensor(m, "abd_defl");
+  int s_head_pos = ur_name_sensor(m, "head_pos");
+  if (s->drone < 0 || m->body[s->drone].jtype != urJNT_FREE) {
+    snprintf(s->err, sizeof s->err, "the model needs a free body 'main' (the drone)");
+    return -1;
+  }
+  if (s->head_geom < 0 || s->s_head_acc < 0 || s->s_neck < 0 || s_head_pos < 0) {
+    snprintf(s->err, sizeof s->err, "the model needs ellipsoid head_cranium and sensors head_acc, "
+             "neck_load, head_pos");
+    return -1;
+  }
+
+  /* pairs that involve the drone */
+  s->pair_drone = malloc((m->npair + 1) * sizeof(int));
+  for (int i = 0; i < m->npair; i++) {
+    int b1 = m->geom[m->pair[i].geom1].body;
+    int b2 = m->pair[i].geom2 >= 0 ? m->geom[m->pair[i].geom2].body : -1;
+    if (intree(m, b1, s->drone) != intree(m, b2, s->drone)) s->pair_drone[s->npair_drone++] = i;
+  }
+
+  /* R_max: farthest surface point of the drone's ellipsoids from its centre of mass */
+  urData* d = ur_data_new(m);
+  if (!d) {
+    snprintf(s->err, sizeof s->err, "out of memory");
+    return -1;
+  }
+  ur_kinematics(m, d);
+  const double* cm = d->xcom + 3 * s->drone;
+  for (int g = 0; g < m->ngeom; g++) {
+    if (!intree(m, m->geom[g].body, s->drone)) continue;
+    double r = 0, *c = d->gxpos + 3 * g;
+    for (int k = 0; k < 3; k++) r += (c[k] - cm[k]) * (c[k] - cm[k]);
+    r = sqrt(r) + m->geom[g].rbound;
+    if (r > s->rmax) s->rmax = r;
+  }
+
+  /* settle the stance under gravity with the drone parked far above */
+  double park[3] = {0, 0, 1e4}, qid[4] = {1, 0, 0, 0}, zero[3] = {0, 0, 0};
+  if (!isfinite(settle(m, d, s->drone, settle_time))) {
+    snprintf(s->err, sizeof s->err, "the stance did not settle: %.120s", d->msg);
+    ur_data_free(d);
+    return -1;
+  }
+
+  /* stop every motion: the stance is a state of rest */
+  memset(d->qvel, 0, m->nv * sizeof(double));
+  ur_set_free(m, d, s->drone, park, qid, zero, zero);
+  d->time = 0;
+  ur_forward(m, d);
+  const double* sd = d->sensordata;
+  memcpy(s->head_cg, sd + m->sensor[s_head_pos].adr, 3 * sizeof(double));
+  s->head_top = ellipsoid_top(m, d, s->head_geom);
+  s->neck_preload = -sd[m->sensor[s->s_neck].adr + 2];
+  s->rest = d;
+  return 0;
+}
+
+void ur_impact_free(urImpactSetup* s) {
+  ur_data_free(s->rest);
+  free(s->pair_drone);
+  memset(s, 0, sizeof *s);
+}
+
+int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w) {
+  const urModel* m = s->m;
+  memset(w, 0, sizeof *w);
+  w->d = ur_data_new(m);
+  w->rows = (int)ceil(HIST_SECONDS_MARGIN * m->opt.tmax / m->opt.sample_dt) + 16;
+  if (!w->d || ur_data_history(m, w->d, NULL, w->rows)) return -1;
+  w->chan = malloc(sizeof(double) * w->rows * 8);
+  w->work = malloc(sizeof(double) * ur_injury_work_size(w->rows));
+  return w->chan && w->work ? 0 : -1;
+}
+
+void ur_impact_work_free(urImpactWork* w) {
+  ur_data_free(w->d);
+  free(w->chan);
+  free(w->work);
+  memset(w, 0, sizeof *w);
+}
+
+/* ---- placement at the moment tau ---- */
+
+void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar, double dperp,
+                     double pos[3], double quat[4], double vel[3]) {
+  double cr[3], lf[3];
+  course(c->face, cr, lf);
+
+  /* centre R_max above the head top, offset from the head CG along and across the course */
+  for (int k = 0; k < 2; k++) pos[k] = s->head_cg[k] + dpar * cr[k] + dperp * lf[k];
+  pos[2] = s->head_top + s->rmax;
+
+  /* velocity along the course, descending at psi */
+  double psi = c->angle * DEG;
+  for (int k = 0; k < 3; k++) vel[k] = c->speed * (cos(psi) * cr[k]);
+  vel[2] = -c->speed * sin(psi);
+
+  /* attitude: along axis on the course, then yaw, pitch, roll in the drone frame */
+  double qc[4], qy[4], qp[4], qr[4], t[4], u[4];
+  qaxis(0, 0, 1, atan2(cr[1], cr[0]), qc);
+  qaxis(0, 0, 1, c->yaw * DEG, qy);
+  qaxis(0, 1, 0, c->pitch * DEG, qp);
+  qaxis(1, 0, 0, c->roll * DEG, qr);
+  qmul(qc, qy, t);
+  qmul(t, qp, u);
+  qmul(u, qr, quat);
+}
+
+/* entry and exit times of a point moving as p + v t through a sphere (centre q, radius r);
+   0 if the line misses */
+static int sphere_cross(const double p[3], const double v[3], const double q[3], double r,
+                        double* t0, double* t1) {
+  double w[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+  double a = dot3(v, v), b = 2 * dot3(w, v), cc = dot3(w, w) - r * r;
+  double disc = b * b - 4 * a * cc;
+  if (a <= 0 || disc < 0) return 0;
+  *t0 = (-b - sqrt(disc)) / (2 * a);
+  *t1 = (-b + sqrt(disc)) / (2 * a);
+  return *t1 >= 0;
+}
+
+/* latest time at which a drone sphere can still touch a person's sphere (-1: never) */
+static double exit_time(const urImpactSetup* s, const urData* d, const double vel[3]) {
+  const urModel* m = s->m;
+  double texit = -1;
+  for (int k = 0; k < s->npair_drone; k++) {
+    const urPair* pr = m->pair + s->pair_drone[k];
+    int ga = pr->geom1, gb = pr->geom2;
+    if (gb < 0) continue;
+    if (!intree(m, m->geom[ga].body, s->drone)) {
+      int t = ga;
+      ga = gb;
+      gb = t;
+    }
+    double t0, t1;
+    if (sphere_cross(d->gxpos + 3 * ga, vel, d->gxpos + 3 * gb,
+                     m->geom[ga].rbound + m->geom[gb].rbound, &t0, &t1)) {
+      if (t1 > texit) texit = t1;
+    }
+  }
+  for (int i = 0; i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    for (int t = 0; t < b->ntarget; t++) {
+      double t0, t1;
+      if (sphere_cross(d->gxpos + 3 * b->geom, vel, d->gxpos + 3 * b->target[t],
+                       m->geom[b->geom].rbound + m->geom[b->target[t]].rbound, &t0, &t1)) {
+        if (t1 > texit) texit = t1;
+      }
+    }
+  }
+  return texit;
+}
+
+int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double dpar,
+                          double dperp) {
+  /* place a copy of the rest pose's kinematics: only the drone moves */
+  const urModel* m = s->m;
+  double pos[3], quat[4], vel[3];
+  ur_impact_start(s, c, dpar, dperp, pos, quat, vel);
+  urData* d = s->rest;
+  const double* R = d->xmat + 9 * s->drone;
+  double qm[9], cur[3];
+
+  /* pose of the drone's ellipsoids at tau, from the rest pose by a rigid motion */
+  double qn = sqrt(quat[0] * quat[0] + quat[1] * quat[1] + quat[2] * quat[2] + quat[3] * quat[3]);
+  double w = quat[0] / qn, x = quat[1] / qn, y = quat[2] / qn, z = quat[3] / qn;
+  qm[0] = 1 - 2 * (y * y + z * z);
+  qm[1] = 2 * (x * y - w * z);
+  qm[2] = 2 * (x * z + w * y);
+  qm[3] = 2 * (x * y + w * z);
+  qm[4] = 1 - 2 * (x * x + z * z);
+  qm[5] = 2 * (y * z - w * x);
+  qm[6] = 2 * (x * z - w * y);
+  qm[7] = 2 * (y * z + w * x);
+  qm[8] = 1 - 2 * (x * x + y * y);
+  memcpy(cur, d->xcom + 3 * s->drone, sizeof cur);
+
+  /* any drone sphere whose straight path crosses a person's sphere of a pair or bag target */
+  for (int g = 0; g < m->ngeom; g++) {
+    if (!intree(m, m->geom[g].body, s->drone)) continue;
+    double rel[3], loc[3], p[3];
+    for (int k = 0; k < 3; k++) rel[k] = d->gxpos[3 * g + k] - cur[k];
+    for (int k = 0; k < 3; k++) loc[k] = R[k] * rel[0] + R[3 + k] * rel[1] + R[6 + k] * rel[2];
+    for (int k = 0; k < 3; k++) {
+      p[k] = pos[k] + qm[3 * k] * loc[0] + qm[3 * k + 1] * loc[1] + qm[3 * k + 2] * loc[2];
+    }
+    for (int h = 0; h < m->ngeom; h++) {
+      if (intree(m, m->geom[h].body, s->drone)) continue;
+      double t0, t1;
+      if (sphere_cross(p, vel, d->gxpos + 3 * h, m->geom[g].rbound + m->geom[h].rbound, &t0,
+                       &t1)) {
+        /* only surfaces the drone can act on: ground-only geoms (feet) are far below anyway */
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+/* ---- the run ---- */
+
+int ur_impact_channel(const urImpactSetup* s, const urImpactWork* w, int sensor, int comp,
+                      double* out) {
+  const urModel* m = s->m;
+  const urData* d = w->d;
+  if (sensor < 0 || comp < 0 || comp >= m->sensor[sensor].dim) return -1;
+  int stride = 1 + m->nsensordata, col = 1 + m->sensor[sensor].adr + comp;
+  for (int i = 0; i < d->nhist; i++) out[i] = d->hist[(size_t)i * stride + col];
+  return d->nhist;
+}
+
+int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
+                  const urInjuryParams* ip, double dpar, double dperp, urImpactResult* r) {
+  const urModel* m = s->m;
+  urData* d = w->d;
+  memset(r, 0, sizeof *r);
+  r->t_first = -1;
+
+  /* from the settled stance, the drone placed at tau and jumped to its first possible contact */
+  double pos[3], quat[4], vel[3];
+  ur_impact_start(s, c, dpar, dperp, pos, quat, vel);
+  ur_data_copy(m, d, s->rest);
+  ur_run_start(m, d, s->drone, pos, quat, vel);
+  double texit = exit_time(s, d, vel);
+
+  /* step until the run ends, or the drone has passed the person without touching */
+  while (d->status == urSTAT_OK) {
+    if (ur_step(m, d) < 0) break;
+    if (d->t_first < 0 && d->time > texit + 2 * m->opt.dt) break;
+    if (d->nhist >= w->rows - 1) break;
+  }
+  r->status = d->status;
+  if (d->status < 0) {
+    snprintf(r->reason, sizeof r->reason, "%s", d->msg[0] ? d->msg : ur_status_str(d->status));
+    return -1;
+  }
+  r->t_first = d->t_first;
+  r->contact = d->t_first >= 0;
+  if (!r->contact || d->nhist < 2) return 0;
+
+  /* channels: time, head acceleration, neck Fz and My (SAE signs), deflections */
+  int n = d->nhist;
+  double *t = w->chan, *ax = t + n, *ay = ax + n, *az = ay + n, *fz = az + n, *my = fz + n;
+  double *fx = my + n, *dc = fx + n;
+  int stride = 1 + m->nsensordata;
+  for (int i = 0; i < n; i++) t[i] = d->hist[(size_t)i * stride];
+  ur_impact_channel(s, w, s->s_head_acc, 0, ax);
+  ur_impact_channel(s, w, s->s_head_acc, 1, ay);
+  ur_impact_channel(s, w, s->s_head_acc, 2, az);
+  ur_impact_channel(s, w, s->s_neck, 2, fz);
+  ur_impact_channel(s, w, s->s_neck, 4, my);
+  ur_impact_channel(s, w, s->s_neck, 0, fx);
+  for (int i = 0; i < n; i++) {
+    fz[i] = -fz[i];                /* tension: the neck pulls the head down */
+    my[i] = -my[i];                /* flexion: the neck resists chin-down rotation */
+  }
+
+  urInjuryInput in = {n, t, {ax, ay, az}, fz, my, fx, NULL, NULL};
+  double* de = dc + n;
+  double* da = NULL;
+  if (s->s_chest >= 0) {
+    ur_impact_channel(s, w, s->s_chest, 0, dc);
+    for (int i = 0; i < n; i++) dc[i] = -dc[i];   /* plate pushed back: compression > 0 */
+    in.thorax_d = dc;
+  }
+  if (s->s_abd >= 0) {
+    da = de;
+    ur_impact_channel(s, w, s->s_abd, 0, da);
+    for (int i = 0; i < n; i++) da[i] = -da[i];
+    in.abdomen_d = da;
+  }
+  int rc = ur_injury_eval(&in, ip, w->work, &r->inj);
+  if (rc) {
+    snprintf(r->reason, sizeof r->reason, "injury evaluation failed (%d)", rc);
+    r->status = urSTAT_BADARG;
+    return -1;
+  }
+  r->p = r->inj.p_total;
+  return 0;
+}

@@ -1,0 +1,180 @@
+/* test_engine_contact.c: contact in the full engine against independent answers: Hertz
+ * sphere-on-plane impact (peak penetration, contact time, restitution), momentum in a two-body
+ * oblique collision with friction, sliding-to-rolling transition under Coulomb friction. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include <cmocka.h>
+#include "uasrisk/engine.h"
+
+// scalp on a flat (Table B1 of the paper)
+static const double E1 = 2.23e7, NU1 = 0.29, E2 = 5.48e10, NU2 = 0.34, R = 0.0875;
+
+//---------------------------------- Hertz impact --------------------------------------------------
+
+static void hertz_sphere_plane(urIntegrator integ) {
+  urModel* m = ur_model_new();
+  double mass = 4.5, v = 3.0, Ic = 0.4*mass*R*R;
+  double I[6] = {Ic, Ic, Ic, 0, 0, 0}, ax[3] = {R, R, R};
+  int b = ur_model_add_body(m, "head", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, b, mass, NULL, I);
+  int g = ur_model_add_ellipsoid(m, "skull", b, NULL, NULL, ax);
+  urLaw law = {0};
+  ur_law_hertz(&law, E1, NU1, R, E2, NU2, 0, 0, 0, 0);
+  int p = ur_model_add_pair(m, "skull_ground", g, -1, &law);
+  ur_model_add_sensor(m, "contact", urSENS_CONTACT, p, 0, NULL, NULL);
+  ur_model_add_sensor(m, "vel", urSENS_BODYVEL, b, 0, NULL, NULL);
+  m->opt.gravity[2] = 0;
+  m->opt.sample_dt = m->opt.dt;
+  m->opt.t_quiet = 0.002;
+  m->opt.integrator = integ;
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+  assert_int_equal(ur_data_history(m, d, NULL, 5000), 0);
+
+  // fall from 1 m: the jump must bring it just above the ground
+  double pos[3] = {0, 0, 1.0}, vel[3] = {0, 0, -v};
+  int st = ur_run_impact(m, d, b, pos, NULL, vel);
+  assert_int_equal(st, urSTAT_SEPARATED);
+  print_message("hertz: jumped %.6f s (exact %.6f s), %ld steps\n", d->t_jump,
+                (1.0 - R - m->opt.jump_margin)/v, d->nstep);
+  assert_true(fabs(d->t_jump - (1.0 - R - m->opt.jump_margin)/v) < 1e-12);
+
+  // independent answer
+  double es = 1/((1 - NU1*NU1)/E1 + (1 - NU2*NU2)/E2);
+  double K = 4.0/3.0*es*sqrt(R);
+  double dmax = pow(5*mass*v*v/(4*K), 0.4), tc = 2.94*dmax/v;
+
+  // measured: peak depth, contact duration from the 1e5 Hz history, rebound speed
+  int n = 0;
+  for (int i = 0; i < d->nhist; i++) {
+    n += d->hist[i*(1 + m->nsensordata) + 1] > 0;
+  }
+  double tcm = n*m->opt.dt, dm = d->peakmax[1], vr = d->qvel[2];
+  print_message("hertz (%s): dmax %.5f mm (exact %.5f, err %.2e), tc %.4f ms (2.94 dmax/v %.4f, "
+                "err %.2e), rebound %.4f m/s\n", integ == urINT_RK4 ? "RK4" : "Euler", 1e3*dm, 1e3*dmax, fabs(dm - dmax)/dmax,
+                1e3*tcm, 1e3*tc, fabs(tcm - tc)/tc, vr);
+  assert_true(fabs(dm - dmax)/dmax < 0.01);
+  assert_true(fabs(tcm - tc)/tc < 0.02);
+  assert_true(fabs(vr - v)/v < 0.01);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+static void test_hertz_sphere_plane(void** state) {
+  hertz_sphere_plane(urINT_EULER);
+  hertz_sphere_plane(urINT_RK4);
+}
+
+//---------------------------------- two-body momentum --------------------------------------------
+
+static void test_two_body_momentum(void** state) {
+  urModel* m = ur_model_new();
+  double IA[6] = {0.02, 0.03, 0.04, 0.001, 0, 0}, IB[6] = {0.05, 0.04, 0.03, 0, 0.002, 0};
+  double cA[3] = {0.01, 0.02, -0.01}, cB[3] = {-0.02, 0.0, 0.03};
+  double qa[4] = {0.9, 0.2, 0.1, -0.3}, qb[4] = {0.7, -0.3, 0.5, 0.2};
+  int a = ur_model_add_body(m, "a", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, a, 2.0, cA, IA);
+  int b = ur_model_add_body(m, "b", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, b, 5.0, cB, IB);
+  int ga = ur_model_add_ellipsoid(m, "ea", a, (double[3]){0.01, 0, 0}, qa,
+                                  (double[3]){0.06, 0.09, 0.12});
+  int gb = ur_model_add_ellipsoid(m, "eb", b, NULL, qb, (double[3]){0.15, 0.1, 0.08});
+  urLaw law = {0};
+  ur_law_hertz(&law, E1, NU1, 0.1, E1, NU1, 0.1, 0, 0, 0);
+  law.mu = 0.3;
+  law.v_eps = 1e-3;
+  law.damping = 200;
+  ur_model_add_pair(m, "ab", ga, gb, &law);
+  m->opt.gravity[2] = 0;
+  m->opt.t_quiet = 0.005;
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+
+  // B at rest (spinning), A thrown at it obliquely
+  double p0[3], L0[3], p1[3], L1[3];
+  ur_set_free(m, d, b, (double[3]){0, 0, 0}, NULL, NULL, (double[3]){0, 3, 1});
+  double vel[3] = {4, 1.5, -2};
+  assert_int_equal(ur_run_start(m, d, a, (double[3]){-0.8, -0.3, 0.4}, NULL, vel), 0);
+  ur_forward(m, d);
+  ur_momentum(m, d, p0, L0);
+  double vb0 = d->qvel[6];
+  int st = ur_run(m, d);
+  ur_forward(m, d);
+  ur_momentum(m, d, p1, L1);
+  double dp = 0, np = 0, dl = 0, nl = 0;
+  for (int k = 0; k < 3; k++) {
+    dp += (p1[k] - p0[k])*(p1[k] - p0[k]);
+    np += p0[k]*p0[k];
+    dl += (L1[k] - L0[k])*(L1[k] - L0[k]);
+    nl += L0[k]*L0[k];
+  }
+  dp = sqrt(dp/np);
+  dl = sqrt(dl/nl);
+  print_message("two bodies: status %s, contact %.3f ms, B vx %.3f -> %.3f m/s, |dp|/|p| = "
+                "%.2e, |dL|/|L| = %.2e\n", ur_status_str(st),
+                1e3*(d->t_last - d->t_first), vb0, d->qvel[6], dp, dl);
+  assert_int_equal(st, urSTAT_SEPARATED);
+  assert_true(fabs(d->qvel[6] - vb0) > 0.5);
+  assert_true(dp < 1e-9);
+  assert_true(dl < 1e-4);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+//---------------------------------- friction ------------------------------------------------------
+
+// a sliding solid sphere starts rolling at 5/7 of its initial speed; with v_eps = 1e-8 the
+// regularised friction is far too stiff for the explicit step (mu fn dt / (m_t v_eps) ~ 1e3)
+// unless the engine's stability floor acts
+static void slide_to_roll(double v_eps) {
+  urModel* m = ur_model_new();
+  double mass = 1.0, r = 0.05, Ic = 0.4*mass*r*r, v0 = 2.0, mu = 0.4;
+  double I[6] = {Ic, Ic, Ic, 0, 0, 0};
+  int b = ur_model_add_body(m, "ball", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, b, mass, NULL, I);
+  int g = ur_model_add_ellipsoid(m, "ball", b, NULL, NULL, (double[3]){r, r, r});
+  urLaw law = {0};
+  ur_law_hertz(&law, 1e8, 0.3, r, 2e11, 0.3, 0, 0, 0, 0);
+  law.damping = 300;
+  law.mu = mu;
+  law.v_eps = v_eps;
+  ur_model_add_pair(m, "ball_ground", g, -1, &law);
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+
+  // start at the static penetration, sliding without spin
+  double K = 4.0/3.0/((1 - 0.09)/1e8 + (1 - 0.09)/2e11)*sqrt(r);
+  double ds = pow(mass*9.81/K, 2.0/3.0);
+  ur_set_free(m, d, b, (double[3]){0, 0, r - ds}, NULL, (double[3]){v0, 0, 0}, NULL);
+  double ts = 2*v0/(7*mu*9.81);
+  for (int i = 0; i < (int)(1.5*ts/m->opt.dt); i++) {
+    assert_int_equal(ur_step(m, d), urSTAT_OK);
+  }
+  double vx = d->qvel[0], wy = d->qvel[4];
+  print_message("slide-to-roll (v_eps %.0e): v %.5f m/s (exact 5/7 v0 = %.5f), omega r %.5f, "
+                "z %.6f m\n", v_eps, vx, 5*v0/7, wy*r, d->qpos[2]);
+  assert_true(fabs(vx - 5*v0/7)/(5*v0/7) < 0.01);
+  assert_true(fabs(wy*r - vx)/vx < 0.01);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+static void test_slide_to_roll(void** state) {
+  slide_to_roll(1e-4);
+  slide_to_roll(1e-8);
+}
+
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_hertz_sphere_plane),
+    cmocka_unit_test(test_two_body_momentum),
+    cmocka_unit_test(test_slide_to_roll),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

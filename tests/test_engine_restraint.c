@@ -1,0 +1,153 @@
+/* test_engine_restraint.c: joint restraints against direct evaluation: tabulated curve with
+ * odd extension, linear part, damping, end stops, hysteresis (unloading curve scaled through the
+ * largest deflection), and energy conservation of a spherical joint with a linear restraint at
+ * large rotations (exact rotation-vector torque map). */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include <cmocka.h>
+#include "uasrisk/engine.h"
+
+// independent piecewise-linear interpolation (linear extrapolation)
+static double interp(const double* x, const double* y, int n, double v) {
+  int i = 0;
+  while (i < n - 2 && v > x[i+1]) {
+    i++;
+  }
+  return y[i] + (y[i+1] - y[i])*(v - x[i])/(x[i+1] - x[i]);
+}
+
+
+static const double LX[4] = {0, 0.1, 0.3, 0.6}, LY[4] = {0, 20, 90, 400};
+static const double UX[3] = {0, 0.2, 0.6}, UY[3] = {0, 5, 100};
+
+// a massive hinge without gravity, with the restraint under test
+static urModel* hinge(int unload) {
+  urModel* m = ur_model_new();
+  double I[6] = {0.1, 0.1, 0.1, 0, 0, 0};
+  int b = ur_model_add_body(m, "arm", -1, urJNT_REVOLUTE, NULL, NULL);
+  ur_model_set_inertia(m, b, 1, NULL, I);
+  urRestraint r = {0};
+  r.k = 7;
+  r.c = 0.5;
+  r.lo = -0.5;
+  r.hi = 0.4;
+  r.kstop = 1000;
+  r.cstop = 3;
+  r.load.n = 4;
+  memcpy(r.load.x, LX, sizeof(LX));
+  memcpy(r.load.y, LY, sizeof(LY));
+  if (unload) {
+    r.unload.n = 3;
+    memcpy(r.unload.x, UX, sizeof(UX));
+    memcpy(r.unload.y, UY, sizeof(UY));
+  }
+  ur_model_set_restraint(m, b, 0, &r);
+  m->opt.gravity[2] = 0;
+  assert_int_equal(ur_model_compile(m), 0);
+  return m;
+}
+
+
+// restraint moment at q, qd from ur_forward (qfrc is minus the restraint force)
+static double moment(const urModel* m, urData* d, double q, double qd) {
+  d->qpos[0] = q;
+  d->qvel[0] = qd;
+  ur_forward(m, d);
+  return -d->qfrc[0];
+}
+
+
+static void test_curve_stops(void** state) {
+  urModel* m = hinge(0);
+  urData* d = ur_data_new(m);
+  double qs[7] = {0.05, 0.2, 0.35, 0.45, -0.15, -0.55, 0.7}, qd = 0.8, e = 0;
+  for (int i = 0; i < 7; i++) {
+    double q = qs[i];
+    double f = 7*q + (q >= 0 ? interp(LX, LY, 4, q) : -interp(LX, LY, 4, -q)) + 0.5*qd;
+    if (q > 0.4) {
+      f += 1000*(q - 0.4) + 3*qd;
+    } else if (q < -0.5) {
+      f += 1000*(q + 0.5) + 3*qd;
+    }
+    double g = moment(m, d, q, qd);
+    e = fmax(e, fabs(g - f));
+  }
+  print_message("restraint curve + damping + stops: max error %.1e N m\n", e);
+  assert_true(e < 1e-12);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+static void test_hysteresis(void** state) {
+  urModel* m = hinge(1);
+  urData* d = ur_data_new(m);
+
+  // load to 0.3 (accepted step), then unload to 0.2 and 0.1, reload beyond 0.3
+  d->qpos[0] = 0.3;
+  ur_step(m, d);
+  double lm = interp(LX, LY, 4, 0.3), um = interp(UX, UY, 3, 0.3);
+  double f1 = moment(m, d, 0.2, 0) - 7*0.2, f2 = moment(m, d, 0.1, 0) - 7*0.1;
+  double e1 = lm*interp(UX, UY, 3, 0.2)/um, e2 = lm*interp(UX, UY, 3, 0.1)/um;
+  double f3 = moment(m, d, 0.35, 0) - 7*0.35, e3 = interp(LX, LY, 4, 0.35);
+  double f4 = moment(m, d, -0.2, 0) + 7*0.2, e4 = -interp(LX, LY, 4, 0.2);
+  print_message("hysteresis: unload 0.2 %.4f (exact %.4f), 0.1 %.4f (%.4f), reload 0.35 %.3f "
+                "(%.3f), other side %.3f (%.3f)\n", f1, e1, f2, e2, f3, e3, f4, e4);
+  assert_true(fabs(f1 - e1) < 1e-12 && fabs(f2 - e2) < 1e-12);
+  assert_true(fabs(f3 - e3) < 1e-12 && fabs(f4 - e4) < 1e-12);
+  assert_true(f1 < interp(LX, LY, 4, 0.2) - 10);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+// spherical joint with a linear restraint: KE + k |theta|^2 / 2 conserved at large angles
+static void test_spherical_energy(void** state) {
+  urModel* m = ur_model_new();
+  double I[6] = {0.02, 0.03, 0.04, 0, 0, 0};
+  int b = ur_model_add_body(m, "head", -1, urJNT_SPHERICAL, NULL, NULL);
+  ur_model_set_inertia(m, b, 4.5, (double[3]){0.02, 0.01, 0.06}, I);
+  urRestraint r = {0};
+  double ks[3] = {2, 3, 1.5};                             // anisotropic: the torque map matters
+  for (int k = 0; k < 3; k++) {
+    r.k = ks[k];
+    ur_model_set_restraint(m, b, k, &r);
+  }
+  m->opt.gravity[2] = 0;
+  m->opt.integrator = urINT_RK4;
+  m->opt.dt = 1e-4;
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+  d->qvel[0] = 6;
+  d->qvel[1] = -4;
+  d->qvel[2] = 8;
+  ur_forward(m, d);
+  double e0 = ur_energy_kinetic(m, d) + ur_energy_potential(m, d), thmax = 0;
+  for (int i = 0; i < 10000; i++) {
+    ur_step(m, d);
+    double v = 2*acos(fmin(1, fabs(d->qpos[0])));
+    thmax = fmax(thmax, v);
+  }
+  ur_forward(m, d);
+  double e1 = ur_energy_kinetic(m, d) + ur_energy_potential(m, d);
+  print_message("spherical restraint: max angle %.2f rad, |dE|/E %.1e over 1 s\n", thmax,
+                fabs(e1 - e0)/e0);
+  assert_true(thmax > 1.0);
+  assert_true(fabs(e1 - e0)/e0 < 1e-8);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_curve_stops),
+    cmocka_unit_test(test_hysteresis),
+    cmocka_unit_test(test_spherical_energy),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

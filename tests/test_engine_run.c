@@ -1,0 +1,238 @@
+/* test_engine_run.c: runs on a drone-on-human scene: thread safety (two threads give results
+ * bitwise identical to sequential runs), failure reporting (non-finite and exploding states),
+ * free-flight jump, history sampling, builder errors and name look-up. */
+#include <math.h>
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+#include "uasrisk/engine.h"
+#include "test_engine_scene.h"
+
+#define ROWS 2000
+
+typedef struct {
+  const urModel* m;
+  urData* d;
+  double offset;                   /* horizontal offset of the drone, m */
+  double speed;                    /* descent speed, m/s */
+  int status;
+} job;
+
+
+static void* runjob(void* arg) {
+  job* j = arg;
+  double pos[3] = {j->offset, 0.3*j->offset, 2.2}, vel[3] = {0, 0, -j->speed};
+  ur_data_reset(j->m, j->d);
+  j->status = ur_run_impact(j->m, j->d, ur_name_body(j->m, "drone"), pos, NULL, vel);
+  return NULL;
+}
+
+
+// two different runs in two threads = the same runs one after the other, bit for bit
+static void test_threads_bitwise(void** state) {
+  urModel* m = scene_build(1);
+  assert_non_null(m);
+  urData* d[4];
+  static double buf[4][ROWS*64];
+  assert_true(1 + m->nsensordata <= 64);
+  for (int i = 0; i < 4; i++) {
+    d[i] = ur_data_new(m);
+    assert_int_equal(ur_data_history(m, d[i], buf[i], ROWS), 0);
+  }
+  job jobs[4] = {{m, d[0], 0.05, 7.5, 0}, {m, d[1], 0.12, 12.5, 0},
+                 {m, d[2], 0.05, 7.5, 0}, {m, d[3], 0.12, 12.5, 0}};
+
+  // sequential, then concurrent
+  runjob(jobs + 0);
+  runjob(jobs + 1);
+  pthread_t th[2];
+  pthread_create(th + 0, NULL, runjob, jobs + 2);
+  pthread_create(th + 1, NULL, runjob, jobs + 3);
+  pthread_join(th[0], NULL);
+  pthread_join(th[1], NULL);
+
+  // compare
+  int ns = m->nsensordata;
+  for (int i = 0; i < 2; i++) {
+    print_message("run %d: %s, %d rows, %ld steps, peak head acc z %.1f m/s^2, neck Fz %.0f N\n",
+                  i, ur_status_str(jobs[i].status), d[i]->nhist, d[i]->nstep, d[i]->peakmax[2],
+                  d[i]->peakmin[5]);
+    assert_true(jobs[i].status > 0);
+    assert_int_equal(jobs[i].status, jobs[i+2].status);
+    assert_int_equal(d[i]->nhist, d[i+2]->nhist);
+    assert_true(d[i]->nhist > 10);
+    assert_int_equal(memcmp(buf[i], buf[i+2], (size_t)d[i]->nhist*(1 + ns)*sizeof(double)), 0);
+    assert_int_equal(memcmp(d[i]->qpos, d[i+2]->qpos, (size_t)m->nq*sizeof(double)), 0);
+    assert_int_equal(memcmp(d[i]->peakmax, d[i+2]->peakmax, (size_t)ns*sizeof(double)), 0);
+  }
+
+  // the two runs differ (so the comparison is not vacuous)
+  assert_true(memcmp(d[0]->qpos, d[1]->qpos, (size_t)m->nq*sizeof(double)) != 0);
+  assert_true(d[0]->peakmax[2] != d[1]->peakmax[2]);
+  for (int i = 0; i < 4; i++) {
+    ur_data_free(d[i]);
+  }
+  ur_model_free(m);
+}
+
+
+// a symmetric impact (offset in the symmetry plane y = 0) stays symmetric: no lateral head
+// acceleration grows (stiff regularised friction at near-zero lateral slip must stay stable)
+static void test_symmetric_impact(void** state) {
+  urModel* m = scene_build(1);
+  urData* d = ur_data_new(m);
+  double pos[3] = {0.05, 0, 2.2}, vel[3] = {0, 0, -7.5};
+  int st = ur_run_impact(m, d, ur_name_body(m, "drone"), pos, NULL, vel);
+  double ay = fmax(fabs(d->peakmax[1]), fabs(d->peakmin[1]));
+  double ax = fmax(fabs(d->peakmax[0]), fabs(d->peakmin[0]));
+  double az = fmax(fabs(d->peakmax[2]), fabs(d->peakmin[2]));
+  print_message("symmetric impact: %s, peak |a| x %.1f y %.2e z %.1f m/s^2\n", ur_status_str(st),
+                ax, ay, az);
+  assert_true(st > 0);
+  assert_true(az > 100);
+  assert_true(ay < 1e-6*az);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+// a NaN in the state stops the run with a failure status and a reason
+static void test_nonfinite_fails(void** state) {
+  urModel* m = scene_build(0);
+  urData* d = ur_data_new(m);
+  assert_int_equal(ur_step(m, d), urSTAT_OK);
+  d->qvel[3] = NAN;
+  int st = ur_step(m, d);
+  print_message("non-finite: status %d (%s): %s\n", st, ur_status_str(st), d->msg);
+  assert_int_equal(st, urSTAT_NONFINITE);
+  assert_true(strlen(d->msg) > 0);
+
+  // sticky: further steps and runs do nothing
+  double t = d->time;
+  assert_int_equal(ur_step(m, d), urSTAT_NONFINITE);
+  assert_int_equal(ur_run(m, d), urSTAT_NONFINITE);
+  assert_true(d->time == t);
+
+  // a reset clears it
+  ur_data_reset(m, d);
+  assert_int_equal(d->status, urSTAT_OK);
+  assert_int_equal(ur_step(m, d), urSTAT_OK);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+// an unstable step (stiff restraint, large dt) is reported as a failed run, never a number
+static void test_explosion_fails(void** state) {
+  urModel* m = ur_model_new();
+  double I[6] = {0.01, 0.01, 0.01, 0, 0, 0};
+  int b = ur_model_add_body(m, "arm", -1, urJNT_REVOLUTE, NULL, NULL);
+  ur_model_set_inertia(m, b, 1, (double[3]){0.1, 0, 0}, I);
+  urRestraint r = {0};
+  r.k = 1e9;
+  ur_model_set_restraint(m, b, 0, &r);
+  m->opt.dt = 1e-3;
+  m->opt.tmax = 1;
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+  d->qpos[0] = 0.01;
+  int st = ur_run(m, d);
+  print_message("explosion: status %d (%s) after %ld steps: %s\n", st, ur_status_str(st),
+                d->nstep, d->msg);
+  assert_true(st < 0);
+  assert_true(d->nstep < 1000);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+// the jump stops the drone exactly jump_margin before the first bounding-sphere contact
+static void test_jump(void** state) {
+  urModel* m = scene_build(0);
+  urData* d = ur_data_new(m);
+  int dr = ur_name_body(m, "drone");
+  double pos[3] = {0.01, 0, 4.0}, vel[3] = {1, 0, -10};
+  assert_int_equal(ur_run_start(m, d, dr, pos, NULL, vel), urSTAT_OK);
+
+  // independent: smallest bounding-sphere gap between a drone ellipsoid and its pair partners
+  double gmin = INFINITY;
+  for (int i = 0; i < m->npair; i++) {
+    int a = m->pair[i].geom1, b = m->pair[i].geom2;
+    if (b < 0) {
+      continue;
+    }
+    double dx[3];
+    for (int k = 0; k < 3; k++) {
+      dx[k] = d->gxpos[3*a + k] - d->gxpos[3*b + k];
+    }
+    double gap = sqrt(dx[0]*dx[0] + dx[1]*dx[1] + dx[2]*dx[2]) - m->geom[a].rbound
+                 - m->geom[b].rbound;
+    gmin = fmin(gmin, gap);
+  }
+  print_message("jump: %.6f s, smallest gap after it %.3e m (margin %.0e), drone z %.4f\n",
+                d->t_jump, gmin, m->opt.jump_margin, d->qpos[m->body[dr].qadr + 2]);
+  assert_true(fabs(gmin - m->opt.jump_margin) < 1e-9);
+  assert_true(fabs(d->qpos[m->body[dr].qadr] - (0.01 + d->t_jump)) < 1e-12);
+  assert_true(d->time == d->t_jump);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+// histories at 10 kHz by default; caller and engine buffers; builder errors and names
+static void test_history_and_names(void** state) {
+  urModel* m = scene_build(1);
+  urData* d = ur_data_new(m);
+  assert_int_equal(ur_data_history(m, d, NULL, 100), 0);
+  for (int i = 0; i < 1000; i++) {
+    ur_step(m, d);
+  }
+  int w = 1 + m->nsensordata;
+  assert_int_equal(d->nhist, 100);
+  assert_true(fabs(d->hist[w] - 1e-4) < 1e-12);
+  assert_true(fabs(d->hist[99*w] - 99e-4) < 1e-12);
+
+  // names
+  assert_int_equal(ur_name_body(m, "head"), 4);
+  assert_int_equal(ur_name_joint(m, "head"), 4);
+  assert_true(ur_name_sensor(m, "upper_neck") >= 0);
+  assert_true(ur_name_pair(m, "motor3_head") >= 0);
+  assert_int_equal(ur_name_body(m, "nobody"), -1);
+  ur_data_free(d);
+  ur_model_free(m);
+
+  // builder errors
+  m = ur_model_new();
+  int b = ur_model_add_body(m, "a", -1, urJNT_FREE, NULL, NULL);
+  assert_int_equal(ur_model_add_body(m, "a", -1, urJNT_FREE, NULL, NULL), -1);
+  assert_true(strstr(m->err, "duplicate") != NULL);
+  assert_int_equal(ur_model_add_body(m, "b", 5, urJNT_FREE, NULL, NULL), -1);
+  assert_int_equal(ur_model_add_ellipsoid(m, "e", b, NULL, NULL, (double[3]){1, 0, 1}), -1);
+  assert_int_equal(ur_model_compile(m), -1);
+  assert_true(strstr(m->err, "mass") != NULL);
+  ur_model_set_inertia(m, b, 1, NULL, (double[6]){1, 1, 1, 0, 0, 0});
+  assert_true(ur_model_set_param(m, "hic_window", 0.015) >= 0);
+  assert_int_equal(ur_model_compile(m), 0);
+  assert_true(ur_model_param(m, "hic_window", 0) == 0.015);
+  assert_true(ur_model_param(m, "absent", -2) == -2);
+  assert_int_equal(ur_model_add_body(m, "c", -1, urJNT_FREE, NULL, NULL), -1);
+  ur_model_free(m);
+}
+
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_threads_bitwise),
+    cmocka_unit_test(test_symmetric_impact),
+    cmocka_unit_test(test_nonfinite_fails),
+    cmocka_unit_test(test_explosion_fails),
+    cmocka_unit_test(test_jump),
+    cmocka_unit_test(test_history_and_names),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}

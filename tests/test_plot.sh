@@ -1,0 +1,154 @@
+# test_plot.sh: plot through gnuplot: PNG and text files written complete, what is sent (a fake
+# gnuplot captures the script), no display, gnuplot missing, failing, killed or leaving early
+# (SIGPIPE), and the placeholders that are not wired yet
+. tests/lib.sh
+
+# uasrisk by absolute path, so that PATH can be changed
+U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+T6=../shared/paper/grids/table06_caseC_wind0.csv
+GRIDS=1; [ -r "$T6" ] || GRIDS=0
+if [ "$GRIDS" -eq 0 ]; then
+  # without the paper's files: a small table of our own (Q 0.0143)
+  T6=$TMP/small.csv
+  printf '# case C; wind 0 m/s\nalong,0.00,0.05,0.10\n0.10,0,2,0\n0.05,50,100,10\n' >"$T6"
+  printf '0.00,100,95,0\n-0.05,0,4,0\n' >>"$T6"
+  Q=0.0143
+else
+  Q=0.8469
+fi
+png_magic() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; }
+size() { wc -c <"$1" | tr -d ' '; }
+# the command failed with status 1 and one line of error holding $1
+fails_with() { [ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "$1"; }
+
+if command -v gnuplot >/dev/null 2>&1; then
+  # plot grid to a PNG: complete when the command returns
+  run -c "grid load $T6; set terminal png; set output $TMP/grid.png; plot grid"
+  check grid_png_status [ "$RC" -eq 0 ]
+  check grid_png_stderr_empty [ ! -s "$TMP/err" ]
+  check grid_png_magic png_magic "$TMP/grid.png"
+  check grid_png_size [ "$(size "$TMP/grid.png")" -gt 3000 ]
+
+  # plot pof to a PNG; the terminal follows the file name when not set
+  run -c "set output $TMP/pof.png; plot pof"
+  check pof_png_status [ "$RC" -eq 0 ]
+  check pof_png_magic png_magic "$TMP/pof.png"
+  check pof_png_size [ "$(size "$TMP/pof.png")" -gt 5000 ]
+
+  # the dumb terminal into text files: titles, labels and Q are there
+  run -c "grid load $T6; set terminal \"dumb size 100,40\"; set output $TMP/grid.txt; plot grid"
+  check grid_txt_status [ "$RC" -eq 0 ]
+  check grid_txt_q has "$TMP/grid.txt" "Q = $Q m^2"
+  check grid_txt_axes cond 'has "$TMP/grid.txt" "cross offset dperp (m)" &&
+    has "$TMP/grid.txt" "P{F|Delta} (%)"'
+  run -c "set terminal \"dumb size 120,50\"; set output $TMP/pof.txt; plot pof"
+  check pof_txt_panels cond 'has "$TMP/pof.txt" "HIC15 -> P_HIC" &&
+    has "$TMP/pof.txt" "Nij -> P_NI" && has "$TMP/pof.txt" "VC -> P_VC"'
+
+  # a text terminal without a file draws on standard output
+  run -c 'set terminal "dumb size 90,30"; plot pof'
+  check dumb_stdout cond '[ "$RC" -eq 0 ] && has "$TMP/out" "HIC15 -> P_HIC"'
+
+  # gnuplot's own refusals name the setting
+  run -c "set terminal nosuchterm; set output $TMP/x.png; plot pof"
+  check bad_terminal fails_with "set terminal nosuchterm: unknown or ambiguous terminal"
+  run -c "set terminal png; set output /nonexistent/dir/x.png; plot pof"
+  check bad_output fails_with "set output ./nonexistent/dir/x.png.: cannot open file"
+else
+  echo "note: gnuplot is not installed; the real-gnuplot checks are skipped"
+fi
+
+# refused before gnuplot starts
+run -c "set terminal png; plot pof"
+check file_terminal_needs_output fails_with "terminal .png. writes a file; use .set output FILE."
+run -c "set output $TMP/x.weird; plot pof"
+check unknown_extension cond '[ "$RC" -eq 1 ] && has "$TMP/err" "no terminal for output"'
+run -c 'plot grid'
+check grid_needs_grid cond '[ "$RC" -eq 1 ] && has "$TMP/err" "plot grid: no grid yet"'
+run -c 'plot bogus'
+check unknown_plot fails_with \
+  "plot: unknown plot .bogus.; accepted: pof, grid, history SIGNAL..., sweep"
+run -c 'plot history head_acc'
+check history_not_yet cond '[ "$RC" -eq 1 ] && has "$TMP/err" "plot history: no impact yet"'
+run -c 'plot sweep'
+check sweep_not_yet cond '[ "$RC" -eq 1 ] && has "$TMP/err" "plot sweep: no sweep yet"'
+
+# gnuplot missing: one clear line, status 1
+env PATH=/nonexistent "$U" -c "set terminal png; set output $TMP/m.png; plot pof" \
+  >"$TMP/out" 2>"$TMP/err"; RC=$?
+check missing_status [ "$RC" -eq 1 ]
+check missing_one_line [ "$(lines "$TMP/err")" -eq 1 ]
+check missing_message has "$TMP/err" \
+  "plot pof: gnuplot not found; install it (Debian: gnuplot-nox) or use export"
+env PATH=/nonexistent "$U" -c "grid load $T6; plot grid" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check missing_window cond '[ "$RC" -eq 1 ] && has "$TMP/err" "gnuplot not found"'
+
+# a fake gnuplot: records its arguments and script, and acts as FAKE_GP says
+mkdir -p "$TMP/bin"
+cat >"$TMP/bin/gnuplot" <<'EOF'
+#!/bin/sh
+echo "$@" >"$FAKE_DIR/args"
+case "$FAKE_GP" in
+  capture) cat >"$FAKE_DIR/script"
+           out=$(sed -n "s/^set output '\(.*\)'\$/\1/p" "$FAKE_DIR/script")
+           [ -n "$out" ] && echo fake >"$out"; exit 0 ;;
+  nowrite) cat >/dev/null; exit 0 ;;
+  fail) head -c 100 >/dev/null; echo '"/dev/stdin" line 7: fake failure' >&2; exit 1 ;;
+  kill) kill -9 $$ ;;
+  early) sleep 0.2; exit 3 ;;
+esac
+EOF
+chmod +x "$TMP/bin/gnuplot"
+fake() { mode=$1; shift; rm -f "$TMP/script" "$TMP/args"
+  env PATH="$TMP/bin:/usr/bin:/bin" FAKE_DIR="$TMP" FAKE_GP="$mode" DISPLAY= WAYLAND_DISPLAY= \
+    "$U" "$@" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
+
+# what plot grid sends: settings first, one datablock line per cell of the full plane
+fake capture -c "grid load $T6; set terminal png; set output $TMP/f.png; plot grid"
+check fake_status [ "$RC" -eq 0 ]
+check fake_terminal [ "$(sed -n 1p "$TMP/script")" = "set terminal png" ]
+check fake_output [ "$(sed -n 2p "$TMP/script")" = "set output '$TMP/f.png'" ]
+check fake_unset_output [ "$(tail -1 "$TMP/script")" = "unset output" ]
+check fake_no_persist_for_files [ "$(cat "$TMP/args")" = "/dev/stdin" ]
+rows=$(sed -n '/^\$D << EOD$/,/^EOD$/p' "$TMP/script" | grep -c '^-\{0,1\}[0-9]')
+if [ "$GRIDS" -eq 1 ]; then
+  check fake_cells [ "$rows" -eq $((29 * 31)) ]
+  # the cell (0.65, +-0.25) is 12.7 % on both sides; (0.70, 0) is 0
+  check fake_cell_right grep -q '^0.25 0.65 12.7$' "$TMP/script"
+  check fake_cell_left grep -q '^-0.25 0.65 12.7$' "$TMP/script"
+  check fake_cell_zero grep -q '^0 0.7 0$' "$TMP/script"
+else
+  check fake_cells [ "$rows" -eq 20 ]
+fi
+check fake_image has "$TMP/script" '^plot \$D using 1:2:3 with image'
+check fake_palette has "$TMP/script" "^set cbtics (0, 5, 30, 90, 100)"
+
+# no display and no file: gnuplot is not started
+fake capture -c 'plot pof'
+check no_display_status [ "$RC" -eq 1 ]
+check no_display_message has "$TMP/err" \
+  "^-c:1: plot: no display; use 'set terminal png' and 'set output FILE.png'$"
+check no_display_not_started [ ! -e "$TMP/args" ]
+
+# with a display, a window plot persists
+rm -f "$TMP/args"
+env PATH="$TMP/bin:/usr/bin:/bin" FAKE_DIR="$TMP" FAKE_GP=capture DISPLAY=:99 "$U" -c 'plot pof' \
+  >"$TMP/out" 2>"$TMP/err"; RC=$?
+check window_persist cond '[ "$RC" -eq 0 ] && [ "$(cat "$TMP/args")" = "-persist /dev/stdin" ]'
+check window_no_output cond '! grep -q "^set output" "$TMP/script"'
+
+# gnuplot failing, writing nothing, killed, or leaving before reading a large script
+fake fail -c "set terminal png; set output $TMP/f.png; plot pof"
+check fail_message fails_with "plot pof: gnuplot failed.*: fake failure"
+rm -f "$TMP/f.png"
+fake nowrite -c "set terminal png; set output $TMP/f.png; plot pof"
+check nowrite_message cond '[ "$RC" -eq 1 ] && has "$TMP/err" "gnuplot wrote nothing to"'
+fake kill -c "set terminal png; set output $TMP/f.png; plot pof"
+check killed_message cond '[ "$RC" -eq 1 ] && has "$TMP/err" "gnuplot was killed by signal 9"'
+awk 'BEGIN { print "dpar,dperp,p"; for (i = 0; i < 200; i++) for (j = -100; j <= 100; j++)
+       printf "%.2f,%.2f,%.3f\n", i * 0.05, j * 0.05, (i + j + 300) % 100 / 100 }' >"$TMP/big.csv"
+fake early -c "grid load $TMP/big.csv; set terminal png; set output $TMP/f.png; plot grid"
+check sigpipe_survived [ "$RC" -eq 1 ]
+check sigpipe_message has "$TMP/err" "plot grid: gnuplot failed (it stopped reading)"
+
+finish

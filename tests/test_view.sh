@@ -1,0 +1,180 @@
+# test_view.sh: the grid viewer as a person uses it, in tmux: colours, the cursor and the status
+# line, keys, the inspect panel, Ctrl-C, q back to the prompt with the state intact, a too small
+# window and resizing, NO_COLOR, scrolling; and grid show in colour on a terminal
+. tests/lib.sh
+
+U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+T6=../shared/paper/grids/table06_caseC_wind0.csv
+T8=../shared/paper/grids/table08_caseA_wind10.csv
+
+# without a terminal or a grid: one clear line
+run -c 'view'
+check no_grid cond '[ "$RC" -eq 1 ] &&
+  has "$TMP/err" "view: no grid yet; run .grid. or .grid load FILE."'
+printf 'along,0.00,0.05\n0.05,10,100\n0.00,50,0\n' >"$TMP/tiny.csv"
+run -c "grid load $TMP/tiny.csv; view"
+check needs_terminal cond '[ "$RC" -eq 1 ] &&
+  has "$TMP/err" "view: needs a terminal; use .grid show."'
+
+if ! command -v tmux >/dev/null 2>&1; then
+  echo "note: tmux is not installed; the terminal checks of the viewer are skipped"
+  finish
+fi
+if [ ! -r "$T6" ] || [ ! -r "$T8" ]; then
+  echo "note: the paper's grids (../shared/paper/grids) are absent; the viewer checks are skipped"
+  finish
+fi
+
+# a private tmux server, killed at the end
+SOCK="uasrisk-test-$$"
+TM() { tmux -L "$SOCK" -f /dev/null "$@"; }
+trap 'tmux -L "$SOCK" kill-server 2>/dev/null; rm -rf "$TMP"' EXIT
+ESC=$(printf '\033')
+COLOUR="$ESC\[([0-9;]*;)?(3[0-7]|4[0-7]|38;5;[0-9]+|48;5;[0-9]+|9[0-7]|10[0-7])(;[0-9;]*)?m"
+
+# start uasrisk in a session of the given size with extra environment
+start() { name=$1; w=$2; h=$3; shift 3
+  TM new-session -d -s "$name" -x "$w" -y "$h" -c "$PWD" \
+    "env -u NO_COLOR -u DISPLAY -u WAYLAND_DISPLAY HOME=$TMP $* $U"
+  TM set -t "$name" remain-on-exit on
+}
+# the screen (with -e: with escapes) into $TMP/screen
+grab() { TM capture-pane -p $2 -t "$1" >"$TMP/screen"; }
+# wait up to $3 seconds (5) until the screen of session $1 matches $2
+wait_for() { n=0; lim=$(( ${3:-5} * 10 ))
+  while [ "$n" -lt "$lim" ]; do
+    grab "$1"; grep -Eq -- "$2" "$TMP/screen" && return 0
+    sleep 0.1; n=$((n + 1))
+  done
+  echo "  (waited for '$2'; the screen was:)"; sed 's/^/  | /' "$TMP/screen"; return 1
+}
+# wait until $2 is no longer on the screen (the viewer has left)
+wait_gone() { n=0
+  while [ "$n" -lt 50 ]; do
+    grab "$1"; grep -Eq -- "$2" "$TMP/screen" || return 0
+    sleep 0.1; n=$((n + 1))
+  done
+  return 1
+}
+keys() { s=$1; shift; TM send-keys -t "$s" "$@"; }
+line() { s=$1; shift; TM send-keys -t "$s" -l "$*"; TM send-keys -t "$s" Enter; }
+coloured() { grab "$1" -e; grep -Eq "$COLOUR" "$TMP/screen"; }
+
+# ---- a 160x50 terminal ----
+start v1 160 50
+check prompt wait_for v1 'uasrisk\[A\]>'
+line v1 "grid load $T6"
+line v1 "grid show"
+check show_q wait_for v1 'Q = 0.8469 m\^2 over the full plane'
+check show_coloured coloured v1
+line v1 "view"
+check view_title wait_for v1 'case C, wind 0 m/s, face 0 deg.*Q = 0.8469 m\^2'
+check view_coloured coloured v1
+check view_legend wait_for v1 '0 / no contact +0-5 % +5-30 % +30-90 % +>=90 %'
+check view_start_centre wait_for v1 'dpar 0.00 m  dperp 0.00 m  P 100.0 %'
+check view_axes cond 'grep -q "^  dpar.* -0.05  0.00  0.05 " "$TMP/screen" &&
+  grep -q "^ -0.70 " "$TMP/screen"'
+keys v1 Right
+check right_moves wait_for v1 'dpar 0.00 m  dperp 0.05 m'
+keys v1 Up
+check up_moves wait_for v1 'dpar 0.05 m  dperp 0.05 m'
+keys v1 -N 12 Up
+keys v1 -N 4 Right
+check cell_value wait_for v1 'dpar 0.65 m  dperp 0.25 m  P 12.7 %'
+keys v1 j
+check vi_j wait_for v1 'dpar 0.60 m  dperp 0.25 m  P 100.0 %'
+keys v1 h
+check vi_h wait_for v1 'dpar 0.60 m  dperp 0.20 m  P 0.0 %  .* no contact'
+keys v1 End
+check end_last_row wait_for v1 'dpar -0.70 m  dperp 0.20 m'
+keys v1 Home
+check home_first_row wait_for v1 'dpar 0.70 m  dperp 0.20 m'
+keys v1 NPage
+check pgdn_moves wait_for v1 'dpar -0.(3|4|5|6|7)[05] m  dperp 0.20 m'
+keys v1 '$'
+check last_column wait_for v1 'dperp 0.75 m'
+keys v1 c
+check centre_key wait_for v1 'dpar 0.00 m  dperp 0.00 m'
+
+# Enter: the panel (stored values, or the impact when simulation is wired); any key closes it
+keys v1 Enter
+check panel_open wait_for v1 'impact simulation not available|head acceleration vs time' 60
+check panel_values wait_for v1 'HIC15 .*window .* ms'
+keys v1 Escape
+check panel_closed wait_for v1 'Enter inspect  p plot  q back'
+
+# Ctrl-C is a key here: the viewer stays
+keys v1 C-c
+check ctrl_c_kept wait_for v1 'Ctrl-C does not stop the viewer; q returns to the prompt'
+check ctrl_c_alive cond '[ "$(TM display -p -t v1 "#{pane_dead}")" = 0 ]'
+
+# q: back at the prompt, the state intact
+keys v1 q
+check q_leaves wait_gone v1 'Enter inspect  p plot  q back'
+line v1 "show case"
+check q_prompt wait_for v1 '^case +A$'
+line v1 "grid show"
+check q_grid_kept wait_for v1 'case C, wind 0 m/s, face 0 deg, .*: Q = 0.8469 m'
+# view again, then Esc leaves as well
+line v1 "view"
+check view_again wait_for v1 'Enter inspect  p plot  q back'
+keys v1 Escape
+check esc_leaves wait_gone v1 'Enter inspect  p plot  q back'
+line v1 "show wind"
+check esc_prompt wait_for v1 '^wind +0 m/s$'
+# a plot without a display fails with one message and the session goes on
+line v1 "plot pof"
+check plot_no_display wait_for v1 \
+  "error: plot: no display; use 'set terminal png' and 'set output FILE.png'"
+line v1 "show face"
+check after_plot wait_for v1 '^face +0 deg$'
+check alive_at_end cond '[ "$(TM display -p -t v1 "#{pane_dead}")" = 0 ]'
+
+# ---- too small, then resized ----
+start v2 30 10
+check small_prompt wait_for v2 'uasrisk'
+line v2 "grid load $T6"
+line v2 "view"
+check too_small wait_for v2 'need at least 60x12,'
+check too_small_have wait_for v2 'have 30x10'
+TM resize-window -t v2 -x 120 -y 40
+check resized wait_for v2 'Q = 0.8469 m\^2'
+check resized_status wait_for v2 'dpar 0.00 m  dperp 0.00 m'
+keys v2 q
+check small_leaves wait_gone v2 'dpar 0.00 m  dperp 0.00 m'
+line v2 "show case"
+check small_back wait_for v2 '^case +A$'
+
+# ---- NO_COLOR: no colour escapes, glyphs tell the bands ----
+start v3 160 50 NO_COLOR=1
+check nc_prompt wait_for v3 'uasrisk'
+line v3 "grid load $T6"
+line v3 "grid show"
+check nc_show wait_for v3 'Q = 0.8469 m\^2 over the full plane'
+check nc_show_plain cond '! coloured v3'
+line v3 "view"
+check nc_view wait_for v3 'Enter inspect'
+check nc_view_plain cond '! coloured v3'
+check nc_glyphs wait_for v3 '@100.0'
+check nc_legend wait_for v3 '  0 / no contact . 0-5 % : 5-30 % # 30-90 % @ >=90 %'
+keys v3 q
+
+# ---- scrolling: Table 8 (48 x 33 cells) in 100 x 30 ----
+start v4 100 30
+check sc_prompt wait_for v4 'uasrisk'
+line v4 "grid load $T8"
+line v4 "view"
+check sc_view wait_for v4 'case A, wind 10 m/s'
+keys v4 End
+check sc_end wait_for v4 'dpar -1.60 m'
+check sc_end_label wait_for v4 '^ -1.60'
+keys v4 Home
+check sc_home wait_for v4 '^  0.75'
+keys v4 '$'
+check sc_right wait_for v4 'dperp 0.80 m'
+check sc_right_label wait_for v4 ' 0.80 *$'
+keys v4 0
+check sc_left wait_for v4 ' -0.80 '
+keys v4 q
+
+finish
