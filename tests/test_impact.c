@@ -1,0 +1,106 @@
+/* test_impact.c: single impacts on the built-in models: stance, symmetry, no-contact offsets,
+ * time-step convergence and the zero-wind centre values of the paper's Tables 11-13 */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "../src/app/app.h"
+
+/* one context per test: the built-in models, a case, its conditions */
+static uraCtx* fresh(const char* casename) {
+  static uraCtx ctx;
+  if (ctx.npart) {
+    ura_last_free(&ctx);
+    ura_models_free(&ctx);
+  }
+  ura_init(&ctx);
+  ctx.out = fopen("/dev/null", "w");
+  assert_int_equal(ura_case_load(&ctx, casename), 0);
+  return &ctx;
+}
+
+static urImpactResult hit(uraCtx* c, double dpar, double dperp) {
+  urImpactCond cond;
+  urImpactResult r;
+  const urImpactSetup* s = ura_setup(c);
+  assert_non_null(s);
+  assert_int_equal(ura_impact_cond(c, &cond), 0);
+  if (!c->have_work) {
+    assert_int_equal(ur_impact_work_init(s, &c->work), 0);
+    c->have_work = 1;
+  }
+  assert_int_equal(ur_impact_run(s, &c->work, &cond, &c->st.injury, dpar, dperp, &r), 0);
+  return r;
+}
+
+/* the settled stance: head CG within 5 mm of 1.650 m, upper-neck preload = head weight (5 %) */
+static void stance(void** state) {
+  uraCtx* c = fresh("B");
+  const urImpactSetup* s = ura_setup(c);
+  assert_non_null(s);
+  assert_true(fabs(s->head_cg[2] - 1.650) < 0.005);
+  int head = ur_name_body(s->m, "head"), oc = ur_name_body(s->m, "oc");
+  double w = (s->m->body[head].mass + s->m->body[oc].mass) * 9.81;
+  assert_true(fabs(-s->neck_preload - w) < 0.05 * w);
+  assert_true(s->rmax > 0.6 && s->rmax < 0.7);
+}
+
+/* paper Tables 11-13 at zero wind, face 0: C >= 0.99, B in [0.40, 0.85], A in [0.02, 0.12] */
+static void centre_values(void** state) {
+  urImpactResult r = hit(fresh("C"), 0, 0);
+  assert_true(r.contact && r.p >= 0.99);
+  r = hit(fresh("B"), 0, 0);
+  assert_true(r.contact && r.p >= 0.40 && r.p <= 0.85);
+  r = hit(fresh("A"), 0, 0);
+  assert_true(r.contact && r.p >= 0.02 && r.p <= 0.12);
+}
+
+/* far from the person: no contact, p = 0 */
+static void no_contact(void** state) {
+  uraCtx* c = fresh("B");
+  urImpactResult r = hit(c, 0, 1.5);
+  assert_false(r.contact);
+  assert_true(r.p == 0);
+  urImpactCond cond;
+  ura_impact_cond(c, &cond);
+  assert_false(ur_impact_may_contact(ura_setup(c), &cond, 0, 1.5));
+  assert_true(ur_impact_may_contact(ura_setup(c), &cond, 0, 0));
+}
+
+/* face 0: mirror offsets agree to 1e-9 in p and HIC */
+static void mirror_symmetry(void** state) {
+  uraCtx* c = fresh("B");
+  urImpactResult a = hit(c, 0.2, 0.3), b = hit(c, 0.2, -0.3);
+  assert_true(a.contact && b.contact);
+  assert_true(fabs(a.p - b.p) <= 1e-9);
+  assert_true(fabs(a.inj.hic15.hic - b.inj.hic15.hic) <= 1e-9 * (1 + a.inj.hic15.hic));
+}
+
+/* halving dt changes HIC at (0,0) by < 1 % for A, B and C */
+static void dt_convergence(void** state) {
+  static const char* const cases[] = {"A", "B", "C"};
+  for (int i = 0; i < 3; i++) {
+    uraCtx* c = fresh(cases[i]);
+    double dt = c->model->opt.dt;
+    double h1 = hit(c, 0, 0).inj.hic15.hic;
+    char v[32];
+    snprintf(v, sizeof v, "%.17g", dt / 2);
+    assert_int_equal(ura_model_param_set(c, "dt", v, NULL, 1), 0);
+    double h2 = hit(c, 0, 0).inj.hic15.hic;
+    assert_true(h1 > 0 && fabs(h2 - h1) < 0.01 * h1);
+  }
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(stance),          cmocka_unit_test(centre_values),
+    cmocka_unit_test(no_contact),      cmocka_unit_test(mirror_symmetry),
+    cmocka_unit_test(dt_convergence),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
