@@ -5,34 +5,10 @@
 #include <string.h>
 
 #include "uasrisk/impact.h"
+#include "engine_internal.h"
 
 #define DEG (M_PI / 180.0)
 #define HIST_SECONDS_MARGIN 1.2    /* history rows for tmax with this margin */
-
-/* ---- small vector helpers ---- */
-
-static double dot3(const double a[3], const double b[3]) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/* quaternion product r = a b (w, x, y, z) */
-static void qmul(const double a[4], const double b[4], double r[4]) {
-  double w = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
-  double x = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
-  double y = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
-  double z = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
-  r[0] = w;
-  r[1] = x;
-  r[2] = y;
-  r[3] = z;
-}
-
-static void qaxis(double ax, double ay, double az, double ang, double q[4]) {
-  q[0] = cos(ang / 2);
-  q[1] = ax * sin(ang / 2);
-  q[2] = ay * sin(ang / 2);
-  q[3] = az * sin(ang / 2);
-}
 
 /* is body b in the tree rooted at root */
 static int intree(const urModel* m, int b, int root) {
@@ -68,9 +44,7 @@ static int deflections(const urModel* m, const urData* d, int b, double x[3]) {
   const urBody* bd = m->body + b;
   const double* q = d->qpos + bd->qadr;
   if (bd->jtype == urJNT_SPHERICAL) {
-    double vn = sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    double ang = 2 * atan2(vn, q[0]);
-    for (int k = 0; k < 3; k++) x[k] = vn > 1e-15 ? ang * q[1 + k] / vn : 2 * q[1 + k];
+    uru_quat2rotvec(x, q);
     return 3;
   }
   if (bd->jtype == urJNT_REVOLUTE || bd->jtype == urJNT_PRISMATIC ||
@@ -241,14 +215,15 @@ void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar,
   vel[2] = -c->speed * sin(psi);
 
   /* attitude: along axis on the course, then yaw, pitch, roll in the drone frame */
+  static const double ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0}, ez[3] = {0, 0, 1};
   double qc[4], qy[4], qp[4], qr[4], t[4], u[4];
-  qaxis(0, 0, 1, atan2(cr[1], cr[0]), qc);
-  qaxis(0, 0, 1, c->yaw * DEG, qy);
-  qaxis(0, 1, 0, c->pitch * DEG, qp);
-  qaxis(1, 0, 0, c->roll * DEG, qr);
-  qmul(qc, qy, t);
-  qmul(t, qp, u);
-  qmul(u, qr, quat);
+  uru_axisangle2quat(qc, ez, atan2(cr[1], cr[0]));
+  uru_axisangle2quat(qy, ez, c->yaw * DEG);
+  uru_axisangle2quat(qp, ey, c->pitch * DEG);
+  uru_axisangle2quat(qr, ex, c->roll * DEG);
+  uru_mulquat(t, qc, qy);
+  uru_mulquat(u, t, qp);
+  uru_mulquat(quat, u, qr);
 }
 
 /* entry and exit times of a point moving as p + v t through a sphere (centre q, radius r);
@@ -256,7 +231,7 @@ void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar,
 static int sphere_cross(const double p[3], const double v[3], const double q[3], double r,
                         double* t0, double* t1) {
   double w[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-  double a = dot3(v, v), b = 2 * dot3(w, v), cc = dot3(w, w) - r * r;
+  double a = uru_dot3(v, v), b = 2 * uru_dot3(w, v), cc = uru_dot3(w, w) - r * r;
   double disc = b * b - 4 * a * cc;
   if (a <= 0 || disc < 0) return 0;
   *t0 = (-b - sqrt(disc)) / (2 * a);
@@ -307,17 +282,7 @@ int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double 
   double qm[9], cur[3];
 
   /* pose of the drone's ellipsoids at tau, from the rest pose by a rigid motion */
-  double qn = sqrt(quat[0] * quat[0] + quat[1] * quat[1] + quat[2] * quat[2] + quat[3] * quat[3]);
-  double w = quat[0] / qn, x = quat[1] / qn, y = quat[2] / qn, z = quat[3] / qn;
-  qm[0] = 1 - 2 * (y * y + z * z);
-  qm[1] = 2 * (x * y - w * z);
-  qm[2] = 2 * (x * z + w * y);
-  qm[3] = 2 * (x * y + w * z);
-  qm[4] = 1 - 2 * (x * x + z * z);
-  qm[5] = 2 * (y * z - w * x);
-  qm[6] = 2 * (x * z - w * y);
-  qm[7] = 2 * (y * z + w * x);
-  qm[8] = 1 - 2 * (x * x + y * y);
+  uru_quat2mat(qm, quat);
   memcpy(cur, d->xcom + 3 * s->drone, sizeof cur);
 
   /* any drone sphere whose straight path crosses a person's sphere of a pair or bag target */
@@ -325,10 +290,9 @@ int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double 
     if (!intree(m, m->geom[g].body, s->drone)) continue;
     double rel[3], loc[3], p[3];
     for (int k = 0; k < 3; k++) rel[k] = d->gxpos[3 * g + k] - cur[k];
-    for (int k = 0; k < 3; k++) loc[k] = R[k] * rel[0] + R[3 + k] * rel[1] + R[6 + k] * rel[2];
-    for (int k = 0; k < 3; k++) {
-      p[k] = pos[k] + qm[3 * k] * loc[0] + qm[3 * k + 1] * loc[1] + qm[3 * k + 2] * loc[2];
-    }
+    uru_mulmat3tvec(loc, R, rel);
+    uru_mulmat3vec(p, qm, loc);
+    for (int k = 0; k < 3; k++) p[k] += pos[k];
     for (int h = 0; h < m->ngeom; h++) {
       if (intree(m, m->geom[h].body, s->drone)) continue;
       double t0, t1;
