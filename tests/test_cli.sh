@@ -90,6 +90,32 @@ check help_option cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^usage: uasrisk"'
 run -x
 check bad_option [ "$RC" -eq 2 ]
 
+# impacts (issue acceptance): case C p >= 0.99, B in [0.40, 0.85], A in [0.02, 0.12]; far: none
+run -c 'set format csv; case C; impact 0 0; case B; impact 0 0; case A; impact 0 0; impact 0 1.5'
+check impact_status [ "$RC" -eq 0 ]
+check impact_header has "$TMP/out" '^dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,p_vc,p$'
+grep '^0,' "$TMP/out" | cut -d, -f15 >"$TMP/p"
+check impact_values awk 'NR==1&&$1<0.99{exit 1} NR==2&&($1<0.40||$1>0.85){exit 1} NR==3&&($1<0.02||$1>0.12){exit 1} NR==4&&$1!=0{exit 1} END{exit NR!=4}' "$TMP/p"
+run -c 'impact 0.1 zz'
+check impact_bad_number cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "DPERP .zz. is not a number"'
+run -c 'set dt 0'
+check dt_zero_refused cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "set dt: refused"'
+
+# the model set: save, load back, and a malformed file is refused at its line, nothing changed
+run -c "model save $TMP/m.urm"
+check model_save cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^part " "$TMP/m.urm")" -eq 4 ]'
+run -c "model load $TMP/m.urm; model parts"
+check model_load_roundtrip cond '[ "$RC" -eq 0 ] && [ "$(grep -c "$TMP/m.urm" "$TMP/out")" -eq 4 ]'
+printf 'part extra\nparam a 1\n\nbody b parent=world joint=free pos=0,0,0 mass=-2 inertia=1,1,1\n' >"$TMP/bad.urm"
+run -c "model load $TMP/bad.urm"
+check model_bad_line cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "bad.urm:4: .*mass"'
+printf 'part ra3\nparam x 1\nbdy q\n' >"$TMP/bad2.urm"
+run -c "model load $TMP/bad2.urm; model parts"
+check model_bad_keyword cond '[ "$RC" -eq 1 ] && has "$TMP/err" "bad2.urm:3: unknown keyword"'
+printf 'model load %s\nmodel parts\n' "$TMP/bad2.urm" >"$TMP/in.txt"
+run_in "$TMP/in.txt" -i
+check model_unchanged cond 'has "$TMP/out" "^ra3  *built-in\$" && has "$TMP/err" "bad2.urm:3"'
+
 # every command listed by help is documented in the man page
 run -c help
 cmds=$(sed -n 's/^  \([a-z][a-z]*\).*/\1/p' "$TMP/out" | sort -u)

@@ -19,10 +19,13 @@ typedef struct {
   double value;
 } urOverride;
 
-/* one model text; file is the name used in messages ("FILE:LINE: ...") */
+/* one model text; file is the name used in messages ("FILE:LINE: ..."); line is the line of
+   the file where the text starts (0 or 1: the first line), so that a part of a file is reported
+   at its lines in the file */
 typedef struct {
   const char* text;
   const char* file;
+  int line;
 } urModelSource;
 
 /* one part of a text: bytes [text, text + len) of the text given to ur_model_split */

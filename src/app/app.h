@@ -52,6 +52,7 @@ typedef struct {
   char name[urNAMELEN];
   char* text;                      /* owned */
   char origin[256];                /* "built-in" or the file it came from */
+  int line;                        /* line of the origin where the part starts */
 } uraPart;
 
 /* the last grid with the conditions it was computed (or loaded) for */

@@ -68,6 +68,7 @@ static int parts_merge(uraCtx* c, const char* text, const char* file, const char
     free(np[at].text);
     np[at].text = strndup(sp[k].text, sp[k].len);
     snprintf(np[at].origin, sizeof np[at].origin, "%s", origin);
+    np[at].line = sp[k].line;
   }
   for (int i = 0; i < nn; i++) {
     if (!np[i].text) np[i].text = strdup(c->part[i].text);
@@ -81,6 +82,7 @@ static int parts_merge(uraCtx* c, const char* text, const char* file, const char
              np[i].name : np[i].origin);
     src[i].text = np[i].text;
     src[i].file = names[i];
+    src[i].line = np[i].line;
   }
   urOverride ov[uraMAXOV];
   for (int i = 0; i < c->st.nov; i++) {
@@ -118,6 +120,7 @@ const urModel* ura_model(uraCtx* c) {
   for (int i = 0; i < c->npart; i++) {
     src[i].text = c->part[i].text;
     src[i].file = !strcmp(c->part[i].origin, "built-in") ? c->part[i].name : c->part[i].origin;
+    src[i].line = c->part[i].line;
   }
   for (int i = 0; i < c->st.nov; i++) {
     ov[i].name = c->st.ov_name[i];

@@ -1731,7 +1731,7 @@ urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov
 
   /* lex every source, then check the overrides against the param lines */
   for (int i = 0; !rc && i < nsrc; i++) {
-    rc = url_lex(&p.lx, src[i].text, i, srcname(&p, i), p.msg, sizeof(p.msg));
+    rc = url_lex(&p.lx, src[i].text, i, srcname(&p, i), src[i].line, p.msg, sizeof(p.msg));
   }
   if (!rc) {
     rc = check_overrides(&p);
@@ -1780,7 +1780,7 @@ int ur_model_split(const char* text, const char* file, urModelPart* parts, int m
   if (err && errlen > 0) {
     err[0] = 0;
   }
-  int rc = url_lex(&lx, text, 0, file, msg, sizeof(msg));
+  int rc = url_lex(&lx, text, 0, file, 1, msg, sizeof(msg));
 
   /* check the part lines: one valid name each, no duplicates */
   for (int s = 0; !rc && s < lx.nstmt; s++) {

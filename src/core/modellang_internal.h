@@ -33,7 +33,8 @@ typedef struct {
 /* Append the statements of text: '#' comments removed, a line ending in '\' joined with the next,
    whitespace separates words except next to ',' (so long lists may be wrapped). Returns 0, or -1
    with "FILE:LINE: message" in err (FILE from file, "model" if NULL). */
-int url_lex(urlLex* lx, const char* text, int src, const char* file, char* err, size_t errlen);
+int url_lex(urlLex* lx, const char* text, int src, const char* file, int firstline, char* err,
+            size_t errlen);
 
 /* Release the lexer buffers (the struct itself is the caller's). */
 void url_free(urlLex* lx);

@@ -54,7 +54,8 @@ typedef struct {
 
 
 /* strip comments and join continued lines; -1 on error (message in err) */
-static int clean(Clean* cl, const char* text, const char* file, char* err, size_t errlen) {
+static int clean(Clean* cl, const char* text, const char* file, int firstline, char* err,
+                 size_t errlen) {
   size_t len = strlen(text);
   cl->n = 0;
   cl->c = malloc(len + 2);
@@ -67,7 +68,7 @@ static int clean(Clean* cl, const char* text, const char* file, char* err, size_
 
   /* one physical line at a time (after a UTF-8 byte order mark) */
   size_t a = len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3) ? 3 : 0;
-  int line = 1;
+  int line = firstline > 0 ? firstline : 1;
   while (a < len) {
     const char* nl = memchr(text + a, '\n', len - a);
     size_t e = nl ? (size_t)(nl - text) : len;
@@ -118,7 +119,8 @@ static int addword(urlLex* lx, const char* c, size_t n, int line) {
 }
 
 
-int url_lex(urlLex* lx, const char* text, int src, const char* file, char* err, size_t errlen) {
+int url_lex(urlLex* lx, const char* text, int src, const char* file, int firstline, char* err,
+            size_t errlen) {
   if (!file) {
     file = "model";
   }
@@ -127,7 +129,7 @@ int url_lex(urlLex* lx, const char* text, int src, const char* file, char* err, 
     return -1;
   }
   Clean cl = {0};
-  int rc = clean(&cl, text, file, err, errlen);
+  int rc = clean(&cl, text, file, firstline, err, errlen);
 
   /* words: runs of non-blanks; blanks next to ',' do not separate */
   char* w = rc ? NULL : malloc(cl.n + 1);
