@@ -36,6 +36,8 @@ typedef struct {
   double head_cg[3];               /* settled head CG, world, m */
   double head_top;                 /* settled height of the head top, m */
   double neck_preload;             /* settled upper-neck axial force, N (tension > 0) */
+  double window;                   /* a run ends this long after its first contact, s (model
+                                      parameter "window"; none: until the engine ends it) */
   urData* rest;                    /* the settled stance (drone parked far away) */
   char err[160];
 } urImpactSetup;

@@ -316,6 +316,47 @@ static double firsthit(const urModel* m, const urData* d, int gm, int gs, const 
 }
 
 
+// world ellipsoid of geom g from the current kinematics
+static void worldgeom(const urModel* m, const urData* d, int g, urEllipsoid* e) {
+  memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
+  memcpy(e->R, d->gxmat + 9*g, 9*sizeof(double));
+  memcpy(e->r, m->geom[g].size, 3*sizeof(double));
+}
+
+
+// smallest separation between the tree's ellipsoids and those they can touch (pairs and bag
+// targets, ground excluded); -INFINITY if some already overlap
+static double separation(const urModel* m, const urData* d, int root) {
+  double smin = INFINITY;
+  urEllipsoid a, b;
+  urGeomContact gc;
+  for (int i = 0; i < m->npair + m->nbag*urMAXBAGTGT; i++) {
+    int g1, g2;
+    if (i < m->npair) {
+      g1 = m->pair[i].geom1;
+      g2 = m->pair[i].geom2;
+    } else {
+      const urAirbag* bg = m->bag + (i - m->npair)/urMAXBAGTGT;
+      int t = (i - m->npair) % urMAXBAGTGT;
+      if (t >= bg->ntarget) {
+        continue;
+      }
+      g1 = bg->geom;
+      g2 = bg->target[t];
+    }
+    if (g2 < 0 || intree(m, g1, root) == intree(m, g2, root)) {
+      continue;
+    }
+    worldgeom(m, d, g1, &a);
+    worldgeom(m, d, g2, &b);
+    double u[3] = {0, 0, 0};
+    ur_collide_ellipsoids(&a, &b, u, &gc);
+    smin = fmin(smin, -gc.g);
+  }
+  return smin;
+}
+
+
 int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
                  const double quat[4], const double vel[3]) {
   // check
@@ -396,7 +437,23 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
     d->time = tmin;
     ur_kinematics(m, d);
   }
-  d->t_jump = isfinite(tmin) ? tmin : 0;
+  // conservative advancement on the exact distances: the tree moves rigidly at |vel| and the rest
+  // is at rest, so no separation shrinks faster than |vel|
+  double speed = uru_norm3(vel), t = d->time, tend = d->time + m->opt.tmax;
+  for (int it = 0; isfinite(tmin) && speed > 0 && it < 64 && t < tend; it++) {
+    double sep = separation(m, d, root);
+    if (!(sep > 2*m->opt.jump_margin) || !isfinite(sep)) {
+      break;
+    }
+    double dt = fmin((sep - m->opt.jump_margin)/speed, tend - t);
+    for (int k = 0; k < 3; k++) {
+      d->qpos[rb->qadr + k] += vel[k]*dt;
+    }
+    t += dt;
+    ur_kinematics(m, d);
+  }
+  d->time = t;
+  d->t_jump = isfinite(tmin) ? t : 0;
   return d->status;
 }
 

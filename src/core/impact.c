@@ -9,6 +9,7 @@
 
 #define DEG (M_PI / 180.0)
 #define HIST_SECONDS_MARGIN 1.2    /* history rows for tmax with this margin */
+#define NCHAN 9                    /* channel buffers of one run: t, a(3), fz, my, fx, chest, abd */
 
 /* is body b in the tree rooted at root */
 static int intree(const urModel* m, int b, int root) {
@@ -171,6 +172,7 @@ int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time) {
   s->head_top = ellipsoid_top(m, d, s->head_geom);
   s->neck_preload = -sd[m->sensor[s->s_neck].adr + 2];
   s->rest = d;
+  s->window = ur_model_param(m, "window", INFINITY);
   return 0;
 }
 
@@ -184,9 +186,12 @@ int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w) {
   const urModel* m = s->m;
   memset(w, 0, sizeof *w);
   w->d = ur_data_new(m);
-  w->rows = (int)ceil(HIST_SECONDS_MARGIN * m->opt.tmax / m->opt.sample_dt) + 16;
+
+  /* rows: the engine samples every max(1, floor(sample_dt/dt)) steps for tmax after the jump */
+  double every = fmax(1.0, floor(m->opt.sample_dt / m->opt.dt + 1e-9)) * m->opt.dt;
+  w->rows = (int)ceil(HIST_SECONDS_MARGIN * m->opt.tmax / every) + 16;
   if (!w->d || ur_data_history(m, w->d, NULL, w->rows)) return -1;
-  w->chan = malloc(sizeof(double) * w->rows * 8);
+  w->chan = malloc(sizeof(double) * w->rows * NCHAN);
   w->work = malloc(sizeof(double) * ur_injury_work_size(w->rows));
   return w->chan && w->work ? 0 : -1;
 }
@@ -330,13 +335,18 @@ int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c
   ur_impact_start(s, c, dpar, dperp, pos, quat, vel);
   ur_data_copy(m, d, s->rest);
   ur_run_start(m, d, s->drone, pos, quat, vel);
-  double texit = exit_time(s, d, vel);
+  double texit = d->time + exit_time(s, d, vel);   /* absolute time */
 
   /* step until the run ends, or the drone has passed the person without touching */
   while (d->status == urSTAT_OK) {
     if (ur_step(m, d) < 0) break;
     if (d->t_first < 0 && d->time > texit + 2 * m->opt.dt) break;
-    if (d->nhist >= w->rows - 1) break;
+    if (d->t_first >= 0 && d->time > d->t_first + s->window) break;
+    if (d->nhist >= w->rows - 1) {
+      snprintf(r->reason, sizeof r->reason, "history buffer full at t = %g s", d->time);
+      r->status = urSTAT_BADARG;
+      return -1;
+    }
   }
   r->status = d->status;
   if (d->status < 0) {
