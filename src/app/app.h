@@ -217,6 +217,8 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);
 int ura_impact_cond(uraCtx* c, urImpactCond* cond);
+int ura_last_trace(uraCtx* c, uraTrace* tr);     /* histories of the last impact; -1: none */
+int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr);
 
 /* interactive loop on GNU readline */
 int ura_repl(uraCtx* c);

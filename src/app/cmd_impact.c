@@ -110,3 +110,108 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
   free(names);
   return 0;
 }
+
+/* ---- the histories of the last impact as a trace (plot history, the viewer's inspection) ---- */
+
+/* derived signals first (what the injury criteria read), then every sensor channel */
+static const char* const trace_names[] = {"head_acc", "neck_fz", "neck_my", "neck_fx",
+                                          "chest_defl", "abd_defl"};
+static const char* const trace_units[] = {"m/s^2", "N", "N m", "N", "m", "m"};
+#define NDERIVED 6
+
+static struct {
+  double* t;
+  double* v;
+  char** names;
+  const char** units;
+  int nsig;
+} tr_store;
+
+static void trace_free(void) {
+  for (int k = NDERIVED; k < tr_store.nsig; k++) free(tr_store.names[k]);
+  free(tr_store.t);
+  free(tr_store.v);
+  free(tr_store.names);
+  free(tr_store.units);
+  memset(&tr_store, 0, sizeof tr_store);
+}
+
+int ura_last_trace(uraCtx* c, uraTrace* tr) {
+  if (!c->have_impact || !c->have_setup) return -1;
+  const urImpactSetup* s = &c->setup;
+  const urModel* m = s->m;
+  const urData* d = c->work.d;
+  int n = d->nhist, nsig = NDERIVED + m->nsensordata, stride = 1 + m->nsensordata;
+  trace_free();
+  tr_store.t = malloc(sizeof(double) * n);
+  tr_store.v = calloc((size_t)nsig * n, sizeof(double));
+  tr_store.names = calloc(nsig, sizeof(char*));
+  tr_store.units = calloc(nsig, sizeof(char*));
+  tr_store.nsig = nsig;
+  for (int k = 0; k < NDERIVED; k++) {
+    tr_store.names[k] = (char*)trace_names[k];
+    tr_store.units[k] = trace_units[k];
+  }
+
+  /* raw channels, then the derived ones in the injury criteria's signs */
+  for (int i = 0; i < n; i++) tr_store.t[i] = d->hist[(size_t)i * stride];
+  for (int j = 0; j < m->nsensordata; j++) {
+    char buf[80];
+    snprintf(buf, sizeof buf, "s%d", j);
+    for (int i = 0; i < m->nsensor; i++) {
+      const urSensor* sn = m->sensor + i;
+      if (j >= sn->adr && j < sn->adr + sn->dim) {
+        if (sn->dim == 1) snprintf(buf, sizeof buf, "%s", sn->name);
+        else snprintf(buf, sizeof buf, "%s_%d", sn->name, j - sn->adr);
+      }
+    }
+    tr_store.names[NDERIVED + j] = strdup(buf);
+    tr_store.units[NDERIVED + j] = "SI";
+    for (int i = 0; i < n; i++) {
+      tr_store.v[(size_t)(NDERIVED + j) * n + i] = d->hist[(size_t)i * stride + 1 + j];
+    }
+  }
+  int a = m->sensor[s->s_head_acc].adr, nk = m->sensor[s->s_neck].adr;
+  for (int i = 0; i < n; i++) {
+    const double* row = d->hist + (size_t)i * stride + 1;
+    tr_store.v[0 * (size_t)n + i] = sqrt(row[a] * row[a] + row[a + 1] * row[a + 1] +
+                                         row[a + 2] * row[a + 2]);
+    tr_store.v[1 * (size_t)n + i] = -row[nk + 2];
+    tr_store.v[2 * (size_t)n + i] = -row[nk + 4];
+    tr_store.v[3 * (size_t)n + i] = row[nk + 0];
+    if (s->s_chest >= 0) tr_store.v[4 * (size_t)n + i] = -row[m->sensor[s->s_chest].adr];
+    if (s->s_abd >= 0) tr_store.v[5 * (size_t)n + i] = -row[m->sensor[s->s_abd].adr];
+  }
+  tr->n = n;
+  tr->nsig = nsig;
+  tr->t = tr_store.t;
+  tr->v = tr_store.v;
+  tr->names = (const char* const*)tr_store.names;
+  tr->units = (const char* const*)tr_store.units;
+  return 0;
+}
+
+/* the viewer's Enter: run the cell's impact for the grid's conditions and give its trace */
+int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr) {
+  const urImpactSetup* s = ura_setup(c);
+  urImpactCond cond;
+  if (!s || ura_impact_cond(c, &cond)) return -1;
+  if (c->last.g && !isnan(c->last.speed)) {
+    cond.speed = c->last.speed;
+    cond.angle = c->last.angle;
+    cond.face = c->last.face;
+  }
+  if (!c->have_work) {
+    if (ur_impact_work_init(s, &c->work)) return ura_fail(c, "out of memory");
+    c->have_work = 1;
+  }
+  urImpactResult r;
+  if (ur_impact_run(s, &c->work, &cond, &c->st.injury, cell->dpar, cell->dperp, &r)) {
+    return ura_fail(c, "impact (%g, %g) failed: %s", cell->dpar, cell->dperp, r.reason);
+  }
+  c->have_impact = 1;
+  c->last_impact = r;
+  c->last_dpar = cell->dpar;
+  c->last_dperp = cell->dperp;
+  return ura_last_trace(c, tr);
+}

@@ -655,7 +655,9 @@ int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* n
 int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
   const char* what = argv[1];
   if (!strcmp(what, "history")) {
-    return ura_fail(c, "plot history: no impact yet");
+    uraTrace tr;
+    if (ura_last_trace(c, &tr)) return ura_fail(c, "plot history: no impact yet; run 'impact'");
+    return ura_plot_trace(c, &tr, argc - 2, (const char* const*)argv + 2);
   }
   if (argc > 2) return ura_fail(c, "plot %s: takes no arguments", what);
   if (!strcmp(what, "pof")) return ura_plot_pof(c, &c->st.injury);

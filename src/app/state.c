@@ -101,6 +101,7 @@ void ura_init(uraCtx* c) {
   ura_state_defaults(&c->st);
   c->out = stdout;
   c->msg = stderr;
+  c->inspect = ura_inspect_cell;
   if (ura_models_init(c) == 0) ura_case_load(c, "A");
 }
 
