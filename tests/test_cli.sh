@@ -116,6 +116,13 @@ printf 'model load %s\nmodel parts\n' "$TMP/bad2.urm" >"$TMP/in.txt"
 run_in "$TMP/in.txt" -i
 check model_unchanged cond 'has "$TMP/out" "^ra3  *built-in\$" && has "$TMP/err" "bad2.urm:3"'
 
+# save session recreates the state exactly
+run -c "case A1; set wind 6; set face 45; set speed 9.5; set bag_kappa 4; set hic_window 0.036; set winds 0,5; set format csv; save session $TMP/x.ses; show"
+cp "$TMP/out" "$TMP/show1"
+run "$TMP/x.ses" -c show
+check save_session_status [ "$RC" -eq 0 ]
+check save_session_same cmp -s "$TMP/show1" "$TMP/out"
+
 # every command listed by help is documented in the man page
 run -c help
 cmds=$(sed -n 's/^  \([a-z][a-z]*\).*/\1/p' "$TMP/out" | sort -u)

@@ -42,6 +42,8 @@ const uraCmd ura_cmds[] = {
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
+  {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
+   "write a script that recreates the live state exactly (replay: uasrisk FILE, or source)"},
   {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
    "run the commands of a session script; errors name the file and line"},
   {"quit", ura_cmd_quit, 0, 0, uraC_NONE, "quit", "leave uasrisk (also: exit, Ctrl-D)"},

@@ -1,0 +1,56 @@
+/* session.c: save session FILE writes a script that recreates the live state exactly */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+
+/* write the state as commands: defaults, loaded model parts, case, then every setting */
+static void write_state(uraCtx* c, FILE* f) {
+  char val[2048];
+  fprintf(f, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n");
+  fprintf(f, "reset\n");
+  for (int i = 0; i < c->npart; i++) {
+    if (strcmp(c->part[i].origin, "built-in")) {
+      fprintf(f, "model load \"%s\"   # part %s\n", c->part[i].origin, c->part[i].name);
+    }
+  }
+  fprintf(f, "case %s\n", c->st.casename);
+  for (const uraParam* p = ura_params; p->name; p++) {
+    if (p->kind == uraP_CASE) continue;
+    ura_param_format(c, p, val, sizeof val);
+    fprintf(f, "set %s %s%s%s\n", p->name, p->kind == uraP_STR ? "\"" : "", val,
+            p->kind == uraP_STR ? "\"" : "");
+  }
+  for (int i = 0; i < ur_injury_param_count(); i++) {
+    const char* name;
+    ur_injury_param_info(i, &name, NULL, NULL);
+    ura_injury_line(c, i, val, sizeof val, 0);
+    fprintf(f, "set %s %s\n", name, val);
+  }
+  for (int i = 0; i < c->st.nov; i++) {
+    if (c->st.ov_user[i]) fprintf(f, "set %s %.17g\n", c->st.ov_name[i], c->st.ov_val[i]);
+  }
+}
+
+int ura_cmd_save(uraCtx* c, int argc, char** argv) {
+  if (strcmp(argv[1], "session")) {
+    return ura_fail(c, "save: unknown '%s'; accepted: save session FILE", argv[1]);
+  }
+  const char* path = argv[2];
+
+  /* a temporary file beside the target, renamed over it when complete */
+  char tmp[1100];
+  snprintf(tmp, sizeof tmp, "%.1000s.tmp.XXXXXX", path);
+  int fd = mkstemp(tmp);
+  FILE* f = fd >= 0 ? fdopen(fd, "w") : NULL;
+  if (!f) return ura_fail(c, "save session: cannot write '%s': %s", path, strerror(errno));
+  write_state(c, f);
+  if (fflush(f) || ferror(f) || fclose(f) || rename(tmp, path)) {
+    int e = errno;
+    remove(tmp);
+    return ura_fail(c, "save session: cannot write '%s': %s", path, strerror(e));
+  }
+  return 0;
+}
