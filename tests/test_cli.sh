@@ -116,6 +116,11 @@ printf 'model load %s\nmodel parts\n' "$TMP/bad2.urm" >"$TMP/in.txt"
 run_in "$TMP/in.txt" -i
 check model_unchanged cond 'has "$TMP/out" "^ra3  *built-in\$" && has "$TMP/err" "bad2.urm:3"'
 
+# grid extents under wind reach upstream (the paper's 10 m/s grids go to dpar = -1.6 m)
+run -c 'set format csv; case B; set wind 10; set step 0.2; grid; grid cells'
+check grid_wind_status [ "$RC" -eq 0 ]
+check grid_wind_upstream awk -F, '/^-?[0-9]/ && NF==8 {if ($1 < m) m = $1; if ($3 == 1) n++} END {exit !(m <= -1.6 && n > 0)}' "$TMP/out"
+
 # save session recreates the state exactly
 run -c "case A1; set wind 6; set face 45; set speed 9.5; set bag_kappa 4; set hic_window 0.036; set winds 0,5; set format csv; save session $TMP/x.ses; show"
 cp "$TMP/out" "$TMP/show1"

@@ -60,30 +60,29 @@ static void cb_progress(void* ctx, int done, int total) {
   }
 }
 
-/* the lattice extents: grow a box until no cell on its border can be touched */
+/* the lattice extents: every cell whose straight path can touch the person, found by scanning
+   the region the path can reach (upstream as far as the drone travels while it descends from
+   R_max above the head to the ground), padded by one cell */
 static void auto_extents(const urImpactSetup* s, const urImpactCond* cond, double step,
                          double* par_min, double* par_max, double* perp_max) {
-  long lo = -1, hi = 1, kp = 1;
-  for (int it = 0; it < 400; it++) {
-    int grow_lo = 0, grow_hi = 0, grow_p = 0;
-    for (long j = -kp; j <= kp; j++) {
-      if (ur_impact_may_contact(s, cond, lo * step, j * step)) grow_lo = 1;
-      if (ur_impact_may_contact(s, cond, hi * step, j * step)) grow_hi = 1;
-    }
-    for (long i = lo; i <= hi; i++) {
-      if (ur_impact_may_contact(s, cond, i * step, kp * step) ||
-          ur_impact_may_contact(s, cond, i * step, -kp * step)) {
-        grow_p = 1;
+  double psi = cond->angle * M_PI / 180.0, reach = 2.0;
+  double up = psi < M_PI / 2 - 1e-9 ? (s->head_top + s->rmax) / tan(psi) : 0;
+  long ilo = (long)floor(-(up + reach) / step), ihi = (long)ceil(reach / step);
+  long jmax = (long)ceil(reach / step);
+  long lo = 1, hi = -1, kp = 0;
+  for (long i = ilo; i <= ihi; i++) {
+    for (long j = -jmax; j <= jmax; j++) {
+      if (ur_impact_may_contact(s, cond, i * step, j * step)) {
+        if (i < lo) lo = i;
+        if (i > hi) hi = i;
+        if (labs(j) > kp) kp = labs(j);
       }
     }
-    if (!grow_lo && !grow_hi && !grow_p) break;
-    lo -= grow_lo;
-    hi += grow_hi;
-    kp += grow_p;
   }
-  *par_min = lo * step;
-  *par_max = hi * step;
-  *perp_max = kp * step;
+  if (hi < lo) lo = hi = 0;
+  *par_min = (lo - 1) * step;
+  *par_max = (hi + 1) * step;
+  *perp_max = (kp + 1) * step;
 }
 
 /* the set-up is mirror-symmetric about the course: face 0 or 180, no roll or yaw */
