@@ -121,6 +121,14 @@ run -c 'set format csv; case B; set wind 10; set step 0.2; grid; grid cells'
 check grid_wind_status [ "$RC" -eq 0 ]
 check grid_wind_upstream awk -F, '/^-?[0-9]/ && NF==8 {if ($1 < m) m = $1; if ($3 == 1) n++} END {exit !(m <= -1.6 && n > 0)}' "$TMP/out"
 
+# sweep and compare (coarse grids): one row per value, the live wind restored
+run -c 'set format csv; case C; set step 0.2; sweep wind 0,4; show wind; compare'
+check sweep_rows cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^case,wind,face,speed,angle,q$" && [ "$(grep -c "^C,[04],0," "$TMP/out")" -eq 2 ]'
+check sweep_restores has "$TMP/out" '^wind  *0 m/s$'
+check compare_row cond 'has "$TMP/out" "^case,wind,p_centre,gliding,q_parametric,q,factor$" && grep -q "^C,0,1.0000,2.550,2.5500," "$TMP/out"'
+run -c 'sweep wind 0,-3'
+check sweep_bad cond '[ "$RC" -eq 1 ] && has "$TMP/err" "accepted: comma-separated numbers in \[0, 60\] m/s"'
+
 # save session recreates the state exactly
 run -c "case A1; set wind 6; set face 45; set speed 9.5; set bag_kappa 4; set hic_window 0.036; set winds 0,5; set format csv; save session $TMP/x.ses; show"
 cp "$TMP/out" "$TMP/show1"

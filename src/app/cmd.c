@@ -25,6 +25,12 @@ const uraCmd ura_cmds[] = {
   {"grid", ura_cmd_grid, 0, 2, uraC_NONE, "grid [show|cells|load FILE]",
    "run the offset grid of the live case (summary row), print it as coloured text (show), "
    "every cell (cells), or load a grid CSV (the paper's tables) as the last grid"},
+  {"sweep", ura_cmd_sweep, 2, 2, uraC_NONE, "sweep wind|face LIST",
+   "one grid per wind speed (m/s) or face direction (deg) of LIST; columns "
+   "case,wind,face,speed,angle,q"},
+  {"compare", ura_cmd_compare, 0, 0, uraC_NONE, "compare",
+   "the paper's Tables 11-13 for the live case: P{F|Delta=(0,0)} x gliding area against Q; "
+   "columns case,wind,p_centre,gliding,q_parametric,q,factor"},
   {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
    "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
    "q returns"},
