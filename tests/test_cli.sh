@@ -129,6 +129,14 @@ check compare_row cond 'has "$TMP/out" "^case,wind,p_centre,gliding,q_parametric
 run -c 'sweep wind 0,-3'
 check sweep_bad cond '[ "$RC" -eq 1 ] && has "$TMP/err" "accepted: comma-separated numbers in \[0, 60\] m/s"'
 
+# export: CSV files that grid load reads back with the same Q
+run -c "set format table; case C; set step 0.2; grid; export grid $TMP/g.csv; impact 0 0; export history $TMP/h.csv; grid load $TMP/g.csv; grid cells"
+check export_status [ "$RC" -eq 0 ]
+check export_grid_header grep -q '^dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p$' "$TMP/g.csv"
+check export_history cond '[ "$(grep -vc "^#" "$TMP/h.csv")" -gt 100 ] && grep -q "^t,head_acc_x" "$TMP/h.csv"'
+run -c "export grid /nonexistent/dir/g.csv"
+check export_unwritable cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ]'
+
 # save session recreates the state exactly
 run -c "case A1; set wind 6; set face 45; set speed 9.5; set bag_kappa 4; set hic_window 0.036; set winds 0,5; set format csv; save session $TMP/x.ses; show"
 cp "$TMP/out" "$TMP/show1"

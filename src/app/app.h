@@ -216,6 +216,7 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
 int ura_cmd_model(uraCtx* c, int argc, char** argv);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
+int ura_cmd_export(uraCtx* c, int argc, char** argv);
 int ura_cmd_compare(uraCtx* c, int argc, char** argv);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);

@@ -48,6 +48,8 @@ const uraCmd ura_cmds[] = {
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
+  {"export", ura_cmd_export, 2, 2, uraC_NONE, "export grid|history FILE",
+   "write the last grid's cells or the last impact's histories as CSV (atomically)"},
   {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
    "write a script that recreates the live state exactly (replay: uasrisk FILE, or source)"},
   {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",

@@ -54,3 +54,35 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   }
   return 0;
 }
+
+/* export grid|history FILE: the same rows as 'grid cells' or 'history', always CSV, written to a
+   temporary file beside FILE and renamed when complete */
+int ura_cmd_export(uraCtx* c, int argc, char** argv) {
+  int grid = !strcmp(argv[1], "grid"), hist = !strcmp(argv[1], "history");
+  if (!grid && !hist) {
+    return ura_fail(c, "export: unknown '%s'; accepted: export grid FILE, export history FILE",
+                    argv[1]);
+  }
+  const char* path = argv[2];
+  char tmp[1100];
+  snprintf(tmp, sizeof tmp, "%.1000s.tmp.XXXXXX", path);
+  int fd = mkstemp(tmp);
+  FILE* f = fd >= 0 ? fdopen(fd, "w") : NULL;
+  if (!f) return ura_fail(c, "export: cannot write '%s': %s", path, strerror(errno));
+
+  /* print into the file in CSV */
+  FILE* out = c->out;
+  int fmt = c->st.format;
+  c->out = f;
+  c->st.format = uraFMT_CSV;
+  char* av[2] = {grid ? "grid" : "history", "cells"};
+  int rc = grid ? ura_cmd_grid(c, 2, av) : ura_cmd_history(c, 1, av);
+  c->out = out;
+  c->st.format = fmt;
+  if (rc || fflush(f) || ferror(f) || fclose(f) || rename(tmp, path)) {
+    int e = errno;
+    remove(tmp);
+    return rc ? -1 : ura_fail(c, "export: cannot write '%s': %s", path, strerror(e));
+  }
+  return 0;
+}
