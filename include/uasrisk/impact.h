@@ -30,8 +30,9 @@ typedef struct {
   int s_head_acc;                  /* sensor: head CG acceleration (3) */
   int s_neck;                      /* sensor: upper-neck joint load (6) */
   int s_chest, s_abd;              /* sensors: plate joint positions (deflections), or -1 */
-  int npair_drone;                 /* pairs and airbags involving the drone: */
-  int* pair_drone;                 /* ids of pairs with one side on the drone */
+  int ncand;                       /* ellipsoid pairs the drone can act through (contact pairs
+                                      and airbag targets, the ground excluded): */
+  int (*cand)[2];                  /* ncand x (drone ellipsoid, person ellipsoid) */
   double rmax;                     /* R_max, m */
   double head_cg[3];               /* settled head CG, world, m */
   double head_top;                 /* settled height of the head top, m */

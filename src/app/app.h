@@ -204,6 +204,16 @@ int ura_cmd_view(uraCtx* c, int argc, char** argv);
 int ura_cmd_plot(uraCtx* c, int argc, char** argv);
 void ura_last_free(uraCtx* c);
 
+/* files written atomically (atomic.c): open a temporary file beside path; close renames it over
+   path if ok and everything was written, else removes it (a failure message unless !ok) */
+typedef struct {
+  FILE* f;
+  char tmp[1100];
+  char path[1024];
+} uraAtomic;
+int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);
+int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
+
 /* models (model.c) */
 int ura_models_init(uraCtx* c);
 void ura_models_free(uraCtx* c);

@@ -8,12 +8,11 @@
 
 #include "app.h"
 
-/* set by SIGINT while a grid runs; workers stop taking cells */
-static volatile sig_atomic_t interrupted;
+/* set by SIGINT while a grid runs; workers stop taking cells (int is sig_atomic_t here) */
 static volatile int stop_flag;
+_Static_assert(sizeof(sig_atomic_t) == sizeof(int), "the stop flag is written by a handler");
 
 static void on_sigint(int sig) {
-  interrupted = 1;
   stop_flag = 1;
 }
 
@@ -133,7 +132,6 @@ int ura_grid_run(uraCtx* c, int quiet) {
   /* run with Ctrl-C stopping the workers */
   gridRun run = {s, cond, &c->st.injury, w, !quiet && isatty(STDERR_FILENO)};
   spec.ctx = &run;
-  interrupted = 0;
   stop_flag = 0;
   struct sigaction sa = {0}, old;
   sa.sa_handler = on_sigint;
@@ -153,7 +151,7 @@ int ura_grid_run(uraCtx* c, int quiet) {
   c->last.speed = cond.speed;
   c->last.angle = cond.angle;
   snprintf(c->last.source, sizeof c->last.source, "computed");
-  if (interrupted) {
+  if (stop_flag) {
     return ura_fail(c, "grid: interrupted; %d of %d cells finished, kept as a partial grid "
                     "(no Q)", g->ndone, g->nrow * g->ncol);
   }

@@ -75,29 +75,38 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   return 0;
 }
 
+/* name of sensor channel j: SENSOR (one value), SENSOR_x/y/z (3), SENSOR_fx..mz (6), SENSOR_p/v
+   (airbag: pressure, volume) */
+static void channel_name(const urModel* m, int j, char* buf, size_t n) {
+  static const char* const comp3[] = {"x", "y", "z"};
+  static const char* const comp6[] = {"fx", "fy", "fz", "mx", "my", "mz"};
+  static const char* const comp2[] = {"p", "v"};
+  snprintf(buf, n, "s%d", j);
+  for (int i = 0; i < m->nsensor; i++) {
+    const urSensor* sn = m->sensor + i;
+    int k = j - sn->adr;
+    if (k < 0 || k >= sn->dim) continue;
+    const char* suffix = sn->dim == 3 ? comp3[k] : sn->dim == 6 ? comp6[k] :
+                         sn->dim == 2 ? comp2[k] : NULL;
+    if (suffix) snprintf(buf, n, "%s_%s", sn->name, suffix);
+    else snprintf(buf, n, "%s", sn->name);
+  }
+}
+
 /* every sensor channel of the last impact, one row per sample */
 int ura_cmd_history(uraCtx* c, int argc, char** argv) {
   if (!c->have_impact) return ura_fail(c, "history: no impact yet; run 'impact DPAR DPERP'");
   const urModel* m = c->setup.m;
   const urData* d = c->work.d;
-  static const char* const comp3[] = {"x", "y", "z"};
-  static const char* const comp6[] = {"fx", "fy", "fz", "mx", "my", "mz"};
-  static const char* const comp2[] = {"p", "v"};
 
   /* column names: time, then sensor_component */
   int ncol = 1 + m->nsensordata;
   char** names = malloc(sizeof(char*) * ncol);
   names[0] = strdup("t");
-  for (int i = 0; i < m->nsensor; i++) {
-    const urSensor* sn = m->sensor + i;
-    for (int k = 0; k < sn->dim; k++) {
-      char buf[80];
-      const char* suffix = sn->dim == 3 ? comp3[k] : sn->dim == 6 ? comp6[k] :
-                           sn->dim == 2 ? comp2[k] : NULL;
-      if (suffix) snprintf(buf, sizeof buf, "%s_%s", sn->name, suffix);
-      else snprintf(buf, sizeof buf, "%s", sn->name);
-      names[1 + sn->adr + k] = strdup(buf);
-    }
+  for (int j = 0; j < m->nsensordata; j++) {
+    char buf[80];
+    channel_name(m, j, buf, sizeof buf);
+    names[1 + j] = strdup(buf);
   }
   uraTable* t = ura_table_new(ncol, (const char* const*)names);
   ura_table_note(t, "impact at (%g, %g) m; t in s from tau; SI units; engine frames "
@@ -157,14 +166,7 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
   for (int i = 0; i < n; i++) tr_store.t[i] = d->hist[(size_t)i * stride];
   for (int j = 0; j < m->nsensordata; j++) {
     char buf[80];
-    snprintf(buf, sizeof buf, "s%d", j);
-    for (int i = 0; i < m->nsensor; i++) {
-      const urSensor* sn = m->sensor + i;
-      if (j >= sn->adr && j < sn->adr + sn->dim) {
-        if (sn->dim == 1) snprintf(buf, sizeof buf, "%s", sn->name);
-        else snprintf(buf, sizeof buf, "%s_%d", sn->name, j - sn->adr);
-      }
-    }
+    channel_name(m, j, buf, sizeof buf);
     tr_store.names[NDERIVED + j] = strdup(buf);
     tr_store.units[NDERIVED + j] = "SI";
     for (int i = 0; i < n; i++) {

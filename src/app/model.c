@@ -39,6 +39,23 @@ void ura_models_free(uraCtx* c) {
   c->npart = 0;
 }
 
+/* compile parts with the state's parameter overrides (messages name built-in parts by name, a
+   loaded part by its file) */
+static urModel* compile(const uraPart* part, int n, const uraState* st, char* err, int errlen) {
+  urModelSource src[uraMAXPARTS];
+  urOverride ov[uraMAXOV];
+  for (int i = 0; i < n; i++) {
+    src[i].text = part[i].text;
+    src[i].file = !strcmp(part[i].origin, "built-in") ? part[i].name : part[i].origin;
+    src[i].line = part[i].line;
+  }
+  for (int i = 0; i < st->nov; i++) {
+    ov[i].name = st->ov_name[i];
+    ov[i].value = st->ov_val[i];
+  }
+  return ur_model_parse(src, n, ov, st->nov, err, errlen);
+}
+
 /* add or replace the parts of a text; on error nothing changes */
 static int parts_merge(uraCtx* c, const char* text, const char* file, const char* origin) {
   urModelPart sp[uraMAXPARTS];
@@ -75,21 +92,7 @@ static int parts_merge(uraCtx* c, const char* text, const char* file, const char
   }
 
   /* it must compile with the current overrides before it replaces the old set */
-  urModelSource src[uraMAXPARTS];
-  char names[uraMAXPARTS][300];
-  for (int i = 0; i < nn; i++) {
-    snprintf(names[i], sizeof names[i], "%.299s", !strcmp(np[i].origin, "built-in") ?
-             np[i].name : np[i].origin);
-    src[i].text = np[i].text;
-    src[i].file = names[i];
-    src[i].line = np[i].line;
-  }
-  urOverride ov[uraMAXOV];
-  for (int i = 0; i < c->st.nov; i++) {
-    ov[i].name = c->st.ov_name[i];
-    ov[i].value = c->st.ov_val[i];
-  }
-  urModel* m = ur_model_parse(src, nn, ov, c->st.nov, err, sizeof err);
+  urModel* m = compile(np, nn, &c->st, err, sizeof err);
   if (!m) {
     parts_free(np, nn);
     return ura_fail(c, "%s", err);
@@ -115,19 +118,8 @@ int ura_models_init(uraCtx* c) {
 
 const urModel* ura_model(uraCtx* c) {
   if (c->model) return c->model;
-  urModelSource src[uraMAXPARTS];
-  urOverride ov[uraMAXOV];
-  for (int i = 0; i < c->npart; i++) {
-    src[i].text = c->part[i].text;
-    src[i].file = !strcmp(c->part[i].origin, "built-in") ? c->part[i].name : c->part[i].origin;
-    src[i].line = c->part[i].line;
-  }
-  for (int i = 0; i < c->st.nov; i++) {
-    ov[i].name = c->st.ov_name[i];
-    ov[i].value = c->st.ov_val[i];
-  }
   char err[300];
-  c->model = ur_model_parse(src, c->npart, ov, c->st.nov, err, sizeof err);
+  c->model = compile(c->part, c->npart, &c->st, err, sizeof err);
   if (!c->model) ura_fail(c, "model: %s", err);
   return c->model;
 }
@@ -199,33 +191,21 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
 
 /* ---- the model command ---- */
 
-static int model_show(uraCtx* c) {
+/* the model set as text, each part ending in a newline; headers name each part's origin */
+static void write_parts(const uraCtx* c, FILE* f, int headers) {
   for (int i = 0; i < c->npart; i++) {
-    fprintf(c->out, "# ---- part %s (%s) ----\n%s", c->part[i].name, c->part[i].origin,
-            c->part[i].text);
-    size_t n = strlen(c->part[i].text);
-    if (n && c->part[i].text[n - 1] != '\n') fputc('\n', c->out);
-  }
-  return 0;
-}
-
-static int model_save(uraCtx* c, const char* path) {
-  char tmp[1100];
-  snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", path);
-  FILE* f = NULL;
-  int fd = mkstemp(tmp);
-  if (fd >= 0) f = fdopen(fd, "w");
-  if (!f) return ura_fail(c, "model save: cannot write '%s': %s", path, strerror(errno));
-  for (int i = 0; i < c->npart; i++) {
+    if (headers) fprintf(f, "# ---- part %s (%s) ----\n", c->part[i].name, c->part[i].origin);
     fputs(c->part[i].text, f);
     size_t n = strlen(c->part[i].text);
     if (n && c->part[i].text[n - 1] != '\n') fputc('\n', f);
   }
-  if (fclose(f) || rename(tmp, path)) {
-    remove(tmp);
-    return ura_fail(c, "model save: cannot write '%s': %s", path, strerror(errno));
-  }
-  return 0;
+}
+
+static int model_save(uraCtx* c, const char* path) {
+  uraAtomic a;
+  if (ura_atomic_open(c, &a, path, "model save")) return -1;
+  write_parts(c, a.f, 0);
+  return ura_atomic_close(c, &a, 1, "model save");
 }
 
 static int model_load(uraCtx* c, const char* path) {
@@ -263,7 +243,10 @@ static int model_params(uraCtx* c) {
 }
 
 int ura_cmd_model(uraCtx* c, int argc, char** argv) {
-  if (argc == 2 && !strcmp(argv[1], "show")) return model_show(c);
+  if (argc == 2 && !strcmp(argv[1], "show")) {
+    write_parts(c, c->out, 1);
+    return 0;
+  }
   if (argc == 2 && !strcmp(argv[1], "params")) return model_params(c);
   if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);

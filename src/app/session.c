@@ -1,4 +1,4 @@
-/* session.c: save session FILE writes a script that recreates the live state exactly */
+/* session.c: save session FILE (a script that recreates the live state exactly) and export */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,21 +38,10 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   if (strcmp(argv[1], "session")) {
     return ura_fail(c, "save: unknown '%s'; accepted: save session FILE", argv[1]);
   }
-  const char* path = argv[2];
-
-  /* a temporary file beside the target, renamed over it when complete */
-  char tmp[1100];
-  snprintf(tmp, sizeof tmp, "%.1000s.tmp.XXXXXX", path);
-  int fd = mkstemp(tmp);
-  FILE* f = fd >= 0 ? fdopen(fd, "w") : NULL;
-  if (!f) return ura_fail(c, "save session: cannot write '%s': %s", path, strerror(errno));
-  write_state(c, f);
-  if (fflush(f) || ferror(f) || fclose(f) || rename(tmp, path)) {
-    int e = errno;
-    remove(tmp);
-    return ura_fail(c, "save session: cannot write '%s': %s", path, strerror(e));
-  }
-  return 0;
+  uraAtomic a;
+  if (ura_atomic_open(c, &a, argv[2], "save session")) return -1;
+  write_state(c, a.f);
+  return ura_atomic_close(c, &a, 1, "save session");
 }
 
 /* export grid|history FILE: the same rows as 'grid cells' or 'history', always CSV, written to a
@@ -63,26 +52,17 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "export: unknown '%s'; accepted: export grid FILE, export history FILE",
                     argv[1]);
   }
-  const char* path = argv[2];
-  char tmp[1100];
-  snprintf(tmp, sizeof tmp, "%.1000s.tmp.XXXXXX", path);
-  int fd = mkstemp(tmp);
-  FILE* f = fd >= 0 ? fdopen(fd, "w") : NULL;
-  if (!f) return ura_fail(c, "export: cannot write '%s': %s", path, strerror(errno));
+  uraAtomic a;
+  if (ura_atomic_open(c, &a, argv[2], "export")) return -1;
 
   /* print into the file in CSV */
   FILE* out = c->out;
   int fmt = c->st.format;
-  c->out = f;
+  c->out = a.f;
   c->st.format = uraFMT_CSV;
   char* av[2] = {grid ? "grid" : "history", "cells"};
   int rc = grid ? ura_cmd_grid(c, 2, av) : ura_cmd_history(c, 1, av);
   c->out = out;
   c->st.format = fmt;
-  if (rc || fflush(f) || ferror(f) || fclose(f) || rename(tmp, path)) {
-    int e = errno;
-    remove(tmp);
-    return rc ? -1 : ura_fail(c, "export: cannot write '%s': %s", path, strerror(e));
-  }
-  return 0;
+  return ura_atomic_close(c, &a, rc == 0, "export");
 }

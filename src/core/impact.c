@@ -130,12 +130,26 @@ int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time) {
     return -1;
   }
 
-  /* pairs that involve the drone */
-  s->pair_drone = malloc((m->npair + 1) * sizeof(int));
-  for (int i = 0; i < m->npair; i++) {
-    int b1 = m->geom[m->pair[i].geom1].body;
-    int b2 = m->pair[i].geom2 >= 0 ? m->geom[m->pair[i].geom2].body : -1;
-    if (intree(m, b1, s->drone) != intree(m, b2, s->drone)) s->pair_drone[s->npair_drone++] = i;
+  /* the ellipsoid pairs through which the drone can act on the person */
+  s->cand = malloc((m->npair + m->nbag * urMAXBAGTGT + 1) * sizeof *s->cand);
+  for (int i = 0; i < m->npair + m->nbag * urMAXBAGTGT; i++) {
+    int ga, gb;
+    if (i < m->npair) {
+      ga = m->pair[i].geom1;
+      gb = m->pair[i].geom2;
+    } else {
+      const urAirbag* b = m->bag + (i - m->npair) / urMAXBAGTGT;
+      int t = (i - m->npair) % urMAXBAGTGT;
+      if (t >= b->ntarget) continue;
+      ga = b->geom;
+      gb = b->target[t];
+    }
+    if (gb < 0) continue;
+    int ina = intree(m, m->geom[ga].body, s->drone), inb = intree(m, m->geom[gb].body, s->drone);
+    if (ina == inb) continue;
+    s->cand[s->ncand][0] = ina ? ga : gb;
+    s->cand[s->ncand][1] = ina ? gb : ga;
+    s->ncand++;
   }
 
   /* R_max: farthest surface point of the drone's ellipsoids from its centre of mass */
@@ -178,7 +192,7 @@ int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time) {
 
 void ur_impact_free(urImpactSetup* s) {
   ur_data_free(s->rest);
-  free(s->pair_drone);
+  free(s->cand);
   memset(s, 0, sizeof *s);
 }
 
@@ -248,29 +262,12 @@ static int sphere_cross(const double p[3], const double v[3], const double q[3],
 static double exit_time(const urImpactSetup* s, const urData* d, const double vel[3]) {
   const urModel* m = s->m;
   double texit = -1;
-  for (int k = 0; k < s->npair_drone; k++) {
-    const urPair* pr = m->pair + s->pair_drone[k];
-    int ga = pr->geom1, gb = pr->geom2;
-    if (gb < 0) continue;
-    if (!intree(m, m->geom[ga].body, s->drone)) {
-      int t = ga;
-      ga = gb;
-      gb = t;
-    }
+  for (int k = 0; k < s->ncand; k++) {
+    int ga = s->cand[k][0], gb = s->cand[k][1];
     double t0, t1;
     if (sphere_cross(d->gxpos + 3 * ga, vel, d->gxpos + 3 * gb,
                      m->geom[ga].rbound + m->geom[gb].rbound, &t0, &t1)) {
       if (t1 > texit) texit = t1;
-    }
-  }
-  for (int i = 0; i < m->nbag; i++) {
-    const urAirbag* b = m->bag + i;
-    for (int t = 0; t < b->ntarget; t++) {
-      double t0, t1;
-      if (sphere_cross(d->gxpos + 3 * b->geom, vel, d->gxpos + 3 * b->target[t],
-                       m->geom[b->geom].rbound + m->geom[b->target[t]].rbound, &t0, &t1)) {
-        if (t1 > texit) texit = t1;
-      }
     }
   }
   return texit;
@@ -290,22 +287,16 @@ int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double 
   uru_quat2mat(qm, quat);
   memcpy(cur, d->xcom + 3 * s->drone, sizeof cur);
 
-  /* any drone sphere whose straight path crosses a person's sphere of a pair or bag target */
-  for (int g = 0; g < m->ngeom; g++) {
-    if (!intree(m, m->geom[g].body, s->drone)) continue;
-    double rel[3], loc[3], p[3];
-    for (int k = 0; k < 3; k++) rel[k] = d->gxpos[3 * g + k] - cur[k];
+  /* any candidate pair whose drone sphere's straight path crosses the person's sphere */
+  for (int k = 0; k < s->ncand; k++) {
+    int g = s->cand[k][0], h = s->cand[k][1];
+    double rel[3], loc[3], p[3], t0, t1;
+    for (int j = 0; j < 3; j++) rel[j] = d->gxpos[3 * g + j] - cur[j];
     uru_mulmat3tvec(loc, R, rel);
     uru_mulmat3vec(p, qm, loc);
-    for (int k = 0; k < 3; k++) p[k] += pos[k];
-    for (int h = 0; h < m->ngeom; h++) {
-      if (intree(m, m->geom[h].body, s->drone)) continue;
-      double t0, t1;
-      if (sphere_cross(p, vel, d->gxpos + 3 * h, m->geom[g].rbound + m->geom[h].rbound, &t0,
-                       &t1)) {
-        /* only surfaces the drone can act on: ground-only geoms (feet) are far below anyway */
-        return 1;
-      }
+    for (int j = 0; j < 3; j++) p[j] += pos[j];
+    if (sphere_cross(p, vel, d->gxpos + 3 * h, m->geom[g].rbound + m->geom[h].rbound, &t0, &t1)) {
+      return 1;
     }
   }
   return 0;
