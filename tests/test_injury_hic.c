@@ -168,7 +168,8 @@ static void test_nonuniform(void** state)
 
 static void test_workspace_and_errors(void** state)
 {
-  static double t[NMAX], a[NMAX], work[NMAX];
+  static double t[NMAX], a[NMAX], work[4 * NMAX];
+  assert_true(ur_hic_work_size(NMAX) <= 4 * NMAX);
   int n = rect(t, a, 80.0, 0.002, 0.004, 0.010);
   urHic h1, h2;
   assert_int_equal(ur_hic(t, a, n, 0.015, work, &h1), 0);
@@ -189,6 +190,66 @@ static void test_workspace_and_errors(void** state)
   assert_int_equal(ur_hic(t, a, n, 0.015, NULL, &h1), -1);
 }
 
+/* the plain O(N W) scan of every pair, the definition the pruned scan must equal */
+static double brute(const double* t, const double* a, int n, double w, int* i1, int* i2)
+{
+  static double v[NMAX];
+  double best = 0;
+  v[0] = 0;
+  for (int k = 1; k < n; k++) {
+    v[k] = v[k - 1] + 0.5 * (a[k] + a[k - 1]) * (t[k] - t[k - 1]);
+  }
+  *i1 = *i2 = 0;
+  for (int i = 0; i < n - 1; i++) {
+    for (int j = i + 1; j < n && t[j] - t[i] <= w * (1 + 1e-9); j++) {
+      double dv = v[j] - v[i], dt = t[j] - t[i];
+      if (dv > 0 && dv * dv * sqrt(dv) / (dt * sqrt(dt)) > best) {
+        best = dv * dv * sqrt(dv) / (dt * sqrt(dt));
+        *i1 = i;
+        *i2 = j;
+      }
+    }
+  }
+  return best;
+}
+
+/* random multi-peak traces with negative parts, uniform and jittered times: the pruned scan
+   returns exactly the brute-force maximum and its pair */
+static void test_pruned_equals_brute_force(void** state)
+{
+  static double t[2000], a[2000];
+  srand(12345);
+  for (int trial = 0; trial < 200; trial++) {
+    int n = 200 + rand() % 1500;
+    double tt = 0;
+    int npk = 1 + rand() % 5;
+    double c[5], w[5], h[5];
+    for (int p = 0; p < npk; p++) {
+      c[p] = (rand() / (double)RAND_MAX) * n * 1e-4;
+      w[p] = 5e-4 + (rand() / (double)RAND_MAX) * 0.02;
+      h[p] = -50 + (rand() / (double)RAND_MAX) * 400;
+    }
+    for (int k = 0; k < n; k++) {
+      t[k] = tt;
+      tt += (trial % 2) ? 1e-4 : 1e-4 * (0.5 + rand() / (double)RAND_MAX);
+      a[k] = 5 * (rand() / (double)RAND_MAX - 0.5);
+      for (int p = 0; p < npk; p++) {
+        a[k] += h[p] * exp(-0.5 * pow((t[k] - c[p]) / w[p], 2));
+      }
+    }
+    for (int win = 0; win < 2; win++) {
+      double W = win ? 0.036 : 0.015;
+      int i1, i2;
+      double hb = brute(t, a, n, W, &i1, &i2);
+      urHic hp;
+      assert_int_equal(ur_hic(t, a, n, W, NULL, &hp), 0);
+      assert_true(hp.hic == hb);
+      assert_int_equal(hp.i1, i1);
+      assert_int_equal(hp.i2, i2);
+    }
+  }
+}
+
 int main(void)
 {
   const struct CMUnitTest tests[] = {
@@ -198,6 +259,7 @@ int main(void)
     cmocka_unit_test(test_halfsine_30ms),
     cmocka_unit_test(test_nonuniform),
     cmocka_unit_test(test_workspace_and_errors),
+    cmocka_unit_test(test_pruned_equals_brute_force),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

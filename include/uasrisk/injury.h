@@ -101,9 +101,12 @@ typedef struct {
 } urHic;
 
 /* Exact discrete HIC over sample pairs with t2 - t1 <= window (s), from the cumulative
-   trapezoid integral of a (g) on ascending, possibly non-uniform times t (s); O(N W).
-   work: n doubles, or NULL to allocate once. Returns 0, -1 bad input, -2 out of memory. */
+   trapezoid integral of a (g) on ascending, possibly non-uniform times t (s); starts are
+   scanned in decreasing upper bound, so typically O(N log N + W^2), worst case O(N W).
+   work: ur_hic_work_size(n) doubles, or NULL to allocate once. Returns 0, -1 bad input,
+   -2 out of memory. */
 int ur_hic(const double* t, const double* a, int n, double window, double* work, urHic* out);
+int ur_hic_work_size(int n);
 
 /* ---- Nij ---- */
 

@@ -5,11 +5,11 @@
 
 #include "uasrisk/injury.h"
 
-#define NBUF 10                    /* work buffers of n doubles */
+#define NBUF 10                    /* work buffers of n doubles; the last one holds the HIC work */
 
 int ur_injury_work_size(int n)
 {
-  return n > 0 ? NBUF * n : 0;
+  return n > 0 ? (NBUF - 1) * n + ur_hic_work_size(n) : 0;
 }
 
 /* 1 if t is uniformly spaced (relative 1e-6), step in *dt */

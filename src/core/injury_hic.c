@@ -1,8 +1,28 @@
-/* injury_hic.c: Head Injury Criterion, exact maximum over sample pairs (O(N W)). */
+/* injury_hic.c: Head Injury Criterion, exact maximum over sample pairs.
+ *
+ * HIC(i, j) = (t_j - t_i) * (mean a over [t_i, t_j])^2.5 with the cumulative trapezoid integral.
+ * Every start i is bounded from above by w_i * amax_i^2.5, where amax_i is the largest sample
+ * in [t_i, t_i + window] and w_i the longest admissible window from i (a trapezoid mean never
+ * exceeds the largest sample). Starts are scanned in decreasing bound and the scan stops when
+ * the bound cannot beat the best pair found: the same maximum as the O(N W) scan of every
+ * pair, usually after a few starts around the peak. Ties go to the smallest (i, j), as in
+ * the plain scan. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "uasrisk/injury.h"
+
+typedef struct { double bound; int i; } hicStart;
+
+static int bydescbound(const void* pa, const void* pb)
+{
+  const hicStart* a = pa;
+  const hicStart* b = pb;
+  if (a->bound != b->bound) {
+    return a->bound > b->bound ? -1 : 1;
+  }
+  return a->i - b->i;
+}
 
 int ur_hic(const double* t, const double* a, int n, double window, double* work, urHic* out)
 {
@@ -20,14 +40,16 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
     }
   }
 
-  // caller workspace or one allocation
+  // caller workspace or one allocation: n doubles of integral, n starts, n deque indices
   double* v = work;
   if (!v) {
-    v = malloc((size_t)n * sizeof(double));
+    v = malloc((size_t)ur_hic_work_size(n) * sizeof(double));
     if (!v) {
       return -2;
     }
   }
+  hicStart* st = (hicStart*)(v + n);
+  int* dq = (int*)(st + n);
 
   // cumulative trapezoid integral of a, g s
   v[0] = 0;
@@ -35,22 +57,45 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
     v[k] = v[k - 1] + 0.5 * (a[k] + a[k - 1]) * (t[k] - t[k - 1]);
   }
 
-  // scan every window start and every end within the window length
+  // bound of every start from the sliding maximum of a over its window (monotone deque)
   double wmax = window * (1.0 + 1e-9);
+  int ns = 0, head = 0, tail = 0, j = 0;
+  for (int i = 0; i < n - 1; i++) {
+    while (j < n && t[j] - t[i] <= wmax) {
+      while (tail > head && a[dq[tail - 1]] <= a[j]) {
+        tail--;
+      }
+      dq[tail++] = j++;
+    }
+    while (dq[head] < i) {
+      head++;
+    }
+    double am = a[dq[head]];
+    if (j - 1 > i && am > 0) {
+      double w = t[j - 1] - t[i];
+      st[ns].bound = w * am * am * sqrt(am);
+      st[ns].i = i;
+      ns++;
+    }
+  }
+  qsort(st, (size_t)ns, sizeof *st, bydescbound);
+
+  // exact scan of the starts whose bound can still beat the best pair
   double best = 0;
   int b1 = 0, b2 = 0;
-  for (int i = 0; i < n - 1; i++) {
-    for (int j = i + 1; j < n && t[j] - t[i] <= wmax; j++) {
-      double dv = v[j] - v[i];
+  for (int s = 0; s < ns && st[s].bound >= best; s++) {
+    int i = st[s].i;
+    for (int k = i + 1; k < n && t[k] - t[i] <= wmax; k++) {
+      double dv = v[k] - v[i];
       if (dv <= 0) {
         continue;
       }
-      double dt = t[j] - t[i];
+      double dt = t[k] - t[i];
       double h = dv * dv * sqrt(dv) / (dt * sqrt(dt));
-      if (h > best) {
+      if (h > best || (h == best && h > 0 && (i < b1 || (i == b1 && k < b2)))) {
         best = h;
         b1 = i;
-        b2 = j;
+        b2 = k;
       }
     }
   }
@@ -65,4 +110,10 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
     free(v);
   }
   return 0;
+}
+
+int ur_hic_work_size(int n)
+{
+  // n doubles, n {double, int} starts (2 doubles each), n ints (1 double each, rounded up)
+  return n > 0 ? 4 * n : 0;
 }
