@@ -142,12 +142,40 @@ static void test_spherical_energy(void** state) {
   ur_model_free(m);
 }
 
+// implicit joint damping (Euler): a pure damper on a hinge decays as w0 / (1 + h c / I)^n, also
+// where explicit damping (h c / I = 5 > 2) grows as |1 - h c / I|^n
+static void test_implicit_damping(void** state) {
+  for (int impl = 1; impl >= 0; impl--) {
+    urModel* m = ur_model_new();
+    double I[6] = {0.1, 0.1, 0.1, 0, 0, 0};
+    int b = ur_model_add_body(m, "arm", -1, urJNT_REVOLUTE, NULL, NULL);
+    ur_model_set_inertia(m, b, 1, NULL, I);
+    urRestraint r = {0};
+    r.c = 50;
+    ur_model_set_restraint(m, b, 0, &r);
+    m->opt.gravity[2] = 0;
+    m->opt.dt = 0.01;
+    m->opt.implicit_damping = impl;
+    assert_int_equal(ur_model_compile(m), 0);
+    urData* d = ur_data_new(m);
+    d->qvel[0] = 2;
+    for (int n = 1; n <= (impl ? 10 : 5); n++) {     // 2 4^5 < vmax
+      ur_step(m, d);
+      double want = impl ? 2/pow(6, n) : 2*pow(-4, n);
+      assert_true(fabs(d->qvel[0] - want) <= 1e-12*fabs(want));
+    }
+    ur_data_free(d);
+    ur_model_free(m);
+  }
+}
+
 
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_curve_stops),
     cmocka_unit_test(test_hysteresis),
     cmocka_unit_test(test_spherical_energy),
+    cmocka_unit_test(test_implicit_damping),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -178,6 +178,8 @@ typedef struct {
   double dt;                       /* time step, s (default 1e-5) */
   double gravity[3];               /* m/s^2 (default 0, 0, -9.81) */
   urIntegrator integrator;         /* default urINT_EULER */
+  int implicit_damping;            /* Euler: linear joint-restraint damping taken at the new
+                                      velocity, (M + dt C) qacc = f (as MuJoCo); default 1 */
   double sample_dt;                /* longest history sampling interval, s (default 1e-4: 10 kHz);
                                       rows every floor(sample_dt / dt) steps */
   double tmax;                     /* maximum simulated time after the jump, s (default 0.2) */

@@ -76,6 +76,15 @@ void pass2(const urModel* m, urData* d, int i, const int nv, const int k0, const
       }
     }
   }
+  // implicit joint damping: the restraint's linear damper acts at the new velocity, so the
+  // joint-space inertia gains dt c on its diagonal (an armature; exact for M + dt C)
+  if (m->opt.implicit_damping && m->opt.integrator == urINT_EULER) {
+    for (int r = 0; r < nv && r < 3; r++) {
+      if (b->rst[r].active) {
+        D[nv*r + r] += m->opt.dt*b->rst[r].c;
+      }
+    }
+  }
   if (nv && uru_invsym(Dinv, D, nv)) {
     ur_set_status(d, urSTAT_NONFINITE, "singular joint-space inertia");
     memset(Dinv, 0, 36*sizeof(double));

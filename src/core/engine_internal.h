@@ -12,18 +12,9 @@
 #endif
 
 //---------------------------------- vector and quaternion utilities (engine_util.c) --------------
+#include "engine_util_inline.h"
 
-double uru_dot3(const double a[3], const double b[3]);
-void uru_cross3(double r[3], const double a[3], const double b[3]);
-double uru_norm3(const double a[3]);
 int uru_normalize3(double a[3]);
-void uru_mulmat3vec(double r[3], const double M[9], const double v[3]);
-void uru_mulmat3tvec(double r[3], const double M[9], const double v[3]);
-void uru_mulmat3(double r[9], const double A[9], const double B[9]);
-void uru_mulmat3ta(double r[9], const double A[9], const double B[9]);
-void uru_mulmat3tb(double r[9], const double A[9], const double B[9]);
-void uru_quat2mat(double R[9], const double q[4]);
-void uru_mulquat(double r[4], const double a[4], const double b[4]);
 void uru_normalizequat(double q[4]);
 void uru_axisangle2quat(double q[4], const double axis[3], double angle);
 void uru_quatintegrate(double q[4], const double omega[3], double dt);
@@ -32,13 +23,7 @@ void uru_rotvec_jrinv(double J[9], const double v[3]);
 
 //---------------------------------- spatial algebra (engine_util.c) ------------------------------
 
-void uru_xmotion(double r[6], const double E[9], const double p[3], const double v[6]);
-void uru_xmotion_inv(double r[6], const double E[9], const double p[3], const double v[6]);
-void uru_xforce_t(double r[6], const double E[9], const double p[3], const double f[6]);
-void uru_crossmotion(double r[6], const double v[6], const double m[6]);
-void uru_crossforce(double r[6], const double v[6], const double f[6]);
 void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9]);
-void uru_mul6(double r[6], const double I[36], const double v[6]);
 void uru_xinertia_t(double r[36], const double E[9], const double p[3], const double I[36]);
 int uru_invsym(double* Ainv, const double* A, int n);
 

@@ -76,6 +76,7 @@ urModel* ur_model_new(void) {
   m->opt.dt = 1e-5;
   m->opt.gravity[2] = -9.81;
   m->opt.integrator = urINT_EULER;
+  m->opt.implicit_damping = 1;
   m->opt.sample_dt = 1e-4;
   m->opt.tmax = 0.2;
   m->opt.t_quiet = 0.02;

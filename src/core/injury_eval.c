@@ -95,7 +95,8 @@ int ur_injury_eval(const urInjuryInput* in, const urInjuryParams* p, double* wor
     }
     if (ur_hic(in->t, ag, n, 0.015, buf[9], &out->hic15) ||
         ur_hic(in->t, ag, n, 0.036, buf[9], &out->hic36) ||
-        ur_hic(in->t, ag, n, p->hic_window, buf[9], &out->hic)) {
+        (p->hic_window == 0.015 ? (out->hic = out->hic15, 0)
+                                : ur_hic(in->t, ag, n, p->hic_window, buf[9], &out->hic))) {
       err = -1;
       goto done;
     }

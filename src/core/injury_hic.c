@@ -80,8 +80,9 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
   }
   qsort(st, (size_t)ns, sizeof *st, bydescbound);
 
-  // exact scan of the starts whose bound can still beat the best pair
-  double best = 0;
+  // exact scan of the starts whose bound can still beat the best pair; pairs are compared by
+  // HIC^2 = dv^5 / dt^3 (same order, no roots), the value is taken from the best pair
+  double best2 = 0, best = 0;
   int b1 = 0, b2 = 0;
   for (int s = 0; s < ns && st[s].bound >= best; s++) {
     int i = st[s].i;
@@ -90,10 +91,11 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
       if (dv <= 0) {
         continue;
       }
-      double dt = t[k] - t[i];
-      double h = dv * dv * sqrt(dv) / (dt * sqrt(dt));
-      if (h > best || (h == best && h > 0 && (i < b1 || (i == b1 && k < b2)))) {
-        best = h;
+      double dt = t[k] - t[i], dv2 = dv * dv;
+      double h2 = dv2 * dv2 * dv / (dt * dt * dt);
+      if (h2 > best2 || (h2 == best2 && h2 > 0 && (i < b1 || (i == b1 && k < b2)))) {
+        best2 = h2;
+        best = sqrt(h2);
         b1 = i;
         b2 = k;
       }
@@ -101,6 +103,10 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
   }
 
   // report the best pair
+  if (best > 0) {
+    double dv = v[b2] - v[b1], dt = t[b2] - t[b1];
+    best = dv * dv * sqrt(dv) / (dt * sqrt(dt));
+  }
   out->hic = best;
   out->i1 = b1;
   out->i2 = b2;

@@ -91,7 +91,8 @@ typedef struct {
 
 static const KeySpec spec_option[] = {
   NUM("dt"), NUM("sample_dt"), NUM("tmax"), NUM("t_quiet"), NUM("ke_settle"), NUM("vmax"),
-  NUM("jump_margin"), VEC3("gravity"), {"integrator", K_ENUM, 1, 0, 0, "euler|rk4"}, ENABLE
+  NUM("jump_margin"), VEC3("gravity"), {"integrator", K_ENUM, 1, 0, 0, "euler|rk4"},
+  {"damping", K_ENUM, 1, 0, 0, "implicit|explicit"}, ENABLE
 };
 static const KeySpec spec_curve[] = {
   {"x", K_LIST, urMAXCURVE, 2, 1, NULL}, {"y", K_LIST, urMAXCURVE, 2, 1, NULL}, ENABLE
@@ -973,6 +974,9 @@ static int st_option(Parser* p, const urlStmt* st, Bound* b) {
   }
   if (get(b, "integrator")->set) {
     o->integrator = get(b, "integrator")->e ? urINT_RK4 : urINT_EULER;
+  }
+  if (get(b, "damping")->set) {
+    o->implicit_damping = get(b, "damping")->e == 0;
   }
   return 0;
 }

@@ -1,0 +1,68 @@
+/* bench_impact.c: CPU time of one RA3-on-human impact with the built-in models, per case, over
+ * the cells of a zero-wind grid (steps per impact, time per step, time per impact); the
+ * one-time model set-up (compile, balance, settle) is timed separately.
+ *   bench_impact [CASE...]   (default A B C) */
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "../src/app/app.h"
+
+static double cpu(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static int bench(const char* cs) {
+  static uraCtx c;
+  char line[64];
+  ura_init(&c);
+  snprintf(line, sizeof line, "case %s", cs);
+  if (ura_run_line(&c, line)) return 1;
+  double t0 = cpu();
+  const urImpactSetup* s = ura_setup(&c);
+  double tsetup = cpu() - t0;
+  urImpactCond cond;
+  if (!s || ura_impact_cond(&c, &cond)) return 1;
+  urImpactWork w;
+  if (ur_impact_work_init(s, &w)) return 1;
+
+  /* a quadrant of offsets, 0.05 m apart, where contact is possible */
+  double tot = 0, worst = 0;
+  long steps = 0;
+  int runs = 0;
+  for (double dp = -0.6; dp <= 0.6 + 1e-9; dp += 0.1) {
+    for (double dq = 0; dq <= 0.6 + 1e-9; dq += 0.1) {
+      if (!ur_impact_may_contact(s, &cond, dp, dq)) continue;
+      urImpactResult r;
+      t0 = cpu();
+      int rc = ur_impact_run(s, &w, &cond, &c.st.injury, dp, dq, &r);
+      double dt = cpu() - t0;
+      if (rc) {
+        fprintf(stderr, "bench_impact: case %s (%g, %g) failed: %s\n", cs, dp, dq, r.reason);
+        return 1;
+      }
+      tot += dt;
+      worst = dt > worst ? dt : worst;
+      steps += w.d->nstep;
+      runs++;
+    }
+  }
+  printf("  case %-2s set-up %6.0f ms; %3d impacts: mean %5.2f ms CPU (worst %5.2f), "
+         "%4.0f steps of %5.2f us (dt %.0e s)\n", cs, 1e3 * tsetup, runs, 1e3 * tot / runs,
+         1e3 * worst, (double)steps / runs, 1e6 * tot / steps, s->m->opt.dt);
+  ur_impact_work_free(&w);
+  return 0;
+}
+
+int main(int argc, char** argv) {
+  static const char* const dflt[] = {"A", "B", "C"};
+  int n = argc > 1 ? argc - 1 : 3;
+  printf("bench_impact: built-in RA3 on the standing human, zero wind, face 0 (one thread)\n");
+  for (int i = 0; i < n; i++) {
+    if (bench(argc > 1 ? argv[i + 1] : dflt[i])) return 1;
+  }
+  printf("  target: <= 5 ms CPU per impact\n");
+  return 0;
+}
