@@ -33,8 +33,11 @@ static shared common(const uraCtx* c, int over_face) {
   return s;
 }
 
-/* write the datablock and the plot command of one panel */
+/* write the datablock and the plot command of one panel; a sweep keeps its colour and point
+   type in both panels (colour-blind safe, no yellow on white) */
 static void panel(uraCtx* c, FILE* f, int over_face) {
+  static const char* const colours[8] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00", "#0072b2",
+                                         "#d55e00", "#cc79a7", "#000000"};
   shared sh = common(c, over_face);
   const uraSweep* first = NULL;
   char title[800], cases[64] = "";
@@ -95,9 +98,11 @@ static void panel(uraCtx* c, FILE* f, int over_face) {
                             ", face %g deg", w->fixed);
     }
     if (!sh.step) m += (size_t)snprintf(label + m, sizeof label - m, ", step %g m", w->step);
-    if (!sh.changes && m < sizeof label) snprintf(label + m, sizeof label - m, ", %s", w->changes);
-    fprintf(f, "%s$%c%d using 1:2 with linespoints lw 2 pt %d ps 1.2 title \"", first_curve ?
-            "" : ", ", over_face ? 'F' : 'W', i, 5 + 2 * (i % 4));
+    if (!sh.changes && strcmp(w->changes, "none") && m < sizeof label) {
+      snprintf(label + m, sizeof label - m, ", %s", w->changes);
+    }
+    fprintf(f, "%s$%c%d using 1:2 with linespoints lc rgb '%s' lw 2 pt %d ps 1.2 title \"",
+            first_curve ? "" : ", ", over_face ? 'F' : 'W', i, colours[i % 8], 5 + 2 * (i % 4));
     for (const char* p = label; *p; p++) {
       if (*p == '"' || *p == '\\') fputc('\\', f);
       fputc(*p, f);
@@ -112,7 +117,11 @@ static int write_sweep(uraCtx* c, FILE* f, int want_wind, int want_face) {
   int two = want_wind && want_face;
   fprintf(f, "set grid\nset key below left Left reverse noenhanced samplen 3 maxrows 3\n"
           "set tics out\n");
-  if (two) fprintf(f, "set multiplot layout 1,2\n");
+  if (two) {
+    /* the same bottom margin in both panels: the taller legend decides */
+    int rows = common(c, 0).n > common(c, 1).n ? common(c, 0).n : common(c, 1).n;
+    fprintf(f, "set multiplot layout 1,2\nset bmargin %d\n", 5 + (rows < 3 ? rows : 3));
+  }
   if (want_wind) panel(c, f, 0);
   if (want_face) panel(c, f, 1);
   if (two) fprintf(f, "unset multiplot\n");
