@@ -85,6 +85,18 @@ check ctrl_d_leaves cond '! alive w1'
 check history_file cond 'grep -q "^case B$" "$TMP/.uasrisk_history" &&
   grep -q "^plot history head_acc$" "$TMP/.uasrisk_history"'
 
+# ---- without gnuplot: one clear line, and the session goes on ----
+start w3 120 30 PATH=/nonexistent
+check nogp_prompt wait_for w3 'uasrisk\[A\]>'
+line w3 "set output $TMP/x.png"
+line w3 "plot pof"
+check nogp_message wait_for w3 \
+  '^error: plot pof: gnuplot not found; install it \(Debian: gnuplot-nox\) or use export$'
+line w3 "case C"
+check nogp_goes_on wait_for w3 'uasrisk\[C\]> *$'
+check nogp_no_file [ ! -e "$TMP/x.png" ]
+line w3 "quit"
+
 # ---- uasrisk -i FILE: the script, then the prompt on its state ----
 printf 'case C\nset wind 3\n' >"$TMP/start.ses"
 start w2 120 30 -- -i "$TMP/start.ses"
