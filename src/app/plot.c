@@ -633,7 +633,7 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
       quote(f, tr->title);
       fprintf(f, " noenhanced");
     }
-    fprintf(f, "\nset lmargin 12\n");
+    fprintf(f, "\nset lmargin 12\nset key font \",9\"\n");
   } else if (tr->title) {
     set_text(f, "title", tr->title);
   }

@@ -42,8 +42,10 @@ int ura_plot_grid(uraCtx* c);
 int ura_plot_pof(uraCtx* c, const urInjuryParams* p);
 
 /* time histories of one impact against time in ms, one panel per signal with a legend, the
-   trace's title over them; nsel 0: every signal. head_acc in m/s^2 is shown in g, with its
-   HIC15 window shaded (computed from the signal), deflections in mm */
+   trace's title over them; nsel 0: the six derived signals the injury criteria read (head_acc,
+   neck_fz, neck_my, neck_fx, chest_defl, abd_defl; every signal when the trace has none of
+   them), the one name "all": every signal. head_acc in m/s^2 is shown in g, with its HIC15
+   window shaded (computed from the signal), deflections in mm */
 int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names);
 
 /* the same, with the HIC window t1-t2 (s) given (NAN: computed from the signal) */
