@@ -121,6 +121,10 @@ run -c 'set format csv; case B; set wind 10; set step 0.2; grid; grid cells'
 check grid_wind_status [ "$RC" -eq 0 ]
 check grid_wind_upstream awk -F, '/^-?[0-9]/ && NF==8 {if ($1 < m) m = $1; if ($3 == 1) n++} END {exit !(m <= -1.6 && n > 0)}' "$TMP/out"
 
+# case keeps the grid step (a numerical setting, like threads)
+run -c 'set step 0.2; case C; show step'
+check case_keeps_step has "$TMP/out" '^step  *0.2 m$'
+
 # sweep and compare (coarse grids): one row per value, the live wind restored
 run -c 'set format csv; case C; set step 0.2; sweep wind 0,4; show wind; compare'
 check sweep_rows cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^case,wind,face,speed,angle,q$" && [ "$(grep -c "^C,[04],0," "$TMP/out")" -eq 2 ]'

@@ -35,6 +35,12 @@ if command -v gnuplot >/dev/null 2>&1; then
   check pof_png_magic png_magic "$TMP/pof.png"
   check pof_png_size [ "$(size "$TMP/pof.png")" -gt 5000 ]
 
+  # svg and pdfcairo, named or chosen by the extension
+  run -c "set terminal svg; set output $TMP/pof.svg; plot pof; set terminal pdfcairo; set output $TMP/pof.pdf; plot pof; set terminal default; set output $TMP/ext.pdf; plot pof; set output $TMP/ext.svg; plot pof"
+  check svg_pdf_status [ "$RC" -eq 0 ]
+  check svg_file cond 'grep -q "<svg" "$TMP/pof.svg" && grep -q "<svg" "$TMP/ext.svg"'
+  check pdf_file cond '[ "$(head -c 5 "$TMP/pof.pdf")" = "%PDF-" ] && [ "$(head -c 5 "$TMP/ext.pdf")" = "%PDF-" ]'
+
   # the dumb terminal into text files: titles, labels and Q are there
   run -c "grid load $T6; set terminal \"dumb size 100,40\"; set output $TMP/grid.txt; plot grid"
   check grid_txt_status [ "$RC" -eq 0 ]

@@ -116,6 +116,23 @@ static void trace_all(void** state) {
   assert_true(t1 >= 5 && t2 <= 15 && t2 > t1 && t2 - t1 <= 15);
   assert_non_null(strstr(s, "plot $T using 1:2 with lines"));
   assert_non_null(strstr(s, "plot $T using 1:3 with lines"));
+  /* a legend entry per signal and for the window; a canvas for two panels */
+  assert_non_null(strstr(s, "title \"head CG acceleration, resultant\""));
+  assert_non_null(strstr(s, "keyentry with boxes"));
+  assert_non_null(strstr(s, "set terminal png size 800,540\n"));
+}
+
+/* the impact's conditions as the title, its line break kept */
+static void trace_title(void** state) {
+  fixture* f = *state;
+  const char* h[] = {"head_acc"};
+  f->tr.title = "case B, wind 0 m/s\nimpact at dpar 0.00 m";
+  assert_int_equal(ura_plot_trace(&f->c, &f->tr, 1, h), 0);
+  const char* s = sent(f);
+  assert_non_null(strstr(s, "set title \"case B, wind 0 m/s\\nimpact at dpar 0.00 m\" noenhanced"));
+  assert_non_null(strstr(s, "set terminal png\n"));         /* one panel: the default canvas */
+  assert_int_equal(ura_plot_trace(&f->c, &f->tr, 0, NULL), 0);
+  assert_non_null(strstr(sent(f), "set multiplot layout 2,1 title \"case B, wind 0 m/s\\n"));
 }
 
 /* selected signals, a given window, an unknown name */
@@ -134,7 +151,7 @@ static void trace_select(void** state) {
 
   const char* bad[] = {"head_acc", "nosuch"};
   assert_int_equal(ura_plot_trace(&f->c, &f->tr, 2, bad), -1);
-  assert_string_equal(f->c.err, "plot history: no signal 'nosuch'; signals: head_acc, neck_fz");
+  assert_string_equal(f->c.err, "plot history: no signal 'nosuch'; signals: head_acc, neck_fz (or all)");
   assert_int_equal(ura_plot_trace(&f->c, NULL, 0, NULL), -1);
   assert_string_equal(f->c.err, "plot history: no impact yet");
 }
@@ -168,7 +185,7 @@ static void real_gnuplot(void** state) {
   strcpy(f->c.st.terminal, "dumb size 100,40");
   snprintf(f->c.st.output, sizeof f->c.st.output, "%s", out);
   if (ura_plot_trace(&f->c, &f->tr, 0, NULL)) fail_msg("%s", f->c.err);
-  snprintf(cmd, sizeof cmd, "grep -q 'HIC15 window' %s && grep -q 't (ms)' %s", out, out);
+  snprintf(cmd, sizeof cmd, "grep -q 'HIC15 window' %s && grep -q 't (ms from tau)' %s", out, out);
   assert_int_equal(system(cmd), 0);
   double x[3] = {0, 2, 4}, y[3] = {0.1, 0.2, 0.4};
   uraSeries s[1] = {{"case \"B\"", x, y, 3}};
@@ -185,6 +202,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test_setup_teardown(trace_all, setup, teardown),
     cmocka_unit_test_setup_teardown(trace_select, setup, teardown),
+    cmocka_unit_test_setup_teardown(trace_title, setup, teardown),
     cmocka_unit_test_setup_teardown(xy, setup, teardown),
     cmocka_unit_test_setup_teardown(real_gnuplot, setup, teardown),
   };

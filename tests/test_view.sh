@@ -3,7 +3,6 @@
 # window and resizing, NO_COLOR, scrolling; and grid show in colour on a terminal
 . tests/lib.sh
 
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
 T6=../shared/paper/grids/table06_caseC_wind0.csv
 T8=../shared/paper/grids/table08_caseA_wind10.csv
 
@@ -25,40 +24,7 @@ if [ ! -r "$T6" ] || [ ! -r "$T8" ]; then
   finish
 fi
 
-# a private tmux server, killed at the end
-SOCK="uasrisk-test-$$"
-TM() { tmux -L "$SOCK" -f /dev/null "$@"; }
-trap 'tmux -L "$SOCK" kill-server 2>/dev/null; rm -rf "$TMP"' EXIT
-ESC=$(printf '\033')
-COLOUR="$ESC\[([0-9;]*;)?(3[0-7]|4[0-7]|38;5;[0-9]+|48;5;[0-9]+|9[0-7]|10[0-7])(;[0-9;]*)?m"
-
-# start uasrisk in a session of the given size with extra environment
-start() { name=$1; w=$2; h=$3; shift 3
-  TM new-session -d -s "$name" -x "$w" -y "$h" -c "$PWD" \
-    "env -u NO_COLOR -u DISPLAY -u WAYLAND_DISPLAY HOME=$TMP $* $U"
-  TM set -t "$name" remain-on-exit on
-}
-# the screen (with -e: with escapes) into $TMP/screen
-grab() { TM capture-pane -p $2 -t "$1" >"$TMP/screen"; }
-# wait up to $3 seconds (5) until the screen of session $1 matches $2
-wait_for() { n=0; lim=$(( ${3:-5} * 10 ))
-  while [ "$n" -lt "$lim" ]; do
-    grab "$1"; grep -Eq -- "$2" "$TMP/screen" && return 0
-    sleep 0.1; n=$((n + 1))
-  done
-  echo "  (waited for '$2'; the screen was:)"; sed 's/^/  | /' "$TMP/screen"; return 1
-}
-# wait until $2 is no longer on the screen (the viewer has left)
-wait_gone() { n=0
-  while [ "$n" -lt 50 ]; do
-    grab "$1"; grep -Eq -- "$2" "$TMP/screen" || return 0
-    sleep 0.1; n=$((n + 1))
-  done
-  return 1
-}
-keys() { s=$1; shift; TM send-keys -t "$s" "$@"; }
-line() { s=$1; shift; TM send-keys -t "$s" -l "$*"; TM send-keys -t "$s" Enter; }
-coloured() { grab "$1" -e; grep -Eq "$COLOUR" "$TMP/screen"; }
+. tests/lib_tmux.sh
 
 # ---- a 160x50 terminal ----
 start v1 160 50

@@ -70,7 +70,20 @@ typedef struct {
   double* v;                       /* nsig*n values, signal-major */
   const char* const* names;        /* nsig signal names (e.g. head_acc, neck_fz) */
   const char* const* units;        /* nsig units */
+  const char* title;               /* the impact's conditions and results (NULL: none) */
 } uraTrace;
+
+/* one sweep kept for plot sweep and export sweep (cmd_sweep.c): Q per wind or face value */
+#define uraMAXSWEEPS 32
+typedef struct {
+  char casename[8];
+  int over_face;                   /* 0: over wind (face fixed), 1: over face (wind fixed) */
+  double fixed;                    /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
+  double step;                     /* grid pitch, m */
+  char changes[200];               /* settings that differ from the case preset, or "none" */
+  int n;                           /* values, in increasing order */
+  double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
+} uraSweep;
 
 /* ---- context ---- */
 
@@ -84,6 +97,8 @@ typedef struct uraCtx {
   int depth;                       /* nesting of source */
   int quit;                        /* set by quit */
   uraGridResult last;              /* the last grid */
+  uraSweep* sweep;                 /* the kept sweeps, oldest first (sweep clear frees them) */
+  int nsweep;
   uraPart part[uraMAXPARTS];       /* the model set, in order */
   int npart;
   urModel* model;                  /* compiled with the overrides; NULL: stale */
@@ -232,6 +247,10 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);
 int ura_impact_cond(uraCtx* c, urImpactCond* cond);
 int ura_last_trace(uraCtx* c, uraTrace* tr);     /* histories of the last impact; -1: none */
+/* keep a finished impact (its work space holds the histories) as the last impact, with the case
+   and wind it ran for */
+void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
+                     double dpar, double dperp, const urImpactResult* r);
 int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr);
 
 /* interactive loop on GNU readline */

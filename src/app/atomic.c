@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "app.h"
 
@@ -11,6 +12,11 @@ int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) 
   snprintf(a->path, sizeof a->path, "%s", path);
   snprintf(a->tmp, sizeof a->tmp, "%.1000s.tmp.XXXXXX", path);
   int fd = mkstemp(a->tmp);
+
+  /* mkstemp makes the file private (0600); the result gets the usual mode under the umask */
+  mode_t mask = umask(0);
+  umask(mask);
+  if (fd >= 0) fchmod(fd, 0666 & ~mask);
   a->f = fd >= 0 ? fdopen(fd, "w") : NULL;
   if (!a->f) {
     if (fd >= 0) remove(a->tmp);

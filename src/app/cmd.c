@@ -14,7 +14,8 @@ const uraCmd ura_cmds[] = {
   {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
    "print the live case state with units, or one parameter; derived values say so"},
   {"case", ura_cmd_case, 1, 1, uraC_CASE, "case A|B|C|A1|A2",
-   "load the paper's preset for a case; wind and face keep their values"},
+   "load the paper's preset for a case; wind, face, step and the output settings keep their "
+   "values"},
   {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
   {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
    "impact speed and descent angle for each wind in 'winds' (paper Table 2); "
@@ -25,18 +26,19 @@ const uraCmd ura_cmds[] = {
   {"grid", ura_cmd_grid, 0, 2, uraC_NONE, "grid [show|cells|load FILE]",
    "run the offset grid of the live case (summary row), print it as coloured text (show), "
    "every cell (cells), or load a grid CSV (the paper's tables) as the last grid"},
-  {"sweep", ura_cmd_sweep, 2, 2, uraC_NONE, "sweep wind|face LIST",
-   "one grid per wind speed (m/s) or face direction (deg) of LIST; columns "
-   "case,wind,face,speed,angle,q"},
+  {"sweep", ura_cmd_sweep, 1, 2, uraC_NONE, "sweep wind LIST|face LIST|show|clear",
+   "one grid per wind speed (m/s) or face direction (deg) of LIST, columns "
+   "case,wind,face,speed,angle,q; the sweeps are kept for plot sweep and export sweep (show "
+   "lists them, clear forgets them)"},
   {"compare", ura_cmd_compare, 0, 0, uraC_NONE, "compare",
    "the paper's Tables 11-13 for the live case: P{F|Delta=(0,0)} x gliding area against Q; "
    "columns case,wind,p_centre,gliding,q_parametric,q,factor"},
   {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
    "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
    "q returns"},
-  {"plot", ura_cmd_plot, 1, -1, uraC_NONE, "plot pof|grid|history SIGNAL...|sweep",
+  {"plot", ura_cmd_plot, 1, -1, uraC_NONE, "plot pof|grid|history [SIGNAL...|all]|sweep [wind|face]",
    "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
-   "the last impact, or the last sweeps (set terminal/output to write files)"},
+   "the last impact, or Q of the kept sweeps (set terminal/output to write files)"},
   {"impact", ura_cmd_impact, 2, 2, uraC_NONE, "impact DPAR DPERP",
    "simulate one impact at the offset (along, across the course; m) of the live case; columns "
    "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
@@ -48,8 +50,9 @@ const uraCmd ura_cmds[] = {
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
-  {"export", ura_cmd_export, 2, 2, uraC_NONE, "export grid|history FILE",
-   "write the last grid's cells or the last impact's histories as CSV (atomically)"},
+  {"export", ura_cmd_export, 2, 2, uraC_NONE, "export grid|history|sweep FILE",
+   "write the last grid's cells, the last impact's histories or the kept sweeps as CSV "
+   "(atomically)"},
   {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
    "write a script that recreates the live state exactly (replay: uasrisk FILE, or source)"},
   {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
@@ -80,7 +83,8 @@ int ura_cmd_help(uraCtx* c, int argc, char** argv) {
   /* the whole table */
   fprintf(c->out, "commands (help COMMAND for one; set/show NAME for parameters):\n");
   for (const uraCmd* k = ura_cmds; k->name; k++) {
-    fprintf(c->out, "  %-26s %s\n", k->usage, k->help);
+    if (strlen(k->usage) > 26) fprintf(c->out, "  %s\n  %-26s %s\n", k->usage, "", k->help);
+    else fprintf(c->out, "  %-26s %s\n", k->usage, k->help);
   }
   return 0;
 }

@@ -49,10 +49,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   if (ur_impact_run(s, &c->work, &cond, &c->st.injury, dpar, dperp, &r)) {
     return ura_fail(c, "impact %g %g: the simulation failed: %s", dpar, dperp, r.reason);
   }
-  c->have_impact = 1;
-  c->last_impact = r;
-  c->last_dpar = dpar;
-  c->last_dperp = dperp;
+  ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);
 
   /* one row */
   uraTable* t = ura_table_new(15, impact_cols);
@@ -122,6 +119,24 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
 
 /* ---- the histories of the last impact as a trace (plot history, the viewer's inspection) ---- */
 
+/* the conditions and results of the last impact, for plot titles */
+static char impact_title[400];
+
+void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
+                     double dpar, double dperp, const urImpactResult* r) {
+  c->have_impact = 1;
+  c->last_impact = *r;
+  c->last_dpar = dpar;
+  c->last_dperp = dperp;
+  char w[32];
+  if (isfinite(wind)) snprintf(w, sizeof w, "%g m/s", wind);
+  else snprintf(w, sizeof w, "?");
+  snprintf(impact_title, sizeof impact_title, "case %s, wind %s, face %g deg, %.3g m/s at %.3g "
+           "deg\nimpact at dpar %.2f m, dperp %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
+           casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle, dpar,
+           dperp, r->inj.hic15.hic, r->inj.nij.nij, r->contact ? r->p : 0.0);
+}
+
 /* derived signals first (what the injury criteria read), then every sensor channel */
 static const char* const trace_names[] = {"head_acc", "neck_fz", "neck_my", "neck_fx",
                                           "chest_defl", "abd_defl"};
@@ -190,6 +205,7 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
   tr->v = tr_store.v;
   tr->names = (const char* const*)tr_store.names;
   tr->units = (const char* const*)tr_store.units;
+  tr->title = impact_title[0] ? impact_title : NULL;
   return 0;
 }
 
@@ -211,9 +227,6 @@ int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr) {
   if (ur_impact_run(s, &c->work, &cond, &c->st.injury, cell->dpar, cell->dperp, &r)) {
     return ura_fail(c, "impact (%g, %g) failed: %s", cell->dpar, cell->dperp, r.reason);
   }
-  c->have_impact = 1;
-  c->last_impact = r;
-  c->last_dpar = cell->dpar;
-  c->last_dperp = cell->dperp;
+  ura_impact_keep(c, c->last.casename, c->last.wind, &cond, cell->dpar, cell->dperp, &r);
   return ura_last_trace(c, tr);
 }

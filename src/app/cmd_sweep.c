@@ -2,16 +2,133 @@
  * with P{F|Delta=(0,0)} x gliding area (Tables 11-13) */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "app.h"
 
+/* the settings a grid depends on that differ from the case preset, as "name=value ..." (the
+   wind or face swept, the step and the threads excepted), or "none" */
+static void changes(uraCtx* c, char* buf, size_t n) {
+  static const char* const names[] = {"speed", "angle", "pitch", "roll", "yaw", "altitude",
+                                      "mass", "area_drone", "cd_drone", "area_chute",
+                                      "cd_chute", "rho", "g", NULL};
+  uraState ref;
+  urInjuryParams inj;
+  char val[64];
+  size_t k = 0;
+  buf[0] = 0;
+
+  /* the preset: the defaults, and case C without parachute (as ura_case_load) */
+  ura_state_defaults(&ref);
+  if (!strcmp(c->st.casename, "C")) ref.descent.area_chute = 0;
+  for (int i = 0; names[i] && k < n; i++) {
+    const uraParam* p = ura_param_find(names[i]);
+    const char* a = (const char*)&c->st + p->off;
+    const char* b = (const char*)&ref + p->off;
+    int set = p->setoff ? *(const int*)((const char*)&c->st + p->setoff) : 1;
+    if (!set || *(const double*)a == *(const double*)b) continue;
+    ura_param_format(c, p, val, sizeof val);
+    k += (size_t)snprintf(buf + k, n - k, "%s%s=%s", k ? " " : "", p->name, val);
+  }
+
+  /* injury settings, and model parameters the user set */
+  ur_injury_defaults(&inj);
+  for (int i = 0; i < ur_injury_param_count() && k < n; i++) {
+    const char* name;
+    double v, v0;
+    ur_injury_param_info(i, &name, NULL, NULL);
+    ur_injury_param_get(&c->st.injury, name, &v);
+    ur_injury_param_get(&inj, name, &v0);
+    if (v != v0) k += (size_t)snprintf(buf + k, n - k, "%s%s=%.6g", k ? " " : "", name, v);
+  }
+  for (int i = 0; i < c->st.nov && k < n; i++) {
+    if (!c->st.ov_user[i]) continue;
+    k += (size_t)snprintf(buf + k, n - k, "%s%s=%.6g", k ? " " : "", c->st.ov_name[i],
+                          c->st.ov_val[i]);
+  }
+  if (!buf[0]) snprintf(buf, n, "none");
+}
+
+/* keep a sweep: it replaces the one of the same case, kind, fixed value and changes */
+static int sweep_keep(uraCtx* c, const uraSweep* s) {
+  for (int i = 0; i < c->nsweep; i++) {
+    uraSweep* o = &c->sweep[i];
+    if (!strcmp(o->casename, s->casename) && o->over_face == s->over_face &&
+        o->fixed == s->fixed && !strcmp(o->changes, s->changes)) {
+      *o = *s;
+      return 0;
+    }
+  }
+  if (c->nsweep == uraMAXSWEEPS) {
+    return ura_fail(c, "sweep: %d sweeps are kept already; 'sweep clear' forgets them",
+                    uraMAXSWEEPS);
+  }
+  uraSweep* m = realloc(c->sweep, (size_t)(c->nsweep + 1) * sizeof *m);
+  if (!m) return ura_fail(c, "sweep: out of memory");
+  c->sweep = m;
+  c->sweep[c->nsweep++] = *s;
+  return 0;
+}
+
+/* add one value to a sweep, keeping the values in increasing order */
+static void sweep_add(uraSweep* s, double x, double speed, double angle, double q) {
+  int i = s->n++;
+  for (; i > 0 && s->x[i - 1] > x; i--) {
+    s->x[i] = s->x[i - 1];
+    s->speed[i] = s->speed[i - 1];
+    s->angle[i] = s->angle[i - 1];
+    s->q[i] = s->q[i - 1];
+  }
+  s->x[i] = x;
+  s->speed[i] = speed;
+  s->angle[i] = angle;
+  s->q[i] = q;
+}
+
+/* sweep show: every kept value; columns case,sweep,wind,face,speed,angle,step,q,changes */
+static int sweep_show(uraCtx* c) {
+  static const char* const cols[] = {"case", "sweep", "wind", "face", "speed", "angle", "step",
+                                     "q", "changes"};
+  if (!c->nsweep) {
+    return ura_fail(c, "sweep show: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST'");
+  }
+  uraTable* t = ura_table_new(9, cols);
+  ura_table_note(t, "%d sweep%s kept (plot sweep draws them; sweep clear forgets them); "
+                 "changes: settings that differ from the case preset", c->nsweep,
+                 c->nsweep == 1 ? "" : "s");
+  for (int i = 0; i < c->nsweep; i++) {
+    const uraSweep* s = &c->sweep[i];
+    for (int k = 0; k < s->n; k++) {
+      ura_table_cell(t, "%s", s->casename);
+      ura_table_cell(t, "%s", s->over_face ? "face" : "wind");
+      ura_table_cell(t, "%g", s->over_face ? s->fixed : s->x[k]);
+      ura_table_cell(t, "%g", s->over_face ? s->x[k] : s->fixed);
+      ura_table_cell(t, "%.3f", s->speed[k]);
+      ura_table_cell(t, "%.2f", s->angle[k]);
+      ura_table_cell(t, "%g", s->step);
+      ura_table_cell(t, "%.4f", s->q[k]);
+      ura_table_cell(t, "%s", s->changes);
+    }
+  }
+  ura_table_print(c, t);
+  return 0;
+}
+
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"case", "wind", "face", "speed", "angle", "q"};
+  if (argc == 2 && !strcmp(argv[1], "show")) return sweep_show(c);
+  if (argc == 2 && !strcmp(argv[1], "clear")) {
+    free(c->sweep);
+    c->sweep = NULL;
+    c->nsweep = 0;
+    return 0;
+  }
   int is_wind = !strcmp(argv[1], "wind"), is_face = !strcmp(argv[1], "face");
   double v[uraMAXLIST];
-  if (!is_wind && !is_face) {
-    return ura_fail(c, "sweep: unknown '%s'; accepted: sweep wind LIST, sweep face LIST", argv[1]);
+  if ((!is_wind && !is_face) || argc != 3) {
+    return ura_fail(c, "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face "
+                    "LIST, sweep show, sweep clear", argv[1]);
   }
   int n = ura_parse_list(argv[2], v, uraMAXLIST);
   const uraParam* p = ura_param_find(is_wind ? "wind" : "face");
@@ -22,6 +139,15 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "sweep %s: '%s' is not accepted; accepted: comma-separated numbers in "
                     "[%g, %g] %s", argv[1], argv[2], p->min, p->max, p->unit);
   }
+
+  /* the sweep to keep: case, kind, the fixed condition, what differs from the preset */
+  uraSweep* s = calloc(1, sizeof *s);
+  if (!s) return ura_fail(c, "sweep: out of memory");
+  snprintf(s->casename, sizeof s->casename, "%s", c->st.casename);
+  s->over_face = is_face;
+  s->fixed = is_wind ? c->st.face : c->st.descent.wind;
+  s->step = c->st.step;
+  changes(c, s->changes, sizeof s->changes);
 
   /* one grid per value; the live wind or face is restored afterwards */
   double keep = is_wind ? c->st.descent.wind : c->st.face;
@@ -42,11 +168,22 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
       ura_table_cell(t, "%.3f", c->last.speed);
       ura_table_cell(t, "%.2f", c->last.angle);
       ura_table_cell(t, "%.4f", c->last.g->q);
+      sweep_add(s, v[i], c->last.speed, c->last.angle, c->last.g->q);
     }
   }
   if (is_wind) c->st.descent.wind = keep;
   else c->st.face = keep;
   ura_table_print(c, t);
+
+  /* keep what finished (a sweep that stopped keeps the values before the failure) */
+  if (s->n > 0) {
+    char err[uraERRLEN];
+    snprintf(err, sizeof err, "%s", c->err);
+    if (sweep_keep(c, s)) rc = -1;
+    else if (rc) snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err,
+                          s->n);
+  }
+  free(s);
   return rc;
 }
 
@@ -66,9 +203,7 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   if (ur_impact_run(s, &c->work, &cond, &c->st.injury, 0, 0, &r)) {
     return ura_fail(c, "compare: the impact at (0, 0) failed: %s", r.reason);
   }
-  c->have_impact = 1;
-  c->last_impact = r;
-  c->last_dpar = c->last_dperp = 0;
+  ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, 0, 0, &r);
   urParametricResult q;
   ur_parametric(&c->st.para, c->st.descent.mass, cond.speed, cond.angle, &q);
   if (ura_grid_run(c, 0)) return -1;

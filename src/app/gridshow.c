@@ -29,10 +29,10 @@ void ura_grid_conditions(const struct uraCtx* c, char* buf, size_t n) {
   size_t k = (size_t)snprintf(buf, n, "case %s, wind %s m/s, face %s deg",
                               r->casename[0] ? r->casename : "?", w, f);
   if (k < n && isfinite(r->speed) && r->speed > 0) {
-    k += (size_t)snprintf(buf + k, n - k, ", speed %g m/s", r->speed);
+    k += (size_t)snprintf(buf + k, n - k, ", speed %.4g m/s", r->speed);
   }
   if (k < n && isfinite(r->angle) && r->angle > 0) {
-    snprintf(buf + k, n - k, ", angle %g deg", r->angle);
+    snprintf(buf + k, n - k, ", angle %.4g deg", r->angle);
   }
 }
 

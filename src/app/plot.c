@@ -82,8 +82,12 @@ static int have_gnuplot(void) {
 static void quote(FILE* f, const char* s) {
   fputc('"', f);
   for (; s && *s; s++) {
+    if (*s == '\n') {
+      fputs("\\n", f);                  /* a line break of the text */
+      continue;
+    }
     if (*s == '"' || *s == '\\') fputc('\\', f);
-    fputc(*s == '\n' || *s == '\r' ? ' ' : *s, f);
+    fputc(*s == '\r' ? ' ' : *s, f);
   }
   fputc('"', f);
 }
@@ -165,6 +169,30 @@ static int gp_error(const char* err, char* buf, size_t n) {
   return 0;
 }
 
+/* a canvas size (pixels) a plot of several panels asks for; 0: the terminal's default */
+static int canvas_w, canvas_h;
+
+/* a file terminal named without options gets the canvas size asked for (vector terminals in
+   inches at 100 pixels per inch) */
+static void put_terminal(FILE* f, const char* term) {
+  static const char* const px[] = {"png", "pngcairo", "svg", "jpeg", "gif", NULL};
+  static const char* const in[] = {"pdfcairo", "epscairo", NULL};
+  int bare = !strpbrk(term, " \t"), kind = 0;
+  for (int i = 0; px[i]; i++) if (!strcmp(term, px[i])) kind = 1;
+  for (int i = 0; in[i]; i++) if (!strcmp(term, in[i])) kind = 2;
+  fprintf(f, "set terminal %s", term);
+  if (bare && kind == 1 && canvas_w > 0) fprintf(f, " size %d,%d", canvas_w, canvas_h);
+  if (bare && kind == 2 && canvas_w > 0) {
+    fprintf(f, " size %.2fin,%.2fin", canvas_w / 100.0, canvas_h / 100.0);
+  }
+  fputc('\n', f);
+}
+
+void ura_plot_canvas(int w, int h) {
+  canvas_w = w;
+  canvas_h = h;
+}
+
 /* the terminal and output preamble, or -1 with the error recorded */
 static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
   const char* term = c->st.terminal;
@@ -187,7 +215,7 @@ static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
     return ura_fail(c, "%s: terminal '%s' writes a file; use 'set output FILE'", who, term);
   }
   *window = !*out && kind == TERM_WINDOW;
-  if (*term) fprintf(f, "set terminal %s\n", term);
+  if (*term) put_terminal(f, term);
   if (*out) fprintf(f, "set output '%s'\n", out);
   return 0;
 }
@@ -544,10 +572,35 @@ int ura_trace_find(const uraTrace* tr, const char* name) {
   return -1;
 }
 
+/* deflections in m are shown in mm */
+static int in_mm(const uraTrace* tr, int k) {
+  const char* u = tr->units ? tr->units[k] : NULL;
+  size_t n = strlen(tr->names[k]);
+  return u && !strcmp(u, "m") && n > 5 && !strcmp(tr->names[k] + n - 5, "_defl");
+}
+
 double ura_trace_scale(const uraTrace* tr, int k, const char** unit) {
-  int g = in_g(tr, k);
-  if (unit) *unit = g ? "g" : tr->units && tr->units[k] ? tr->units[k] : "";
-  return g ? 1.0 / urGRAVITY : 1.0;
+  int g = in_g(tr, k), mm = in_mm(tr, k);
+  if (unit) *unit = g ? "g" : mm ? "mm" : tr->units && tr->units[k] ? tr->units[k] : "";
+  return g ? 1.0 / urGRAVITY : mm ? 1000.0 : 1.0;
+}
+
+/* a round tic spacing that gives about four intervals over [lo, hi] */
+static double tic_step(double lo, double hi) {
+  double span = hi - lo;
+  if (!(span > 0) || !isfinite(span)) return 0;
+  double raw = span / 4, p = pow(10, floor(log10(raw))), m = raw / p;
+  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+}
+
+/* what a derived signal is, for the legend (sensor channels are named by the model) */
+static const char* describe(const char* name) {
+  static const char* const d[][2] = {
+    {"head_acc", "head CG acceleration, resultant"}, {"neck_fz", "upper neck axial force, tension +"},
+    {"neck_my", "upper neck moment, flexion +"}, {"neck_fx", "upper neck shear force"},
+    {"chest_defl", "chest deflection"}, {"abd_defl", "abdomen deflection"}, {NULL, NULL}};
+  for (int i = 0; d[i][0]; i++) if (!strcmp(d[i][0], name)) return d[i][1];
+  return name;
 }
 
 static int write_trace(uraCtx* c, FILE* f, const void* arg) {
@@ -555,39 +608,73 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
   const uraTrace* tr = a->tr;
   int cols = a->nsel > 4 ? 2 : 1, rows = (a->nsel + cols - 1) / cols;
 
-  /* one datablock: time in ms, then the selected signals */
+  /* one datablock: time in ms, then the selected signals in their display units */
   fprintf(f, "$T << EOD\n");
   for (int i = 0; i < tr->n; i++) {
     num(f, tr->t[i] * 1000.0);
     for (int s = 0; s < a->nsel; s++) {
       int k = a->sel[s];
-      double v = tr->v[(size_t)k * tr->n + i];
       fputc(' ', f);
-      num(f, in_g(tr, k) ? v / urGRAVITY : v);
+      num(f, tr->v[(size_t)k * tr->n + i] * ura_trace_scale(tr, k, NULL));
     }
     fputc('\n', f);
   }
   fprintf(f, "EOD\n");
 
-  /* one panel per signal; the HIC window shaded on head_acc */
-  fprintf(f, "set grid\nset xlabel \"t (ms)\"\nset key off\n");
-  if (a->nsel > 1) fprintf(f, "set multiplot layout %d,%d\n", rows, cols);
+  /* the impact's conditions as the title; one panel per signal with a legend, the time axis
+     labelled under the bottom panels; the HIC window shaded on head_acc */
+  /* the legend in a band left free above the curves */
+  fprintf(f, "set grid\nset key top right box opaque noenhanced samplen 2\n"
+          "set offsets 0, 0, graph %g, 0\n", a->nsel > 1 ? 0.45 : 0.2);
+  if (a->nsel > 1) {
+    fprintf(f, "set multiplot layout %d,%d", rows, cols);
+    if (tr->title) {
+      fprintf(f, " title ");
+      quote(f, tr->title);
+      fprintf(f, " noenhanced");
+    }
+    fprintf(f, "\nset lmargin 12\nset key font \",9\"\n");
+  } else if (tr->title) {
+    set_text(f, "title", tr->title);
+  }
   for (int s = 0; s < a->nsel; s++) {
     int k = a->sel[s];
-    const char* unit = in_g(tr, k) ? "g" : tr->units && tr->units[k] ? tr->units[k] : "";
+    const char* unit;
+    double sc = ura_trace_scale(tr, k, &unit), lo = INFINITY, hi = -INFINITY;
     char label[128];
     snprintf(label, sizeof label, "%s%s%s%s", tr->names[k], *unit ? " (" : "", unit,
              *unit ? ")" : "");
     set_text(f, "ylabel", label);
-    fprintf(f, "unset object\nunset title\n");
-    if (!strcmp(tr->names[k], "head_acc") && isfinite(a->t1) && a->t2 > a->t1) {
-      char title[128];
-      snprintf(title, sizeof title, "HIC15 window %.2f-%.2f ms", a->t1 * 1e3, a->t2 * 1e3);
+    if (a->nsel == 1 || s >= a->nsel - cols) fprintf(f, "set xlabel \"t (ms from tau)\"\n");
+    else fprintf(f, "unset xlabel\n");
+
+    /* in small panels, about four tic intervals */
+    for (int i = 0; i < tr->n; i++) {
+      double v = tr->v[(size_t)k * tr->n + i] * sc;
+      if (isfinite(v)) {
+        lo = fmin(lo, v);
+        hi = fmax(hi, v);
+      }
+    }
+    double dy = a->nsel > 1 ? tic_step(lo, hi) : 0;
+    if (dy > 0) fprintf(f, "set ytics %.9g\n", dy);
+    else fprintf(f, "set ytics autofreq\n");
+
+    fprintf(f, "unset object\n");
+    int hic = !strcmp(tr->names[k], "head_acc") && isfinite(a->t1) && a->t2 > a->t1;
+    if (hic) {
       fprintf(f, "set object 1 rect from %.9g, graph 0 to %.9g, graph 1 behind "
               "fc rgb '#ffd580' fs solid 0.6 noborder\n", a->t1 * 1e3, a->t2 * 1e3);
-      set_text(f, "title", title);
     }
-    fprintf(f, "plot $T using 1:%d with lines lw 2\n", s + 2);
+    fprintf(f, "plot $T using 1:%d with lines lw 2 title ", s + 2);
+    quote(f, describe(tr->names[k]));
+    if (hic) {
+      char key[128];
+      snprintf(key, sizeof key, "HIC15 window %.2f-%.2f ms", a->t1 * 1e3, a->t2 * 1e3);
+      fprintf(f, ", keyentry with boxes fc rgb '#ffd580' fs solid 0.6 noborder title ");
+      quote(f, key);
+    }
+    fprintf(f, "\n");
   }
   if (a->nsel > 1) fprintf(f, "unset multiplot\n");
   return 0;
@@ -600,27 +687,40 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
     return ura_fail(c, "%s: no impact yet", who);
   }
 
-  /* the selected signals by name; none named: all */
-  int* sel = malloc((size_t)(nsel > 0 ? nsel : tr->nsig) * sizeof *sel);
+  /* the selected signals by name; none named: the derived ones (what the injury criteria
+     read), or every signal when the trace has none of them; "all": every signal */
+  int every = nsel == 1 && !strcmp(names[0], "all");
+  int* sel = malloc((size_t)(nsel > 0 ? nsel : 0) * sizeof *sel + (size_t)tr->nsig * sizeof *sel);
   if (!sel) return ura_fail(c, "%s: out of memory", who);
   int n = 0, head = -1;
-  for (int s = 0; s < (nsel > 0 ? nsel : tr->nsig); s++) {
-    int k = s;
-    if (nsel > 0) {
-      for (k = 0; k < tr->nsig && strcmp(tr->names[k], names[s]); k++) {}
-      if (k == tr->nsig) {
-        char list[512];
-        size_t m = 0;
-        list[0] = 0;
-        for (int j = 0; j < tr->nsig && m < sizeof list; j++) {
-          m += (size_t)snprintf(list + m, sizeof list - m, "%s%s", j ? ", " : "", tr->names[j]);
-        }
-        free(sel);
-        return ura_fail(c, "%s: no signal '%s'; signals: %s", who, names[s], list);
+  if (nsel == 0) {
+    for (int k = 0; k < tr->nsig; k++) {
+      if (describe(tr->names[k]) != tr->names[k] && ura_trace_find(tr, tr->names[k]) == k) {
+        sel[n++] = k;
       }
     }
-    if (!strcmp(tr->names[k], "head_acc")) head = k;
+  }
+  if (every || n == 0) {
+    for (int k = 0; k < tr->nsig && nsel == 0; k++) sel[n++] = k;
+    for (int k = 0; k < tr->nsig && every; k++) sel[n++] = k;
+  }
+  for (int s = 0; s < nsel && !every; s++) {
+    int k;
+    for (k = 0; k < tr->nsig && strcmp(tr->names[k], names[s]); k++) {}
+    if (k == tr->nsig) {
+      char list[512];
+      size_t m = 0;
+      list[0] = 0;
+      for (int j = 0; j < tr->nsig && m < sizeof list; j++) {
+        m += (size_t)snprintf(list + m, sizeof list - m, "%s%s", j ? ", " : "", tr->names[j]);
+      }
+      free(sel);
+      return ura_fail(c, "%s: no signal '%s'; signals: %s (or all)", who, names[s], list);
+    }
     sel[n++] = k;
+  }
+  for (int s = 0; s < n; s++) {
+    if (!strcmp(tr->names[sel[s]], "head_acc")) head = sel[s];
   }
 
   /* HIC15 window from the head acceleration when not given */
@@ -641,7 +741,13 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
     }
   }
   traceargs ta = {tr, n, sel, t1, t2};
+  if (n > 1) {
+    int cols = n > 4 ? 2 : 1, rows = (n + cols - 1) / cols;
+    canvas_w = cols == 1 ? 800 : 1100;
+    canvas_h = 80 + 230 * rows;
+  }
   int rc = run_script(c, who, write_trace, &ta);
+  canvas_w = canvas_h = 0;
   free(sel);
   return rc;
 }
@@ -659,10 +765,10 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
     if (ura_last_trace(c, &tr)) return ura_fail(c, "plot history: no impact yet; run 'impact'");
     return ura_plot_trace(c, &tr, argc - 2, (const char* const*)argv + 2);
   }
+  if (!strcmp(what, "sweep") && argc <= 3) return ura_plot_sweep(c, argc == 3 ? argv[2] : NULL);
   if (argc > 2) return ura_fail(c, "plot %s: takes no arguments", what);
   if (!strcmp(what, "pof")) return ura_plot_pof(c, &c->st.injury);
   if (!strcmp(what, "grid")) return ura_plot_grid(c);
-  if (!strcmp(what, "sweep")) return ura_fail(c, "plot sweep: no sweep yet");
-  return ura_fail(c, "plot: unknown plot '%s'; accepted: pof, grid, history SIGNAL..., sweep",
-                  what);
+  return ura_fail(c, "plot: unknown plot '%s'; accepted: pof, grid, history SIGNAL..., sweep "
+                  "[wind|face]", what);
 }

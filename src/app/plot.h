@@ -27,6 +27,10 @@ typedef struct {
    output settings; who names the command in messages ("plot grid") */
 int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len);
 
+/* the canvas size (pixels) the next plot asks of a file terminal named without options (png,
+   svg, pdfcairo, ...); 0, 0: the terminal's default */
+void ura_plot_canvas(int w, int h);
+
 /* curves in one panel: title, axis labels (NULL: none) */
 int ura_plot_xy(uraCtx* c, const char* who, const char* title, const char* xlabel,
                 const char* ylabel, int nser, const uraSeries* s);
@@ -37,18 +41,26 @@ int ura_plot_grid(uraCtx* c);
 /* the PoF curves of HIC, Nij (with its AIS curves) and VC; p NULL: the documented defaults */
 int ura_plot_pof(uraCtx* c, const urInjuryParams* p);
 
-/* time histories of one impact against time in ms, one panel per signal; nsel 0: every signal.
-   head_acc in m/s^2 is shown in g, with its HIC15 window shaded (computed from the signal) */
+/* time histories of one impact against time in ms, one panel per signal with a legend, the
+   trace's title over them; nsel 0: the six derived signals the injury criteria read (head_acc,
+   neck_fz, neck_my, neck_fx, chest_defl, abd_defl; every signal when the trace has none of
+   them), the one name "all": every signal. head_acc in m/s^2 is shown in g, with its HIC15
+   window shaded (computed from the signal), deflections in mm */
 int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names);
 
 /* the same, with the HIC window t1-t2 (s) given (NAN: computed from the signal) */
 int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names,
                        double t1, double t2);
 
+/* Q of the kept sweeps (c->sweep) against wind or face, one curve per sweep; kind "wind" or
+   "face" for one panel, NULL for every kind kept (plot_sweep.c) */
+int ura_plot_sweep(uraCtx* c, const char* kind);
+
 /* index of a signal of a trace by name, or -1 */
 int ura_trace_find(const uraTrace* tr, const char* name);
 
-/* factor that shows signal k in its display unit (head_acc in m/s^2: 1/g), and that unit */
+/* factor that shows signal k in its display unit (head_acc in m/s^2: 1/g; deflections in m:
+   1000, mm), and that unit */
 double ura_trace_scale(const uraTrace* tr, int k, const char** unit);
 
 #endif

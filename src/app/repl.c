@@ -8,49 +8,131 @@
 
 #include "app.h"
 
-/* what the word being completed is: a command, or the argument of a command */
-static uraCompl compl_kind;
+/* the candidates for the word being completed, gathered by complete() and filtered by gen() */
+#define MAXCAND 512
+static char cand[MAXCAND][64];
+static int ncand;
+static uraCtx* repl_ctx;           /* for the model's parameter names */
 
-/* generator over the names of the current kind */
+static void add(const char* name) {
+  if (ncand < MAXCAND && name && strlen(name) < sizeof cand[0]) strcpy(cand[ncand++], name);
+}
+
+/* generator over the candidates that start with text */
 static char* gen(const char* text, int state) {
   static int i;
   size_t n = strlen(text);
   if (!state) i = 0;
-  for (;;) {
-    const char* name = NULL;
-    switch (compl_kind) {
-    case uraC_COMMAND: name = ura_cmds[i].name; break;
-    case uraC_PARAM: name = ura_params[i].name; break;
-    case uraC_CASE: name = ura_case_names[i]; break;
-    case uraC_POF: name = ura_pof_names[i]; break;
-    default: return NULL;
-    }
-    if (!name) return NULL;
-    i++;
+  while (i < ncand) {
+    const char* name = cand[i++];
     if (!strncmp(name, text, n)) return strdup(name);
+  }
+  return NULL;
+}
+
+/* the keywords a usage text accepts at its first place: lowercase words at bracket depth 0 that
+   begin the text or follow '|' ("pof|grid|history [SIGNAL...|all]|sweep [wind|face]": pof,
+   grid, history, sweep); a text that is one bracketed group is opened first. With after set,
+   the text that follows that keyword (up to the next '|' at depth 0) is read instead. */
+static void keywords(const char* u, const char* after) {
+  char text[256];
+  snprintf(text, sizeof text, "%s", u);
+  for (int pass = after ? 0 : 1; pass < 2; pass++) {
+    char* t = text;
+    size_t n = strlen(t);
+    if (n >= 2 && t[0] == '[' && t[n - 1] == ']' && !strchr(t + 1, '[')) {
+      t[n - 1] = 0;
+      t++;
+    }
+    int depth = 0;
+    for (char* p = t; *p; p++) {
+      if (*p == '[') depth++;
+      if (*p == ']') depth--;
+      int starts = depth == 0 && (p == t || p[-1] == '|') && *p >= 'a' && *p <= 'z';
+      if (!starts) continue;
+      size_t k = strspn(p, "abcdefghijklmnopqrstuvwxyz_0123456789");
+      if (pass == 1) {
+        char w[64];
+        snprintf(w, sizeof w, "%.*s", (int)k, p);
+        add(w);
+      } else if (strlen(after) == k && !strncmp(p, after, k)) {
+        /* the rest of this alternative becomes the text */
+        char* q = p + k;
+        while (*q == ' ') q++;
+        int d = 0;
+        char* e = q;
+        for (; *e && !(d == 0 && *e == '|'); e++) {
+          if (*e == '[') d++;
+          if (*e == ']') d--;
+        }
+        memmove(text, q, (size_t)(e - q));
+        text[e - q] = 0;
+        break;
+      }
+      p += k - 1;
+    }
+    if (pass == 0 && !strcmp(text, u)) return;   /* after is not a keyword here */
   }
 }
 
-static char** complete(const char* text, int start, int end) {
-  /* first word: commands; later words: what the command's table entry says */
-  char first[64] = "";
-  int k = 0;
-  const char* s = rl_line_buffer;
-  while (*s == ' ') s++;
-  while (*s && *s != ' ' && k < 63) first[k++] = *s++;
-  first[k] = 0;
-  int is_first = (s - rl_line_buffer) >= start;
+/* parameter names: the case state's, the injury settings', the model's */
+static void add_params(void) {
+  const char* name;
+  for (int i = 0; ura_params[i].name; i++) add(ura_params[i].name);
+  for (int i = 0; ur_injury_param_info(i, &name, NULL, NULL) == 0; i++) add(name);
+  const urModel* m = repl_ctx ? ura_model(repl_ctx) : NULL;
+  for (int i = 0; m && i < m->nparam; i++) add(m->param[i].name);
+}
 
+static char** complete(const char* text, int start, int end) {
+  /* the words before the one being completed, in the last command of the line */
+  char words[4][64] = {"", "", "", ""};
+  int nw = 0;
+  const char* s = rl_line_buffer;
+  for (const char* p = rl_line_buffer; p < rl_line_buffer + start; p++) {
+    if (*p == ';') s = p + 1;
+  }
+  while (s < rl_line_buffer + start) {
+    while (s < rl_line_buffer + start && *s == ' ') s++;
+    size_t k = strcspn(s, " ");
+    if (s + k > rl_line_buffer + start || s >= rl_line_buffer + start) break;
+    if (nw < 4) snprintf(words[nw], sizeof words[0], "%.*s", (int)k, s);
+    nw++;
+    s += k;
+  }
+
+  /* first word: commands; then what the command's table entry says */
+  ncand = 0;
   rl_attempted_completion_over = 1;
-  if (is_first) {
-    compl_kind = uraC_COMMAND;
-  } else {
-    const uraCmd* cmd = ura_cmd_find(first);
-    compl_kind = cmd ? cmd->compl : uraC_NONE;
-    if (compl_kind == uraC_FILE || compl_kind == uraC_NONE) {
-      rl_attempted_completion_over = 0;   /* readline's file-name completion */
-      return NULL;
+  const uraCmd* cmd = nw ? ura_cmd_find(words[0]) : NULL;
+  const char* args = cmd ? cmd->usage + strlen(cmd->name) : "";
+  while (*args == ' ') args++;
+  if (nw == 0) {
+    for (int i = 0; ura_cmds[i].name; i++) add(ura_cmds[i].name);
+  } else if (!cmd) {
+    return NULL;
+  } else if (nw == 1) {
+    switch (cmd->compl) {
+    case uraC_COMMAND: for (int i = 0; ura_cmds[i].name; i++) add(ura_cmds[i].name); break;
+    case uraC_PARAM: add_params(); break;
+    case uraC_CASE: for (int i = 0; ura_case_names[i]; i++) add(ura_case_names[i]); break;
+    case uraC_POF: for (int i = 0; ura_pof_names[i]; i++) add(ura_pof_names[i]); break;
+    case uraC_FILE: break;
+    case uraC_NONE: keywords(args, NULL); break;
     }
+  } else if (nw == 2 && cmd->compl == uraC_PARAM && !strcmp(cmd->name, "set")) {
+    const uraParam* p = ura_param_find(words[1]);
+    for (int i = 0; p && p->kind == uraP_ENUM && p->choices[i]; i++) add(p->choices[i]);
+    if (p && p->setoff) add("auto");
+  } else if (nw == 2 && cmd->compl == uraC_NONE) {
+    keywords(args, words[1]);
+  }
+
+  /* no names: readline's file-name completion (not for the value of a parameter) */
+  if (!ncand && cmd && cmd->compl == uraC_PARAM && nw >= 2) return NULL;
+  if (!ncand) {
+    rl_attempted_completion_over = 0;
+    return NULL;
   }
   return rl_completion_matches(text, gen);
 }
@@ -67,6 +149,7 @@ static char* history_path(void) {
 int ura_repl(uraCtx* c) {
   char* hist = history_path();
   rl_readline_name = "uasrisk";
+  repl_ctx = c;
   rl_attempted_completion_function = complete;
   if (hist) read_history(hist);
   c->interactive = 1;

@@ -287,13 +287,15 @@ int ura_case_load(uraCtx* c, const char* name) {
   }
   if (k < 0) return ura_fail(c, "case: unknown case '%s'; accepted: A, B, C, A1 or A2", name);
 
-  /* keep the live wind, face, lists and output settings; everything else from the paper */
+  /* keep the live wind, face, lists, grid step and output settings; everything else from the
+     paper */
   uraState keep = c->st, *s = &c->st;
   ura_state_defaults(s);
   s->descent.wind = keep.descent.wind;
   s->face = keep.face;
   memcpy(s->winds, keep.winds, sizeof s->winds);
   s->threads = keep.threads;
+  s->step = keep.step;
   s->nwinds = keep.nwinds;
   s->format = keep.format;
   strcpy(s->terminal, keep.terminal);
