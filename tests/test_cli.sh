@@ -156,4 +156,14 @@ for k in $cmds; do
   check "man documents $k" grep -q "^\.BI* $k\( \|\$\)" man/uasrisk.1
 done
 
+
+# quotes: single or double group a word (gnuplot's set output 'f.png'); the other kind inside;
+# ';' and '#' inside quotes are text; an unterminated quote is one clear error
+run -c "set output '/tmp/a b;#.png'; show output"
+check quote_single cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^output  *\/tmp\/a b;#\.png$"'
+run -c 'set output "/tmp/it'"'"'s.png"; show output'
+check quote_double_holds_single cond '[ "$RC" -eq 0 ] && has "$TMP/out" "it.s\.png$"'
+run -c "set output '/tmp/x.png"
+check quote_unterminated cond '[ "$RC" -eq 1 ] && has "$TMP/err" "unterminated quote"'
+
 finish

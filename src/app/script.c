@@ -33,15 +33,17 @@ void ura_locate(uraCtx* c, const char* name, int lineno) {
   c->err_located = 1;
 }
 
-/* split one command into words in place; double quotes group; returns argc or -1 */
+/* split one command into words in place; double or single quotes group (as gnuplot's
+   set output 'file.png'); returns argc or -1 */
 static int split_words(char* s, char** argv, uraCtx* c) {
   int argc = 0;
   while (*s) {
     while (isspace((unsigned char)*s)) s++;
     if (!*s) break;
     if (argc == MAXARGS) return ura_fail(c, "too many words in one command (at most %d)", MAXARGS);
-    if (*s == '"') {
-      char* end = strchr(++s, '"');
+    if (*s == '"' || *s == '\'') {
+      char q = *s;
+      char* end = strchr(++s, q);
       if (!end) return ura_fail(c, "unterminated quote");
       *end = 0;
       argv[argc++] = s;
@@ -77,11 +79,13 @@ int ura_run_line(uraCtx* c, const char* line) {
   memcpy(buf, line, n + 1);
 
   /* cut the comment and split at ';' (both outside quotes), running each piece */
-  int rc = 0, inq = 0;
+  int rc = 0;
+  char inq = 0;                    /* the open quote character, or 0 */
   char* start = buf;
   for (char* p = buf;; p++) {
     int end = (*p == 0) || (!inq && *p == '#');
-    if (*p == '"') inq = !inq;
+    if (!inq && (*p == '"' || *p == '\'')) inq = *p;
+    else if (inq && *p == inq) inq = 0;
     if (end || (!inq && *p == ';')) {
       char save = *p;
       *p = 0;
