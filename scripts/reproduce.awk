@@ -157,7 +157,8 @@ function header(    wall) {
   }
   m("| run | |")
   m("|---|---|")
-  m("| date | " RUN["date"] " |")
+  if ("started" in RUN) m("| started | " RUN["started"] " |")
+  m("| finished | " RUN["date"] " |")
   m("| git commit | " RUN["commit"] " |")
   m("| machine | " RUN["machine"] " |")
   m("| nproc | " RUN["nproc"] " (load average at the start: " RUN["load"] "; the machine is shared, so times are noisy) |")
@@ -183,7 +184,8 @@ function summary(    i) {
   m("- Q rises with wind 0 -> 4 -> 10 m/s (ours): " RISE3 "; over every 2 m/s step: " RISE6 ".")
   m("- Every printed Q of the paper (all tables, repeats included): " QIN " of " QN " within a factor " TOL ".")
   m("- The paper's grids: captions against the full-plane sums of the printed cells: " MISMATCH ".")
-  m("- Footprint overlap with the paper's grids (cells with P > 0 in both / in either): " FOOT ".")
+  m("- Footprint overlap with the paper's grids (cells with P > 0 in both / in either; a shift is a")
+  m("  diagnostic, not applied): " FOOT ".")
   m("- Repeated computations: " REPEATS ".")
   m("")
 }
@@ -474,12 +476,15 @@ function grids_section(    f, fp, l, a, t, c, w, i, cap, o, full, half) {
   p("*footprint* is P > 0 at that precision: paper P > 0, ours P >= 0.05 %. *Touch* counts our cells")
   p("where the drone touches the person at all. MAD, bias (ours - paper) and max |diff| are in P")
   p("(0..1) over the union of the two footprints. Per-cell values in `cells-tableNN.csv`, the")
-  p("difference map (ours - paper, percent, the paper's layout) in `diffmap-tableNN.csv`.")
+  p("difference map (ours - paper, percent, the paper's layout) in `diffmap-tableNN.csv`. The last")
+  p("two columns are diagnostics only (nothing is shifted in the comparison): the mean Delta_par of")
+  p("each footprint, and the whole-row shift of our footprint along the course (m, + = forward)")
+  p("that would overlap the paper's best.")
   p("")
-  p("| table | case | wind | both | only ours | only paper | neither | footprint overlap (both / union) | ours touch | MAD | bias | max abs diff (at dpar, dperp) |")
-  p("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+  p("| table | case | wind | both | only ours | only paper | neither | footprint overlap (both / union) | ours touch | MAD | bias | max abs diff (at dpar, dperp) | footprint centre dpar, ours / paper | along shift of ours for the best overlap (overlap) |")
+  p("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|")
   fp = out "/footprint.csv"
-  csvline(fp, "table,case,wind,both,only_ours,only_paper,neither,overlap,ours_touch,mad,bias,max_abs_diff,max_at_dpar,max_at_dperp")
+  csvline(fp, "table,case,wind,both,only_ours,only_paper,neither,overlap,ours_touch,mad,bias,max_abs_diff,max_at_dpar,max_at_dperp,centre_ours,centre_paper,best_shift,best_overlap")
   FOOT = ""
   for (i = 1; i <= NG; i++) compare_grid(i, fp)
   close(fp)
@@ -566,11 +571,11 @@ function sortnum(v, n, dir,    i, j, x) {
   }
 }
 
-function compare_grid(i, fp,    key, t, c, w, cf, dm, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp) {
+function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp, co, ca, k, kb, nb, ob, sh) {
   t = GT[i]; c = GC[i]; w = GW[i]
   key = c "|" w "|0"
   if (!(key in HAVE)) {
-    p("| " t " | " c " | " w " | no cells of ours for this case and wind in the run |||||||||")
+    p("| " t " | " c " | " w " | no cells of ours for this case and wind in the run |||||||||||")
     return
   }
   lattice(i, key)
@@ -580,7 +585,9 @@ function compare_grid(i, fp,    key, t, c, w, cf, dm, r, s, par, perp, po, pa, f
   line = "along"
   for (s = 1; s <= NPERP; s++) line = line "," LPERP[s]
   csvline(dm, line)
-  both = oo = op = nn = 0; mad = bias = mx = 0; touch = 0
+  both = oo = op = nn = 0; mad = bias = mx = 0; touch = 0; co = ca = 0
+  delete FO
+  delete FA
   for (r = 1; r <= NPAR; r++) {
     par = LPAR[r]
     line = par
@@ -593,6 +600,8 @@ function compare_grid(i, fp,    key, t, c, w, cf, dm, r, s, par, perp, po, pa, f
       fa = pa > 0
       d = po - pa
       CH[i, r, s] = fo && fa ? (d > 0.1 ? "+" : d < -0.1 ? "-" : "=") : fo ? "o" : fa ? "p" : "."
+      if (fo) { FO[r, s] = 1; co += par }
+      if (fa) { FA[r, s] = 1; ca += par }
       if (fo && fa) both++
       else if (fo) oo++
       else if (fa) op++
@@ -615,13 +624,30 @@ function compare_grid(i, fp,    key, t, c, w, cf, dm, r, s, par, perp, po, pa, f
   for (r = 1; r <= NPAR; r++) MPAR[i, r] = LPAR[r]
   for (s = 1; s <= NPERP; s++) MPERP[i, s] = LPERP[s]
   un = both + oo + op
-  FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-")
+
+  # diagnostic: the along shift of our footprint (whole rows) that overlaps the paper's best
+  kb = 0; ob = un ? both / un : 0
+  for (k = -60; k <= 60; k++) {
+    nb = 0
+    for (sh in FO) {
+      split(sh, a, SUBSEP)
+      if (((a[1] - k, a[2]) in FA)) nb++
+    }
+    if (un && nb / (oo + op + 2 * both - nb) > ob + 1e-12) { ob = nb / (oo + op + 2 * both - nb); kb = k }
+  }
+  sh = sprintf("%+.2f", kb * (LPAR[1] - LPAR[2]))
+  FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-") \
+         (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along)" : "")
   p("| " t " | " c " | " w " | " both " | " oo " | " op " | " nn " | " \
     (un ? sprintf("%.2f", both / un) : "-") " | " touch " | " (un ? sprintf("%.3f", mad / un) : "-") " | " \
-    (un ? sprintf("%+.3f", bias / un) : "-") " | " sprintf("%.3f", mx) (mx > 0 ? " (" mpar ", " mperp ")" : "") " |")
+    (un ? sprintf("%+.3f", bias / un) : "-") " | " sprintf("%.3f", mx) (mx > 0 ? " (" mpar ", " mperp ")" : "") " | " \
+    centre(co, both + oo) " / " centre(ca, both + op) " | " sh " (" sprintf("%.2f", ob) ") |")
   csvline(fp, t "," c "," w "," both "," oo "," op "," nn "," (un ? sprintf("%.3f", both / un) : "") "," touch "," \
-          (un ? sprintf("%.4f", mad / un) : "") "," (un ? sprintf("%.4f", bias / un) : "") "," sprintf("%.4f", mx) "," mpar "," mperp)
+          (un ? sprintf("%.4f", mad / un) : "") "," (un ? sprintf("%.4f", bias / un) : "") "," sprintf("%.4f", mx) "," mpar "," mperp "," \
+          centre(co, both + oo) "," centre(ca, both + op) "," sh "," sprintf("%.3f", ob))
 }
+
+function centre(sum, n) { return n ? sprintf("%+.2f", sum / n) : "-" }
 
 function map_grid(i,    r, s, line) {
   if (!(i in GR)) return

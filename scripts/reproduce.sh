@@ -66,6 +66,7 @@ if [ "$norun" -eq 0 ]; then
   load=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
   echo "reproduce: running $ses ($total grids) into $out/raw.csv; progress every minute"
 
+  started=$(date -u '+%Y-%m-%d %H:%M:%S UTC')
   start=$(date +%s)
   "$UASRISK" -c 'set format csv' "$ses" >"$out/raw.csv" 2>"$out/raw.err" &
   pid=$!
@@ -81,6 +82,7 @@ if [ "$norun" -eq 0 ]; then
   rc=$?
   wall=$(($(date +%s) - start))
   {
+    echo "started=$started"
     echo "date=$(date -u '+%Y-%m-%d %H:%M:%S UTC')"
     echo "commit=$commit"
     echo "machine=$(uname -srm)${cpu:+, $cpu}"

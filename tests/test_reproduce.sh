@@ -17,7 +17,8 @@ printf '%s\n' 'date=2000-01-01 00:00:00 UTC' 'commit=abc1234' 'machine=test' 'np
 # ours: Table 2's first row as printed; Table 17 as printed except A at 0 m/s (0.0581, the
 # full-plane sum of Table 4) and A1 at 10 m/s (0.700 > A's 0.677: the ordering fails at 10 m/s);
 # C at 0 m/s a second time with another value; Table 4's grid as ours, with (0, 0) raised to
-# P = 1 and one cell outside the paper's table (0.9, 0) with P = 0.2
+# P = 1 and one cell outside the paper's table (0.9, 0) with P = 0.2; Table 8's grid as ours,
+# moved 0.25 m forward
 {
   printf 'case,wind,speed,angle\nB,0,7.5,90.0\n'
   printf 'case,wind,face,speed,angle,q\n'
@@ -30,6 +31,8 @@ printf '%s\n' 'date=2000-01-01 00:00:00 UTC' 'commit=abc1234' 'machine=test' 'np
   "$UASRISK" -c "set format csv; grid load $G/table04_caseA_wind0.csv; grid cells" |
     sed 's/^0\.000,0\.000,\([01]\),\(.*\),[^,]*$/0.000,0.000,1,\2,1/'
   printf '0.900,0.000,1,0,0,0,0,0.2\n'
+  "$UASRISK" -c "set format csv; grid load $G/table08_caseA_wind10.csv; grid cells" |
+    awk -F, -v OFS=, '/^-?[0-9]/ { $1 = sprintf("%.3f", $1 + 0.25) } { print }'
 } >"$R/raw.csv"
 run_report() { sh scripts/reproduce.sh -n -o "$R" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
 run_report
@@ -72,6 +75,8 @@ check footprint_max awk -F, -v pos="$pos" \
 check cells_outside has "$R/cells-table04.csv" '^0.90,0.00,0.2,0,0.2,ours$'
 check diffmap_row has "$R/diffmap-table04.csv" '^0.00,94.7,0.0,'
 check footprint_absent has "$R/report.md" '^| 5 | B | 0 | no cells of ours'
+check footprint_shift awk -F, '$1 == 8 { f = 1; if ($8 > 0.5 || ($15 - $16 - 0.25)^2 > 1e-6 || $17 != "-0.25" || $18 != "1.000") exit 1 }
+  END { exit !f }' "$R/footprint.csv"
 
 # a value computed twice with different results is reported
 check repeats_differ cond 'has "$R/report.md" "SOME DIFFER" && has "$R/report.md" "^- q of case C, wind 0, face 0: 0.849 then 0.8500$"'
