@@ -2,7 +2,9 @@
 #   make          build ./uasrisk and build/libuasrisk.a
 #   make run      set up, build, start the workbench (replays sessions/demo.ses without a terminal)
 #   make check    set up, build, run every test
-#   make bench    benchmarks (not part of check)
+#   make bench    benchmarks (not part of check); REPRODUCE=0 leaves out the timing of reproduce
+#   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
+#                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make install PREFIX=/usr/local
 
 PREFIX  ?= /usr/local
@@ -31,7 +33,7 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasrisk.a
 APPLIB  = $(BUILD)/libuasrisk-app.a
 
-.PHONY: all deps run check test bench install clean
+.PHONY: all deps run check test bench reproduce install clean
 all: uasrisk $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -72,8 +74,18 @@ check: all $(TEST_BIN)
 
 test: check
 
+REPRODUCE ?= 1
 bench: all $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do $$b || exit 1; done
+	@if [ "$(REPRODUCE)" != 0 ]; then t0=$$(date +%s); \
+	  echo "bench: timing make reproduce (many minutes; progress in $(BUILD)/reproduce.log)"; \
+	  sh scripts/reproduce.sh >$(BUILD)/reproduce.log 2>&1 || { cat $(BUILD)/reproduce.log; exit 1; }; \
+	  echo "bench: make reproduce: $$(($$(date +%s) - t0)) s wall (target 120 s; report in $(BUILD)/reproduce/report.md)"; \
+	else echo "bench: make reproduce not timed (REPRODUCE=0)"; fi
+
+# the paper's results side by side with ours (scripts/reproduce.sh); minutes of grids
+reproduce: all
+	@sh scripts/reproduce.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/reproduce-step$(STEP))
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/uasrisk \

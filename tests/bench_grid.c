@@ -1,0 +1,139 @@
+/* bench_grid.c: cost of whole offset grids through the workbench (uraCtx, as the 'grid' command
+ * runs them): wall seconds per zero-wind grid for cases A, B and C and per 10 m/s grid of case B,
+ * simulated impacts per second, and the speed-up from 1 to 2 worker threads (whose grids must be
+ * identical). The set-up of a case (model compile, settled stance) is timed apart. The targets of
+ * issue #6 are 1 s per zero-wind grid and 5 ms of CPU per impact.
+ *   bench_grid [STEP]     grid pitch in m, default 0.05 (the paper's)
+ * The machine may be shared: wall times are noisy, and the load average is printed with them. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../src/app/app.h"
+
+static double now(double* cpu) {
+  struct timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  *cpu = t.tv_sec + 1e-9 * t.tv_nsec;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+typedef struct {
+  double setup, wall, cpu, q;       /* model and settled stance; the grid itself; CPU of the grid */
+  int impacts, cells;
+} result;
+
+/* one grid of the given set-up; the last grid stays in c->last */
+static int grid(uraCtx* c, const char* setup, double step, int threads, result* r) {
+  char line[256];
+  snprintf(line, sizeof line, "%s; set step %g; set threads %d", setup, step, threads);
+  if (ura_run_line(c, line)) {
+    fprintf(stderr, "bench_grid: '%s': %s\n", line, c->err);
+    return -1;
+  }
+  /* the case's model and settled stance first ('grid' builds them when stale), timed apart */
+  double cpu0, cpu1;
+  double t0 = now(&cpu0);
+  if (!ura_setup(c)) {
+    fprintf(stderr, "bench_grid: %s: %s\n", setup, c->err);
+    return -1;
+  }
+  r->setup = now(&cpu1) - t0;
+  t0 = now(&cpu0);
+  if (ura_grid_run(c, 1) || !c->last.g->complete) {
+    fprintf(stderr, "bench_grid: %s: %s\n", setup, c->err[0] ? c->err : "failed cells");
+    return -1;
+  }
+  r->wall = now(&cpu1) - t0;
+  r->cpu = cpu1 - cpu0;
+  r->q = c->last.g->q;
+  r->impacts = c->last.g->nsimulated;
+  r->cells = c->last.g->nrow * c->last.g->ncol;
+  return 0;
+}
+
+static void report(const char* name, const result* r) {
+  printf("  %-10s %6.2f s wall (+%5.2f s set-up)  %5d cells  %4d impacts  %6.1f impacts/s  "
+         "%5.1f ms CPU/impact  Q %.4f m^2\n", name, r->wall, r->setup, r->cells, r->impacts,
+         r->impacts / r->wall, 1e3 * r->cpu / (r->impacts ? r->impacts : 1), r->q);
+}
+
+/* every cell's results, for comparing two grids exactly */
+static int same_cells(const urGrid* a, const urGrid* b) {
+  if (a->nrow != b->nrow || a->ncol != b->ncol) return 0;
+  for (int k = 0; k < a->nrow * a->ncol; k++) {
+    const urCell *x = &a->cell[k], *y = &b->cell[k];
+    if (x->status != y->status || x->contact != y->contact || x->p != y->p ||
+        x->hic15 != y->hic15 || x->nij != y->nij || x->vc_thorax != y->vc_thorax ||
+        x->vc_abdomen != y->vc_abdomen) {
+      return 0;
+    }
+  }
+  return 1;
+}
+
+int main(int argc, char** argv) {
+  double step = argc > 1 ? atof(argv[1]) : 0.05;
+  static uraCtx ctx;
+  uraCtx* c = &ctx;
+  ura_init(c);
+  c->out = fopen("/dev/null", "w");
+  if (!c->model || !c->out) {
+    fprintf(stderr, "bench_grid: no model: %s\n", c->err);
+    return 1;
+  }
+  long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
+  double load[3] = {0, 0, 0};
+  FILE* f = fopen("/proc/loadavg", "r");
+  if (f) {
+    if (fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3) load[0] = -1;
+    fclose(f);
+  }
+  int nt = ncpu >= 2 ? 2 : 1;
+  printf("bench_grid: grids of step %g m, %d worker threads, %ld CPUs online, load average "
+         "%.2f %.2f %.2f\n", step, nt, ncpu, load[0], load[1], load[2]);
+
+  /* zero-wind grids of A, B, C and the 10 m/s grid of B, face 0 */
+  static const char* const names[] = {"A, 0 m/s", "B, 0 m/s", "C, 0 m/s", "B, 10 m/s"};
+  static const char* const setups[] = {"set wind 0; set face 0; case A",
+                                       "set wind 0; set face 0; case B",
+                                       "set wind 0; set face 0; case C",
+                                       "set wind 10; set face 0; case B"};
+  result r[4];
+  urGrid* b0 = NULL;                 /* B at 0 m/s with nt threads, kept for the thread check */
+  double zero = 0, imp = 0, wall = 0;
+  for (int i = 0; i < 4; i++) {
+    if (grid(c, setups[i], step, nt, &r[i])) return 1;
+    report(names[i], &r[i]);
+    if (i < 3) zero += r[i].wall;
+    imp += r[i].impacts;
+    wall += r[i].wall;
+    if (i == 1) {
+      b0 = c->last.g;
+      c->last.g = NULL;
+    }
+  }
+  printf("  zero-wind grid: mean %.2f s wall (target 1 s); %.1f impacts per second over the four "
+         "grids\n", zero / 3, imp / wall);
+
+  /* 1 -> 2 threads on the zero-wind grid of B: the speed-up, and the same cells */
+  int rc = 0;
+  if (nt < 2) {
+    printf("  1 -> 2 threads: skipped (one CPU online)\n");
+  } else {
+    result one;
+    if (grid(c, setups[1], step, 1, &one)) return 1;
+    int same = same_cells(b0, c->last.g);
+    printf("  1 -> 2 threads (B, 0 m/s): %.2f s -> %.2f s wall, speed-up %.2f; cells %s\n",
+           one.wall, r[1].wall, one.wall / r[1].wall, same ? "identical" : "DIFFER");
+    rc = !same;
+  }
+  ur_grid_free(b0);
+  ura_last_free(c);
+  ura_models_free(c);
+  fclose(c->out);
+  return rc;
+}
