@@ -9,6 +9,7 @@
 
 #define SETTLE_SECONDS 1.0          /* settling of the stance, s (it is still within 0.1 mm) */
 #define BALANCE_ITERS 2             /* muscle-tone balancing of the upright posture */
+#define MAXMODELFILE (16L << 20)    /* largest model file, bytes */
 
 typedef struct {
   const char* name;
@@ -53,7 +54,9 @@ static urModel* compile(const uraPart* part, int n, const uraState* st, char* er
     ov[i].name = st->ov_name[i];
     ov[i].value = st->ov_val[i];
   }
-  return ur_model_parse(src, n, ov, st->nov, err, errlen);
+  urModel* m = ur_model_parse(src, n, ov, st->nov, err, errlen);
+  if (m) m->opt.stop = ura_interrupt_flag();   /* Ctrl-C stops its runs at the next step */
+  return m;
 }
 
 /* add or replace the parts of a text; on error nothing changes */
@@ -126,15 +129,20 @@ const urModel* ura_model(uraCtx* c) {
 
 const urImpactSetup* ura_setup(uraCtx* c) {
   if (c->have_setup) return &c->setup;
+  if (ura_dry(c, "simulation")) return NULL;
   if (!ura_model(c)) return NULL;
   urModel* m = c->model;
   double res;
   if (ur_impact_balance(m, SETTLE_SECONDS, BALANCE_ITERS, &res)) {
-    ura_fail(c, "model: the standing posture cannot be balanced (it falls)");
+    /* the balancing shifts neutral positions in the model: compile afresh next time */
+    ura_model_stale(c);
+    ura_fail(c, ura_interrupted() ? "interrupted (Ctrl-C) while settling the standing posture"
+                                  : "model: the standing posture cannot be balanced (it falls)");
     return NULL;
   }
   if (ur_impact_setup(&c->setup, m, SETTLE_SECONDS)) {
-    ura_fail(c, "model: %s", c->setup.err);
+    if (ura_interrupted()) ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
+    else ura_fail(c, "model: %s", c->setup.err);
     ur_impact_free(&c->setup);
     return NULL;
   }
@@ -209,19 +217,36 @@ static int model_save(uraCtx* c, const char* path) {
 }
 
 static int model_load(uraCtx* c, const char* path) {
+  if (ura_dry(c, "model load")) return -1;
   FILE* f = fopen(path, "r");
   if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+
+  /* the whole text, bounded (a device never ends), read errors named */
   char* text = NULL;
   size_t len = 0;
   FILE* mem = open_memstream(&text, &len);
+  if (!mem) {
+    fclose(f);
+    return ura_fail(c, "model load: out of memory");
+  }
   char buf[4096];
   size_t k;
-  while ((k = fread(buf, 1, sizeof buf, f)) > 0) fwrite(buf, 1, k, mem);
+  long total = 0;
+  int nul = 0;
+  while (!nul && total <= MAXMODELFILE && (k = fread(buf, 1, sizeof buf, f)) > 0) {
+    fwrite(buf, 1, k, mem);
+    total += (long)k;
+    nul = memchr(buf, 0, k) != NULL;
+  }
+  int e = errno, rerr = ferror(f);
   fclose(f);
   fclose(mem);
-  if (memchr(text, 0, len)) {
+  const char* why = nul ? "it contains NUL bytes" : rerr ? strerror(e) :
+                    total > MAXMODELFILE ? "larger than 16 MiB" : NULL;
+  if (why) {
     free(text);
-    return ura_fail(c, "model load: '%s' contains NUL bytes; model files are text", path);
+    return ura_fail(c, "model load: cannot use '%s': %s; accepted: a model text file "
+                    "(uasrisk-model(5))", path, why);
   }
   int rc = parts_merge(c, text, path, path);
   free(text);

@@ -81,6 +81,11 @@ int ura_fail(uraCtx* c, const char* fmt, ...) {
   return -1;
 }
 
+int ura_dry(uraCtx* c, const char* what) {
+  if (!c->dry) return 0;
+  return ura_fail(c, "%s: not run (dry mode: no simulations, plots, viewer or files)", what);
+}
+
 void ura_state_defaults(uraState* s) {
   memset(s, 0, sizeof *s);
   strcpy(s->casename, "A");
