@@ -226,6 +226,9 @@ void ura_model_stale(uraCtx* c);
 int ura_model_param_find(uraCtx* c, const char* name);   /* index in the model, or -1 */
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit,
                         int user);
+/* the live state becomes ns if the model compiles with its parameter overrides (unchanged
+   overrides keep the model and its stance); else nothing changes and WHO: refused ... */
+int ura_model_state(uraCtx* c, const uraState* ns, const char* who);
 int ura_cmd_model(uraCtx* c, int argc, char** argv);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
