@@ -5,12 +5,17 @@
 #   make bench    benchmarks (not part of check); REPRODUCE=0 leaves out the timing of reproduce
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
+#   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
+#                 session under valgrind (scripts/check-san.sh)
+#   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions or FUZZ_SECONDS
+#                 each (clang; build-fuzz/)
 #   make install PREFIX=/usr/local
 
 PREFIX  ?= /usr/local
 CC      ?= cc
 OPT     ?= -O2 -g
 BUILD   ?= build
+BIN     ?= uasrisk
 CFLAGS  += $(OPT) -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Wall -Wextra -Wshadow \
            -Wno-unused-parameter -Wno-missing-field-initializers -Iinclude -MMD -MP -pthread
 LDFLAGS += -pthread
@@ -33,8 +38,8 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasrisk.a
 APPLIB  = $(BUILD)/libuasrisk-app.a
 
-.PHONY: all deps run check test bench reproduce install clean
-all: uasrisk $(LIB)
+.PHONY: all deps run check test bench reproduce install clean check-san fuzz
+all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
 deps:
@@ -59,7 +64,7 @@ $(APPLIB): $(APP_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-uasrisk: $(BUILD)/src/app/main.o $(APPLIB) $(LIB)
+$(BIN): $(BUILD)/src/app/main.o $(APPLIB) $(LIB)
 	$(CC) $(LDFLAGS) -o $@ $^ $(APP_LIBS) $(CORE_LIBS)
 
 $(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) | deps
@@ -87,6 +92,40 @@ bench: all $(BENCH_BIN)
 reproduce: all
 	@sh scripts/reproduce.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/reproduce-step$(STEP))
 
+# the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run)
+SAN_OPT = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+check-san:
+	@sh scripts/setup.sh san
+	@$(MAKE) --no-print-directory BUILD=build-san BIN=build-san/uasrisk OPT='$(SAN_OPT)' \
+	  LDFLAGS='-pthread $(SAN_OPT)' build-san/uasrisk $(TEST_SRC:tests/%.c=build-san/tests/%)
+	@sh scripts/check-san.sh build-san
+
+# fuzzing with libFuzzer: each target until FUZZ_RUNS executions or FUZZ_SECONDS, corpora in
+# tests/fuzz/corpus_*. Each target has its own build: the model-language target instruments
+# everything for coverage; the command target only the application (the core, the model parser
+# above all, is the model target's field and would slow it five-fold), under ASan+UBSan all.
+FUZZ_SAN = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_OPT = $(FUZZ_SAN) -fsanitize=fuzzer-no-link
+FUZZ_RUNS ?= 1000000
+FUZZ_SECONDS ?= 7200
+fuzz:
+	@sh scripts/setup.sh fuzz
+	@$(MAKE) --no-print-directory BUILD=build-fuzz/model CC=clang OPT='$(FUZZ_OPT)' \
+	  build-fuzz/model/fuzz/fuzz_model
+	@$(MAKE) --no-print-directory BUILD=build-fuzz/script CC=clang OPT='$(FUZZ_OPT)' \
+	  CORE_OPT='$(FUZZ_SAN)' build-fuzz/script/fuzz/fuzz_script
+	@sh scripts/fuzz.sh $(FUZZ_RUNS) $(FUZZ_SECONDS) build-fuzz/model/fuzz/fuzz_model \
+	  build-fuzz/script/fuzz/fuzz_script
+
+# the core built with other options than the application (CORE_OPT, for the fuzz builds)
+ifneq ($(CORE_OPT),)
+$(BUILD)/src/core/%.o $(BUILD)/models/builtin.o: override OPT := $(CORE_OPT)
+endif
+
+$(BUILD)/fuzz/%: tests/fuzz/%.c $(APPLIB) $(LIB) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fsanitize=fuzzer -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
+
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/uasrisk \
 	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
@@ -98,6 +137,6 @@ install: all
 	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man7/; done; true
 
 clean:
-	rm -rf $(BUILD) uasrisk
+	rm -rf $(BUILD) build-san build-fuzz uasrisk
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

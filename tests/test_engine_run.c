@@ -1,6 +1,6 @@
 /* test_engine_run.c: runs on a drone-on-human scene: thread safety (two threads give results
  * bitwise identical to sequential runs), failure reporting (non-finite and exploding states),
- * free-flight jump, history sampling, builder errors and name look-up. */
+ * stop requests, free-flight jump, history sampling, builder errors and name look-up. */
 #include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
@@ -151,6 +151,29 @@ static void test_explosion_fails(void** state) {
 }
 
 
+// a stop request (opt.stop, set by an interrupt) fails the run at its next step, and only then
+static void test_stop_request(void** state) {
+  urModel* m = ur_model_new();
+  double I[6] = {0.01, 0.01, 0.01, 0, 0, 0};
+  int b = ur_model_add_body(m, "arm", -1, urJNT_REVOLUTE, NULL, NULL);
+  ur_model_set_inertia(m, b, 1, (double[3]){0.1, 0, 0}, I);
+  volatile int stop = 0;
+  m->opt.stop = &stop;
+  m->opt.tmax = 1;
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+  for (int i = 0; i < 10; i++) assert_int_equal(ur_step(m, d), urSTAT_OK);
+  long n = d->nstep;
+  stop = 1;
+  assert_int_equal(ur_step(m, d), urSTAT_STOPPED);
+  assert_int_equal(d->nstep, n);
+  assert_string_equal(ur_status_str(urSTAT_STOPPED), "failed: stopped on request");
+  assert_int_equal(ur_run(m, d), urSTAT_STOPPED);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
 // the jump stops the drone between jump_margin and 2 jump_margin before its first real contact
 // (conservative advancement on the exact distances, after the bounding-sphere jump)
 static void test_jump(void** state) {
@@ -245,6 +268,7 @@ int main(void) {
     cmocka_unit_test(test_symmetric_impact),
     cmocka_unit_test(test_nonfinite_fails),
     cmocka_unit_test(test_explosion_fails),
+    cmocka_unit_test(test_stop_request),
     cmocka_unit_test(test_jump),
     cmocka_unit_test(test_history_and_names),
   };

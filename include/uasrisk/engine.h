@@ -78,7 +78,8 @@ typedef enum {
   urSTAT_TMAX = 3,                 /* ended: opt.tmax reached */
   urSTAT_NONFINITE = -1,           /* failed: NaN or Inf in the state */
   urSTAT_EXPLODE = -2,             /* failed: a velocity beyond opt.vmax */
-  urSTAT_BADARG = -3               /* failed: bad call (message says which) */
+  urSTAT_BADARG = -3,              /* failed: bad call (message says which) */
+  urSTAT_STOPPED = -4              /* failed: stopped on request (opt.stop, e.g. Ctrl-C) */
 } urStatus;
 
 typedef enum {
@@ -187,6 +188,8 @@ typedef struct {
   double ke_settle;                /* or kinetic energy below this for t_quiet, J (default 1e-3) */
   double vmax;                     /* failure beyond this joint speed, m/s or rad/s (default 1e4) */
   double jump_margin;              /* free-flight jump stops this far from contact, m (1e-3) */
+  volatile int* stop;              /* optional (not part of the model text): a step fails with
+                                      urSTAT_STOPPED while *stop != 0 (an interrupt flag) */
 } urOption;
 
 typedef struct {

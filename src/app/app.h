@@ -96,6 +96,9 @@ typedef struct uraCtx {
   int interactive;                 /* a person is typing: errors do not stop anything */
   int depth;                       /* nesting of source */
   int quit;                        /* set by quit */
+  int dry;                         /* fuzzing (tests/fuzz): commands parse their arguments but
+                                      refuse to simulate, plot, open the viewer or touch files
+                                      (ura_dry) */
   uraGridResult last;              /* the last grid */
   uraSweep* sweep;                 /* the kept sweeps, oldest first (sweep clear frees them) */
   int nsweep;
@@ -238,6 +241,9 @@ void ura_model_stale(uraCtx* c);
 int ura_model_param_find(uraCtx* c, const char* name);   /* index in the model, or -1 */
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit,
                         int user);
+/* the live state becomes ns if the model compiles with its parameter overrides (unchanged
+   overrides keep the model and its stance); else nothing changes and WHO: refused ... */
+int ura_model_state(uraCtx* c, const uraState* ns, const char* who);
 int ura_cmd_model(uraCtx* c, int argc, char** argv);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
@@ -255,5 +261,22 @@ int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr);
 
 /* interactive loop on GNU readline */
 int ura_repl(uraCtx* c);
+
+/* in dry mode, refuse WHAT (a simulation, plot, file...) with a message; 0 otherwise */
+int ura_dry(uraCtx* c, const char* what);
+
+/* Ctrl-C (interrupt.c): the handler for the whole run (interactive: repeated Ctrl-C never end
+   the program), the flag that long work polls (also the models' opt.stop), cleared at the
+   prompt */
+void ura_interrupt_install(int interactive);
+volatile int* ura_interrupt_flag(void);
+int ura_interrupted(void);
+void ura_interrupt_clear(void);
+
+/* text files (textin.c): the next line of f without its line end into *buf (realloc'ed, *cap
+   its size), at most max bytes; its length, or one of these */
+enum { uraLINE_EOF = -1, uraLINE_ERROR = -2 /* errno */, uraLINE_LONG = -3, uraLINE_NUL = -4 };
+long ura_read_line(FILE* f, char** buf, size_t* cap, size_t max);
+#define uraMAXLINE (1L << 20)      /* longest line of a script or grid file, bytes */
 
 #endif

@@ -1,6 +1,5 @@
 /* cmd_grid.c: the grid command: run the offset grid, print its cells, show or load it */
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,13 +7,8 @@
 
 #include "app.h"
 
-/* set by SIGINT while a grid runs; workers stop taking cells (int is sig_atomic_t here) */
-static volatile int stop_flag;
-_Static_assert(sizeof(sig_atomic_t) == sizeof(int), "the stop flag is written by a handler");
-
-static void on_sigint(int sig) {
-  stop_flag = 1;
-}
+#define MAXCELLS 4000000L          /* largest grid (and region scanned for its extents), cells */
+#define STOPPED "interrupted"      /* reason of a cell whose impact Ctrl-C stopped */
 
 typedef struct {
   const urImpactSetup* s;
@@ -33,7 +27,8 @@ static int cb_impact(void* ctx, int worker, urCell* cell) {
   gridRun* g = ctx;
   urImpactResult r;
   if (ur_impact_run(g->s, &g->w[worker], &g->cond, g->ip, cell->dpar, cell->dperp, &r)) {
-    snprintf(cell->reason, sizeof cell->reason, "%.63s", r.reason);
+    snprintf(cell->reason, sizeof cell->reason, "%.63s",
+             r.status == urSTAT_STOPPED ? STOPPED : r.reason);
     return -1;
   }
   cell->contact = r.contact;
@@ -61,15 +56,18 @@ static void cb_progress(void* ctx, int done, int total) {
 
 /* the lattice extents: every cell whose straight path can touch the person, found by scanning
    the region the path can reach (upstream as far as the drone travels while it descends from
-   R_max above the head to the ground), padded by one cell */
-static void auto_extents(const urImpactSetup* s, const urImpactCond* cond, double step,
-                         double* par_min, double* par_max, double* perp_max) {
+   R_max above the head to the ground), padded by one cell. A region larger than MAXCELLS is
+   refused before it is scanned (its size in *scan); Ctrl-C stops the scan. 0 or -1. */
+static int auto_extents(const urImpactSetup* s, const urImpactCond* cond, double step,
+                        double* par_min, double* par_max, double* perp_max, double* scan) {
   double psi = cond->angle * M_PI / 180.0, reach = 2.0;
   double up = psi < M_PI / 2 - 1e-9 ? (s->head_top + s->rmax) / tan(psi) : 0;
-  long ilo = (long)floor(-(up + reach) / step), ihi = (long)ceil(reach / step);
-  long jmax = (long)ceil(reach / step);
+  double flo = floor(-(up + reach) / step), fhi = ceil(reach / step), fj = ceil(reach / step);
+  *scan = (fhi - flo + 1) * (2 * fj + 1);
+  if (!(*scan <= MAXCELLS)) return -1;
+  long ilo = (long)flo, ihi = (long)fhi, jmax = (long)fj;
   long lo = 1, hi = -1, kp = 0;
-  for (long i = ilo; i <= ihi; i++) {
+  for (long i = ilo; i <= ihi && !ura_interrupted(); i++) {
     for (long j = -jmax; j <= jmax; j++) {
       if (ur_impact_may_contact(s, cond, i * step, j * step)) {
         if (i < lo) lo = i;
@@ -78,10 +76,20 @@ static void auto_extents(const urImpactSetup* s, const urImpactCond* cond, doubl
       }
     }
   }
+  if (ura_interrupted()) return -1;
   if (hi < lo) lo = hi = 0;
   *par_min = (lo - 1) * step;
   *par_max = (hi + 1) * step;
   *perp_max = (kp + 1) * step;
+  return 0;
+}
+
+/* the memory a grid of n cells needs may not exceed half of the memory available */
+static int fits_memory(long n, double* mb, double* avail_mb) {
+  long pages = sysconf(_SC_AVPHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+  *mb = n * (double)sizeof(urCell) / 1e6;
+  *avail_mb = pages > 0 && size > 0 ? (double)pages * size / 1e6 : INFINITY;
+  return *mb <= *avail_mb / 2;
 }
 
 /* the set-up is mirror-symmetric about the course: face 0 or 180, no roll or yaw */
@@ -98,19 +106,34 @@ int ura_grid_run(uraCtx* c, int quiet) {
 
   /* extents, lattice, refusing what memory cannot hold */
   urGridSpec spec = {c->st.step, 0, 0, 0, mirrored(c), (int)c->st.threads, cb_may, cb_impact,
-                     cb_progress, NULL, &stop_flag};
+                     cb_progress, NULL, ura_interrupt_flag()};
+  long ncell;
+  double mb = 0, avail = 0;
+  const char* what = "";
   if (c->st.extent_set) {
     spec.par_min = c->st.par_min;
     spec.par_max = c->st.par_max;
     spec.perp_max = c->st.perp_max;
+    ncell = ur_grid_cell_count(&spec);
   } else {
-    auto_extents(s, &cond, c->st.step, &spec.par_min, &spec.par_max, &spec.perp_max);
+    double scan;
+    if (auto_extents(s, &cond, c->st.step, &spec.par_min, &spec.par_max, &spec.perp_max,
+                     &scan)) {
+      if (ura_interrupted()) return ura_fail(c, "grid: interrupted (Ctrl-C) while sizing the grid");
+      ncell = scan > 1e18 ? -1 : (long)scan;
+      what = " to scan for the extents";
+    } else {
+      ncell = ur_grid_cell_count(&spec);
+    }
   }
-  long ncell = ur_grid_cell_count(&spec);
-  if (ncell < 0 || ncell > 4000000L) {
-    return ura_fail(c, "grid: %ld cells of %g m (%.0f MB) is too large; accepted: at most "
-                    "4000000 cells (raise 'step' or set the extents)", ncell, spec.step,
-                    ncell * (double)sizeof(urCell) / 1e6);
+  int fits = fits_memory(ncell < 0 ? 0 : ncell, &mb, &avail);
+  if (ncell < 0 || ncell > MAXCELLS || !fits) {
+    char size[64];
+    if (ncell < 0) snprintf(size, sizeof size, "more than %ld", MAXCELLS);
+    else snprintf(size, sizeof size, "%ld", ncell);
+    return ura_fail(c, "grid: %s cells of %g m%s (%.0f MB; %.0f MB of memory available) is too "
+                    "large; accepted: at most %ld cells in half the available memory (raise "
+                    "'step')", size, spec.step, what, mb, avail, MAXCELLS);
   }
   urGrid* g = ur_grid_new(&spec);
   int nw = spec.threads;
@@ -129,18 +152,30 @@ int ura_grid_run(uraCtx* c, int quiet) {
     }
   }
 
-  /* run with Ctrl-C stopping the workers */
+  /* run; Ctrl-C (interrupt.c) stops the workers and the impacts they are running */
   gridRun run = {s, cond, &c->st.injury, w, !quiet && isatty(STDERR_FILENO)};
   spec.ctx = &run;
-  stop_flag = 0;
-  struct sigaction sa = {0}, old;
-  sa.sa_handler = on_sigint;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &old);
-  ur_grid_run(g, &spec);
-  sigaction(SIGINT, &old, NULL);
+  int rc = ur_grid_run(g, &spec);
   for (int i = 0; i < nw; i++) ur_impact_work_free(&w[i]);
   free(w);
+  if (run.tty) fputs("\r\033[K", stderr);
+  if (rc) {
+    ur_grid_free(g);
+    return ura_fail(c, "grid: out of memory for %ld cells", ncell);
+  }
+
+  /* an impact stopped halfway is not a failure: the cell was not computed */
+  for (long k = 0; k < (long)g->nrow * g->ncol; k++) {
+    urCell* e = &g->cell[k];
+    if (e->status == urCELL_FAILED && !strcmp(e->reason, STOPPED)) {
+      double dpar = e->dpar, dperp = e->dperp;
+      memset(e, 0, sizeof *e);
+      e->dpar = dpar;
+      e->dperp = dperp;
+      e->status = urCELL_PENDING;
+    }
+  }
+  ur_grid_summarise(g);
 
   /* keep it as the last grid */
   ura_last_free(c);
@@ -151,9 +186,9 @@ int ura_grid_run(uraCtx* c, int quiet) {
   c->last.speed = cond.speed;
   c->last.angle = cond.angle;
   snprintf(c->last.source, sizeof c->last.source, "computed");
-  if (stop_flag) {
-    return ura_fail(c, "grid: interrupted; %d of %d cells finished, kept as a partial grid "
-                    "(no Q)", g->ndone, g->nrow * g->ncol);
+  if (g->npending) {
+    return ura_fail(c, "grid: interrupted (Ctrl-C); %d of %d cells finished, kept as a partial "
+                    "grid (no Q)", g->ndone + g->nfailed, g->nrow * g->ncol);
   }
   return 0;
 }
@@ -233,7 +268,8 @@ int ura_cmd_grid(uraCtx* c, int argc, char** argv) {
       snprintf(c->err, sizeof c->err, "%s", keep);
     }
     if (rc == 0 && !c->last.g->complete) {
-      return ura_fail(c, "grid: %d cells failed; Q is not complete", c->last.g->nfailed);
+      return ura_fail(c, "grid: %d cells failed (their simulations are listed above); Q is not "
+                      "complete", c->last.g->nfailed);
     }
     return rc;
   }

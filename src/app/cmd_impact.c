@@ -47,6 +47,9 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   urImpactResult r;
   c->have_impact = 0;
   if (ur_impact_run(s, &c->work, &cond, &c->st.injury, dpar, dperp, &r)) {
+    if (r.status == urSTAT_STOPPED) {
+      return ura_fail(c, "impact %g %g: interrupted (Ctrl-C)", dpar, dperp);
+    }
     return ura_fail(c, "impact %g %g: the simulation failed: %s", dpar, dperp, r.reason);
   }
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);

@@ -157,6 +157,12 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     if (is_wind) c->st.descent.wind = v[i];
     else c->st.face = v[i];
     rc = ura_grid_run(c, 0);
+    if (rc && ura_interrupted()) {
+      char why[uraERRLEN];
+      snprintf(why, sizeof why, "%s", c->err);
+      ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)",
+               argv[1], v[i], i, n, why);
+    }
     if (rc == 0 && !c->last.g->complete) {
       rc = ura_fail(c, "sweep: %d cells failed at %s %g; Q is not complete",
                     c->last.g->nfailed, argv[1], v[i]);
@@ -201,6 +207,7 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   }
   urImpactResult r;
   if (ur_impact_run(s, &c->work, &cond, &c->st.injury, 0, 0, &r)) {
+    if (r.status == urSTAT_STOPPED) return ura_fail(c, "compare: interrupted (Ctrl-C)");
     return ura_fail(c, "compare: the impact at (0, 0) failed: %s", r.reason);
   }
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, 0, 0, &r);

@@ -60,13 +60,15 @@ static int bad(reader* r, int line, const char* fmt, ...) {
 
 /* next line without its end of line; 1 read, 0 end of file, -1 error (recorded) */
 static int next_line(reader* r) {
-  ssize_t n = getline(&r->buf, &r->cap, r->f);
-  if (n < 0) {
-    if (ferror(r->f)) return bad(r, r->line + 1, "read error: %s", strerror(errno));
-    return 0;
+  long n = ura_read_line(r->f, &r->buf, &r->cap, uraMAXLINE);
+  if (n == uraLINE_EOF) return 0;
+  if (n == uraLINE_ERROR) {
+    return bad(r, r->line + 1, ura_interrupted() ? "interrupted (Ctrl-C) while reading" :
+               "read error: %s", strerror(errno));
   }
   r->line++;
-  if ((size_t)n != strlen(r->buf)) return bad(r, r->line, "NUL byte: not a text file");
+  if (n == uraLINE_NUL) return bad(r, r->line, "NUL byte: not a text file");
+  if (n == uraLINE_LONG) return bad(r, r->line, "line longer than %ld bytes", uraMAXLINE);
   if (r->line == 1 && !strncmp(r->buf, "\xef\xbb\xbf", 3)) {
     memmove(r->buf, r->buf + 3, (size_t)n - 2);
     n -= 3;
@@ -584,6 +586,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
   urGrid* g = NULL;
   int rc = -1;
 
+  if (ura_dry(c, "grid load")) return -1;
   r.f = fopen(path, "r");
   if (!r.f) return ura_fail(c, "grid load: cannot open '%s': %s", path, strerror(errno));
 

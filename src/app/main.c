@@ -1,4 +1,5 @@
 /* main.c: command line: uasrisk [-i] [-c COMMANDS] [FILE]... */
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -18,6 +19,10 @@ static void usage(FILE* f) {
 int main(int argc, char** argv) {
   static uraCtx ctx;
   uraCtx* c = &ctx;
+
+  /* Ctrl-C stops work, not the program; a file size limit is a write error, not a kill */
+  ura_interrupt_install(0);
+  signal(SIGXFSZ, SIG_IGN);
   ura_init(c);
   if (!c->model) fprintf(stderr, "uasrisk: warning: built-in model: %s\n", c->err);
 
@@ -58,7 +63,7 @@ int main(int argc, char** argv) {
     }
     if (rc) {
       fprintf(stderr, "%s\n", c->err);
-      if (!stay) return 1;
+      if (!stay) return ura_interrupted() ? 130 : 1;
       break;
     }
   }
@@ -69,7 +74,7 @@ int main(int argc, char** argv) {
   if (!work) {
     if (ura_run_stream(c, stdin, "<stdin>")) {
       fprintf(stderr, "%s\n", c->err);
-      return 1;
+      return ura_interrupted() ? 130 : 1;
     }
   }
   return 0;

@@ -9,6 +9,7 @@
 
 #define SETTLE_SECONDS 1.0          /* settling of the stance, s (it is still within 0.1 mm) */
 #define BALANCE_ITERS 2             /* muscle-tone balancing of the upright posture */
+#define MAXMODELFILE (16L << 20)    /* largest model file, bytes */
 
 typedef struct {
   const char* name;
@@ -53,45 +54,47 @@ static urModel* compile(const uraPart* part, int n, const uraState* st, char* er
     ov[i].name = st->ov_name[i];
     ov[i].value = st->ov_val[i];
   }
-  return ur_model_parse(src, n, ov, st->nov, err, errlen);
+  urModel* m = ur_model_parse(src, n, ov, st->nov, err, errlen);
+  if (m) m->opt.stop = ura_interrupt_flag();   /* Ctrl-C stops its runs at the next step */
+  return m;
 }
 
-/* add or replace the parts of a text; on error nothing changes */
-static int parts_merge(uraCtx* c, const char* text, const char* file, const char* origin) {
+/* add or replace the parts of a text in the candidate set np[0..*nn) (its texts owned) */
+static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const char* file,
+                     const char* origin) {
   urModelPart sp[uraMAXPARTS];
   char err[300];
   int n = ur_model_split(text, file, sp, uraMAXPARTS, err, sizeof err);
   if (n < 0) return ura_fail(c, "%s", err);
   if (n > uraMAXPARTS) return ura_fail(c, "%s: more than %d parts", file, uraMAXPARTS);
   if (n == 0) return ura_fail(c, "%s: no model text", file);
-
-  /* the new set: replace same-named parts, append new ones */
-  uraPart np[uraMAXPARTS];
-  int nn = c->npart;
-  memcpy(np, c->part, sizeof(uraPart) * nn);
-  for (int i = 0; i < nn; i++) np[i].text = NULL;
   for (int k = 0; k < n; k++) {
     int at = -1;
-    for (int i = 0; i < nn; i++) {
+    for (int i = 0; i < *nn; i++) {
       if (!strcmp(np[i].name, sp[k].name)) at = i;
     }
     if (at < 0) {
-      if (nn == uraMAXPARTS) return ura_fail(c, "%s: too many parts (at most %d)", file,
-                                              uraMAXPARTS);
-      at = nn++;
+      if (*nn == uraMAXPARTS) {
+        return ura_fail(c, "%s: too many parts (at most %d)", file, uraMAXPARTS);
+      }
+      at = (*nn)++;
       np[at].text = NULL;
     }
+    char* t = strndup(sp[k].text, sp[k].len);
+    if (!t) return ura_fail(c, "%s: out of memory", file);
     snprintf(np[at].name, sizeof np[at].name, "%.*s", (int)sizeof np[at].name - 1, sp[k].name);
     free(np[at].text);
-    np[at].text = strndup(sp[k].text, sp[k].len);
+    np[at].text = t;
     snprintf(np[at].origin, sizeof np[at].origin, "%s", origin);
     np[at].line = sp[k].line;
   }
-  for (int i = 0; i < nn; i++) {
-    if (!np[i].text) np[i].text = strdup(c->part[i].text);
-  }
+  return 0;
+}
 
-  /* it must compile with the current overrides before it replaces the old set */
+/* the candidate set replaces the model set if it compiles with the current overrides; np is
+   consumed either way; on error nothing changes */
+static int parts_commit(uraCtx* c, uraPart* np, int nn) {
+  char err[300];
   urModel* m = compile(np, nn, &c->st, err, sizeof err);
   if (!m) {
     parts_free(np, nn);
@@ -105,15 +108,39 @@ static int parts_merge(uraCtx* c, const char* text, const char* file, const char
   return 0;
 }
 
+/* add or replace the parts of a text; on error nothing changes */
+static int parts_merge(uraCtx* c, const char* text, const char* file, const char* origin) {
+  uraPart np[uraMAXPARTS];
+  int nn = c->npart;
+  memcpy(np, c->part, sizeof(uraPart) * nn);
+  for (int i = 0; i < nn; i++) {
+    np[i].text = strdup(c->part[i].text);
+    if (!np[i].text) {
+      parts_free(np, i);
+      return ura_fail(c, "%s: out of memory", file);
+    }
+  }
+  if (parts_add(c, np, &nn, text, file, origin)) {
+    parts_free(np, nn);
+    return -1;
+  }
+  return parts_commit(c, np, nn);
+}
+
+/* the built-in parts in order, compiled once */
 int ura_models_init(uraCtx* c) {
+  uraPart np[uraMAXPARTS];
+  int nn = 0;
   for (int i = 0; builtin_order[i]; i++) {
     for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
-      if (!strcmp(b->name, builtin_order[i]) && parts_merge(c, b->text, b->name, "built-in")) {
+      if (!strcmp(b->name, builtin_order[i]) && parts_add(c, np, &nn, b->text, b->name,
+                                                          "built-in")) {
+        parts_free(np, nn);
         return -1;
       }
     }
   }
-  return 0;
+  return parts_commit(c, np, nn);
 }
 
 const urModel* ura_model(uraCtx* c) {
@@ -126,15 +153,20 @@ const urModel* ura_model(uraCtx* c) {
 
 const urImpactSetup* ura_setup(uraCtx* c) {
   if (c->have_setup) return &c->setup;
+  if (ura_dry(c, "simulation")) return NULL;
   if (!ura_model(c)) return NULL;
   urModel* m = c->model;
   double res;
   if (ur_impact_balance(m, SETTLE_SECONDS, BALANCE_ITERS, &res)) {
-    ura_fail(c, "model: the standing posture cannot be balanced (it falls)");
+    /* the balancing shifts neutral positions in the model: compile afresh next time */
+    ura_model_stale(c);
+    ura_fail(c, ura_interrupted() ? "interrupted (Ctrl-C) while settling the standing posture"
+                                  : "model: the standing posture cannot be balanced (it falls)");
     return NULL;
   }
   if (ur_impact_setup(&c->setup, m, SETTLE_SECONDS)) {
-    ura_fail(c, "model: %s", c->setup.err);
+    if (ura_interrupted()) ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
+    else ura_fail(c, "model: %s", c->setup.err);
     ur_impact_free(&c->setup);
     return NULL;
   }
@@ -145,6 +177,27 @@ const urImpactSetup* ura_setup(uraCtx* c) {
 int ura_model_param_find(uraCtx* c, const char* name) {
   const urModel* m = ura_model(c);
   return m ? ur_name_param(m, name) : -1;
+}
+
+int ura_model_state(uraCtx* c, const uraState* ns, const char* who) {
+  /* the same overrides: the same model, and its settled stance stays valid */
+  int same = c->model && ns->nov == c->st.nov;
+  for (int i = 0; same && i < ns->nov; i++) {
+    same = !strcmp(ns->ov_name[i], c->st.ov_name[i]) && ns->ov_val[i] == c->st.ov_val[i];
+  }
+  if (same) {
+    c->st = *ns;
+    return 0;
+  }
+
+  /* otherwise the model must compile with them before anything changes */
+  char err[300];
+  urModel* m = compile(c->part, c->npart, ns, err, sizeof err);
+  if (!m) return ura_fail(c, "%s: refused, the model does not accept it: model: %s", who, err);
+  ura_model_stale(c);
+  c->model = m;
+  c->st = *ns;
+  return 0;
 }
 
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit,
@@ -160,33 +213,22 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
   }
   v *= f;
 
-  /* the new override list; it must compile before it is kept */
-  uraState keep = c->st;
+  /* the new override list */
+  uraState ns = c->st;
   int at = -1;
-  for (int i = 0; i < c->st.nov; i++) {
-    if (!strcmp(c->st.ov_name[i], name)) at = i;
+  for (int i = 0; i < ns.nov; i++) {
+    if (!strcmp(ns.ov_name[i], name)) at = i;
   }
   if (at < 0) {
-    if (c->st.nov == uraMAXOV) return ura_fail(c, "set %s: too many model parameters set", name);
-    at = c->st.nov++;
-    snprintf(c->st.ov_name[at], urNAMELEN, "%s", name);
+    if (ns.nov == uraMAXOV) return ura_fail(c, "set %s: too many model parameters set", name);
+    at = ns.nov++;
+    snprintf(ns.ov_name[at], urNAMELEN, "%s", name);
   }
-  c->st.ov_val[at] = v;
-  c->st.ov_user[at] = user;
-  urModel* old = c->model;
-  c->model = NULL;
-  if (!ura_model(c)) {
-    c->st = keep;
-    c->model = old;
-    char msg[uraERRLEN];
-    snprintf(msg, sizeof msg, "%s", c->err);
-    return ura_fail(c, "set %s: refused, the model does not accept it: %s", name, msg);
-  }
-  urModel* fresh = c->model;
-  c->model = old;
-  ura_model_stale(c);
-  c->model = fresh;
-  return 0;
+  ns.ov_val[at] = v;
+  ns.ov_user[at] = user;
+  char who[urNAMELEN + 8];
+  snprintf(who, sizeof who, "set %s", name);
+  return ura_model_state(c, &ns, who);
 }
 
 /* ---- the model command ---- */
@@ -209,19 +251,36 @@ static int model_save(uraCtx* c, const char* path) {
 }
 
 static int model_load(uraCtx* c, const char* path) {
+  if (ura_dry(c, "model load")) return -1;
   FILE* f = fopen(path, "r");
   if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+
+  /* the whole text, bounded (a device never ends), read errors named */
   char* text = NULL;
   size_t len = 0;
   FILE* mem = open_memstream(&text, &len);
+  if (!mem) {
+    fclose(f);
+    return ura_fail(c, "model load: out of memory");
+  }
   char buf[4096];
   size_t k;
-  while ((k = fread(buf, 1, sizeof buf, f)) > 0) fwrite(buf, 1, k, mem);
+  long total = 0;
+  int nul = 0;
+  while (!nul && total <= MAXMODELFILE && (k = fread(buf, 1, sizeof buf, f)) > 0) {
+    fwrite(buf, 1, k, mem);
+    total += (long)k;
+    nul = memchr(buf, 0, k) != NULL;
+  }
+  int e = errno, rerr = ferror(f);
   fclose(f);
   fclose(mem);
-  if (memchr(text, 0, len)) {
+  const char* why = nul ? "it contains NUL bytes" : rerr ? strerror(e) :
+                    total > MAXMODELFILE ? "larger than 16 MiB" : NULL;
+  if (why) {
     free(text);
-    return ura_fail(c, "model load: '%s' contains NUL bytes; model files are text", path);
+    return ura_fail(c, "model load: cannot use '%s': %s; accepted: a model text file "
+                    "(uasrisk-model(5))", path, why);
   }
   int rc = parts_merge(c, text, path, path);
   free(text);

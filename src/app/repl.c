@@ -146,11 +146,28 @@ static char* history_path(void) {
   return p;
 }
 
+/* Ctrl-C while typing: the line is dropped and the prompt comes again (never an exit) */
+static int on_signal(void) {
+  if (!ura_interrupted()) return 0;
+  ura_interrupt_clear();
+  rl_replace_line("", 0);
+  fputs("^C", rl_outstream ? rl_outstream : stdout);
+  rl_crlf();
+  rl_on_new_line();
+  rl_redisplay();
+  return 0;
+}
+
 int ura_repl(uraCtx* c) {
   char* hist = history_path();
   rl_readline_name = "uasrisk";
   repl_ctx = c;
   rl_attempted_completion_function = complete;
+
+  /* SIGINT is ours (interrupt.c), also while readline reads: it calls on_signal */
+  ura_interrupt_install(1);
+  rl_catch_signals = 0;
+  rl_signal_event_hook = on_signal;
   if (hist) read_history(hist);
   c->interactive = 1;
 
@@ -158,13 +175,17 @@ int ura_repl(uraCtx* c) {
   while (!c->quit) {
     char prompt[64];
     snprintf(prompt, sizeof prompt, "uasrisk[%s]> ", c->st.casename);
+    ura_interrupt_clear();
     char* line = readline(prompt);
     if (!line) {
       fputc('\n', c->out);
       break;
     }
     if (*line) add_history(line);
-    if (ura_run_line(c, line)) fprintf(c->msg, "error: %s\n", c->err);
+    /* (after Ctrl-C the terminal has echoed ^C: the message on a line of its own) */
+    if (ura_run_line(c, line)) {
+      fprintf(c->msg, "%serror: %s\n", ura_interrupted() ? "\n" : "", c->err);
+    }
     free(line);
   }
 

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "app.h"
 
@@ -76,6 +77,7 @@ static int run_words(uraCtx* c, int argc, char** argv) {
 int ura_run_line(uraCtx* c, const char* line) {
   size_t n = strlen(line);
   char* buf = malloc(n + 1);
+  if (!buf) return ura_fail(c, "out of memory for a line of %zu bytes", n);
   memcpy(buf, line, n + 1);
 
   /* cut the comment and split at ';' (both outside quotes), running each piece */
@@ -91,8 +93,15 @@ int ura_run_line(uraCtx* c, const char* line) {
       *p = 0;
       char* argv[MAXARGS];
       int argc = split_words(start, argv, c);
-      if (argc < 0) rc = -1;
-      else if (argc > 0) rc = run_words(c, argc, argv);
+      if (argc < 0) {
+        rc = -1;
+      } else if (argc > 0 && ura_interrupted()) {
+        char name[128];
+        printable(argv[0], name, sizeof name);
+        rc = ura_fail(c, "interrupted (Ctrl-C): '%s' and the rest not run", name);
+      } else if (argc > 0) {
+        rc = run_words(c, argc, argv);
+      }
       if (rc || end || save == 0 || c->quit) break;
       start = p + 1;
     }
@@ -104,17 +113,22 @@ int ura_run_line(uraCtx* c, const char* line) {
 int ura_run_stream(uraCtx* c, FILE* f, const char* name) {
   char* line = NULL;
   size_t cap = 0;
-  ssize_t len;
+  long len;
   int lineno = 0, rc = 0;
-  while (!c->quit && (len = getline(&line, &cap, f)) >= 0) {
+  while (!c->quit) {
+    len = ura_read_line(f, &line, &cap, uraMAXLINE);
+    if (len == uraLINE_EOF) break;
     lineno++;
 
-    /* binary input: refuse before interpreting anything */
-    if (memchr(line, 0, len)) {
+    /* binary input, a line without end, a read error: refuse before interpreting anything */
+    if (len == uraLINE_NUL) {
       rc = ura_fail(c, "line contains a NUL byte; scripts are text files");
+    } else if (len == uraLINE_LONG) {
+      rc = ura_fail(c, "line longer than %ld bytes; scripts are text files", uraMAXLINE);
+    } else if (len == uraLINE_ERROR) {
+      rc = ura_interrupted() ? ura_fail(c, "interrupted (Ctrl-C) while reading")
+                             : ura_fail(c, "cannot read: %s", strerror(errno));
     } else {
-      if (len > 0 && line[len - 1] == '\n') line[--len] = 0;
-      if (len > 0 && line[len - 1] == '\r') line[--len] = 0;
       rc = ura_run_line(c, line);
     }
     if (rc) {
@@ -130,8 +144,15 @@ int ura_run_file(uraCtx* c, const char* path) {
   if (c->depth >= MAXDEPTH) {
     return ura_fail(c, "source: nesting deeper than %d (does a script source itself?)", MAXDEPTH);
   }
+  if (ura_dry(c, "source")) return -1;
   FILE* f = fopen(path, "r");
+  if (!f && ura_interrupted()) return ura_fail(c, "interrupted (Ctrl-C) while opening '%s'", path);
   if (!f) return ura_fail(c, "cannot open '%s': %s", path, strerror(errno));
+  struct stat sb;
+  if (fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode)) {
+    fclose(f);
+    return ura_fail(c, "cannot run '%s': it is a directory; accepted: a script file", path);
+  }
   c->depth++;
   int rc = ura_run_stream(c, f, path);
   c->depth--;

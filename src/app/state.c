@@ -81,6 +81,11 @@ int ura_fail(uraCtx* c, const char* fmt, ...) {
   return -1;
 }
 
+int ura_dry(uraCtx* c, const char* what) {
+  if (!c->dry) return 0;
+  return ura_fail(c, "%s: not run (dry mode: no simulations, plots, viewer or files)", what);
+}
+
 void ura_state_defaults(uraState* s) {
   memset(s, 0, sizeof *s);
   strcpy(s->casename, "A");
@@ -289,33 +294,34 @@ int ura_case_load(uraCtx* c, const char* name) {
 
   /* keep the live wind, face, lists, grid step and output settings; everything else from the
      paper */
-  uraState keep = c->st, *s = &c->st;
-  ura_state_defaults(s);
-  s->descent.wind = keep.descent.wind;
-  s->face = keep.face;
-  memcpy(s->winds, keep.winds, sizeof s->winds);
-  s->threads = keep.threads;
-  s->step = keep.step;
-  s->nwinds = keep.nwinds;
-  s->format = keep.format;
-  strcpy(s->terminal, keep.terminal);
-  strcpy(s->output, keep.output);
-  strcpy(s->casename, ura_case_names[k]);
+  uraState ns;
+  const uraState* keep = &c->st;
+  ura_state_defaults(&ns);
+  ns.descent.wind = keep->descent.wind;
+  ns.face = keep->face;
+  memcpy(ns.winds, keep->winds, sizeof ns.winds);
+  ns.threads = keep->threads;
+  ns.step = keep->step;
+  ns.nwinds = keep->nwinds;
+  ns.format = keep->format;
+  strcpy(ns.terminal, keep->terminal);
+  strcpy(ns.output, keep->output);
+  strcpy(ns.casename, ura_case_names[k]);
 
   /* case C has no parachute; A, A1, A2 descend as B (the airbag does not change the descent) */
-  if (!strcmp(s->casename, "C")) s->descent.area_chute = 0;
+  if (!strcmp(ns.casename, "C")) ns.descent.area_chute = 0;
 
-  /* airbags of the case, as model parameters (skipped if the model has no such parameter) */
+  /* airbags of the case, as model parameters (skipped if the model has no such parameter);
+     the model is compiled once, and not at all when they are as they were */
   static const double bags[5][3] = {{1, 0, 1.0}, {0, 0, 1.0}, {0, 0, 1.0}, {1, 0, 1.1},
                                     {1, 1, 1.1}};
   static const char* const names[3] = {"bag_bottom", "bag_front", "bag_p0"};
-  ura_model_stale(c);
   for (int i = 0; i < 3; i++) {
-    char v[32];
-    snprintf(v, sizeof v, "%.17g", i == 2 ? bags[k][i] * 101325.0 : bags[k][i]);
-    if (ura_model_param_find(c, names[i]) >= 0 && ura_model_param_set(c, names[i], v, NULL, 0)) {
-      return -1;
-    }
+    if (ura_model_param_find(c, names[i]) < 0) continue;
+    snprintf(ns.ov_name[ns.nov], urNAMELEN, "%s", names[i]);
+    ns.ov_val[ns.nov] = i == 2 ? bags[k][i] * 101325.0 : bags[k][i];
+    ns.ov_user[ns.nov++] = 0;
   }
+  if (ura_model_state(c, &ns, "case")) return -1;
   return 0;
 }

@@ -496,6 +496,7 @@ static void run(viewer* v) {
 
 int ura_cmd_view(uraCtx* c, int argc, char** argv) {
   if (!c->last.g) return ura_fail(c, "view: no grid yet; run 'grid' or 'grid load FILE'");
+  if (ura_dry(c, "view")) return -1;
   if (!c->out || !isatty(STDIN_FILENO) || !isatty(fileno(c->out))) {
     return ura_fail(c, "view: needs a terminal; use 'grid show'");
   }

@@ -33,6 +33,8 @@ const char* ur_status_str(int status) {
     return "failed: exploding state";
   case urSTAT_BADARG:
     return "failed: bad argument";
+  case urSTAT_STOPPED:
+    return "failed: stopped on request";
   default:
     return "unknown";
   }
@@ -186,6 +188,10 @@ int ur_step(const urModel* m, urData* d) {
   double h = m->opt.dt;
   int nv = m->nv, nq = m->nq;
   if (d->status < 0) {
+    return d->status;
+  }
+  if (m->opt.stop && *m->opt.stop) {
+    ur_set_status(d, urSTAT_STOPPED, "stopped on request");
     return d->status;
   }
 
