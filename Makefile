@@ -81,7 +81,7 @@ bench: all $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do $$b || exit 1; done
 
 # the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run)
-SAN_OPT = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SAN_OPT = -O2 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 check-san:
 	@sh scripts/setup.sh san
 	@$(MAKE) --no-print-directory BUILD=build-san BIN=build-san/uasrisk OPT='$(SAN_OPT)' \

@@ -27,6 +27,8 @@ static int setup(void** state) {
 
 static int teardown(void** state) {
   fixture* f = *state;
+  ura_models_free(&f->c);
+  ura_last_free(&f->c);
   fclose(f->c.out);
   free(f->buf);
   free(f);
