@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 #include "../src/app/app.h"
@@ -27,6 +28,8 @@ static int setup(void** state) {
 
 static int teardown(void** state) {
   fixture* f = *state;
+  ura_models_free(&f->c);
+  ura_last_free(&f->c);
   fclose(f->c.out);
   free(f->buf);
   free(f);
@@ -169,8 +172,52 @@ static void show_set_roundtrip(void** state) {
   }
 }
 
+/* the model is compiled again only when its parameter overrides change (cases B and C have the
+   same airbag settings); a refused value keeps the model as it was */
+static void model_reuse(void** state) {
+  fixture* f = *state;
+  run(f, "case C", 0);
+  const urModel* m = ura_model(&f->c);
+  assert_non_null(m);
+  run(f, "case B; set bag_p0 1 atm", 0);
+  assert_ptr_equal(ura_model(&f->c), m);
+  run(f, "set dt 0", -1);
+  assert_ptr_equal(ura_model(&f->c), m);
+  assert_true(f->c.model->param[ura_model_param_find(&f->c, "bag_p0")].value == 101325);
+  run(f, "case A", 0);
+  assert_ptr_not_equal(ura_model(&f->c), NULL);
+  assert_true(f->c.model->param[ura_model_param_find(&f->c, "bag_bottom")].value == 1);
+  run(f, "set bag_p0 1.1 atm", 0);
+  assert_true(fabs(f->c.model->param[ura_model_param_find(&f->c, "bag_p0")].value - 111457.5)
+              < 1e-6);
+}
+
+/* dry mode (the fuzz harness): arguments are still checked, then simulations, grids, plots,
+   the viewer and files are refused, and nothing is written */
+static void dry_mode(void** state) {
+  fixture* f = *state;
+  f->c.dry = 1;
+  run(f, "impact 0.1 zz", -1);
+  assert_non_null(strstr(f->c.err, "DPERP 'zz' is not a number"));
+  static const char* const refused[] = {"impact 0 0", "grid", "sweep wind 0,2", "compare",
+                                        "source /dev/null", "model load /dev/null",
+                                        "grid load /dev/null", "save session /tmp/dry.ses",
+                                        "model save /tmp/dry.urm", "plot pof", NULL};
+  for (int i = 0; refused[i]; i++) {
+    run(f, refused[i], -1);
+    assert_non_null(strstr(f->c.err, "not run (dry mode"));
+  }
+  assert_int_equal(access("/tmp/dry.ses", F_OK), -1);
+  run(f, "sweep wind 0,-1", -1);
+  assert_non_null(strstr(f->c.err, "is not accepted"));
+  run(f, "set wind 3; descent; pof hic; model params", 0);
+  assert_false(f->c.have_setup);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+    cmocka_unit_test_setup_teardown(dry_mode, setup, teardown),
+    cmocka_unit_test_setup_teardown(model_reuse, setup, teardown),
     cmocka_unit_test_setup_teardown(set_and_show, setup, teardown),
     cmocka_unit_test_setup_teardown(bad_values_leave_state, setup, teardown),
     cmocka_unit_test_setup_teardown(cases, setup, teardown),

@@ -214,7 +214,10 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   urParametricResult q;
   ur_parametric(&c->st.para, c->st.descent.mass, cond.speed, cond.angle, &q);
   if (ura_grid_run(c, 0)) return -1;
-  if (!c->last.g->complete) return ura_fail(c, "compare: the grid is not complete");
+  if (!c->last.g->complete) {
+    return ura_fail(c, "compare: the grid has %d failed and %d pending cells; Q is not complete",
+                    c->last.g->nfailed, c->last.g->npending);
+  }
 
   uraTable* t = ura_table_new(7, cols);
   ura_table_note(t, "paper Tables 11-13: P{F|Delta=(0,0)} x gliding area (eq. D.1) against the "

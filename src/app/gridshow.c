@@ -40,8 +40,9 @@ void ura_grid_qtext(const urGrid* g, char* buf, size_t n) {
   if (g->complete) {
     snprintf(buf, n, "Q = %.4f m^2", g->q);
   } else {
-    snprintf(buf, n, "Q = %.4f m^2 partial (%d failed, %d pending cells not counted)", g->q,
-             g->nfailed, g->npending);
+    /* not a Q: a lower bound, since the cells not counted have p >= 0 */
+    snprintf(buf, n, "Q >= %.4f m^2, partial grid (%d failed, %d pending cells not counted)",
+             g->q, g->nfailed, g->npending);
   }
 }
 

@@ -151,7 +151,6 @@ static int on_signal(void) {
   if (!ura_interrupted()) return 0;
   ura_interrupt_clear();
   rl_replace_line("", 0);
-  fputs("^C", rl_outstream ? rl_outstream : stdout);
   rl_crlf();
   rl_on_new_line();
   rl_redisplay();
@@ -164,9 +163,9 @@ int ura_repl(uraCtx* c) {
   repl_ctx = c;
   rl_attempted_completion_function = complete;
 
-  /* SIGINT is ours (interrupt.c), also while readline reads: it calls on_signal */
+  /* SIGINT is ours (interrupt.c); while readline reads, its own handler restores the terminal,
+     passes the signal on to ours, and calls on_signal */
   ura_interrupt_install(1);
-  rl_catch_signals = 0;
   rl_signal_event_hook = on_signal;
   if (hist) read_history(hist);
   c->interactive = 1;

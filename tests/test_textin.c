@@ -1,0 +1,88 @@
+/* test_textin.c: bounded line reading: line ends (LF, CRLF, none at the end), empty lines, NUL
+ * bytes, over-long lines (also without any line break, as /dev/zero), read errors */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "../src/app/app.h"
+
+/* a stream over n bytes of text */
+static FILE* over(const char* text, size_t n) {
+  FILE* f = fmemopen((void*)text, n, "r");
+  assert_non_null(f);
+  return f;
+}
+
+static void lines(void** state) {
+  static const char text[] = "one\r\n\ntwo\nlast";
+  FILE* f = over(text, sizeof text - 1);
+  char* buf = NULL;
+  size_t cap = 0;
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), 3);
+  assert_string_equal(buf, "one");
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), 0);
+  assert_string_equal(buf, "");
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), 3);
+  assert_string_equal(buf, "two");
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), 4);
+  assert_string_equal(buf, "last");
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), uraLINE_EOF);
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), uraLINE_EOF);
+  fclose(f);
+  free(buf);
+}
+
+static void refused(void** state) {
+  char* buf = NULL;
+  size_t cap = 0;
+
+  /* a NUL byte ends the reading at once */
+  static const char nul[] = "ok\nbad\0line\n";
+  FILE* f = over(nul, sizeof nul - 1);
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), 2);
+  assert_int_equal(ura_read_line(f, &buf, &cap, 100), uraLINE_NUL);
+  fclose(f);
+
+  /* exactly max bytes is a line, one more is not; the buffer stays within max + 2 */
+  char lng[64];
+  memset(lng, 'a', sizeof lng);
+  f = over(lng, 10);
+  assert_int_equal(ura_read_line(f, &buf, &cap, 10), 10);
+  fclose(f);
+  f = over(lng, 11);
+  assert_int_equal(ura_read_line(f, &buf, &cap, 10), uraLINE_LONG);
+  fclose(f);
+  free(buf);
+  buf = NULL;
+  cap = 0;
+  f = over(lng, sizeof lng);
+  assert_int_equal(ura_read_line(f, &buf, &cap, 20), uraLINE_LONG);
+  assert_true(cap <= 22);
+  fclose(f);
+
+  /* /dev/zero: a NUL at once, nothing read into memory beyond it */
+  f = fopen("/dev/zero", "r");
+  if (f) {
+    assert_int_equal(ura_read_line(f, &buf, &cap, 1 << 20), uraLINE_NUL);
+    fclose(f);
+  }
+
+  /* a directory: a read error, not the end of the file */
+  f = fopen("/", "r");
+  if (f) {
+    assert_int_equal(ura_read_line(f, &buf, &cap, 100), uraLINE_ERROR);
+    fclose(f);
+  }
+  free(buf);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(lines), cmocka_unit_test(refused),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
