@@ -57,7 +57,8 @@ static int deflections(const urModel* m, const urData* d, int b, double x[3]) {
 }
 
 /* settle the person from the reference posture for t seconds; the largest joint deflection.
-   The stance has no stiff contact, so it settles with a step of at least SETTLE_DT: a state of
+   The stance has no stiff contact, so it settles with a step of at least settle_dt (model
+   parameter, default SETTLE_DT): a state of
    rest of the Euler step does not depend on the step, and P{F|(0,0)} changes by < 1e-4 between
    a 1e-4 s and a 2e-4 s settling, at a quarter of the set-up time. */
 #define SETTLE_DT 2e-4
@@ -65,7 +66,7 @@ static int deflections(const urModel* m, const urData* d, int b, double x[3]) {
 static double settle(const urModel* m0, urData* d, int drone, double t) {
   double park[3] = {0, 0, 1e4}, qid[4] = {1, 0, 0, 0}, zero[3] = {0, 0, 0};
   urModel mc = *m0, *m = &mc;
-  mc.opt.dt = fmax(m0->opt.dt, SETTLE_DT);
+  mc.opt.dt = fmax(m0->opt.dt, ur_model_param(m0, "settle_dt", SETTLE_DT));
   ur_data_reset(m, d);
   ur_set_free(m, d, drone, park, qid, zero, zero);
   long nstep = (long)ceil(t / m->opt.dt);
