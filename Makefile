@@ -13,7 +13,7 @@
 
 PREFIX  ?= /usr/local
 CC      ?= cc
-OPT     ?= -O2 -g
+OPT     ?= -O3 -g
 BUILD   ?= build
 BIN     ?= uasrisk
 CFLAGS  += $(OPT) -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Wall -Wextra -Wshadow \

@@ -1,8 +1,10 @@
 /* bench_impact.c: CPU time of one RA3-on-human impact with the built-in models, per case, over
  * the cells of a zero-wind grid (steps per impact, time per step, time per impact); the
  * one-time model set-up (compile, balance, settle) is timed separately.
- *   bench_impact [CASE...]   (default A B C) */
+ *   bench_impact [-s SETTINGS] [CASE...]   (default A B C; SETTINGS: commands run after 'case',
+ *                                            e.g. -s 'set wind 10; set t_clear 0.01') */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -14,11 +16,13 @@ static double cpu(void) {
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+static const char* settings = "";
+
 static int bench(const char* cs) {
   static uraCtx c;
-  char line[64];
+  char line[512];
   ura_init(&c);
-  snprintf(line, sizeof line, "case %s", cs);
+  snprintf(line, sizeof line, "case %s; %s", cs, settings);
   if (ura_run_line(&c, line)) return 1;
   double t0 = cpu();
   const urImpactSetup* s = ura_setup(&c);
@@ -46,6 +50,11 @@ static int bench(const char* cs) {
       tot += dt;
       worst = dt > worst ? dt : worst;
       steps += w.d->nstep;
+      if (getenv("BENCH_VERBOSE")) {
+        printf("    %5.2f %5.2f  steps %4ld  contact %6.4f..%6.4f end %6.4f  %s\n", dp, dq,
+               w.d->nstep, w.d->t_first - w.d->t_jump, w.d->t_last - w.d->t_jump,
+               w.d->time - w.d->t_jump, ur_status_str(w.d->status));
+      }
       runs++;
     }
   }
@@ -58,8 +67,14 @@ static int bench(const char* cs) {
 
 int main(int argc, char** argv) {
   static const char* const dflt[] = {"A", "B", "C"};
+  if (argc > 2 && !strcmp(argv[1], "-s")) {
+    settings = argv[2];
+    argc -= 2;
+    argv += 2;
+  }
   int n = argc > 1 ? argc - 1 : 3;
-  printf("bench_impact: built-in RA3 on the standing human, zero wind, face 0 (one thread)\n");
+  printf("bench_impact: built-in RA3 on the standing human, %s (one thread)\n",
+         *settings ? settings : "zero wind, face 0");
   for (int i = 0; i < n; i++) {
     if (bench(argc > 1 ? argv[i + 1] : dflt[i])) return 1;
   }

@@ -42,6 +42,7 @@ static urModel* bagmodel(double kappa, double thick, int free) {
   bag.target[0] = gh;
   int ib = ur_model_add_airbag(m, &bag);
   ur_model_add_sensor(m, "gas", urSENS_AIRBAG, ib, 0, NULL, NULL);
+  ur_model_add_sensor(m, "hold", urSENS_JOINTLOAD, b, 0, NULL, NULL);  /* reaction on the bag body */
   m->opt.gravity[2] = 0;
   assert_int_equal(ur_model_compile(m), 0);
   return m;

@@ -136,6 +136,7 @@ typedef struct {
   double quat[4];                  /* orientation in the body frame */
   double size[3];                  /* semi-axes, m */
   double rbound;                   /* bounding-sphere radius = max semi-axis, m */
+  double gmat[9];                  /* rotation matrix of quat (compiled) */
 } urGeom;
 
 typedef struct {
@@ -185,6 +186,9 @@ typedef struct {
                                       rows every floor(sample_dt / dt) steps */
   double tmax;                     /* maximum simulated time after the jump, s (default 0.2) */
   double t_quiet;                  /* end when contact has been over this long, s (default 0.02) */
+  double t_clear;                  /* or over this long (<= t_quiet) with the projectile provably
+                                      clear of the rest until t_quiet (default: t_quiet, off) */
+  double a_clear;                  /* relative acceleration bound of that proof, m/s^2 (100) */
   double ke_settle;                /* or kinetic energy below this for t_quiet, J (default 1e-3) */
   double vmax;                     /* failure beyond this joint speed, m/s or rad/s (default 1e4) */
   double jump_margin;              /* free-flight jump stops this far from contact, m (1e-3) */
@@ -265,7 +269,8 @@ typedef struct {
   double* Dinv;                    /* nbody x 36 */
   double* uu;                      /* nbody x 6 */
   double* fext;                    /* nbody x 6: external force at the origin, body coords */
-  double* freact;                  /* nbody x 6: joint reaction on the child, body coords */
+  double* freact;                  /* nbody x 6: joint reaction on the child, body coords (only
+                                      at joint-load sensors and below them) */
   // contacts and airbags
   urPairData* pair;                /* npair */
   urBagData* bag;                  /* nbag */

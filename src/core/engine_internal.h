@@ -24,7 +24,7 @@ void uru_rotvec_jrinv(double J[9], const double v[3]);
 //---------------------------------- spatial algebra (engine_util.c) ------------------------------
 
 void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9]);
-void uru_xinertia_t(double r[36], const double E[9], const double p[3], const double I[36]);
+void uru_xinertia_t_add(double r[36], const double E[9], const double p[3], const double I[36]);
 int uru_invsym(double* Ainv, const double* A, int n);
 
 //---------------------------------- engine passes -------------------------------------------------

@@ -151,9 +151,8 @@ void ur_kinematics(const urModel* m, urData* d) {
   for (int g = 0; g < m->ngeom; g++) {
     const urGeom* ge = m->geom + g;
     const double* xm = d->xmat + 9*ge->body;
-    double R[9], t[3];
-    uru_quat2mat(R, ge->quat);
-    uru_mulmat3(d->gxmat + 9*g, xm, R);
+    double t[3];
+    uru_mulmat3(d->gxmat + 9*g, xm, ge->gmat);
     uru_mulmat3vec(t, xm, ge->pos);
     for (int k = 0; k < 3; k++) {
       d->gxpos[3*g + k] = d->xpos[3*ge->body + k] + t[k];

@@ -80,6 +80,8 @@ urModel* ur_model_new(void) {
   m->opt.sample_dt = 1e-4;
   m->opt.tmax = 0.2;
   m->opt.t_quiet = 0.02;
+  m->opt.t_clear = INFINITY;
+  m->opt.a_clear = 100;
   m->opt.ke_settle = 1e-3;
   m->opt.vmax = 1e4;
   m->opt.jump_margin = 1e-3;
@@ -429,6 +431,10 @@ int ur_model_compile(urModel* m) {
     if (uru_invsym(b->iinv, b->inertia, 3)) {
       memset(b->iinv, 0, sizeof(b->iinv));
     }
+  }
+
+  for (int g = 0; g < m->ngeom; g++) {
+    uru_quat2mat(m->geom[g].gmat, m->geom[g].quat);
   }
 
   // reference configuration

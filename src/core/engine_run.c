@@ -157,9 +157,67 @@ static void checkstate(const urModel* m, urData* d) {
 }
 
 
-// end of a run (after ur_run_start): contact over, motion settled, or maximum time
+static int intree(const urModel* m, int g, int tree);
+
+// speed bound of the points of ellipsoid g: centre speed + |omega| x bounding radius
+static void geomspeed(const urModel* m, const urData* d, int g, double v[3], double* w) {
+  const urGeom* ge = m->geom + g;
+  ur_point_vel(m, d, ge->body, ge->pos, v);
+  *w = uru_norm3(d->cvel + 6*ge->body)*ge->rbound;
+}
+
+
+// the separation of ellipsoids g1, g2 (lower bound sep >= 0) cannot close within T
+static int stays_clear(const urModel* m, const urData* d, int g1, int g2, double sep,
+                       double T) {
+  double v1[3], v2[3], w1, w2;
+  if (!(sep > 0)) {
+    return 0;
+  }
+  geomspeed(m, d, g1, v1, &w1);
+  geomspeed(m, d, g2, v2, &w2);
+  double dv[3] = {v1[0] - v2[0], v1[1] - v2[1], v1[2] - v2[2]};
+  double vc = uru_norm3(dv) + w1 + w2;
+  return sep > vc*T + 0.5*m->opt.a_clear*T*T;
+}
+
+
+// the projectile tree provably cannot touch the rest again within T: for every pair and airbag
+// target across it, the separation lower bound of the last ur_forward (bounding-sphere gap,
+// support-function bound or exact distance) exceeds what the closing speed of the two
+// ellipsoids (centre velocities plus spin times bounding radius) and a relative acceleration
+// a_clear can close in T
+static int proj_clear(const urModel* m, const urData* d, double T) {
+  int tree = d->proj;
+  for (int i = 0; i < m->npair; i++) {
+    const urPair* p = m->pair + i;
+    if (p->geom2 < 0 || intree(m, p->geom1, tree) == intree(m, p->geom2, tree)) {
+      continue;
+    }
+    if (!stays_clear(m, d, p->geom1, p->geom2, -d->pair[i].depth, T)) {
+      return 0;
+    }
+  }
+  for (int i = 0; i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    for (int t = 0; t < b->ntarget; t++) {
+      if (intree(m, b->geom, tree) != intree(m, b->target[t], tree) &&
+          !stays_clear(m, d, b->geom, b->target[t], -d->bag[i].depth[t], T)) {
+        return 0;
+      }
+    }
+  }
+  return 1;
+}
+
+
+// end of a run (after ur_run_start): contact over (for t_quiet, or for t_clear with the
+// projectile provably clear until t_quiet), motion settled, or maximum time
 static void checkend(const urModel* m, urData* d) {
-  if (d->t_first >= 0 && d->time - d->t_last >= m->opt.t_quiet) {
+  double over = d->t_first >= 0 ? d->time - d->t_last : -1;
+  if (d->t_first >= 0 && (over >= m->opt.t_quiet ||
+                          (over >= m->opt.t_clear &&
+                           proj_clear(m, d, m->opt.t_quiet - over + m->opt.dt)))) {
     ur_set_status(d, urSTAT_SEPARATED, "contact over");
   } else if (d->t_first >= 0 && d->t_calm >= m->opt.t_quiet) {
     ur_set_status(d, urSTAT_SETTLED, "motion settled");
@@ -323,20 +381,16 @@ static double firsthit(const urModel* m, const urData* d, int gm, int gs, const 
 
 
 // world ellipsoid of geom g from the current kinematics
-static void worldgeom(const urModel* m, const urData* d, int g, urEllipsoid* e) {
-  memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
-  memcpy(e->R, d->gxmat + 9*g, 9*sizeof(double));
-  memcpy(e->r, m->geom[g].size, 3*sizeof(double));
-}
-
-
 // smallest separation between the tree's ellipsoids and those they can touch (pairs and bag
-// targets, ground excluded); -INFINITY if some already overlap
+// targets, ground excluded); -INFINITY if some already overlap. Exact distances are computed in
+// the order of a cheap lower bound (bounding-sphere gap, support-function bound) and only while
+// that bound is below the best so far.
 static double separation(const urModel* m, const urData* d, int root) {
-  double smin = INFINITY;
-  urEllipsoid a, b;
-  urGeomContact gc;
-  for (int i = 0; i < m->npair + m->nbag*urMAXBAGTGT; i++) {
+  int n = m->npair + m->nbag*urMAXBAGTGT, k = 0;
+  int g1s[n > 0 ? n : 1], g2s[n > 0 ? n : 1];
+  double lb[n > 0 ? n : 1];
+  static const double u0[3] = {0, 0, 0};
+  for (int i = 0; i < n; i++) {
     int g1, g2;
     if (i < m->npair) {
       g1 = m->pair[i].geom1;
@@ -353,11 +407,38 @@ static double separation(const urModel* m, const urData* d, int root) {
     if (g2 < 0 || intree(m, g1, root) == intree(m, g2, root)) {
       continue;
     }
-    worldgeom(m, d, g1, &a);
-    worldgeom(m, d, g2, &b);
+    const double* c1 = d->gxpos + 3*g1;
+    const double* c2 = d->gxpos + 3*g2;
+    double dx[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]};
+    double gap = uru_norm3(dx) - m->geom[g1].rbound - m->geom[g2].rbound;
+    g1s[k] = g1;
+    g2s[k] = g2;
+    lb[k++] = fmax(gap, -ur_depth_bound(m, d, g1, g2, u0));
+  }
+
+  // exact distances, smallest bound first, until no bound is below the best
+  double smin = INFINITY;
+  while (k > 0) {
+    int j = 0;
+    for (int i = 1; i < k; i++) {
+      if (lb[i] < lb[j]) {
+        j = i;
+      }
+    }
+    if (!(lb[j] < smin)) {
+      break;
+    }
+    urEllipsoid a, b;
+    urGeomContact gc;
     double u[3] = {0, 0, 0};
+    ur_geom_ellipsoid(m, d, g1s[j], &a);
+    ur_geom_ellipsoid(m, d, g2s[j], &b);
     ur_collide_ellipsoids(&a, &b, u, &gc);
     smin = fmin(smin, -gc.g);
+    k--;
+    g1s[j] = g1s[k];
+    g2s[j] = g2s[k];
+    lb[j] = lb[k];
   }
   return smin;
 }

@@ -151,85 +151,108 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 
 
 
-// extract / insert a 3x3 block of a 6x6 matrix
-static void getblock(double B[9], const double I[36], int bi, int bj) {
+// symmetric inertia child -> parent, accumulated: r += X^T I X with X = [E 0; -E px E].
+// I = [A B; B^T C] (A, C symmetric; only the upper triangle of I is read). Rotated blocks
+// A' = E^T A E, B' = E^T B E, C' = E^T C E; then J12 = B' + px C', J11 = A' + px B'^T - J12 px,
+// J22 = C' (symmetric results from their upper triangles; r stays symmetric if it was).
+void uru_xinertia_t_add(double r[36], const double E[9], const double p[3], const double I[36]) {
+  double TA[9], TB[9], TC[9], A[9], B[9], C[9], J[9];
+
+  // T = block E (rows i of the blocks, columns j of E); the lower triangles of A and C mirrored
   urUNROLL
   for (int i = 0; i < 3; i++) {
+    double a0 = I[i];
+    double a1 = i <= 1 ? I[6*i + 1] : I[6 + i];
+    double a2 = I[6*i + 2];
+    double c0 = I[21 + i];
+    double c1 = i <= 1 ? I[6*(3+i) + 4] : I[27 + i];
+    double c2 = I[6*(3+i) + 5];
+    const double* b = I + 6*i + 3;
     urUNROLL
     for (int j = 0; j < 3; j++) {
-      B[3*i+j] = I[6*(3*bi+i) + 3*bj + j];
-    }
-  }
-}
-
-
-// r = [p]x M (cross product of p with each column of M)
-static void crossmat(double r[9], const double p[3], const double M[9]) {
-  urUNROLL
-  for (int c = 0; c < 3; c++) {
-    double x = M[c], y = M[3+c], z = M[6+c];
-    r[c] = p[1]*z - p[2]*y;
-    r[3+c] = p[2]*x - p[0]*z;
-    r[6+c] = p[0]*y - p[1]*x;
-  }
-}
-
-
-// symmetric inertia child -> parent: X^T I X with X = [E 0; -E px E]
-void uru_xinertia_t(double r[36], const double E[9], const double p[3], const double I[36]) {
-  double A11[9], A12[9], A22[9], T[9], J12[9], J11[9], U[9], V[9];
-
-  // rotate the three distinct blocks: E^T B E
-  getblock(T, I, 0, 0);
-  uru_mulmat3ta(T, E, T);
-  uru_mulmat3(A11, T, E);
-  getblock(T, I, 0, 1);
-  uru_mulmat3ta(T, E, T);
-  uru_mulmat3(A12, T, E);
-  getblock(T, I, 1, 1);
-  uru_mulmat3ta(T, E, T);
-  uru_mulmat3(A22, T, E);
-
-  // translate: J12 = A12 + px A22, J11 = A11 + px A12^T - J12 px, J21 = J12^T, J22 = A22
-  crossmat(T, p, A22);
-  urUNROLL
-  for (int i = 0; i < 9; i++) {
-    J12[i] = A12[i] + T[i];
-  }
-  urUNROLL
-  for (int i = 0; i < 3; i++) {
-    urUNROLL
-    for (int j = 0; j < 3; j++) {
-      U[3*i+j] = A12[3*j+i];
-    }
-  }
-  crossmat(T, p, U);
-  urUNROLL
-  for (int i = 0; i < 3; i++) {
-    urUNROLL
-    for (int j = 0; j < 3; j++) {
-      U[3*i+j] = J12[3*j+i];
-    }
-  }
-  crossmat(V, p, U);
-  urUNROLL
-  for (int i = 0; i < 3; i++) {
-    urUNROLL
-    for (int j = 0; j < 3; j++) {
-      // (J12 px) = -(px J12^T)^T
-      J11[3*i+j] = A11[3*i+j] + T[3*i+j] + V[3*j+i];
+      TA[3*i+j] = a0*E[j] + a1*E[3+j] + a2*E[6+j];
+      TB[3*i+j] = b[0]*E[j] + b[1]*E[3+j] + b[2]*E[6+j];
+      TC[3*i+j] = c0*E[j] + c1*E[3+j] + c2*E[6+j];
     }
   }
 
-  // symmetrise and store
+  // rotated blocks: X'_ij = sum_k E_ki T_kj (A', C': upper triangles)
   urUNROLL
   for (int i = 0; i < 3; i++) {
     urUNROLL
     for (int j = 0; j < 3; j++) {
-      r[6*i + j] = 0.5*(J11[3*i+j] + J11[3*j+i]);
-      r[6*i + 3 + j] = J12[3*i+j];
-      r[6*(3+j) + i] = J12[3*i+j];
-      r[6*(3+i) + 3 + j] = 0.5*(A22[3*i+j] + A22[3*j+i]);
+      B[3*i+j] = E[i]*TB[j] + E[3+i]*TB[3+j] + E[6+i]*TB[6+j];
+      if (j >= i) {
+        A[3*i+j] = E[i]*TA[j] + E[3+i]*TA[3+j] + E[6+i]*TA[6+j];
+        C[3*i+j] = E[i]*TC[j] + E[3+i]*TC[3+j] + E[6+i]*TC[6+j];
+      }
+    }
+  }
+  C[3] = C[1];
+  C[6] = C[2];
+  C[7] = C[5];
+
+  // J12 = B' + px C' (column j: p x C'_j)
+  urUNROLL
+  for (int j = 0; j < 3; j++) {
+    double x = C[j], y = C[3+j], z = C[6+j];
+    J[j] = B[j] + p[1]*z - p[2]*y;
+    J[3+j] = B[3+j] + p[2]*x - p[0]*z;
+    J[6+j] = B[6+j] + p[0]*y - p[1]*x;
+  }
+
+  // J11 (upper triangle) = A' + (px B'^T)_ij - (J12 px)_ij, with
+  // (px M^T)_ij = (p x row j of M)_i and (M px)_ij = (row i of M x p)_j
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = i; j < 3; j++) {
+      const double* bj = B + 3*j;
+      const double* ji = J + 3*i;
+      double pb, jp;
+      switch (i) {
+      case 0:
+        pb = p[1]*bj[2] - p[2]*bj[1];
+        break;
+      case 1:
+        pb = p[2]*bj[0] - p[0]*bj[2];
+        break;
+      default:
+        pb = p[0]*bj[1] - p[1]*bj[0];
+        break;
+      }
+      switch (j) {
+      case 0:
+        jp = ji[1]*p[2] - ji[2]*p[1];
+        break;
+      case 1:
+        jp = ji[2]*p[0] - ji[0]*p[2];
+        break;
+      default:
+        jp = ji[0]*p[1] - ji[1]*p[0];
+        break;
+      }
+      double v = A[3*i+j] + pb - jp;
+      r[6*i+j] += v;
+      if (j != i) {
+        r[6*j+i] += v;
+      }
+    }
+  }
+
+  // J12, J21 = J12^T, J22 = C'
+  urUNROLL
+  for (int i = 0; i < 3; i++) {
+    urUNROLL
+    for (int j = 0; j < 3; j++) {
+      r[6*i + 3 + j] += J[3*i+j];
+      r[6*(3+j) + i] += J[3*i+j];
+      if (j >= i) {
+        r[6*(3+i) + 3 + j] += C[3*i+j];
+        if (j != i) {
+          r[6*(3+j) + 3 + i] += C[3*i+j];
+        }
+      }
     }
   }
 }

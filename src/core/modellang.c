@@ -90,8 +90,8 @@ typedef struct {
 #define NKEY(a)       ((int)(sizeof(a)/sizeof(a[0])))
 
 static const KeySpec spec_option[] = {
-  NUM("dt"), NUM("sample_dt"), NUM("tmax"), NUM("t_quiet"), NUM("ke_settle"), NUM("vmax"),
-  NUM("jump_margin"), VEC3("gravity"), {"integrator", K_ENUM, 1, 0, 0, "euler|rk4"},
+  NUM("dt"), NUM("sample_dt"), NUM("tmax"), NUM("t_quiet"), NUM("t_clear"), NUM("a_clear"),
+  NUM("ke_settle"), NUM("vmax"), NUM("jump_margin"), VEC3("gravity"), {"integrator", K_ENUM, 1, 0, 0, "euler|rk4"},
   {"damping", K_ENUM, 1, 0, 0, "implicit|explicit"}, ENABLE
 };
 static const KeySpec spec_curve[] = {
@@ -949,14 +949,15 @@ static int st_option(Parser* p, const urlStmt* st, Bound* b) {
   }
   urOption* o = &p->m->opt;
   static const char* const pos[] = {"dt", "sample_dt", "tmax", "vmax"};
-  static const char* const nn[] = {"t_quiet", "ke_settle", "jump_margin"};
+  static const char* const nn[] = {"t_quiet", "ke_settle", "jump_margin", "t_clear",
+                                   "a_clear"};
   for (int i = 0; i < 4; i++) {
     const Val* v = get(b, pos[i]);
     if (v->set && !(v->v[0] > 0)) {
       return fail(p, v->line, "option %s must be > 0 (got %g)", pos[i], v->v[0]);
     }
   }
-  for (int i = 0; i < 3; i++) {
+  for (int i = 0; i < 5; i++) {
     const Val* v = get(b, nn[i]);
     if (v->set && !(v->v[0] >= 0)) {
       return fail(p, v->line, "option %s must be >= 0 (got %g)", nn[i], v->v[0]);
@@ -966,6 +967,8 @@ static int st_option(Parser* p, const urlStmt* st, Bound* b) {
   o->sample_dt = num(b, "sample_dt", o->sample_dt);
   o->tmax = num(b, "tmax", o->tmax);
   o->t_quiet = num(b, "t_quiet", o->t_quiet);
+  o->t_clear = num(b, "t_clear", o->t_clear);
+  o->a_clear = num(b, "a_clear", o->a_clear);
   o->ke_settle = num(b, "ke_settle", o->ke_settle);
   o->vmax = num(b, "vmax", o->vmax);
   o->jump_margin = num(b, "jump_margin", o->jump_margin);
