@@ -1,6 +1,7 @@
 /* test_engine_run.c: runs on a drone-on-human scene: thread safety (two threads give results
  * bitwise identical to sequential runs), failure reporting (non-finite and exploding states),
- * stop requests, free-flight jump, history sampling, builder errors and name look-up. */
+ * stop requests, free-flight jump, history sampling, builder errors and name look-up; the end
+ * of a run with t_clear, on two balls. */
 #include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
@@ -261,6 +262,82 @@ static void test_history_and_names(void** state) {
   ur_model_free(m);
 }
 
+//---------------------------------- end of a run: t_clear -----------------------------------------
+
+// a 1 kg ball (r 0.05 m) and two fixed balls (r 0.1 m) at the origin and at (xb, 0, zb), linear
+// elastic contact, no gravity; t_quiet 0.05 s
+static urModel* balls(double xb, double zb, double t_clear, double a_clear) {
+  urModel* m = ur_model_new();
+  double I[6] = {1e-3, 1e-3, 1e-3, 0, 0, 0};
+  int p = ur_model_add_body(m, "ball", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, p, 1, NULL, I);
+  int gp = ur_model_add_ellipsoid(m, "ball", p, NULL, NULL, (double[3]){0.05, 0.05, 0.05});
+  urLaw law = {0};
+  law.type = urLAW_TABLE;
+  law.load.n = 2;
+  law.load.x[1] = 0.01;
+  law.load.y[1] = 2000;
+  for (int k = 0; k < 2; k++) {
+    char name[8];
+    snprintf(name, sizeof name, "t%d", k);
+    int b = ur_model_add_body(m, name, -1, urJNT_FIXED, (double[3]){k*xb, 0, k*zb}, NULL);
+    ur_model_set_inertia(m, b, 1, NULL, I);
+    int g = ur_model_add_ellipsoid(m, name, b, NULL, NULL, (double[3]){0.1, 0.1, 0.1});
+    ur_model_add_pair(m, name, gp, g, &law);
+  }
+  m->opt.gravity[2] = 0;
+  m->opt.dt = 1e-4;
+  m->opt.t_quiet = 0.05;
+  m->opt.t_clear = t_clear;
+  m->opt.a_clear = a_clear;
+  assert_int_equal(ur_model_compile(m), 0);
+  return m;
+}
+
+
+// a ball rebounding straight up from the first target: with t_clear the run ends as soon as the
+// separation provably cannot close by t_quiet, with v T < sep, i.e. (v = 2 m/s, a_clear 0) about
+// halfway to t_quiet; without it at t_quiet
+static void test_clear_ends_early(void** state) {
+  double ends[2];
+  for (int k = 0; k < 2; k++) {
+    urModel* m = balls(5, 0, k ? 0.005 : INFINITY, 0);
+    urData* d = ur_data_new(m);
+    double pos[3] = {0, 0, 0.3}, vel[3] = {0, 0, -2};
+    assert_int_equal(ur_run_impact(m, d, 0, pos, NULL, vel), urSTAT_SEPARATED);
+    ends[k] = d->time - d->t_last;
+    ur_data_free(d);
+    ur_model_free(m);
+  }
+  print_message("ball rebound: run ends %.4f s after the contact (t_quiet alone), %.4f s "
+                "(t_clear 0.005)\n", ends[0], ends[1]);
+  assert_true(fabs(ends[0] - 0.05) < 2e-4);
+  assert_true(ends[1] > 0.005 && ends[1] < 0.035);
+}
+
+
+// a ball glancing off the first target toward the second one, 0.4 m on and 0.35 m higher: the
+// second contact comes about 0.2 s later, so no end is proved in between and the run is the one without t_clear
+static void test_clear_keeps_recontact(void** state) {
+  double tlast[2], tend[2];
+  for (int k = 0; k < 2; k++) {
+    urModel* m = balls(0.4, 0.35, k ? 0.005 : INFINITY, 100);
+    m->opt.t_quiet = 0.3;
+    m->opt.tmax = 2;
+    urData* d = ur_data_new(m);
+    double pos[3] = {-0.4, 0, 0.14}, vel[3] = {2, 0, 0};
+    assert_int_equal(ur_run_impact(m, d, 0, pos, NULL, vel), urSTAT_SEPARATED);
+    tlast[k] = d->t_last - d->t_first;
+    tend[k] = d->time - d->t_first;
+    ur_data_free(d);
+    ur_model_free(m);
+  }
+  print_message("glancing ball: last contact %.4f / %.4f s after the first, end %.4f / %.4f s "
+                "(without / with t_clear)\n", tlast[0], tlast[1], tend[0], tend[1]);
+  assert_true(tlast[0] > 0.1);                 /* the second target was reached */
+  assert_true(tlast[1] == tlast[0]);
+}
+
 
 int main(void) {
   const struct CMUnitTest tests[] = {
@@ -271,6 +348,8 @@ int main(void) {
     cmocka_unit_test(test_stop_request),
     cmocka_unit_test(test_jump),
     cmocka_unit_test(test_history_and_names),
+    cmocka_unit_test(test_clear_ends_early),
+    cmocka_unit_test(test_clear_keeps_recontact),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
