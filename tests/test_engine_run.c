@@ -317,7 +317,8 @@ static void test_clear_ends_early(void** state) {
 
 
 // a ball glancing off the first target toward the second one, 0.4 m on and 0.35 m higher: the
-// second contact comes about 0.2 s later, so no end is proved in between and the run is the one without t_clear
+// second contact comes about 0.2 s later, so no end is proved in between and the run is the one
+// without t_clear
 static void test_clear_keeps_recontact(void** state) {
   double tlast[2], tend[2];
   for (int k = 0; k < 2; k++) {
