@@ -1,9 +1,10 @@
 #!/bin/sh
 # check-san.sh BUILD: the whole test suite again on the AddressSanitizer+UBSan build in BUILD
 # (its test programs, and the shell tests run on BUILD/uasrisk), then a representative session
-# (impacts, their histories, a coarse grid, grid show, save and export, a model saved
-# and loaded back, refused commands) under valgrind on the plain build ./uasrisk (valgrind does
-# not run sanitized programs): any memory error or definite leak fails. Prints the times.
+# (impacts, their histories, a coarse grid, grid show, a case switched back with its kept model
+# and its grid recalled, save and export, a model saved and loaded back, refused commands) under
+# valgrind on the plain build ./uasrisk (valgrind does not run sanitized programs): any memory
+# error or definite leak fails. Prints the times.
 set -u
 b=$1
 status=0
@@ -33,6 +34,10 @@ set step 0.2
 grid
 grid show
 grid cells
+case B
+impact 0 0
+case C
+grid
 set bag_p0 1.1 atm
 save session $d/s.ses
 export grid $d/g.csv

@@ -18,6 +18,9 @@
 #define uraMAXOV 64                /* model parameters set by the case or the user */
 #define uraMAXPARTS 32             /* model parts */
 #define uraERRLEN 1024
+#define uraMODELCACHE 8            /* compiled, settled models kept besides the live one */
+#define uraRECALLGRIDS 64          /* complete grids kept for recall */
+#define uraRECALLBYTES (64L << 20) /* their cells, bytes at most */
 
 /* ---- live case state ---- */
 
@@ -39,6 +42,7 @@ typedef struct {
   double par_min, par_max, perp_max; /* grid extents when set, m */
   int extent_set;                  /* 0: extents sized automatically */
   double threads;                  /* grid worker threads (a whole number) */
+  int recall;                      /* 1: a grid identical to an earlier one reuses its cells */
   char ov_name[uraMAXOV][urNAMELEN]; /* model parameters overridden (SI values) */
   double ov_val[uraMAXOV];
   int ov_user[uraMAXOV];           /* 1: set by the user, 0: by the case preset */
@@ -61,7 +65,20 @@ typedef struct {
   char casename[8];
   double wind, face, speed, angle; /* m/s, deg, m/s, deg */
   char source[512];                /* "computed", or the file it was loaded from */
+  int recalled;                    /* the cells of an identical earlier grid (recall.c) */
 } uraGridResult;
+
+/* what a compiled model is made of: the generation of the model parts (counted up whenever they
+   change) and the parameter overrides, names and exact values in any order */
+typedef struct {
+  unsigned long gen;
+  int nov;
+  char ov_name[uraMAXOV][urNAMELEN];
+  double ov_val[uraMAXOV];
+} uraModelKey;
+
+typedef struct uraModelCache uraModelCache;   /* modelcache.c */
+typedef struct uraRecall uraRecall;           /* recall.c */
 
 /* time histories of one impact, for inspection and plotting */
 typedef struct {
@@ -104,6 +121,7 @@ typedef struct uraCtx {
   int nsweep;
   uraPart part[uraMAXPARTS];       /* the model set, in order */
   int npart;
+  unsigned long parts_gen;         /* generation of the model parts */
   urModel* model;                  /* compiled with the overrides; NULL: stale */
   urImpactSetup setup;             /* settled stance of the model; valid if have_setup */
   int have_setup;
@@ -112,6 +130,9 @@ typedef struct uraCtx {
   int have_impact;                 /* the work holds a finished impact */
   urImpactResult last_impact;
   double last_dpar, last_dperp;
+  uraModelCache* mcache;           /* other models with their stances (NULL until one is kept) */
+  uraRecall* recall;               /* complete grids for recall (NULL until one is kept) */
+  unsigned long tick;              /* use counter of both, for least-recently-used eviction */
   /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
   int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
 } uraCtx;
@@ -245,6 +266,22 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
 int ura_model_state(uraCtx* c, const uraState* ns, const char* who);
 int ura_cmd_model(uraCtx* c, int argc, char** argv);
+
+/* the model cache (modelcache.c): the key of the live parts with st's overrides, and equality */
+void ura_model_key(const uraCtx* c, const uraState* st, uraModelKey* k);
+int ura_model_key_same(const uraModelKey* a, const uraModelKey* b);
+/* the live model leaves: kept with its settled stance (an unsettled one is freed); its work space
+   and last impact go with it */
+void ura_mcache_park(uraCtx* c);
+/* a kept model for ns's overrides becomes the live one (the live one is parked): 1, else 0 */
+int ura_mcache_take(uraCtx* c, const uraState* ns);
+void ura_mcache_flush(uraCtx* c);              /* free every kept model */
+
+/* grid recall (recall.c): a copy of a kept complete grid for the live model and these
+   conditions (NULL: none, or recall is off); keep a complete grid; free every kept grid */
+urGrid* ura_recall_find(uraCtx* c, const urImpactCond* cond);
+void ura_recall_keep(uraCtx* c, const urImpactCond* cond, const urGrid* g);
+void ura_recall_flush(uraCtx* c);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);

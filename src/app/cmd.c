@@ -14,8 +14,8 @@ const uraCmd ura_cmds[] = {
   {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
    "print the live case state with units, or one parameter; derived values say so"},
   {"case", ura_cmd_case, 1, 1, uraC_CASE, "case A|B|C|A1|A2",
-   "load the paper's preset for a case; wind, face, step and the output settings keep their "
-   "values"},
+   "load the paper's preset for a case; wind, face, step, recall and the output settings keep "
+   "their values"},
   {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
   {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
    "impact speed and descent angle for each wind in 'winds' (paper Table 2); "

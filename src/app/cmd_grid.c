@@ -3,12 +3,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "app.h"
 
 #define MAXCELLS 4000000L          /* largest grid (and region scanned for its extents), cells */
 #define STOPPED "interrupted"      /* reason of a cell whose impact Ctrl-C stopped */
+#define RECALLED "recalled: the cells of an identical grid computed earlier in this session " \
+                 "(same model, conditions, step, extents and injury settings); nothing was " \
+                 "simulated now ('set recall off' recomputes)"
 
 typedef struct {
   const urImpactSetup* s;
@@ -98,11 +102,39 @@ static int mirrored(const uraCtx* c) {
   return f == 0 && c->st.roll == 0 && c->st.yaw == 0;
 }
 
-/* run the grid of the live case into c->last */
+static double seconds_since(const struct timespec* t0) {
+  struct timespec t1;
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  return (t1.tv_sec - t0->tv_sec) + 1e-9 * (t1.tv_nsec - t0->tv_nsec);
+}
+
+/* g becomes the last grid, with the live case's conditions */
+static void keep_last(uraCtx* c, urGrid* g, const urImpactCond* cond, int recalled) {
+  ura_last_free(c);
+  c->last.g = g;
+  snprintf(c->last.casename, sizeof c->last.casename, "%s", c->st.casename);
+  c->last.wind = c->st.descent.wind;
+  c->last.face = c->st.face;
+  c->last.speed = cond->speed;
+  c->last.angle = cond->angle;
+  snprintf(c->last.source, sizeof c->last.source, "computed");
+  c->last.recalled = recalled;
+}
+
+/* run the grid of the live case into c->last (or recall an identical earlier one: recall.c) */
 int ura_grid_run(uraCtx* c, int quiet) {
-  const urImpactSetup* s = ura_setup(c);
+  struct timespec t0;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
   urImpactCond cond;
-  if (!s || ura_impact_cond(c, &cond)) return -1;
+  if (ura_dry(c, "simulation") || ura_impact_cond(c, &cond)) return -1;
+  urGrid* old = ura_recall_find(c, &cond);
+  if (old) {
+    old->seconds = seconds_since(&t0);
+    keep_last(c, old, &cond, 1);
+    return 0;
+  }
+  const urImpactSetup* s = ura_setup(c);
+  if (!s) return -1;
 
   /* extents, lattice, refusing what memory cannot hold */
   urGridSpec spec = {c->st.step, 0, 0, 0, mirrored(c), (int)c->st.threads, cb_may, cb_impact,
@@ -177,15 +209,9 @@ int ura_grid_run(uraCtx* c, int quiet) {
   }
   ur_grid_summarise(g);
 
-  /* keep it as the last grid */
-  ura_last_free(c);
-  c->last.g = g;
-  snprintf(c->last.casename, sizeof c->last.casename, "%s", c->st.casename);
-  c->last.wind = c->st.descent.wind;
-  c->last.face = c->st.face;
-  c->last.speed = cond.speed;
-  c->last.angle = cond.angle;
-  snprintf(c->last.source, sizeof c->last.source, "computed");
+  /* keep it as the last grid, and a complete one for recall */
+  keep_last(c, g, &cond, 0);
+  ura_recall_keep(c, &cond, g);
   if (g->npending) {
     return ura_fail(c, "grid: interrupted (Ctrl-C); %d of %d cells finished, kept as a partial "
                     "grid (no Q)", g->ndone + g->nfailed, g->nrow * g->ncol);
@@ -206,6 +232,7 @@ static int grid_summary(uraCtx* c) {
   ura_table_note(t, "Q = sum of P{F|Delta} x %g m x %g m over the full plane (eq. 4.5); "
                  "%d impacts simulated, %d cells decided geometrically", g->step, g->step,
                  g->nsimulated, g->nrow * g->ncol - g->nsimulated - g->npending - g->nfailed);
+  if (c->last.recalled) ura_table_note(t, "%s", RECALLED);
   ura_table_cell(t, "%s", c->last.casename);
   ura_table_cell(t, "%g", c->last.wind);
   ura_table_cell(t, "%.3f", c->last.speed);

@@ -153,6 +153,8 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   double keep = is_wind ? c->st.descent.wind : c->st.face;
   uraTable* t = ura_table_new(6, cols);
   int rc = 0;
+  char recalled[200] = "";         /* the values whose grids were recalled (recall.c) */
+  size_t nr = 0;
   for (int i = 0; i < n && rc == 0; i++) {
     if (is_wind) c->st.descent.wind = v[i];
     else c->st.face = v[i];
@@ -175,10 +177,19 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
       ura_table_cell(t, "%.2f", c->last.angle);
       ura_table_cell(t, "%.4f", c->last.g->q);
       sweep_add(s, v[i], c->last.speed, c->last.angle, c->last.g->q);
+      if (c->last.recalled && nr < sizeof recalled) {
+        nr += (size_t)snprintf(recalled + nr, sizeof recalled - nr, "%s%g", nr ? ", " : "",
+                               v[i]);
+      }
     }
   }
   if (is_wind) c->st.descent.wind = keep;
   else c->st.face = keep;
+  if (nr) {
+    ura_table_note(t, "recalled: the grids of %s %s are identical to grids computed earlier in "
+                   "this session and were not simulated again ('set recall off' recomputes)",
+                   argv[1], recalled);
+  }
   ura_table_print(c, t);
 
   /* keep what finished (a sweep that stopped keeps the values before the failure) */
@@ -222,6 +233,10 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   uraTable* t = ura_table_new(7, cols);
   ura_table_note(t, "paper Tables 11-13: P{F|Delta=(0,0)} x gliding area (eq. D.1) against the "
                  "dynamical Q, and the reduction factor between them");
+  if (c->last.recalled) {
+    ura_table_note(t, "recalled: the grid is identical to one computed earlier in this session "
+                   "and was not simulated again ('set recall off' recomputes)");
+  }
   ura_table_cell(t, "%s", c->st.casename);
   ura_table_cell(t, "%g", c->st.descent.wind);
   ura_table_cell(t, "%.4f", r.p);

@@ -34,8 +34,17 @@ static void parts_free(uraPart* p, int n) {
   for (int i = 0; i < n; i++) free(p[i].text);
 }
 
-void ura_models_free(uraCtx* c) {
+/* the model parts change (or go): the live model, the kept ones and the grids computed with them
+   are of the old parts */
+static void parts_changed(uraCtx* c) {
   ura_model_stale(c);
+  ura_mcache_flush(c);
+  ura_recall_flush(c);
+  c->parts_gen++;
+}
+
+void ura_models_free(uraCtx* c) {
+  parts_changed(c);
   parts_free(c->part, c->npart);
   c->npart = 0;
 }
@@ -100,7 +109,7 @@ static int parts_commit(uraCtx* c, uraPart* np, int nn) {
     parts_free(np, nn);
     return ura_fail(c, "%s", err);
   }
-  ura_model_stale(c);
+  parts_changed(c);
   parts_free(c->part, c->npart);
   memcpy(c->part, np, sizeof(uraPart) * nn);
   c->npart = nn;
@@ -168,6 +177,7 @@ const urImpactSetup* ura_setup(uraCtx* c) {
     if (ura_interrupted()) ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
     else ura_fail(c, "model: %s", c->setup.err);
     ur_impact_free(&c->setup);
+    ura_model_stale(c);          /* balanced already: compile afresh next time */
     return NULL;
   }
   c->have_setup = 1;
@@ -180,12 +190,12 @@ int ura_model_param_find(uraCtx* c, const char* name) {
 }
 
 int ura_model_state(uraCtx* c, const uraState* ns, const char* who) {
-  /* the same overrides: the same model, and its settled stance stays valid */
-  int same = c->model && ns->nov == c->st.nov;
-  for (int i = 0; same && i < ns->nov; i++) {
-    same = !strcmp(ns->ov_name[i], c->st.ov_name[i]) && ns->ov_val[i] == c->st.ov_val[i];
-  }
-  if (same) {
+  /* the same overrides: the same model, and its settled stance stays valid; overrides seen
+     earlier: the model kept for them, balanced and settled (modelcache.c) */
+  uraModelKey now, want;
+  ura_model_key(c, &c->st, &now);
+  ura_model_key(c, ns, &want);
+  if ((c->model && ura_model_key_same(&now, &want)) || ura_mcache_take(c, ns)) {
     c->st = *ns;
     return 0;
   }
@@ -194,7 +204,7 @@ int ura_model_state(uraCtx* c, const uraState* ns, const char* who) {
   char err[300];
   urModel* m = compile(c->part, c->npart, ns, err, sizeof err);
   if (!m) return ura_fail(c, "%s: refused, the model does not accept it: model: %s", who, err);
-  ura_model_stale(c);
+  ura_mcache_park(c);
   c->model = m;
   c->st = *ns;
   return 0;

@@ -12,6 +12,7 @@
 #define OFF(f) offsetof(uraState, f)
 
 static const char* const format_names[] = {"table", "csv", NULL};
+static const char* const onoff_names[] = {"off", "on", NULL};
 const char* const ura_case_names[] = {"A", "B", "C", "A1", "A2", NULL};
 
 /* one row per settable quantity: name, kind, offset, derived flag, unit, range, help */
@@ -30,6 +31,10 @@ const uraParam ura_params[] = {
   {"step", uraP_NUM, OFF(step), 0, "m", 0.005, 1, "grid pitch", NULL},
   {"threads", uraP_INT, OFF(threads), 0, "", 1, 64,
    "grid worker threads (results do not depend on it)", NULL},
+  {"recall", uraP_ENUM, OFF(recall), 0, "", 0, 0,
+   "on: a grid asked for again with the same model, conditions, step, extents and injury "
+   "settings reuses the cells computed earlier in the session; off: always simulate",
+   onoff_names},
   {"winds", uraP_LIST, OFF(winds), 0, "m/s", 0, 60,
    "wind speeds of the rows of descent and parametric", NULL},
   {"speed", uraP_NUM, OFF(speed), OFF(speed_set), "m/s", 0.01, 200,
@@ -97,6 +102,7 @@ void ura_state_defaults(uraState* s) {
   s->face = 0;
   s->format = uraFMT_TABLE;
   s->step = 0.05;
+  s->recall = 1;
   long n = sysconf(_SC_NPROCESSORS_ONLN);
   s->threads = n > 0 ? (double)n : 1;
 }
@@ -292,8 +298,8 @@ int ura_case_load(uraCtx* c, const char* name) {
   }
   if (k < 0) return ura_fail(c, "case: unknown case '%s'; accepted: A, B, C, A1 or A2", name);
 
-  /* keep the live wind, face, lists, grid step and output settings; everything else from the
-     paper */
+  /* keep the live wind, face, lists, grid step, recall and output settings; everything else
+     from the paper */
   uraState ns;
   const uraState* keep = &c->st;
   ura_state_defaults(&ns);
@@ -304,6 +310,7 @@ int ura_case_load(uraCtx* c, const char* name) {
   ns.step = keep->step;
   ns.nwinds = keep->nwinds;
   ns.format = keep->format;
+  ns.recall = keep->recall;
   strcpy(ns.terminal, keep->terminal);
   strcpy(ns.output, keep->output);
   strcpy(ns.casename, ura_case_names[k]);

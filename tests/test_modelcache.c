@@ -1,0 +1,137 @@
+/* test_modelcache.c: the model cache (src/app/modelcache.c): switching back to a case or setting
+ * seen earlier makes its compiled, balanced and settled model live again (no settling), with the
+ * same impact results; the last impact does not survive a switch; at most uraMODELCACHE models
+ * are kept, the least recently used freed first; new model parts flush them; keys compare the
+ * overrides as a set, values to the bit */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#include "test_ctx.h"
+
+/* A, B, A: the second A is the first one's model and stance, and its impact is the same */
+static void switch_back(void** state) {
+  uraCtx* c = *state;
+  run_rc(c, "case A; impact 0 0", 0);
+  const urModel* a = c->model;
+  urImpactResult ra = c->last_impact;
+  assert_true(c->have_setup && c->have_impact);
+
+  run_rc(c, "case B", 0);
+  assert_ptr_not_equal(c->model, a);
+  assert_false(c->have_setup);          /* B compiled, not settled yet */
+  assert_false(c->have_impact);         /* A's impact went with A's model */
+  run_rc(c, "history", -1);
+  run_rc(c, "impact 0 0", 0);
+  assert_true(c->last_impact.p != ra.p);
+
+  run_rc(c, "case A", 0);
+  assert_ptr_equal(c->model, a);
+  assert_true(c->have_setup);           /* settled already: nothing to settle */
+  assert_ptr_equal(c->setup.m, a);
+  assert_false(c->have_impact || c->have_work);
+  assert_true(c->model->param[ura_model_param_find(c, "bag_bottom")].value == 1);
+  run_rc(c, "impact 0 0", 0);
+  assert_memory_equal(&c->last_impact.p, &ra.p, sizeof ra.p);
+  assert_memory_equal(&c->last_impact.inj.hic15.hic, &ra.inj.hic15.hic, sizeof(double));
+  assert_memory_equal(&c->last_impact.inj.nij.nij, &ra.inj.nij.nij, sizeof(double));
+  run_rc(c, "history", 0);
+
+  /* a value the model refuses changes nothing, the settled model stays live */
+  run_rc(c, "set dt 0", -1);
+  assert_ptr_equal(c->model, a);
+  assert_true(c->have_setup);
+}
+
+/* uraMODELCACHE + 1 settled models: all kept (the live one and uraMODELCACHE others); one more
+   parked frees the least recently used */
+static void lru(void** state) {
+  uraCtx* c = *state;
+  char line[64];
+  for (int i = 0; i <= uraMODELCACHE; i++) {
+    snprintf(line, sizeof line, "set vmax %d", 10000 + i);
+    run_rc(c, line, 0);
+    assert_non_null(ura_setup(c));
+  }
+  run_rc(c, "set vmax 10000", 0);            /* kept: 1..8 parked, 0 live */
+  assert_true(c->have_setup);
+  run_rc(c, "set vmax 10009", 0);            /* parks 0: 1, the least recently used, is freed */
+  assert_false(c->have_setup);
+  run_rc(c, "set vmax 10001", 0);
+  assert_false(c->have_setup);
+  for (int i = 2; i <= uraMODELCACHE; i++) {
+    snprintf(line, sizeof line, "set vmax %d", 10000 + i);
+    run_rc(c, line, 0);
+    assert_true(c->have_setup);
+  }
+  run_rc(c, "set vmax 10000", 0);
+  assert_true(c->have_setup);
+}
+
+/* new model parts, even the same text loaded back, or reset: no model of the old parts returns */
+static void parts_flush(void** state) {
+  uraCtx* c = *state;
+  char path[] = "/tmp/test_modelcache_XXXXXX";
+  int fd = mkstemp(path);
+  assert_true(fd >= 0);
+  close(fd);
+  char line[128];
+  snprintf(line, sizeof line, "model save %s; model load %s", path, path);
+
+  run_rc(c, "case A", 0);
+  assert_non_null(ura_setup(c));
+  run_rc(c, "case B", 0);
+  run_rc(c, line, 0);
+  run_rc(c, "case A", 0);
+  assert_false(c->have_setup);
+
+  assert_non_null(ura_setup(c));
+  run_rc(c, "case B; reset", 0);
+  assert_string_equal(c->st.casename, "A");
+  assert_false(c->have_setup);
+  unlink(path);
+}
+
+/* keys: the same parts and override set in any order, values to the bit */
+static void keys(void** state) {
+  uraCtx* c = *state;
+  uraState s = c->st, t = c->st;
+  uraModelKey a, b;
+  s.nov = t.nov = 2;
+  strcpy(s.ov_name[0], "bag_p0");
+  strcpy(s.ov_name[1], "vmax");
+  s.ov_val[0] = 1e5;
+  s.ov_val[1] = 0.0;
+  strcpy(t.ov_name[0], "vmax");
+  strcpy(t.ov_name[1], "bag_p0");
+  t.ov_val[0] = 0.0;
+  t.ov_val[1] = 1e5;
+  ura_model_key(c, &s, &a);
+  ura_model_key(c, &t, &b);
+  assert_true(ura_model_key_same(&a, &b));
+  t.ov_val[0] = -0.0;
+  ura_model_key(c, &t, &b);
+  assert_false(ura_model_key_same(&a, &b));
+  t.ov_val[0] = 0.0;
+  t.nov = 1;
+  ura_model_key(c, &t, &b);
+  assert_false(ura_model_key_same(&a, &b));
+  ura_model_key(c, &s, &b);
+  b.gen++;
+  assert_false(ura_model_key_same(&a, &b));
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test_setup_teardown(keys, ctx_setup, ctx_teardown),
+    cmocka_unit_test_setup_teardown(switch_back, ctx_setup, ctx_teardown),
+    cmocka_unit_test_setup_teardown(lru, ctx_setup, ctx_teardown),
+    cmocka_unit_test_setup_teardown(parts_flush, ctx_setup, ctx_teardown),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
