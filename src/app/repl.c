@@ -55,7 +55,7 @@ static void keywords(const char* u, const char* after) {
         char w[64];
         snprintf(w, sizeof w, "%.*s", (int)k, p);
         add(w);
-      } else if (strlen(after) == k && !strncmp(p, after, k)) {
+      } else if (after && strlen(after) == k && !strncmp(p, after, k)) {
         /* the rest of this alternative becomes the text */
         char* q = p + k;
         while (*q == ' ') q++;

@@ -1331,12 +1331,8 @@ static int st_pair(Parser* p, const Bound* b) {
 
 /* name NAME_A_B of a generated pair; -1 if too long */
 static int pairname(char out[urNAMELEN], const char* name, const char* a, const char* b) {
-  size_t n = strlen(name) + strlen(a) + strlen(b) + 2;
-  if (n >= urNAMELEN) {
-    return -1;
-  }
-  snprintf(out, urNAMELEN, "%s_%s_%s", name, a, b);
-  return 0;
+  int n = snprintf(out, urNAMELEN, "%s_%s_%s", name, a, b);
+  return n < 0 || n >= urNAMELEN ? -1 : 0;
 }
 
 
