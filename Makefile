@@ -45,7 +45,14 @@ all: $(BIN) $(LIB)
 deps:
 	@sh scripts/setup.sh
 
-$(BUILD)/%.o: %.c | deps
+# everything is rebuilt when the compiler or its flags change (e.g. make OPT='-O0 -g')
+FLAGS = $(BUILD)/.flags
+ifeq ($(filter clean,$(MAKECMDGOALS)),)
+$(shell mkdir -p $(BUILD) && echo '$(CC) $(CFLAGS) $(CORE_OPT)' | cmp -s - $(FLAGS) || \
+  echo '$(CC) $(CFLAGS) $(CORE_OPT)' > $(FLAGS))
+endif
+
+$(BUILD)/%.o: %.c $(FLAGS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
 
@@ -53,7 +60,7 @@ $(BUILD)/%.o: %.c | deps
 $(BUILD)/models/builtin.c: $(MODELS) scripts/embed.sh
 	@mkdir -p $(dir $@)
 	sh scripts/embed.sh $(MODELS) > $@
-$(BUILD)/models/builtin.o: $(BUILD)/models/builtin.c
+$(BUILD)/models/builtin.o: $(BUILD)/models/builtin.c $(FLAGS)
 	$(CC) $(CFLAGS) -c $< -o $@
 
 $(LIB): $(CORE_OBJ)
@@ -67,7 +74,7 @@ $(APPLIB): $(APP_OBJ)
 $(BIN): $(BUILD)/src/app/main.o $(APPLIB) $(LIB)
 	$(CC) $(LDFLAGS) -o $@ $^ $(APP_LIBS) $(CORE_LIBS)
 
-$(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) | deps
+$(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(TEST_LIBS) $(APP_LIBS) $(CORE_LIBS)
 
@@ -122,7 +129,7 @@ ifneq ($(CORE_OPT),)
 $(BUILD)/src/core/%.o $(BUILD)/models/builtin.o: override OPT := $(CORE_OPT)
 endif
 
-$(BUILD)/fuzz/%: tests/fuzz/%.c $(APPLIB) $(LIB) | deps
+$(BUILD)/fuzz/%: tests/fuzz/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -fsanitize=fuzzer -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
 
