@@ -675,9 +675,16 @@ function consistency_section(    k, n, a, s) {
     split(k, a, "|")
     s = s "\n- " a[1] " of case " a[2] ", wind " a[3] (a[4] != "" ? ", face " a[4] : "") ": " OURS[k] " then" CONFLICT[k]
   }
-  p("The sessions overlap: " n " values were computed more than once (the same grid in several")
+  p("The sessions overlap: " n " values were asked for more than once (the same grid in several")
   p("sessions; compare's Q is keyed without a face). " (s == "" ? "Every repeat printed the same value." : "These differ:" s))
-  REPEATS = n " values computed more than once, " (s == "" ? "all identical" : "SOME DIFFER (see the end)")
+  if (recalled + 0 > 0) {
+    p("")
+    p(recalled " times a grid (or a sweep's grids) was recalled: its conditions were identical to")
+    p("a grid computed earlier in the run, so its cells were reused, not simulated again (`set recall")
+    p("off` recomputes every grid; that recomputation gives identical cells, as test_recall.sh checks).")
+  }
+  REPEATS = n " values asked for more than once, " (s == "" ? "all identical" : "SOME DIFFER (see the end)") \
+            (recalled + 0 > 0 ? "; " recalled " grid requests recalled, not simulated again" : "")
   for (k in OURS) {
     split(k, a, "|")
     if (a[1] == "q" && a[4] == "" && (("q|" a[2] "|" a[3] "|0") in OURS) && OURS["q|" a[2] "|" a[3] "|0"] != OURS[k]) {

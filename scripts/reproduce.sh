@@ -119,6 +119,8 @@ for f in "$PAPER_GRIDS"/table*.csv; do
 done
 
 # the comparison and the report
+recalled=$(grep -c '^# recalled' "$out/raw.csv")
 awk -f scripts/reproduce.awk -v out="$out" -v values=sessions/paper-values.csv \
-    -v run="$out/run.txt" -v loads="$out/paper-load.txt" "$out/raw.csv" || exit 1
+    -v run="$out/run.txt" -v loads="$out/paper-load.txt" -v recalled="$recalled" \
+    "$out/raw.csv" || exit 1
 echo "reproduce: report in $out/report.md"
