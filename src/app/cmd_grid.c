@@ -230,8 +230,9 @@ static int grid_summary(uraCtx* c) {
                    g->nfailed, g->npending);
   }
   ura_table_note(t, "Q = sum of P{F|Delta} x %g m x %g m over the full plane (eq. 4.5); "
-                 "%d impacts simulated, %d cells decided geometrically", g->step, g->step,
-                 g->nsimulated, g->nrow * g->ncol - g->nsimulated - g->npending - g->nfailed);
+                 "%d impacts simulated%s, %d cells decided geometrically", g->step, g->step,
+                 g->nsimulated, c->last.recalled ? " when it was computed" : "",
+                 g->nrow * g->ncol - g->nsimulated - g->npending - g->nfailed);
   if (c->last.recalled) ura_table_note(t, "%s", RECALLED);
   ura_table_cell(t, "%s", c->last.casename);
   ura_table_cell(t, "%g", c->last.wind);
