@@ -112,6 +112,8 @@ typedef struct {
   char jname[urNAMELEN];           /* joint name (defaults to the body name) */
   int parent;                      /* parent body, -1 = world */
   int tree;                        /* root body of this body's tree */
+  int react;                       /* 1: its net force reaches a joint-load sensor (the sensed
+                                      body or one below it): ur_reactions computes it (compiled) */
   double pos[3];                   /* body frame origin (= joint anchor) in the parent frame, m */
   double quat[4];                  /* body frame orientation in the parent frame at q = 0 */
   double mass;                     /* kg */

@@ -282,32 +282,12 @@ void ur_aba(const urModel* m, urData* d) {
 
 // force the parent exerts on each child at the joint anchor (body coordinates), by Newton-Euler;
 // needs ur_aba (freact holds v x* I v - fext from its first pass). Only the joints that a
-// joint-load sensor reads, and the subtrees below them, are computed (the rest of freact is
-// left as the first pass of ur_aba wrote it).
+// joint-load sensor reads, and the subtrees below them (urBody.react), are computed (the rest of
+// freact is left as the first pass of ur_aba wrote it).
 void ur_reactions(const urModel* m, urData* d) {
-  // the bodies whose net force reaches a sensed joint: sensed ones and their descendants
-  // (bodies are in tree order, parents first)
-  unsigned char need[m->nbody];
-  memset(need, 0, sizeof(need));
-  int any = 0;
-  for (int s = 0; s < m->nsensor; s++) {
-    if (m->sensor[s].type == urSENS_JOINTLOAD) {
-      need[m->sensor[s].obj] = 1;
-      any = 1;
-    }
-  }
-  if (!any) {
-    return;
-  }
-  for (int i = 0; i < m->nbody; i++) {
-    if (m->body[i].parent >= 0 && need[m->body[i].parent]) {
-      need[i] = 1;
-    }
-  }
-
   // net force of each body: I a + v x* I v - fext
   for (int i = 0; i < m->nbody; i++) {
-    if (!need[i]) {
+    if (!m->body[i].react) {
       continue;
     }
     double Ia[6];
@@ -321,7 +301,7 @@ void ur_reactions(const urModel* m, urData* d) {
   // children transmit through their parents
   for (int i = m->nbody - 1; i >= 0; i--) {
     int p = m->body[i].parent;
-    if (p >= 0 && need[i] && need[p]) {
+    if (p >= 0 && m->body[i].react && m->body[p].react) {
       double t[6];
       uru_xforce_t(t, d->Xe + 9*i, d->Xr + 3*i, d->freact + 6*i);
       for (int k = 0; k < 6; k++) {

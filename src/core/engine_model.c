@@ -470,6 +470,23 @@ int ur_model_compile(urModel* m) {
     s->adr = m->nsensordata;
     m->nsensordata += s->dim;
   }
+
+  // the bodies whose joint reactions are needed: sensed by a joint load, and those below them
+  // (bodies are in tree order, parents first)
+  for (int i = 0; i < m->nbody; i++) {
+    m->body[i].react = 0;
+  }
+  for (int i = 0; i < m->nsensor; i++) {
+    if (m->sensor[i].type == urSENS_JOINTLOAD) {
+      m->body[m->sensor[i].obj].react = 1;
+    }
+  }
+  for (int i = 0; i < m->nbody; i++) {
+    urBody* b = m->body + i;
+    if (b->parent >= 0 && m->body[b->parent].react) {
+      b->react = 1;
+    }
+  }
   m->compiled = 1;
   m->err[0] = 0;
   return 0;

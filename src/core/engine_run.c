@@ -157,7 +157,11 @@ static void checkstate(const urModel* m, urData* d) {
 }
 
 
-static int intree(const urModel* m, int g, int tree);
+// does a geom belong to a tree
+static int intree(const urModel* m, int g, int tree) {
+  return g >= 0 && m->body[m->geom[g].body].tree == tree;
+}
+
 
 // speed bound of the points of ellipsoid g: centre speed + |omega| x bounding radius
 static void geomspeed(const urModel* m, const urData* d, int g, double v[3], double* w) {
@@ -317,12 +321,6 @@ int ur_step(const urModel* m, urData* d) {
 }
 
 //---------------------------------- runs ----------------------------------------------------------
-
-// does a geom belong to a tree
-static int intree(const urModel* m, int g, int tree) {
-  return g >= 0 && m->body[m->geom[g].body].tree == tree;
-}
-
 
 // any force between the tree and the rest of the world
 int ur_tree_active(const urModel* m, const urData* d, int tree) {
