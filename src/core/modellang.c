@@ -144,6 +144,7 @@ static const KeySpec spec_sensor[] = {
 typedef struct {
   int kind;
   char name[urNAMELEN];
+  unsigned hash;                   /* namehash(name): most lookups compare only this */
   int id;                          /* index in the model or parser table */
   int src, line;
   int enabled;
@@ -290,10 +291,23 @@ static int checkname(Parser* p, const char* s, size_t n, int line, const char* w
 }
 
 
+/* FNV-1a hash of a name: a built-in model declares hundreds of pairs, each looked up among all
+   names before it */
+static unsigned namehash(const char* s) {
+  unsigned h = 2166136261u;
+  for (; *s; s++) {
+    h = (h ^ (unsigned char)*s)*16777619u;
+  }
+  return h;
+}
+
+
 /* last enabled symbol of a kind and name, or -1 */
 static int findsym(const Parser* p, int kind, const char* name, int enabled) {
+  unsigned h = namehash(name);
   for (int i = p->nsym - 1; i >= 0; i--) {
-    if (p->sym[i].kind == kind && p->sym[i].enabled == enabled && !strcmp(p->sym[i].name, name)) {
+    if (p->sym[i].hash == h && p->sym[i].kind == kind && p->sym[i].enabled == enabled &&
+        !strcmp(p->sym[i].name, name)) {
       return i;
     }
   }
@@ -391,6 +405,7 @@ static int declare(Parser* p, int kind, const char* name, int line, int id, int 
   Sym* s = p->sym + p->nsym++;
   s->kind = kind;
   snprintf(s->name, sizeof(s->name), "%s", name);
+  s->hash = namehash(s->name);
   s->id = id;
   s->src = p->cursrc;
   s->line = line;
