@@ -679,8 +679,8 @@ function consistency_section(    k, n, a, s) {
   p("sessions; compare's Q is keyed without a face). " (s == "" ? "Every repeat printed the same value." : "These differ:" s))
   if (recalled + 0 > 0) {
     p("")
-    p(recalled " times a grid (or a sweep's grids) was recalled: its conditions were identical to")
-    p("a grid computed earlier in the run, so its cells were reused, not simulated again (`set recall")
+    p(recalled " grids were recalled: the conditions of each were identical to those of a grid")
+    p("computed earlier in the run, so its cells were reused, not simulated again (`set recall")
     p("off` recomputes every grid; that recomputation gives identical cells, as test_recall.sh checks).")
   }
   REPEATS = n " values asked for more than once, " (s == "" ? "all identical" : "SOME DIFFER (see the end)") \

@@ -119,7 +119,12 @@ for f in "$PAPER_GRIDS"/table*.csv; do
 done
 
 # the comparison and the report
-recalled=$(grep -c '^# recalled' "$out/raw.csv")
+# grids recalled: a note names one grid ('the grid is ...') or a sweep's ('the grids of wind 0, 4
+# are ...')
+recalled=$(awk '/^# recalled: the grid is / { n++ }
+                /^# recalled: the grids of / { s = $0; sub(/^# recalled: the grids of [a-z]+ /, "", s)
+                                               sub(/ are identical.*/, "", s); n += split(s, x, ",") }
+                END { print n + 0 }' "$out/raw.csv")
 awk -f scripts/reproduce.awk -v out="$out" -v values=sessions/paper-values.csv \
     -v run="$out/run.txt" -v loads="$out/paper-load.txt" -v recalled="$recalled" \
     "$out/raw.csv" || exit 1

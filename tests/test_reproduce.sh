@@ -22,7 +22,9 @@ printf '%s\n' 'date=2000-01-01 00:00:00 UTC' 'commit=abc1234' 'machine=test' 'np
 {
   printf 'case,wind,speed,angle\nB,0,7.5,90.0\n'
   printf 'case,wind,face,speed,angle,q\n'
+  printf '# recalled: the grids of wind 0, 4 are identical to grids computed earlier in this session and were not simulated again\n'
   printf 'C,0,0,39.7,90,0.849\nC,4,0,39.7,88,0.853\nC,10,0,39.7,84.5,0.859\n'
+  printf '# recalled: the grid is identical to one computed earlier in this session and was not simulated again\n'
   printf 'B,0,0,7.5,90,0.256\nB,4,0,8.5,62,0.382\nB,10,0,12.5,37,0.858\n'
   printf 'A,0,0,7.5,90,0.0581\nA,4,0,8.5,62,0.216\nA,10,0,12.5,37,0.677\n'
   printf 'A1,0,0,7.5,90,0.026\nA1,4,0,8.5,62,0.086\nA1,10,0,12.5,37,0.700\n'
@@ -38,6 +40,8 @@ run_report() { sh scripts/reproduce.sh -n -o "$R" >"$TMP/out" 2>"$TMP/err"; RC=$
 run_report
 check report_status cond '[ "$RC" -eq 0 ] && [ ! -s "$TMP/err" ] && [ -s "$R/report.md" ]'
 check report_run has "$R/report.md" '^| wall time of the run | 125 s (2 min 05 s) |$'
+# the recalled grids are counted one by one (two of a sweep, one grid)
+check report_recalled has "$R/report.md" '^3 grids were recalled: the conditions of each'
 check report_commit cond 'has "$R/report.md" "^| git commit | abc1234 |$" && has "$R/report.md" "^| nproc | 2 "'
 
 # every printed number beside ours: Table 2 as printed, ratio 1
