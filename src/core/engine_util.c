@@ -121,16 +121,6 @@ void uru_rotvec_jrinv(double J[9], const double v[3]) {
 
 //---------------------------------- spatial algebra -----------------------------------------------
 
-
-
-
-
-
-
-
-
-
-
 // spatial inertia (6x6 row-major) at the body origin from mass, CoM and inertia about the CoM
 void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9]) {
   double cc = uru_dot3(com, com);
@@ -155,6 +145,13 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 // I = [A B; B^T C] (A, C symmetric; only the upper triangle of I is read). Rotated blocks
 // A' = E^T A E, B' = E^T B E, C' = E^T C E; then J12 = B' + px C', J11 = A' + px B'^T - J12 px,
 // J22 = C' (symmetric results from their upper triangles; r stays symmetric if it was).
+// component k of a x b (k constant in unrolled loops)
+static inline double crossk(const double a[3], const double b[3], int k) {
+  int k1 = (k + 1)%3, k2 = (k + 2)%3;
+  return a[k1]*b[k2] - a[k2]*b[k1];
+}
+
+
 void uru_xinertia_t_add(double r[36], const double E[9], const double p[3], const double I[36]) {
   double TA[9], TB[9], TC[9], A[9], B[9], C[9], J[9];
 
@@ -209,29 +206,7 @@ void uru_xinertia_t_add(double r[36], const double E[9], const double p[3], cons
     for (int j = i; j < 3; j++) {
       const double* bj = B + 3*j;
       const double* ji = J + 3*i;
-      double pb, jp;
-      switch (i) {
-      case 0:
-        pb = p[1]*bj[2] - p[2]*bj[1];
-        break;
-      case 1:
-        pb = p[2]*bj[0] - p[0]*bj[2];
-        break;
-      default:
-        pb = p[0]*bj[1] - p[1]*bj[0];
-        break;
-      }
-      switch (j) {
-      case 0:
-        jp = ji[1]*p[2] - ji[2]*p[1];
-        break;
-      case 1:
-        jp = ji[2]*p[0] - ji[0]*p[2];
-        break;
-      default:
-        jp = ji[0]*p[1] - ji[1]*p[0];
-        break;
-      }
+      double pb = crossk(p, bj, i), jp = crossk(ji, p, j);
       double v = A[3*i+j] + pb - jp;
       r[6*i+j] += v;
       if (j != i) {
