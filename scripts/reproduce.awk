@@ -489,6 +489,13 @@ function grids_section(    f, fp, l, a, t, c, w, i, cap, o, full, half) {
   for (i = 1; i <= NG; i++) compare_grid(i, fp)
   close(fp)
   p("")
+  p("Under wind the drone descends at psi < 90 deg, so the along offset of one path depends on the")
+  p("height at which it is taken: a footprint moved by s along the course is the footprint of")
+  p("offsets taken s tan(psi) lower. Ours are taken at tau, the drone centre R_max above the head")
+  p("top (paper 4.2, Fig. 7). Where a best shift is found under wind, the summary gives that")
+  p("level difference: it says at which height the paper's printed grids appear to measure Delta.")
+  p("Q does not depend on it (a shift moves cells, it does not change them).")
+  p("")
   p("Maps (paper layout: rows Delta_par from front to back, columns Delta_perp from 0 outwards):")
   p("`=` both have P > 0 within 10 points of each other, `+` / `-` both, ours more than 10 points")
   p("higher / lower, `o` only ours, `p` only the paper, `.` neither.")
@@ -510,6 +517,11 @@ function read_paper_grid(i,    file, name, a, l, f, n, r, k, v) {
   GFULL[i] = 0; GHALF[i] = 0
   r = 0
   while ((getline l < file) > 0) {
+    if (l ~ /descent angle psi = [0-9.]+ deg/) {
+      GPSI[i] = l
+      sub(/.*descent angle psi = /, "", GPSI[i])
+      sub(/ deg.*/, "", GPSI[i])
+    }
     if (l ~ /^#/ || l ~ /^[ \t]*$/) continue
     n = split(l, f, ",")
     if (f[1] == "along") {
@@ -637,7 +649,7 @@ function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa
   }
   sh = sprintf("%+.2f", kb * (LPAR[1] - LPAR[2]))
   FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-") \
-         (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along)" : "")
+         (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along" lower(kb * (LPAR[1] - LPAR[2]), GPSI[i]) ")" : "")
   p("| " t " | " c " | " w " | " both " | " oo " | " op " | " nn " | " \
     (un ? sprintf("%.2f", both / un) : "-") " | " touch " | " (un ? sprintf("%.3f", mad / un) : "-") " | " \
     (un ? sprintf("%+.3f", bias / un) : "-") " | " sprintf("%.3f", mx) (mx > 0 ? " (" mpar ", " mperp ")" : "") " | " \
@@ -645,6 +657,16 @@ function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa
   csvline(fp, t "," c "," w "," both "," oo "," op "," nn "," (un ? sprintf("%.3f", both / un) : "") "," touch "," \
           (un ? sprintf("%.4f", mad / un) : "") "," (un ? sprintf("%.4f", bias / un) : "") "," sprintf("%.4f", mx) "," mpar "," mperp "," \
           centre(co, both + oo) "," centre(ca, both + op) "," sh "," sprintf("%.3f", ob))
+}
+
+# the level difference a whole-footprint shift along the course amounts to: a drone descending
+# at psi reaches the same point of the person from dh = shift x tan(psi) lower, so a shift means
+# that the offsets are taken when the drone centre is dh below the level of tau
+function lower(shift, psi,    dh) {
+  if (psi == "" || psi + 0 >= 89.99 || shift == 0) return ""
+  dh = shift * sin(psi * 3.14159265358979 / 180) / cos(psi * 3.14159265358979 / 180)
+  return sprintf(", as if Delta were taken %.2f m %s the level of tau", dh < 0 ? -dh : dh,
+                 dh < 0 ? "above" : "below")
 }
 
 function centre(sum, n) { return n ? sprintf("%+.2f", sum / n) : "-" }

@@ -81,6 +81,8 @@ check diffmap_row has "$R/diffmap-table04.csv" '^0.00,94.7,0.0,'
 check footprint_absent has "$R/report.md" '^| 5 | B | 0 | no cells of ours'
 check footprint_shift awk -F, '$1 == 8 { f = 1; if ($8 > 0.5 || ($15 - $16 - 0.25)^2 > 1e-6 || $17 != "-0.25" || $18 != "1.000") exit 1 }
   END { exit !f }' "$R/footprint.csv"
+# the level difference of that shift: 0.25 m x tan(37 deg) (Table 8's caption angle) above tau
+check footprint_level has "$R/report.md" 'Table 8 0\.[0-9]* (1\.00 with ours moved -0\.25 m along, as if Delta were taken 0\.19 m above the level of tau)'
 
 # a value computed twice with different results is reported
 check repeats_differ cond 'has "$R/report.md" "SOME DIFFER" && has "$R/report.md" "^- q of case C, wind 0, face 0: 0.849 then 0.8500$"'

@@ -39,8 +39,8 @@ typedef struct {
   urInjuryParams injury;           /* injury criteria and PoF curve settings */
   double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
   double step;                     /* grid pitch, m */
-  double par_min, par_max, perp_max; /* grid extents when set, m */
-  int extent_set;                  /* 0: extents sized automatically */
+  double par_min, par_max, perp_max; /* grid extents (along_min, along_max, cross_max) when set, m */
+  int par_min_set, par_max_set, perp_max_set; /* 0: sized automatically (derived) */
   double threads;                  /* grid worker threads (a whole number) */
   int recall;                      /* 1: a grid identical to an earlier one reuses its cells */
   char ov_name[uraMAXOV][urNAMELEN]; /* model parameters overridden (SI values) */
@@ -66,6 +66,7 @@ typedef struct {
   double wind, face, speed, angle; /* m/s, deg, m/s, deg */
   char source[512];                /* "computed", or the file it was loaded from */
   int recalled;                    /* the cells of an identical earlier grid (recall.c) */
+  int extents_set;                 /* some extent was set: Q covers only the lattice */
 } uraGridResult;
 
 /* what a compiled model is made of: the generation of the model parts (counted up whenever they
@@ -237,6 +238,7 @@ extern const char* const ura_pof_names[];
 /* workbench (view.c, gridshow.c, gridload.c, plot.c) */
 int ura_cmd_grid(uraCtx* c, int argc, char** argv);
 int ura_grid_run(uraCtx* c, int quiet);
+int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_max);
 int ura_grid_show(uraCtx* c);
 int ura_grid_load(uraCtx* c, const char* path);
 int ura_cmd_view(uraCtx* c, int argc, char** argv);

@@ -106,14 +106,28 @@ int ura_cmd_set(uraCtx* c, int argc, char** argv) {
 }
 
 /* one line of show: name, value, unit, and where a derived value comes from */
-static int show_one(uraCtx* c, const uraParam* p) {
+static int show_one(uraCtx* c, const uraParam* p, int listing) {
   char val[1024];
   const char* note = "";
   if (p->setoff && !*(const int*)((const char*)&c->st + p->setoff)) {
-    double speed, angle;
-    if (ura_impact_conditions(c, &speed, &angle)) return -1;
-    snprintf(val, sizeof val, "%.6g", !strcmp(p->name, "speed") ? speed : angle);
-    note = "  (derived: descent model at the live wind)";
+    double v[3];
+    if (!strcmp(p->name, "speed") || !strcmp(p->name, "angle")) {
+      if (ura_impact_conditions(c, &v[0], &v[1])) return -1;
+      note = "  (derived: descent model at the live wind)";
+      snprintf(val, sizeof val, "%.6g", v[!strcmp(p->name, "angle")]);
+    } else {
+      /* grid extents: the lattice the next grid would use (sizing needs the settled stance) */
+      if (ura_grid_extents(c, &v[0], &v[1], &v[2])) {
+        if (!listing) return -1;
+        /* the whole listing still prints (e.g. in dry mode): the value is left to the grid */
+        c->err[0] = 0;
+        fprintf(c->out, "%-16s auto %s  (derived at the next grid)\n", p->name, p->unit);
+        return 0;
+      }
+      double x = !strcmp(p->name, "along_min") ? v[0] : !strcmp(p->name, "along_max") ? v[1] : v[2];
+      note = "  (derived: every cell where contact is possible, padded by one cell)";
+      snprintf(val, sizeof val, "%.6g", x);
+    }
   } else {
     ura_param_format(c, p, val, sizeof val);
     if (p->setoff) note = "  (set)";
@@ -143,12 +157,12 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
     if (!p && i < 0) {
       return ura_fail(c, "show: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
     }
-    if (p) return show_one(c, p);
+    if (p) return show_one(c, p, 0);
     show_injury(c, i);
     return 0;
   }
   for (const uraParam* p = ura_params; p->name; p++) {
-    if (show_one(c, p)) return -1;
+    if (show_one(c, p, 1)) return -1;
   }
   fprintf(c->out, "# injury criteria (uasrisk-injury(7))\n");
   for (int i = 0; i < ur_injury_param_count(); i++) show_injury(c, i);

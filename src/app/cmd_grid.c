@@ -119,6 +119,46 @@ static void keep_last(uraCtx* c, urGrid* g, const urImpactCond* cond, int recall
   c->last.angle = cond->angle;
   snprintf(c->last.source, sizeof c->last.source, "computed");
   c->last.recalled = recalled;
+  c->last.extents_set = c->st.par_min_set || c->st.par_max_set || c->st.perp_max_set;
+}
+
+/* the extents of the live case's grid: those set, the others derived (auto_extents). 0; -1
+   with *nscan the cells a refused scan would have needed, or 0 after another failure (the
+   error set) */
+static int extents(uraCtx* c, const urImpactSetup* s, const urImpactCond* cond, double* par_min,
+                   double* par_max, double* perp_max, long* nscan) {
+  const uraState* st = &c->st;
+  *nscan = 0;
+  if (!st->par_min_set || !st->par_max_set || !st->perp_max_set) {
+    double scan;
+    if (auto_extents(s, cond, st->step, par_min, par_max, perp_max, &scan)) {
+      if (ura_interrupted()) return ura_fail(c, "grid: interrupted (Ctrl-C) while sizing the grid");
+      *nscan = scan > 1e18 ? -1 : (long)scan;
+      return -1;
+    }
+  }
+  if (st->par_min_set) *par_min = st->par_min;
+  if (st->par_max_set) *par_max = st->par_max;
+  if (st->perp_max_set) *perp_max = st->perp_max;
+  if (*par_min > *par_max) {
+    return ura_fail(c, "grid: along_min %g m is above along_max %g m; accepted: along_min <= "
+                    "along_max (or 'auto' for either)", *par_min, *par_max);
+  }
+  return 0;
+}
+
+int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_max) {
+  urImpactCond cond;
+  if (ura_dry(c, "simulation") || ura_impact_cond(c, &cond)) return -1;
+  const urImpactSetup* s = ura_setup(c);
+  long nscan;
+  if (!s) return -1;
+  if (extents(c, s, &cond, par_min, par_max, perp_max, &nscan)) {
+    if (nscan == 0) return -1;
+    return ura_fail(c, "grid: the region to scan for the extents is too large; accepted: a "
+                    "larger 'step', or set along_min, along_max and cross_max");
+  }
+  return 0;
 }
 
 /* run the grid of the live case into c->last (or recall an identical earlier one: recall.c) */
@@ -142,21 +182,11 @@ int ura_grid_run(uraCtx* c, int quiet) {
   long ncell;
   double mb = 0, avail = 0;
   const char* what = "";
-  if (c->st.extent_set) {
-    spec.par_min = c->st.par_min;
-    spec.par_max = c->st.par_max;
-    spec.perp_max = c->st.perp_max;
-    ncell = ur_grid_cell_count(&spec);
+  if (extents(c, s, &cond, &spec.par_min, &spec.par_max, &spec.perp_max, &ncell)) {
+    if (ncell == 0) return -1;
+    what = " to scan for the extents";
   } else {
-    double scan;
-    if (auto_extents(s, &cond, c->st.step, &spec.par_min, &spec.par_max, &spec.perp_max,
-                     &scan)) {
-      if (ura_interrupted()) return ura_fail(c, "grid: interrupted (Ctrl-C) while sizing the grid");
-      ncell = scan > 1e18 ? -1 : (long)scan;
-      what = " to scan for the extents";
-    } else {
-      ncell = ur_grid_cell_count(&spec);
-    }
+    ncell = ur_grid_cell_count(&spec);
   }
   int fits = fits_memory(ncell < 0 ? 0 : ncell, &mb, &avail);
   if (ncell < 0 || ncell > MAXCELLS || !fits) {
@@ -165,7 +195,7 @@ int ura_grid_run(uraCtx* c, int quiet) {
     else snprintf(size, sizeof size, "%ld", ncell);
     return ura_fail(c, "grid: %s cells of %g m%s (%.0f MB; %.0f MB of memory available) is too "
                     "large; accepted: at most %ld cells in half the available memory (raise "
-                    "'step')", size, spec.step, what, mb, avail, MAXCELLS);
+                    "'step' or narrow along_min, along_max, cross_max)", size, spec.step, what, mb, avail, MAXCELLS);
   }
   urGrid* g = ur_grid_new(&spec);
   int nw = spec.threads;
@@ -229,10 +259,16 @@ static int grid_summary(uraCtx* c) {
     ura_table_note(t, "PARTIAL grid: %d cells failed, %d not computed; q is not given",
                    g->nfailed, g->npending);
   }
-  ura_table_note(t, "Q = sum of P{F|Delta} x %g m x %g m over the full plane (eq. 4.5); "
+  ura_table_note(t, "Q = sum of P{F|Delta} x %g m x %g m over the %s (eq. 4.5); "
                  "%d impacts simulated%s, %d cells decided geometrically", g->step, g->step,
+                 c->last.extents_set ? "grid's cells" : "full plane",
                  g->nsimulated, c->last.recalled ? " when it was computed" : "",
                  g->nrow * g->ncol - g->nsimulated - g->npending - g->nfailed);
+  if (c->last.extents_set) {
+    ura_table_note(t, "extents set: Q covers only along %g .. %g m, |cross| <= %g m (cells where "
+                   "contact is possible outside them are not counted)",
+                   g->par_max - (g->nrow - 1) * g->step, g->par_max, -g->perp_min);
+  }
   if (c->last.recalled) ura_table_note(t, "%s", RECALLED);
   ura_table_cell(t, "%s", c->last.casename);
   ura_table_cell(t, "%g", c->last.wind);

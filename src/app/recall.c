@@ -14,8 +14,8 @@ typedef struct {
   uraModelKey model;
   urImpactCond cond;
   double step;
-  int extent_set;
-  double par_min, par_max, perp_max;   /* when extent_set */
+  int set[3];                          /* along_min, along_max, cross_max set */
+  double par_min, par_max, perp_max;   /* when set (0 when derived) */
   urInjuryParams injury;
 } gridKey;
 
@@ -37,12 +37,12 @@ static void key_of(uraCtx* c, const urImpactCond* cond, gridKey* k) {
   ura_model_key(c, &c->st, &k->model);
   k->cond = *cond;
   k->step = c->st.step;
-  k->extent_set = c->st.extent_set;
-  if (k->extent_set) {
-    k->par_min = c->st.par_min;
-    k->par_max = c->st.par_max;
-    k->perp_max = c->st.perp_max;
-  }
+  k->set[0] = c->st.par_min_set;
+  k->set[1] = c->st.par_max_set;
+  k->set[2] = c->st.perp_max_set;
+  if (k->set[0]) k->par_min = c->st.par_min;
+  if (k->set[1]) k->par_max = c->st.par_max;
+  if (k->set[2]) k->perp_max = c->st.perp_max;
   k->injury = c->st.injury;
 }
 
@@ -55,7 +55,7 @@ static int key_same(const gridKey* a, const gridKey* b) {
   const urImpactCond *x = &a->cond, *y = &b->cond;
   if (!same(x->speed, y->speed) || !same(x->angle, y->angle) || !same(x->face, y->face) ||
       !same(x->pitch, y->pitch) || !same(x->roll, y->roll) || !same(x->yaw, y->yaw) ||
-      !same(a->step, b->step) || a->extent_set != b->extent_set || !same(a->par_min, b->par_min) ||
+      !same(a->step, b->step) || memcmp(a->set, b->set, sizeof a->set) || !same(a->par_min, b->par_min) ||
       !same(a->par_max, b->par_max) || !same(a->perp_max, b->perp_max)) {
     return 0;
   }

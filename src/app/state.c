@@ -29,6 +29,13 @@ const uraParam ura_params[] = {
   {"yaw", uraP_NUM, OFF(yaw), 0, "deg", -180, 180,
    "drone yaw from its course (paper: 0, along axis on the course)", NULL},
   {"step", uraP_NUM, OFF(step), 0, "m", 0.005, 1, "grid pitch", NULL},
+  {"along_min", uraP_NUM, OFF(par_min), OFF(par_min_set), "m", -100, 100,
+   "grid extent: smallest along offset (rounded outwards to the lattice); derived unless set "
+   "('set along_min auto'): every cell where contact is possible", NULL},
+  {"along_max", uraP_NUM, OFF(par_max), OFF(par_max_set), "m", -100, 100,
+   "grid extent: largest along offset; derived unless set ('set along_max auto')", NULL},
+  {"cross_max", uraP_NUM, OFF(perp_max), OFF(perp_max_set), "m", 0, 100,
+   "grid extent: largest |cross offset|; derived unless set ('set cross_max auto')", NULL},
   {"threads", uraP_INT, OFF(threads), 0, "", 1, 64,
    "grid worker threads (results do not depend on it)", NULL},
   {"recall", uraP_ENUM, OFF(recall), 0, "", 0, 0,
