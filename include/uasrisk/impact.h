@@ -22,6 +22,10 @@
 extern "C" {
 #endif
 
+/* the settled person of a model, kept with its set-up to be given to another model with the same
+   person (ur_impact_prepare); opaque */
+typedef struct urStance urStance;
+
 /* the roles the impact needs, found by name in the model */
 typedef struct {
   const urModel* m;
@@ -40,6 +44,9 @@ typedef struct {
   double window;                   /* a run ends this long after its first contact, s (model
                                       parameter "window"; none: until the engine ends it) */
   urData* rest;                    /* the settled stance (drone parked far away) */
+  urStance* stance;                /* what another model with the same person can take (owned;
+                                      NULL: none, e.g. after ur_impact_setup) */
+  int shared;                      /* 1: balance and stance were taken from another model */
   char err[160];
 } urImpactSetup;
 
@@ -78,8 +85,24 @@ int ur_impact_balance(urModel* m, double settle_time, int iters, double* residua
 
 /* find the roles by name (drone root "main", head ellipsoid "head_cranium", sensors head_acc,
    neck_load, chest_defl, abd_defl), compute R_max, settle the stance (settle_time s of gravity)
-   and check it; 0 or -1 with s->err */
+   and check it; 0 or -1 with s->err. The stance is a state of rest: the person as settled, every
+   velocity zero, the drone parked far above in its reference posture with no restraint or contact
+   history (while the person settles, the drone is held there at rest). */
 int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time);
+
+/* ur_impact_balance (iters) then ur_impact_setup, keeping in s->stance what settling gave; or,
+   when one of the donors (set-ups of other models made by this function; NULL entries skipped)
+   has the same person, its balanced neutral positions and settled person instead of settling:
+   the model and s are then bitwise those settling would give (s->shared = 1). The same person:
+   every body off the drone's tree, with its joint, restraints (neutral positions before
+   balancing), reference coordinates, ellipsoids and the pairs among them or with the ground,
+   at the same indices, the same settling options (step, gravity, integrator, damping, vmax),
+   settle_time and iters, compared byte for byte. A donor also needs that no airbag rides on the
+   person, that the drone touches nothing but the person, that its person never rose to the
+   drone's parked bounding spheres while settling, and that this drone takes one held step. 0;
+   -1 if the balancing failed, -2 if the set-up did (s->err; ur_impact_free either way). */
+int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iters,
+                      const urImpactSetup* const* donors, int ndonor);
 void ur_impact_free(urImpactSetup* s);
 
 int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w);

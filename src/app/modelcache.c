@@ -101,6 +101,13 @@ int ura_mcache_take(uraCtx* c, const uraState* ns) {
   return 0;
 }
 
+int ura_mcache_setups(const uraCtx* c, const urImpactSetup** out, int max) {
+  const uraModelCache* mc = c->mcache;
+  int n = 0;
+  for (int i = 0; mc && i < mc->n && n < max; i++) out[n++] = &mc->e[i].setup;
+  return n;
+}
+
 void ura_mcache_flush(uraCtx* c) {
   if (!c->mcache) return;
   for (int i = 0; i < c->mcache->n; i++) entry_free(&c->mcache->e[i]);
