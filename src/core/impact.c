@@ -57,18 +57,9 @@ static int deflections(const urModel* m, const urData* d, int b, double x[3]) {
   return 0;
 }
 
-/* settle the person from the reference posture for t seconds; the largest joint deflection.
-   The stance has no stiff contact, so it settles with a step of at least settle_dt (model
-   parameter, default SETTLE_DT): a state of
-   rest of the Euler step does not depend on the step, and P{F|(0,0)} changes by < 1e-4 between
-   a 1e-4 s and a 2e-4 s settling, at a quarter of the set-up time.
-   The drone waits far above, held at rest in its reference posture (its coordinates are put
-   back after every step): the settled person does not depend on the drone, whose trees never
-   touch the person's while it is parked (checked by ur_impact_prepare before a stance is
-   shared). top (NULL: none) rises to the highest point of the person's bounding spheres in every
-   state the steps evaluated. */
-#define SETTLE_DT 2e-4
-#define BALANCE_GAIN 0.5
+#define SETTLE_DT 2e-4            /* default step of the settling, s (model parameter settle_dt) */
+#define BALANCE_GAIN 0.5          /* fixed-point gain of the balancing */
+/* where the drone waits while the person settles */
 static const double PARK[3] = {0, 0, 1e4}, QID[4] = {1, 0, 0, 0}, ZERO3[3] = {0, 0, 0};
 
 /* the step of the settling */
@@ -90,8 +81,8 @@ static void hold(const urModel* m, urData* d, int drone) {
   memcpy(d->qpos + m->body[drone].qadr + 3, QID, sizeof QID);
 }
 
-/* highest point of the person's bounding spheres (every ellipsoid off the drone) and lowest
-   point of the drone's, at the last kinematics of d */
+/* highest point of the person's bounding spheres (every ellipsoid off the drone's tree) and
+   lowest point of the drone's, at the last kinematics of d */
 static double person_top(const urModel* m, const urData* d, int drone) {
   double top = -INFINITY;
   for (int g = 0; g < m->ngeom; g++) {
@@ -118,6 +109,14 @@ static void park(const urModel* m, urData* d, int drone) {
   ur_set_free(m, d, drone, PARK, QID, ZERO3, ZERO3);
 }
 
+/* settle the person from the reference posture for t seconds; the largest joint deflection.
+   The stance has no stiff contact, so it settles with a step of at least settle_dt (model
+   parameter, default SETTLE_DT): a state of rest of the Euler step does not depend on the step,
+   and P{F|(0,0)} changes by < 1e-4 between a 1e-4 s and a 2e-4 s settling, at a quarter of the
+   set-up time. The drone waits far above, held at rest in its reference posture (put back after
+   every step), so the settled person does not depend on it as long as the trees do not touch
+   (ur_impact_prepare checks that before it shares a stance). top (NULL: none) rises to the
+   highest point of the person's bounding spheres in every state the steps evaluated. */
 static double settle(const urModel* m0, urData* d, int drone, double t, double* top) {
   urModel mc = *m0, *m = &mc;
   mc.opt.dt = settle_step(m0);
@@ -313,6 +312,15 @@ static void stance_free(urStance* st) {
   free(st);
 }
 
+/* room for the settled state of st's counts (every pointer replaced); 0, or -1 */
+static int stance_room(urStance* st) {
+  st->x0 = malloc((st->nx0 + 1) * sizeof(double));
+  st->qpos = malloc((st->nq + 1) * sizeof(double));
+  st->rst = malloc((st->nrst + 1) * sizeof(double));
+  st->pair = malloc((st->npair + 1) * sizeof(urPairData));
+  return st->x0 && st->qpos && st->rst && st->pair ? 0 : -1;
+}
+
 /* the key of m's person (before balancing) and room for its settled state; NULL: no memory */
 static urStance* stance_new(const urModel* m, int drone, double settle_time, int iters) {
   urStance* st = calloc(1, sizeof *st);
@@ -350,11 +358,7 @@ static urStance* stance_new(const urModel* m, int drone, double settle_time, int
   uint64_t hash = 14695981039346656037ULL;
   for (size_t k = 0; k < st->nkey; k++) hash = (hash ^ st->key[k]) * 1099511628211ULL;
   st->hash = hash;
-  st->x0 = malloc((st->nx0 + 1) * sizeof(double));
-  st->qpos = malloc((st->nq + 1) * sizeof(double));
-  st->rst = malloc((st->nrst + 1) * sizeof(double));
-  st->pair = malloc((st->npair + 1) * sizeof(urPairData));
-  if (!st->ok || !st->x0 || !st->qpos || !st->rst || !st->pair) {
+  if (!st->ok || stance_room(st)) {
     stance_free(st);
     return NULL;
   }
@@ -367,19 +371,15 @@ static int stance_same(const urStance* a, const urStance* b) {
 }
 
 static urStance* stance_copy(const urStance* a) {
-  urStance* st = calloc(1, sizeof *st);
+  urStance* st = malloc(sizeof *st);
   if (!st) return NULL;
   *st = *a;
   st->key = malloc(a->nkey + 1);
-  st->x0 = malloc((a->nx0 + 1) * sizeof(double));
-  st->qpos = malloc((a->nq + 1) * sizeof(double));
-  st->rst = malloc((a->nrst + 1) * sizeof(double));
-  st->pair = malloc((a->npair + 1) * sizeof(urPairData));
-  if (!st->key || !st->x0 || !st->qpos || !st->rst || !st->pair) {
+  st->capkey = a->nkey + 1;
+  if (stance_room(st) || !st->key) {
     stance_free(st);
     return NULL;
   }
-  st->capkey = a->nkey + 1;
   memcpy(st->key, a->key, a->nkey);
   memcpy(st->x0, a->x0, a->nx0 * sizeof(double));
   memcpy(st->qpos, a->qpos, a->nq * sizeof(double));
