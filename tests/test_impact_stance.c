@@ -238,7 +238,8 @@ static void donor_by_change(void** state) {
       assert_same_setup(&s, &fresh);
       release(&fresh);
     }
-    release(&s);
+    ur_impact_free(&s);
+    ur_model_free(m);
   }
   release(&donor);
 }

@@ -77,8 +77,10 @@ static void hold(const urModel* m, urData* d, int drone) {
     memset(d->qvel + bd->vadr, 0, bd->nv * sizeof(double));
     memset(d->rst + 2 * bd->vadr, 0, 2 * bd->nv * sizeof(double));
   }
-  memcpy(d->qpos + m->body[drone].qadr, PARK, sizeof PARK);
-  memcpy(d->qpos + m->body[drone].qadr + 3, QID, sizeof QID);
+  if (m->body[drone].jtype == urJNT_FREE) {
+    memcpy(d->qpos + m->body[drone].qadr, PARK, sizeof PARK);
+    memcpy(d->qpos + m->body[drone].qadr + 3, QID, sizeof QID);
+  }
 }
 
 /* highest point of the person's bounding spheres (every ellipsoid off the drone's tree) and
@@ -163,7 +165,7 @@ static int balance(urModel* m, int drone, double settle_time, int iters, double*
 
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual) {
   int drone = ur_name_body(m, "main");
-  if (drone < 0) return -1;
+  if (drone < 0 || m->body[drone].jtype != urJNT_FREE) return -1;
   return balance(m, drone, settle_time, iters, residual, NULL);
 }
 
@@ -565,12 +567,15 @@ static int trees_apart(const urModel* m, int drone) {
 int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iters,
                       const urImpactSetup* const* donors, int ndonor) {
   memset(s, 0, sizeof *s);
+  s->m = m;
   int drone = ur_name_body(m, "main");
-  urData* d = drone >= 0 ? ur_data_new(m) : NULL;
-  if (!d || m->body[drone].jtype != urJNT_FREE || m->body[drone].parent >= 0) {
-    ur_data_free(d);
-    snprintf(s->err, sizeof s->err, d ? "the model needs a free body 'main' (the drone)"
-                                      : "out of memory");
+  if (drone < 0 || m->body[drone].jtype != urJNT_FREE || m->body[drone].parent >= 0) {
+    snprintf(s->err, sizeof s->err, "the model needs a free body 'main' (the drone)");
+    return -2;
+  }
+  urData* d = ur_data_new(m);
+  if (!d) {
+    snprintf(s->err, sizeof s->err, "out of memory");
     return -2;
   }
   urStance* st = stance_new(m, drone, settle_time, iters);   /* before balancing */
