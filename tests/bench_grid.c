@@ -83,7 +83,8 @@ int main(int argc, char** argv) {
   c->out = fopen("/dev/null", "w");
   /* every grid computed: the 1-thread grid of B repeats the conditions of the 2-thread one, which
      recall (recall.c) would otherwise reuse; a case's model seen before is still reused
-     (modelcache.c), so its set-up then costs nothing */
+     (modelcache.c), so its set-up then costs nothing, and so does that of a model whose person
+     was settled before (B after A: ur_impact_prepare takes the settled person) */
   if (!c->model || !c->out || ura_run_line(c, "set recall off")) {
     fprintf(stderr, "bench_grid: no model: %s\n", c->err);
     return 1;

@@ -1,8 +1,9 @@
 /* test_modelcache.c: the model cache (src/app/modelcache.c): switching back to a case or setting
  * seen earlier makes its compiled, balanced and settled model live again (no settling), with the
  * same impact results; the last impact does not survive a switch; at most uraMODELCACHE models
- * are kept, the least recently used freed first; new model parts flush them; keys compare the
- * overrides as a set, values to the bit */
+ * are kept, the least recently used freed first; new model parts flush them (and their settled
+ * stances, which test_impact_stance.c shows are given to models with the same person); keys
+ * compare the overrides as a set, values to the bit */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -91,6 +92,7 @@ static void parts_flush(void** state) {
   assert_false(c->have_setup);
 
   assert_non_null(ura_setup(c));
+  assert_false(c->setup.shared);        /* nor does a stance of them (ur_impact_prepare) */
   run_rc(c, "case B; reset", 0);
   assert_string_equal(c->st.casename, "A");
   assert_false(c->have_setup);

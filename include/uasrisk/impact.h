@@ -9,8 +9,8 @@
  * is computed only once. phi = 0: the person faces the incoming drone; phi = 90 deg: the drone
  * comes from the person's right.
  *
- * A urImpactSetup is constant after ur_impact_setup and shared by all threads; each thread owns
- * a urImpactWork.
+ * A urImpactSetup is constant after ur_impact_setup (or ur_impact_prepare) and shared by all
+ * threads; each thread owns a urImpactWork.
  */
 #ifndef UASRISK_IMPACT_H
 #define UASRISK_IMPACT_H
@@ -21,6 +21,10 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* the settled person of a model, kept with its set-up to be given to another model with the same
+   person (ur_impact_prepare); opaque */
+typedef struct urStance urStance;
 
 /* the roles the impact needs, found by name in the model */
 typedef struct {
@@ -40,6 +44,9 @@ typedef struct {
   double window;                   /* a run ends this long after its first contact, s (model
                                       parameter "window"; none: until the engine ends it) */
   urData* rest;                    /* the settled stance (drone parked far away) */
+  urStance* stance;                /* what another model with the same person can take (owned;
+                                      NULL: none, e.g. after ur_impact_setup) */
+  int shared;                      /* 1: balance and stance were taken from another model */
   char err[160];
 } urImpactSetup;
 
@@ -72,14 +79,32 @@ typedef struct {
    that sags and leans; real standing holds it with muscle tone. This shifts the neutral positions
    x0 of the person's restraints (every tree but the drone's) by fixed-point iteration so that
    the posture settled from the model's reference configuration is that configuration. Stiffness
-   and damping stay as modelled. residual: largest joint deflection of the last settling, rad or
-   m. 0, or -1 if the settling failed. */
+   and damping stay as modelled; the drone waits parked far above, held at rest. residual:
+   largest joint deflection of the last settling, rad or m. 0, or -1 if the settling failed. */
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual);
 
 /* find the roles by name (drone root "main", head ellipsoid "head_cranium", sensors head_acc,
    neck_load, chest_defl, abd_defl), compute R_max, settle the stance (settle_time s of gravity)
-   and check it; 0 or -1 with s->err */
+   and check it; 0 or -1 with s->err. The stance is a state of rest: the person as settled, every
+   velocity zero, the drone parked far above in its reference posture with no restraint or contact
+   history (while the person settles, the drone is held there at rest). */
 int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time);
+
+/* ur_impact_balance (iters) then ur_impact_setup, keeping in s->stance what settling gave; or,
+   when one of the donors (set-ups made by this function for other models; NULL entries skipped)
+   has the same person, its balanced neutral positions and settled person instead of settling:
+   m and s are then bitwise what settling would give (s->shared = 1). The same person: every body
+   off the drone's tree, with its joint, restraints (neutral positions before balancing),
+   reference coordinates, ellipsoids and the pairs among them or with the ground, at the same
+   indices, and the same settling options (step, gravity, integrator, implicit damping, vmax),
+   settle_time and iters, compared byte for byte. Also needed, so that the trees cannot have
+   touched: in both models no airbag rides on the person and the drone has no pair or airbag
+   target but the person's, the donor's person never rose while settling to its drone's parked
+   bounding spheres nor to this drone's, and this drone takes one held settling step without
+   failing. 0; -1 if the balancing failed, -2 if the set-up did (s->err; ur_impact_free either
+   way). */
+int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iters,
+                      const urImpactSetup* const* donors, int ndonor);
 void ur_impact_free(urImpactSetup* s);
 
 int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w);

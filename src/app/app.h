@@ -278,6 +278,9 @@ void ura_mcache_park(uraCtx* c);
 /* a kept model for ns's overrides becomes the live one (the live one is parked): 1, else 0 */
 int ura_mcache_take(uraCtx* c, const uraState* ns);
 void ura_mcache_flush(uraCtx* c);              /* free every kept model */
+/* the settled stances of the kept models into out (at most max): donors of the person's stance
+   for a new model (ur_impact_prepare); their count */
+int ura_mcache_setups(const uraCtx* c, const urImpactSetup** out, int max);
 
 /* grid recall (recall.c): a copy of a kept complete grid for the live model and these
    conditions (NULL: none, or recall is off); keep a complete grid; free every kept grid */

@@ -164,20 +164,22 @@ const urImpactSetup* ura_setup(uraCtx* c) {
   if (c->have_setup) return &c->setup;
   if (ura_dry(c, "simulation")) return NULL;
   if (!ura_model(c)) return NULL;
-  urModel* m = c->model;
-  double res;
-  if (ur_impact_balance(m, SETTLE_SECONDS, BALANCE_ITERS, &res)) {
-    /* the balancing shifts neutral positions in the model: compile afresh next time */
-    ura_model_stale(c);
+
+  /* balance and settle, or take both from a kept model with the same person (modelcache.c) */
+  const urImpactSetup* donors[uraMODELCACHE];
+  int nd = ura_mcache_setups(c, donors, uraMODELCACHE);
+  int rc = ur_impact_prepare(&c->setup, c->model, SETTLE_SECONDS, BALANCE_ITERS, donors, nd);
+  if (rc == -1) {
     ura_fail(c, ura_interrupted() ? "interrupted (Ctrl-C) while settling the standing posture"
                                   : "model: the standing posture cannot be balanced (it falls)");
-    return NULL;
-  }
-  if (ur_impact_setup(&c->setup, m, SETTLE_SECONDS)) {
+  } else if (rc) {
     if (ura_interrupted()) ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
     else ura_fail(c, "model: %s", c->setup.err);
+  }
+  if (rc) {
+    /* the balancing shifts neutral positions in the model: compile afresh next time */
     ur_impact_free(&c->setup);
-    ura_model_stale(c);          /* balanced already: compile afresh next time */
+    ura_model_stale(c);
     return NULL;
   }
   c->have_setup = 1;

@@ -5,6 +5,10 @@
  * balanced and settled (ur_impact_balance shifts neutral positions in the model: the kept model
  * is the balanced one), the least recently used freed first. Models are swapped only between
  * commands, never while a grid's workers use the live one. Changing the model parts flushes it.
+ * The kept set-ups are also the donors of a new model's stance (ura_mcache_setups): when its
+ * person is byte for byte that of a kept model (a drone or airbag setting changed, e.g.
+ * 'set bag_p0 1.1 atm' or case A -> B), ur_impact_prepare takes that model's balanced neutral
+ * positions and settled person instead of settling, with bitwise the same set-up (impact.h).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -99,6 +103,13 @@ int ura_mcache_take(uraCtx* c, const uraState* ns) {
     return 1;
   }
   return 0;
+}
+
+int ura_mcache_setups(const uraCtx* c, const urImpactSetup** out, int max) {
+  const uraModelCache* mc = c->mcache;
+  int n = 0;
+  for (int i = 0; mc && i < mc->n && n < max; i++) out[n++] = &mc->e[i].setup;
+  return n;
 }
 
 void ura_mcache_flush(uraCtx* c) {
