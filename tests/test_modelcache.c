@@ -2,7 +2,7 @@
  * seen earlier makes its compiled, balanced and settled model live again (no settling), with the
  * same impact results; the last impact does not survive a switch; at most uraMODELCACHE models
  * are kept, the least recently used freed first; new model parts flush them (and their settled
- * stances, which test_impact_stance.c shows are given to models with the same person); keys
+ * stances, which test_impact_setup.c shows are given to models with the same person); keys
  * compare the overrides as a set, values to the bit */
 #include <setjmp.h>
 #include <stdarg.h>

@@ -1,4 +1,4 @@
-/* test_impact_stance.c: a stance taken from another model (ur_impact_prepare with donors) is
+/* test_impact_setup.c: a stance taken from another model (ur_impact_prepare with donors) is
  * bitwise the stance settling gives: the whole rest state, the balanced neutral positions, the
  * set-up values and whole impacts (results and histories). Taken only when the person is the
  * same: any change of a person's body, joint, restraint, reference coordinate, ellipsoid, pair,
