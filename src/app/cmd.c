@@ -105,20 +105,23 @@ int ura_cmd_set(uraCtx* c, int argc, char** argv) {
   return p ? ura_param_set(c, p, argv[2]) : ura_injury_set(c, i, argv[2]);
 }
 
-/* one line of show: name, value, unit, and where a derived value comes from */
-static int show_one(uraCtx* c, const uraParam* p, int listing) {
+/* one line of show: name, value, unit, and where a derived value comes from; ext (NULL: one
+   parameter alone) keeps the derived grid extents across the lines of a listing (ext[3]: 0 not
+   sized yet, 1 sized, -1 not available) */
+static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
   char val[1024];
   const char* note = "";
   if (p->setoff && !*(const int*)((const char*)&c->st + p->setoff)) {
-    double v[3];
+    double one[4] = {0, 0, 0, 0}, *v = ext ? ext : one;
     if (!strcmp(p->name, "speed") || !strcmp(p->name, "angle")) {
       if (ura_impact_conditions(c, &v[0], &v[1])) return -1;
       note = "  (derived: descent model at the live wind)";
       snprintf(val, sizeof val, "%.6g", v[!strcmp(p->name, "angle")]);
     } else {
       /* grid extents: the lattice the next grid would use (sizing needs the settled stance) */
-      if (ura_grid_extents(c, &v[0], &v[1], &v[2])) {
-        if (!listing) return -1;
+      if (v[3] == 0) v[3] = ura_grid_extents(c, &v[0], &v[1], &v[2]) ? -1 : 1;
+      if (v[3] < 0) {
+        if (!ext) return -1;
         /* the whole listing still prints (e.g. in dry mode): the value is left to the grid */
         c->err[0] = 0;
         fprintf(c->out, "%-16s auto %s  (derived at the next grid)\n", p->name, p->unit);
@@ -157,12 +160,13 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
     if (!p && i < 0) {
       return ura_fail(c, "show: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
     }
-    if (p) return show_one(c, p, 0);
+    if (p) return show_one(c, p, NULL);
     show_injury(c, i);
     return 0;
   }
+  double ext[4] = {0, 0, 0, 0};
   for (const uraParam* p = ura_params; p->name; p++) {
-    if (show_one(c, p, 1)) return -1;
+    if (show_one(c, p, ext)) return -1;
   }
   fprintf(c->out, "# injury criteria (uasrisk-injury(7))\n");
   for (int i = 0; i < ur_injury_param_count(); i++) show_injury(c, i);
