@@ -649,7 +649,8 @@ function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa
   }
   sh = sprintf("%+.2f", kb * (LPAR[1] - LPAR[2]))
   FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-") \
-         (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along" lower(kb * (LPAR[1] - LPAR[2]), GPSI[i]) ")" : "")
+         (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along" \
+               lower(kb * (LPAR[1] - LPAR[2]), GPSI[i]) ")" : "")
   p("| " t " | " c " | " w " | " both " | " oo " | " op " | " nn " | " \
     (un ? sprintf("%.2f", both / un) : "-") " | " touch " | " (un ? sprintf("%.3f", mad / un) : "-") " | " \
     (un ? sprintf("%+.3f", bias / un) : "-") " | " sprintf("%.3f", mx) (mx > 0 ? " (" mpar ", " mperp ")" : "") " | " \

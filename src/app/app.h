@@ -39,7 +39,7 @@ typedef struct {
   urInjuryParams injury;           /* injury criteria and PoF curve settings */
   double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
   double step;                     /* grid pitch, m */
-  double par_min, par_max, perp_max; /* grid extents (along_min, along_max, cross_max) when set, m */
+  double par_min, par_max, perp_max; /* grid extents along_min, along_max, cross_max when set, m */
   int par_min_set, par_max_set, perp_max_set; /* 0: sized automatically (derived) */
   double threads;                  /* grid worker threads (a whole number) */
   int recall;                      /* 1: a grid identical to an earlier one reuses its cells */

@@ -195,7 +195,8 @@ int ura_grid_run(uraCtx* c, int quiet) {
     else snprintf(size, sizeof size, "%ld", ncell);
     return ura_fail(c, "grid: %s cells of %g m%s (%.0f MB; %.0f MB of memory available) is too "
                     "large; accepted: at most %ld cells in half the available memory (raise "
-                    "'step' or narrow along_min, along_max, cross_max)", size, spec.step, what, mb, avail, MAXCELLS);
+                    "'step' or narrow along_min, along_max, cross_max)", size, spec.step, what, mb,
+                    avail, MAXCELLS);
   }
   urGrid* g = ur_grid_new(&spec);
   int nw = spec.threads;

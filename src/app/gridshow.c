@@ -129,6 +129,7 @@ int ura_grid_show(uraCtx* c) {
   ura_grid_conditions(c, buf, sizeof buf);
   ura_grid_qtext(g, q, sizeof q);
   fprintf(f, "%s: %s over the %s (%d x %d cells of %g m); source %s\n", buf, q,
-          c->last.extents_set ? "set extents only" : "full plane", g->nrow, g->ncol, g->step, c->last.source[0] ? c->last.source : "?");
+          c->last.extents_set ? "set extents only" : "full plane", g->nrow, g->ncol, g->step,
+          c->last.source[0] ? c->last.source : "?");
   return 0;
 }

@@ -55,8 +55,9 @@ static int key_same(const gridKey* a, const gridKey* b) {
   const urImpactCond *x = &a->cond, *y = &b->cond;
   if (!same(x->speed, y->speed) || !same(x->angle, y->angle) || !same(x->face, y->face) ||
       !same(x->pitch, y->pitch) || !same(x->roll, y->roll) || !same(x->yaw, y->yaw) ||
-      !same(a->step, b->step) || memcmp(a->set, b->set, sizeof a->set) || !same(a->par_min, b->par_min) ||
-      !same(a->par_max, b->par_max) || !same(a->perp_max, b->perp_max)) {
+      !same(a->step, b->step) || memcmp(a->set, b->set, sizeof a->set) ||
+      !same(a->par_min, b->par_min) || !same(a->par_max, b->par_max) ||
+      !same(a->perp_max, b->perp_max)) {
     return 0;
   }
   /* every injury setting, through the named table (which covers the whole struct) */
