@@ -3,7 +3,9 @@
  * urLanes, engine_lanes.c). Parameters: urT element type, urBC(x) a double broadcast to urT,
  * urK(name) the spatial kernels (engine_spatial.h), urFN(name) this file's function names, urD
  * the data (fields S IA pA U Dinv uu cbias cvel cacc Xe Xr qfrc fext qacc freact energy), and
- * urINVSYM(d, Dinv, D, nv) the inverse of a joint-space inertia with its failure handling. The
+ * urINVSYM(d, Dinv, D, nv) the inverse of a joint-space inertia with its failure handling,
+ * urSETENERGY(d, ke) the store of the kinetic energy, urABA_ATTR (optional) attributes of the
+ * entry point. The
  * same expressions in the same order make each lane's bits those of the scalar run. No include
  * guard. */
 
@@ -211,6 +213,9 @@ void urFN(pass3)(const urModel* m, urD* d, int i, const int nv) {
 
 
 // needs ur_kinematics, ur_velocities, joint forces d->qfrc and external forces d->fext
+#ifdef urABA_ATTR
+urABA_ATTR
+#endif
 void urFN(aba)(const urModel* m, urD* d) {
   int nb = m->nbody;
 
@@ -231,7 +236,7 @@ void urFN(aba)(const urModel* m, urD* d) {
     }
     memcpy(d->freact + 6*i, d->pA + 6*i, 6*sizeof(urT));
   }
-  d->energy = ke;
+  urSETENERGY(d, ke);
 
   // pass 2: articulated inertias and bias forces, leaves to roots
   for (int i = nb - 1; i >= 0; i--) {

@@ -12,6 +12,7 @@
 #define urK(name) uru_##name
 #define urFN(name) ur_##name
 #define urD urData
+#define urSETENERGY(d, ke) ((d)->energy = (ke))
 #define urINVSYM(d, Dinv, D, nv)                                           \
   if (uru_invsym(Dinv, D, nv)) {                                           \
     ur_set_status(d, urSTAT_NONFINITE, "singular joint-space inertia");    \
@@ -23,6 +24,7 @@
 #undef urK
 #undef urFN
 #undef urD
+#undef urSETENERGY
 #undef urINVSYM
 
 //---------------------------------- joint reactions -----------------------------------------------

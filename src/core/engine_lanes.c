@@ -1,0 +1,205 @@
+/* engine_lanes.c: up to urNLANE runs of one model stepped in lock-step, their articulated-body
+ * algorithm computed once over vectors of lanes (engine_aba.h instantiated for urV4). Every lane
+ * takes the same path through the tree, so the vector code is the scalar code with each
+ * operation done for all lanes at once: each run's bits are those of ur_step on its own. The
+ * per-run parts (contacts, restraints, airbags, sensors, integration, end of run) stay scalar.
+ * On x86-64 the vector kernels are also compiled for AVX2 and picked at load time; both clones
+ * evaluate the same IEEE operations (no contraction: ISO C mode), so the bits do not depend on
+ * the machine either. */
+#include <stdlib.h>
+#include <string.h>
+#include "engine_internal.h"
+
+// the vector helpers are static: the AVX calling convention (-Wpsabi) does not concern them
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+//---------------------------------- vector kernels ------------------------------------------------
+
+static inline urV4 bc4(double x) {
+  return (urV4){x, x, x, x};
+}
+
+#define urT urV4
+#define urK(name) urv_##name
+#include "engine_spatial.h"
+#define urSTORAGE static inline __attribute__((always_inline))
+#include "engine_spatial_inertia.h"
+#undef urSTORAGE
+
+
+// inverse of a joint-space inertia per lane: the closed forms of uru_invsym for n <= 3 over the
+// vectors (the same expressions); a lane whose matrix is singular, and n > 3, go through
+// uru_invsym lane by lane (a failed lane gets a zero inverse and its bit in L->fail)
+static inline __attribute__((always_inline))
+void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
+  if (n <= 3) {
+    urV4 det;
+    if (n == 1) {
+      det = A[0];
+    } else if (n == 2) {
+      det = A[0]*A[3] - A[1]*A[2];
+    } else {
+      urV4 c0 = A[4]*A[8] - A[5]*A[7], c1 = A[5]*A[6] - A[3]*A[8], c2 = A[3]*A[7] - A[4]*A[6];
+      det = A[0]*c0 + A[1]*c1 + A[2]*c2;
+      urV4 id = 1/det;
+      Ainv[0] = c0*id;
+      Ainv[1] = (A[2]*A[7] - A[1]*A[8])*id;
+      Ainv[2] = (A[1]*A[5] - A[2]*A[4])*id;
+      Ainv[3] = c1*id;
+      Ainv[4] = (A[0]*A[8] - A[2]*A[6])*id;
+      Ainv[5] = (A[2]*A[3] - A[0]*A[5])*id;
+      Ainv[6] = c2*id;
+      Ainv[7] = (A[1]*A[6] - A[0]*A[7])*id;
+      Ainv[8] = (A[0]*A[4] - A[1]*A[3])*id;
+    }
+    if (n == 1) {
+      Ainv[0] = 1/A[0];
+    } else if (n == 2) {
+      Ainv[0] = A[3]/det;
+      Ainv[1] = -A[1]/det;
+      Ainv[2] = -A[2]/det;
+      Ainv[3] = A[0]/det;
+    }
+    urV4I ok = det != 0;
+    if (ok[0] & ok[1] & ok[2] & ok[3]) {
+      return;
+    }
+  }
+
+  // lane by lane
+  for (int l = 0; l < urNLANE; l++) {
+    double a[36], ai[36];
+    for (int k = 0; k < n*n; k++) {
+      a[k] = A[k][l];
+    }
+    if (uru_invsym(ai, a, n)) {
+      memset(ai, 0, sizeof(ai));
+      L->fail |= 1 << l;
+    }
+    for (int k = 0; k < n*n; k++) {
+      Ainv[k][l] = ai[k];
+    }
+  }
+}
+
+#define urT urV4
+#define urBC(x) bc4(x)
+#define urFN(name) urv_##name
+#define urD urLanes
+#define urSETENERGY(d, ke) ((d)->energy[0] = (ke))
+#define urINVSYM(d, Dinv, D, nv) invsym4(d, Dinv, D, nv)
+#if defined(__x86_64__) && defined(__GNUC__)
+#define urABA_ATTR __attribute__((target_clones("avx2", "default")))
+#endif
+#include "engine_aba.h"
+
+//---------------------------------- lane data -----------------------------------------------------
+
+int ur_lanes_init(const urModel* m, urLanes* L) {
+  memset(L, 0, sizeof(*L));
+  size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
+  size_t n = nb*(36*4 + 6*7 + 9 + 3) + 2*nv + 1;
+  L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1)*sizeof(urV4));
+  if (!L->mem) {
+    return -1;
+  }
+  memset(L->mem, 0, n*sizeof(urV4));
+  urV4* p = L->mem;
+  urV4** f[] = {&L->S, &L->IA, &L->U, &L->Dinv, &L->pA, &L->uu, &L->cbias, &L->cvel, &L->cacc,
+                &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy};
+  size_t len[] = {36*nb, 36*nb, 36*nb, 36*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 9*nb,
+                  3*nb, nv, nv, 1};
+  for (size_t k = 0; k < sizeof(len)/sizeof(len[0]); k++) {
+    *f[k] = p;
+    p += len[k];
+  }
+  return 0;
+}
+
+
+void ur_lanes_free(urLanes* L) {
+  free(L->mem);
+  memset(L, 0, sizeof(*L));
+}
+
+
+// a vector from one array of each lane's data
+#define GATHER(field, n)                                                          \
+  for (size_t k = 0; k < (size_t)(n); k++) {                                      \
+    L->field[k] = (urV4){d0->field[k], d1->field[k], d2->field[k], d3->field[k]}; \
+  }
+
+// the inputs of the ABA; lanes beyond n repeat lane 0
+static void gather(const urModel* m, urLanes* L, urData* const* d, int n) {
+  const urData* d0 = d[0];
+  const urData* d1 = d[n > 1 ? 1 : 0];
+  const urData* d2 = d[n > 2 ? 2 : 0];
+  const urData* d3 = d[n > 3 ? 3 : 0];
+  size_t nb = (size_t)m->nbody;
+  GATHER(S, 36*nb);
+  GATHER(cbias, 6*nb);
+  GATHER(cvel, 6*nb);
+  GATHER(fext, 6*nb);
+  GATHER(Xe, 9*nb);
+  GATHER(Xr, 3*nb);
+  GATHER(qfrc, m->nv);
+  L->fail = 0;
+}
+
+
+// the outputs of the ABA back to each lane's data
+static void scatter(const urModel* m, const urLanes* L, urData* const* d, int n) {
+  size_t nb = (size_t)m->nbody;
+  for (int l = 0; l < n; l++) {
+    urData* dl = d[l];
+    for (int k = 0; k < m->nv; k++) {
+      dl->qacc[k] = L->qacc[k][l];
+    }
+    for (size_t k = 0; k < 6*nb; k++) {
+      dl->cacc[k] = L->cacc[k][l];
+      dl->freact[k] = L->freact[k][l];
+    }
+    dl->energy = L->energy[0][l];
+    if (L->fail & (1 << l)) {
+      ur_set_status(dl, urSTAT_NONFINITE, "singular joint-space inertia");
+    }
+  }
+}
+
+//---------------------------------- lock-step -----------------------------------------------------
+
+int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
+  // one run, or an integrator with stages: each run on its own
+  if (n < 2 || m->opt.integrator == urINT_RK4) {
+    for (int l = 0; l < n; l++) {
+      ur_step(m, d[l]);
+    }
+    return 0;
+  }
+
+  // the runs that may step, through the forward pass up to the accelerations
+  urData* run[urNLANE];
+  int k = 0;
+  for (int l = 0; l < n && l < urNLANE; l++) {
+    if (ur_step_begin(m, d[l]) >= 0) {
+      ur_forward_pre(m, d[l]);
+      run[k++] = d[l];
+    }
+  }
+  if (k == 0) {
+    return 0;
+  }
+
+  // accelerations for all lanes at once
+  gather(m, L, run, k);
+  urv_aba(m, L);
+  scatter(m, L, run, k);
+
+  // the rest of each step
+  for (int l = 0; l < k; l++) {
+    if (ur_forward_post(m, run[l]) >= 0) {
+      ur_step_euler(m, run[l]);
+    }
+  }
+  return 0;
+}
