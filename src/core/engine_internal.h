@@ -29,11 +29,13 @@ int uru_invsym(double* Ainv, const double* A, int n);
 
 //---------------------------------- engine passes -------------------------------------------------
 
-void ur_jcalc(const urModel* m, urData* d, int i);
+void ur_kinematics_bodies(const urModel* m, urData* d);
+void ur_kinematics_geoms(const urModel* m, urData* d);
 void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
 void ur_forward_pre(const urModel* m, urData* d);
+void ur_forward_forces(const urModel* m, urData* d);
 int ur_forward_post(const urModel* m, urData* d);
 int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
@@ -53,8 +55,10 @@ double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double 
                         const double p[3], double fn, double rate, const urLaw* law, double mu,
                         double v_eps);
 //---------------------------------- lanes (engine_lanes.c) --------------------------------------
-// up to urNLANE runs of one model stepped in lock-step, the articulated-body algorithm computed
-// over vectors of lanes; each run's bits are those of ur_step
+// up to urNLANE runs of one model stepped in lock-step, their poses, velocities and the
+// articulated-body algorithm computed over vectors of lanes; each run's bits are those of
+// ur_step. A lane run's S, cbias and ABA scratch (IA, U, Dinv, pA, uu) live here only: its
+// urData keeps the poses, velocities, accelerations and joint loads.
 
 #define urNLANE 4
 typedef double urV4 __attribute__((vector_size(4*sizeof(double))));
@@ -62,6 +66,7 @@ typedef long long urV4I __attribute__((vector_size(4*sizeof(long long))));
 
 typedef struct {
   urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
+  urV4 *qpos, *qvel, *xmat, *xpos, *xcom;
   urV4* energy;                    // kinetic energy of each lane ([0])
   int fail;                        // lanes whose joint-space inertia was singular (bits)
   void* mem;

@@ -93,12 +93,34 @@ void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
 #endif
 #include "engine_aba.h"
 
+// rotation about a unit axis per lane: the scalar axisrot's quaternion (uru_axisangle2quat, one
+// sincos per lane), then its matrix over the vectors
+static inline __attribute__((always_inline))
+void axisrot4(urV4 R[9], const urV4 a[3], urV4 ang) {
+  urV4 q[4];
+  for (int l = 0; l < urNLANE; l++) {
+    double ax[3] = {a[0][l], a[1][l], a[2][l]}, ql[4];
+    uru_axisangle2quat(ql, ax, ang[l]);
+    for (int k = 0; k < 4; k++) {
+      q[k][l] = ql[k];
+    }
+  }
+  urv_quat2mat(R, q);
+}
+
+#define urAXISROT(R, axis, angle) axisrot4(R, axis, angle)
+#if defined(__x86_64__) && defined(__GNUC__)
+#define urKIN_ATTR __attribute__((target_clones("avx2", "default")))
+#endif
+#include "engine_kin.h"
+
 //---------------------------------- lane data -----------------------------------------------------
 
 int ur_lanes_init(const urModel* m, urLanes* L) {
   memset(L, 0, sizeof(*L));
   size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
-  size_t n = nb*(36*4 + 6*7 + 9 + 3) + 2*nv + 1;
+  size_t nq = (size_t)m->nq;
+  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3) + 2*nv + 1 + nq + nv;
   L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1)*sizeof(urV4));
   if (!L->mem) {
     return -1;
@@ -106,9 +128,10 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   memset(L->mem, 0, n*sizeof(urV4));
   urV4* p = L->mem;
   urV4** f[] = {&L->S, &L->IA, &L->U, &L->Dinv, &L->pA, &L->uu, &L->cbias, &L->cvel, &L->cacc,
-                &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy};
+                &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy,
+                &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom};
   size_t len[] = {36*nb, 36*nb, 36*nb, 36*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 9*nb,
-                  3*nb, nv, nv, 1};
+                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb};
   for (size_t k = 0; k < sizeof(len)/sizeof(len[0]); k++) {
     *f[k] = p;
     p += len[k];
@@ -129,36 +152,60 @@ void ur_lanes_free(urLanes* L) {
     L->field[k] = (urV4){d0->field[k], d1->field[k], d2->field[k], d3->field[k]}; \
   }
 
-// the inputs of the ABA; lanes beyond n repeat lane 0
-static void gather(const urModel* m, urLanes* L, urData* const* d, int n) {
-  const urData* d0 = d[0];
-  const urData* d1 = d[n > 1 ? 1 : 0];
-  const urData* d2 = d[n > 2 ? 2 : 0];
-  const urData* d3 = d[n > 3 ? 3 : 0];
+// the lanes' data: lane l of d[l], lanes beyond n repeating lane 0
+#define LANES(n)                                  \
+  const urData* d0 = d[0];                        \
+  const urData* d1 = d[(n) > 1 ? 1 : 0];          \
+  const urData* d2 = d[(n) > 2 ? 2 : 0];          \
+  const urData* d3 = d[(n) > 3 ? 3 : 0]
+
+// one array of each lane's data back from the vectors
+#define SCATTER(field, len)                       \
+  for (size_t k = 0; k < (size_t)(len); k++) {    \
+    dl->field[k] = L->field[k][l];                \
+  }
+
+// the state, for the poses and velocities
+static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) {
+  LANES(n);
+  GATHER(qpos, m->nq);
+  GATHER(qvel, m->nv);
+}
+
+
+// the poses and velocities back to each lane's data (with its ellipsoids)
+static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, int n) {
   size_t nb = (size_t)m->nbody;
-  GATHER(S, 36*nb);
-  GATHER(cbias, 6*nb);
-  GATHER(cvel, 6*nb);
-  GATHER(fext, 6*nb);
-  GATHER(Xe, 9*nb);
-  GATHER(Xr, 3*nb);
+  for (int l = 0; l < n; l++) {
+    urData* dl = d[l];
+    SCATTER(xmat, 9*nb);
+    SCATTER(xpos, 3*nb);
+    SCATTER(xcom, 3*nb);
+    SCATTER(Xe, 9*nb);
+    SCATTER(Xr, 3*nb);
+    SCATTER(cvel, 6*nb);
+    ur_kinematics_geoms(m, dl);
+  }
+}
+
+
+// the applied forces, for the ABA
+static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n) {
+  LANES(n);
+  GATHER(fext, 6*(size_t)m->nbody);
   GATHER(qfrc, m->nv);
   L->fail = 0;
 }
 
 
 // the outputs of the ABA back to each lane's data
-static void scatter(const urModel* m, const urLanes* L, urData* const* d, int n) {
+static void scatter_acc(const urModel* m, const urLanes* L, urData* const* d, int n) {
   size_t nb = (size_t)m->nbody;
   for (int l = 0; l < n; l++) {
     urData* dl = d[l];
-    for (int k = 0; k < m->nv; k++) {
-      dl->qacc[k] = L->qacc[k][l];
-    }
-    for (size_t k = 0; k < 6*nb; k++) {
-      dl->cacc[k] = L->cacc[k][l];
-      dl->freact[k] = L->freact[k][l];
-    }
+    SCATTER(qacc, m->nv);
+    SCATTER(cacc, 6*nb);
+    SCATTER(freact, 6*nb);
     dl->energy = L->energy[0][l];
     if (L->fail & (1 << l)) {
       ur_set_status(dl, urSTAT_NONFINITE, "singular joint-space inertia");
@@ -177,12 +224,11 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
     return 0;
   }
 
-  // the runs that may step, through the forward pass up to the accelerations
+  // the runs that may step
   urData* run[urNLANE];
   int k = 0;
   for (int l = 0; l < n && l < urNLANE; l++) {
     if (ur_step_begin(m, d[l]) >= 0) {
-      ur_forward_pre(m, d[l]);
       run[k++] = d[l];
     }
   }
@@ -190,10 +236,19 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
     return 0;
   }
 
+  // poses and velocities for all lanes at once, the applied forces lane by lane
+  gather_state(m, L, run, k);
+  urv_kinematics_bodies(m, L);
+  urv_velocities(m, L);
+  scatter_kin(m, L, run, k);
+  for (int l = 0; l < k; l++) {
+    ur_forward_forces(m, run[l]);
+  }
+
   // accelerations for all lanes at once
-  gather(m, L, run, k);
+  gather_forces(m, L, run, k);
   urv_aba(m, L);
-  scatter(m, L, run, k);
+  scatter_acc(m, L, run, k);
 
   // the rest of each step
   for (int l = 0; l < k; l++) {

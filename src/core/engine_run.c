@@ -47,6 +47,12 @@ const char* ur_status_str(int status) {
 void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics(m, d);
   ur_velocities(m, d);
+  ur_forward_forces(m, d);
+}
+
+
+// the applied forces of the forward pipeline (needs the poses and velocities)
+void ur_forward_forces(const urModel* m, urData* d) {
   memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
   for (int i = 0; i < m->nbody; i++) {
