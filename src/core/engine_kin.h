@@ -21,7 +21,8 @@ static inline void urFN(bcast)(urT* r, const double* x, int n) {
 
 
 // joint transform (Xe, Xr), motion subspace S (6 x nv, row-major) and S-dot qdot (in cbias)
-static inline void urFN(jcalc)(const urModel* m, urD* d, int i) {
+static inline __attribute__((always_inline))
+void urFN(jcalc)(const urModel* m, urD* d, int i) {
   const urBody* b = m->body + i;
   const urT* q = d->qpos + b->qadr;
   const urT* qd = d->qvel + b->vadr;

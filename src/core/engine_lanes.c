@@ -6,6 +6,7 @@
  * On x86-64 the vector kernels are also compiled for AVX2 and picked at load time; both clones
  * evaluate the same IEEE operations (no contraction: ISO C mode), so the bits do not depend on
  * the machine either. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "engine_internal.h"
@@ -27,9 +28,59 @@ static inline urV4 bc4(double x) {
 #undef urSTORAGE
 
 
-// inverse of a joint-space inertia per lane: the closed forms of uru_invsym for n <= 3 over the
-// vectors (the same expressions); a lane whose matrix is singular, and n > 3, go through
-// uru_invsym lane by lane (a failed lane gets a zero inverse and its bit in L->fail)
+// uru_invsym's Cholesky inverse (n > 3) over the vectors, the square roots lane by lane; -1 if a
+// lane's matrix is not positive definite
+static inline __attribute__((always_inline))
+int chol4(urV4* Ainv, const urV4* A, int n) {
+  urV4 L[36] = {0}, Li[36] = {0};
+  for (int j = 0; j < n; j++) {
+    urV4 s = A[n*j + j];
+    for (int k = 0; k < j; k++) {
+      s -= L[6*j + k]*L[6*j + k];
+    }
+    urV4I pos = s > 0;
+    if (!(pos[0] & pos[1] & pos[2] & pos[3])) {
+      return -1;
+    }
+    for (int l = 0; l < urNLANE; l++) {
+      L[6*j + j][l] = sqrt(s[l]);
+    }
+    for (int i = j + 1; i < n; i++) {
+      urV4 t = A[n*i + j];
+      for (int k = 0; k < j; k++) {
+        t -= L[6*i + k]*L[6*j + k];
+      }
+      L[6*i + j] = t/L[6*j + j];
+    }
+  }
+  for (int j = 0; j < n; j++) {
+    Li[6*j + j] = 1/L[6*j + j];
+    for (int i = j + 1; i < n; i++) {
+      urV4 t = bc4(0);
+      for (int k = j; k < i; k++) {
+        t -= L[6*i + k]*Li[6*k + j];
+      }
+      Li[6*i + j] = t/L[6*i + i];
+    }
+  }
+  for (int i = 0; i < n; i++) {
+    for (int j = i; j < n; j++) {
+      urV4 t = bc4(0);
+      for (int k = j; k < n; k++) {
+        t += Li[6*k + i]*Li[6*k + j];
+      }
+      Ainv[n*i + j] = t;
+      Ainv[n*j + i] = t;
+    }
+  }
+  return 0;
+}
+
+
+// inverse of a joint-space inertia per lane: the closed forms of uru_invsym for n <= 3 and its
+// Cholesky beyond, over the vectors (the same expressions); if some lane's matrix is singular,
+// every lane goes through uru_invsym on its own (a failed lane gets a zero inverse and its bit
+// in L->fail)
 static inline __attribute__((always_inline))
 void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
   if (n <= 3) {
@@ -64,6 +115,8 @@ void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
     if (ok[0] & ok[1] & ok[2] & ok[3]) {
       return;
     }
+  } else if (chol4(Ainv, A, n) == 0) {
+    return;
   }
 
   // lane by lane
