@@ -66,7 +66,9 @@ static int feed_next(void* ctx, double* dpar, double* dperp, void** tag) {
   return 1;
 }
 
-static void feed_done(void* ctx, void* tag, int rc, const urImpactResult* r) {
+static void feed_done(void* ctx, void* tag, int rc, const urImpactResult* r,
+                      const urImpactWork* w) {
+  (void)w;
   cellFeed* f = ctx;
   urCell* cell = tag;
   f->put(f->feed, cell, cell_result(cell, rc, r));

@@ -53,7 +53,7 @@ static int fill(const urImpactSetup* s, slot* k, const urImpactCond* c, const ur
   while (next(ctx, &dpar, &dperp, &k->tag)) {
     ur_impact_begin(s, &k->w, c, dpar, dperp, &k->r, &k->texit);
     if (k->w.d->status == urSTAT_OK) return 1;
-    done(ctx, k->tag, ur_impact_finish(s, &k->w, ip, &k->r), &k->r);
+    done(ctx, k->tag, ur_impact_finish(s, &k->w, ip, &k->r), &k->r, &k->w);
   }
   return 0;
 }
@@ -79,7 +79,8 @@ void ur_impact_run_many(const urImpactSetup* s, urImpactLanes* L, const urImpact
         l++;
         continue;
       }
-      done(ctx, sl[l].tag, e < 0 ? -1 : ur_impact_finish(s, &sl[l].w, ip, &sl[l].r), &sl[l].r);
+      int rc = e < 0 ? -1 : ur_impact_finish(s, &sl[l].w, ip, &sl[l].r);
+      done(ctx, sl[l].tag, rc, &sl[l].r, &sl[l].w);
       if (fill(s, &sl[l], c, ip, next, done, ctx)) {
         l++;
         continue;
