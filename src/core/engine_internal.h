@@ -35,13 +35,15 @@ void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
 void ur_forward_pre(const urModel* m, urData* d);
-void ur_forward_forces(const urModel* m, urData* d);
+void ur_forward_forces(const urModel* m, urData* d, int broad);
 int ur_forward_post(const urModel* m, urData* d);
 int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
 void ur_reactions(const urModel* m, urData* d);
 void ur_restraints(const urModel* m, urData* d);
 void ur_contacts(const urModel* m, urData* d);
+void ur_contacts_broad(const urModel* m, urData* d);
+void ur_contacts_narrow(const urModel* m, urData* d);
 void ur_contacts_commit(const urModel* m, urData* d);
 void ur_airbags(const urModel* m, urData* d);
 void ur_sensors(const urModel* m, urData* d);
@@ -66,7 +68,8 @@ typedef long long urV4I __attribute__((vector_size(4*sizeof(long long))));
 
 typedef struct {
   urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
-  urV4 *qpos, *qvel, *xmat, *xpos, *xcom;
+  urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxmat, *gxpos;
+  urV4* gap;                       // npair: bounding-sphere gaps (broad phase)
   urV4* energy;                    // kinetic energy of each lane ([0])
   int fail;                        // lanes whose joint-space inertia was singular (bits)
   void* mem;

@@ -1,8 +1,9 @@
-/* engine_kin.h: joint transforms and motion subspaces (jcalc), world poses of bodies, spatial
+/* engine_kin.h: joint transforms and motion subspaces (jcalc), world poses of bodies and
+ * ellipsoids, spatial
  * velocities and velocity-product accelerations, as a template like engine_aba.h: included for
- * doubles (engine_kinematics.c: ur_jcalc, ur_kinematics_bodies, ur_velocities on urData) and
+ * doubles (engine_kinematics.c: ur_kinematics_bodies, ur_kinematics_geoms, ur_velocities on urData) and
  * for lanes (engine_lanes.c: urv_ on urLanes). Parameters: urT, urBC(x), urK(name), urFN(name),
- * urD (fields qpos qvel S cbias Xe Xr xmat xpos xcom cvel), urAXISROT(R, axis, angle) a
+ * urD (fields qpos qvel S cbias Xe Xr xmat xpos xcom gxmat gxpos cvel), urAXISROT(R, axis, angle) a
  * rotation matrix about a unit axis (axis: urT[3], angle: urT), urKIN_ATTR (optional)
  * attributes of the entry points. Model constants are broadcast to urT before they meet the
  * data, so both instances evaluate the same operations. No include guard. */
@@ -163,6 +164,23 @@ void urFN(kinematics_bodies)(const urModel* m, urD* d) {
     urK(mulmat3vec)(c, xm, com);
     for (int k = 0; k < 3; k++) {
       d->xcom[3*i + k] = xp[k] + c[k];
+    }
+  }
+}
+
+// world poses of the ellipsoids (gxmat, gxpos) from those of their bodies
+urKIN_ATTR
+void urFN(kinematics_geoms)(const urModel* m, urD* d) {
+  for (int g = 0; g < m->ngeom; g++) {
+    const urGeom* ge = m->geom + g;
+    const urT* xm = d->xmat + 9*ge->body;
+    urT t[3], gm[9], gp[3];
+    urFN(bcast)(gm, ge->gmat, 9);
+    urFN(bcast)(gp, ge->pos, 3);
+    urK(mulmat3)(d->gxmat + 9*g, xm, gm);
+    urK(mulmat3vec)(t, xm, gp);
+    for (int k = 0; k < 3; k++) {
+      d->gxpos[3*g + k] = d->xpos[3*ge->body + k] + t[k];
     }
   }
 }

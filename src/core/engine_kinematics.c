@@ -36,20 +36,6 @@ void ur_kinematics(const urModel* m, urData* d) {
 }
 
 
-// world poses of the ellipsoids from those of their bodies
-void ur_kinematics_geoms(const urModel* m, urData* d) {
-  // ellipsoids
-  for (int g = 0; g < m->ngeom; g++) {
-    const urGeom* ge = m->geom + g;
-    const double* xm = d->xmat + 9*ge->body;
-    double t[3];
-    uru_mulmat3(d->gxmat + 9*g, xm, ge->gmat);
-    uru_mulmat3vec(t, xm, ge->pos);
-    for (int k = 0; k < 3; k++) {
-      d->gxpos[3*g + k] = d->xpos[3*ge->body + k] + t[k];
-    }
-  }
-}
 
 //---------------------------------- points --------------------------------------------------------
 

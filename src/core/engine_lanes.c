@@ -13,6 +13,8 @@
 
 // the vector helpers are static: the AVX calling convention (-Wpsabi) does not concern them
 #pragma GCC diagnostic ignored "-Wpsabi"
+// square roots without errno (the same values), so that lanes of them can be one instruction
+#pragma GCC optimize("no-math-errno")
 
 //---------------------------------- vector kernels ------------------------------------------------
 
@@ -167,13 +169,40 @@ void axisrot4(urV4 R[9], const urV4 a[3], urV4 ang) {
 #endif
 #include "engine_kin.h"
 
+// the broad phase of ur_contacts_broad over the vectors (the same expressions; square roots
+// lane by lane, which the compiler may vectorise: no errno is needed)
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void broad4(const urModel* m, urLanes* L) {
+  for (int i = 0; i < m->npair; i++) {
+    const urPair* pr = m->pair + i;
+    const urV4* ca = L->gxpos + 3*pr->geom1;
+    double ra = m->geom[pr->geom1].rbound;
+    urV4 gap;
+    if (pr->geom2 < 0) {
+      gap = ca[2] - bc4(ra);
+    } else {
+      const urV4* cb = L->gxpos + 3*pr->geom2;
+      urV4 dx0 = cb[0] - ca[0], dx1 = cb[1] - ca[1], dx2 = cb[2] - ca[2];
+      urV4 s = dx0*dx0 + dx1*dx1 + dx2*dx2, r = s;
+      for (int l = 0; l < urNLANE; l++) {
+        r[l] = __builtin_sqrt(s[l]);
+      }
+      gap = r - bc4(ra) - bc4(m->geom[pr->geom2].rbound);
+    }
+    L->gap[i] = gap;
+  }
+}
+
 //---------------------------------- lane data -----------------------------------------------------
 
 int ur_lanes_init(const urModel* m, urLanes* L) {
   memset(L, 0, sizeof(*L));
   size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
   size_t nq = (size_t)m->nq;
-  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3) + 2*nv + 1 + nq + nv;
+  size_t ng = (size_t)m->ngeom, np = (size_t)m->npair;
+  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3) + 2*nv + 1 + nq + nv + 12*ng + np;
   L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1)*sizeof(urV4));
   if (!L->mem) {
     return -1;
@@ -182,9 +211,10 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   urV4* p = L->mem;
   urV4** f[] = {&L->S, &L->IA, &L->U, &L->Dinv, &L->pA, &L->uu, &L->cbias, &L->cvel, &L->cacc,
                 &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy,
-                &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom};
+                &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom, &L->gxmat, &L->gxpos,
+                &L->gap};
   size_t len[] = {36*nb, 36*nb, 36*nb, 36*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 9*nb,
-                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb};
+                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb, 9*ng, 3*ng, np};
   for (size_t k = 0; k < sizeof(len)/sizeof(len[0]); k++) {
     *f[k] = p;
     p += len[k];
@@ -226,7 +256,7 @@ static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) 
 }
 
 
-// the poses and velocities back to each lane's data (with its ellipsoids)
+// the poses, velocities and broad phase back to each lane's data
 static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, int n) {
   size_t nb = (size_t)m->nbody;
   for (int l = 0; l < n; l++) {
@@ -237,7 +267,11 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
     SCATTER(Xe, 9*nb);
     SCATTER(Xr, 3*nb);
     SCATTER(cvel, 6*nb);
-    ur_kinematics_geoms(m, dl);
+    SCATTER(gxmat, 9*(size_t)m->ngeom);
+    SCATTER(gxpos, 3*(size_t)m->ngeom);
+    for (int i = 0; i < m->npair; i++) {
+      dl->pair[i].depth = -L->gap[i][l];
+    }
   }
 }
 
@@ -292,10 +326,12 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   // poses and velocities for all lanes at once, the applied forces lane by lane
   gather_state(m, L, run, k);
   urv_kinematics_bodies(m, L);
+  urv_kinematics_geoms(m, L);
   urv_velocities(m, L);
+  broad4(m, L);
   scatter_kin(m, L, run, k);
   for (int l = 0; l < k; l++) {
-    ur_forward_forces(m, run[l]);
+    ur_forward_forces(m, run[l], 0);
   }
 
   // accelerations for all lanes at once

@@ -47,12 +47,13 @@ const char* ur_status_str(int status) {
 void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics(m, d);
   ur_velocities(m, d);
-  ur_forward_forces(m, d);
+  ur_forward_forces(m, d, 1);
 }
 
 
-// the applied forces of the forward pipeline (needs the poses and velocities)
-void ur_forward_forces(const urModel* m, urData* d) {
+// the applied forces of the forward pipeline (needs the poses and velocities; broad: run the
+// contacts' broad phase, else the pair depths hold it already)
+void ur_forward_forces(const urModel* m, urData* d, int broad) {
   memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
   for (int i = 0; i < m->nbody; i++) {
@@ -66,7 +67,10 @@ void ur_forward_forces(const urModel* m, urData* d) {
     }
   }
   ur_restraints(m, d);
-  ur_contacts(m, d);
+  if (broad) {
+    ur_contacts_broad(m, d);
+  }
+  ur_contacts_narrow(m, d);
   ur_airbags(m, d);
 }
 
