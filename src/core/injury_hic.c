@@ -3,10 +3,11 @@
  * HIC(i, j) = (t_j - t_i) * (mean a over [t_i, t_j])^2.5 with the cumulative trapezoid integral.
  * Every start i is bounded from above by w_i * amax_i^2.5, where amax_i is the largest sample
  * in [t_i, t_i + window] and w_i the longest admissible window from i (a trapezoid mean never
- * exceeds the largest sample). Starts are scanned in decreasing bound and the scan stops when
- * the bound cannot beat the best pair found: the same maximum as the O(N W) scan of every
- * pair, usually after a few starts around the peak. Ties go to the smallest (i, j), as in
- * the plain scan. */
+ * exceeds the largest sample). Starts are taken in decreasing bound from a binary heap and the
+ * scan stops when the bound cannot beat the best pair found: the same maximum as the O(N W)
+ * scan of every pair, usually after a few starts around the peak. Ties go to the smallest
+ * (i, j), as in the plain scan; the order among starts of equal bound does not matter, since a
+ * start left unscanned has a bound, and so a HIC, strictly below the best. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -14,14 +15,30 @@
 
 typedef struct { double bound; int i; } hicStart;
 
-static int bydescbound(const void* pa, const void* pb)
+/* max-heap of starts by bound (ties: smaller i first) */
+static int above(const hicStart* a, const hicStart* b)
 {
-  const hicStart* a = pa;
-  const hicStart* b = pb;
-  if (a->bound != b->bound) {
-    return a->bound > b->bound ? -1 : 1;
+  return a->bound > b->bound || (a->bound == b->bound && a->i < b->i);
+}
+
+static void sift_down(hicStart* h, int n, int k)
+{
+  for (;;) {
+    int c = 2 * k + 1;
+    if (c >= n) {
+      return;
+    }
+    if (c + 1 < n && above(&h[c + 1], &h[c])) {
+      c++;
+    }
+    if (!above(&h[c], &h[k])) {
+      return;
+    }
+    hicStart t = h[k];
+    h[k] = h[c];
+    h[c] = t;
+    k = c;
   }
-  return a->i - b->i;
 }
 
 int ur_hic(const double* t, const double* a, int n, double window, double* work, urHic* out)
@@ -78,14 +95,19 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
       ns++;
     }
   }
-  qsort(st, (size_t)ns, sizeof *st, bydescbound);
+  for (int k = ns / 2 - 1; k >= 0; k--) {
+    sift_down(st, ns, k);
+  }
 
-  // exact scan of the starts whose bound can still beat the best pair; pairs are compared by
-  // HIC^2 = dv^5 / dt^3 (same order, no roots), the value is taken from the best pair
+  // exact scan of the starts whose bound can still beat the best pair, largest bound first;
+  // pairs are compared by HIC^2 = dv^5 / dt^3 (same order, no roots), the value is taken from
+  // the best pair
   double best2 = 0, best = 0;
   int b1 = 0, b2 = 0;
-  for (int s = 0; s < ns && st[s].bound >= best; s++) {
-    int i = st[s].i;
+  while (ns > 0 && st[0].bound >= best) {
+    int i = st[0].i;
+    st[0] = st[--ns];
+    sift_down(st, ns, 0);
     for (int k = i + 1; k < n && t[k] - t[i] <= wmax; k++) {
       double dv = v[k] - v[i];
       if (dv <= 0) {
