@@ -162,12 +162,7 @@ void ur_contacts_broad(const urModel* m, urData* d) {
 void ur_contacts_narrow(const urModel* m, urData* d) {
   static const double up[3] = {0, 0, 1};
   for (int i = 0; i < m->npair; i++) {
-    const urPair* pr = m->pair + i;
     urPairData* pd = d->pair + i;
-    int ba = m->geom[pr->geom1].body;
-    int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
-    urEllipsoid ea, eb;
-    urGeomContact gc;
     pd->active = 0;
     pd->fn = pd->ft = pd->rate = pd->area = 0;
 
@@ -175,6 +170,11 @@ void ur_contacts_narrow(const urModel* m, urData* d) {
     if (-pd->depth > 0) {
       continue;
     }
+    const urPair* pr = m->pair + i;
+    int ba = m->geom[pr->geom1].body;
+    int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
+    urEllipsoid ea, eb;
+    urGeomContact gc;
 
     // oriented bound: separated at the centre line or at the last normal
     if (pr->geom2 >= 0) {

@@ -229,28 +229,79 @@ void ur_lanes_free(urLanes* L) {
 }
 
 
-// a vector from one array of each lane's data
-#define GATHER(field, n)                                                          \
-  for (size_t k = 0; k < (size_t)(n); k++) {                                      \
-    L->field[k] = (urV4){d0->field[k], d1->field[k], d2->field[k], d3->field[k]}; \
-  }
+// 4 x 4 transposes: four consecutive values of each lane <-> four vectors of lanes
+#if defined(__clang__)
+#define SHUF(a, b, i, j, k, l) __builtin_shufflevector(a, b, i, j, k, l)
+#else
+#define SHUF(a, b, i, j, k, l) __builtin_shuffle(a, b, (urV4I){i, j, k, l})
+#endif
+static inline __attribute__((always_inline))
+void transpose4(urV4 r[4], urV4 a, urV4 b, urV4 c, urV4 e) {
+  urV4 t0 = SHUF(a, b, 0, 4, 2, 6), t1 = SHUF(a, b, 1, 5, 3, 7);
+  urV4 t2 = SHUF(c, e, 0, 4, 2, 6), t3 = SHUF(c, e, 1, 5, 3, 7);
+  r[0] = SHUF(t0, t2, 0, 1, 4, 5);
+  r[1] = SHUF(t1, t3, 0, 1, 4, 5);
+  r[2] = SHUF(t0, t2, 2, 3, 6, 7);
+  r[3] = SHUF(t1, t3, 2, 3, 6, 7);
+}
 
-// the lanes' data: lane l of d[l], lanes beyond n repeating lane 0
-#define LANES(n)                                  \
-  const urData* d0 = d[0];                        \
-  const urData* d1 = d[(n) > 1 ? 1 : 0];          \
-  const urData* d2 = d[(n) > 2 ? 2 : 0];          \
-  const urData* d3 = d[(n) > 3 ? 3 : 0]
+static inline urV4 load4(const double* p) {
+  urV4 v;
+  memcpy(&v, p, sizeof(v));
+  return v;
+}
 
-// one array of each lane's data back from the vectors
-#define SCATTER(field, len)                       \
-  for (size_t k = 0; k < (size_t)(len); k++) {    \
-    dl->field[k] = L->field[k][l];                \
+// x[0..n-1] of each lane (lanes beyond nl repeating lane 0) into the vectors v
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void gather(urV4* v, const double* const* x, size_t n) {
+  size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    transpose4(v + k, load4(x[0] + k), load4(x[1] + k), load4(x[2] + k), load4(x[3] + k));
   }
+  for (; k < n; k++) {
+    v[k] = (urV4){x[0][k], x[1][k], x[2][k], x[3][k]};
+  }
+}
+
+// the vectors v back into x[0..n-1] of lanes 0..nl-1
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void scatter(double* const* x, int nl, const urV4* v, size_t n) {
+  size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    urV4 r[4];
+    transpose4(r, v[k], v[k + 1], v[k + 2], v[k + 3]);
+    for (int l = 0; l < nl; l++) {
+      memcpy(x[l] + k, r + l, sizeof(r[l]));
+    }
+  }
+  for (; k < n; k++) {
+    for (int l = 0; l < nl; l++) {
+      x[l][k] = v[k][l];
+    }
+  }
+}
+
+// one array of the lanes' data to or from the vectors: lane l is d[l], lanes beyond n repeat
+// lane 0 when gathering
+#define GATHER(field, len)                                                         \
+  do {                                                                             \
+    const double* x_[urNLANE];                                                     \
+    for (int l_ = 0; l_ < urNLANE; l_++) x_[l_] = d[l_ < n ? l_ : 0]->field;       \
+    gather(L->field, x_, (size_t)(len));                                           \
+  } while (0)
+#define SCATTER(field, len)                                                        \
+  do {                                                                             \
+    double* x_[urNLANE];                                                           \
+    for (int l_ = 0; l_ < n; l_++) x_[l_] = d[l_]->field;                          \
+    scatter(x_, n, L->field, (size_t)(len));                                       \
+  } while (0)
 
 // the state, for the poses and velocities
 static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) {
-  LANES(n);
   GATHER(qpos, m->nq);
   GATHER(qvel, m->nv);
 }
@@ -258,19 +309,18 @@ static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) 
 
 // the poses, velocities and broad phase back to each lane's data
 static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, int n) {
-  size_t nb = (size_t)m->nbody;
+  size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom;
+  SCATTER(xmat, 9*nb);
+  SCATTER(xpos, 3*nb);
+  SCATTER(xcom, 3*nb);
+  SCATTER(Xe, 9*nb);
+  SCATTER(Xr, 3*nb);
+  SCATTER(cvel, 6*nb);
+  SCATTER(gxmat, 9*ng);
+  SCATTER(gxpos, 3*ng);
   for (int l = 0; l < n; l++) {
-    urData* dl = d[l];
-    SCATTER(xmat, 9*nb);
-    SCATTER(xpos, 3*nb);
-    SCATTER(xcom, 3*nb);
-    SCATTER(Xe, 9*nb);
-    SCATTER(Xr, 3*nb);
-    SCATTER(cvel, 6*nb);
-    SCATTER(gxmat, 9*(size_t)m->ngeom);
-    SCATTER(gxpos, 3*(size_t)m->ngeom);
     for (int i = 0; i < m->npair; i++) {
-      dl->pair[i].depth = -L->gap[i][l];
+      d[l]->pair[i].depth = -L->gap[i][l];
     }
   }
 }
@@ -278,7 +328,6 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
 
 // the applied forces, for the ABA
 static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n) {
-  LANES(n);
   GATHER(fext, 6*(size_t)m->nbody);
   GATHER(qfrc, m->nv);
   L->fail = 0;
@@ -288,14 +337,13 @@ static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n)
 // the outputs of the ABA back to each lane's data
 static void scatter_acc(const urModel* m, const urLanes* L, urData* const* d, int n) {
   size_t nb = (size_t)m->nbody;
+  SCATTER(qacc, m->nv);
+  SCATTER(cacc, 6*nb);
+  SCATTER(freact, 6*nb);
   for (int l = 0; l < n; l++) {
-    urData* dl = d[l];
-    SCATTER(qacc, m->nv);
-    SCATTER(cacc, 6*nb);
-    SCATTER(freact, 6*nb);
-    dl->energy = L->energy[0][l];
+    d[l]->energy = L->energy[0][l];
     if (L->fail & (1 << l)) {
-      ur_set_status(dl, urSTAT_NONFINITE, "singular joint-space inertia");
+      ur_set_status(d[l], urSTAT_NONFINITE, "singular joint-space inertia");
     }
   }
 }
