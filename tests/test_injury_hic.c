@@ -168,8 +168,8 @@ static void test_nonuniform(void** state)
 
 static void test_workspace_and_errors(void** state)
 {
-  static double t[NMAX], a[NMAX], work[4 * NMAX];
-  assert_true(ur_hic_work_size(NMAX) <= 4 * NMAX);
+  static double t[NMAX], a[NMAX], work[5 * NMAX];
+  assert_true(ur_hic_work_size(NMAX) <= 5 * NMAX);
   int n = rect(t, a, 80.0, 0.002, 0.004, 0.010);
   urHic h1, h2;
   assert_int_equal(ur_hic(t, a, n, 0.015, work, &h1), 0);

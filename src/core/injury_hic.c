@@ -1,9 +1,10 @@
 /* injury_hic.c: Head Injury Criterion, exact maximum over sample pairs.
  *
  * HIC(i, j) = (t_j - t_i) * (mean a over [t_i, t_j])^2.5 with the cumulative trapezoid integral.
- * Every start i is bounded from above by w_i * amax_i^2.5, where amax_i is the largest sample
- * in [t_i, t_i + window] and w_i the longest admissible window from i (a trapezoid mean never
- * exceeds the largest sample). Starts are taken in decreasing bound from a binary heap and the
+ * Every start i is bounded from above by V_i * amax_i^1.5 (and w_i * amax_i^2.5), where amax_i
+ * is the largest sample in [t_i, t_i + window], V_i the largest rise of the integral over that
+ * window and w_i the longest admissible window from i (a trapezoid mean never exceeds the
+ * largest sample). Starts are taken in decreasing bound from a binary heap and the
  * scan stops when the bound cannot beat the best pair found: the same maximum as the O(N W)
  * scan of every pair, usually after a few starts around the peak. Ties go to the smallest
  * (i, j), as in the plain scan; the order among starts of equal bound does not matter, since a
@@ -67,6 +68,7 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
   }
   hicStart* st = (hicStart*)(v + n);
   int* dq = (int*)(st + n);
+  int* qv = dq + n;
 
   // cumulative trapezoid integral of a, g s
   v[0] = 0;
@@ -74,23 +76,32 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
     v[k] = v[k - 1] + 0.5 * (a[k] + a[k - 1]) * (t[k] - t[k - 1]);
   }
 
-  // bound of every start from the sliding maximum of a over its window (monotone deque)
+  // bound of every start i from the sliding maxima over its window (monotone deques) of a and
+  // of v: with dv = v_j - v_i <= V_i = max v_j - v_i and dv/dt <= a_max, HIC = dv (dv/dt)^1.5
+  // <= V_i a_max^1.5 (<= w a_max^2.5); a relative margin covers the rounding of the bound
   double wmax = window * (1.0 + 1e-9);
-  int ns = 0, head = 0, tail = 0, j = 0;
+  int ns = 0, head = 0, tail = 0, vhead = 0, vtail = 0, j = 0;
   for (int i = 0; i < n - 1; i++) {
     while (j < n && t[j] - t[i] <= wmax) {
       while (tail > head && a[dq[tail - 1]] <= a[j]) {
         tail--;
       }
-      dq[tail++] = j++;
+      dq[tail++] = j;
+      while (vtail > vhead && v[qv[vtail - 1]] <= v[j]) {
+        vtail--;
+      }
+      qv[vtail++] = j++;
     }
     while (dq[head] < i) {
       head++;
     }
-    double am = a[dq[head]];
-    if (j - 1 > i && am > 0) {
+    while (qv[vhead] < i) {
+      vhead++;
+    }
+    double am = a[dq[head]], vm = v[qv[vhead]] - v[i];
+    if (j - 1 > i && am > 0 && vm > 0) {
       double w = t[j - 1] - t[i];
-      st[ns].bound = w * am * am * sqrt(am);
+      st[ns].bound = fmin(w * am * am * sqrt(am), vm * am * sqrt(am)) * (1 + 1e-9);
       st[ns].i = i;
       ns++;
     }
@@ -142,6 +153,6 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
 
 int ur_hic_work_size(int n)
 {
-  // n doubles, n {double, int} starts (2 doubles each), n ints (1 double each, rounded up)
-  return n > 0 ? 4 * n : 0;
+  // n doubles, n {double, int} starts (2 doubles each), 2 n ints (1 double each, rounded up)
+  return n > 0 ? 5 * n : 0;
 }
