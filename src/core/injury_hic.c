@@ -14,7 +14,7 @@
 
 #include "uasrisk/injury.h"
 
-typedef struct { double bound; int i; } hicStart;
+typedef struct { double bound, am, vm; int i; } hicStart;
 
 /* max-heap of starts by bound (ties: smaller i first) */
 static int above(const hicStart* a, const hicStart* b)
@@ -102,6 +102,8 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
     if (j - 1 > i && am > 0 && vm > 0) {
       double w = t[j - 1] - t[i];
       st[ns].bound = fmin(w * am * am * sqrt(am), vm * am * sqrt(am)) * (1 + 1e-9);
+      st[ns].am = am;
+      st[ns].vm = vm;
       st[ns].i = i;
       ns++;
     }
@@ -112,19 +114,30 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
 
   // exact scan of the starts whose bound can still beat the best pair, largest bound first;
   // pairs are compared by HIC^2 = dv^5 / dt^3 (same order, no roots), the value is taken from
-  // the best pair
+  // the best pair. Within a start, dv <= a_max dt and dv <= V_i give HIC^2 <= a_max^5 dt^2
+  // (too short a window cannot win) and <= V_i^5 / dt^3 (nor can any longer one once this is
+  // below the best); pairs are skipped only below the best, so ties are still all seen.
   double best2 = 0, best = 0;
   int b1 = 0, b2 = 0;
   while (ns > 0 && st[0].bound >= best) {
     int i = st[0].i;
+    double am = st[0].am, vm = st[0].vm;
+    double am5 = am * am * am * am * am * (1 + 1e-9), vm5 = vm * vm * vm * vm * vm * (1 + 1e-9);
     st[0] = st[--ns];
     sift_down(st, ns, 0);
     for (int k = i + 1; k < n && t[k] - t[i] <= wmax; k++) {
+      double dt = t[k] - t[i];
+      if (vm5 < best2 * dt * dt * dt) {
+        break;
+      }
+      if (am5 * dt * dt < best2) {
+        continue;
+      }
       double dv = v[k] - v[i];
       if (dv <= 0) {
         continue;
       }
-      double dt = t[k] - t[i], dv2 = dv * dv;
+      double dv2 = dv * dv;
       double h2 = dv2 * dv2 * dv / (dt * dt * dt);
       if (h2 > best2 || (h2 == best2 && h2 > 0 && (i < b1 || (i == b1 && k < b2)))) {
         best2 = h2;
@@ -153,6 +166,6 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
 
 int ur_hic_work_size(int n)
 {
-  // n doubles, n {double, int} starts (2 doubles each), 2 n ints (1 double each, rounded up)
-  return n > 0 ? 5 * n : 0;
+  // n doubles, n starts {3 doubles, int} (4 doubles each), 2 n ints (1 double each, rounded up)
+  return n > 0 ? 6 * n : 0;
 }
