@@ -13,8 +13,6 @@
 
 // the vector helpers are static: the AVX calling convention (-Wpsabi) does not concern them
 #pragma GCC diagnostic ignored "-Wpsabi"
-// square roots without errno (the same values), so that lanes of them can be one instruction
-#pragma GCC optimize("no-math-errno")
 
 //---------------------------------- vector kernels ------------------------------------------------
 
@@ -169,12 +167,10 @@ void axisrot4(urV4 R[9], const urV4 a[3], urV4 ang) {
 #endif
 #include "engine_kin.h"
 
-// the broad phase of ur_contacts_broad over the vectors (the same expressions; square roots
-// lane by lane, which the compiler may vectorise: no errno is needed)
-#if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-static void broad4(const urModel* m, urLanes* L) {
+// the broad phase of ur_contacts_broad over the vectors (the same expressions; IEEE square
+// roots are exact, so one instruction for four lanes gives each lane's bits)
+static inline __attribute__((always_inline))
+void broad4_body(const urModel* m, urLanes* L, urV4 (*sqrt4)(urV4)) {
   for (int i = 0; i < m->npair; i++) {
     const urPair* pr = m->pair + i;
     const urV4* ca = L->gxpos + 3*pr->geom1;
@@ -185,14 +181,42 @@ static void broad4(const urModel* m, urLanes* L) {
     } else {
       const urV4* cb = L->gxpos + 3*pr->geom2;
       urV4 dx0 = cb[0] - ca[0], dx1 = cb[1] - ca[1], dx2 = cb[2] - ca[2];
-      urV4 s = dx0*dx0 + dx1*dx1 + dx2*dx2, r = s;
-      for (int l = 0; l < urNLANE; l++) {
-        r[l] = __builtin_sqrt(s[l]);
-      }
-      gap = r - bc4(ra) - bc4(m->geom[pr->geom2].rbound);
+      gap = sqrt4(dx0*dx0 + dx1*dx1 + dx2*dx2) - bc4(ra) - bc4(m->geom[pr->geom2].rbound);
     }
     L->gap[i] = gap;
   }
+}
+
+static inline __attribute__((always_inline)) urV4 sqrt4_lanes(urV4 s) {
+  for (int l = 0; l < urNLANE; l++) {
+    s[l] = sqrt(s[l]);
+  }
+  return s;
+}
+
+static void broad4_default(const urModel* m, urLanes* L) {
+  broad4_body(m, L, sqrt4_lanes);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+__attribute__((target("avx2"))) static inline urV4 sqrt4_avx(urV4 s) {
+  return (urV4)_mm256_sqrt_pd((__m256d)s);
+}
+
+__attribute__((target("avx2"))) static void broad4_avx2(const urModel* m, urLanes* L) {
+  broad4_body(m, L, sqrt4_avx);
+}
+#endif
+
+static void broad4(const urModel* m, urLanes* L) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (__builtin_cpu_supports("avx2")) {
+    broad4_avx2(m, L);
+    return;
+  }
+#endif
+  broad4_default(m, L);
 }
 
 //---------------------------------- lane data -----------------------------------------------------
