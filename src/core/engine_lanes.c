@@ -16,9 +16,37 @@
 
 //---------------------------------- vector kernels ------------------------------------------------
 
-static inline urV4 bc4(double x) {
+// sanitizer builds of the unrolled vector kernels take minutes (GCC, make check-san) or over ten
+// minutes (clang, make fuzz); there they are built without the unrolling (same operations)
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define urNO_UNROLL 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(urNO_UNROLL)
+#undef urUNROLL
+#define urUNROLL
+#endif
+
+// the hot vector functions also compiled for AVX2, the clone picked at load time (GCC on x86-64;
+// clang builds only the fuzzers and takes the default)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define urCLONES __attribute__((target_clones("avx2", "default")))
+#define urAVX2 1
+#else
+#define urCLONES
+#define urAVX2 0
+#endif
+
+// a double broadcast to every lane (for clang a macro: it refuses to return 256-bit vectors by
+// value where AVX is not enabled, even from functions it inlines)
+#if defined(__clang__)
+#define bc4(x) ((urV4){(x), (x), (x), (x)})
+#else
+static inline __attribute__((always_inline)) urV4 bc4(double x) {
   return (urV4){x, x, x, x};
 }
+#endif
 
 #define urT urV4
 #define urK(name) urv_##name
@@ -141,9 +169,7 @@ void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
 #define urD urLanes
 #define urSETENERGY(d, ke) ((d)->energy[0] = (ke))
 #define urINVSYM(d, Dinv, D, nv) invsym4(d, Dinv, D, nv)
-#if defined(__x86_64__) && defined(__GNUC__)
-#define urABA_ATTR __attribute__((target_clones("avx2", "default")))
-#endif
+#define urABA_ATTR urCLONES
 #include "engine_aba.h"
 
 // rotation about a unit axis per lane: the scalar axisrot's quaternion (uru_axisangle2quat, one
@@ -162,61 +188,66 @@ void axisrot4(urV4 R[9], const urV4 a[3], urV4 ang) {
 }
 
 #define urAXISROT(R, axis, angle) axisrot4(R, axis, angle)
-#if defined(__x86_64__) && defined(__GNUC__)
-#define urKIN_ATTR __attribute__((target_clones("avx2", "default")))
-#endif
+#define urKIN_ATTR urCLONES
 #include "engine_kin.h"
 
-// the broad phase of ur_contacts_broad over the vectors (the same expressions; IEEE square
+// square roots in place of the pairs' entries of L->gap (the pairs between two ellipsoids)
+static void sqrt_pairs_default(const urModel* m, urLanes* L) {
+  for (int i = 0; i < m->npair; i++) {
+    if (m->pair[i].geom2 >= 0) {
+      for (int l = 0; l < urNLANE; l++) {
+        L->gap[i][l] = sqrt(L->gap[i][l]);
+      }
+    }
+  }
+}
+
+#if urAVX2
+#include <immintrin.h>
+__attribute__((target("avx2"))) static void sqrt_pairs_avx2(const urModel* m, urLanes* L) {
+  for (int i = 0; i < m->npair; i++) {
+    if (m->pair[i].geom2 >= 0) {
+      double* g = (double*)(L->gap + i);
+      _mm256_store_pd(g, _mm256_sqrt_pd(_mm256_load_pd(g)));
+    }
+  }
+}
+#endif
+
+// the broad phase of ur_contacts_broad over the vectors: the same expressions (IEEE square
 // roots are exact, so one instruction for four lanes gives each lane's bits)
-static inline __attribute__((always_inline))
-void broad4_body(const urModel* m, urLanes* L, urV4 (*sqrt4)(urV4)) {
+static void broad4(const urModel* m, urLanes* L) {
+  // squared centre distances; ground pairs: the gap
   for (int i = 0; i < m->npair; i++) {
     const urPair* pr = m->pair + i;
     const urV4* ca = L->gxpos + 3*pr->geom1;
-    double ra = m->geom[pr->geom1].rbound;
-    urV4 gap;
     if (pr->geom2 < 0) {
-      gap = ca[2] - bc4(ra);
+      L->gap[i] = ca[2] - bc4(m->geom[pr->geom1].rbound);
     } else {
       const urV4* cb = L->gxpos + 3*pr->geom2;
       urV4 dx0 = cb[0] - ca[0], dx1 = cb[1] - ca[1], dx2 = cb[2] - ca[2];
-      gap = sqrt4(dx0*dx0 + dx1*dx1 + dx2*dx2) - bc4(ra) - bc4(m->geom[pr->geom2].rbound);
+      L->gap[i] = dx0*dx0 + dx1*dx1 + dx2*dx2;
     }
-    L->gap[i] = gap;
   }
-}
 
-static inline __attribute__((always_inline)) urV4 sqrt4_lanes(urV4 s) {
-  for (int l = 0; l < urNLANE; l++) {
-    s[l] = sqrt(s[l]);
-  }
-  return s;
-}
-
-static void broad4_default(const urModel* m, urLanes* L) {
-  broad4_body(m, L, sqrt4_lanes);
-}
-
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-__attribute__((target("avx2"))) static inline urV4 sqrt4_avx(urV4 s) {
-  return (urV4)_mm256_sqrt_pd((__m256d)s);
-}
-
-__attribute__((target("avx2"))) static void broad4_avx2(const urModel* m, urLanes* L) {
-  broad4_body(m, L, sqrt4_avx);
-}
-#endif
-
-static void broad4(const urModel* m, urLanes* L) {
-#if defined(__x86_64__) && defined(__GNUC__)
+  // distances
+#if urAVX2
   if (__builtin_cpu_supports("avx2")) {
-    broad4_avx2(m, L);
-    return;
+    sqrt_pairs_avx2(m, L);
+  } else {
+    sqrt_pairs_default(m, L);
   }
+#else
+  sqrt_pairs_default(m, L);
 #endif
-  broad4_default(m, L);
+
+  // minus the radii
+  for (int i = 0; i < m->npair; i++) {
+    const urPair* pr = m->pair + i;
+    if (pr->geom2 >= 0) {
+      L->gap[i] = L->gap[i] - bc4(m->geom[pr->geom1].rbound) - bc4(m->geom[pr->geom2].rbound);
+    }
+  }
 }
 
 //---------------------------------- lane data -----------------------------------------------------
@@ -259,26 +290,20 @@ void ur_lanes_free(urLanes* L) {
 #else
 #define SHUF(a, b, i, j, k, l) __builtin_shuffle(a, b, (urV4I){i, j, k, l})
 #endif
-static inline __attribute__((always_inline))
-void transpose4(urV4 r[4], urV4 a, urV4 b, urV4 c, urV4 e) {
-  urV4 t0 = SHUF(a, b, 0, 4, 2, 6), t1 = SHUF(a, b, 1, 5, 3, 7);
-  urV4 t2 = SHUF(c, e, 0, 4, 2, 6), t3 = SHUF(c, e, 1, 5, 3, 7);
-  r[0] = SHUF(t0, t2, 0, 1, 4, 5);
-  r[1] = SHUF(t1, t3, 0, 1, 4, 5);
-  r[2] = SHUF(t0, t2, 2, 3, 6, 7);
-  r[3] = SHUF(t1, t3, 2, 3, 6, 7);
-}
-
-static inline urV4 load4(const double* p) {
-  urV4 v;
-  memcpy(&v, p, sizeof(v));
-  return v;
-}
+#define transpose4(r, a_, b_, c_, e_)                                             \
+  do {                                                                             \
+    urV4 a = (a_), b = (b_), c = (c_), e = (e_);                                   \
+    urV4 t0 = SHUF(a, b, 0, 4, 2, 6), t1 = SHUF(a, b, 1, 5, 3, 7);               \
+    urV4 t2 = SHUF(c, e, 0, 4, 2, 6), t3 = SHUF(c, e, 1, 5, 3, 7);               \
+    (r)[0] = SHUF(t0, t2, 0, 1, 4, 5);                                             \
+    (r)[1] = SHUF(t1, t3, 0, 1, 4, 5);                                             \
+    (r)[2] = SHUF(t0, t2, 2, 3, 6, 7);                                             \
+    (r)[3] = SHUF(t1, t3, 2, 3, 6, 7);                                             \
+  } while (0)
+#define load4(p) ({ urV4 v_; memcpy(&v_, (p), sizeof(v_)); v_; })
 
 // x[0..n-1] of each lane (lanes beyond nl repeating lane 0) into the vectors v
-#if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+urCLONES
 static void gather(urV4* v, const double* const* x, size_t n) {
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {
@@ -290,9 +315,7 @@ static void gather(urV4* v, const double* const* x, size_t n) {
 }
 
 // the vectors v back into x[0..n-1] of lanes 0..nl-1
-#if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+urCLONES
 static void scatter(double* const* x, int nl, const urV4* v, size_t n) {
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {

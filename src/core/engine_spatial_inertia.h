@@ -4,10 +4,9 @@
  * engine_lanes.c). No include guard. */
 
 // component k of a x b (k constant in unrolled loops)
-static inline urT urK(crossk)(const urT a[3], const urT b[3], int k) {
-  int k1 = (k + 1)%3, k2 = (k + 2)%3;
-  return a[k1]*b[k2] - a[k2]*b[k1];
-}
+#ifndef urCROSSK
+#define urCROSSK(a, b, k) ((a)[((k) + 1)%3]*(b)[((k) + 2)%3] - (a)[((k) + 2)%3]*(b)[((k) + 1)%3])
+#endif
 
 
 urSTORAGE void urK(xinertia_t_add)(urT r[36], const urT E[9], const urT p[3], const urT I[36]) {
@@ -64,7 +63,7 @@ urSTORAGE void urK(xinertia_t_add)(urT r[36], const urT E[9], const urT p[3], co
     for (int j = i; j < 3; j++) {
       const urT* bj = B + 3*j;
       const urT* ji = J + 3*i;
-      urT pb = urK(crossk)(p, bj, i), jp = urK(crossk)(ji, p, j);
+      urT pb = urCROSSK(p, bj, i), jp = urCROSSK(ji, p, j);
       urT v = A[3*i+j] + pb - jp;
       r[6*i+j] += v;
       if (j != i) {
