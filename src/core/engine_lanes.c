@@ -29,8 +29,9 @@
 #endif
 
 // the hot vector functions also compiled for AVX2, the clone picked at load time (GCC on x86-64;
-// clang builds only the fuzzers and takes the default)
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// clang builds only the fuzzers and takes the default; urNO_CLONES: the default only, as make
+// check-san builds it to test that path)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(urNO_CLONES)
 #define urCLONES __attribute__((target_clones("avx2", "default")))
 #define urAVX2 1
 #else
@@ -175,11 +176,11 @@ void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
 // rotation about a unit axis per lane: the scalar axisrot's quaternion (uru_axisangle2quat, one
 // sincos per lane), then its matrix over the vectors
 static inline __attribute__((always_inline))
-void axisrot4(urV4 R[9], const urV4 a[3], urV4 ang) {
+void axisrot4(urV4 R[9], const urV4 a[3], const urV4* ang) {
   urV4 q[4];
   for (int l = 0; l < urNLANE; l++) {
     double ax[3] = {a[0][l], a[1][l], a[2][l]}, ql[4];
-    uru_axisangle2quat(ql, ax, ang[l]);
+    uru_axisangle2quat(ql, ax, (*ang)[l]);
     for (int k = 0; k < 4; k++) {
       q[k][l] = ql[k];
     }
@@ -187,7 +188,7 @@ void axisrot4(urV4 R[9], const urV4 a[3], urV4 ang) {
   urv_quat2mat(R, q);
 }
 
-#define urAXISROT(R, axis, angle) axisrot4(R, axis, angle)
+#define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
 #define urKIN_ATTR urCLONES
 #include "engine_kin.h"
 
