@@ -99,8 +99,12 @@ bench: all $(BENCH_BIN)
 reproduce: all
 	@sh scripts/reproduce.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/reproduce-step$(STEP))
 
-# the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run)
-SAN_OPT = -O2 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+# the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run);
+# its lanes are the portable vector code without the AVX2 clones (urNO_CLONES), so that the
+# lanes-equal-alone tests cover both code paths (make check runs the AVX2 clone where the
+# processor has AVX2)
+SAN_OPT = -O2 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
+  -DurNO_CLONES
 check-san:
 	@sh scripts/setup.sh san
 	@$(MAKE) --no-print-directory BUILD=build-san BIN=build-san/uasrisk OPT='$(SAN_OPT)' \

@@ -1,6 +1,8 @@
 /* bench_impact.c: CPU time of one RA3-on-human impact with the built-in models, per case, over
- * the cells of a zero-wind grid (steps per impact, time per step, time per impact); the
- * one-time model set-up (compile, balance, settle) is timed separately.
+ * the cells of a zero-wind grid (steps per impact, time per step, time per impact): each impact
+ * alone (ur_impact_run, as the impact command runs it), and the same impacts four at a time in
+ * lock-step lanes (ur_impact_run_many, as grids run them); the one-time model set-up (compile,
+ * balance, settle) is timed separately.
  *   bench_impact [-s SETTINGS] [CASE...]   (default A B C; SETTINGS: commands run after 'case',
  *                                            e.g. -s 'set wind 10; set t_clear 0.01') */
 #include <stdio.h>
@@ -17,6 +19,44 @@ static double cpu(void) {
 }
 
 static const char* settings = "";
+
+/* the offsets of the quadrant for ur_impact_run_many: those where contact is possible */
+typedef struct {
+  double dp, dq;
+  int ndone, failed;
+  long steps;
+  const urImpactSetup* s;
+  const urImpactCond* cond;
+} lanesFeed;
+
+static int lanes_next(void* ctx, double* dpar, double* dperp, void** tag) {
+  lanesFeed* f = ctx;
+  (void)tag;
+  for (;;) {
+    if (f->dq > 0.6 + 1e-9) {
+      f->dq = 0;
+      f->dp += 0.1;
+    }
+    if (f->dp > 0.6 + 1e-9) return 0;
+    double a = f->dp, b = f->dq;
+    f->dq += 0.1;
+    if (ur_impact_may_contact(f->s, f->cond, a, b)) {
+      *dpar = a;
+      *dperp = b;
+      return 1;
+    }
+  }
+}
+
+static void lanes_done(void* ctx, void* tag, int rc, const urImpactResult* r,
+                       const urImpactWork* w) {
+  lanesFeed* f = ctx;
+  (void)tag;
+  (void)r;
+  f->ndone++;
+  f->failed += rc != 0;
+  f->steps += w->d->nstep;
+}
 
 static int bench(const char* cs) {
   static uraCtx c;
@@ -58,10 +98,26 @@ static int bench(const char* cs) {
       runs++;
     }
   }
-  printf("  case %-2s set-up %6.0f ms; %3d impacts: mean %5.2f ms CPU (worst %5.2f), "
+  printf("  case %-2s set-up %6.0f ms; %3d impacts alone: mean %5.2f ms CPU (worst %5.2f), "
          "%4.0f steps of %5.2f us (dt %.0e s)\n", cs, 1e3 * tsetup, runs, 1e3 * tot / runs,
          1e3 * worst, (double)steps / runs, 1e6 * tot / steps, s->m->opt.dt);
   ur_impact_work_free(&w);
+
+  /* the same offsets in lanes */
+  urImpactLanes* L = ur_impact_lanes_new(s);
+  if (!L) return 1;
+  lanesFeed f = {-0.6, 0, 0, 0, 0, s, &cond};
+  t0 = cpu();
+  ur_impact_run_many(s, L, &cond, &c.st.injury, lanes_next, lanes_done, &f);
+  double tl = cpu() - t0;
+  ur_impact_lanes_free(L);
+  if (f.failed || f.ndone != runs || f.steps != steps) {
+    fprintf(stderr, "bench_impact: case %s: the lanes ran %d impacts (%d failed), %ld steps; "
+            "alone %d, %ld\n", cs, f.ndone, f.failed, f.steps, runs, steps);
+    return 1;
+  }
+  printf("  case %-2s %22s%3d impacts in lanes: mean %5.2f ms CPU per impact, %5.2f us per step "
+         "(x%.2f)\n", cs, "", runs, 1e3 * tl / runs, 1e6 * tl / steps, tot / tl);
   return 0;
 }
 

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <cmocka.h>
 #include "uasrisk/engine.h"
+#include "test_engine_scene.h"
 
 //---------------------------------- helpers -------------------------------------------------------
 
@@ -193,34 +194,10 @@ static void test_universal_frequency(void** state) {
 }
 
 
-// a chain with every joint type under gravity
+// a chain with every joint type under gravity (test_engine_scene.h)
 static urModel* chain(urIntegrator integ, double dt, double g) {
-  urModel* m = ur_model_new();
-  double I[6] = {0.02, 0.03, 0.015, 0.001, 0, -0.002};
-  double c[3] = {0.05, 0.01, -0.08};
-  int b0 = ur_model_add_body(m, "root", -1, urJNT_FREE, (double[3]){0, 0, 1}, NULL);
-  ur_model_set_inertia(m, b0, 3.0, c, I);
-  int b1 = ur_model_add_body(m, "rev", b0, urJNT_REVOLUTE, (double[3]){0.1, 0, -0.1},
-                             (double[4]){0.9, 0.1, 0.3, 0});
-  ur_model_set_inertia(m, b1, 1.0, c, I);
-  ur_model_set_joint(m, b1, NULL, (double[3]){0, 1, 1}, NULL);
-  int b2 = ur_model_add_body(m, "uni", b1, urJNT_UNIVERSAL, (double[3]){0, 0.1, -0.2}, NULL);
-  ur_model_set_inertia(m, b2, 0.7, c, I);
-  ur_model_set_joint(m, b2, NULL, (double[3]){1, 0, 0}, (double[3]){0, 0, 1});
-  int b3 = ur_model_add_body(m, "sph", b2, urJNT_SPHERICAL, (double[3]){0.1, 0, -0.1}, NULL);
-  ur_model_set_inertia(m, b3, 0.5, c, I);
-  int b4 = ur_model_add_body(m, "pri", b3, urJNT_PRISMATIC, (double[3]){0, 0, -0.1}, NULL);
-  ur_model_set_inertia(m, b4, 0.4, c, I);
-  ur_model_set_joint(m, b4, NULL, (double[3]){1, 0, 1}, NULL);
-  urRestraint r = {0};
-  r.k = 300;
-  ur_model_set_restraint(m, b4, 0, &r);
-  int b5 = ur_model_add_body(m, "fix", b4, urJNT_FIXED, (double[3]){0.05, 0, 0}, NULL);
-  ur_model_set_inertia(m, b5, 0.3, c, I);
-  m->opt.gravity[2] = g;
-  m->opt.integrator = integ;
-  m->opt.dt = dt;
-  assert_int_equal(ur_model_compile(m), 0);
+  urModel* m = scene_chain(integ, dt, g);
+  assert_non_null(m);
   return m;
 }
 

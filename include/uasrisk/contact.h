@@ -91,10 +91,10 @@ typedef struct {
 
 /* per-run, per-pair history (lives in the run data, never in the model) */
 typedef struct {
+  int touching;                    /* the law gave an elastic force at the last commit */
   double dmax;                     /* largest depth reached */
   double fmax;                     /* elastic (rate-free) force at dmax */
   double dres;                     /* residual depth after unloading (permanent set) */
-  int touching;
 } urLawState;
 
 /* fill a Hertz law from the two materials (R2 = 0 means a flat) */

@@ -219,17 +219,18 @@ typedef struct {
 
 //---------------------------------- data ----------------------------------------------------------
 
-typedef struct {
-  urLawState ls;                   /* law history (committed on accepted steps) */
-  double u[3];                     /* warm-start direction */
+/* what every step reads or writes for every pair (depth to ls.dmax) shares one cache line */
+typedef struct __attribute__((aligned(64))) {
   double depth;                    /* penetration, m (< 0 separated; -inf if culled) */
   double rate;                     /* penetration rate, m/s */
   double fn;                       /* normal force, N */
   double ft;                       /* friction force magnitude, N */
   double area;                     /* section area used (foam), m^2 */
+  int active;                      /* 1 if a force acts */
+  urLawState ls;                   /* law history (committed on accepted steps) */
+  double u[3];                     /* warm-start direction */
   double n[3];                     /* normal A -> B, world */
   double p[3];                     /* contact point, world, m */
-  int active;                      /* 1 if a force acts */
 } urPairData;
 
 typedef struct {
@@ -298,7 +299,7 @@ typedef struct {
   // integrator scratch
   double* scratch;                 /* 2 nq + 8 nv */
   // memory
-  void* buffer;                    /* one allocation holding the arrays above */
+  void* buffer;                    /* one allocation holding the arrays above (64-byte aligned) */
 } urData;
 
 //---------------------------------- model builder -------------------------------------------------

@@ -55,6 +55,13 @@ typedef struct {
 typedef int (*urMayContactFn)(void* ctx, double dpar, double dperp);
 /* simulate a cell: fill the result fields of c (dpar, dperp are set); 0 ok, -1 failed */
 typedef int (*urImpactFn)(void* ctx, int worker, urCell* c);
+/* the cells of one worker as a stream, for a callback that simulates several at once: take gives
+   the next cell to simulate (dpar, dperp set) or NULL when none is left or a stop was asked;
+   put records a finished cell (rc 0 ok, -1 failed with c->reason) */
+typedef urCell* (*urCellTakeFn)(void* feed);
+typedef void (*urCellPutFn)(void* feed, urCell* c, int rc);
+typedef void (*urImpactStreamFn)(void* ctx, int worker, urCellTakeFn take, urCellPutFn put,
+                                 void* feed);
 /* progress: cells finished so far out of the total to simulate */
 typedef void (*urProgressFn)(void* ctx, int done, int total);
 
@@ -69,6 +76,8 @@ typedef struct {
   urProgressFn progress;           /* optional; called from worker threads, serialised */
   void* ctx;
   volatile int* stop;              /* optional; workers stop starting cells when *stop != 0 */
+  urImpactStreamFn impact_stream;  /* optional; when set, each worker hands it its cells instead
+                                      of calling impact per cell */
 } urGridSpec;
 
 /* allocate the lattice of a spec (cells pending); NULL on bad extents or no memory */

@@ -122,6 +122,24 @@ int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double 
 int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
                   const urInjuryParams* ip, double dpar, double dperp, urImpactResult* r);
 
+/* many impacts on one thread, urIMPACT_LANES at a time stepped in lock-step (the engine computes
+   their accelerations together over vectors of lanes): offsets come from next (return 0 when
+   none is left; tag is handed back to done), results go to done as runs finish (rc as
+   ur_impact_run's; w: the lane's work space, the run's histories included, valid during the
+   call), each result and history bitwise what ur_impact_run gives for that offset (in w->d,
+   the motion subspaces, bias accelerations and articulated-body scratch are not kept). The
+   lanes belong to one thread at a time. */
+#define urIMPACT_LANES 4
+typedef struct urImpactLanes urImpactLanes;
+typedef int (*urImpactNextFn)(void* ctx, double* dpar, double* dperp, void** tag);
+typedef void (*urImpactDoneFn)(void* ctx, void* tag, int rc, const urImpactResult* r,
+                               const urImpactWork* w);
+urImpactLanes* ur_impact_lanes_new(const urImpactSetup* s);   /* NULL: no memory */
+void ur_impact_lanes_free(urImpactLanes* L);
+void ur_impact_run_many(const urImpactSetup* s, urImpactLanes* L, const urImpactCond* c,
+                        const urInjuryParams* ip, urImpactNextFn next, urImpactDoneFn done,
+                        void* ctx);
+
 /* a channel of the last run of w: sensor id, component; n rows into out (caller: w->rows) */
 int ur_impact_channel(const urImpactSetup* s, const urImpactWork* w, int sensor, int comp,
                       double* out);

@@ -18,7 +18,7 @@ typedef struct {
   const urImpactSetup* s;
   urImpactCond cond;
   const urInjuryParams* ip;
-  urImpactWork* w;
+  urImpactLanes** lanes;           /* per worker */
   int tty;
 } gridRun;
 
@@ -27,27 +27,57 @@ static int cb_may(void* ctx, double dpar, double dperp) {
   return ur_impact_may_contact(g->s, &g->cond, dpar, dperp);
 }
 
-static int cb_impact(void* ctx, int worker, urCell* cell) {
-  gridRun* g = ctx;
-  urImpactResult r;
-  if (ur_impact_run(g->s, &g->w[worker], &g->cond, g->ip, cell->dpar, cell->dperp, &r)) {
+/* a cell from its impact result */
+static int cell_result(urCell* cell, int rc, const urImpactResult* r) {
+  if (rc) {
     snprintf(cell->reason, sizeof cell->reason, "%.63s",
-             r.status == urSTAT_STOPPED ? STOPPED : r.reason);
+             r->status == urSTAT_STOPPED ? STOPPED : r->reason);
     return -1;
   }
-  cell->contact = r.contact;
-  cell->hic15 = r.inj.hic15.hic;
-  cell->hic_t1 = r.inj.hic15.t1;
-  cell->hic_t2 = r.inj.hic15.t2;
-  cell->nij = r.inj.nij.nij;
-  cell->nij_mode = r.inj.nij.which;
-  cell->vc_thorax = r.inj.vc_thorax.vc;
-  cell->vc_abdomen = r.inj.vc_abdomen.vc;
-  cell->p_hic = r.inj.p_hic;
-  cell->p_nij = r.inj.p_nij;
-  cell->p_vc = r.inj.p_vc;
-  cell->p = r.contact ? r.p : 0.0;
+  cell->contact = r->contact;
+  cell->hic15 = r->inj.hic15.hic;
+  cell->hic_t1 = r->inj.hic15.t1;
+  cell->hic_t2 = r->inj.hic15.t2;
+  cell->nij = r->inj.nij.nij;
+  cell->nij_mode = r->inj.nij.which;
+  cell->vc_thorax = r->inj.vc_thorax.vc;
+  cell->vc_abdomen = r->inj.vc_abdomen.vc;
+  cell->p_hic = r->inj.p_hic;
+  cell->p_nij = r->inj.p_nij;
+  cell->p_vc = r->inj.p_vc;
+  cell->p = r->contact ? r->p : 0.0;
   return 0;
+}
+
+/* a worker's cells through the lanes of ur_impact_run_many */
+typedef struct {
+  urCellTakeFn take;
+  urCellPutFn put;
+  void* feed;
+} cellFeed;
+
+static int feed_next(void* ctx, double* dpar, double* dperp, void** tag) {
+  cellFeed* f = ctx;
+  urCell* cell = f->take(f->feed);
+  if (!cell) return 0;
+  *dpar = cell->dpar;
+  *dperp = cell->dperp;
+  *tag = cell;
+  return 1;
+}
+
+static void feed_done(void* ctx, void* tag, int rc, const urImpactResult* r,
+                      const urImpactWork* w) {
+  (void)w;
+  cellFeed* f = ctx;
+  urCell* cell = tag;
+  f->put(f->feed, cell, cell_result(cell, rc, r));
+}
+
+static void cb_stream(void* ctx, int worker, urCellTakeFn take, urCellPutFn put, void* feed) {
+  gridRun* g = ctx;
+  cellFeed f = {take, put, feed};
+  ur_impact_run_many(g->s, g->lanes[worker], &g->cond, g->ip, feed_next, feed_done, &f);
 }
 
 static void cb_progress(void* ctx, int done, int total) {
@@ -177,7 +207,7 @@ int ura_grid_run(uraCtx* c, int quiet) {
   if (!s) return -1;
 
   /* extents, lattice, refusing what memory cannot hold */
-  urGridSpec spec = {c->st.step, 0, 0, 0, mirrored(c), (int)c->st.threads, cb_may, cb_impact,
+  urGridSpec spec = {c->st.step, 0, 0, 0, mirrored(c), (int)c->st.threads, cb_may, NULL,
                      cb_progress, NULL, ura_interrupt_flag()};
   long ncell;
   double mb = 0, avail = 0;
@@ -200,26 +230,28 @@ int ura_grid_run(uraCtx* c, int quiet) {
   }
   urGrid* g = ur_grid_new(&spec);
   int nw = spec.threads;
-  urImpactWork* w = calloc(nw, sizeof(urImpactWork));
+  urImpactLanes** w = calloc(nw, sizeof *w);
   if (!g || !w) {
     ur_grid_free(g);
     free(w);
     return ura_fail(c, "grid: out of memory for %ld cells", ncell);
   }
   for (int i = 0; i < nw; i++) {
-    if (ur_impact_work_init(s, &w[i])) {
-      for (int k = 0; k <= i; k++) ur_impact_work_free(&w[k]);
+    if (!(w[i] = ur_impact_lanes_new(s))) {
+      for (int k = 0; k < i; k++) ur_impact_lanes_free(w[k]);
       free(w);
       ur_grid_free(g);
       return ura_fail(c, "grid: out of memory for the work spaces");
     }
   }
 
-  /* run; Ctrl-C (interrupt.c) stops the workers and the impacts they are running */
+  /* run, each worker's cells in lock-step lanes; Ctrl-C (interrupt.c) stops the workers and the
+     impacts they are running */
   gridRun run = {s, cond, &c->st.injury, w, !quiet && isatty(STDERR_FILENO)};
   spec.ctx = &run;
+  spec.impact_stream = cb_stream;
   int rc = ur_grid_run(g, &spec);
-  for (int i = 0; i < nw; i++) ur_impact_work_free(&w[i]);
+  for (int i = 0; i < nw; i++) ur_impact_lanes_free(w[i]);
   free(w);
   if (run.tty) fputs("\r\033[K", stderr);
   if (rc) {

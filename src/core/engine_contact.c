@@ -137,21 +137,13 @@ double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double 
 
 //---------------------------------- pairs ---------------------------------------------------------
 
-void ur_contacts(const urModel* m, urData* d) {
-  static const double up[3] = {0, 0, 1};
+// broad phase: every pair's depth set to minus the gap of its bounding spheres (of the sphere to
+// the ground plane)
+void ur_contacts_broad(const urModel* m, urData* d) {
   for (int i = 0; i < m->npair; i++) {
     const urPair* pr = m->pair + i;
-    urPairData* pd = d->pair + i;
     const double* ca = d->gxpos + 3*pr->geom1;
     double ra = m->geom[pr->geom1].rbound;
-    int ba = m->geom[pr->geom1].body;
-    int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
-    urEllipsoid ea, eb;
-    urGeomContact gc;
-    pd->active = 0;
-    pd->fn = pd->ft = pd->rate = pd->area = 0;
-
-    // broad phase: bounding spheres
     double gap;
     if (pr->geom2 < 0) {
       gap = ca[2] - ra;
@@ -160,10 +152,29 @@ void ur_contacts(const urModel* m, urData* d) {
       double dx[3] = {cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
       gap = uru_norm3(dx) - ra - m->geom[pr->geom2].rbound;
     }
-    if (gap > 0) {
-      pd->depth = -gap;
+    d->pair[i].depth = -gap;
+  }
+}
+
+
+// the pairs whose bounding spheres overlap (after ur_contacts_broad): oriented bound, narrow
+// phase, law, friction
+void ur_contacts_narrow(const urModel* m, urData* d) {
+  static const double up[3] = {0, 0, 1};
+  for (int i = 0; i < m->npair; i++) {
+    urPairData* pd = d->pair + i;
+    pd->active = 0;
+    pd->fn = pd->ft = pd->rate = pd->area = 0;
+
+    // bounding spheres apart: the depth stays minus their gap
+    if (-pd->depth > 0) {
       continue;
     }
+    const urPair* pr = m->pair + i;
+    int ba = m->geom[pr->geom1].body;
+    int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
+    urEllipsoid ea, eb;
+    urGeomContact gc;
 
     // oriented bound: separated at the centre line or at the last normal
     if (pr->geom2 >= 0) {
@@ -206,6 +217,14 @@ void ur_contacts(const urModel* m, urData* d) {
     pd->active = 1;
     pd->ft = ur_contact_apply(m, d, ba, bb, gc.n, gc.p, pd->fn, pd->rate, &pr->law, 0, 0);
   }
+}
+
+
+
+
+void ur_contacts(const urModel* m, urData* d) {
+  ur_contacts_broad(m, d);
+  ur_contacts_narrow(m, d);
 }
 
 

@@ -1,5 +1,6 @@
 /* engine_data.c: per-run data: allocation in one buffer, reset, copy, history buffers. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "engine_internal.h"
@@ -49,14 +50,18 @@ static void carve(const urModel* m, urData* d) {
   TAKE(tpeak, ns)
   TAKE(scratch, 2*nq + 8*nv)
 #undef TAKE
-  d->pair = (urPairData*)p;
+  // pairs on cache lines (the buffer is aligned, so the offset is the same in every copy)
+  uintptr_t a = (uintptr_t)p, al = _Alignof(urPairData);
+  d->pair = (urPairData*)((a + al - 1)/al*al);
   d->bag = (urBagData*)(d->pair + m->npair);
 }
 
 
 static size_t buffersize(const urModel* m) {
-  return ndoubles(m)*sizeof(double) + (size_t)m->npair*sizeof(urPairData)
-         + (size_t)m->nbag*sizeof(urBagData) + sizeof(double);
+  size_t n = ndoubles(m)*sizeof(double) + _Alignof(urPairData)
+             + (size_t)m->npair*sizeof(urPairData) + (size_t)m->nbag*sizeof(urBagData)
+             + sizeof(double);
+  return (n + _Alignof(urPairData) - 1)/_Alignof(urPairData)*_Alignof(urPairData);
 }
 
 //---------------------------------- public --------------------------------------------------------
@@ -69,8 +74,10 @@ urData* ur_data_new(const urModel* m) {
   if (!d) {
     return NULL;
   }
-  d->buffer = calloc(1, buffersize(m));
-  if (!d->buffer) {
+  d->buffer = aligned_alloc(_Alignof(urPairData), buffersize(m));
+  if (d->buffer) {
+    memset(d->buffer, 0, buffersize(m));
+  } else {
     free(d);
     return NULL;
   }

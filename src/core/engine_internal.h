@@ -29,13 +29,21 @@ int uru_invsym(double* Ainv, const double* A, int n);
 
 //---------------------------------- engine passes -------------------------------------------------
 
-void ur_jcalc(const urModel* m, urData* d, int i);
+void ur_kinematics_bodies(const urModel* m, urData* d);
+void ur_kinematics_geoms(const urModel* m, urData* d);
 void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
+void ur_forward_pre(const urModel* m, urData* d);
+void ur_forward_forces(const urModel* m, urData* d, int broad);
+int ur_forward_post(const urModel* m, urData* d);
+int ur_step_begin(const urModel* m, urData* d);
+int ur_step_euler(const urModel* m, urData* d);
 void ur_reactions(const urModel* m, urData* d);
 void ur_restraints(const urModel* m, urData* d);
 void ur_contacts(const urModel* m, urData* d);
+void ur_contacts_broad(const urModel* m, urData* d);
+void ur_contacts_narrow(const urModel* m, urData* d);
 void ur_contacts_commit(const urModel* m, urData* d);
 void ur_airbags(const urModel* m, urData* d);
 void ur_sensors(const urModel* m, urData* d);
@@ -48,6 +56,30 @@ void ur_relvel(const urModel* m, const urData* d, int a, int b, const double p[3
 double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double n[3],
                         const double p[3], double fn, double rate, const urLaw* law, double mu,
                         double v_eps);
+//---------------------------------- lanes (engine_lanes.c) --------------------------------------
+// up to urNLANE runs of one model stepped in lock-step, their poses, velocities and the
+// articulated-body algorithm computed over vectors of lanes; each run's bits are those of
+// ur_step. A lane run's S, cbias and ABA scratch (IA, U, Dinv, pA, uu) live here only: its
+// urData keeps the poses, velocities, accelerations and joint loads.
+
+#define urNLANE 4
+typedef double urV4 __attribute__((vector_size(4*sizeof(double))));
+typedef long long urV4I __attribute__((vector_size(4*sizeof(long long))));
+
+typedef struct {
+  urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
+  urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxmat, *gxpos;
+  urV4* gap;                       // npair: bounding-sphere gaps (broad phase)
+  urV4* energy;                    // kinetic energy of each lane ([0])
+  int fail;                        // lanes whose joint-space inertia was singular (bits)
+  void* mem;
+} urLanes;
+
+int ur_lanes_init(const urModel* m, urLanes* L);
+void ur_lanes_free(urLanes* L);
+// one step of each of the n <= urNLANE runs d[0..n-1], bitwise as ur_step on each
+int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
+
 int ur_tree_active(const urModel* m, const urData* d, int tree);
 double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]);
 

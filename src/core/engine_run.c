@@ -42,16 +42,18 @@ const char* ur_status_str(int status) {
 
 //---------------------------------- forward -------------------------------------------------------
 
-int ur_forward(const urModel* m, urData* d) {
-  if (d->status < 0) {
-    return d->status;
-  }
-
-  // positions and velocities
+// the forward pipeline up to the accelerations: positions, velocities, applied forces (gravity
+// compensation, restraints, contacts, airbags)
+void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics(m, d);
   ur_velocities(m, d);
+  ur_forward_forces(m, d, 1);
+}
 
-  // applied forces: gravity compensation, restraints, contacts, airbags
+
+// the applied forces of the forward pipeline (needs the poses and velocities; broad: run the
+// contacts' broad phase, else the pair depths hold it already)
+void ur_forward_forces(const urModel* m, urData* d, int broad) {
   memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
   for (int i = 0; i < m->nbody; i++) {
@@ -65,11 +67,16 @@ int ur_forward(const urModel* m, urData* d) {
     }
   }
   ur_restraints(m, d);
-  ur_contacts(m, d);
+  if (broad) {
+    ur_contacts_broad(m, d);
+  }
+  ur_contacts_narrow(m, d);
   ur_airbags(m, d);
+}
 
-  // accelerations, joint loads, sensors
-  ur_aba(m, d);
+
+// the forward pipeline after the accelerations: joint loads, sensors, the finiteness check
+int ur_forward_post(const urModel* m, urData* d) {
   ur_reactions(m, d);
   ur_sensors(m, d);
   for (int k = 0; k < m->nv; k++) {
@@ -82,6 +89,16 @@ int ur_forward(const urModel* m, urData* d) {
     }
   }
   return d->status;
+}
+
+
+int ur_forward(const urModel* m, urData* d) {
+  if (d->status < 0) {
+    return d->status;
+  }
+  ur_forward_pre(m, d);
+  ur_aba(m, d);
+  return ur_forward_post(m, d);
 }
 
 //---------------------------------- integration ---------------------------------------------------
@@ -246,25 +263,61 @@ static void accept(const urModel* m, urData* d) {
 }
 
 
-int ur_step(const urModel* m, urData* d) {
-  double h = m->opt.dt;
-  int nv = m->nv, nq = m->nq;
+// after the update: advance time, check the state and the end of the run
+static int step_end(const urModel* m, urData* d) {
+  d->time += m->opt.dt;
+  d->nstep++;
+  checkstate(m, d);
+  if (d->status == urSTAT_OK && d->proj >= 0) {
+    checkend(m, d);
+  }
+  return d->status;
+}
+
+
+// may a step start: not failed, not asked to stop
+int ur_step_begin(const urModel* m, urData* d) {
   if (d->status < 0) {
     return d->status;
   }
   if (m->opt.stop && *m->opt.stop) {
     ur_set_status(d, urSTAT_STOPPED, "stopped on request");
+  }
+  return d->status;
+}
+
+
+// the rest of a semi-implicit Euler step after a successful forward pass: accept the state,
+// velocities first, positions with the new velocities, then the state checks
+int ur_step_euler(const urModel* m, urData* d) {
+  double h = m->opt.dt;
+  accept(m, d);
+  for (int k = 0; k < m->nv; k++) {
+    d->qvel[k] += h*d->qacc[k];
+  }
+  addpos(m, d->qpos, d->qpos, d->qvel, h);
+  return step_end(m, d);
+}
+
+
+int ur_step(const urModel* m, urData* d) {
+  double h = m->opt.dt;
+  int nv = m->nv, nq = m->nq;
+  if (ur_step_begin(m, d) < 0) {
     return d->status;
   }
 
-  // forward at the current state, accept it
+  // forward at the current state
   if (ur_forward(m, d) < 0) {
     return d->status;
   }
+  if (m->opt.integrator != urINT_RK4) {
+    return ur_step_euler(m, d);
+  }
   accept(m, d);
 
-  if (m->opt.integrator == urINT_RK4) {
-    // scratch: q0 | v0 | dq sum | a sum | stage dq | stage offset
+  {
+    // RK4; scratch: q0 | v0 | dq sum | a sum | stage dq | stage offset
     double* q0 = d->scratch;
     double* v0 = q0 + nq;
     double* dqs = v0 + nv;
@@ -304,20 +357,8 @@ int ur_step(const urModel* m, urData* d) {
     for (int k = 0; k < nv; k++) {
       d->qvel[k] = v0[k] + h/6*as[k];
     }
-  } else {
-    // semi-implicit Euler: velocities first, positions with the new velocities
-    for (int k = 0; k < nv; k++) {
-      d->qvel[k] += h*d->qacc[k];
-    }
-    addpos(m, d->qpos, d->qpos, d->qvel, h);
   }
-  d->time += h;
-  d->nstep++;
-  checkstate(m, d);
-  if (d->status == urSTAT_OK && d->proj >= 0) {
-    checkend(m, d);
-  }
-  return d->status;
+  return step_end(m, d);
 }
 
 //---------------------------------- runs ----------------------------------------------------------

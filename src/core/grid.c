@@ -116,34 +116,47 @@ typedef struct {
   int id;
 } runWorker;
 
+/* the next cell of the list, reset to pending with its offsets; NULL when none is left or a
+   stop was asked */
+static urCell* take(void* feed) {
+  runWorker* w = feed;
+  runShared* sh = w->sh;
+  if (sh->s->stop && *sh->s->stop) return NULL;
+  long k = __atomic_fetch_add(&sh->next, 1, __ATOMIC_RELAXED);
+  if (k >= sh->ntodo) return NULL;
+  urCell* c = &sh->g->cell[sh->todo[k]];
+  double dpar = c->dpar, dperp = c->dperp;
+  memset(c, 0, sizeof *c);
+  c->dpar = dpar;
+  c->dperp = dperp;
+  return c;
+}
+
+/* a finished cell: its status (a failure keeps its reason), then progress, one caller at a time */
+static void put(void* feed, urCell* c, int rc) {
+  runWorker* w = feed;
+  runShared* sh = w->sh;
+  if (rc == 0) {
+    c->status = urCELL_DONE;
+  } else {
+    c->status = urCELL_FAILED;
+    if (!c->reason[0]) strcpy(c->reason, "simulation failed");
+  }
+  pthread_mutex_lock(&sh->lock);
+  sh->finished++;
+  if (sh->s->progress) sh->s->progress(sh->s->ctx, (int)sh->finished, (int)sh->ntodo);
+  pthread_mutex_unlock(&sh->lock);
+}
+
 static void* worker(void* arg) {
   runWorker* w = arg;
-  runShared* sh = w->sh;
-  for (;;) {
-    /* take the next cell unless asked to stop */
-    if (sh->s->stop && *sh->s->stop) break;
-    long k = __atomic_fetch_add(&sh->next, 1, __ATOMIC_RELAXED);
-    if (k >= sh->ntodo) break;
-    urCell* c = &sh->g->cell[sh->todo[k]];
-
-    /* simulate; a failure keeps its reason */
-    double dpar = c->dpar, dperp = c->dperp;
-    memset(c, 0, sizeof *c);
-    c->dpar = dpar;
-    c->dperp = dperp;
-    if (sh->s->impact(sh->s->ctx, w->id, c) == 0) {
-      c->status = urCELL_DONE;
-    } else {
-      c->status = urCELL_FAILED;
-      if (!c->reason[0]) strcpy(c->reason, "simulation failed");
-    }
-
-    /* progress, one caller at a time */
-    pthread_mutex_lock(&sh->lock);
-    sh->finished++;
-    if (sh->s->progress) sh->s->progress(sh->s->ctx, (int)sh->finished, (int)sh->ntodo);
-    pthread_mutex_unlock(&sh->lock);
+  const urGridSpec* s = w->sh->s;
+  if (s->impact_stream) {
+    s->impact_stream(s->ctx, w->id, take, put, w);
+    return NULL;
   }
+  urCell* c;
+  while ((c = take(w))) put(w, c, s->impact(s->ctx, w->id, c));
   return NULL;
 }
 

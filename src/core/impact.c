@@ -7,6 +7,7 @@
 
 #include "uasrisk/impact.h"
 #include "engine_internal.h"
+#include "impact_internal.h"
 
 #define DEG (M_PI / 180.0)
 #define HIST_SECONDS_MARGIN 1.2    /* history rows for tmax with this margin */
@@ -141,31 +142,58 @@ int ur_impact_channel(const urImpactSetup* s, const urImpactWork* w, int sensor,
   return d->nhist;
 }
 
-int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
-                  const urInjuryParams* ip, double dpar, double dperp, urImpactResult* r) {
+/* a run placed: from the settled stance, the drone placed at tau and jumped to its first
+   possible contact; *texit: absolute time by which a drone that has not touched has passed */
+void ur_impact_begin(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c, double dpar,
+                     double dperp, urImpactResult* r, double* texit) {
   const urModel* m = s->m;
   urData* d = w->d;
   memset(r, 0, sizeof *r);
   r->t_first = -1;
-
-  /* from the settled stance, the drone placed at tau and jumped to its first possible contact */
   double pos[3], quat[4], vel[3];
   ur_impact_start(s, c, dpar, dperp, pos, quat, vel);
   ur_data_copy(m, d, s->rest);
   ur_run_start(m, d, s->drone, pos, quat, vel);
-  double texit = d->time + exit_time(s, d, vel);   /* absolute time */
+  *texit = d->time + exit_time(s, d, vel);
+}
+
+/* after a step: 0 go on, 1 the run is over (ended, failed, drone passed or window closed), -1
+   the history buffer is full (r says so) */
+int ur_impact_after_step(const urImpactSetup* s, const urImpactWork* w, double texit,
+                         urImpactResult* r) {
+  const urModel* m = s->m;
+  const urData* d = w->d;
+  if (d->status < 0) return 1;
+  if (d->t_first < 0 && d->time > texit + 2 * m->opt.dt) return 1;
+  if (d->t_first >= 0 && d->time > d->t_first + s->window) return 1;
+  if (d->nhist >= w->rows - 1) {
+    snprintf(r->reason, sizeof r->reason, "history buffer full at t = %g s", d->time);
+    r->status = urSTAT_BADARG;
+    return -1;
+  }
+  return d->status != urSTAT_OK;
+}
+
+int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
+                  const urInjuryParams* ip, double dpar, double dperp, urImpactResult* r) {
+  double texit;
+  ur_impact_begin(s, w, c, dpar, dperp, r, &texit);
 
   /* step until the run ends, or the drone has passed the person without touching */
-  while (d->status == urSTAT_OK) {
-    if (ur_step(m, d) < 0) break;
-    if (d->t_first < 0 && d->time > texit + 2 * m->opt.dt) break;
-    if (d->t_first >= 0 && d->time > d->t_first + s->window) break;
-    if (d->nhist >= w->rows - 1) {
-      snprintf(r->reason, sizeof r->reason, "history buffer full at t = %g s", d->time);
-      r->status = urSTAT_BADARG;
-      return -1;
-    }
+  while (w->d->status == urSTAT_OK) {
+    ur_step(s->m, w->d);
+    int e = ur_impact_after_step(s, w, texit, r);
+    if (e < 0) return -1;
+    if (e) break;
   }
+  return ur_impact_finish(s, w, ip, r);
+}
+
+/* the result of a finished run: status, contact, injury criteria and P from its histories */
+int ur_impact_finish(const urImpactSetup* s, urImpactWork* w, const urInjuryParams* ip,
+                     urImpactResult* r) {
+  const urModel* m = s->m;
+  urData* d = w->d;
   r->status = d->status;
   if (d->status < 0) {
     snprintf(r->reason, sizeof r->reason, "%s", d->msg[0] ? d->msg : ur_status_str(d->status));

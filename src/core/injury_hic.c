@@ -1,27 +1,45 @@
 /* injury_hic.c: Head Injury Criterion, exact maximum over sample pairs.
  *
  * HIC(i, j) = (t_j - t_i) * (mean a over [t_i, t_j])^2.5 with the cumulative trapezoid integral.
- * Every start i is bounded from above by w_i * amax_i^2.5, where amax_i is the largest sample
- * in [t_i, t_i + window] and w_i the longest admissible window from i (a trapezoid mean never
- * exceeds the largest sample). Starts are scanned in decreasing bound and the scan stops when
- * the bound cannot beat the best pair found: the same maximum as the O(N W) scan of every
- * pair, usually after a few starts around the peak. Ties go to the smallest (i, j), as in
- * the plain scan. */
+ * Every start i is bounded from above by V_i * amax_i^1.5 (and w_i * amax_i^2.5), where amax_i
+ * is the largest sample in [t_i, t_i + window], V_i the largest rise of the integral over that
+ * window and w_i the longest admissible window from i (a trapezoid mean never exceeds the
+ * largest sample). Starts are taken in decreasing bound from a binary heap and the
+ * scan stops when the bound cannot beat the best pair found: the same maximum as the O(N W)
+ * scan of every pair, usually after a few starts around the peak. Ties go to the smallest
+ * (i, j), as in the plain scan; the order among starts of equal bound does not matter, since a
+ * start left unscanned has a bound, and so a HIC, strictly below the best. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "uasrisk/injury.h"
 
-typedef struct { double bound; int i; } hicStart;
+typedef struct { double bound, am, vm; int i; } hicStart;
 
-static int bydescbound(const void* pa, const void* pb)
+/* max-heap of starts by bound (ties: smaller i first) */
+static int above(const hicStart* a, const hicStart* b)
 {
-  const hicStart* a = pa;
-  const hicStart* b = pb;
-  if (a->bound != b->bound) {
-    return a->bound > b->bound ? -1 : 1;
+  return a->bound > b->bound || (a->bound == b->bound && a->i < b->i);
+}
+
+static void sift_down(hicStart* h, int n, int k)
+{
+  for (;;) {
+    int c = 2 * k + 1;
+    if (c >= n) {
+      return;
+    }
+    if (c + 1 < n && above(&h[c + 1], &h[c])) {
+      c++;
+    }
+    if (!above(&h[c], &h[k])) {
+      return;
+    }
+    hicStart t = h[k];
+    h[k] = h[c];
+    h[c] = t;
+    k = c;
   }
-  return a->i - b->i;
 }
 
 int ur_hic(const double* t, const double* a, int n, double window, double* work, urHic* out)
@@ -50,6 +68,7 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
   }
   hicStart* st = (hicStart*)(v + n);
   int* dq = (int*)(st + n);
+  int* qv = dq + n;
 
   // cumulative trapezoid integral of a, g s
   v[0] = 0;
@@ -57,41 +76,68 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
     v[k] = v[k - 1] + 0.5 * (a[k] + a[k - 1]) * (t[k] - t[k - 1]);
   }
 
-  // bound of every start from the sliding maximum of a over its window (monotone deque)
+  // bound of every start i from the sliding maxima over its window (monotone deques) of a and
+  // of v: with dv = v_j - v_i <= V_i = max v_j - v_i and dv/dt <= a_max, HIC = dv (dv/dt)^1.5
+  // <= V_i a_max^1.5 (<= w a_max^2.5); a relative margin covers the rounding of the bound
   double wmax = window * (1.0 + 1e-9);
-  int ns = 0, head = 0, tail = 0, j = 0;
+  int ns = 0, head = 0, tail = 0, vhead = 0, vtail = 0, j = 0;
   for (int i = 0; i < n - 1; i++) {
     while (j < n && t[j] - t[i] <= wmax) {
       while (tail > head && a[dq[tail - 1]] <= a[j]) {
         tail--;
       }
-      dq[tail++] = j++;
+      dq[tail++] = j;
+      while (vtail > vhead && v[qv[vtail - 1]] <= v[j]) {
+        vtail--;
+      }
+      qv[vtail++] = j++;
     }
     while (dq[head] < i) {
       head++;
     }
-    double am = a[dq[head]];
-    if (j - 1 > i && am > 0) {
+    while (qv[vhead] < i) {
+      vhead++;
+    }
+    double am = a[dq[head]], vm = v[qv[vhead]] - v[i];
+    if (j - 1 > i && am > 0 && vm > 0) {
       double w = t[j - 1] - t[i];
-      st[ns].bound = w * am * am * sqrt(am);
+      st[ns].bound = fmin(w * am * am * sqrt(am), vm * am * sqrt(am)) * (1 + 1e-9);
+      st[ns].am = am;
+      st[ns].vm = vm;
       st[ns].i = i;
       ns++;
     }
   }
-  qsort(st, (size_t)ns, sizeof *st, bydescbound);
+  for (int k = ns / 2 - 1; k >= 0; k--) {
+    sift_down(st, ns, k);
+  }
 
-  // exact scan of the starts whose bound can still beat the best pair; pairs are compared by
-  // HIC^2 = dv^5 / dt^3 (same order, no roots), the value is taken from the best pair
+  // exact scan of the starts whose bound can still beat the best pair, largest bound first;
+  // pairs are compared by HIC^2 = dv^5 / dt^3 (same order, no roots), the value is taken from
+  // the best pair. Within a start, dv <= a_max dt and dv <= V_i give HIC^2 <= a_max^5 dt^2
+  // (too short a window cannot win) and <= V_i^5 / dt^3 (nor can any longer one once this is
+  // below the best); pairs are skipped only below the best, so ties are still all seen.
   double best2 = 0, best = 0;
   int b1 = 0, b2 = 0;
-  for (int s = 0; s < ns && st[s].bound >= best; s++) {
-    int i = st[s].i;
+  while (ns > 0 && st[0].bound >= best) {
+    int i = st[0].i;
+    double am = st[0].am, vm = st[0].vm;
+    double am5 = am * am * am * am * am * (1 + 1e-9), vm5 = vm * vm * vm * vm * vm * (1 + 1e-9);
+    st[0] = st[--ns];
+    sift_down(st, ns, 0);
     for (int k = i + 1; k < n && t[k] - t[i] <= wmax; k++) {
+      double dt = t[k] - t[i];
+      if (vm5 < best2 * dt * dt * dt) {
+        break;
+      }
+      if (am5 * dt * dt < best2) {
+        continue;
+      }
       double dv = v[k] - v[i];
       if (dv <= 0) {
         continue;
       }
-      double dt = t[k] - t[i], dv2 = dv * dv;
+      double dv2 = dv * dv;
       double h2 = dv2 * dv2 * dv / (dt * dt * dt);
       if (h2 > best2 || (h2 == best2 && h2 > 0 && (i < b1 || (i == b1 && k < b2)))) {
         best2 = h2;
@@ -120,6 +166,6 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
 
 int ur_hic_work_size(int n)
 {
-  // n doubles, n {double, int} starts (2 doubles each), n ints (1 double each, rounded up)
-  return n > 0 ? 4 * n : 0;
+  // n doubles, n starts {3 doubles, int} (4 doubles each), 2 n ints (1 double each, rounded up)
+  return n > 0 ? 6 * n : 0;
 }

@@ -1,0 +1,445 @@
+/* engine_lanes.c: up to urNLANE runs of one model stepped in lock-step, their articulated-body
+ * algorithm computed once over vectors of lanes (engine_aba.h instantiated for urV4). Every lane
+ * takes the same path through the tree, so the vector code is the scalar code with each
+ * operation done for all lanes at once: each run's bits are those of ur_step on its own. The
+ * per-run parts (contacts, restraints, airbags, sensors, integration, end of run) stay scalar.
+ * On x86-64 the vector kernels are also compiled for AVX2 and picked at load time; both clones
+ * evaluate the same IEEE operations (no contraction: ISO C mode), so the bits do not depend on
+ * the machine either. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "engine_internal.h"
+
+// the vector helpers are static: the AVX calling convention (-Wpsabi) does not concern them
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+//---------------------------------- vector kernels ------------------------------------------------
+
+// sanitizer builds of the unrolled vector kernels take minutes (GCC, make check-san) or over ten
+// minutes (clang, make fuzz); there they are built without the unrolling (same operations)
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define urNO_UNROLL 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(urNO_UNROLL)
+#undef urUNROLL
+#define urUNROLL
+#endif
+
+// the hot vector functions also compiled for AVX2, the clone picked at load time (GCC on x86-64;
+// clang builds only the fuzzers and takes the default; urNO_CLONES: the default only, as make
+// check-san builds it to test that path)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(urNO_CLONES)
+#define urCLONES __attribute__((target_clones("avx2", "default")))
+#define urAVX2 1
+#else
+#define urCLONES
+#define urAVX2 0
+#endif
+
+// a double broadcast to every lane (for clang a macro: it refuses to return 256-bit vectors by
+// value where AVX is not enabled, even from functions it inlines)
+#if defined(__clang__)
+#define bc4(x) ((urV4){(x), (x), (x), (x)})
+#else
+static inline __attribute__((always_inline)) urV4 bc4(double x) {
+  return (urV4){x, x, x, x};
+}
+#endif
+
+#define urT urV4
+#define urK(name) urv_##name
+#include "engine_spatial.h"
+#define urSTORAGE static inline __attribute__((always_inline))
+#include "engine_spatial_inertia.h"
+#undef urSTORAGE
+
+
+// uru_invsym's Cholesky inverse (n > 3) over the vectors, the square roots lane by lane; -1 if a
+// lane's matrix is not positive definite
+static inline __attribute__((always_inline))
+int chol4(urV4* Ainv, const urV4* A, int n) {
+  urV4 L[36] = {0}, Li[36] = {0};
+  for (int j = 0; j < n; j++) {
+    urV4 s = A[n*j + j];
+    for (int k = 0; k < j; k++) {
+      s -= L[6*j + k]*L[6*j + k];
+    }
+    urV4I pos = s > 0;
+    if (!(pos[0] & pos[1] & pos[2] & pos[3])) {
+      return -1;
+    }
+    for (int l = 0; l < urNLANE; l++) {
+      L[6*j + j][l] = sqrt(s[l]);
+    }
+    for (int i = j + 1; i < n; i++) {
+      urV4 t = A[n*i + j];
+      for (int k = 0; k < j; k++) {
+        t -= L[6*i + k]*L[6*j + k];
+      }
+      L[6*i + j] = t/L[6*j + j];
+    }
+  }
+  for (int j = 0; j < n; j++) {
+    Li[6*j + j] = 1/L[6*j + j];
+    for (int i = j + 1; i < n; i++) {
+      urV4 t = bc4(0);
+      for (int k = j; k < i; k++) {
+        t -= L[6*i + k]*Li[6*k + j];
+      }
+      Li[6*i + j] = t/L[6*i + i];
+    }
+  }
+  for (int i = 0; i < n; i++) {
+    for (int j = i; j < n; j++) {
+      urV4 t = bc4(0);
+      for (int k = j; k < n; k++) {
+        t += Li[6*k + i]*Li[6*k + j];
+      }
+      Ainv[n*i + j] = t;
+      Ainv[n*j + i] = t;
+    }
+  }
+  return 0;
+}
+
+
+// inverse of a joint-space inertia per lane: the closed forms of uru_invsym for n <= 3 and its
+// Cholesky beyond, over the vectors (the same expressions); if some lane's matrix is singular,
+// every lane goes through uru_invsym on its own (a failed lane gets a zero inverse and its bit
+// in L->fail)
+static inline __attribute__((always_inline))
+void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
+  if (n <= 3) {
+    urV4 det;
+    if (n == 1) {
+      det = A[0];
+    } else if (n == 2) {
+      det = A[0]*A[3] - A[1]*A[2];
+    } else {
+      urV4 c0 = A[4]*A[8] - A[5]*A[7], c1 = A[5]*A[6] - A[3]*A[8], c2 = A[3]*A[7] - A[4]*A[6];
+      det = A[0]*c0 + A[1]*c1 + A[2]*c2;
+      urV4 id = 1/det;
+      Ainv[0] = c0*id;
+      Ainv[1] = (A[2]*A[7] - A[1]*A[8])*id;
+      Ainv[2] = (A[1]*A[5] - A[2]*A[4])*id;
+      Ainv[3] = c1*id;
+      Ainv[4] = (A[0]*A[8] - A[2]*A[6])*id;
+      Ainv[5] = (A[2]*A[3] - A[0]*A[5])*id;
+      Ainv[6] = c2*id;
+      Ainv[7] = (A[1]*A[6] - A[0]*A[7])*id;
+      Ainv[8] = (A[0]*A[4] - A[1]*A[3])*id;
+    }
+    if (n == 1) {
+      Ainv[0] = 1/A[0];
+    } else if (n == 2) {
+      Ainv[0] = A[3]/det;
+      Ainv[1] = -A[1]/det;
+      Ainv[2] = -A[2]/det;
+      Ainv[3] = A[0]/det;
+    }
+    urV4I ok = det != 0;
+    if (ok[0] & ok[1] & ok[2] & ok[3]) {
+      return;
+    }
+  } else if (chol4(Ainv, A, n) == 0) {
+    return;
+  }
+
+  // lane by lane
+  for (int l = 0; l < urNLANE; l++) {
+    double a[36], ai[36];
+    for (int k = 0; k < n*n; k++) {
+      a[k] = A[k][l];
+    }
+    if (uru_invsym(ai, a, n)) {
+      memset(ai, 0, sizeof(ai));
+      L->fail |= 1 << l;
+    }
+    for (int k = 0; k < n*n; k++) {
+      Ainv[k][l] = ai[k];
+    }
+  }
+}
+
+#define urT urV4
+#define urBC(x) bc4(x)
+#define urFN(name) urv_##name
+#define urD urLanes
+#define urSETENERGY(d, ke) ((d)->energy[0] = (ke))
+#define urINVSYM(d, Dinv, D, nv) invsym4(d, Dinv, D, nv)
+#define urABA_ATTR urCLONES
+#include "engine_aba.h"
+
+// rotation about a unit axis per lane: the scalar axisrot's quaternion (uru_axisangle2quat, one
+// sincos per lane), then its matrix over the vectors
+static inline __attribute__((always_inline))
+void axisrot4(urV4 R[9], const urV4 a[3], const urV4* ang) {
+  urV4 q[4];
+  for (int l = 0; l < urNLANE; l++) {
+    double ax[3] = {a[0][l], a[1][l], a[2][l]}, ql[4];
+    uru_axisangle2quat(ql, ax, (*ang)[l]);
+    for (int k = 0; k < 4; k++) {
+      q[k][l] = ql[k];
+    }
+  }
+  urv_quat2mat(R, q);
+}
+
+#define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
+#define urKIN_ATTR urCLONES
+#include "engine_kin.h"
+
+// square roots in place of the pairs' entries of L->gap (the pairs between two ellipsoids)
+static void sqrt_pairs_default(const urModel* m, urLanes* L) {
+  for (int i = 0; i < m->npair; i++) {
+    if (m->pair[i].geom2 >= 0) {
+      for (int l = 0; l < urNLANE; l++) {
+        L->gap[i][l] = sqrt(L->gap[i][l]);
+      }
+    }
+  }
+}
+
+#if urAVX2
+#include <immintrin.h>
+__attribute__((target("avx2"))) static void sqrt_pairs_avx2(const urModel* m, urLanes* L) {
+  for (int i = 0; i < m->npair; i++) {
+    if (m->pair[i].geom2 >= 0) {
+      double* g = (double*)(L->gap + i);
+      _mm256_store_pd(g, _mm256_sqrt_pd(_mm256_load_pd(g)));
+    }
+  }
+}
+#endif
+
+// the broad phase of ur_contacts_broad over the vectors: the same expressions (IEEE square
+// roots are exact, so one instruction for four lanes gives each lane's bits)
+static void broad4(const urModel* m, urLanes* L) {
+  // squared centre distances; ground pairs: the gap
+  for (int i = 0; i < m->npair; i++) {
+    const urPair* pr = m->pair + i;
+    const urV4* ca = L->gxpos + 3*pr->geom1;
+    if (pr->geom2 < 0) {
+      L->gap[i] = ca[2] - bc4(m->geom[pr->geom1].rbound);
+    } else {
+      const urV4* cb = L->gxpos + 3*pr->geom2;
+      urV4 dx0 = cb[0] - ca[0], dx1 = cb[1] - ca[1], dx2 = cb[2] - ca[2];
+      L->gap[i] = dx0*dx0 + dx1*dx1 + dx2*dx2;
+    }
+  }
+
+  // distances
+#if urAVX2
+  if (__builtin_cpu_supports("avx2")) {
+    sqrt_pairs_avx2(m, L);
+  } else {
+    sqrt_pairs_default(m, L);
+  }
+#else
+  sqrt_pairs_default(m, L);
+#endif
+
+  // minus the radii
+  for (int i = 0; i < m->npair; i++) {
+    const urPair* pr = m->pair + i;
+    if (pr->geom2 >= 0) {
+      L->gap[i] = L->gap[i] - bc4(m->geom[pr->geom1].rbound) - bc4(m->geom[pr->geom2].rbound);
+    }
+  }
+}
+
+//---------------------------------- lane data -----------------------------------------------------
+
+int ur_lanes_init(const urModel* m, urLanes* L) {
+  memset(L, 0, sizeof(*L));
+  size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
+  size_t nq = (size_t)m->nq;
+  size_t ng = (size_t)m->ngeom, np = (size_t)m->npair;
+  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3) + 2*nv + 1 + nq + nv + 12*ng + np;
+  L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1)*sizeof(urV4));
+  if (!L->mem) {
+    return -1;
+  }
+  memset(L->mem, 0, n*sizeof(urV4));
+  urV4* p = L->mem;
+  urV4** f[] = {&L->S, &L->IA, &L->U, &L->Dinv, &L->pA, &L->uu, &L->cbias, &L->cvel, &L->cacc,
+                &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy,
+                &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom, &L->gxmat, &L->gxpos,
+                &L->gap};
+  size_t len[] = {36*nb, 36*nb, 36*nb, 36*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 9*nb,
+                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb, 9*ng, 3*ng, np};
+  for (size_t k = 0; k < sizeof(len)/sizeof(len[0]); k++) {
+    *f[k] = p;
+    p += len[k];
+  }
+  return 0;
+}
+
+
+void ur_lanes_free(urLanes* L) {
+  free(L->mem);
+  memset(L, 0, sizeof(*L));
+}
+
+
+// 4 x 4 transposes: four consecutive values of each lane <-> four vectors of lanes
+#if defined(__clang__)
+#define SHUF(a, b, i, j, k, l) __builtin_shufflevector(a, b, i, j, k, l)
+#else
+#define SHUF(a, b, i, j, k, l) __builtin_shuffle(a, b, (urV4I){i, j, k, l})
+#endif
+#define transpose4(r, a_, b_, c_, e_)                                             \
+  do {                                                                             \
+    urV4 a = (a_), b = (b_), c = (c_), e = (e_);                                   \
+    urV4 t0 = SHUF(a, b, 0, 4, 2, 6), t1 = SHUF(a, b, 1, 5, 3, 7);               \
+    urV4 t2 = SHUF(c, e, 0, 4, 2, 6), t3 = SHUF(c, e, 1, 5, 3, 7);               \
+    (r)[0] = SHUF(t0, t2, 0, 1, 4, 5);                                             \
+    (r)[1] = SHUF(t1, t3, 0, 1, 4, 5);                                             \
+    (r)[2] = SHUF(t0, t2, 2, 3, 6, 7);                                             \
+    (r)[3] = SHUF(t1, t3, 2, 3, 6, 7);                                             \
+  } while (0)
+#define load4(p) ({ urV4 v_; memcpy(&v_, (p), sizeof(v_)); v_; })
+
+// x[0..n-1] of each lane (lanes beyond nl repeating lane 0) into the vectors v
+urCLONES
+static void gather(urV4* v, const double* const* x, size_t n) {
+  size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    transpose4(v + k, load4(x[0] + k), load4(x[1] + k), load4(x[2] + k), load4(x[3] + k));
+  }
+  for (; k < n; k++) {
+    v[k] = (urV4){x[0][k], x[1][k], x[2][k], x[3][k]};
+  }
+}
+
+// the vectors v back into x[0..n-1] of lanes 0..nl-1
+urCLONES
+static void scatter(double* const* x, int nl, const urV4* v, size_t n) {
+  size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    urV4 r[4];
+    transpose4(r, v[k], v[k + 1], v[k + 2], v[k + 3]);
+    for (int l = 0; l < nl; l++) {
+      memcpy(x[l] + k, r + l, sizeof(r[l]));
+    }
+  }
+  for (; k < n; k++) {
+    for (int l = 0; l < nl; l++) {
+      x[l][k] = v[k][l];
+    }
+  }
+}
+
+// one array of the lanes' data to or from the vectors: lane l is d[l], lanes beyond n repeat
+// lane 0 when gathering
+#define GATHER(field, len)                                                         \
+  do {                                                                             \
+    const double* x_[urNLANE];                                                     \
+    for (int l_ = 0; l_ < urNLANE; l_++) x_[l_] = d[l_ < n ? l_ : 0]->field;       \
+    gather(L->field, x_, (size_t)(len));                                           \
+  } while (0)
+#define SCATTER(field, len)                                                        \
+  do {                                                                             \
+    double* x_[urNLANE];                                                           \
+    for (int l_ = 0; l_ < n; l_++) x_[l_] = d[l_]->field;                          \
+    scatter(x_, n, L->field, (size_t)(len));                                       \
+  } while (0)
+
+// the state, for the poses and velocities
+static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) {
+  GATHER(qpos, m->nq);
+  GATHER(qvel, m->nv);
+}
+
+
+// the poses, velocities and broad phase back to each lane's data
+static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, int n) {
+  size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom;
+  SCATTER(xmat, 9*nb);
+  SCATTER(xpos, 3*nb);
+  SCATTER(xcom, 3*nb);
+  SCATTER(Xe, 9*nb);
+  SCATTER(Xr, 3*nb);
+  SCATTER(cvel, 6*nb);
+  SCATTER(gxmat, 9*ng);
+  SCATTER(gxpos, 3*ng);
+  for (int l = 0; l < n; l++) {
+    for (int i = 0; i < m->npair; i++) {
+      d[l]->pair[i].depth = -L->gap[i][l];
+    }
+  }
+}
+
+
+// the applied forces, for the ABA
+static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n) {
+  GATHER(fext, 6*(size_t)m->nbody);
+  GATHER(qfrc, m->nv);
+  L->fail = 0;
+}
+
+
+// the outputs of the ABA back to each lane's data
+static void scatter_acc(const urModel* m, const urLanes* L, urData* const* d, int n) {
+  size_t nb = (size_t)m->nbody;
+  SCATTER(qacc, m->nv);
+  SCATTER(cacc, 6*nb);
+  SCATTER(freact, 6*nb);
+  for (int l = 0; l < n; l++) {
+    d[l]->energy = L->energy[0][l];
+    if (L->fail & (1 << l)) {
+      ur_set_status(d[l], urSTAT_NONFINITE, "singular joint-space inertia");
+    }
+  }
+}
+
+//---------------------------------- lock-step -----------------------------------------------------
+
+int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
+  // one run, or an integrator with stages: each run on its own
+  if (n < 2 || m->opt.integrator == urINT_RK4) {
+    for (int l = 0; l < n; l++) {
+      ur_step(m, d[l]);
+    }
+    return 0;
+  }
+
+  // the runs that may step
+  urData* run[urNLANE];
+  int k = 0;
+  for (int l = 0; l < n && l < urNLANE; l++) {
+    if (ur_step_begin(m, d[l]) >= 0) {
+      run[k++] = d[l];
+    }
+  }
+  if (k == 0) {
+    return 0;
+  }
+
+  // poses and velocities for all lanes at once, the applied forces lane by lane
+  gather_state(m, L, run, k);
+  urv_kinematics_bodies(m, L);
+  urv_kinematics_geoms(m, L);
+  urv_velocities(m, L);
+  broad4(m, L);
+  scatter_kin(m, L, run, k);
+  for (int l = 0; l < k; l++) {
+    ur_forward_forces(m, run[l], 0);
+  }
+
+  // accelerations for all lanes at once
+  gather_forces(m, L, run, k);
+  urv_aba(m, L);
+  scatter_acc(m, L, run, k);
+
+  // the rest of each step
+  for (int l = 0; l < k; l++) {
+    if (ur_forward_post(m, run[l]) >= 0) {
+      ur_step_euler(m, run[l]);
+    }
+  }
+  return 0;
+}

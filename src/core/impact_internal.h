@@ -1,0 +1,17 @@
+/* impact_internal.h: the parts of one impact run (impact.c), shared with the runner of many
+ * impacts in lock-step (impact_lanes.c). Not public API. */
+#ifndef UASRISK_IMPACT_INTERNAL_H
+#define UASRISK_IMPACT_INTERNAL_H
+
+#include "uasrisk/impact.h"
+
+/* ur_impact_run is: ur_impact_begin; while the status is ok: ur_step, ur_impact_after_step
+   (-1: return -1; 1: stop); ur_impact_finish */
+void ur_impact_begin(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c, double dpar,
+                     double dperp, urImpactResult* r, double* texit);
+int ur_impact_after_step(const urImpactSetup* s, const urImpactWork* w, double texit,
+                         urImpactResult* r);
+int ur_impact_finish(const urImpactSetup* s, urImpactWork* w, const urInjuryParams* ip,
+                     urImpactResult* r);
+
+#endif

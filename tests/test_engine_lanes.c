@@ -1,0 +1,248 @@
+/* test_engine_lanes.c: runs stepped in lock-step lanes (ur_step_lanes) are bit for bit the same
+ * runs stepped alone (ur_step): on the drone-on-human scene with 2, 3 and 4 lanes, runs that end
+ * at different times, a chain with every joint type, a lane whose joint-space inertia turns
+ * singular (only that lane fails, with the scalar message), the RK4 integrator (each run on its
+ * own) and a stop request. Compared after every step: state, poses, velocities,
+ * accelerations, forces, joint loads, contact and airbag histories, sensors and peaks, the
+ * recorded rows and the run's fields. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+#include "../src/core/engine_internal.h"
+#include "test_engine_scene.h"
+
+#define ROWS 2000
+
+/* byte-compare what a lane run keeps against the scalar run; fails naming the first field */
+static void assert_same(const urModel* m, const urData* a, const urData* b, long step) {
+  size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, ns = (size_t)m->nsensordata;
+  struct {
+    const char* name;
+    const void *x, *y;
+    size_t n;
+  } f[] = {
+    {"qpos", a->qpos, b->qpos, m->nq*sizeof(double)},
+    {"qvel", a->qvel, b->qvel, m->nv*sizeof(double)},
+    {"qacc", a->qacc, b->qacc, m->nv*sizeof(double)},
+    {"qfrc", a->qfrc, b->qfrc, m->nv*sizeof(double)},
+    {"rst", a->rst, b->rst, 2*m->nv*sizeof(double)},
+    {"xpos", a->xpos, b->xpos, 3*nb*sizeof(double)},
+    {"xmat", a->xmat, b->xmat, 9*nb*sizeof(double)},
+    {"xcom", a->xcom, b->xcom, 3*nb*sizeof(double)},
+    {"gxpos", a->gxpos, b->gxpos, 3*ng*sizeof(double)},
+    {"gxmat", a->gxmat, b->gxmat, 9*ng*sizeof(double)},
+    {"Xe", a->Xe, b->Xe, 9*nb*sizeof(double)},
+    {"Xr", a->Xr, b->Xr, 3*nb*sizeof(double)},
+    {"cvel", a->cvel, b->cvel, 6*nb*sizeof(double)},
+    {"cacc", a->cacc, b->cacc, 6*nb*sizeof(double)},
+    {"fext", a->fext, b->fext, 6*nb*sizeof(double)},
+    {"freact", a->freact, b->freact, 6*nb*sizeof(double)},
+    {"pair", a->pair, b->pair, m->npair*sizeof(urPairData)},
+    {"bag", a->bag, b->bag, m->nbag*sizeof(urBagData)},
+    {"sensordata", a->sensordata, b->sensordata, ns*sizeof(double)},
+    {"peakmax", a->peakmax, b->peakmax, ns*sizeof(double)},
+    {"peakmin", a->peakmin, b->peakmin, ns*sizeof(double)},
+    {"tpeak", a->tpeak, b->tpeak, ns*sizeof(double)},
+    {"time", &a->time, &b->time, sizeof(double)},
+    {"energy", &a->energy, &b->energy, sizeof(double)},
+    {"t_first", &a->t_first, &b->t_first, sizeof(double)},
+    {"t_last", &a->t_last, &b->t_last, sizeof(double)},
+    {"t_calm", &a->t_calm, &b->t_calm, sizeof(double)},
+    {"status", &a->status, &b->status, sizeof(int)},
+    {"nstep", &a->nstep, &b->nstep, sizeof(a->nstep)},
+    {"nhist", &a->nhist, &b->nhist, sizeof(int)},
+    {"msg", a->msg, b->msg, sizeof(a->msg)},
+  };
+  for (size_t k = 0; k < sizeof(f)/sizeof(f[0]); k++) {
+    if (memcmp(f[k].x, f[k].y, f[k].n)) {
+      fail_msg("step %ld: %s differs between the lane run and the run alone", step, f[k].name);
+    }
+  }
+  if (a->hist && memcmp(a->hist, b->hist, (size_t)a->nhist*(1 + ns)*sizeof(double))) {
+    fail_msg("step %ld: the recorded rows differ", step);
+  }
+}
+
+/* n runs from the given starts, in lanes and alone, compared after every step until all end;
+   returns the number of lock-steps and fills steps[] with each run's step count */
+static long lockstep(const urModel* m, int n, const double (*pos)[3], const double (*vel)[3],
+                     long* steps) {
+  urData *lane[urNLANE], *alone[urNLANE];
+  urLanes L;
+  assert_int_equal(ur_lanes_init(m, &L), 0);
+  int root = ur_name_body(m, "drone");
+  for (int i = 0; i < n; i++) {
+    lane[i] = ur_data_new(m);
+    alone[i] = ur_data_new(m);
+    assert_int_equal(ur_data_history(m, lane[i], NULL, ROWS), 0);
+    assert_int_equal(ur_data_history(m, alone[i], NULL, ROWS), 0);
+    ur_run_start(m, lane[i], root, pos[i], NULL, vel[i]);
+    ur_run_start(m, alone[i], root, pos[i], NULL, vel[i]);
+  }
+
+  // lock-step over the runs still going (as ur_impact_run_many drops finished lanes)
+  long it = 0;
+  for (;;) {
+    urData* go[urNLANE];
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+      if (lane[i]->status == urSTAT_OK) go[k++] = lane[i];
+    }
+    if (k == 0) break;
+    ur_step_lanes(m, go, k, &L);
+    for (int i = 0; i < n; i++) {
+      if (alone[i]->status == urSTAT_OK) ur_step(m, alone[i]);
+      assert_same(m, lane[i], alone[i], it);
+    }
+    it++;
+  }
+  for (int i = 0; i < n; i++) {
+    steps[i] = lane[i]->nstep;
+    ur_data_free(lane[i]);
+    ur_data_free(alone[i]);
+  }
+  ur_lanes_free(&L);
+  return it;
+}
+
+// the drone on the human, 2 to 4 lanes, runs of different lengths
+static void test_scene_lanes(void** state) {
+  urModel* m = scene_build(1);
+  assert_non_null(m);
+  static const double pos[4][3] = {{0.05, 0.015, 2.2}, {0.12, 0.036, 2.2}, {-0.3, 0.2, 2.2},
+                                   {0.0, 0.0, 2.2}};
+  static const double vel[4][3] = {{0, 0, -7.5}, {0, 0, -12.5}, {1.0, 0, -9.0}, {0, 0, -20}};
+  for (int n = 2; n <= 4; n++) {
+    long steps[4];
+    long it = lockstep(m, n, pos, vel, steps);
+    print_message("%d lanes: %ld lock-steps; runs of %ld, %ld, %ld, %ld steps\n", n, it,
+                  steps[0], steps[1], n > 2 ? steps[2] : 0, n > 3 ? steps[3] : 0);
+    assert_true(it > 100);
+    assert_true(steps[0] != steps[1]);     /* the lanes really ended at different times */
+  }
+  ur_model_free(m);
+}
+
+// the RK4 integrator: each run steps on its own, the same bits
+static void test_scene_rk4(void** state) {
+  urModel* m = scene_build(0);
+  assert_non_null(m);
+  m->opt.integrator = urINT_RK4;
+  m->opt.tmax = 0.01;
+  static const double pos[2][3] = {{0.05, 0.015, 2.2}, {0.12, 0.036, 2.2}};
+  static const double vel[2][3] = {{0, 0, -7.5}, {0, 0, -12.5}};
+  long steps[2];
+  assert_true(lockstep(m, 2, pos, vel, steps) > 10);
+  ur_model_free(m);
+}
+
+// 4 lanes from the given states (lane[i] set up), stepped n times, each compared after every
+// step with the same state stepped alone; the datas are freed
+static void lanes_vs_alone(const urModel* m, urData** lane, long n) {
+  urLanes L;
+  urData* alone[4];
+  assert_int_equal(ur_lanes_init(m, &L), 0);
+  for (int i = 0; i < 4; i++) {
+    alone[i] = ur_data_new(m);
+    ur_data_copy(m, alone[i], lane[i]);
+  }
+  for (long it = 0; it < n; it++) {
+    ur_step_lanes(m, lane, 4, &L);
+    for (int i = 0; i < 4; i++) {
+      ur_step(m, alone[i]);
+      assert_same(m, lane[i], alone[i], it);
+    }
+  }
+  for (int i = 0; i < 4; i++) ur_data_free(alone[i]);
+  ur_lanes_free(&L);
+}
+
+// a chain with every joint type, violent velocities, 4 lanes of different states
+static void test_chain_lanes(void** state) {
+  urModel* m = scene_chain(urINT_EULER, 1e-4, -9.81);
+  assert_non_null(m);
+  urData* lane[4];
+  for (int i = 0; i < 4; i++) {
+    lane[i] = ur_data_new(m);
+    for (int k = 0; k < m->nv; k++) lane[i]->qvel[k] = 8.0*sin(1.7*k + 0.3 + i);
+  }
+  lanes_vs_alone(m, lane, 3000);
+  assert_true(memcmp(lane[0]->qpos, lane[1]->qpos, m->nq*sizeof(double)) != 0);
+  for (int i = 0; i < 4; i++) {
+    assert_int_equal(lane[i]->status, urSTAT_OK);
+    ur_data_free(lane[i]);
+  }
+  ur_model_free(m);
+}
+
+// a point mass on a hinge about z carrying, through a hinge about x, a point mass 0.5 m up the z
+// axis: the joint-space inertia of the z hinge is m L^2 sin^2(q2), singular at q2 = 0. The lane
+// at q2 = 0 fails as the run alone does; the others go on, the same bits.
+static void test_singular_lane(void** state) {
+  urModel* m = ur_model_new();
+  double I0[6] = {0, 0, 0, 0, 0, 0}, c0[3] = {0, 0, 0}, cm[3] = {0, 0, 0.5};
+  int b1 = ur_model_add_body(m, "z", -1, urJNT_REVOLUTE, (double[3]){0, 0, 1}, NULL);
+  ur_model_set_inertia(m, b1, 1.0, c0, I0);
+  ur_model_set_joint(m, b1, NULL, (double[3]){0, 0, 1}, NULL);
+  int b2 = ur_model_add_body(m, "x", b1, urJNT_REVOLUTE, (double[3]){0, 0, 0}, NULL);
+  ur_model_set_inertia(m, b2, 1.0, cm, I0);
+  ur_model_set_joint(m, b2, NULL, (double[3]){1, 0, 0}, NULL);
+  m->opt.gravity[2] = 0;
+  assert_int_equal(ur_model_compile(m), 0);
+
+  urData* lane[4];
+  for (int i = 0; i < 4; i++) {
+    lane[i] = ur_data_new(m);
+    lane[i]->qpos[1] = 0.2*i;
+    lane[i]->qvel[0] = 1.0;
+  }
+  lanes_vs_alone(m, lane, 50);
+  assert_int_equal(lane[0]->status, urSTAT_NONFINITE);
+  assert_non_null(strstr(lane[0]->msg, "singular"));
+  for (int i = 1; i < 4; i++) assert_int_equal(lane[i]->status, urSTAT_OK);
+  for (int i = 0; i < 4; i++) ur_data_free(lane[i]);
+  ur_model_free(m);
+}
+
+// a stop request stops every lane, as it stops a run alone
+static void test_stop_lanes(void** state) {
+  urModel* m = scene_build(0);
+  assert_non_null(m);
+  volatile int stop = 0;
+  m->opt.stop = &stop;
+  urLanes L;
+  assert_int_equal(ur_lanes_init(m, &L), 0);
+  urData* d[3];
+  int root = ur_name_body(m, "drone");
+  for (int i = 0; i < 3; i++) {
+    d[i] = ur_data_new(m);
+    double pos[3] = {0.05*i, 0, 2.2}, vel[3] = {0, 0, -8};
+    ur_run_start(m, d[i], root, pos, NULL, vel);
+  }
+  for (int it = 0; it < 20; it++) ur_step_lanes(m, d, 3, &L);
+  stop = 1;
+  ur_step_lanes(m, d, 3, &L);
+  for (int i = 0; i < 3; i++) {
+    assert_int_equal(d[i]->status, urSTAT_STOPPED);
+    assert_int_equal(d[i]->nstep, 20);
+    ur_data_free(d[i]);
+  }
+  ur_lanes_free(&L);
+  ur_model_free(m);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_scene_lanes),
+    cmocka_unit_test(test_scene_rk4),
+    cmocka_unit_test(test_chain_lanes),
+    cmocka_unit_test(test_singular_lane),
+    cmocka_unit_test(test_stop_lanes),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
