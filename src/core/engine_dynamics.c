@@ -7,6 +7,7 @@
 
 //---------------------------------- articulated-body algorithm ------------------------------------
 
+// ur_aba for doubles, from its template
 #define urT double
 #define urBC(x) (x)
 #define urK(name) uru_##name

@@ -14,6 +14,7 @@ static void axisrot(double R[9], const double a[3], double ang) {
 }
 
 
+// jcalc, body and ellipsoid poses, velocities for doubles, from their template
 #define urT double
 #define urBC(x) (x)
 #define urK(name) uru_##name
@@ -34,8 +35,6 @@ void ur_kinematics(const urModel* m, urData* d) {
   ur_kinematics_bodies(m, d);
   ur_kinematics_geoms(m, d);
 }
-
-
 
 //---------------------------------- points --------------------------------------------------------
 

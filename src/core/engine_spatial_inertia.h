@@ -3,12 +3,16 @@
  * urK(name) the names, urSTORAGE the linkage (empty: extern, engine_util.c; static:
  * engine_lanes.c). No include guard. */
 
-// component k of a x b (k constant in unrolled loops)
+// component k of a x b (k constant in unrolled loops; a macro, so that no vector is returned by
+// value)
 #ifndef urCROSSK
 #define urCROSSK(a, b, k) ((a)[((k) + 1)%3]*(b)[((k) + 2)%3] - (a)[((k) + 2)%3]*(b)[((k) + 1)%3])
 #endif
 
-
+// symmetric inertia child -> parent, accumulated: r += X^T I X with X = [E 0; -E px E].
+// I = [A B; B^T C] (A, C symmetric; only the upper triangle of I is read). Rotated blocks
+// A' = E^T A E, B' = E^T B E, C' = E^T C E; then J12 = B' + px C', J11 = A' + px B'^T - J12 px,
+// J22 = C' (symmetric results from their upper triangles; r stays symmetric if it was).
 urSTORAGE void urK(xinertia_t_add)(urT r[36], const urT E[9], const urT p[3], const urT I[36]) {
   urT TA[9], TB[9], TC[9], A[9], B[9], C[9], J[9];
 

@@ -139,12 +139,6 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 }
 
 
-
-
-// symmetric inertia child -> parent, accumulated: r += X^T I X with X = [E 0; -E px E].
-// I = [A B; B^T C] (A, C symmetric; only the upper triangle of I is read). Rotated blocks
-// A' = E^T A E, B' = E^T B E, C' = E^T C E; then J12 = B' + px C', J11 = A' + px B'^T - J12 px,
-// J22 = C' (symmetric results from their upper triangles; r stays symmetric if it was).
 // the congruence X^T I X for doubles (uru_xinertia_t_add), from its template
 #define urT double
 #define urK(name) uru_##name
