@@ -2,7 +2,7 @@
  * runs stepped alone (ur_step): on the drone-on-human scene with 2, 3 and 4 lanes, runs that end
  * at different times, a chain with every joint type, a lane whose joint-space inertia turns
  * singular (only that lane fails, with the scalar message), the RK4 integrator (each run on its
- * own) and a stop request. Compared after every step: state, poses, velocities,
+ * own), more runs than lanes in one call, and a stop request. Compared after every step: state, poses, velocities,
  * accelerations, forces, joint loads, contact and airbag histories, sensors and peaks, the
  * recorded rows and the run's fields. */
 #include <math.h>
@@ -209,6 +209,35 @@ static void test_singular_lane(void** state) {
   ur_model_free(m);
 }
 
+// more runs than lanes in one call: taken urNLANE at a time, the same bits
+static void test_more_than_lanes(void** state) {
+  urModel* m = scene_chain(urINT_EULER, 1e-4, -9.81);
+  assert_non_null(m);
+  urLanes L;
+  assert_int_equal(ur_lanes_init(m, &L), 0);
+  urData *lane[6], *alone[6];
+  for (int i = 0; i < 6; i++) {
+    lane[i] = ur_data_new(m);
+    for (int k = 0; k < m->nv; k++) lane[i]->qvel[k] = 5.0*cos(0.9*k + i);
+    alone[i] = ur_data_new(m);
+    ur_data_copy(m, alone[i], lane[i]);
+  }
+  for (long it = 0; it < 200; it++) {
+    ur_step_lanes(m, lane, 6, &L);
+    for (int i = 0; i < 6; i++) {
+      ur_step(m, alone[i]);
+      assert_same(m, lane[i], alone[i], it);
+    }
+  }
+  for (int i = 0; i < 6; i++) {
+    assert_true(lane[i]->nstep == 200);
+    ur_data_free(lane[i]);
+    ur_data_free(alone[i]);
+  }
+  ur_lanes_free(&L);
+  ur_model_free(m);
+}
+
 // a stop request stops every lane, as it stops a run alone
 static void test_stop_lanes(void** state) {
   urModel* m = scene_build(0);
@@ -242,6 +271,7 @@ int main(void) {
     cmocka_unit_test(test_scene_rk4),
     cmocka_unit_test(test_chain_lanes),
     cmocka_unit_test(test_singular_lane),
+    cmocka_unit_test(test_more_than_lanes),
     cmocka_unit_test(test_stop_lanes),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

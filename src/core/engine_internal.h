@@ -77,7 +77,7 @@ typedef struct {
 
 int ur_lanes_init(const urModel* m, urLanes* L);
 void ur_lanes_free(urLanes* L);
-// one step of each of the n <= urNLANE runs d[0..n-1], bitwise as ur_step on each
+// one step of each of the runs d[0..n-1] (urNLANE at a time), bitwise as ur_step on each
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
 int ur_tree_active(const urModel* m, const urData* d, int tree);

@@ -400,6 +400,14 @@ static void scatter_acc(const urModel* m, const urLanes* L, urData* const* d, in
 //---------------------------------- lock-step -----------------------------------------------------
 
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
+  // more runs than lanes: urNLANE at a time
+  if (n > urNLANE) {
+    for (int c = 0; c < n; c += urNLANE) {
+      ur_step_lanes(m, d + c, n - c < urNLANE ? n - c : urNLANE, L);
+    }
+    return 0;
+  }
+
   // one run, or an integrator with stages: each run on its own
   if (n < 2 || m->opt.integrator == urINT_RK4) {
     for (int l = 0; l < n; l++) {
@@ -411,7 +419,7 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   // the runs that may step
   urData* run[urNLANE];
   int k = 0;
-  for (int l = 0; l < n && l < urNLANE; l++) {
+  for (int l = 0; l < n; l++) {
     if (ur_step_begin(m, d[l]) >= 0) {
       run[k++] = d[l];
     }
