@@ -191,7 +191,11 @@ static void test_workspace_and_errors(void** state)
 }
 
 /* the plain O(N W) scan of every pair, the definition the pruned scan must equal */
-static double brute(const double* t, const double* a, int n, double w, int* i1, int* i2)
+/* every pair; squared = 0 compares HIC values, squared = 1 compares as the pruned scan does
+   (HIC^2 = dv^5 / dt^3, ties to the smallest (i, j)) and reports the value from the best pair
+   as it does */
+static double brute(const double* t, const double* a, int n, double w, int squared, int* i1,
+                    int* i2)
 {
   static double v[NMAX];
   double best = 0;
@@ -203,40 +207,20 @@ static double brute(const double* t, const double* a, int n, double w, int* i1, 
   for (int i = 0; i < n - 1; i++) {
     for (int j = i + 1; j < n && t[j] - t[i] <= w * (1 + 1e-9); j++) {
       double dv = v[j] - v[i], dt = t[j] - t[i];
-      if (dv > 0 && dv * dv * sqrt(dv) / (dt * sqrt(dt)) > best) {
-        best = dv * dv * sqrt(dv) / (dt * sqrt(dt));
+      double h = squared ? dv * dv * dv * dv * dv / (dt * dt * dt)
+                         : dv * dv * sqrt(dv) / (dt * sqrt(dt));
+      if (dv > 0 && h > best) {
+        best = h;
         *i1 = i;
         *i2 = j;
       }
     }
+  }
+  if (squared && best > 0) {
+    double dv = v[*i2] - v[*i1], dt = t[*i2] - t[*i1];
+    best = dv * dv * sqrt(dv) / (dt * sqrt(dt));
   }
   return best;
-}
-
-/* every pair, compared as the pruned scan compares them (HIC^2 = dv^5 / dt^3, ties to the
-   smallest (i, j)), the value from the best pair as it reports it */
-static double brute2(const double* t, const double* a, int n, double w, int* i1, int* i2)
-{
-  static double v[NMAX];
-  double best2 = 0;
-  v[0] = 0;
-  for (int k = 1; k < n; k++) {
-    v[k] = v[k - 1] + 0.5 * (a[k] + a[k - 1]) * (t[k] - t[k - 1]);
-  }
-  *i1 = *i2 = 0;
-  for (int i = 0; i < n - 1; i++) {
-    for (int j = i + 1; j < n && t[j] - t[i] <= w * (1 + 1e-9); j++) {
-      double dv = v[j] - v[i], dt = t[j] - t[i];
-      if (dv > 0 && dv * dv * dv * dv * dv / (dt * dt * dt) > best2) {
-        best2 = dv * dv * dv * dv * dv / (dt * dt * dt);
-        *i1 = i;
-        *i2 = j;
-      }
-    }
-  }
-  if (best2 == 0) return 0;
-  double dv = v[*i2] - v[*i1], dt = t[*i2] - t[*i1];
-  return dv * dv * sqrt(dv) / (dt * sqrt(dt));
 }
 
 /* random multi-peak traces with negative parts, uniform and jittered times, and noise-free
@@ -276,7 +260,7 @@ static void test_pruned_equals_brute_force(void** state)
     for (int win = 0; win < 2; win++) {
       double W = win ? 0.036 : 0.015;
       int i1, i2;
-      double hb = brute(t, a, n, W, &i1, &i2);
+      double hb = brute(t, a, n, W, 0, &i1, &i2);
       urHic hp;
       assert_int_equal(ur_hic(t, a, n, W, NULL, &hp), 0);
       if (trial % 3 == 2) {
@@ -286,7 +270,7 @@ static void test_pruned_equals_brute_force(void** state)
         assert_int_equal(hp.i1, i1);
         assert_int_equal(hp.i2, i2);
       }
-      double h2 = brute2(t, a, n, W, &i1, &i2);
+      double h2 = brute(t, a, n, W, 1, &i1, &i2);
       assert_true(hp.hic == h2);
       assert_int_equal(hp.i1, i1);
       assert_int_equal(hp.i2, i2);

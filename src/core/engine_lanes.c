@@ -58,98 +58,29 @@ static inline __attribute__((always_inline)) urV4 bc4(double x) {
 #undef urSTORAGE
 
 
-// uru_invsym's Cholesky inverse (n > 3) over the vectors, the square roots lane by lane; -1 if a
-// lane's matrix is not positive definite
-static inline __attribute__((always_inline))
-int chol4(urV4* Ainv, const urV4* A, int n) {
-  urV4 L[36] = {0}, Li[36] = {0};
-  for (int j = 0; j < n; j++) {
-    urV4 s = A[n*j + j];
-    for (int k = 0; k < j; k++) {
-      s -= L[6*j + k]*L[6*j + k];
-    }
-    urV4I pos = s > 0;
-    if (!(pos[0] & pos[1] & pos[2] & pos[3])) {
-      return -1;
-    }
-    for (int l = 0; l < urNLANE; l++) {
-      L[6*j + j][l] = sqrt(s[l]);
-    }
-    for (int i = j + 1; i < n; i++) {
-      urV4 t = A[n*i + j];
-      for (int k = 0; k < j; k++) {
-        t -= L[6*i + k]*L[6*j + k];
-      }
-      L[6*i + j] = t/L[6*j + j];
-    }
-  }
-  for (int j = 0; j < n; j++) {
-    Li[6*j + j] = 1/L[6*j + j];
-    for (int i = j + 1; i < n; i++) {
-      urV4 t = bc4(0);
-      for (int k = j; k < i; k++) {
-        t -= L[6*i + k]*Li[6*k + j];
-      }
-      Li[6*i + j] = t/L[6*i + i];
-    }
-  }
-  for (int i = 0; i < n; i++) {
-    for (int j = i; j < n; j++) {
-      urV4 t = bc4(0);
-      for (int k = j; k < n; k++) {
-        t += Li[6*k + i]*Li[6*k + j];
-      }
-      Ainv[n*i + j] = t;
-      Ainv[n*j + i] = t;
-    }
-  }
-  return 0;
+// uru_invsym over the vectors (the same expressions; square roots lane by lane)
+static inline __attribute__((always_inline)) int all4(urV4I c) {
+  return c[0] & c[1] & c[2] & c[3];
 }
 
+#define urSTORAGE static inline __attribute__((always_inline))
+#define urBC(x) bc4(x)
+#define urALL(c) all4(c)
+#define urSQRT(x) ({ urV4 r_ = (x); for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]); r_; })
+#include "engine_invsym.h"
+#undef urSTORAGE
+#undef urBC
+#undef urALL
+#undef urSQRT
 
-// inverse of a joint-space inertia per lane: the closed forms of uru_invsym for n <= 3 and its
-// Cholesky beyond, over the vectors (the same expressions); if some lane's matrix is singular,
-// every lane goes through uru_invsym on its own (a failed lane gets a zero inverse and its bit
-// in L->fail)
+
+// inverse of a joint-space inertia per lane; if some lane's matrix is singular, every lane goes
+// through uru_invsym on its own (a failed lane gets a zero inverse and its bit in L->fail)
 static inline __attribute__((always_inline))
 void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
-  if (n <= 3) {
-    urV4 det;
-    if (n == 1) {
-      det = A[0];
-    } else if (n == 2) {
-      det = A[0]*A[3] - A[1]*A[2];
-    } else {
-      urV4 c0 = A[4]*A[8] - A[5]*A[7], c1 = A[5]*A[6] - A[3]*A[8], c2 = A[3]*A[7] - A[4]*A[6];
-      det = A[0]*c0 + A[1]*c1 + A[2]*c2;
-      urV4 id = 1/det;
-      Ainv[0] = c0*id;
-      Ainv[1] = (A[2]*A[7] - A[1]*A[8])*id;
-      Ainv[2] = (A[1]*A[5] - A[2]*A[4])*id;
-      Ainv[3] = c1*id;
-      Ainv[4] = (A[0]*A[8] - A[2]*A[6])*id;
-      Ainv[5] = (A[2]*A[3] - A[0]*A[5])*id;
-      Ainv[6] = c2*id;
-      Ainv[7] = (A[1]*A[6] - A[0]*A[7])*id;
-      Ainv[8] = (A[0]*A[4] - A[1]*A[3])*id;
-    }
-    if (n == 1) {
-      Ainv[0] = 1/A[0];
-    } else if (n == 2) {
-      Ainv[0] = A[3]/det;
-      Ainv[1] = -A[1]/det;
-      Ainv[2] = -A[2]/det;
-      Ainv[3] = A[0]/det;
-    }
-    urV4I ok = det != 0;
-    if (ok[0] & ok[1] & ok[2] & ok[3]) {
-      return;
-    }
-  } else if (chol4(Ainv, A, n) == 0) {
+  if (urv_invsym(Ainv, A, n) == 0) {
     return;
   }
-
-  // lane by lane
   for (int l = 0; l < urNLANE; l++) {
     double a[36], ai[36];
     for (int k = 0; k < n*n; k++) {

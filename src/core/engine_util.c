@@ -149,88 +149,17 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 #undef urSTORAGE
 
 
-// inverse of a small n x n symmetric matrix (closed forms up to 3, Cholesky beyond, which
-// needs positive definiteness); -1 if singular
-int uru_invsym(double* Ainv, const double* A, int n) {
-  // closed forms for 1 x 1 and 2 x 2
-  if (n == 1) {
-    if (!(A[0] != 0)) {
-      return -1;
-    }
-    Ainv[0] = 1/A[0];
-    return 0;
-  }
-  if (n == 2) {
-    double det = A[0]*A[3] - A[1]*A[2];
-    if (!(det != 0)) {
-      return -1;
-    }
-    Ainv[0] = A[3]/det;
-    Ainv[1] = -A[1]/det;
-    Ainv[2] = -A[2]/det;
-    Ainv[3] = A[0]/det;
-    return 0;
-  }
-  if (n == 3) {
-    double c0 = A[4]*A[8] - A[5]*A[7], c1 = A[5]*A[6] - A[3]*A[8], c2 = A[3]*A[7] - A[4]*A[6];
-    double det = A[0]*c0 + A[1]*c1 + A[2]*c2;
-    if (!(det != 0)) {
-      return -1;
-    }
-    double id = 1/det;
-    Ainv[0] = c0*id;
-    Ainv[1] = (A[2]*A[7] - A[1]*A[8])*id;
-    Ainv[2] = (A[1]*A[5] - A[2]*A[4])*id;
-    Ainv[3] = c1*id;
-    Ainv[4] = (A[0]*A[8] - A[2]*A[6])*id;
-    Ainv[5] = (A[2]*A[3] - A[0]*A[5])*id;
-    Ainv[6] = c2*id;
-    Ainv[7] = (A[1]*A[6] - A[0]*A[7])*id;
-    Ainv[8] = (A[0]*A[4] - A[1]*A[3])*id;
-    return 0;
-  }
-  // Cholesky A = L L^T, then A^-1 = L^-T L^-1 (A symmetric positive definite)
-  double L[36] = {0}, Li[36] = {0};
-  for (int j = 0; j < n; j++) {
-    double s = A[n*j + j];
-    for (int k = 0; k < j; k++) {
-      s -= L[6*j + k]*L[6*j + k];
-    }
-    if (!(s > 0)) {
-      return -1;
-    }
-    L[6*j + j] = sqrt(s);
-    for (int i = j + 1; i < n; i++) {
-      double t = A[n*i + j];
-      for (int k = 0; k < j; k++) {
-        t -= L[6*i + k]*L[6*j + k];
-      }
-      L[6*i + j] = t/L[6*j + j];
-    }
-  }
-
-  // invert the triangle
-  for (int j = 0; j < n; j++) {
-    Li[6*j + j] = 1/L[6*j + j];
-    for (int i = j + 1; i < n; i++) {
-      double t = 0;
-      for (int k = j; k < i; k++) {
-        t -= L[6*i + k]*Li[6*k + j];
-      }
-      Li[6*i + j] = t/L[6*i + i];
-    }
-  }
-
-  // A^-1 = Li^T Li
-  for (int i = 0; i < n; i++) {
-    for (int j = i; j < n; j++) {
-      double t = 0;
-      for (int k = j; k < n; k++) {
-        t += Li[6*k + i]*Li[6*k + j];
-      }
-      Ainv[n*i + j] = t;
-      Ainv[n*j + i] = t;
-    }
-  }
-  return 0;
-}
+// uru_invsym for doubles, from its template
+#define urT double
+#define urK(name) uru_##name
+#define urSTORAGE
+#define urBC(x) (x)
+#define urALL(c) (c)
+#define urSQRT(x) sqrt(x)
+#include "engine_invsym.h"
+#undef urT
+#undef urK
+#undef urSTORAGE
+#undef urBC
+#undef urALL
+#undef urSQRT
