@@ -253,6 +253,8 @@ typedef struct {
   double* qacc;                    /* nv: accelerations from the last ur_forward */
   double* qfrc;                    /* nv: passive generalised forces (restraints) */
   double* rst;                     /* nv x 2: restraint hysteresis (max +, max - deflection) */
+  double* rkin;                    /* nbody x 12: spherical restraints' deflection (rotation
+                                      vector minus x0) and its inverse right Jacobian (3x3) */
   // kinematics (per body)
   double* xpos;                    /* nbody x 3: body origin, world */
   double* xmat;                    /* nbody x 9: body orientation, world */

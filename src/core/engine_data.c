@@ -11,7 +11,7 @@
 static size_t ndoubles(const urModel* m) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, nq = (size_t)m->nq, nv = (size_t)m->nv;
   size_t ns = (size_t)m->nsensordata;
-  return nq + 5*nv + nb*(3 + 9 + 3 + 9 + 3 + 36 + 6*3 + 36 + 6 + 36 + 36 + 6 + 6 + 6)
+  return nq + 5*nv + nb*(12 + 3 + 9 + 3 + 9 + 3 + 36 + 6*3 + 36 + 6 + 36 + 36 + 6 + 6 + 6)
          + ng*12 + 4*ns + 2*nq + 8*nv;
 }
 
@@ -26,6 +26,7 @@ static void carve(const urModel* m, urData* d) {
   TAKE(qacc, nv)
   TAKE(qfrc, nv)
   TAKE(rst, 2*nv)
+  TAKE(rkin, 12*nb)
   TAKE(xpos, 3*nb)
   TAKE(xmat, 9*nb)
   TAKE(xcom, 3*nb)

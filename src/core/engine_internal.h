@@ -18,6 +18,7 @@ int uru_normalize3(double a[3]);
 void uru_normalizequat(double q[4]);
 void uru_axisangle2quat(double q[4], const double axis[3], double angle);
 void uru_quatintegrate(double q[4], const double omega[3], double dt);
+void uru_addpos(const urModel* m, double* qpos, const double* qvel, double h);
 void uru_quat2rotvec(double v[3], const double q[4]);
 void uru_rotvec_jrinv(double J[9], const double v[3]);
 
@@ -35,11 +36,14 @@ void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
 void ur_forward_pre(const urModel* m, urData* d);
-void ur_forward_forces(const urModel* m, urData* d, int broad);
+void ur_forward_forces(const urModel* m, urData* d, int lanes);
 int ur_forward_post(const urModel* m, urData* d);
 int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
+void ur_step_accept(const urModel* m, urData* d);
+int ur_step_end(const urModel* m, urData* d);
 void ur_reactions(const urModel* m, urData* d);
+void ur_restraints_kin(const urModel* m, urData* d);
 void ur_restraints(const urModel* m, urData* d);
 void ur_contacts(const urModel* m, urData* d);
 void ur_contacts_broad(const urModel* m, urData* d);
@@ -59,8 +63,9 @@ double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double 
 //---------------------------------- lanes (engine_lanes.c) --------------------------------------
 // up to urNLANE runs of one model stepped in lock-step, their poses, velocities and the
 // articulated-body algorithm computed over vectors of lanes; each run's bits are those of
-// ur_step. A lane run's S, cbias and ABA scratch (IA, U, Dinv, pA, uu) live here only: its
-// urData keeps the poses, velocities, accelerations and joint loads.
+// ur_step. A lane run's S, cbias and ABA scratch (IA, U, Dinv, pA, uu) live here only, and so
+// do Xe, Xr, cacc and freact of the bodies that no joint-load or acceleration sensor reads: its
+// urData keeps the poses, velocities, accelerations and the joint loads and accelerations read.
 
 #define urNLANE 4
 typedef double urV4 __attribute__((vector_size(4*sizeof(double))));
@@ -70,12 +75,19 @@ typedef struct {
   urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
   urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxmat, *gxpos;
   urV4* gap;                       // npair: bounding-sphere gaps (broad phase)
+  urV4* rkin;                      // nbody x 12: as urData.rkin
   urV4* energy;                    // kinetic energy of each lane ([0])
   int fail;                        // lanes whose joint-space inertia was singular (bits)
+  double* spare;                   // max(nq, nv): where a lane that does not step scatters
+  int* outb;                       // the bodies whose Xe, Xr, cacc, freact a run reads (joint
+  int nout;                        // loads: urBody.react; acceleration sensors)
   void* mem;
 } urLanes;
 
 int ur_lanes_init(const urModel* m, urLanes* L);
+// uru_sincos and uru_atan2q of urNLANE arguments at once over the vectors (tests)
+void ur_lanes_trig(const double x[urNLANE], double s[urNLANE], double c[urNLANE],
+                   const double y[urNLANE], const double w[urNLANE], double a[urNLANE]);
 void ur_lanes_free(urLanes* L);
 // one step of each of the runs d[0..n-1] (urNLANE at a time), bitwise as ur_step on each
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);

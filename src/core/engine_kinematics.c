@@ -6,10 +6,11 @@
 
 //---------------------------------- joints --------------------------------------------------------
 
-// rotation matrix about a unit axis
+// rotation matrix about a unit axis (the model's joint axes are unit): from its quaternion
 static void axisrot(double R[9], const double a[3], double ang) {
-  double q[4];
-  uru_axisangle2quat(q, a, ang);
+  double s, c;
+  uru_sincos(0.5*ang, &s, &c);
+  double q[4] = {c, s*a[0], s*a[1], s*a[2]};
   uru_quat2mat(R, q);
 }
 

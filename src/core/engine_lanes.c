@@ -105,20 +105,62 @@ void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
 #define urABA_ATTR urCLONES
 #include "engine_aba.h"
 
-// rotation about a unit axis per lane: the scalar axisrot's quaternion (uru_axisangle2quat, one
-// sincos per lane), then its matrix over the vectors
+// sincos and the first-quadrant atan2 over the vectors (engine_trig.h)
+typedef unsigned long long urV4U __attribute__((vector_size(4*sizeof(long long))));
+#define urT urV4
+#define urM urV4I
+#define urU urV4U
+#define urK(name) urv_##name
+#define urBC(x) bc4(x)
+#define urSEL(m, a, b) ((urV4)(((urV4I)(a) & (m)) | ((urV4I)(b) & ~(m))))
+#define urANY(m) ((m)[0] | (m)[1] | (m)[2] | (m)[3])
+#define urNEL urNLANE
+#define urEL(x, l) ((x)[l])
+#define urASI(x) ((urV4U)(x))
+#define urAST(i) ((urV4)(i))
+#include "engine_trig.h"
+#undef urM
+#undef urU
+#undef urSEL
+#undef urANY
+#undef urNEL
+#undef urEL
+#undef urASI
+#undef urAST
+
+// sine, cosine and atan2q of four arguments over the vectors (for tests/test_engine_trig.c)
+void ur_lanes_trig(const double x[urNLANE], double s[urNLANE], double c[urNLANE],
+                   const double y[urNLANE], const double w[urNLANE], double a[urNLANE]) {
+  urV4 xv, yv, wv, sv, cv, av;
+  memcpy(&xv, x, sizeof(xv));
+  memcpy(&yv, y, sizeof(yv));
+  memcpy(&wv, w, sizeof(wv));
+  urv_sincos(xv, &sv, &cv);
+  av = urv_atan2q(yv, wv);
+  memcpy(s, &sv, sizeof(sv));
+  memcpy(c, &cv, sizeof(cv));
+  memcpy(a, &av, sizeof(av));
+}
+
+// rotation about a unit axis over the vectors: the scalar axisrot's quaternion and matrix
 static inline __attribute__((always_inline))
 void axisrot4(urV4 R[9], const urV4 a[3], const urV4* ang) {
-  urV4 q[4];
-  for (int l = 0; l < urNLANE; l++) {
-    double ax[3] = {a[0][l], a[1][l], a[2][l]}, ql[4];
-    uru_axisangle2quat(ql, ax, (*ang)[l]);
-    for (int k = 0; k < 4; k++) {
-      q[k][l] = ql[k];
-    }
-  }
+  urV4 s, c;
+  urv_sincos(bc4(0.5)*(*ang), &s, &c);
+  urV4 q[4] = {c, s*a[0], s*a[1], s*a[2]};
   urv_quat2mat(R, q);
 }
+
+// quatintegrate, quat2rotvec and rotvec_jrinv over the vectors (engine_quat.h)
+#define urM urV4I
+#define urSTORAGE static inline __attribute__((always_inline))
+#define urSEL(m, a, b) ((urV4)(((urV4I)(a) & (m)) | ((urV4I)(b) & ~(m))))
+#define urSQRT(x) ({ urV4 r_ = (x); for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]); r_; })
+#include "engine_quat.h"
+#undef urM
+#undef urSTORAGE
+#undef urSEL
+#undef urSQRT
 
 #define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
 #define urKIN_ATTR urCLONES
@@ -183,6 +225,34 @@ static void broad4(const urModel* m, urLanes* L) {
   }
 }
 
+// ur_restraints_kin over the vectors
+urCLONES
+static void restraints_kin4(const urModel* m, urLanes* L) {
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    if (b->jtype == urJNT_SPHERICAL &&
+        (b->rst[0].active || b->rst[1].active || b->rst[2].active)) {
+      urV4* x = L->rkin + 12*i;
+      urv_quat2rotvec(x, L->qpos + b->qadr);
+      for (int k = 0; k < 3; k++) {
+        x[k] = x[k] - bc4(b->rst[k].x0);
+      }
+      urv_rotvec_jrinv(x + 3, x);
+    }
+  }
+}
+
+
+// the update of ur_step_euler over the vectors: velocities, then positions with them (addpos)
+urCLONES
+static void euler4(const urModel* m, urLanes* L) {
+  urV4 h = bc4(m->opt.dt);
+  for (int k = 0; k < m->nv; k++) {
+    L->qvel[k] += h*L->qacc[k];
+  }
+  urv_addpos(m, L->qpos, L->qvel, m->opt.dt);
+}
+
 //---------------------------------- lane data -----------------------------------------------------
 
 int ur_lanes_init(const urModel* m, urLanes* L) {
@@ -190,19 +260,31 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
   size_t nq = (size_t)m->nq;
   size_t ng = (size_t)m->ngeom, np = (size_t)m->npair;
-  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3) + 2*nv + 1 + nq + nv + 12*ng + np;
+  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3 + 12) + 2*nv + 1 + nq + nv + 12*ng + np;
   L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1)*sizeof(urV4));
-  if (!L->mem) {
+  L->spare = malloc((nq > nv ? nq : nv)*sizeof(double) + 1);
+  L->outb = malloc(nb*sizeof(int) + 1);
+  if (!L->mem || !L->spare || !L->outb) {
+    ur_lanes_free(L);
     return -1;
+  }
+  for (int i = 0; i < m->nbody; i++) {
+    int read = m->body[i].react;
+    for (int k = 0; k < m->nsensor; k++) {
+      read |= m->sensor[k].type == urSENS_ACCEL && m->sensor[k].obj == i;
+    }
+    if (read) {
+      L->outb[L->nout++] = i;
+    }
   }
   memset(L->mem, 0, n*sizeof(urV4));
   urV4* p = L->mem;
   urV4** f[] = {&L->S, &L->IA, &L->U, &L->Dinv, &L->pA, &L->uu, &L->cbias, &L->cvel, &L->cacc,
                 &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy,
                 &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom, &L->gxmat, &L->gxpos,
-                &L->gap};
+                &L->gap, &L->rkin};
   size_t len[] = {36*nb, 36*nb, 36*nb, 36*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 9*nb,
-                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb, 9*ng, 3*ng, np};
+                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb, 9*ng, 3*ng, np, 12*nb};
   for (size_t k = 0; k < sizeof(len)/sizeof(len[0]); k++) {
     *f[k] = p;
     p += len[k];
@@ -213,6 +295,8 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
 
 void ur_lanes_free(urLanes* L) {
   free(L->mem);
+  free(L->spare);
+  free(L->outb);
   memset(L, 0, sizeof(*L));
 }
 
@@ -279,6 +363,13 @@ static void scatter(double* const* x, int nl, const urV4* v, size_t n) {
     for (int l_ = 0; l_ < n; l_++) x_[l_] = d[l_]->field;                          \
     scatter(x_, n, L->field, (size_t)(len));                                       \
   } while (0)
+// the same into the lanes whose bit is set in ok; the others into L->spare
+#define SCATTER_OK(field, len, ok)                                                 \
+  do {                                                                             \
+    double* x_[urNLANE];                                                           \
+    for (int l_ = 0; l_ < n; l_++) x_[l_] = (ok) & (1 << l_) ? d[l_]->field : L->spare; \
+    scatter(x_, n, L->field, (size_t)(len));                                       \
+  } while (0)
 
 // the state, for the poses and velocities
 static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) {
@@ -293,14 +384,24 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
   SCATTER(xmat, 9*nb);
   SCATTER(xpos, 3*nb);
   SCATTER(xcom, 3*nb);
-  SCATTER(Xe, 9*nb);
-  SCATTER(Xr, 3*nb);
   SCATTER(cvel, 6*nb);
+  for (int j = 0; j < L->nout; j++) {
+    int i = L->outb[j];
+    SCATTER(Xe + 9*i, 9);
+    SCATTER(Xr + 3*i, 3);
+  }
   SCATTER(gxmat, 9*ng);
   SCATTER(gxpos, 3*ng);
   for (int l = 0; l < n; l++) {
     for (int i = 0; i < m->npair; i++) {
       d[l]->pair[i].depth = -L->gap[i][l];
+    }
+  }
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    if (b->jtype == urJNT_SPHERICAL &&
+        (b->rst[0].active || b->rst[1].active || b->rst[2].active)) {
+      SCATTER(rkin + 12*i, 12);
     }
   }
 }
@@ -316,16 +417,24 @@ static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n)
 
 // the outputs of the ABA back to each lane's data
 static void scatter_acc(const urModel* m, const urLanes* L, urData* const* d, int n) {
-  size_t nb = (size_t)m->nbody;
   SCATTER(qacc, m->nv);
-  SCATTER(cacc, 6*nb);
-  SCATTER(freact, 6*nb);
+  for (int j = 0; j < L->nout; j++) {
+    int i = L->outb[j];
+    SCATTER(cacc + 6*i, 6);
+    SCATTER(freact + 6*i, 6);
+  }
   for (int l = 0; l < n; l++) {
     d[l]->energy = L->energy[0][l];
     if (L->fail & (1 << l)) {
       ur_set_status(d[l], urSTAT_NONFINITE, "singular joint-space inertia");
     }
   }
+}
+
+// the updated state back to the lanes in ok (bits)
+static void scatter_state(const urModel* m, urLanes* L, urData* const* d, int n, int ok) {
+  SCATTER_OK(qpos, m->nq, ok);
+  SCATTER_OK(qvel, m->nv, ok);
 }
 
 //---------------------------------- lock-step -----------------------------------------------------
@@ -365,9 +474,10 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   urv_kinematics_geoms(m, L);
   urv_velocities(m, L);
   broad4(m, L);
+  restraints_kin4(m, L);
   scatter_kin(m, L, run, k);
   for (int l = 0; l < k; l++) {
-    ur_forward_forces(m, run[l], 0);
+    ur_forward_forces(m, run[l], 1);
   }
 
   // accelerations for all lanes at once
@@ -375,10 +485,20 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   urv_aba(m, L);
   scatter_acc(m, L, run, k);
 
-  // the rest of each step
+  // the rest of each step: joint loads, sensors and bookkeeping lane by lane, the update over
+  // the vectors (ur_step_euler), the end checks lane by lane
+  int ok = 0;
   for (int l = 0; l < k; l++) {
     if (ur_forward_post(m, run[l]) >= 0) {
-      ur_step_euler(m, run[l]);
+      ur_step_accept(m, run[l]);
+      ok |= 1 << l;
+    }
+  }
+  euler4(m, L);
+  scatter_state(m, L, run, k, ok);
+  for (int l = 0; l < k; l++) {
+    if (ok & (1 << l)) {
+      ur_step_end(m, run[l]);
     }
   }
   return 0;

@@ -81,13 +81,41 @@ static int deflection(const urModel* m, const urData* d, int i, double x[3]) {
 
 //---------------------------------- passes --------------------------------------------------------
 
-// generalised restraint forces into d->qfrc (subtracted)
+// whether body i has a spherical joint with a restraint
+static int spherical_restrained(const urBody* b) {
+  return b->jtype == urJNT_SPHERICAL && (b->rst[0].active || b->rst[1].active || b->rst[2].active);
+}
+
+
+// the deflections and inverse Jacobians of the spherical restraints into d->rkin (the lanes
+// compute the same over vectors: engine_lanes.c)
+void ur_restraints_kin(const urModel* m, urData* d) {
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    if (spherical_restrained(b)) {
+      double* x = d->rkin + 12*i;
+      uru_quat2rotvec(x, d->qpos + b->qadr);
+      for (int k = 0; k < 3; k++) {
+        x[k] -= b->rst[k].x0;
+      }
+      uru_rotvec_jrinv(x + 3, x);
+    }
+  }
+}
+
+
+// generalised restraint forces into d->qfrc (subtracted); the spherical ones need
+// ur_restraints_kin
 void ur_restraints(const urModel* m, urData* d) {
   for (int i = 0; i < m->nbody; i++) {
     const urBody* b = m->body + i;
+    if (!(b->rst[0].active || b->rst[1].active || b->rst[2].active)) {
+      continue;
+    }
     double x[3], f[3] = {0, 0, 0};
-    int n = deflection(m, d, i, x);
-    if (!n || !(b->rst[0].active || b->rst[1].active || b->rst[2].active)) {
+    int n = b->jtype == urJNT_SPHERICAL ? 3 : deflection(m, d, i, x);
+    const double* xs = b->jtype == urJNT_SPHERICAL ? d->rkin + 12*i : x;
+    if (!n) {
       continue;
     }
     const double* qd = d->qvel + b->vadr;
@@ -97,18 +125,17 @@ void ur_restraints(const urModel* m, urData* d) {
       if (b->rst[k].active) {
         const double* st = d->rst + 2*(b->vadr + k);
         if (b->jtype == urJNT_SPHERICAL) {
-          f[k] = rforce(b->rst + k, x[k], 0, st);
+          f[k] = rforce(b->rst + k, xs[k], 0, st);
         } else {
-          f[k] = rforce(b->rst + k, x[k], qd[k], st);
+          f[k] = rforce(b->rst + k, xs[k], qd[k], st);
         }
       }
     }
 
     // spherical: map rotation-vector forces to body torques, damping on omega
     if (b->jtype == urJNT_SPHERICAL) {
-      double J[9], t[3];
-      uru_rotvec_jrinv(J, x);
-      uru_mulmat3tvec(t, J, f);
+      double t[3];
+      uru_mulmat3tvec(t, xs + 3, f);
       for (int k = 0; k < 3; k++) {
         f[k] = t[k] + (b->rst[k].active ? b->rst[k].c*qd[k] : 0);
       }

@@ -47,13 +47,13 @@ const char* ur_status_str(int status) {
 void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics(m, d);
   ur_velocities(m, d);
-  ur_forward_forces(m, d, 1);
+  ur_forward_forces(m, d, 0);
 }
 
 
-// the applied forces of the forward pipeline (needs the poses and velocities; broad: run the
-// contacts' broad phase, else the pair depths hold it already)
-void ur_forward_forces(const urModel* m, urData* d, int broad) {
+// the applied forces of the forward pipeline (needs the poses and velocities; lanes: the lanes
+// computed the contacts' broad phase (pair depths) and the restraint kinematics already)
+void ur_forward_forces(const urModel* m, urData* d, int lanes) {
   memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
   for (int i = 0; i < m->nbody; i++) {
@@ -66,10 +66,11 @@ void ur_forward_forces(const urModel* m, urData* d, int broad) {
       ur_apply_force(m, d, i, f, d->xcom + 3*i);
     }
   }
-  ur_restraints(m, d);
-  if (broad) {
+  if (!lanes) {
+    ur_restraints_kin(m, d);
     ur_contacts_broad(m, d);
   }
+  ur_restraints(m, d);
   ur_contacts_narrow(m, d);
   ur_airbags(m, d);
 }
@@ -108,28 +109,7 @@ static void addpos(const urModel* m, double* qout, const double* q0, const doubl
   if (qout != q0) {
     memcpy(qout, q0, (size_t)m->nq*sizeof(double));
   }
-  for (int i = 0; i < m->nbody; i++) {
-    const urBody* b = m->body + i;
-    double* q = qout + b->qadr;
-    const double* v = dq + b->vadr;
-    switch (b->jtype) {
-    case urJNT_FREE:
-      for (int k = 0; k < 3; k++) {
-        q[k] += h*v[k];
-      }
-      uru_quatintegrate(q + 3, v + 3, h);
-      break;
-    case urJNT_SPHERICAL:
-      uru_quatintegrate(q, v, h);
-      break;
-    case urJNT_FIXED:
-      break;
-    default:
-      for (int k = 0; k < b->nv; k++) {
-        q[k] += h*v[k];
-      }
-    }
-  }
+  uru_addpos(m, qout, dq, h);
 }
 
 
@@ -249,7 +229,7 @@ static void checkend(const urModel* m, urData* d) {
 
 
 // bookkeeping on an accepted state: histories, peaks, contact activity
-static void accept(const urModel* m, urData* d) {
+void ur_step_accept(const urModel* m, urData* d) {
   ur_outputs(m, d);
   ur_restraints_commit(m, d);
   ur_contacts_commit(m, d);
@@ -264,7 +244,7 @@ static void accept(const urModel* m, urData* d) {
 
 
 // after the update: advance time, check the state and the end of the run
-static int step_end(const urModel* m, urData* d) {
+int ur_step_end(const urModel* m, urData* d) {
   d->time += m->opt.dt;
   d->nstep++;
   checkstate(m, d);
@@ -291,12 +271,12 @@ int ur_step_begin(const urModel* m, urData* d) {
 // velocities first, positions with the new velocities, then the state checks
 int ur_step_euler(const urModel* m, urData* d) {
   double h = m->opt.dt;
-  accept(m, d);
+  ur_step_accept(m, d);
   for (int k = 0; k < m->nv; k++) {
     d->qvel[k] += h*d->qacc[k];
   }
   addpos(m, d->qpos, d->qpos, d->qvel, h);
-  return step_end(m, d);
+  return ur_step_end(m, d);
 }
 
 
@@ -314,7 +294,7 @@ int ur_step(const urModel* m, urData* d) {
   if (m->opt.integrator != urINT_RK4) {
     return ur_step_euler(m, d);
   }
-  accept(m, d);
+  ur_step_accept(m, d);
 
   {
     // RK4; scratch: q0 | v0 | dq sum | a sum | stage dq | stage offset
@@ -358,7 +338,7 @@ int ur_step(const urModel* m, urData* d) {
       d->qvel[k] = v0[k] + h/6*as[k];
     }
   }
-  return step_end(m, d);
+  return ur_step_end(m, d);
 }
 
 //---------------------------------- runs ----------------------------------------------------------

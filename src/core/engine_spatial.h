@@ -43,6 +43,18 @@ static inline void urK(mulmat3)(urT r[9], const urT A[9], const urT B[9]) {
   memcpy(r, t, sizeof(t));
 }
 
+// quaternion product r = a b (w, x, y, z)
+static inline void urK(mulquat)(urT r[4], const urT a[4], const urT b[4]) {
+  urT t0 = a[0]*b[0] - a[1]*b[1] - a[2]*b[2] - a[3]*b[3];
+  urT t1 = a[0]*b[1] + a[1]*b[0] + a[2]*b[3] - a[3]*b[2];
+  urT t2 = a[0]*b[2] - a[1]*b[3] + a[2]*b[0] + a[3]*b[1];
+  urT t3 = a[0]*b[3] + a[1]*b[2] - a[2]*b[1] + a[3]*b[0];
+  r[0] = t0;
+  r[1] = t1;
+  r[2] = t2;
+  r[3] = t3;
+}
+
 static inline void urK(quat2mat)(urT R[9], const urT q[4]) {
   urT w = q[0], x = q[1], y = q[2], z = q[3];
   R[0] = 1 - 2*(y*y + z*z);

@@ -7,12 +7,6 @@
 
 //---------------------------------- 3-vectors and 3x3 matrices ----------------------------------
 
-
-
-
-
-
-
 int uru_normalize3(double a[3]) {
   double n = uru_norm3(a);
   if (n <= 0 || !isfinite(n)) {
@@ -25,20 +19,7 @@ int uru_normalize3(double a[3]) {
 }
 
 
-
-
-
-
-
-
-
-
-
 //---------------------------------- quaternions (w, x, y, z) -------------------------------------
-
-
-
-
 
 void uru_normalizequat(double q[4]) {
   double n = sqrt(q[0]*q[0] + q[1]*q[1] + q[2]*q[2] + q[3]*q[3]);
@@ -55,69 +36,33 @@ void uru_normalizequat(double q[4]) {
 
 
 void uru_axisangle2quat(double q[4], const double axis[3], double angle) {
-  double a[3] = {axis[0], axis[1], axis[2]};
-  double s = sin(0.5*angle);
+  double a[3] = {axis[0], axis[1], axis[2]}, s, c;
+  uru_sincos(0.5*angle, &s, &c);
   uru_normalize3(a);
-  q[0] = cos(0.5*angle);
+  q[0] = c;
   q[1] = s*a[0];
   q[2] = s*a[1];
   q[3] = s*a[2];
 }
 
 
-// q <- q * exp(omega dt / 2), omega in the local frame
-void uru_quatintegrate(double q[4], const double omega[3], double dt) {
-  double w = uru_norm3(omega);
-  double th = w*dt, dq[4];
-  if (th < 1e-300) {
-    return;
-  }
-  double s = sin(0.5*th)/w;
-  dq[0] = cos(0.5*th);
-  dq[1] = s*omega[0];
-  dq[2] = s*omega[1];
-  dq[3] = s*omega[2];
-  uru_mulquat(q, q, dq);
-  uru_normalizequat(q);
-}
+// uru_quatintegrate, uru_quat2rotvec and uru_rotvec_jrinv for doubles, from their template
+#define urT double
+#define urM int
+#define urK(name) uru_##name
+#define urSTORAGE
+#define urBC(x) (x)
+#define urSEL(m, a, b) ((m) ? (a) : (b))
+#define urSQRT(x) sqrt(x)
+#include "engine_quat.h"
+#undef urT
+#undef urM
+#undef urK
+#undef urSTORAGE
+#undef urBC
+#undef urSEL
+#undef urSQRT
 
-
-// rotation vector (axis * angle, angle in [0, pi]) of a unit quaternion
-void uru_quat2rotvec(double v[3], const double q[4]) {
-  double w = q[0], x = q[1], y = q[2], z = q[3];
-  if (w < 0) {
-    w = -w;
-    x = -x;
-    y = -y;
-    z = -z;
-  }
-  double s = sqrt(x*x + y*y + z*z);
-  double ang = 2*atan2(s, w);
-  double f = s > 1e-12 ? ang/s : 2.0/(w > 0 ? w : 1.0);
-  v[0] = f*x;
-  v[1] = f*y;
-  v[2] = f*z;
-}
-
-
-// inverse right Jacobian of SO(3): d(rotvec)/dt = Jrinv * omega_local
-void uru_rotvec_jrinv(double J[9], const double v[3]) {
-  double th = uru_norm3(v), c2;
-  if (th < 1e-4) {
-    c2 = 1.0/12.0 + th*th/720.0;
-  } else {
-    c2 = 1.0/(th*th) - (1 + cos(th))/(2*th*sin(th));
-  }
-  double K[9] = {0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0}, K2[9];
-  uru_mulmat3(K2, K, K);
-  urUNROLL
-  for (int i = 0; i < 9; i++) {
-    J[i] = 0.5*K[i] + c2*K2[i];
-  }
-  J[0] += 1;
-  J[4] += 1;
-  J[8] += 1;
-}
 
 //---------------------------------- spatial algebra -----------------------------------------------
 

@@ -4,6 +4,7 @@
 #define UASRISK_ENGINE_UTIL_INLINE_H
 
 #include <math.h>
+#include <string.h>
 
 static inline double uru_dot3(const double a[3], const double b[3]) {
   return a[0]*b[0] + a[1]*b[1] + a[2]*b[2];
@@ -46,15 +47,6 @@ static inline void uru_mulmat3tb(double r[9], const double A[9], const double B[
   memcpy(r, t, sizeof(t));
 }
 
-static inline void uru_mulquat(double r[4], const double a[4], const double b[4]) {
-  double t[4];
-  t[0] = a[0]*b[0] - a[1]*b[1] - a[2]*b[2] - a[3]*b[3];
-  t[1] = a[0]*b[1] + a[1]*b[0] + a[2]*b[3] - a[3]*b[2];
-  t[2] = a[0]*b[2] - a[1]*b[3] + a[2]*b[0] + a[3]*b[1];
-  t[3] = a[0]*b[3] + a[1]*b[2] - a[2]*b[1] + a[3]*b[0];
-  memcpy(r, t, sizeof(t));
-}
-
 // motion vector child -> parent: w = E^T w', v = E^T v' + p x w
 static inline void uru_xmotion_inv(double r[6], const double E[9], const double p[3], const double v[6]) {
   double w[3], l[3], t[3];
@@ -68,5 +60,42 @@ static inline void uru_xmotion_inv(double r[6], const double E[9], const double 
   r[4] = l[1] + t[1];
   r[5] = l[2] + t[2];
 }
+
+// sincos and the first-quadrant atan2 for doubles (uru_sincos, uru_atan2q), from their template
+static inline unsigned long long uru_asi(double x) {
+  unsigned long long i;
+  memcpy(&i, &x, sizeof(i));
+  return i;
+}
+
+static inline double uru_ast(unsigned long long i) {
+  double x;
+  memcpy(&x, &i, sizeof(x));
+  return x;
+}
+
+#define urT double
+#define urM int
+#define urU unsigned long long
+#define urK(name) uru_##name
+#define urBC(x) (x)
+#define urSEL(m, a, b) ((m) ? (a) : (b))
+#define urANY(m) (m)
+#define urNEL 1
+#define urEL(x, l) (x)
+#define urASI(x) uru_asi(x)
+#define urAST(i) uru_ast(i)
+#include "engine_trig.h"
+#undef urT
+#undef urM
+#undef urU
+#undef urK
+#undef urBC
+#undef urSEL
+#undef urANY
+#undef urNEL
+#undef urEL
+#undef urASI
+#undef urAST
 
 #endif
