@@ -214,6 +214,10 @@ typedef struct {
   urSensor* sensor;                /* nsensor */
   urParam* param;                  /* nparam */
   double* qpos0;                   /* nq: reference configuration */
+  // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
+  // an active restraint, with an unloading (hysteresis) curve, whose reaction is needed (react)
+  int *grav, *rstb, *hyst, *reactb;
+  int ngrav, nrstb, nhyst, nreactb;
   char err[urMSGLEN];              /* last builder / compile error */
 } urModel;
 

@@ -36,10 +36,8 @@
 // freact is left as the first pass of ur_aba wrote it).
 void ur_reactions(const urModel* m, urData* d) {
   // net force of each body: I a + v x* I v - fext
-  for (int i = 0; i < m->nbody; i++) {
-    if (!m->body[i].react) {
-      continue;
-    }
+  for (int j = 0; j < m->nreactb; j++) {
+    int i = m->reactb[j];
     double Ia[6];
     double* f = d->freact + 6*i;
     uru_mul6(Ia, m->body[i].sinert, d->cacc + 6*i);
@@ -49,9 +47,10 @@ void ur_reactions(const urModel* m, urData* d) {
   }
 
   // children transmit through their parents
-  for (int i = m->nbody - 1; i >= 0; i--) {
+  for (int j = m->nreactb - 1; j >= 0; j--) {
+    int i = m->reactb[j];
     int p = m->body[i].parent;
-    if (p >= 0 && m->body[i].react && m->body[p].react) {
+    if (p >= 0 && m->body[p].react) {
       double t[6];
       uru_xforce_t(t, d->Xe + 9*i, d->Xr + 3*i, d->freact + 6*i);
       for (int k = 0; k < 6; k++) {

@@ -228,10 +228,10 @@ static void broad4(const urModel* m, urLanes* L) {
 // ur_restraints_kin over the vectors
 urCLONES
 static void restraints_kin4(const urModel* m, urLanes* L) {
-  for (int i = 0; i < m->nbody; i++) {
+  for (int j = 0; j < m->nrstb; j++) {
+    int i = m->rstb[j];
     const urBody* b = m->body + i;
-    if (b->jtype == urJNT_SPHERICAL &&
-        (b->rst[0].active || b->rst[1].active || b->rst[2].active)) {
+    if (b->jtype == urJNT_SPHERICAL) {
       urV4* x = L->rkin + 12*i;
       urv_quat2rotvec(x, L->qpos + b->qadr);
       for (int k = 0; k < 3; k++) {
@@ -397,10 +397,9 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
       d[l]->pair[i].depth = -L->gap[i][l];
     }
   }
-  for (int i = 0; i < m->nbody; i++) {
-    const urBody* b = m->body + i;
-    if (b->jtype == urJNT_SPHERICAL &&
-        (b->rst[0].active || b->rst[1].active || b->rst[2].active)) {
+  for (int j = 0; j < m->nrstb; j++) {
+    int i = m->rstb[j];
+    if (m->body[i].jtype == urJNT_SPHERICAL) {
       SCATTER(rkin + 12*i, 12);
     }
   }

@@ -100,6 +100,7 @@ void ur_model_free(urModel* m) {
   free(m->sensor);
   free(m->param);
   free(m->qpos0);
+  free(m->grav);
   free(m);
 }
 
@@ -485,6 +486,33 @@ int ur_model_compile(urModel* m) {
     urBody* b = m->body + i;
     if (b->parent >= 0 && m->body[b->parent].react) {
       b->react = 1;
+    }
+  }
+
+  // the body lists of the per-step loops (one block: grav, then rstb, hyst, reactb)
+  free(m->grav);
+  m->grav = malloc(4*(size_t)(m->nbody ? m->nbody : 1)*sizeof(int));
+  if (!m->grav) {
+    return fail(m, "out of memory", NULL);
+  }
+  m->rstb = m->grav + m->nbody;
+  m->hyst = m->rstb + m->nbody;
+  m->reactb = m->hyst + m->nbody;
+  m->ngrav = m->nrstb = m->nhyst = m->nreactb = 0;
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    const urRestraint* r = b->rst;
+    if (b->gravity != 1) {
+      m->grav[m->ngrav++] = i;
+    }
+    if (b->jtype != urJNT_FREE && (r[0].active || r[1].active || r[2].active)) {
+      m->rstb[m->nrstb++] = i;
+    }
+    if (b->jtype != urJNT_FREE && (r[0].unload.n > 0 || r[1].unload.n > 0 || r[2].unload.n > 0)) {
+      m->hyst[m->nhyst++] = i;
+    }
+    if (b->react) {
+      m->reactb[m->nreactb++] = i;
     }
   }
   m->compiled = 1;

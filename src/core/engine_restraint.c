@@ -81,18 +81,13 @@ static int deflection(const urModel* m, const urData* d, int i, double x[3]) {
 
 //---------------------------------- passes --------------------------------------------------------
 
-// whether body i has a spherical joint with a restraint
-static int spherical_restrained(const urBody* b) {
-  return b->jtype == urJNT_SPHERICAL && (b->rst[0].active || b->rst[1].active || b->rst[2].active);
-}
-
-
 // the deflections and inverse Jacobians of the spherical restraints into d->rkin (the lanes
 // compute the same over vectors: engine_lanes.c)
 void ur_restraints_kin(const urModel* m, urData* d) {
-  for (int i = 0; i < m->nbody; i++) {
+  for (int j = 0; j < m->nrstb; j++) {
+    int i = m->rstb[j];
     const urBody* b = m->body + i;
-    if (spherical_restrained(b)) {
+    if (b->jtype == urJNT_SPHERICAL) {
       double* x = d->rkin + 12*i;
       uru_quat2rotvec(x, d->qpos + b->qadr);
       for (int k = 0; k < 3; k++) {
@@ -107,11 +102,9 @@ void ur_restraints_kin(const urModel* m, urData* d) {
 // generalised restraint forces into d->qfrc (subtracted); the spherical ones need
 // ur_restraints_kin
 void ur_restraints(const urModel* m, urData* d) {
-  for (int i = 0; i < m->nbody; i++) {
+  for (int j = 0; j < m->nrstb; j++) {
+    int i = m->rstb[j];
     const urBody* b = m->body + i;
-    if (!(b->rst[0].active || b->rst[1].active || b->rst[2].active)) {
-      continue;
-    }
     double x[3], f[3] = {0, 0, 0};
     int n = b->jtype == urJNT_SPHERICAL ? 3 : deflection(m, d, i, x);
     const double* xs = b->jtype == urJNT_SPHERICAL ? d->rkin + 12*i : x;
@@ -149,11 +142,9 @@ void ur_restraints(const urModel* m, urData* d) {
 
 // record the extreme deflections reached (accepted steps only)
 void ur_restraints_commit(const urModel* m, urData* d) {
-  for (int i = 0; i < m->nbody; i++) {
+  for (int j = 0; j < m->nhyst; j++) {
+    int i = m->hyst[j];
     const urBody* b = m->body + i;
-    if (b->rst[0].unload.n <= 0 && b->rst[1].unload.n <= 0 && b->rst[2].unload.n <= 0) {
-      continue;
-    }
     double x[3];
     int n = deflection(m, d, i, x);
     for (int k = 0; k < n; k++) {

@@ -56,15 +56,14 @@ void ur_forward_pre(const urModel* m, urData* d) {
 void ur_forward_forces(const urModel* m, urData* d, int lanes) {
   memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
-  for (int i = 0; i < m->nbody; i++) {
+  for (int j = 0; j < m->ngrav; j++) {
+    int i = m->grav[j];
     const urBody* b = m->body + i;
-    if (b->gravity != 1) {
-      double f[3];
-      for (int k = 0; k < 3; k++) {
-        f[k] = -(1 - b->gravity)*b->mass*m->opt.gravity[k];
-      }
-      ur_apply_force(m, d, i, f, d->xcom + 3*i);
+    double f[3];
+    for (int k = 0; k < 3; k++) {
+      f[k] = -(1 - b->gravity)*b->mass*m->opt.gravity[k];
     }
+    ur_apply_force(m, d, i, f, d->xcom + 3*i);
   }
   if (!lanes) {
     ur_restraints_kin(m, d);
