@@ -1,12 +1,13 @@
 /* engine_lanes.c: up to urNLANE runs of one model stepped in lock-step. Their joint transforms,
- * body and ellipsoid poses, velocities, contact broad phase and articulated-body algorithm are
- * computed once over vectors of lanes (engine_kin.h and engine_aba.h instantiated for urV4).
- * Every lane takes the same path through the tree, so the vector code is the scalar code with
- * each operation done for all lanes at once: each run's bits are those of ur_step on its own.
- * The per-run parts (restraints, contact narrow phase and laws, airbags, joint loads, sensors,
- * integration, end of run) stay scalar, fed by 4x4 transposes. On x86-64 the vector kernels are
- * also compiled for AVX2 and picked at load time; both evaluate the same IEEE operations (no
- * contraction: ISO C mode), so the bits do not depend on the machine either. */
+ * body and ellipsoid poses, velocities, contact broad phase, spherical restraints' kinematics,
+ * articulated-body algorithm and Euler update are computed once over vectors of lanes
+ * (engine_kin.h, engine_aba.h, engine_quat.h and engine_trig.h instantiated for urV4). Every
+ * lane takes the same path through the tree, so the vector code is the scalar code with each
+ * operation done for all lanes at once: each run's bits are those of ur_step on its own. The
+ * per-run parts (restraint forces, contact narrow phase and laws, airbags, joint loads,
+ * sensors, bookkeeping, end of run) stay scalar, fed by 4x4 transposes. On x86-64 the vector
+ * kernels are also compiled for AVX2 and picked at load time; both evaluate the same IEEE
+ * operations (no contraction: ISO C mode), so the bits do not depend on the machine either. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
