@@ -19,6 +19,7 @@ void uru_normalizequat(double q[4]);
 void uru_axisangle2quat(double q[4], const double axis[3], double angle);
 void uru_quatintegrate(double q[4], const double omega[3], double dt);
 void uru_addpos(const urModel* m, double* qpos, const double* qvel, double h);
+void uru_restraints_kin(const urModel* m, const double* qpos, double* rkin);
 void uru_quat2rotvec(double v[3], const double q[4]);
 void uru_rotvec_jrinv(double J[9], const double v[3]);
 

@@ -229,18 +229,7 @@ static void broad4(const urModel* m, urLanes* L) {
 // ur_restraints_kin over the vectors
 urCLONES
 static void restraints_kin4(const urModel* m, urLanes* L) {
-  for (int j = 0; j < m->nrstb; j++) {
-    int i = m->rstb[j];
-    const urBody* b = m->body + i;
-    if (b->jtype == urJNT_SPHERICAL) {
-      urV4* x = L->rkin + 12*i;
-      urv_quat2rotvec(x, L->qpos + b->qadr);
-      for (int k = 0; k < 3; k++) {
-        x[k] = x[k] - bc4(b->rst[k].x0);
-      }
-      urv_rotvec_jrinv(x + 3, x);
-    }
-  }
+  urv_restraints_kin(m, L->qpos, L->rkin);
 }
 
 

@@ -1,5 +1,5 @@
-/* engine_quat.h: the quaternion maps of the integrators and the spherical restraints, and the
- * integrators' position update, as a template like engine_spatial.h, branch-free (a condition
+/* engine_quat.h: the quaternion maps of the integrators and the spherical restraints, the
+ * integrators' position update and the restraints' kinematics, as a template like engine_spatial.h, branch-free (a condition
  * picks between both results), so that lanes give each run the bits of its scalar call.
  * Parameters: urT, urM, urK(name), urSTORAGE the linkage, urBC(x), urSEL(m, a, b) and urSQRT(x)
  * as in engine_trig.h and engine_invsym.h; uses the instance's sincos and atan2q
@@ -77,6 +77,24 @@ urSTORAGE void urK(addpos)(const urModel* m, urT* qpos, const urT* qvel, double 
       for (int k = 0; k < b->nv; k++) {
         q[k] += urBC(h)*v[k];
       }
+    }
+  }
+}
+
+
+// the spherical restraints' deflections (rotation vector minus x0) and inverse right Jacobians
+// from the coordinates qpos into rkin (12 per body: urData.rkin)
+urSTORAGE void urK(restraints_kin)(const urModel* m, const urT* qpos, urT* rkin) {
+  for (int j = 0; j < m->nrstb; j++) {
+    int i = m->rstb[j];
+    const urBody* b = m->body + i;
+    if (b->jtype == urJNT_SPHERICAL) {
+      urT* x = rkin + 12*i;
+      urK(quat2rotvec)(x, qpos + b->qadr);
+      for (int k = 0; k < 3; k++) {
+        x[k] = x[k] - urBC(b->rst[k].x0);
+      }
+      urK(rotvec_jrinv)(x + 3, x);
     }
   }
 }

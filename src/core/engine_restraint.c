@@ -84,18 +84,7 @@ static int deflection(const urModel* m, const urData* d, int i, double x[3]) {
 // the deflections and inverse Jacobians of the spherical restraints into d->rkin (the lanes
 // compute the same over vectors: engine_lanes.c)
 void ur_restraints_kin(const urModel* m, urData* d) {
-  for (int j = 0; j < m->nrstb; j++) {
-    int i = m->rstb[j];
-    const urBody* b = m->body + i;
-    if (b->jtype == urJNT_SPHERICAL) {
-      double* x = d->rkin + 12*i;
-      uru_quat2rotvec(x, d->qpos + b->qadr);
-      for (int k = 0; k < 3; k++) {
-        x[k] -= b->rst[k].x0;
-      }
-      uru_rotvec_jrinv(x + 3, x);
-    }
-  }
+  uru_restraints_kin(m, d->qpos, d->rkin);
 }
 
 
