@@ -213,6 +213,14 @@ static void test_eval_all(void** state)
   assert_true(fabs(r.p_vc - r.p_vc_thorax) < 1e-15);
   assert_true(fabs(r.p_total - (1 - (1 - r.p_hic) * (1 - r.p_nij) * (1 - r.p_vc))) < 1e-15);
 
+  // without HIC36 (as impacts evaluate): hic36 zero, everything else the same bits
+  urInjuryResult r2;
+  in.skip_hic36 = 1;
+  assert_int_equal(ur_injury_eval(&in, &p, NULL, &r2), 0);
+  assert_true(r.hic36.hic > 0 && r2.hic36.hic == 0);
+  r2.hic36 = r.hic36;
+  assert_memory_equal(&r, &r2, sizeof r);
+
   // filtering on: the CFC 1000 head channel lowers HIC slightly, still close for a 10 ms pulse
   static double work[15 * NE];
   assert_int_equal(ur_injury_work_size(NE), 9 * NE + ur_hic_work_size(NE));

@@ -200,6 +200,8 @@ typedef struct {
   const double* neck_fx;           /* upper-neck shear force, N (NULL: none) */
   const double* thorax_d;          /* thorax deflection, m, compression > 0 (NULL: none) */
   const double* abdomen_d;         /* abdomen deflection, m, compression > 0 (NULL: none) */
+  int skip_hic36;                  /* 1: leave hic36 zero (no PoF uses it unless hic_window is
+                                      0.036, when hic holds it anyway) */
 } urInjuryInput;
 
 typedef struct {

@@ -220,7 +220,7 @@ int ur_impact_finish(const urImpactSetup* s, urImpactWork* w, const urInjuryPara
     my[i] = -my[i];                /* flexion: the neck resists chin-down rotation */
   }
 
-  urInjuryInput in = {n, t, {ax, ay, az}, fz, my, fx, NULL, NULL};
+  urInjuryInput in = {n, t, {ax, ay, az}, fz, my, fx, NULL, NULL, 1};   /* HIC36 unused */
   double* de = dc + n;
   double* da = NULL;
   if (s->s_chest >= 0) {

@@ -94,7 +94,7 @@ int ur_injury_eval(const urInjuryInput* in, const urInjuryParams* p, double* wor
       ag[i] = (ha[1] || ha[2] ? sqrt(s) : ha[0][i]) / urGRAVITY;
     }
     if (ur_hic(in->t, ag, n, 0.015, buf[9], &out->hic15) ||
-        ur_hic(in->t, ag, n, 0.036, buf[9], &out->hic36) ||
+        (!in->skip_hic36 && ur_hic(in->t, ag, n, 0.036, buf[9], &out->hic36)) ||
         (p->hic_window == 0.015 ? (out->hic = out->hic15, 0)
                                 : ur_hic(in->t, ag, n, p->hic_window, buf[9], &out->hic))) {
       err = -1;
