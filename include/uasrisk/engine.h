@@ -283,6 +283,10 @@ typedef struct {
   // contacts and airbags
   urPairData* pair;                /* npair */
   urBagData* bag;                  /* nbag */
+  int* plist;                      /* 2 npair: of the last contact pass, the pairs to commit
+                                      (penetrating or touching), then the active ones (a
+                                      superset once pairs are reset) */
+  int npcommit, npactive;          /* lengths of the two lists */
   // sensors and outputs
   double* sensordata;              /* nsensordata: values at the last ur_forward */
   double* peakmax;                 /* nsensordata: largest value since the run start */

@@ -157,69 +157,83 @@ void ur_contacts_broad(const urModel* m, urData* d) {
 }
 
 
-// the pairs whose bounding spheres overlap (after ur_contacts_broad): oriented bound, narrow
+// pair i if its bounding spheres overlap (after ur_contacts_broad): oriented bound, narrow
 // phase, law, friction
-void ur_contacts_narrow(const urModel* m, urData* d) {
+static inline __attribute__((always_inline)) void narrow1(const urModel* m, urData* d, int i) {
   static const double up[3] = {0, 0, 1};
-  for (int i = 0; i < m->npair; i++) {
-    urPairData* pd = d->pair + i;
-    pd->active = 0;
-    pd->fn = pd->ft = pd->rate = pd->area = 0;
+  urPairData* pd = d->pair + i;
+  pd->active = 0;
+  pd->fn = pd->ft = pd->rate = pd->area = 0;
 
-    // bounding spheres apart: the depth stays minus their gap
-    if (-pd->depth > 0) {
-      continue;
-    }
-    const urPair* pr = m->pair + i;
-    int ba = m->geom[pr->geom1].body;
-    int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
-    urEllipsoid ea, eb;
-    urGeomContact gc;
-
-    // oriented bound: separated at the centre line or at the last normal
-    if (pr->geom2 >= 0) {
-      double fb = ur_depth_bound(m, d, pr->geom1, pr->geom2, pd->u);
-      if (fb < 0) {
-        pd->depth = fb;
-        continue;
-      }
-    }
-
-    // narrow phase
-    ur_geom_ellipsoid(m, d, pr->geom1, &ea);
-    if (pr->geom2 < 0) {
-      ur_collide_ellipsoid_plane(&ea, up, 0, &gc);
-    } else {
-      ur_geom_ellipsoid(m, d, pr->geom2, &eb);
-      ur_collide_ellipsoids(&ea, &eb, pd->u, &gc);
-    }
-    pd->depth = gc.g;
-    memcpy(pd->n, gc.n, sizeof(pd->n));
-    memcpy(pd->p, gc.p, sizeof(pd->p));
-    if (!(gc.g > 0)) {
-      continue;
-    }
-
-    // rate, area, normal force
-    double v[3];
-    ur_relvel(m, d, ba, bb, gc.p, v);
-    pd->rate = uru_dot3(v, gc.n);
-    if (pr->law.type == urLAW_FOAM) {
-      pd->area = ur_section_area(&ea, gc.n, gc.g);
-    }
-    pd->fn = ur_law_force(&pr->law, &pd->ls, gc.g, pd->rate, pd->area);
-    if (!(pd->fn > 0)) {
-      pd->fn = 0;
-      continue;
-    }
-
-    // apply with friction
-    pd->active = 1;
-    pd->ft = ur_contact_apply(m, d, ba, bb, gc.n, gc.p, pd->fn, pd->rate, &pr->law, 0, 0);
+  // bounding spheres apart: the depth stays minus their gap
+  if (-pd->depth > 0) {
+    return;
   }
+  const urPair* pr = m->pair + i;
+  int ba = m->geom[pr->geom1].body;
+  int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
+  urEllipsoid ea, eb;
+  urGeomContact gc;
+
+  // oriented bound: separated at the centre line or at the last normal
+  if (pr->geom2 >= 0) {
+    double fb = ur_depth_bound(m, d, pr->geom1, pr->geom2, pd->u);
+    if (fb < 0) {
+      pd->depth = fb;
+      return;
+    }
+  }
+
+  // narrow phase
+  ur_geom_ellipsoid(m, d, pr->geom1, &ea);
+  if (pr->geom2 < 0) {
+    ur_collide_ellipsoid_plane(&ea, up, 0, &gc);
+  } else {
+    ur_geom_ellipsoid(m, d, pr->geom2, &eb);
+    ur_collide_ellipsoids(&ea, &eb, pd->u, &gc);
+  }
+  pd->depth = gc.g;
+  memcpy(pd->n, gc.n, sizeof(pd->n));
+  memcpy(pd->p, gc.p, sizeof(pd->p));
+  if (!(gc.g > 0)) {
+    return;
+  }
+
+  // rate, area, normal force
+  double v[3];
+  ur_relvel(m, d, ba, bb, gc.p, v);
+  pd->rate = uru_dot3(v, gc.n);
+  if (pr->law.type == urLAW_FOAM) {
+    pd->area = ur_section_area(&ea, gc.n, gc.g);
+  }
+  pd->fn = ur_law_force(&pr->law, &pd->ls, gc.g, pd->rate, pd->area);
+  if (!(pd->fn > 0)) {
+    pd->fn = 0;
+    return;
+  }
+
+  // apply with friction
+  pd->active = 1;
+  pd->ft = ur_contact_apply(m, d, ba, bb, gc.n, gc.p, pd->fn, pd->rate, &pr->law, 0, 0);
 }
 
 
+// every pair; the lists of the pairs to commit (penetrating or touching) and of the active ones
+void ur_contacts_narrow(const urModel* m, urData* d) {
+  int* commit = d->plist;
+  int* act = d->plist + m->npair;
+  d->npcommit = d->npactive = 0;
+  for (int i = 0; i < m->npair; i++) {
+    narrow1(m, d, i);
+    const urPairData* pd = d->pair + i;
+    if (pd->depth > 0 || pd->ls.touching) {
+      commit[d->npcommit++] = i;
+    }
+    if (pd->active) {
+      act[d->npactive++] = i;
+    }
+  }
+}
 
 
 void ur_contacts(const urModel* m, urData* d) {
@@ -230,7 +244,8 @@ void ur_contacts(const urModel* m, urData* d) {
 
 // commit the law histories at the evaluated depths (accepted steps only)
 void ur_contacts_commit(const urModel* m, urData* d) {
-  for (int i = 0; i < m->npair; i++) {
+  for (int k = 0; k < d->npcommit; k++) {
+    int i = d->plist[k];
     urPairData* pd = d->pair + i;
     if (pd->depth > 0 || pd->ls.touching) {
       ur_law_commit(&m->pair[i].law, &pd->ls, pd->depth, pd->rate, pd->area);

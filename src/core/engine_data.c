@@ -55,13 +55,14 @@ static void carve(const urModel* m, urData* d) {
   uintptr_t a = (uintptr_t)p, al = _Alignof(urPairData);
   d->pair = (urPairData*)((a + al - 1)/al*al);
   d->bag = (urBagData*)(d->pair + m->npair);
+  d->plist = (int*)(d->bag + m->nbag);
 }
 
 
 static size_t buffersize(const urModel* m) {
   size_t n = ndoubles(m)*sizeof(double) + _Alignof(urPairData)
              + (size_t)m->npair*sizeof(urPairData) + (size_t)m->nbag*sizeof(urBagData)
-             + sizeof(double);
+             + 2*(size_t)m->npair*sizeof(int) + sizeof(double);
   return (n + _Alignof(urPairData) - 1)/_Alignof(urPairData)*_Alignof(urPairData);
 }
 

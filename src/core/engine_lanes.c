@@ -191,8 +191,10 @@ __attribute__((target("avx2"))) static void sqrt_pairs_avx2(const urModel* m, ur
 #endif
 
 // the broad phase of ur_contacts_broad over the vectors: the same expressions (IEEE square
-// roots are exact, so one instruction for four lanes gives each lane's bits)
-static void broad4(const urModel* m, urLanes* L) {
+// roots are exact, so one instruction for four lanes gives each lane's bits), into the pairs'
+// depths of the n lanes d
+urCLONES
+static void broad4(const urModel* m, urLanes* L, urData* const* d, int n) {
   // squared centre distances; ground pairs: the gap
   for (int i = 0; i < m->npair; i++) {
     const urPair* pr = m->pair + i;
@@ -222,6 +224,12 @@ static void broad4(const urModel* m, urLanes* L) {
     const urPair* pr = m->pair + i;
     if (pr->geom2 >= 0) {
       L->gap[i] = L->gap[i] - bc4(m->geom[pr->geom1].rbound) - bc4(m->geom[pr->geom2].rbound);
+    }
+  }
+  for (int l = 0; l < n; l++) {
+    urPairData* pd = d[l]->pair;
+    for (int i = 0; i < m->npair; i++) {
+      pd[i].depth = -L->gap[i][l];
     }
   }
 }
@@ -368,7 +376,7 @@ static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) 
 }
 
 
-// the poses, velocities and broad phase back to each lane's data
+// the poses and velocities back to each lane's data
 static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, int n) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom;
   SCATTER(xmat, 9*nb);
@@ -382,11 +390,6 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
   }
   SCATTER(gxmat, 9*ng);
   SCATTER(gxpos, 3*ng);
-  for (int l = 0; l < n; l++) {
-    for (int i = 0; i < m->npair; i++) {
-      d[l]->pair[i].depth = -L->gap[i][l];
-    }
-  }
   for (int j = 0; j < m->nrstb; j++) {
     int i = m->rstb[j];
     if (m->body[i].jtype == urJNT_SPHERICAL) {
@@ -462,7 +465,7 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   urv_kinematics_bodies(m, L);
   urv_kinematics_geoms(m, L);
   urv_velocities(m, L);
-  broad4(m, L);
+  broad4(m, L, run, k);
   restraints_kin4(m, L);
   scatter_kin(m, L, run, k);
   for (int l = 0; l < k; l++) {

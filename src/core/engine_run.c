@@ -344,7 +344,8 @@ int ur_step(const urModel* m, urData* d) {
 
 // any force between the tree and the rest of the world
 int ur_tree_active(const urModel* m, const urData* d, int tree) {
-  for (int i = 0; i < m->npair; i++) {
+  for (int k = 0; k < d->npactive; k++) {
+    int i = d->plist[m->npair + k];
     const urPair* p = m->pair + i;
     if (d->pair[i].active && intree(m, p->geom1, tree) != intree(m, p->geom2, tree)) {
       return 1;
