@@ -132,7 +132,7 @@ static void test_hertz_impact(void** state)
   double K, dy, fy;
   ur_law_hertz_params(&arm, &K, &dy, &fy);
   double m = 0.46, v = 7.5;
-  double dm, tc, vo, dr;
+  double dm = NAN, tc = NAN, vo = NAN, dr = NAN;   /* NAN fails the checks if left unset */
   impact(&arm, m, v, 1e-7, &dm, &tc, &vo, &dr);
   double dref = pow(5*m*v*v/(4*K), 0.4), tref = 2.94*dref/v;
   printf("Hertz impact: dmax = %.6g mm (closed form %.6g, err %.2g%%), tc = %.6g ms "
@@ -151,7 +151,7 @@ static void plastic_case(const urLaw* l, double m, double v, double dr_sheet, do
                          double tol_dr, double tol_e)
 {
   urLawState s;
-  double dm, tc, vo, dr;
+  double dm = NAN, tc = NAN, vo = NAN, dr = NAN;   /* NAN fails the checks if left unset */
   impact(l, m, v, 1e-7, &dm, &tc, &vo, &dr);
   memset(&s, 0, sizeof(s));
   ur_law_commit(l, &s, dm, 1, 0);

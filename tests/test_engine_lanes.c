@@ -59,6 +59,7 @@ static void assert_same(const urModel* m, const urData* a, const urData* b, long
     {"cvel", a->cvel, b->cvel, 6*nb*sizeof(double)},
     {"fext", a->fext, b->fext, 6*nb*sizeof(double)},
     {"pair", a->pair, b->pair, m->npair*sizeof(urPairData)},
+    {"pdepth", a->pdepth, b->pdepth, m->npair*sizeof(double)},
     {"bag", a->bag, b->bag, m->nbag*sizeof(urBagData)},
     {"sensordata", a->sensordata, b->sensordata, ns*sizeof(double)},
     {"peakmax", a->peakmax, b->peakmax, ns*sizeof(double)},

@@ -223,9 +223,9 @@ typedef struct {
 
 //---------------------------------- data ----------------------------------------------------------
 
-/* what every step reads or writes for every pair (depth to ls.dmax) shares one cache line */
+/* what the narrow phase reads or writes for a pair (rate to ls.dmax) shares one cache line; a
+   pair culled by its bounding spheres is not touched (its depth is in urData.pdepth) */
 typedef struct __attribute__((aligned(64))) {
-  double depth;                    /* penetration, m (< 0 separated; -inf if culled) */
   double rate;                     /* penetration rate, m/s */
   double fn;                       /* normal force, N */
   double ft;                       /* friction force magnitude, N */
@@ -282,10 +282,13 @@ typedef struct {
                                       at joint-load sensors and below them) */
   // contacts and airbags
   urPairData* pair;                /* npair */
+  double* pdepth;                  /* npair: penetration, m (< 0 separated: minus a lower bound
+                                      of the distance; -inf before any contact pass) */
   urBagData* bag;                  /* nbag */
   int* plist;                      /* 2 npair: of the last contact pass, the pairs to commit
-                                      (penetrating or touching), then the active ones (a
-                                      superset once pairs are reset) */
+                                      (penetrating or touching; only they can carry a force or
+                                      a touching history), then the active ones (supersets once
+                                      pairs are reset) */
   int npcommit, npactive;          /* lengths of the two lists */
   // sensors and outputs
   double* sensordata;              /* nsensordata: values at the last ur_forward */

@@ -152,23 +152,18 @@ void ur_contacts_broad(const urModel* m, urData* d) {
       double dx[3] = {cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
       gap = uru_norm3(dx) - ra - m->geom[pr->geom2].rbound;
     }
-    d->pair[i].depth = -gap;
+    d->pdepth[i] = -gap;
   }
 }
 
 
-// pair i if its bounding spheres overlap (after ur_contacts_broad): oriented bound, narrow
+// pair i, whose bounding spheres overlap (after ur_contacts_broad): oriented bound, narrow
 // phase, law, friction
 static inline __attribute__((always_inline)) void narrow1(const urModel* m, urData* d, int i) {
   static const double up[3] = {0, 0, 1};
   urPairData* pd = d->pair + i;
   pd->active = 0;
   pd->fn = pd->ft = pd->rate = pd->area = 0;
-
-  // bounding spheres apart: the depth stays minus their gap
-  if (-pd->depth > 0) {
-    return;
-  }
   const urPair* pr = m->pair + i;
   int ba = m->geom[pr->geom1].body;
   int bb = pr->geom2 >= 0 ? m->geom[pr->geom2].body : -1;
@@ -179,7 +174,7 @@ static inline __attribute__((always_inline)) void narrow1(const urModel* m, urDa
   if (pr->geom2 >= 0) {
     double fb = ur_depth_bound(m, d, pr->geom1, pr->geom2, pd->u);
     if (fb < 0) {
-      pd->depth = fb;
+      d->pdepth[i] = fb;
       return;
     }
   }
@@ -192,7 +187,7 @@ static inline __attribute__((always_inline)) void narrow1(const urModel* m, urDa
     ur_geom_ellipsoid(m, d, pr->geom2, &eb);
     ur_collide_ellipsoids(&ea, &eb, pd->u, &gc);
   }
-  pd->depth = gc.g;
+  d->pdepth[i] = gc.g;
   memcpy(pd->n, gc.n, sizeof(pd->n));
   memcpy(pd->p, gc.p, sizeof(pd->p));
   if (!(gc.g > 0)) {
@@ -218,21 +213,53 @@ static inline __attribute__((always_inline)) void narrow1(const urModel* m, urDa
 }
 
 
-// every pair; the lists of the pairs to commit (penetrating or touching) and of the active ones
+// every pair whose bounding spheres overlap; the lists of the pairs to commit (penetrating or
+// touching) and of the active ones. A culled pair's data is not touched: only the pairs the
+// last pass listed to commit can hold a force (cleared here) or a touching history (listed
+// again while culled, to unload).
 void ur_contacts_narrow(const urModel* m, urData* d) {
+  int np = m->npair, nt = 0;
   int* commit = d->plist;
-  int* act = d->plist + m->npair;
+  int* act = d->plist + np;
+  int touch[np > 0 ? np : 1];
+  for (int k = 0; k < d->npcommit; k++) {
+    urPairData* pd = d->pair + commit[k];
+    pd->active = 0;
+    pd->fn = pd->ft = pd->rate = pd->area = 0;
+    if (pd->ls.touching) {
+      touch[nt++] = commit[k];
+    }
+  }
   d->npcommit = d->npactive = 0;
-  for (int i = 0; i < m->npair; i++) {
+  for (int i = 0; i < np; i++) {
+    if (-d->pdepth[i] > 0) {
+      continue;
+    }
     narrow1(m, d, i);
     const urPairData* pd = d->pair + i;
-    if (pd->depth > 0 || pd->ls.touching) {
+    if (d->pdepth[i] > 0 || pd->ls.touching) {
       commit[d->npcommit++] = i;
     }
     if (pd->active) {
       act[d->npactive++] = i;
     }
   }
+  for (int k = 0; k < nt; k++) {
+    if (-d->pdepth[touch[k]] > 0) {
+      commit[d->npcommit++] = touch[k];
+    }
+  }
+}
+
+
+// after pair data was copied in from elsewhere: every pair listed to commit, so that the next
+// pass clears and revisits them all
+void ur_contacts_relist(const urModel* m, urData* d) {
+  for (int i = 0; i < m->npair; i++) {
+    d->plist[i] = i;
+  }
+  d->npcommit = m->npair;
+  d->npactive = 0;
 }
 
 
@@ -247,8 +274,8 @@ void ur_contacts_commit(const urModel* m, urData* d) {
   for (int k = 0; k < d->npcommit; k++) {
     int i = d->plist[k];
     urPairData* pd = d->pair + i;
-    if (pd->depth > 0 || pd->ls.touching) {
-      ur_law_commit(&m->pair[i].law, &pd->ls, pd->depth, pd->rate, pd->area);
+    if (d->pdepth[i] > 0 || pd->ls.touching) {
+      ur_law_commit(&m->pair[i].law, &pd->ls, d->pdepth[i], pd->rate, pd->area);
     }
   }
 }

@@ -12,7 +12,7 @@ static size_t ndoubles(const urModel* m) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, nq = (size_t)m->nq, nv = (size_t)m->nv;
   size_t ns = (size_t)m->nsensordata;
   return nq + 5*nv + nb*(12 + 3 + 9 + 3 + 9 + 3 + 36 + 6*3 + 36 + 6 + 36 + 36 + 6 + 6 + 6)
-         + ng*12 + 4*ns + 2*nq + 8*nv;
+         + ng*12 + 4*ns + 2*nq + 8*nv + (size_t)m->npair;
 }
 
 
@@ -50,6 +50,7 @@ static void carve(const urModel* m, urData* d) {
   TAKE(peakmin, ns)
   TAKE(tpeak, ns)
   TAKE(scratch, 2*nq + 8*nv)
+  TAKE(pdepth, m->npair)
 #undef TAKE
   // pairs on cache lines (the buffer is aligned, so the offset is the same in every copy)
   uintptr_t a = (uintptr_t)p, al = _Alignof(urPairData);
@@ -114,8 +115,9 @@ void ur_data_reset(const urModel* m, urData* d) {
     d->peakmin[i] = INFINITY;
   }
   for (int i = 0; i < m->npair; i++) {
-    d->pair[i].depth = -INFINITY;
+    d->pdepth[i] = -INFINITY;
   }
+  d->npcommit = d->npactive = 0;
   d->time = 0;
   d->nhist = 0;
   d->status = urSTAT_OK;

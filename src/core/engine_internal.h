@@ -49,6 +49,7 @@ void ur_restraints(const urModel* m, urData* d);
 void ur_contacts(const urModel* m, urData* d);
 void ur_contacts_broad(const urModel* m, urData* d);
 void ur_contacts_narrow(const urModel* m, urData* d);
+void ur_contacts_relist(const urModel* m, urData* d);
 void ur_contacts_commit(const urModel* m, urData* d);
 void ur_airbags(const urModel* m, urData* d);
 void ur_sensors(const urModel* m, urData* d);
@@ -75,7 +76,7 @@ typedef long long urV4I __attribute__((vector_size(4*sizeof(long long))));
 typedef struct {
   urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
   urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxmat, *gxpos;
-  urV4* gap;                       // npair: bounding-sphere gaps (broad phase)
+  urV4* gap;                       // npair: bounding-sphere gaps, then depths (broad phase)
   urV4* rkin;                      // nbody x 12: as urData.rkin
   urV4* energy;                    // kinetic energy of each lane ([0])
   int fail;                        // lanes whose joint-space inertia was singular (bits)

@@ -191,10 +191,10 @@ __attribute__((target("avx2"))) static void sqrt_pairs_avx2(const urModel* m, ur
 #endif
 
 // the broad phase of ur_contacts_broad over the vectors: the same expressions (IEEE square
-// roots are exact, so one instruction for four lanes gives each lane's bits), into the pairs'
-// depths of the n lanes d
+// roots are exact, so one instruction for four lanes gives each lane's bits); L->gap ends as
+// the pairs' depths (minus the gaps)
 urCLONES
-static void broad4(const urModel* m, urLanes* L, urData* const* d, int n) {
+static void broad4(const urModel* m, urLanes* L) {
   // squared centre distances; ground pairs: the gap
   for (int i = 0; i < m->npair; i++) {
     const urPair* pr = m->pair + i;
@@ -226,11 +226,10 @@ static void broad4(const urModel* m, urLanes* L, urData* const* d, int n) {
       L->gap[i] = L->gap[i] - bc4(m->geom[pr->geom1].rbound) - bc4(m->geom[pr->geom2].rbound);
     }
   }
-  for (int l = 0; l < n; l++) {
-    urPairData* pd = d[l]->pair;
-    for (int i = 0; i < m->npair; i++) {
-      pd[i].depth = -L->gap[i][l];
-    }
+
+  // depths: minus the gaps (exact)
+  for (int i = 0; i < m->npair; i++) {
+    L->gap[i] = -L->gap[i];
   }
 }
 
@@ -376,7 +375,7 @@ static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) 
 }
 
 
-// the poses and velocities back to each lane's data
+// the poses, velocities and broad phase back to each lane's data
 static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, int n) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom;
   SCATTER(xmat, 9*nb);
@@ -390,6 +389,11 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
   }
   SCATTER(gxmat, 9*ng);
   SCATTER(gxpos, 3*ng);
+  double* dep[urNLANE];
+  for (int l = 0; l < n; l++) {
+    dep[l] = d[l]->pdepth;
+  }
+  scatter(dep, n, L->gap, (size_t)m->npair);
   for (int j = 0; j < m->nrstb; j++) {
     int i = m->rstb[j];
     if (m->body[i].jtype == urJNT_SPHERICAL) {
@@ -465,7 +469,7 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   urv_kinematics_bodies(m, L);
   urv_kinematics_geoms(m, L);
   urv_velocities(m, L);
-  broad4(m, L, run, k);
+  broad4(m, L);
   restraints_kin4(m, L);
   scatter_kin(m, L, run, k);
   for (int l = 0; l < k; l++) {

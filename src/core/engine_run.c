@@ -194,7 +194,7 @@ static int proj_clear(const urModel* m, const urData* d, double T) {
     if (p->geom2 < 0 || intree(m, p->geom1, tree) == intree(m, p->geom2, tree)) {
       continue;
     }
-    if (!stays_clear(m, d, p->geom1, p->geom2, -d->pair[i].depth, T)) {
+    if (!stays_clear(m, d, p->geom1, p->geom2, -d->pdepth[i], T)) {
       return 0;
     }
   }
@@ -496,7 +496,7 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
   for (int i = 0; i < m->npair; i++) {
     if (intree(m, m->pair[i].geom1, root) || intree(m, m->pair[i].geom2, root)) {
       memset(d->pair + i, 0, sizeof(urPairData));
-      d->pair[i].depth = -INFINITY;
+      d->pdepth[i] = -INFINITY;
     }
   }
   for (int i = 0; i < m->nbag; i++) {

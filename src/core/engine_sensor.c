@@ -40,7 +40,7 @@ void ur_sensors(const urModel* m, urData* d) {
     case urSENS_CONTACT: {
       const urPairData* pd = d->pair + s->obj;
       out[0] = pd->fn;
-      out[1] = pd->depth > 0 ? pd->depth : 0;
+      out[1] = d->pdepth[s->obj] > 0 ? d->pdepth[s->obj] : 0;
       out[2] = pd->ft;
       break;
     }

@@ -420,6 +420,7 @@ static void stance_state(urStance* st, const urModel* m, urData* d, int drone, i
            sizeof(urPairData));
     ip++;
   }
+  if (!save) ur_contacts_relist(m, d);
 }
 
 /* ---- the set-up ---- */
@@ -434,7 +435,7 @@ static void rest(const urModel* m, urData* d, int drone) {
   for (int i = 0; i < m->npair; i++) {
     if (person_pair(m, i, drone)) continue;
     memset(d->pair + i, 0, sizeof(urPairData));
-    d->pair[i].depth = -INFINITY;
+    d->pdepth[i] = -INFINITY;
   }
   memset(d->bag, 0, m->nbag * sizeof(urBagData));
   for (int k = 0; k < m->nsensordata; k++) {
