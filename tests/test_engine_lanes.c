@@ -39,6 +39,12 @@ static int read_dyn(const urModel* m, int i) {
 
 /* byte-compare what a lane run keeps against the scalar run; fails naming the first field */
 static void assert_same(const urModel* m, const urData* a, const urData* b, long step) {
+  // the lane run computes the ellipsoids' orientations on first use: every one through the
+  // accessor, then byte-compared like the rest
+  for (int g = 0; g < m->ngeom; g++) {
+    ur_geom_xmat(m, a, g);
+    ur_geom_xmat(m, b, g);
+  }
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, ns = (size_t)m->nsensordata;
   struct {
     const char* name;

@@ -264,7 +264,7 @@ typedef struct {
   double* xmat;                    /* nbody x 9: body orientation, world */
   double* xcom;                    /* nbody x 3: centre of mass, world */
   double* gxpos;                   /* ngeom x 3: ellipsoid centre, world */
-  double* gxmat;                   /* ngeom x 9: ellipsoid orientation, world */
+  double* gxmat;                   /* ngeom x 9: ellipsoid orientation, world (where gmat_ok) */
   // dynamics scratch (per body, body coordinates)
   double* Xe;                      /* nbody x 9: rotation parent -> child */
   double* Xr;                      /* nbody x 3: child origin in the parent frame */
@@ -290,6 +290,8 @@ typedef struct {
                                       a touching history), then the active ones (supersets once
                                       pairs are reset) */
   int npcommit, npactive;          /* lengths of the two lists */
+  unsigned char* gmat_ok;          /* ngeom: gxmat is current (lane runs compute an ellipsoid's
+                                      orientation on first use: ur_geom_xmat) */
   // sensors and outputs
   double* sensordata;              /* nsensordata: values at the last ur_forward */
   double* peakmax;                 /* nsensordata: largest value since the run start */

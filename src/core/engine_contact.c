@@ -10,14 +10,14 @@
 // ellipsoid g in world coordinates
 void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e) {
   memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
-  memcpy(e->R, d->gxmat + 9*g, 9*sizeof(double));
+  memcpy(e->R, ur_geom_xmat(m, d, g), 9*sizeof(double));
   memcpy(e->r, m->geom[g].size, 3*sizeof(double));
 }
 
 
 // half-width of ellipsoid g along unit u: |diag(r) R^T u|
 static double halfwidth(const urModel* m, const urData* d, int g, const double u[3]) {
-  const double* R = d->gxmat + 9*g;
+  const double* R = ur_geom_xmat(m, d, g);
   const double* r = m->geom[g].size;
   double w[3];
   uru_mulmat3tvec(w, R, u);

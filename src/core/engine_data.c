@@ -57,13 +57,14 @@ static void carve(const urModel* m, urData* d) {
   d->pair = (urPairData*)((a + al - 1)/al*al);
   d->bag = (urBagData*)(d->pair + m->npair);
   d->plist = (int*)(d->bag + m->nbag);
+  d->gmat_ok = (unsigned char*)(d->plist + 2*m->npair);
 }
 
 
 static size_t buffersize(const urModel* m) {
   size_t n = ndoubles(m)*sizeof(double) + _Alignof(urPairData)
              + (size_t)m->npair*sizeof(urPairData) + (size_t)m->nbag*sizeof(urBagData)
-             + 2*(size_t)m->npair*sizeof(int) + sizeof(double);
+             + 2*(size_t)m->npair*sizeof(int) + (size_t)m->ngeom + sizeof(double);
   return (n + _Alignof(urPairData) - 1)/_Alignof(urPairData)*_Alignof(urPairData);
 }
 

@@ -33,6 +33,8 @@ int uru_invsym(double* Ainv, const double* A, int n);
 
 void ur_kinematics_bodies(const urModel* m, urData* d);
 void ur_kinematics_geoms(const urModel* m, urData* d);
+void ur_kinematics_gpos(const urModel* m, urData* d);
+const double* ur_geom_xmat(const urModel* m, const urData* d, int g);
 void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
@@ -68,6 +70,8 @@ double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double 
 // ur_step. A lane run's S, cbias and ABA scratch (IA, U, Dinv, pA, uu) live here only, and so
 // do Xe, Xr, cacc and freact of the bodies that no joint-load or acceleration sensor reads: its
 // urData keeps the poses, velocities, accelerations and the joint loads and accelerations read.
+// The ellipsoids' orientations are computed lane by lane where first used (ur_geom_xmat):
+// most ellipsoids are culled by their bounding spheres in most steps.
 
 #define urNLANE 4
 typedef double urV4 __attribute__((vector_size(4*sizeof(double))));
@@ -75,7 +79,8 @@ typedef long long urV4I __attribute__((vector_size(4*sizeof(long long))));
 
 typedef struct {
   urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
-  urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxmat, *gxpos;
+  urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxpos;
+  urV4* gxmat;                     // unused (NULL): each lane computes the orientations it needs
   urV4* gap;                       // npair: bounding-sphere gaps, then depths (broad phase)
   urV4* rkin;                      // nbody x 12: as urData.rkin
   urV4* energy;                    // kinetic energy of each lane ([0])

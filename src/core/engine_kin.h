@@ -168,17 +168,23 @@ void urFN(kinematics_bodies)(const urModel* m, urD* d) {
   }
 }
 
-// world poses of the ellipsoids (gxmat, gxpos) from those of their bodies
+// world orientation of ellipsoid g (gxmat) from that of its body
+static inline __attribute__((always_inline)) void urFN(geom_mat)(const urModel* m, urD* d, int g) {
+  const urGeom* ge = m->geom + g;
+  urT gm[9];
+  urFN(bcast)(gm, ge->gmat, 9);
+  urK(mulmat3)(d->gxmat + 9*g, d->xmat + 9*ge->body, gm);
+}
+
+
+// world positions of the ellipsoids (gxpos) from the poses of their bodies
 urKIN_ATTR
-void urFN(kinematics_geoms)(const urModel* m, urD* d) {
+void urFN(kinematics_gpos)(const urModel* m, urD* d) {
   for (int g = 0; g < m->ngeom; g++) {
     const urGeom* ge = m->geom + g;
-    const urT* xm = d->xmat + 9*ge->body;
-    urT t[3], gm[9], gp[3];
-    urFN(bcast)(gm, ge->gmat, 9);
+    urT t[3], gp[3];
     urFN(bcast)(gp, ge->pos, 3);
-    urK(mulmat3)(d->gxmat + 9*g, xm, gm);
-    urK(mulmat3vec)(t, xm, gp);
+    urK(mulmat3vec)(t, d->xmat + 9*ge->body, gp);
     for (int k = 0; k < 3; k++) {
       d->gxpos[3*g + k] = d->xpos[3*ge->body + k] + t[k];
     }

@@ -37,6 +37,28 @@ void ur_kinematics(const urModel* m, urData* d) {
   ur_kinematics_geoms(m, d);
 }
 
+
+// world poses of every ellipsoid
+void ur_kinematics_geoms(const urModel* m, urData* d) {
+  ur_kinematics_gpos(m, d);
+  for (int g = 0; g < m->ngeom; g++) {
+    ur_geom_mat(m, d, g);
+  }
+  memset(d->gmat_ok, 1, (size_t)m->ngeom);
+}
+
+
+// the orientation of ellipsoid g, computed now if the lanes left it out (the per-run data is
+// never const where it lives, so the cast is sound; the same expression gives the same bits)
+const double* ur_geom_xmat(const urModel* m, const urData* d, int g) {
+  if (!d->gmat_ok[g]) {
+    urData* w = (urData*)d;
+    ur_geom_mat(m, w, g);
+    w->gmat_ok[g] = 1;
+  }
+  return d->gxmat + 9*g;
+}
+
 //---------------------------------- points --------------------------------------------------------
 
 void ur_point_pos(const urModel* m, const urData* d, int body, const double p[3], double out[3]) {

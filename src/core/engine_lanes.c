@@ -257,7 +257,7 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
   size_t nq = (size_t)m->nq;
   size_t ng = (size_t)m->ngeom, np = (size_t)m->npair;
-  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3 + 12) + 2*nv + 1 + nq + nv + 12*ng + np;
+  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3 + 12) + 2*nv + 1 + nq + nv + 3*ng + np;
   L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1)*sizeof(urV4));
   L->spare = malloc((nq > nv ? nq : nv)*sizeof(double) + 1);
   L->outb = malloc(nb*sizeof(int) + 1);
@@ -278,10 +278,10 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   urV4* p = L->mem;
   urV4** f[] = {&L->S, &L->IA, &L->U, &L->Dinv, &L->pA, &L->uu, &L->cbias, &L->cvel, &L->cacc,
                 &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy,
-                &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom, &L->gxmat, &L->gxpos,
+                &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom, &L->gxpos,
                 &L->gap, &L->rkin};
   size_t len[] = {36*nb, 36*nb, 36*nb, 36*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 9*nb,
-                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb, 9*ng, 3*ng, np, 12*nb};
+                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb, 3*ng, np, 12*nb};
   for (size_t k = 0; k < sizeof(len)/sizeof(len[0]); k++) {
     *f[k] = p;
     p += len[k];
@@ -387,8 +387,10 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
     SCATTER(Xe + 9*i, 9);
     SCATTER(Xr + 3*i, 3);
   }
-  SCATTER(gxmat, 9*ng);
   SCATTER(gxpos, 3*ng);
+  for (int l = 0; l < n; l++) {
+    memset(d[l]->gmat_ok, 0, ng);     // orientations on first use (ur_geom_xmat)
+  }
   double* dep[urNLANE];
   for (int l = 0; l < n; l++) {
     dep[l] = d[l]->pdepth;
@@ -467,7 +469,7 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   // poses and velocities for all lanes at once, the applied forces lane by lane
   gather_state(m, L, run, k);
   urv_kinematics_bodies(m, L);
-  urv_kinematics_geoms(m, L);
+  urv_kinematics_gpos(m, L);
   urv_velocities(m, L);
   broad4(m, L);
   restraints_kin4(m, L);
