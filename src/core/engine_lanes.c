@@ -1,5 +1,5 @@
 /* engine_lanes.c: up to urNLANE runs of one model stepped in lock-step. Their joint transforms,
- * body and ellipsoid poses, velocities, contact broad phase, spherical restraints' kinematics,
+ * body poses, ellipsoid positions, velocities, contact broad phase, spherical restraints' kinematics,
  * articulated-body algorithm and Euler update are computed once over vectors of lanes
  * (engine_kin.h, engine_aba.h, engine_quat.h and engine_trig.h instantiated for urV4). Every
  * lane takes the same path through the tree, so the vector code is the scalar code with each
