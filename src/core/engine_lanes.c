@@ -1,6 +1,6 @@
 /* engine_lanes.c: up to urNLANE runs of one model stepped in lock-step. Their joint transforms,
- * body poses, ellipsoid positions, velocities, contact broad phase, spherical restraints' kinematics,
- * articulated-body algorithm and Euler update are computed once over vectors of lanes
+ * body poses, ellipsoid positions, velocities, contact broad phase, spherical restraints'
+ * kinematics, articulated-body algorithm and Euler update are computed once over vectors of lanes
  * (engine_kin.h, engine_aba.h, engine_quat.h and engine_trig.h instantiated for urV4). Every
  * lane takes the same path through the tree, so the vector code is the scalar code with each
  * operation done for all lanes at once: each run's bits are those of ur_step on its own. The
