@@ -340,6 +340,29 @@ static void test_clear_keeps_recontact(void** state) {
 }
 
 
+// a ball glancing off the first target and sliding on past it (the second one far away): the
+// distance then grows slowly while the ball still moves fast, so the closing-speed bound |v| T
+// proves nothing for a while, but along the centre line the ball recedes; with the engine's
+// settings for impacts (t_quiet 0.02 s, t_clear 0.01 s, a_clear 100) the run ends at t_clear
+static void test_clear_sliding_past(void** state) {
+  double tend[2];
+  for (int k = 0; k < 2; k++) {
+    urModel* m = balls(5, 0, k ? 0.01 : INFINITY, 100);
+    m->opt.t_quiet = 0.02;
+    urData* d = ur_data_new(m);
+    double pos[3] = {-0.4, 0, 0.14}, vel[3] = {2, 0, 0};
+    assert_int_equal(ur_run_impact(m, d, 0, pos, NULL, vel), urSTAT_SEPARATED);
+    tend[k] = d->time - d->t_last;
+    ur_data_free(d);
+    ur_model_free(m);
+  }
+  print_message("ball sliding past: run ends %.4f s after the contact (t_quiet alone), %.4f s "
+                "(t_clear 0.01)\n", tend[0], tend[1]);
+  assert_true(fabs(tend[0] - 0.02) < 2e-4);
+  assert_true(tend[1] > 0.01 && tend[1] < 0.0103);
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_threads_bitwise),
@@ -351,6 +374,7 @@ int main(void) {
     cmocka_unit_test(test_history_and_names),
     cmocka_unit_test(test_clear_ends_early),
     cmocka_unit_test(test_clear_keeps_recontact),
+    cmocka_unit_test(test_clear_sliding_past),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -16,7 +16,7 @@ void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e)
 
 
 // half-width of ellipsoid g along unit u: |diag(r) R^T u|
-static double halfwidth(const urModel* m, const urData* d, int g, const double u[3]) {
+double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double u[3]) {
   const double* R = ur_geom_xmat(m, d, g);
   const double* r = m->geom[g].size;
   double w[3];
@@ -40,10 +40,11 @@ double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const d
     c[0] = -dc[0]/L;
     c[1] = -dc[1]/L;
     c[2] = -dc[2]/L;
-    f = -L + halfwidth(m, d, ga, c) + halfwidth(m, d, gb, c);
+    f = -L + ur_geom_halfwidth(m, d, ga, c) + ur_geom_halfwidth(m, d, gb, c);
   }
   if (u[0] != 0 || u[1] != 0 || u[2] != 0) {
-    f = fmin(f, uru_dot3(dc, u) + halfwidth(m, d, ga, u) + halfwidth(m, d, gb, u));
+    f = fmin(f, uru_dot3(dc, u) + ur_geom_halfwidth(m, d, ga, u)
+                    + ur_geom_halfwidth(m, d, gb, u));
   }
   return f;
 }

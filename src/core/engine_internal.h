@@ -101,5 +101,6 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
 int ur_tree_active(const urModel* m, const urData* d, int tree);
 double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]);
+double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double u[3]);
 
 #endif
