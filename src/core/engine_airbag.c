@@ -74,8 +74,8 @@ static void bag_uniform(const urModel* m, urData* d, int ib) {
     bd->ftgt[t] = f;
     bd->force += f;
     bd->active = 1;
-    ur_contact_apply(m, d, gb->body, m->geom[g].body, gc[t].n, gc[t].p, f, bd->rate[t], NULL,
-                     bag->mu, bag->v_eps);
+    ur_contact_apply(m, d, gb->body, m->geom[g].body, gc[t].n, gc[t].p, v, f, bd->rate[t],
+                     NULL, bag->mu, bag->v_eps);
   }
 }
 

@@ -91,21 +91,21 @@ static double mobility(const urModel* m, const urData* d, int body, const double
 }
 
 
-// apply normal force fn along n (A -> B) plus friction: -(fn n) + ft on A, the opposite on B;
+// apply normal force fn along n (A -> B) plus friction: -(fn n) + ft on A, the opposite on B
+// (v: the relative velocity of A's point p minus B's, ur_relvel);
 // regularised Coulomb friction ft = -mu fn vt / max(|vt|, v_eps, v_stab) with mu and v_eps of
 // the law (or given, law NULL); v_stab = mu fn dt / m_t keeps the explicit step stable, with m_t
 // the apparent tangential mass of the two isolated bodies (a lower bound); returns |ft|
 double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double n[3],
-                        const double p[3], double fn, double rate, const urLaw* law, double mu,
-                        double v_eps) {
-  double v[3], vt[3], f[3], fr[3] = {0, 0, 0};
+                        const double p[3], const double v[3], double fn, double rate,
+                        const urLaw* law, double mu, double v_eps) {
+  double vt[3], f[3], fr[3] = {0, 0, 0};
   if (law) {
     mu = law->mu;
     v_eps = law->v_eps;
   }
 
   // tangential relative velocity and regularised Coulomb friction on A
-  ur_relvel(m, d, a, b, p, v);
   for (int k = 0; k < 3; k++) {
     vt[k] = v[k] - rate*n[k];
   }
@@ -210,7 +210,7 @@ static inline __attribute__((always_inline)) void narrow1(const urModel* m, urDa
 
   // apply with friction
   pd->active = 1;
-  pd->ft = ur_contact_apply(m, d, ba, bb, gc.n, gc.p, pd->fn, pd->rate, &pr->law, 0, 0);
+  pd->ft = ur_contact_apply(m, d, ba, bb, gc.n, gc.p, v, pd->fn, pd->rate, &pr->law, 0, 0);
 }
 
 

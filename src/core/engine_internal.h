@@ -62,8 +62,8 @@ void ur_set_status(urData* d, int status, const char* msg);
 void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e);
 void ur_relvel(const urModel* m, const urData* d, int a, int b, const double p[3], double v[3]);
 double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double n[3],
-                        const double p[3], double fn, double rate, const urLaw* law, double mu,
-                        double v_eps);
+                        const double p[3], const double v[3], double fn, double rate,
+                        const urLaw* law, double mu, double v_eps);
 //---------------------------------- lanes (engine_lanes.c) --------------------------------------
 // up to urNLANE runs of one model stepped in lock-step, their poses, velocities and the
 // articulated-body algorithm computed over vectors of lanes; each run's bits are those of

@@ -32,8 +32,8 @@ void urFN(jcalc)(const urModel* m, urD* d, int i) {
   urT* cj = d->cbias + 6*i;
   int nv = b->nv;
 
-  // relative pose and subspace by joint type
-  memset(S, 0, 36*sizeof(urT));
+  // relative pose and subspace by joint type (S: 6 x nv, the rest of its 36 never read)
+  memset(S, 0, 6*(size_t)nv*sizeof(urT));
   memset(cj, 0, 6*sizeof(urT));
   urFN(bcast)(p, b->pos, 3);
   switch (b->jtype) {
