@@ -268,12 +268,14 @@ typedef struct {
   // dynamics scratch (per body, body coordinates)
   double* Xe;                      /* nbody x 9: rotation parent -> child */
   double* Xr;                      /* nbody x 3: child origin in the parent frame */
-  double* S;                       /* nbody x 36: motion subspace (6 x nv of the joint) */
+  double* S;                       /* nbody x 36: motion subspace (the first 6 x nv) */
   double* cvel;                    /* nbody x 6: spatial velocity */
   double* cbias;                   /* nbody x 6: velocity-product acceleration */
   double* cacc;                    /* nbody x 6: spatial acceleration (incl. -gravity) */
-  double* IA;                      /* nbody x 36: articulated inertia */
-  double* pA;                      /* nbody x 6: articulated bias force */
+  double* IA;                      /* nbody x 36: ABA scratch (articulated inertia, then the
+                                      part passed on to the parent) */
+  double* pA;                      /* nbody x 6: ABA scratch (articulated bias force, then the
+                                      part passed on) */
   double* U;                       /* nbody x 36 */
   double* Dinv;                    /* nbody x 36 */
   double* uu;                      /* nbody x 6 */
@@ -310,6 +312,8 @@ typedef struct {
   double t_first;                  /* time of first projectile contact, s (-1 none) */
   double t_last;                   /* last time a projectile contact was active, s */
   double t_calm;                   /* time since kinetic energy fell below ke_settle, s */
+  int clear_hint;                  /* the pair or airbag target that last kept the projectile
+                                      from being proved clear (tried first) */
   double energy;                   /* kinetic energy at the last ur_forward, J */
   // integrator scratch
   double* scratch;                 /* 2 nq + 8 nv */

@@ -28,7 +28,7 @@ void urFN(pass2)(const urModel* m, urD* d, int i, const int nv, const int k0, co
   urT* U = d->U + 36*i;
   urT* Dinv = d->Dinv + 36*i;
   urT* u = d->uu + 6*i;
-  urT Ia[36], pa[6], D[36], UD[36], t[6];
+  urT D[36], UD[36], t[6];
 
   // U = IA S, D = S^T U, u = tau - S^T pA (spherical: S = [1; 0], so U = IA[:, 0:3])
   if (nv == 3 && k1 == 3) {
@@ -95,9 +95,10 @@ void urFN(pass2)(const urModel* m, urD* d, int i, const int nv, const int k0, co
     return;
   }
 
-  // Ia = IA - U Dinv U^T (symmetric), pa = pA + Ia c + U Dinv u
-  memcpy(Ia, IA, sizeof(Ia));
-  memcpy(pa, pA, sizeof(pa));
+  // Ia = IA - U Dinv U^T (symmetric), pa = pA + Ia c + U Dinv u, in place (IA and pA of body i
+  // are not read again)
+  urT* Ia = IA;
+  urT* pa = pA;
   if (nv) {
     urT Du[6];
     urUNROLL

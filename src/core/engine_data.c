@@ -129,6 +129,7 @@ void ur_data_reset(const urModel* m, urData* d) {
   d->t_first = -1;
   d->t_last = -1;
   d->t_calm = 0;
+  d->clear_hint = 0;
   d->energy = 0;
   ur_kinematics(m, d);
 }

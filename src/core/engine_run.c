@@ -213,27 +213,45 @@ static int stays_clear(const urModel* m, const urData* d, int g1, int g2, double
 }
 
 
-// the projectile tree provably cannot touch the rest again within T: every pair and airbag
-// target across it stays clear (stays_clear, a_clear bounding the relative acceleration)
-static int proj_clear(const urModel* m, const urData* d, double T) {
+// is item k (a pair, then the airbag targets in order) across the projectile tree clear for T
+// (1 also for items within a tree or with the ground)
+static int item_clear(const urModel* m, const urData* d, int k, double T) {
   int tree = d->proj;
-  for (int i = 0; i < m->npair; i++) {
-    const urPair* p = m->pair + i;
-    if (p->geom2 < 0 || intree(m, p->geom1, tree) == intree(m, p->geom2, tree)) {
-      continue;
-    }
-    if (!stays_clear(m, d, p->geom1, p->geom2, -d->pdepth[i], d->pair[i].u, T)) {
-      return 0;
-    }
+  if (k < m->npair) {
+    const urPair* p = m->pair + k;
+    return p->geom2 < 0 || intree(m, p->geom1, tree) == intree(m, p->geom2, tree) ||
+           stays_clear(m, d, p->geom1, p->geom2, -d->pdepth[k], d->pair[k].u, T);
   }
+  k -= m->npair;
   for (int i = 0; i < m->nbag; i++) {
     const urAirbag* b = m->bag + i;
-    for (int t = 0; t < b->ntarget; t++) {
-      if (intree(m, b->geom, tree) != intree(m, b->target[t], tree) &&
-          !stays_clear(m, d, b->geom, b->target[t], -d->bag[i].depth[t], d->bag[i].u[t],
-                       T)) {
-        return 0;
-      }
+    if (k < b->ntarget) {
+      return intree(m, b->geom, tree) == intree(m, b->target[k], tree) ||
+             stays_clear(m, d, b->geom, b->target[k], -d->bag[i].depth[k], d->bag[i].u[k], T);
+    }
+    k -= b->ntarget;
+  }
+  return 1;
+}
+
+
+// the projectile tree provably cannot touch the rest again within T: every pair and airbag
+// target across it stays clear (stays_clear, a_clear bounding the relative acceleration). The
+// item that failed last is tried first (d->clear_hint): in the tail of a run the same one
+// usually fails step after step.
+static int proj_clear(const urModel* m, urData* d, double T) {
+  int n = m->npair;
+  for (int i = 0; i < m->nbag; i++) {
+    n += m->bag[i].ntarget;
+  }
+  int h = d->clear_hint < n ? d->clear_hint : 0;
+  if (!item_clear(m, d, h, T)) {
+    return 0;
+  }
+  for (int k = 0; k < n; k++) {
+    if (k != h && !item_clear(m, d, k, T)) {
+      d->clear_hint = k;
+      return 0;
     }
   }
   return 1;
@@ -539,6 +557,7 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
   d->proj = root;
   d->t_first = d->t_last = -1;
   d->t_calm = 0;
+  d->clear_hint = 0;
   ur_kinematics(m, d);
 
   // earliest possible contact of the tree's swept bounding spheres
