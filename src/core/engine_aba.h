@@ -161,9 +161,10 @@ void urFN(pass2)(const urModel* m, urD* d, int i, const int nv, const int k0, co
 }
 
 
-// pass 3 of the ABA for body i with nv dofs (inlined with constant nv)
+// pass 3 of the ABA for body i with nv dofs and nonzero rows k0..k1-1 of S (inlined with
+// constant sizes)
 static inline __attribute__((always_inline))
-void urFN(pass3)(const urModel* m, urD* d, int i, const int nv) {
+void urFN(pass3)(const urModel* m, urD* d, int i, const int nv, const int k0, const int k1) {
   const urBody* b = m->body + i;
   const urT* S = d->S + 36*i;
   const urT* U = d->U + 36*i;
@@ -203,8 +204,16 @@ void urFN(pass3)(const urModel* m, urD* d, int i, const int nv) {
     }
     qdd[c] = s;
   }
+  // (the zero rows of S skipped; spherical: S = [1; 0], so a gains qdd itself)
+  if (nv == 3 && k1 == 3) {
+    urUNROLL
+    for (int k = 0; k < 3; k++) {
+      a[k] += qdd[k];
+    }
+    return;
+  }
   urUNROLL
-  for (int k = 0; k < 6; k++) {
+  for (int k = k0; k < k1; k++) {
     urUNROLL
     for (int c = 0; c < nv; c++) {
       a[k] += S[nv*k + c]*qdd[c];
@@ -221,7 +230,8 @@ void urFN(aba)(const urModel* m, urD* d) {
   int nb = m->nbody;
 
   // pass 1: rigid-body inertias and bias forces (velocities from ur_velocities); the bias
-  // force is kept in freact for ur_reactions, the kinetic energy in d->energy
+  // force is kept in freact for ur_reactions (of the bodies it visits), the kinetic energy in
+  // d->energy
   urT ke = urBC(0);
   for (int i = 0; i < nb; i++) {
     const urT* v = d->cvel + 6*i;
@@ -235,7 +245,9 @@ void urFN(aba)(const urModel* m, urD* d) {
       d->pA[6*i + k] -= d->fext[6*i + k];
       ke += 0.5*v[k]*Iv[k];
     }
-    memcpy(d->freact + 6*i, d->pA + 6*i, 6*sizeof(urT));
+    if (m->body[i].react) {
+      memcpy(d->freact + 6*i, d->pA + 6*i, 6*sizeof(urT));
+    }
   }
   urSETENERGY(d, ke);
 
@@ -267,20 +279,22 @@ void urFN(aba)(const urModel* m, urD* d) {
   for (int i = 0; i < nb; i++) {
     switch (m->body[i].jtype) {
     case urJNT_FREE:
-      urFN(pass3)(m, d, i, 6);
+      urFN(pass3)(m, d, i, 6, 0, 6);
       break;
     case urJNT_FIXED:
-      urFN(pass3)(m, d, i, 0);
+      urFN(pass3)(m, d, i, 0, 0, 0);
       break;
     case urJNT_REVOLUTE:
-    case urJNT_PRISMATIC:
-      urFN(pass3)(m, d, i, 1);
+      urFN(pass3)(m, d, i, 1, 0, 3);
       break;
     case urJNT_UNIVERSAL:
-      urFN(pass3)(m, d, i, 2);
+      urFN(pass3)(m, d, i, 2, 0, 3);
       break;
     case urJNT_SPHERICAL:
-      urFN(pass3)(m, d, i, 3);
+      urFN(pass3)(m, d, i, 3, 0, 3);
+      break;
+    case urJNT_PRISMATIC:
+      urFN(pass3)(m, d, i, 1, 3, 6);
       break;
     }
   }
