@@ -16,8 +16,11 @@ CC      ?= cc
 OPT     ?= -O3 -g
 BUILD   ?= build
 BIN     ?= uasrisk
-CFLAGS  += $(OPT) -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Wall -Wextra -Wshadow \
-           -Wno-unused-parameter -Wno-missing-field-initializers -Iinclude -MMD -MP -pthread
+# -fno-math-errno: sqrt inline and over vectors (the same IEEE results; errno is read only after
+# strtod and file calls, never after a math function)
+CFLAGS  += $(OPT) -fno-math-errno -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Wall \
+           -Wextra -Wshadow -Wno-unused-parameter -Wno-missing-field-initializers -Iinclude -MMD \
+           -MP -pthread
 LDFLAGS += -pthread
 
 CORE_LIBS = -lgsl -lgslcblas -lm
