@@ -5,6 +5,8 @@
 #   make bench    benchmarks (not part of check); REPRODUCE=0 leaves out the timing of reproduce
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
+#   make sensitivity  Table 17 under each public alternative for an unknown, calibrated again
+#                 (scripts/sensitivity.sh; build/sensitivity/; STEP=0.1 for a quick look)
 #   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
 #                 session under valgrind (scripts/check-san.sh)
 #   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions or FUZZ_SECONDS
@@ -41,7 +43,7 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasrisk.a
 APPLIB  = $(BUILD)/libuasrisk-app.a
 
-.PHONY: all deps run check test bench reproduce install clean check-san fuzz
+.PHONY: all deps run check test bench reproduce sensitivity install clean check-san fuzz
 all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -101,6 +103,10 @@ bench: all $(BENCH_BIN)
 # the paper's results side by side with ours (scripts/reproduce.sh); minutes of grids
 reproduce: all
 	@sh scripts/reproduce.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/reproduce-step$(STEP))
+
+# how far the public ranges of the unknowns move Table 17 (scripts/sensitivity.sh); minutes
+sensitivity: all
+	@sh scripts/sensitivity.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/sensitivity-step$(STEP))
 
 # the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run);
 # its lanes are the portable vector code without the AVX2 clones (urNO_CLONES), so that the
