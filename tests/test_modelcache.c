@@ -1,9 +1,10 @@
 /* test_modelcache.c: the model cache (src/app/modelcache.c): switching back to a case or setting
  * seen earlier makes its compiled, balanced and settled model live again (no settling), with the
  * same impact results; the last impact does not survive a switch; at most uraMODELCACHE models
- * are kept, the least recently used freed first; new model parts flush them (and their settled
- * stances, which test_impact_setup.c shows are given to models with the same person); keys
- * compare the overrides as a set, values to the bit */
+ * are kept, the least recently used freed first; after new model parts none of them returns,
+ * but their settled stances are given to new models with the same person (test_impact_setup.c
+ * shows the set-up is then bitwise what settling gives) and not to another person; reset flushes
+ * them; keys compare the overrides as a set, values to the bit */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -74,29 +75,60 @@ static void lru(void** state) {
   assert_true(c->have_setup);
 }
 
-/* new model parts, even the same text loaded back, or reset: no model of the old parts returns */
+/* new model parts, even the same text loaded back: no model of the old parts returns, but a
+   model with the same person takes a kept stance, with the same impact; a changed person does
+   not; reset keeps nothing */
 static void parts_flush(void** state) {
   uraCtx* c = *state;
-  char path[] = "/tmp/test_modelcache_XXXXXX";
-  int fd = mkstemp(path);
-  assert_true(fd >= 0);
+  char path[] = "/tmp/test_modelcache_XXXXXX", human[] = "/tmp/test_modelcache_h_XXXXXX";
+  int fd = mkstemp(path), fh = mkstemp(human);
+  assert_true(fd >= 0 && fh >= 0);
   close(fd);
-  char line[128];
+  close(fh);
+  char line[192];
   snprintf(line, sizeof line, "model save %s; model load %s", path, path);
 
-  run_rc(c, "case A", 0);
-  assert_non_null(ura_setup(c));
+  run_rc(c, "case A; impact 0.1 0.1", 0);
+  urImpactResult ra = c->last_impact;
   run_rc(c, "case B", 0);
   run_rc(c, line, 0);
   run_rc(c, "case A", 0);
-  assert_false(c->have_setup);
-
+  assert_false(c->have_setup);          /* no model of the old parts */
   assert_non_null(ura_setup(c));
-  assert_false(c->setup.shared);        /* nor does a stance of them (ur_impact_prepare) */
+  assert_true(c->setup.shared);         /* a stance of them, for the same person */
+  run_rc(c, "impact 0.1 0.1", 0);
+  assert_memory_equal(&c->last_impact.p, &ra.p, sizeof ra.p);
+  assert_memory_equal(&c->last_impact.inj.hic15.hic, &ra.inj.hic15.hic, sizeof(double));
+
+  /* another person (a stiffer neck in a loaded human part): settled anew */
+  snprintf(line, sizeof line, "model save %s", path);
+  run_rc(c, line, 0);
+  FILE* f = fopen(path, "r");
+  FILE* g = fopen(human, "w");
+  assert_true(f && g);
+  char buf[512];
+  int in_human = 0;
+  while (fgets(buf, sizeof buf, f)) {
+    if (!strncmp(buf, "part ", 5)) in_human = !strncmp(buf, "part human", 10);
+    if (!in_human) continue;
+    if (!strncmp(buf, "param neck_k_flex ", 18)) strcpy(buf, "param neck_k_flex 170\n");
+    fputs(buf, g);
+  }
+  fclose(f);
+  fclose(g);
+  snprintf(line, sizeof line, "model load %s", human);
+  run_rc(c, line, 0);
+  assert_false(c->have_setup);
+  assert_non_null(ura_setup(c));
+  assert_false(c->setup.shared);
+
   run_rc(c, "case B; reset", 0);
   assert_string_equal(c->st.casename, "A");
   assert_false(c->have_setup);
+  assert_non_null(ura_setup(c));
+  assert_false(c->setup.shared);        /* reset kept no stance */
   unlink(path);
+  unlink(human);
 }
 
 /* keys: the same parts and override set in any order, values to the bit */

@@ -35,16 +35,22 @@ static void parts_free(uraPart* p, int n) {
 }
 
 /* the model parts change (or go): the live model, the kept ones and the grids computed with them
-   are of the old parts */
-static void parts_changed(uraCtx* c) {
-  ura_model_stale(c);
-  ura_mcache_flush(c);
+   are of the old parts. New parts keep the settled models as stance donors only: their keys name
+   the old parts, so none becomes live again, but a new model whose person is byte for byte a
+   kept one's takes its stance (a new drone or airbag file settles nothing; modelcache.c) */
+static void parts_changed(uraCtx* c, int keep_stances) {
+  if (keep_stances) {
+    ura_mcache_park(c);
+  } else {
+    ura_model_stale(c);
+    ura_mcache_flush(c);
+  }
   ura_recall_flush(c);
   c->parts_gen++;
 }
 
 void ura_models_free(uraCtx* c) {
-  parts_changed(c);
+  parts_changed(c, 0);
   parts_free(c->part, c->npart);
   c->npart = 0;
 }
@@ -109,7 +115,7 @@ static int parts_commit(uraCtx* c, uraPart* np, int nn) {
     parts_free(np, nn);
     return ura_fail(c, "%s", err);
   }
-  parts_changed(c);
+  parts_changed(c, 1);
   parts_free(c->part, c->npart);
   memcpy(c->part, np, sizeof(uraPart) * nn);
   c->npart = nn;

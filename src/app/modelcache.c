@@ -4,7 +4,8 @@
  * The live model is c->model with c->setup; the cache holds up to uraMODELCACHE others, each
  * balanced and settled (ur_impact_balance shifts neutral positions in the model: the kept model
  * is the balanced one), the least recently used freed first. Models are swapped only between
- * commands, never while a grid's workers use the live one. Changing the model parts flushes it.
+ * commands, never while a grid's workers use the live one. New model parts keep the entries
+ * as stance donors only (their keys name the old parts, so none is taken again).
  * The kept set-ups are also the donors of a new model's stance (ura_mcache_setups): when its
  * person is byte for byte that of a kept model (a drone or airbag setting changed, e.g.
  * 'set bag_p0 1.1 atm' or case A -> B), ur_impact_prepare takes that model's balanced neutral
