@@ -141,12 +141,11 @@ variants >"$out/variants.txt"
 awk -F, '
   NR == FNR { split($0, f, "|"); src[f[1]] = f[3]; order[++nv] = f[1]; next }
   FNR == 1 { next }
-  { v = $1; ft[v] = $4; kp[v] = $5; key = $2 "@" $3; q[v, key] = $7; r[v, key] = $9
+  { v = $1; ft[v] = $4; kp[v] = $5; r[v, $2 "@" $3] = $9
     if ($3 == 0 && $2 == "A") pa[v] = $6; if ($3 == 0 && $2 == "B") pb[v] = $6
     n[v]++; if ($9 >= 1 / 1.3 && $9 <= 1.3) ok[v]++
     if (!(v in lo) || $9 < lo[v]) lo[v] = $9; if (!(v in hi) || $9 > hi[v]) hi[v] = $9 }
   END {
-    split("C@0 C@4 C@10 B@0 B@4 B@10 A@0 A@4 A@10 A1@0 A1@4 A1@10 A2@0 A2@4 A2@10", K, " ")
     print "| variant | foam_t (m) | kappa | P(0,0) B | P(0,0) A | within x1.3 | ratios min-max |" \
           " C@0 | C@10 | B@0 | B@4 | B@10 | A@0 | A@4 | A@10 | A1@10 | A2@10 | source |"
     print "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
