@@ -138,6 +138,21 @@ run -c "set format table; case C; set step 0.2; grid; export grid $TMP/g.csv; im
 check export_status [ "$RC" -eq 0 ]
 check export_grid_header grep -q '^dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p$' "$TMP/g.csv"
 check export_history cond '[ "$(grep -vc "^#" "$TMP/h.csv")" -gt 100 ] && grep -q "^t,head_acc_x" "$TMP/h.csv"'
+# contacts: the last impact's pairs in order of first touch; none before an impact, none for a miss
+run -c "contacts"
+check contacts_not_yet cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "contacts: no impact yet; run .impact DPAR DPERP."'
+run -c "set format csv; case C; impact 0.25 0.25; contacts; impact 0 1.5; contacts"
+check contacts_rows cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^drone,person,first,last,peak_force,peak_time$" &&
+  has "$TMP/out" "^# impact at (0.25, 0.25) m: [1-9][0-9]* pairs touched" &&
+  has "$TMP/out" "^arm5_tube,head_cranium,0\.0[0-9]*,0\.0[0-9]*,[0-9.]*,0\.0[0-9]*$" &&
+  has "$TMP/out" "^# impact at (0, 1.5) m: 0 pairs touched"'
+awk -F, '/^# impact at \(0.25/ { on = 1; next } /^#/ { on = 0 } on && $1 != "drone" { print $3 }' \
+  "$TMP/out" >"$TMP/firsts"
+check contacts_ordered cond '[ "$(lines "$TMP/firsts")" -ge 3 ] && sort -c -n "$TMP/firsts"'
+run -c "case A; impact 0 0; contacts"
+check contacts_airbag has "$TMP/out" "bag_bottom  *head_cranium"
+
 run -c "export grid /nonexistent/dir/g.csv"
 check export_unwritable cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ]'
 

@@ -1,5 +1,6 @@
 /* test_impact.c: single impacts on the built-in models: stance, symmetry, no-contact offsets,
- * time-step convergence and the zero-wind centre values of the paper's Tables 11-13 */
+ * time-step convergence, the zero-wind centre values of the paper's Tables 11-13, and the
+ * record of the drone's contacts (urImpactWork.crec) */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -10,6 +11,7 @@
 #include <cmocka.h>
 
 #include "../src/app/app.h"
+#include "../src/core/impact_internal.h"
 
 /* one context per test: the built-in models, a case, its conditions */
 static uraCtx* fresh(const char* casename) {
@@ -114,11 +116,70 @@ static void window_convergence(void** state) {
   }
 }
 
+/* the contacts of a run, recorded by ur_impact_run: the same first contact as the result,
+   first <= peak <= last, and each peak force bitwise the largest force that a loop stepping the
+   same run by hand sees on that pair or airbag target; a drone that misses records nothing */
+static void check_contacts(uraCtx* c, double dpar, double dperp, int want_bag) {
+  urImpactResult r = hit(c, dpar, dperp);
+  const urImpactSetup* s = ura_setup(c);
+  const urModel* m = s->m;
+  int n = 0, bag = 0, head = 0;
+  double first = INFINITY;
+  for (int k = 0; k < s->ncand; k++) {
+    const urContactRec* q = c->work.crec + k;
+    if (q->t_first < 0) {
+      assert_true(q->fmax == 0 && q->t_last < 0);
+      continue;
+    }
+    n++;
+    bag += s->cand_src[k] >= m->npair;
+    head += !strcmp(m->geom[s->cand[k][1]].name, "head_cranium");
+    first = fmin(first, q->t_first);
+    assert_true(q->fmax > 0);
+    assert_true(q->t_first <= q->t_fmax && q->t_fmax <= q->t_last);
+  }
+  assert_true(n > 0 && head > 0 && (bag > 0) == want_bag);
+  assert_true(fabs(first - r.t_first) < 1e-9);
+
+  /* by hand */
+  urImpactCond cond;
+  ura_impact_cond(c, &cond);
+  urImpactWork w;
+  assert_int_equal(ur_impact_work_init(s, &w), 0);
+  double* fmax = calloc(s->ncand, sizeof(double));
+  urImpactResult r2;
+  double texit;
+  ur_impact_begin(s, &w, &cond, dpar, dperp, &r2, &texit);
+  while (w.d->status == urSTAT_OK) {
+    ur_step(m, w.d);
+    for (int k = 0; k < s->ncand; k++) {
+      int i = s->cand_src[k], b = (i - m->npair) / urMAXBAGTGT, t = (i - m->npair) % urMAXBAGTGT;
+      double f = i < m->npair ? w.d->pair[i].fn : w.d->bag[b].ftgt[t];
+      if (f > fmax[k]) fmax[k] = f;
+    }
+    if (ur_impact_after_step(s, &w, texit, &r2)) break;
+  }
+  for (int k = 0; k < s->ncand; k++) {
+    assert_memory_equal(&fmax[k], &c->work.crec[k].fmax, sizeof(double));
+  }
+  free(fmax);
+  ur_impact_work_free(&w);
+
+  hit(c, 0, 1.5);
+  for (int k = 0; k < s->ncand; k++) assert_true(c->work.crec[k].t_first < 0);
+}
+
+static void contacts(void** state) {
+  check_contacts(fresh("C"), 0.25, 0.25, 0);
+  check_contacts(fresh("A"), 0, 0, 1);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(stance),          cmocka_unit_test(centre_values),
     cmocka_unit_test(no_contact),      cmocka_unit_test(mirror_symmetry),
     cmocka_unit_test(dt_convergence),  cmocka_unit_test(window_convergence),
+    cmocka_unit_test(contacts),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

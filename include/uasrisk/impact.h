@@ -37,6 +37,9 @@ typedef struct {
   int ncand;                       /* ellipsoid pairs the drone can act through (contact pairs
                                       and airbag targets, the ground excluded): */
   int (*cand)[2];                  /* ncand x (drone ellipsoid, person ellipsoid) */
+  int* cand_src;                   /* ncand: where the force of each is: a contact pair (< npair),
+                                      or npair + airbag * urMAXBAGTGT + target */
+  int* cand_of;                    /* the inverse: npair + nbag * urMAXBAGTGT, -1 where none */
   double rmax;                     /* R_max, m */
   double head_cg[3];               /* settled head CG, world, m */
   double head_top;                 /* settled height of the head top, m */
@@ -58,12 +61,22 @@ typedef struct {
   double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
 } urImpactCond;
 
+/* what one of the pairs through which the drone acts (urImpactSetup.cand) did during an impact */
+typedef struct {
+  double t_first, t_last;          /* first and last time with a normal force, s from tau (-1:
+                                      never) */
+  double fmax;                     /* largest normal force, N */
+  double t_fmax;                   /* its time, s */
+} urContactRec;
+
 /* per-thread work space */
 typedef struct {
   urData* d;
   int rows;                        /* history rows */
   double* chan;                    /* channel buffers */
   double* work;                    /* injury work space */
+  urContactRec* crec;              /* ncand: the contacts of the last ur_impact_run (not of lane
+                                      runs) */
 } urImpactWork;
 
 typedef struct {
@@ -118,7 +131,8 @@ void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar,
 int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double dpar,
                           double dperp);
 
-/* run one impact; the run's histories stay in w->d; 0, or -1 if the simulation failed */
+/* run one impact; the run's histories stay in w->d and what each pair through which the drone
+   acts did in w->crec; 0, or -1 if the simulation failed */
 int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
                   const urInjuryParams* ip, double dpar, double dperp, urImpactResult* r);
 

@@ -293,6 +293,7 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv);
 int ura_cmd_compare(uraCtx* c, int argc, char** argv);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);
+int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
 int ura_impact_cond(uraCtx* c, urImpactCond* cond);
 int ura_last_trace(uraCtx* c, uraTrace* tr);     /* histories of the last impact; -1: none */
 /* keep a finished impact (its work space holds the histories) as the last impact, with the case

@@ -45,6 +45,9 @@ const uraCmd ura_cmds[] = {
    "p_vc,p"},
   {"history", ura_cmd_history, 0, 0, uraC_NONE, "history",
    "print the time histories of the last impact (time and every sensor channel)"},
+  {"contacts", ura_cmd_contacts, 0, 0, uraC_NONE, "contacts",
+   "list the drone's contacts with the person in the last impact, in order of first touch; "
+   "columns drone,person,first,last,peak_force,peak_time (s from tau, N)"},
   {"model", ura_cmd_model, 1, 2, uraC_NONE, "model show|params|parts|save FILE|load FILE",
    "print, list, write or load the model set (human, drone, airbags, options: uasrisk-model(5))"},
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",

@@ -1,4 +1,5 @@
-/* cmd_impact.c: one impact at an offset (impact) and its time histories (history) */
+/* cmd_impact.c: one impact at an offset (impact), its time histories (history) and its contacts
+ * (contacts) */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -117,6 +118,49 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
   ura_table_print(c, t);
   for (int k = 0; k < ncol; k++) free(names[k]);
   free(names);
+  return 0;
+}
+
+/* the pairs through which the drone touched the person in the last impact, in order of first
+   touch: drone part (ellipsoid, or airbag), person part, first and last touch, peak force */
+int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
+  if (!c->have_impact) return ura_fail(c, "contacts: no impact yet; run 'impact DPAR DPERP'");
+  const urImpactSetup* s = &c->setup;
+  const urModel* m = s->m;
+  const urContactRec* rec = c->work.crec;
+
+  /* the touching pairs, ordered by first touch (then by their order in the model) */
+  int* idx = malloc(sizeof(int) * (s->ncand + 1));
+  if (!idx) return ura_fail(c, "contacts: out of memory");
+  int n = 0;
+  for (int k = 0; k < s->ncand; k++) {
+    if (rec[k].t_first < 0) continue;
+    int j = n++;
+    while (j > 0 && rec[idx[j - 1]].t_first > rec[k].t_first) {
+      idx[j] = idx[j - 1];
+      j--;
+    }
+    idx[j] = k;
+  }
+
+  static const char* const cols[] = {"drone", "person", "first", "last", "peak_force",
+                                     "peak_time"};
+  uraTable* t = ura_table_new(6, cols);
+  ura_table_note(t, "impact at (%g, %g) m: %d pair%s touched; t in s from tau, force in N",
+                 c->last_dpar, c->last_dperp, n, n == 1 ? "" : "s");
+  for (int i = 0; i < n; i++) {
+    int k = idx[i], src = s->cand_src[k];
+    const char* drone = src < m->npair ? m->geom[s->cand[k][0]].name
+                                       : m->bag[(src - m->npair) / urMAXBAGTGT].name;
+    ura_table_cell(t, "%s", drone);
+    ura_table_cell(t, "%s", m->geom[s->cand[k][1]].name);
+    ura_table_cell(t, "%.4f", rec[k].t_first);
+    ura_table_cell(t, "%.4f", rec[k].t_last);
+    ura_table_cell(t, "%.6g", rec[k].fmax);
+    ura_table_cell(t, "%.4f", rec[k].t_fmax);
+  }
+  free(idx);
+  ura_table_print(c, t);
   return 0;
 }
 

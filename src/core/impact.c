@@ -35,13 +35,15 @@ int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w) {
   if (!w->d || ur_data_history(m, w->d, NULL, w->rows)) return -1;
   w->chan = malloc(sizeof(double) * w->rows * NCHAN);
   w->work = malloc(sizeof(double) * ur_injury_work_size(w->rows));
-  return w->chan && w->work ? 0 : -1;
+  w->crec = malloc(sizeof(urContactRec) * (s->ncand + 1));
+  return w->chan && w->work && w->crec ? 0 : -1;
 }
 
 void ur_impact_work_free(urImpactWork* w) {
   ur_data_free(w->d);
   free(w->chan);
   free(w->work);
+  free(w->crec);
   memset(w, 0, sizeof *w);
 }
 
@@ -174,14 +176,48 @@ int ur_impact_after_step(const urImpactSetup* s, const urImpactWork* w, double t
   return d->status != urSTAT_OK;
 }
 
+/* the contacts through which the drone acts, after a step: the forces are those of the step's
+   start, when ur_step_accept marks contact (engine_run.c); only the pairs with a force (the
+   contact pass lists them) and the airbags' targets are visited */
+static void contact_note(urContactRec* c, double f, double t) {
+  if (!(f > 0)) return;
+  if (c->t_first < 0) c->t_first = t;
+  c->t_last = t;
+  if (f > c->fmax) {
+    c->fmax = f;
+    c->t_fmax = t;
+  }
+}
+
+static void contacts_record(const urImpactSetup* s, urImpactWork* w) {
+  const urModel* m = s->m;
+  const urData* d = w->d;
+  double t = d->time - m->opt.dt;
+  for (int k = 0; k < d->npactive; k++) {
+    int i = d->plist[m->npair + k], c = s->cand_of[i];
+    if (c >= 0) contact_note(w->crec + c, d->pair[i].fn, t);
+  }
+  for (int b = 0; b < m->nbag; b++) {
+    if (!d->bag[b].active) continue;
+    for (int j = 0; j < m->bag[b].ntarget; j++) {
+      int c = s->cand_of[m->npair + b * urMAXBAGTGT + j];
+      if (c >= 0) contact_note(w->crec + c, d->bag[b].ftgt[j], t);
+    }
+  }
+}
+
 int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
                   const urInjuryParams* ip, double dpar, double dperp, urImpactResult* r) {
   double texit;
   ur_impact_begin(s, w, c, dpar, dperp, r, &texit);
+  for (int k = 0; k < s->ncand; k++) {
+    w->crec[k] = (urContactRec){-1, -1, 0, -1};
+  }
 
   /* step until the run ends, or the drone has passed the person without touching */
   while (w->d->status == urSTAT_OK) {
     ur_step(s->m, w->d);
+    contacts_record(s, w);
     int e = ur_impact_after_step(s, w, texit, r);
     if (e < 0) return -1;
     if (e) break;

@@ -478,8 +478,15 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
 
   /* the ellipsoid pairs through which the drone can act on the person */
   s->cand = malloc((m->npair + m->nbag * urMAXBAGTGT + 1) * sizeof *s->cand);
+  s->cand_src = malloc((m->npair + m->nbag * urMAXBAGTGT + 1) * sizeof *s->cand_src);
+  s->cand_of = malloc((m->npair + m->nbag * urMAXBAGTGT + 1) * sizeof *s->cand_of);
+  if (!s->cand || !s->cand_src || !s->cand_of) {
+    snprintf(s->err, sizeof s->err, "out of memory");
+    return -1;
+  }
   for (int i = 0; i < m->npair + m->nbag * urMAXBAGTGT; i++) {
     int ga, gb;
+    s->cand_of[i] = -1;
     if (i < m->npair) {
       ga = m->pair[i].geom1;
       gb = m->pair[i].geom2;
@@ -495,6 +502,8 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
     if (ina == inb) continue;
     s->cand[s->ncand][0] = ina ? ga : gb;
     s->cand[s->ncand][1] = ina ? gb : ga;
+    s->cand_src[s->ncand] = i;
+    s->cand_of[i] = s->ncand;
     s->ncand++;
   }
 
@@ -628,5 +637,7 @@ void ur_impact_free(urImpactSetup* s) {
   ur_data_free(s->rest);
   stance_free(s->stance);
   free(s->cand);
+  free(s->cand_src);
+  free(s->cand_of);
   memset(s, 0, sizeof *s);
 }
