@@ -1,6 +1,6 @@
-# test_atomic.sh: every writer (save session, export grid, export history, model save) writes a
-# temporary file beside the target and renames it: a write that fails (the file size limit,
-# ulimit -f, stands for a full disk) or a rename that fails (the target is a directory) leaves
+# test_atomic.sh: every writer (save session, export grid, export history, export contacts, model
+# save) writes a temporary file beside the target and renames it: a write that fails (the file
+# size limit, ulimit -f, stands for a full disk) or a rename that fails (the target is a directory) leaves
 # the old file intact and no temporary file behind; a good write keeps the old file's mode
 . tests/lib.sh
 
@@ -15,16 +15,18 @@ awk 'BEGIN { print "dpar,dperp,p"; for (i = 0; i < 20; i++) for (j = -10; j < 10
 pre_session='case B; set wind 4'
 pre_grid="grid load $TMP/g400.csv"
 pre_history='case C; impact 0 0'
+pre_contacts='case C; impact 0.25 0.25'
 pre_model='case A'
 write_session='save session'
 write_grid='export grid'
 write_history='export history'
+write_contacts='export contacts'
 write_model='model save'
 
 # no temporary file beside the target
 no_temp() { ! ls "$TMP/d" | grep -q '\.tmp\.'; }
 
-for w in session grid history model; do
+for w in session grid history contacts model; do
   eval "pre=\$pre_$w; cmd=\$write_$w"
   mkdir -p "$TMP/d"
   printf 'OLD CONTENT\n' >"$TMP/d/$w.out"

@@ -53,9 +53,9 @@ const uraCmd ura_cmds[] = {
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
-  {"export", ura_cmd_export, 2, 2, uraC_NONE, "export grid|history|sweep FILE",
-   "write the last grid's cells, the last impact's histories or the kept sweeps as CSV "
-   "(atomically)"},
+  {"export", ura_cmd_export, 2, 2, uraC_NONE, "export grid|history|sweep|contacts FILE",
+   "write the last grid's cells, the last impact's histories, the kept sweeps or the last "
+   "impact's contacts as CSV (atomically)"},
   {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
    "write a script that recreates the live state exactly (replay: uasrisk FILE, or source)"},
   {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",

@@ -44,14 +44,14 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   return ura_atomic_close(c, &a, 1, "save session");
 }
 
-/* export grid|history|sweep FILE: the same rows as 'grid cells', 'history' or 'sweep show',
-   always CSV, written to a temporary file beside FILE and renamed when complete */
+/* export grid|history|sweep|contacts FILE: the same rows as 'grid cells', 'history', 'sweep show'
+   or 'contacts', always CSV, written to a temporary file beside FILE and renamed when complete */
 int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   int grid = !strcmp(argv[1], "grid"), hist = !strcmp(argv[1], "history");
-  int sweep = !strcmp(argv[1], "sweep");
-  if (!grid && !hist && !sweep) {
+  int sweep = !strcmp(argv[1], "sweep"), cont = !strcmp(argv[1], "contacts");
+  if (!grid && !hist && !sweep && !cont) {
     return ura_fail(c, "export: unknown '%s'; accepted: export grid FILE, export history FILE, "
-                    "export sweep FILE", argv[1]);
+                    "export sweep FILE, export contacts FILE", argv[1]);
   }
   if (sweep && !c->nsweep) {
     return ura_fail(c, "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST'");
@@ -64,9 +64,9 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   int fmt = c->st.format;
   c->out = a.f;
   c->st.format = uraFMT_CSV;
-  char* av[2] = {grid ? "grid" : sweep ? "sweep" : "history", grid ? "cells" : "show"};
+  char* av[2] = {argv[1], grid ? "cells" : "show"};
   int rc = grid ? ura_cmd_grid(c, 2, av) : sweep ? ura_cmd_sweep(c, 2, av) :
-           ura_cmd_history(c, 1, av);
+           cont ? ura_cmd_contacts(c, 1, av) : ura_cmd_history(c, 1, av);
   c->out = out;
   c->st.format = fmt;
   return ura_atomic_close(c, &a, rc == 0, "export");
