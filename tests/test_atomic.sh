@@ -1,7 +1,8 @@
-# test_atomic.sh: every writer (save session, export grid, export history, export contacts, model
-# save) writes a temporary file beside the target and renames it: a write that fails (the file
-# size limit, ulimit -f, stands for a full disk) or a rename that fails (the target is a directory) leaves
-# the old file intact and no temporary file behind; a good write keeps the old file's mode
+# test_atomic.sh: every writer (save session, export grid, export history, export contacts,
+# model save) writes a temporary file beside the target and renames it: a write that fails (the
+# file size limit, ulimit -f, stands for a full disk) or a rename that fails (the target is a
+# directory) leaves the old file intact and no temporary file behind; a good write keeps the old
+# file's mode
 . tests/lib.sh
 
 U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
