@@ -399,6 +399,45 @@ static void test_foam_hysteresis(void** state)
   assert_near(ur_law_force(&l, &s, 0.018, 0, A), A*(0.51e6 + 0.3e6/0.2*0.1), 1e-6);
 }
 
+/* foam on a rigid backing: the strain stops at the lock strain, where the backing's Hertz force
+   K (d - lock T)^1.5 adds (elastic: it gives back its work); the law's data then never end */
+static void test_foam_lock(void** state)
+{
+  urLaw l;
+  memset(&l, 0, sizeof(l));
+  l.type = urLAW_FOAM;
+  urCurve st = {4, {0, 0.1, 0.5, 0.8}, {0, 0.3e6, 0.5e6, 2.0e6}};
+  l.stress = st;
+  l.thickness = 0.04;
+  l.unload_r = 0.2;
+  l.unload_p = 4;
+  double A = 0.004, K = 9.6e6;
+  urLawState s;
+  memset(&s, 0, sizeof(s));
+  assert_true(ur_law_range(&l) == 0.8*0.04);
+  l.lock = 0.8;
+  l.backing_k = K;
+  assert_true(isinf(ur_law_range(&l)));
+
+  // below the lock: the plain law; beyond: the lock stress plus the backing
+  assert_near(ur_law_force(&l, &s, 0.02, 0, A), A*0.5e6, 1e-6);
+  double d = 0.032 + 0.004;
+  assert_near(ur_law_force(&l, &s, d, 0, A), A*2.0e6 + K*pow(0.004, 1.5), 1e-6);
+
+  // load past the lock and back: the foam dissipates as without the backing, the backing and
+  // the foam held at its lock stress past the lock give their work back
+  const int n = 100000;
+  double wl = pathwork(&l, &s, 0, d, n, A);
+  assert_near(s.dmax, d, 1e-15);
+  assert_near(s.dres, 0.2*0.032, 1e-15);
+  double wu = pathwork(&l, &s, d, 0, n, A);
+  double wb = 0.4*K*pow(0.004, 2.5);                /* the backing's work, given back */
+  double wuref = -A*0.04*2.0e6*0.8*0.8/5 - wb - A*2.0e6*0.004;   /* sm (em - er)/(p + 1) */
+  printf("foam lock: load %.9g J, unload %.9g J (%.9g)\n", wl, wu, wuref);
+  assert_near(wu, wuref, 1e-6);
+  assert_true(wl > -wu);
+}
+
 /* friction: magnitude mu Fn when sliding faster than v_eps, linear below, opposes vt */
 static void test_friction(void** state)
 {
@@ -436,6 +475,7 @@ int main(void)
     cmocka_unit_test(test_curve_eval),
     cmocka_unit_test(test_table_hysteresis),
     cmocka_unit_test(test_foam_hysteresis),
+    cmocka_unit_test(test_foam_lock),
     cmocka_unit_test(test_friction),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

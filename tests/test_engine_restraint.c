@@ -24,12 +24,21 @@ static double interp(const double* x, const double* y, int n, double v) {
 static const double LX[4] = {0, 0.1, 0.3, 0.6}, LY[4] = {0, 20, 90, 400};
 static const double UX[3] = {0, 0.2, 0.6}, UY[3] = {0, 5, 100};
 
-// a massive hinge without gravity, with the restraint under test
-static urModel* hinge(int unload) {
+// a massive hinge without gravity with restraint r
+static urModel* hinge_with(const urRestraint* r) {
   urModel* m = ur_model_new();
   double I[6] = {0.1, 0.1, 0.1, 0, 0, 0};
   int b = ur_model_add_body(m, "arm", -1, urJNT_REVOLUTE, NULL, NULL);
   ur_model_set_inertia(m, b, 1, NULL, I);
+  ur_model_set_restraint(m, b, 0, r);
+  m->opt.gravity[2] = 0;
+  assert_int_equal(ur_model_compile(m), 0);
+  return m;
+}
+
+
+// the hinge with the restraint under test
+static urModel* hinge(int unload) {
   urRestraint r = {0};
   r.k = 7;
   r.c = 0.5;
@@ -45,10 +54,7 @@ static urModel* hinge(int unload) {
     memcpy(r.unload.x, UX, sizeof(UX));
     memcpy(r.unload.y, UY, sizeof(UY));
   }
-  ur_model_set_restraint(m, b, 0, &r);
-  m->opt.gravity[2] = 0;
-  assert_int_equal(ur_model_compile(m), 0);
-  return m;
+  return hinge_with(&r);
 }
 
 
@@ -78,6 +84,30 @@ static void test_curve_stops(void** state) {
   }
   print_message("restraint curve + damping + stops: max error %.1e N m\n", e);
   assert_true(e < 1e-12);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+// saturation: the linear part k x becomes sat tanh(k x / sat) (the arms' yielding law); the
+// potential energy is its integral, sat^2/k ln cosh(k x / sat)
+static void test_saturation(void** state) {
+  urRestraint r = {0};
+  r.k = 6000;
+  r.sat = 600;
+  urModel* m = hinge_with(&r);
+  urData* d = ur_data_new(m);
+  double qs[5] = {0.001, 0.05, 0.1, 0.5, -0.3}, e = 0;
+  for (int i = 0; i < 5; i++) {
+    double f = 600*tanh(10*qs[i]);
+    e = fmax(e, fabs(moment(m, d, qs[i], 0) - f));
+  }
+  assert_true(e < 1e-9);
+  assert_true(fabs(moment(m, d, 0.001, 0) - 6) < 1e-3);       /* initial slope k */
+  assert_true(fabs(moment(m, d, 2, 0) - 600) < 1e-9);         /* saturated */
+  d->qpos[0] = 0.2;
+  ur_kinematics(m, d);
+  assert_true(fabs(ur_energy_potential(m, d) - 600.0*600/6000*log(cosh(2))) < 1e-9);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -174,6 +204,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_curve_stops),
     cmocka_unit_test(test_hysteresis),
+    cmocka_unit_test(test_saturation),
     cmocka_unit_test(test_spherical_energy),
     cmocka_unit_test(test_implicit_damping),
   };

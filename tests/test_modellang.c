@@ -537,10 +537,61 @@ static const struct {
   {PRE BODY_C "mass=1 pos =1,2,3\n",
    "x.urm:4: body: expected key=value, got 'pos' (no blanks around '=')"},
   {PRE BODY_C "mass=1 com= 1,2,3\n", "x.urm:4: missing value for key 'com'*"},
+  {PRE "curve c x=0,1 y=0,1 yscale=0\n", "x.urm:4: curve 'c': yscale must be > 0 (got 0)"},
+  {PRE "curve c x=0,1 y=0,1 xscale=-2\n", "x.urm:4: curve 'c': xscale must be > 0 (got -2)"},
+  {PRE BODY_C "mass=1\nrestraint c dof=0 k=1 sat=-3\n",
+   "x.urm:5: restraint 'c': sat must be >= 0 (got -3)"},
+  {PRE "curve c x=0,0.5 y=0,1\nlaw l type=foam stress=c thickness=0.1 unload_r=0 unload_p=1 "
+   "lock=0.4\n", "x.urm:5: law 'l': lock and backing go together*"},
+  {PRE "curve c x=0,0.5 y=0,1\nlaw h type=hertz E1=1e9 nu1=0.3 R1=0.1 E2=1e9 nu2=0.3 R2=0\n"
+   "law l type=foam stress=c thickness=0.1 unload_r=0 unload_p=1 lock=0.6 backing=h\n",
+   "x.urm:6: law 'l': lock must be in (0, 1) and within the stress curve (last strain 0.5; got "
+   "0.6)"},
+  {PRE "curve c x=0,0.5 y=0,1\nlaw t type=table load=c\n"
+   "law l type=foam stress=c thickness=0.1 unload_r=0 unload_p=1 lock=0.5 backing=t\n",
+   "x.urm:6: law 'l': backing 't' must be a hertz law"},
+  {PRE "curve c x=0,0.5 y=0,1\n"
+   "law l type=foam stress=c thickness=0.1 unload_r=0 unload_p=1 lock=0.5 backing=hh\n",
+   "x.urm:5: law: dangling reference to law 'hh'*"},
 };
 
 
 /* one message per malformed text, with the exact file and line; nothing returned */
+/* curve scales, a restraint's saturation, a foam law's lock strain and backing reach the model */
+static void test_scales_lock_sat(void** state) {
+  char err[256];
+  urModel* m = parse1("param s 2 MPa\n"
+                      "body b parent=world joint=free pos=0,0,0 mass=1 inertia=1,1,1\n"
+                      "body c parent=b joint=revolute pos=0,0,0 mass=1\n"
+                      "restraint c dof=0 k=5000 sat=400\n"
+                      "ellipsoid e body=b pos=0,0,0 size=0.1,0.1,0.1\n"
+                      "curve c x=0,0.5,0.9 y=0,1,4 xscale=1 yscale=$s\n"
+                      "curve d x=0,1 y=0,3 xscale=0.25\n"
+                      "law h type=hertz E1=2.23e7 nu1=0.29 R1=0.0875 E2=5.48e10 nu2=0.34 R2=0\n"
+                      "law f type=foam stress=c thickness=0.04 unload_r=0.2 unload_p=4 lock=0.9 "
+                      "backing=h\n"
+                      "law t type=table load=d\n"
+                      "pair p a=e b=ground law=f\n"
+                      "pair q a=e b=ground law=t\n", NULL, 0, err);
+  assert_non_null(m);
+  const urLaw* f = &m->pair[0].law;
+  assert_near(f->stress.y[2], 8e6, 0);
+  assert_near(f->stress.x[1], 0.5, 0);
+  assert_near(f->lock, 0.9, 0);
+  double K, dy, fy;
+  ur_law_hertz_params(&m->pair[0].law, &K, &dy, &fy);
+  urLaw h;
+  memset(&h, 0, sizeof h);
+  ur_law_hertz(&h, 2.23e7, 0.29, 0.0875, 5.48e10, 0.34, 0, 0, 0, 0);
+  ur_law_hertz_params(&h, &K, &dy, &fy);
+  assert_near(f->backing_k, K, 1e-9*K);
+  assert_near(m->pair[1].law.load.x[1], 0.25, 0);
+  assert_near(m->pair[1].law.load.y[1], 3, 0);
+  assert_near(m->body[1].rst[0].sat, 400, 0);
+  assert_near(m->body[1].rst[0].k, 5000, 0);
+  ur_model_free(m);
+}
+
 static void test_malformed(void** state) {
   int failures = 0;
   for (size_t i = 0; i < sizeof(bad)/sizeof(bad[0]); i++) {
@@ -734,6 +785,7 @@ int main(void) {
     cmocka_unit_test(test_enable),
     cmocka_unit_test(test_preamble_valid),
     cmocka_unit_test(test_malformed),
+    cmocka_unit_test(test_scales_lock_sat),
     cmocka_unit_test(test_short_err),
     cmocka_unit_test(test_pairs),
     cmocka_unit_test(test_sources),

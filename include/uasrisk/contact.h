@@ -82,6 +82,10 @@ typedef struct {
   double thickness;                /* foam thickness, m: strain = depth / thickness */
   double unload_r;                 /* residual strain as a fraction of the maximum strain */
   double unload_p;                 /* exponent of the unloading curve */
+  double lock;                     /* strain at which the foam is solid (densified), (0, 1); 0:
+                                      none (the stress curve alone, extrapolated beyond its end) */
+  double backing_k;                /* Hertz constant K (N/m^1.5) of the rigid backing the solid
+                                      foam rests on: F += K (d - lock thickness)^1.5 beyond lock */
   /* all laws */
   double damping;                  /* linear viscous term, N s/m, acts while in contact */
   double chi;                      /* Hunt-Crossley-type factor, s/m: F *= 1 + chi*rate */
@@ -106,13 +110,19 @@ void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, doubl
    HERTZ (plastic): Brake F = fmax ((d - dres)/(dmax - dres))^1.5;
    TABLE: the unloading curve shifted along the depth axis to pass through (dmax, fmax),
           capped by the loading curve (elastic when unload.n < 2);
-   FOAM: stress sm ((e - er)/(em - er))^unload_p, er = unload_r em (elastic if unload_p <= 0).
+   FOAM: stress sm ((e - er)/(em - er))^unload_p, er = unload_r em (elastic if unload_p <= 0);
+         with a lock strain the strain stops there and the backing's Hertz force (elastic) adds.
    F = Fe (1 + chi rate) + damping rate while Fe > 0, then clamped at >= 0. */
 double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate, double area);
 
 /* record depth d on an accepted step (updates dmax, fmax, dres, touching); d <= 0 only clears
    touching. touching = 1 while the rate-free force is positive. */
 void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, double area);
+
+/* the largest depth a law's data covers (m): a table law's last loading abscissa, a foam law's
+   thickness times its stress curve's last strain (HUGE_VAL with a lock strain: the backing
+   takes over), HUGE_VAL for Hertz; beyond it the law is extrapolated */
+double ur_law_range(const urLaw* law);
 
 /* Hertz constants of a law: K = 4/3 E* sqrt(R) (N/m^1.5), Jackson-Green yield onset depth dy
    and force fy (HUGE_VAL when sy <= 0) */

@@ -89,7 +89,8 @@ typedef enum {
 
 //---------------------------------- model elements ------------------------------------------------
 
-/* one restraint acting on one joint dof: M = k x + load(x) [+ hysteresis] + c xdot + stops,
+/* one restraint acting on one joint dof: M = k x + load(x) [+ hysteresis] + c xdot + stops
+   (k x saturating as sat tanh(k x / sat) when sat > 0),
    x = q - x0. Revolute, prismatic, universal: x is the joint coordinate (per Cardan axis).
    Spherical: x is the k-th component of the rotation vector of the relative rotation (body
    frame); the elastic moments are mapped to body torques exactly (inverse right Jacobian), so
@@ -98,6 +99,7 @@ typedef enum {
 typedef struct {
   int active;                      /* 0: no restraint on this dof */
   double k;                        /* linear stiffness, N m/rad or N/m */
+  double sat;                      /* > 0: k x saturates at this force, as sat tanh(k x / sat) */
   urCurve load;                    /* loading curve (x -> generalised force); if all x >= 0 it is
                                       extended odd-symmetrically to x < 0 */
   urCurve unload;                  /* optional unloading curve: scaled through (xmax, load(xmax)) */
@@ -215,7 +217,8 @@ typedef struct {
   urParam* param;                  /* nparam */
   double* qpos0;                   /* nq: reference configuration */
   // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
-  // an active restraint, with an unloading (hysteresis) curve, whose reaction is needed (react)
+  // an active restraint, with a load curve (its extremes are tracked), whose reaction is needed
+  // (react)
   int *grav, *rstb, *hyst, *reactb;
   int ngrav, nrstb, nhyst, nreactb;
   char err[urMSGLEN];              /* last builder / compile error */
@@ -448,6 +451,11 @@ void ur_set_free(const urModel* m, urData* d, int body, const double pos[3], con
 /* World position / velocity of a point given in the body frame (after ur_forward). */
 void ur_point_pos(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
 void ur_point_vel(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
+
+/* Laws and restraint curves used beyond their data in the run so far (a pair's largest depth
+   beyond ur_law_range, a curve restraint's extreme deflection beyond its curve's abscissae):
+   the count, and in msg (if len > 0) the one furthest beyond, as a phrase. */
+int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len);
 
 /* Human-readable name of a status. */
 const char* ur_status_str(int status);

@@ -35,6 +35,7 @@ typedef struct {
   double vc_thorax, vc_abdomen;    /* VC, m/s */
   double p_hic, p_nij, p_vc;       /* injury-specific PoF */
   double p;                        /* fused PoF (eq. 3.1) */
+  int extrap;                      /* laws or curves used beyond their data (urImpactResult) */
   char reason[64];                 /* why a cell failed */
 } urCell;
 
@@ -47,6 +48,7 @@ typedef struct {
   /* summary */
   double q;                        /* sum of p*step^2 over finished cells, m^2 */
   int ndone, ncontact, nfailed, npending, nsimulated;
+  int nextrap;                     /* finished cells whose impact used a law beyond its data */
   int complete;                    /* every cell finished and none failed */
   double seconds;                  /* wall time of the run */
 } urGrid;

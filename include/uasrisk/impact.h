@@ -86,6 +86,9 @@ typedef struct {
   double t_first;                  /* time of first contact from tau, s (-1: none) */
   urInjuryResult inj;              /* criteria and PoFs */
   double p;                        /* P{F | Delta} */
+  int nextrap;                     /* laws and restraint curves used beyond their data
+                                      (ur_extrapolated): the result rests partly on extrapolation */
+  char extrap[urMSGLEN];           /* the one furthest beyond, as a phrase */
 } urImpactResult;
 
 /* Balance the standing posture: a passive stance under gravity is an inverted-pendulum chain

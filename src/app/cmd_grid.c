@@ -46,6 +46,7 @@ static int cell_result(urCell* cell, int rc, const urImpactResult* r) {
   cell->p_nij = r->inj.p_nij;
   cell->p_vc = r->inj.p_vc;
   cell->p = r->contact ? r->p : 0.0;
+  cell->extrap = r->nextrap;
   return 0;
 }
 
@@ -302,6 +303,10 @@ static int grid_summary(uraCtx* c) {
                    "contact is possible outside them are not counted)",
                    g->par_max - (g->nrow - 1) * g->step, g->par_max, -g->perp_min);
   }
+  if (g->nextrap) {
+    ura_table_note(t, "%d of the impacts used a law beyond its data (extrapolated: 'grid cells' "
+                   "lists them, 'impact' names the law)", g->nextrap);
+  }
   if (c->last.recalled) ura_table_note(t, "%s", RECALLED);
   ura_table_cell(t, "%s", c->last.casename);
   ura_table_cell(t, "%g", c->last.wind);
@@ -339,6 +344,21 @@ static int grid_cells(uraCtx* c) {
   ura_table_note(t, "grid of case %s, wind %g m/s, face %g deg (%s); status: %s", 
                  c->last.casename, c->last.wind, c->last.face, c->last.source,
                  g->complete ? "complete" : "PARTIAL");
+  if (g->nextrap) {
+    char list[uraERRLEN] = "";
+    size_t len = 0;
+    int shown = 0;
+    for (int k = 0; k < g->nrow * g->ncol && shown < 8; k++) {
+      const urCell* e = &g->cell[k];
+      if (!e->extrap || e->mirrored || e->status != urCELL_DONE) continue;
+      int w = snprintf(list + len, sizeof list - len, " (%g, %g)", e->dpar, e->dperp);
+      if (w < 0 || (size_t)w >= sizeof list - len) break;
+      len += (size_t)w;
+      shown++;
+    }
+    ura_table_note(t, "extrapolated: %d simulated cells used a law beyond its data:%s%s",
+                   g->nextrap, list, g->nextrap > shown ? " ..." : "");
+  }
   for (int k = 0; k < g->nrow * g->ncol; k++) {
     const urCell* e = &g->cell[k];
     if (e->status == urCELL_PENDING || e->status == urCELL_FAILED) continue;

@@ -60,6 +60,10 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
                  "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
                  1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
+  if (r.nextrap) {
+    ura_table_note(t, "extrapolated: %d law(s) used beyond their data; furthest: %s", r.nextrap,
+                   r.extrap);
+  }
   ura_table_cell(t, "%g", dpar);
   ura_table_cell(t, "%g", dperp);
   ura_table_cell(t, "%d", r.contact);

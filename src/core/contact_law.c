@@ -75,6 +75,19 @@ void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, doubl
   law->plastic = plastic;
 }
 
+double ur_law_range(const urLaw* law)
+{
+  switch (law->type) {
+  case urLAW_TABLE:
+    return law->load.n > 0 ? law->load.x[law->load.n - 1] : HUGE_VAL;
+  case urLAW_FOAM:
+    if (law->lock > 0 || law->stress.n <= 0) return HUGE_VAL;
+    return law->thickness * law->stress.x[law->stress.n - 1];
+  default:
+    return HUGE_VAL;
+  }
+}
+
 void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy)
 {
   // K = 4/3 E* sqrt(R) (sheet §1.2); JG yield onset dy = R (pi C Sy / (2 E*))^2,
@@ -164,17 +177,24 @@ static double elastic_force(const urLaw* law, const urLawState* s, double d, dou
   }
 
   case urLAW_FOAM: {
-    // F = area x stress(strain), strain = d / thickness (sheet §3.1; Chou 1994)
+    // F = area x stress(strain), strain = d / thickness (sheet §3.1; Chou 1994), the strain
+    // stopping at the lock strain, where the solid foam rests on its rigid backing
     if (!(law->thickness > 0)) return 0;
-    double e = d / law->thickness;
-    if (d >= s->dmax || !(law->unload_p > 0)) return area * ur_curve_eval(&law->stress, e);
+    double e = d / law->thickness, fb = 0;
+    if (law->lock > 0 && e > law->lock) {
+      double x = d - law->lock * law->thickness;
+      fb = law->backing_k * x * sqrt(x);
+      e = law->lock;
+    }
+    if (d >= s->dmax || !(law->unload_p > 0)) return area * ur_curve_eval(&law->stress, e) + fb;
 
     // unloading from (em, sm): s = sm ((e - er)/(em - er))^p, er = r em (sheet §3.2)
     double em = s->dmax / law->thickness;
+    if (law->lock > 0 && em > law->lock) em = law->lock;
     double sm = ur_curve_eval(&law->stress, em);
     double er = law->unload_r * em;
-    if (e <= er || !(em > er)) return 0;
-    return area * sm * pow((e - er) / (em - er), law->unload_p);
+    if (e <= er || !(em > er)) return fb;
+    return area * sm * pow((e - er) / (em - er), law->unload_p) + fb;
   }
   }
   return 0;
@@ -223,10 +243,12 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
         s->dres = 0;
       }
       break;
-    case urLAW_FOAM:
-      s->fmax = law->thickness > 0 ? area * ur_curve_eval(&law->stress, d / law->thickness) : 0;
-      s->dres = law->unload_p > 0 ? law->unload_r * d : 0;
+    case urLAW_FOAM: {
+      double dl = law->lock > 0 ? fmin(d, law->lock * law->thickness) : d;
+      s->fmax = law->thickness > 0 ? area * ur_curve_eval(&law->stress, dl / law->thickness) : 0;
+      s->dres = law->unload_p > 0 ? law->unload_r * dl : 0;
       break;
+    }
     }
   }
   s->touching = elastic_force(law, s, d, area) > 0;

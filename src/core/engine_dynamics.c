@@ -112,8 +112,12 @@ double ur_energy_potential(const urModel* m, const urData* d) {
         }
       }
       for (int k = 0; k < b->nv; k++) {
-        if (b->rst[k].active) {
-          e += 0.5*b->rst[k].k*(x[k] - b->rst[k].x0)*(x[k] - b->rst[k].x0);
+        const urRestraint* r = b->rst + k;
+        double xk = x[k] - r->x0;
+        if (r->active && r->sat > 0 && r->k > 0) {
+          e += r->sat*r->sat/r->k*log(cosh(r->k*xk/r->sat));
+        } else if (r->active) {
+          e += 0.5*r->k*xk*xk;
         }
       }
     }

@@ -22,7 +22,7 @@ static double curve(const urCurve* c, double x) {
 
 // elastic generalised force at deflection x with extremes st = (max, min) reached so far
 static double elastic(const urRestraint* r, double x, const double st[2]) {
-  double f = r->k*x;
+  double f = r->sat > 0 ? r->sat*tanh(r->k*x/r->sat) : r->k*x;
   if (r->load.n <= 0) {
     return f;
   }
@@ -129,7 +129,8 @@ void ur_restraints(const urModel* m, urData* d) {
 }
 
 
-// record the extreme deflections reached (accepted steps only)
+// record the extreme deflections reached (accepted steps only) on every dof with a curve: the
+// unloading curves start there, and ur_extrapolated compares them with the curves' data
 void ur_restraints_commit(const urModel* m, urData* d) {
   for (int j = 0; j < m->nhyst; j++) {
     int i = m->hyst[j];
@@ -138,7 +139,7 @@ void ur_restraints_commit(const urModel* m, urData* d) {
     int n = deflection(m, d, i, x);
     for (int k = 0; k < n; k++) {
       double* st = d->rst + 2*(b->vadr + k);
-      if (b->rst[k].active && b->rst[k].unload.n > 0) {
+      if (b->rst[k].active && b->rst[k].load.n > 0) {
         if (x[k] > st[0]) {
           st[0] = x[k];
         }

@@ -80,7 +80,7 @@ urCell* ur_grid_find(urGrid* g, double dpar, double dperp) {
 
 void ur_grid_summarise(urGrid* g) {
   double q = 0;
-  g->ndone = g->ncontact = g->nfailed = g->npending = g->nsimulated = 0;
+  g->ndone = g->ncontact = g->nfailed = g->npending = g->nsimulated = g->nextrap = 0;
   for (long k = 0; k < (long)g->nrow * g->ncol; k++) {
     const urCell* c = &g->cell[k];
     switch (c->status) {
@@ -91,6 +91,7 @@ void ur_grid_summarise(urGrid* g) {
       g->ndone++;
       if (!c->mirrored) g->nsimulated++;
       if (c->contact) g->ncontact++;
+      if (c->extrap && !c->mirrored) g->nextrap++;
       q += c->p;
       break;
     }

@@ -237,6 +237,7 @@ int ur_impact_finish(const urImpactSetup* s, urImpactWork* w, const urInjuryPara
   }
   r->t_first = d->t_first;
   r->contact = d->t_first >= 0;
+  r->nextrap = ur_extrapolated(m, d, r->extrap, sizeof r->extrap);
   if (!r->contact || d->nhist < 2) return 0;
 
   /* channels: time, head acceleration, neck Fz and My (SAE signs), deflections */

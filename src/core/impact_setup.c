@@ -186,9 +186,9 @@ struct urStance {
    its put_ function below too (urOption: stance_new); sizes of LP64 targets (amd64, arm64) */
 #define urLP64_SIZE(T, n) _Static_assert(sizeof(void*) != 8 || sizeof(T) == (n), \
                                          #T " changed: update its put_ function")
-urLP64_SIZE(urRestraint, 1616);
-urLP64_SIZE(urLaw, 2432);
-urLP64_SIZE(urBody, 5600);
+urLP64_SIZE(urRestraint, 1624);
+urLP64_SIZE(urLaw, 2448);
+urLP64_SIZE(urBody, 5624);
 urLP64_SIZE(urGeom, 200);
 urLP64_SIZE(urOption, 112);
 
@@ -224,6 +224,7 @@ static void put_curve(urStance* st, const urCurve* c) {
 static void put_restraint(urStance* st, const urRestraint* r) {
   PUT(st, r->active);
   PUT(st, r->k);
+  PUT(st, r->sat);
   put_curve(st, &r->load);
   put_curve(st, &r->unload);
   PUT(st, r->c);
@@ -248,6 +249,8 @@ static void put_law(urStance* st, const urLaw* l) {
   PUT(st, l->thickness);
   PUT(st, l->unload_r);
   PUT(st, l->unload_p);
+  PUT(st, l->lock);
+  PUT(st, l->backing_k);
   PUT(st, l->damping);
   PUT(st, l->chi);
   PUT(st, l->mu);

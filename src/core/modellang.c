@@ -95,7 +95,8 @@ static const KeySpec spec_option[] = {
   {"damping", K_ENUM, 1, 0, 0, "implicit|explicit"}, ENABLE
 };
 static const KeySpec spec_curve[] = {
-  {"x", K_LIST, urMAXCURVE, 2, 1, NULL}, {"y", K_LIST, urMAXCURVE, 2, 1, NULL}, ENABLE
+  {"x", K_LIST, urMAXCURVE, 2, 1, NULL}, {"y", K_LIST, urMAXCURVE, 2, 1, NULL}, NUM("xscale"),
+  NUM("yscale"), ENABLE
 };
 static const KeySpec spec_body[] = {
   NAMER("parent"),
@@ -104,8 +105,8 @@ static const KeySpec spec_body[] = {
   VEC3("axis"), VEC3("axis2"), NAME("jname"), FLAG("gravity"), ENABLE
 };
 static const KeySpec spec_restraint[] = {
-  {"dof", K_INT, 1, 0, 1, NULL}, NUM("k"), NAME("load"), NAME("unload"), NUM("c"), NUM("lo"),
-  NUM("hi"), NUM("kstop"), NUM("cstop"), NUM("x0"), ENABLE
+  {"dof", K_INT, 1, 0, 1, NULL}, NUM("k"), NUM("sat"), NAME("load"), NAME("unload"), NUM("c"),
+  NUM("lo"), NUM("hi"), NUM("kstop"), NUM("cstop"), NUM("x0"), ENABLE
 };
 static const KeySpec spec_ellipsoid[] = {
   NAMER("body"), VEC3R("pos"), VEC3R("size"), QUAT, ROT, ENABLE
@@ -119,8 +120,8 @@ static const KeySpec spec_table[] = {
   LAWTYPE, NAMER("load"), NAME("unload"), FRICTION, ENABLE
 };
 static const KeySpec spec_foam[] = {
-  LAWTYPE, NAMER("stress"), NUMR("thickness"), NUMR("unload_r"), NUMR("unload_p"), FRICTION,
-  ENABLE
+  LAWTYPE, NAMER("stress"), NUMR("thickness"), NUMR("unload_r"), NUMR("unload_p"), NUM("lock"),
+  NAME("backing"), FRICTION, ENABLE
 };
 static const KeySpec spec_pair[] = {
   NAMER("a"), NAMER("b"), NAMER("law"), ENABLE
@@ -1014,14 +1015,24 @@ static int st_curve(Parser* p, const Bound* b) {
                   "x[%d] = %g)", b->name, i + 1, x->v[i], i, x->v[i - 1]);
     }
   }
+  static const char* const scales[] = {"xscale", "yscale"};
+  for (int k = 0; k < 2; k++) {
+    const Val* v = get(b, scales[k]);
+    if (v->set && !(v->v[0] > 0)) {
+      return fail(p, v->line, "curve '%s': %s must be > 0 (got %g)", b->name, scales[k], v->v[0]);
+    }
+  }
   int id = push(p, (void**)&p->curve, &p->ncurve, &p->capcurve, sizeof(urCurve), b->line);
   if (id < 0 || declare(p, SYM_CURVE, b->name, b->line, id, 1)) {
     return -1;
   }
   urCurve* c = p->curve + id;
+  double sx = num(b, "xscale", 1), sy = num(b, "yscale", 1);
   c->n = x->n;
-  memcpy(c->x, x->v, (size_t)x->n*sizeof(double));
-  memcpy(c->y, y->v, (size_t)y->n*sizeof(double));
+  for (int i = 0; i < x->n; i++) {
+    c->x[i] = sx*x->v[i];
+    c->y[i] = sy*y->v[i];
+  }
   return 0;
 }
 
@@ -1143,8 +1154,8 @@ static int st_restraint(Parser* p, const Bound* b) {
   }
 
   /* scalars */
-  static const char* const nn[] = {"k", "c", "kstop", "cstop"};
-  for (int i = 0; i < 4; i++) {
+  static const char* const nn[] = {"k", "c", "kstop", "cstop", "sat"};
+  for (int i = 0; i < 5; i++) {
     if (nonneg(p, b, nn[i], 0)) {
       return -1;
     }
@@ -1162,6 +1173,7 @@ static int st_restraint(Parser* p, const Bound* b) {
   urRestraint r;
   memset(&r, 0, sizeof(r));
   r.k = num(b, "k", 0);
+  r.sat = num(b, "sat", 0);
   r.c = num(b, "c", 0);
   r.lo = num(b, "lo", 0);
   r.hi = num(b, "hi", 0);
@@ -1290,6 +1302,32 @@ static int st_law(Parser* p, const Bound* b) {
     law.thickness = num(b, "thickness", 0);
     law.unload_r = vr->v[0];
     law.unload_p = num(b, "unload_p", 0);
+
+    /* the lock strain within the stress data, and the rigid backing's Hertz law */
+    const Val* vk = get(b, "lock");
+    const Val* vb = get(b, "backing");
+    if (vk->set != vb->set) {
+      return fail(p, (vk->set ? vk : vb)->line, "law '%s': lock and backing go together (the "
+                  "solid foam rests on the backing)", b->name);
+    }
+    if (vk->set) {
+      double last = law.stress.x[law.stress.n - 1];
+      if (!(vk->v[0] > 0 && vk->v[0] < 1 && vk->v[0] <= last)) {
+        return fail(p, vk->line, "law '%s': lock must be in (0, 1) and within the stress curve "
+                    "(last strain %g; got %g)", b->name, last, vk->v[0]);
+      }
+      int l = ref(p, SYM_LAW, vb->raw, vb->line, "law");
+      if (l < 0) {
+        return -1;
+      }
+      if (p->law[l].type != urLAW_HERTZ) {
+        return fail(p, vb->line, "law '%s': backing '%s' must be a hertz law", b->name, vb->raw);
+      }
+      double K, dy, fy;
+      ur_law_hertz_params(p->law + l, &K, &dy, &fy);
+      law.lock = vk->v[0];
+      law.backing_k = K;
+    }
   }
 
   /* common terms */
