@@ -1,14 +1,16 @@
 /* test_engine_contact.c: contact in the full engine against independent answers: Hertz
  * sphere-on-plane impact (peak penetration, contact time, restitution), momentum in a two-body
- * oblique collision with friction, sliding-to-rolling transition under Coulomb friction. */
+ * oblique collision with friction, sliding-to-rolling transition under Coulomb friction; the
+ * superellipsoid's half-width, depth bound and bounding radius. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/engine.h"
+#include "../src/core/engine_internal.h"
 
 // scalp on a flat (Table B1 of the paper)
 static const double E1 = 2.23e7, NU1 = 0.29, E2 = 5.48e10, NU2 = 0.34, R = 0.0875;
@@ -170,11 +172,94 @@ static void test_slide_to_roll(void** state) {
 }
 
 
+//---------------------------------- superellipsoids -----------------------------------------------
+
+/* a superellipsoid (degree 6) and an ellipsoid on two free bodies at random poses: the engine's
+   half-width is ||diag(r) R^T u||_q (q = 6/5) from the definition, the ellipsoid's unchanged;
+   the depth bound is at least the exact depth and equals the support-function gap along the
+   centre line; the bounding radius is ||r||_3, the ellipsoid's its largest semi-axis */
+static void test_superellipsoid_bounds(void** state) {
+  urModel* m = ur_model_new();
+  double I[6] = {1, 1, 1, 0, 0, 0}, ra[3] = {0.3, 0.2, 0.06}, rb[3] = {0.08, 0.1, 0.12};
+  int a = ur_model_add_body(m, "a", -1, urJNT_FREE, NULL, NULL);
+  int b = ur_model_add_body(m, "b", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, a, 1, NULL, I);
+  ur_model_set_inertia(m, b, 1, NULL, I);
+  double q0[4] = {cos(0.3), sin(0.3)*0.6, 0, sin(0.3)*0.8};
+  int ga = ur_model_add_ellipsoid(m, "frame", a, NULL, q0, ra);
+  int gb = ur_model_add_ellipsoid(m, "head", b, NULL, NULL, rb);
+  assert_int_equal(ur_model_set_degree(m, ga, 6), 0);
+  assert_int_equal(ur_model_set_degree(m, ga, 1.5), -1);
+  assert_int_equal(ur_model_set_degree(m, ga, 21), -1);
+  assert_true(m->geom[ga].degree == 6 && m->geom[gb].degree == 2);
+  assert_true(fabs(m->geom[ga].rbound - cbrt(0.027 + 0.008 + 0.000216)) < 1e-15);
+  assert_true(m->geom[gb].rbound == 0.12);
+
+  // a foam pair must take the ellipsoid as a, an airbag its targets of degree 2
+  urLaw foam = {0};
+  foam.type = urLAW_FOAM;
+  assert_int_equal(ur_model_add_pair(m, "p1", ga, gb, &foam), -1);
+  assert_int_equal(ur_model_add_pair(m, "p2", gb, ga, &foam), 0);
+  assert_int_equal(ur_model_set_degree(m, gb, 4), -1);
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+
+  srand(7);
+  for (int t = 0; t < 200; t++) {
+    for (int k = 0; k < 2; k++) {
+      double* q = d->qpos + 7*k, n = 0;
+      for (int i = 0; i < 3; i++) q[i] = 0.6*rand()/RAND_MAX - 0.3;
+      for (int i = 3; i < 7; i++) {
+        q[i] = 2.0*rand()/RAND_MAX - 1;
+        n += q[i]*q[i];
+      }
+      for (int i = 3; i < 7; i++) q[i] /= sqrt(n);
+    }
+    ur_kinematics(m, d);
+    urEllipsoid ea, eb;
+    ur_geom_ellipsoid(m, d, ga, &ea);
+    ur_geom_ellipsoid(m, d, gb, &eb);
+    assert_true(ea.p == 6 && eb.p == 2);
+
+    // half-widths from the definition
+    double u[3] = {2.0*rand()/RAND_MAX - 1, 2.0*rand()/RAND_MAX - 1, 2.0*rand()/RAND_MAX - 1};
+    double un = sqrt(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]), sa = 0, sb = 0;
+    for (int i = 0; i < 3; i++) u[i] /= un;
+    for (int k = 0; k < 3; k++) {
+      double va = ea.R[k]*u[0] + ea.R[3 + k]*u[1] + ea.R[6 + k]*u[2];
+      double vb = eb.R[k]*u[0] + eb.R[3 + k]*u[1] + eb.R[6 + k]*u[2];
+      sa += pow(fabs(ra[k]*va), 1.2);
+      sb += rb[k]*rb[k]*vb*vb;
+    }
+    assert_true(fabs(ur_geom_halfwidth(m, d, ga, u) - pow(sa, 1/1.2)) < 1e-15);
+    assert_true(fabs(ur_geom_halfwidth(m, d, gb, u) - sqrt(sb)) < 1e-15);
+
+    // the depth bound
+    double z[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+    urGeomContact gc;
+    ur_collide_ellipsoids(&ea, &eb, w, &gc);
+    double fb = ur_depth_bound(m, d, ga, gb, z), fu = ur_depth_bound(m, d, ga, gb, u);
+    assert_true(fb >= gc.g - 1e-15 && fu >= gc.g - 1e-15 && fu <= fb);
+    double dc[3], L = 0;
+    for (int i = 0; i < 3; i++) {
+      dc[i] = eb.c[i] - ea.c[i];
+      L += dc[i]*dc[i];
+    }
+    L = sqrt(L);
+    for (int i = 0; i < 3; i++) dc[i] /= L;
+    assert_true(fabs(fb - (-L + ur_geom_halfwidth(m, d, ga, dc) + ur_geom_halfwidth(m, d, gb, dc)))
+                < 1e-15);
+  }
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_hertz_sphere_plane),
     cmocka_unit_test(test_two_body_momentum),
     cmocka_unit_test(test_slide_to_roll),
+    cmocka_unit_test(test_superellipsoid_bounds),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -525,6 +525,30 @@ static const struct {
    "x.urm:8: pairs 'q': 'f' and 'f' are both on body 'c'; expected ellipsoids of two bodies"},
   {PRE "curve k x=0,1 y=0,1\nlaw l type=table load=k\npairs q a=e b=x law=l\n",
    "x.urm:6: dangling reference to ellipsoid 'x'"},
+  {PRE "ellipsoid f body=b pos=0,0,0 size=1,1,1 degree=1.5\n",
+   "x.urm:4: ellipsoid 'f': degree must be in [2, 20] (got 1.5); 2 is the ellipsoid, larger "
+   "values flatten it towards a box"},
+  {PRE "ellipsoid f body=b pos=0,0,0 size=1,1,1 degree=20.5\n",
+   "x.urm:4: ellipsoid 'f': degree must be in [2, 20] (got 20.5)*"},
+  {PRE "ellipsoid f body=b pos=0,0,0 size=1,1,1 degree=4,4\n",
+   "x.urm:4: key 'degree'*"},
+  {PRE "body c parent=world joint=free pos=0,0,0 mass=1 inertia=1,1,1\n"
+   "ellipsoid f body=c pos=0,0,0 size=1,1,1 degree=4\n"
+   "curve k x=0,1 y=0,1\nlaw l type=foam stress=k thickness=0.1 unload_r=0 unload_p=1\n"
+   "pair p a=f b=e law=l\n",
+   "x.urm:8: pair 'p': ellipsoid 'f' (x.urm:5) has degree=4; a, under a foam law, must have "
+   "degree 2 (its section area and cap volume are those of an ellipsoid)"},
+  {PRE "body c parent=world joint=free pos=0,0,0 mass=1 inertia=1,1,1\n"
+   "ellipsoid f body=c pos=0,0,0 size=1,1,1 degree=2.5\n"
+   "curve k x=0,1 y=0,1\nlaw l type=foam stress=k thickness=0.1 unload_r=0 unload_p=1\n"
+   "pairs q a=e,f b=ground law=l\n",
+   "x.urm:8: pairs 'q': ellipsoid 'f' (x.urm:5) has degree=2.5; each a, under a foam law, must "
+   "have degree 2*"},
+  {PRE "body c parent=world joint=free pos=0,0,0 mass=1 inertia=1,1,1\n"
+   "ellipsoid f body=c pos=0,0,0 size=1,1,1 degree=8\n"
+   "airbag g geom=e p0=1 patm=1 v0=1 gamma=1.4 kappa=1 thickness=1 targets=f\n",
+   "x.urm:6: airbag 'g': ellipsoid 'f' (x.urm:5) has degree=8; a target must have degree 2 (its "
+   "section area and cap volume are those of an ellipsoid)"},
   {PRE "option dt=0\n", "x.urm:4: option dt must be > 0 (got 0)"},
   {PRE "option integrator=leapfrog\n",
    "x.urm:4: key 'integrator': unknown value 'leapfrog'; expected one of euler/rk4"},
@@ -672,6 +696,45 @@ static void test_pairs(void** state) {
   /* too long generated names and pairs on one body: see test_malformed */
 }
 
+/* degree=: default 2 (the ellipsoid, bounding radius the largest semi-axis), a number or $param
+   stored with the exact bounding radius ||r||_k, k = 2p/(p-2); superellipsoids allowed as a
+   pair's b under a foam law, under other laws and as an airbag's own bag; the refusals and
+   the range are in test_malformed */
+static void test_degree(void** state) {
+  const char* text =
+    "param deg 4\n"
+    "body p parent=world joint=free pos=0,0,0 mass=1 inertia=1,1,1\n"
+    "ellipsoid h body=p pos=0,0,0 size=0.1,0.2,0.3\n"
+    "ellipsoid t body=p pos=0,0,1 size=0.1,0.2,0.3 degree=2\n"
+    "body d parent=world joint=free pos=0,0,3 mass=1 inertia=1,1,1\n"
+    "ellipsoid f body=d pos=0,0,0 size=0.4,0.3,0.1 degree=$deg\n"
+    "ellipsoid bag body=d pos=0,0,-0.1 size=0.3,0.3,0.1 degree=8.5\n"
+    "curve k x=0,1 y=0,1e5\n"
+    "law fo type=foam stress=k thickness=0.05 unload_r=0.2 unload_p=3\n"
+    "law l type=hertz E1=1e9 nu1=0.3 R1=0.1 E2=1e9 nu2=0.3 R2=0\n"
+    "pairs c a=h,t b=f law=fo\n"
+    "pair fg a=f b=ground law=l\n"
+    "airbag ab geom=bag p0=1 patm=1 v0=1 gamma=1.4 kappa=1 thickness=1 targets=h\n";
+  char err[256];
+  urModel* m = parse1(text, NULL, 0, err);
+  assert_non_null(m);
+  assert_int_equal(m->ngeom, 4);
+  assert_true(m->geom[0].degree == 2 && m->geom[1].degree == 2);
+  assert_true(m->geom[0].rbound == 0.3 && m->geom[1].rbound == 0.3);
+  assert_true(m->geom[2].degree == 4 && m->geom[3].degree == 8.5);
+  assert_near(m->geom[2].rbound, pow(pow(0.4, 4) + pow(0.3, 4) + pow(0.1, 4), 0.25), 1e-15);
+  double k = 2*8.5/6.5;
+  assert_near(m->geom[3].rbound, pow(2*pow(0.3, k) + pow(0.1, k), 1/k), 1e-15);
+  ur_model_free(m);
+
+  /* an override reaches it, and degree 2 by a parameter is the ellipsoid */
+  urOverride two = {"deg", 2};
+  m = parse1(text, &two, 1, err);
+  assert_non_null(m);
+  assert_true(m->geom[2].degree == 2 && m->geom[2].rbound == 0.4);
+  ur_model_free(m);
+}
+
 //---------------------------------- several sources -----------------------------------------------
 
 /* names and params are shared by the sources in order; messages name the right file */
@@ -788,6 +851,7 @@ int main(void) {
     cmocka_unit_test(test_scales_lock_sat),
     cmocka_unit_test(test_short_err),
     cmocka_unit_test(test_pairs),
+    cmocka_unit_test(test_degree),
     cmocka_unit_test(test_sources),
     cmocka_unit_test(test_split),
   };

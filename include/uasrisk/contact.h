@@ -1,4 +1,4 @@
-/* contact.h: contact geometry (ellipsoids, planes), force-penetration laws and the
+/* contact.h: contact geometry (ellipsoids, superellipsoids, planes), force-penetration laws and the
  * uniform-pressure airbag gas law. Pure functions on caller-owned data: no globals, no I/O,
  * safe to call from any number of threads.
  *
@@ -14,6 +14,7 @@ extern "C" {
 #endif
 
 #define urMAXCURVE 48              /* points in a tabulated curve */
+#define urMAXDEGREE 20             /* largest superellipsoid degree */
 
 /* ---- geometry ---- */
 
@@ -21,6 +22,10 @@ typedef struct {
   double c[3];                     /* centre, world */
   double R[9];                     /* orientation, row-major, local -> world */
   double r[3];                     /* semi-axes along the local axes */
+  double p;                        /* degree: |x/a|^p + |y/b|^p + |z/c|^p <= 1 in the local
+                                      frame; 0 or 2: the ellipsoid (a zeroed struct is one),
+                                      else in (2, urMAXDEGREE]: a superellipsoid, flat-faced
+                                      with rounded edges (the box as p grows) */
 } urEllipsoid;
 
 typedef struct {
@@ -32,20 +37,34 @@ typedef struct {
   int iters;                       /* iterations used (ellipsoid pairs) */
 } urGeomContact;
 
-/* Ellipsoid against the half-space {x : n.x <= d} (n unit, pointing out of the solid).
-   The normal reported is -n (from the ellipsoid into the solid) so that the force on the
-   ellipsoid is -F*out.n = +F*n. Returns 1 if g > 0, else 0 (out is filled either way). */
+/* Ellipsoid (or superellipsoid) against the half-space {x : n.x <= d} (n unit, pointing out
+   of the solid). The normal reported is -n (from the ellipsoid into the solid) so that the
+   force on the ellipsoid is -F*out.n = +F*n. Returns 1 if g > 0, else 0 (out is filled either
+   way). */
 int ur_collide_ellipsoid_plane(const urEllipsoid* e, const double n[3], double d,
                                urGeomContact* out);
 
 /* Exact signed distance between two ellipsoids by minimising the support function of the
    Minkowski difference over the unit sphere. u: in, warm start direction (A towards B) or
-   all zeros for a cold start; out, the minimiser. Returns 1 if g > 0, else 0. */
+   all zeros for a cold start; out, the minimiser. Returns 1 if g > 0, else 0.
+   Superellipsoids (p > 2): the support function is the dual norm h(u) = ||diag(r) R^T u||_q,
+   q = p/(p-1); the same minimisation, with line-search steps that can stop where a local
+   coordinate of the support direction changes sign (the flat faces: h is not twice
+   differentiable there). Two ellipsoids take the ellipsoid code alone, bit for bit. */
 int ur_collide_ellipsoids(const urEllipsoid* a, const urEllipsoid* b, double u[3],
                           urGeomContact* out);
 
+/* Half-width along a unit direction u (h(u), the support function about the centre) from
+   w = diag(r) R^T u: ||w||_q with q = p/(p-1); p <= 2: |w|. */
+double ur_halfwidth_local(const double w[3], double p);
+
+/* Radius of the smallest centred sphere holding the shape with semi-axes r and degree p: the
+   largest semi-axis for p <= 2, else ||r||_k with k = 2p/(p-2) (exact, rounded upwards). */
+double ur_bound_radius(const double r[3], double p);
+
 /* Area of the section of an ellipsoid by the plane normal to unit n at depth d below its
-   support point in direction n, and the volume of the cap cut off; d clamped to [0, 2 sigma]. */
+   support point in direction n, and the volume of the cap cut off; d clamped to [0, 2 sigma].
+   Ellipsoids only: NAN for a superellipsoid (p > 2; the model builder keeps those out). */
 double ur_section_area(const urEllipsoid* e, const double n[3], double d);
 double ur_cap_volume(const urEllipsoid* e, const double n[3], double d);
 

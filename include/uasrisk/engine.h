@@ -139,7 +139,8 @@ typedef struct {
   double pos[3];                   /* centre in the body frame, m */
   double quat[4];                  /* orientation in the body frame */
   double size[3];                  /* semi-axes, m */
-  double rbound;                   /* bounding-sphere radius = max semi-axis, m */
+  double degree;                   /* 2: ellipsoid; > 2: superellipsoid (contact.h urEllipsoid.p) */
+  double rbound;                   /* bounding-sphere radius (max semi-axis for an ellipsoid), m */
   double gmat[9];                  /* rotation matrix of quat (compiled) */
 } urGeom;
 
@@ -352,6 +353,11 @@ int ur_model_set_restraint(urModel* m, int body, int dof, const urRestraint* r);
 /* Add an ellipsoid to a body (pos/quat in the body frame, quat NULL: identity). Returns id. */
 int ur_model_add_ellipsoid(urModel* m, const char* name, int body, const double pos[3],
                            const double quat[4], const double semiaxes[3]);
+
+/* Make ellipsoid g a superellipsoid of degree p in [2, urMAXDEGREE] (2: the ellipsoid, the
+   default); refused for the ellipsoid a of a foam-law pair and for airbag targets (their
+   section areas and cap volumes are those of ellipsoids). Returns 0 or -1. */
+int ur_model_set_degree(urModel* m, int g, double p);
 
 /* Add a contact pair; geom2 = -1 means the ground plane z = 0. Returns the pair id or -1. */
 int ur_model_add_pair(urModel* m, const char* name, int geom1, int geom2, const urLaw* law);

@@ -12,10 +12,12 @@ void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e)
   memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
   memcpy(e->R, ur_geom_xmat(m, d, g), 9*sizeof(double));
   memcpy(e->r, m->geom[g].size, 3*sizeof(double));
+  e->p = m->geom[g].degree;
 }
 
 
-// half-width of ellipsoid g along unit u: |diag(r) R^T u|
+// half-width of ellipsoid g along unit u: |diag(r) R^T u| (superellipsoid: the q-norm,
+// contact.h)
 double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double u[3]) {
   const double* R = ur_geom_xmat(m, d, g);
   const double* r = m->geom[g].size;
@@ -24,6 +26,9 @@ double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double 
   w[0] *= r[0];
   w[1] *= r[1];
   w[2] *= r[2];
+  if (m->geom[g].degree > 2) {
+    return ur_halfwidth_local(w, m->geom[g].degree);
+  }
   return uru_norm3(w);
 }
 

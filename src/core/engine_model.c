@@ -231,8 +231,49 @@ int ur_model_add_ellipsoid(urModel* m, const char* name, int body, const double 
   }
   setquat(g->quat, quat);
   memcpy(g->size, semiaxes, 3*sizeof(double));
+  g->degree = 2;
   g->rbound = fmax(semiaxes[0], fmax(semiaxes[1], semiaxes[2]));
   return m->ngeom++;
+}
+
+
+// is ellipsoid g the section-area ellipsoid of a foam pair or an airbag target
+static int needs_ellipsoid(const urModel* m, int g) {
+  for (int i = 0; i < m->npair; i++) {
+    if (m->pair[i].geom1 == g && m->pair[i].law.type == urLAW_FOAM) {
+      return 1;
+    }
+  }
+  for (int i = 0; i < m->nbag; i++) {
+    for (int t = 0; t < m->bag[i].ntarget; t++) {
+      if (m->bag[i].target[t] == g) {
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+
+int ur_model_set_degree(urModel* m, int g, double p) {
+  if (editable(m)) {
+    return -1;
+  }
+  if (g < 0 || g >= m->ngeom) {
+    return fail(m, "degree of a missing ellipsoid", NULL);
+  }
+  urGeom* ge = m->geom + g;
+  if (!(p >= 2 && p <= urMAXDEGREE)) {
+    char what[48];
+    snprintf(what, sizeof(what), "ellipsoid degree must be in [2, %d]", urMAXDEGREE);
+    return fail(m, what, ge->name);
+  }
+  if (p != 2 && needs_ellipsoid(m, g)) {
+    return fail(m, "degree 2 needed by a foam pair (ellipsoid a) or an airbag target", ge->name);
+  }
+  ge->degree = p;
+  ge->rbound = ur_bound_radius(ge->size, p);
+  return 0;
 }
 
 
@@ -245,6 +286,9 @@ int ur_model_add_pair(urModel* m, const char* name, int geom1, int geom2, const 
   }
   if (geom2 >= 0 && m->geom[geom1].body == m->geom[geom2].body) {
     return fail(m, "pair on one body", name);
+  }
+  if (law->type == urLAW_FOAM && m->geom[geom1].degree != 2) {
+    return fail(m, "foam law on a superellipsoid (its ellipsoid a must have degree 2)", name);
   }
   if (name && ur_name_pair(m, name) >= 0) {
     return fail(m, "duplicate pair name", name);
@@ -280,6 +324,9 @@ int ur_model_add_airbag(urModel* m, const urAirbag* bag) {
     int t = bag->target[i];
     if (t < 0 || t >= m->ngeom || m->geom[t].body == m->geom[bag->geom].body) {
       return fail(m, "bad airbag target", bag->name);
+    }
+    if (m->geom[t].degree != 2) {
+      return fail(m, "airbag target of degree other than 2", bag->name);
     }
   }
   if (!(bag->gas.v0 > 0 && bag->gas.p0 > 0 && bag->gas.gamma > 0)) {

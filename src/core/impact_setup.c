@@ -189,7 +189,7 @@ struct urStance {
 urLP64_SIZE(urRestraint, 1624);
 urLP64_SIZE(urLaw, 2448);
 urLP64_SIZE(urBody, 5624);
-urLP64_SIZE(urGeom, 200);
+urLP64_SIZE(urGeom, 208);
 urLP64_SIZE(urOption, 112);
 
 static void put(urStance* st, const void* v, size_t n) {
@@ -293,6 +293,7 @@ static void put_geom(urStance* st, const urModel* m, int g) {
   PUT(st, ge->pos);
   PUT(st, ge->quat);
   PUT(st, ge->size);
+  PUT(st, ge->degree);
   PUT(st, ge->rbound);
   PUT(st, ge->gmat);
 }

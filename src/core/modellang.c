@@ -109,7 +109,7 @@ static const KeySpec spec_restraint[] = {
   NUM("lo"), NUM("hi"), NUM("kstop"), NUM("cstop"), NUM("x0"), ENABLE
 };
 static const KeySpec spec_ellipsoid[] = {
-  NAMER("body"), VEC3R("pos"), VEC3R("size"), QUAT, ROT, ENABLE
+  NAMER("body"), VEC3R("pos"), VEC3R("size"), QUAT, ROT, NUM("degree"), ENABLE
 };
 #define LAWTYPE {"type", K_ENUM, 1, 0, 1, "hertz|table|foam"}
 static const KeySpec spec_hertz[] = {
@@ -1208,7 +1208,7 @@ static int st_restraint(Parser* p, const Bound* b) {
 }
 
 
-/* ellipsoid NAME body= pos= size= [quat|rot] */
+/* ellipsoid NAME body= pos= size= [quat|rot] [degree=] */
 static int st_ellipsoid(Parser* p, const Bound* b) {
   urModel* m = p->m;
   if (!strcmp(b->name, "ground")) {
@@ -1228,14 +1228,34 @@ static int st_ellipsoid(Parser* p, const Bound* b) {
     return fail(p, vs->line, "ellipsoid '%s': semi-axes must be > 0 (got %g,%g,%g)", b->name,
                 vs->v[0], vs->v[1], vs->v[2]);
   }
+  const Val* vd = get(b, "degree");
+  if (vd->set && !(vd->v[0] >= 2 && vd->v[0] <= urMAXDEGREE)) {
+    return fail(p, vd->line, "ellipsoid '%s': degree must be in [2, %d] (got %g); 2 is the "
+                "ellipsoid, larger values flatten it towards a box", b->name, urMAXDEGREE,
+                vd->v[0]);
+  }
   double q[4];
   if (orientation(p, b, q) || declare(p, SYM_ELLIPSOID, b->name, b->line, m->ngeom, 1)) {
     return -1;
   }
-  if (ur_model_add_ellipsoid(m, b->name, body, get(b, "pos")->v, q, vs->v) < 0) {
+  int g = ur_model_add_ellipsoid(m, b->name, body, get(b, "pos")->v, q, vs->v);
+  if (g < 0 || (vd->set && ur_model_set_degree(m, g, vd->v[0]))) {
     return fail(p, b->line, "ellipsoid '%s': %s", b->name, m->err);
   }
   return 0;
+}
+
+
+/* ellipsoid g, named name, must have degree 2 in its role (a foam pair's a, an airbag target) */
+static int degree2(Parser* p, int g, const char* name, int line, const char* what,
+                   const char* role) {
+  if (p->m->geom[g].degree == 2) {
+    return 0;
+  }
+  const Sym* sy = p->sym + findsym(p, SYM_ELLIPSOID, name, 1);
+  return fail(p, line, "%s: ellipsoid '%s' (%s:%d) has degree=%g; %s must have degree 2 (its "
+              "section area and cap volume are those of an ellipsoid)", what, name,
+              srcname(p, sy->src), sy->line, p->m->geom[g].degree, role);
 }
 
 
@@ -1372,6 +1392,12 @@ static int st_pair(Parser* p, const Bound* b) {
     return fail(p, vb->line, "pair '%s': a and b are both on body '%s'; expected ellipsoids of "
                 "two bodies", b->name, m->body[m->geom[ga].body].name);
   }
+  char what[urNAMELEN + 16];
+  snprintf(what, sizeof(what), "pair '%s'", b->name);
+  if (p->law[law].type == urLAW_FOAM &&
+      degree2(p, ga, va->raw, va->line, what, "a, under a foam law,")) {
+    return -1;
+  }
   if (declare(p, SYM_PAIR, b->name, b->line, m->npair, 1)) {
     return -1;
   }
@@ -1404,6 +1430,12 @@ static int st_pairs(Parser* p, const Bound* b) {
     item(va->raw, i, na, sizeof(na));
     int ga = ref(p, SYM_ELLIPSOID, na, va->line, NULL);
     if (ga < 0) {
+      return -1;
+    }
+    char what[urNAMELEN + 16];
+    snprintf(what, sizeof(what), "pairs '%s'", b->name);
+    if (p->law[law].type == urLAW_FOAM &&
+        degree2(p, ga, na, va->line, what, "each a, under a foam law,")) {
       return -1;
     }
     for (int j = 0; j < vb->n; j++) {
@@ -1508,6 +1540,11 @@ static int st_airbag(Parser* p, const Bound* b) {
       if (bag.target[k] == g) {
         return fail(p, vt->line, "airbag '%s': target '%s' is listed twice", b->name, name);
       }
+    }
+    char what[urNAMELEN + 16];
+    snprintf(what, sizeof(what), "airbag '%s'", b->name);
+    if (degree2(p, g, name, vt->line, what, "a target")) {
+      return -1;
     }
     bag.target[i] = g;
   }
