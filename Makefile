@@ -5,6 +5,8 @@
 #   make bench    benchmarks (not part of check); REPRODUCE=0 leaves out the timing of reproduce
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
+#   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
+#                 zero-wind grids; src/models/calibrate.spec, uasrisk-model(5)); build/calibrate/
 #   make sensitivity  Table 17 under each public alternative for an unknown, calibrated again
 #                 (scripts/sensitivity.sh; build/sensitivity/; STEP=0.1 for a quick look)
 #   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
@@ -43,7 +45,7 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasrisk.a
 APPLIB  = $(BUILD)/libuasrisk-app.a
 
-.PHONY: all deps run check test bench reproduce sensitivity install clean check-san fuzz
+.PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz
 all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -86,7 +88,7 @@ $(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 run: all
 	@if [ -t 0 ]; then ./uasrisk; else ./uasrisk sessions/demo.ses; fi
 
-check: all $(TEST_BIN)
+check: all $(TEST_BIN) $(BUILD)/calibrate
 	@sh scripts/runtests.sh $(TEST_BIN)
 
 test: check
@@ -103,6 +105,13 @@ bench: all $(BENCH_BIN)
 # the paper's results side by side with ours (scripts/reproduce.sh); minutes of grids
 reproduce: all
 	@sh scripts/reproduce.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/reproduce-step$(STEP))
+
+# the declared calibration (src/tools/calibrate.c): every evaluation in build/calibrate/log.csv,
+# the best values in build/calibrate/result.txt; CALIBRATE_ARGS for more (e.g. -n 50)
+$(BUILD)/calibrate: src/tools/calibrate.c $(APPLIB) $(LIB) $(FLAGS) | deps
+	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
+calibrate: all $(BUILD)/calibrate
+	$(BUILD)/calibrate -o $(BUILD)/calibrate $(CALIBRATE_ARGS)
 
 # how far the public ranges of the unknowns move Table 17 (scripts/sensitivity.sh); minutes
 sensitivity: all

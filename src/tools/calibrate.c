@@ -1,0 +1,501 @@
+/* calibrate.c: 'make calibrate', the declared calibration of the model's unknowns (uasrisk-model(5),
+ * CALIBRATION). The unknowns the paper leaves open are fitted to the training set alone: the
+ * paper's three zero-wind grids (Tables 4, 5, 6), cell by cell over the full plane. Everything
+ * else the paper prints is validation and is never read here.
+ *
+ *   calibrate [-s SPEC] [-o DIR] [-n MAXEVAL] [-e [-m]] [-l FILE]... [NAME=VALUE ...]
+ *     -s SPEC    the declaration (default src/models/calibrate.spec)
+ *     -o DIR     log.csv (every evaluation) and result.txt go here (default build/calibrate)
+ *     -n N       at most N evaluations (default: the spec's maxeval)
+ *     -e         evaluate once at the start (or at the model's own values with -m) and stop
+ *     -m         with -e: the model's own values, not the spec's start (free parameters the
+ *                model does not have are left out)
+ *     -l FILE    'model load FILE' first (a part replaced: to measure a model change alone)
+ *     NAME=VALUE model parameters set on top (SI), e.g. to measure one change alone
+ *
+ * The loss (the spec's words; the man page states it): for each training case X, the mean of
+ * |P_ours - P_paper| over the union footprint (cells where the paper prints P > 0 or ours is at
+ * least `threshold`), full plane (a printed column dperp > 0 counts twice), divided by the
+ * paper's mean P over its own footprint; summed over the cases; plus, where the spec asks for
+ * it, the shortfall of HIC's share of the fused P at Delta = (0,0) below `hic_share` (the paper's
+ * conclusion: Nij and VC contribute much less than HIC). Free parameters are mapped to their
+ * bounds by a logistic, so the simplex never leaves them. The spec's discrete choices (injury
+ * curve decisions) change only how the criteria of a cell become P, so every combination is
+ * scored on the same simulated grids and the best is taken.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multimin.h>
+
+#include "../app/app.h"
+
+#define MAXFREE 24
+#define MAXCASE 4
+#define MAXGROUP 4
+#define MAXALT 4
+#define MAXSET 8
+#define LINELEN 512
+
+typedef struct {
+  char name[urNAMELEN];
+  double lo, hi, start;
+  char unit[16];
+} freeParam;
+
+typedef struct {                   /* one alternative of a discrete group: injury settings */
+  char label[24];
+  int nset;
+  char set[MAXSET][urNAMELEN];
+  double val[MAXSET];
+} alt;
+
+typedef struct {
+  char name[24];
+  int nalt;
+  alt a[MAXALT];
+} group;
+
+typedef struct {
+  char name[8];
+  double speed;
+  char table[LINELEN];
+  int share;                       /* the HIC-share constraint applies at its centre */
+  urGrid* paper;                   /* the paper's grid, full plane (ura_grid_load) */
+  double pbar;                     /* the paper's mean P over its footprint */
+} trainCase;
+
+typedef struct {
+  int nfree, ncase, ngroup;
+  freeParam f[MAXFREE];
+  trainCase k[MAXCASE];
+  group g[MAXGROUP];
+  double hic_share, threshold, simplex, tol;
+  int maxeval;
+} spec;
+
+typedef struct {
+  uraCtx* c;
+  spec* s;
+  FILE* log;
+  int neval;
+  double best;
+  double bestx[MAXFREE];
+  char bestcombo[128];
+  double bestpart[MAXCASE], bestshare[MAXCASE];
+  char extra[LINELEN];             /* NAME=VALUE settings given on the command line */
+  int failed;
+  int use[MAXFREE];                /* the free parameters set (-m: those the model has) */
+} fit;
+
+/* ---- the spec ---- */
+
+static int spec_fail(const char* path, int line, const char* msg, const char* word) {
+  fprintf(stderr, "calibrate: %s:%d: %s%s%s\n", path, line, msg, word ? ": " : "",
+          word ? word : "");
+  return -1;
+}
+
+static int num(const char* w, double* v) {
+  return !w || ura_parse_number(w, v);
+}
+
+/* NAME=VALUE,NAME=VALUE into an alternative */
+static int parse_settings(const char* list, alt* a) {
+  char buf[LINELEN];
+  snprintf(buf, sizeof buf, "%s", list);
+  for (char* item = strtok(buf, ","); item; item = strtok(NULL, ",")) {
+    char* eq = strchr(item, '=');
+    if (!eq || a->nset == MAXSET) return -1;
+    *eq = 0;
+    snprintf(a->set[a->nset], urNAMELEN, "%s", item);
+    if (num(eq + 1, &a->val[a->nset])) return -1;
+    a->nset++;
+  }
+  return a->nset ? 0 : -1;
+}
+
+static int spec_read(const char* path, spec* s) {
+  FILE* f = fopen(path, "r");
+  if (!f) {
+    fprintf(stderr, "calibrate: %s: %s\n", path, strerror(errno));
+    return -1;
+  }
+  memset(s, 0, sizeof *s);
+  s->threshold = 0.0005;
+  s->simplex = 1;
+  s->tol = 1e-3;
+  s->maxeval = 400;
+  char line[LINELEN];
+  int ln = 0, rc = 0;
+  while (rc == 0 && fgets(line, sizeof line, f)) {
+    ln++;
+    char* hash = strchr(line, '#');
+    if (hash) *hash = 0;
+    char* w[8] = {0};
+    int n = 0;
+    for (char* t = strtok(line, " \t\r\n"); t && n < 8; t = strtok(NULL, " \t\r\n")) w[n++] = t;
+    if (n == 0) continue;
+    if (!strcmp(w[0], "case") && n >= 4 && s->ncase < MAXCASE) {
+      /* case NAME SPEED TABLE [share] */
+      trainCase* k = s->k + s->ncase++;
+      snprintf(k->name, sizeof k->name, "%s", w[1]);
+      snprintf(k->table, sizeof k->table, "%s", w[3]);
+      if (num(w[2], &k->speed)) rc = spec_fail(path, ln, "speed is not a number", w[2]);
+      k->share = n > 4 && !strcmp(w[4], "share");
+    } else if (!strcmp(w[0], "free") && n >= 5 && s->nfree < MAXFREE) {
+      /* free NAME LO HI START [UNIT] */
+      freeParam* p = s->f + s->nfree++;
+      snprintf(p->name, sizeof p->name, "%s", w[1]);
+      snprintf(p->unit, sizeof p->unit, "%s", n > 5 ? w[5] : "");
+      if (num(w[2], &p->lo) || num(w[3], &p->hi) || num(w[4], &p->start) ||
+          !(p->lo < p->start && p->start < p->hi)) {
+        rc = spec_fail(path, ln, "expected free NAME LO HI START [UNIT], LO < START < HI", w[1]);
+      }
+    } else if (!strcmp(w[0], "choice") && n == 4) {
+      /* choice GROUP LABEL SETTING=VALUE,... */
+      group* g = NULL;
+      for (int i = 0; i < s->ngroup; i++) {
+        if (!strcmp(s->g[i].name, w[1])) g = s->g + i;
+      }
+      if (!g && s->ngroup < MAXGROUP) {
+        g = s->g + s->ngroup++;
+        snprintf(g->name, sizeof g->name, "%s", w[1]);
+      }
+      if (!g || g->nalt == MAXALT) {
+        rc = spec_fail(path, ln, "too many choices", w[1]);
+      } else {
+        alt* a = g->a + g->nalt++;
+        snprintf(a->label, sizeof a->label, "%s", w[2]);
+        if (parse_settings(w[3], a)) rc = spec_fail(path, ln, "expected NAME=VALUE,...", w[3]);
+      }
+    } else if (n == 2 && (!strcmp(w[0], "hic_share") || !strcmp(w[0], "threshold") ||
+                          !strcmp(w[0], "simplex") || !strcmp(w[0], "tol") ||
+                          !strcmp(w[0], "maxeval"))) {
+      double v;
+      if (num(w[1], &v)) {
+        rc = spec_fail(path, ln, "not a number", w[1]);
+      } else if (!strcmp(w[0], "hic_share")) {
+        s->hic_share = v;
+      } else if (!strcmp(w[0], "threshold")) {
+        s->threshold = v;
+      } else if (!strcmp(w[0], "simplex")) {
+        s->simplex = v;
+      } else if (!strcmp(w[0], "tol")) {
+        s->tol = v;
+      } else {
+        s->maxeval = (int)v;
+      }
+    } else {
+      rc = spec_fail(path, ln, "unknown or malformed statement", w[0]);
+    }
+  }
+  fclose(f);
+  if (rc == 0 && (s->ncase == 0 || s->nfree == 0)) {
+    fprintf(stderr, "calibrate: %s: no training case or no free parameter\n", path);
+    rc = -1;
+  }
+  return rc;
+}
+
+/* ---- the paper's grids ---- */
+
+/* load each training table through 'grid load' (strict; the full plane, mirrored) */
+static int load_tables(uraCtx* c, spec* s) {
+  for (int i = 0; i < s->ncase; i++) {
+    trainCase* k = s->k + i;
+    if (ura_grid_load(c, k->table)) {
+      fprintf(stderr, "calibrate: %s\n", c->err);
+      return -1;
+    }
+    k->paper = c->last.g;
+    c->last.g = NULL;
+    double sum = 0;
+    int n = 0;
+    for (long j = 0; j < (long)k->paper->nrow * k->paper->ncol; j++) {
+      if (k->paper->cell[j].p > 0) {
+        sum += k->paper->cell[j].p;
+        n++;
+      }
+    }
+    k->pbar = n ? sum / n : 1;
+  }
+  return 0;
+}
+
+/* ---- one evaluation ---- */
+
+static double to_param(const freeParam* p, double z) {
+  return p->lo + (p->hi - p->lo) / (1 + exp(-z));
+}
+
+static double to_z(const freeParam* p, double x) {
+  return log((x - p->lo) / (p->hi - x));
+}
+
+/* the fused P of a simulated cell under injury settings ip */
+static double cell_p(const urCell* e, const urInjuryParams* ip, double part[3]) {
+  part[0] = part[1] = part[2] = 0;
+  if (!e || e->status != urCELL_DONE || !e->contact) return 0;
+  part[0] = ur_pof_hic(e->hic15, ip);
+  part[1] = ur_pof_nij(e->nij, ip);
+  part[2] = ur_pof_vc_fuse(ur_pof_vc(e->vc_thorax, urTHORAX, ip),
+                           ur_pof_vc(e->vc_abdomen, urABDOMEN, ip), ip);
+  return ur_pof_fuse(part[0], part[1], part[2]);
+}
+
+/* mean |dP| over the union footprint / the paper's mean P, and HIC's share at the centre */
+static double case_loss(const spec* s, const trainCase* k, urGrid* ours,
+                        const urInjuryParams* ip, double* share) {
+  const urGrid* pg = k->paper;
+  double sum = 0, w = 0, part[3];
+  for (long j = 0; j < (long)pg->nrow * pg->ncol; j++) {
+    const urCell* pc = pg->cell + j;
+    double po = cell_p(ur_grid_find(ours, pc->dpar, pc->dperp), ip, part);
+    if (pc->p > 0 || po >= s->threshold) {
+      sum += fabs(po - pc->p);
+      w += 1;
+    }
+  }
+  double p0 = cell_p(ur_grid_find(ours, 0, 0), ip, part);
+  double tot = part[0] + part[1] + part[2];
+  *share = p0 > 0 && tot > 0 ? part[0] / tot : 1;
+  return w > 0 ? sum / w / k->pbar : 0;
+}
+/* (the plain mean |dP| of a case is its loss times the paper's mean P) */
+
+/* the grids of every training case at the parameters x */
+static int run_grids(fit* F, const double* x, urGrid** g) {
+  spec* s = F->s;
+  uraCtx* c = F->c;
+  for (int i = 0; i < s->ncase; i++) {
+    char line[4096];
+    int n = snprintf(line, sizeof line, "case %s; set wind 0; set face 0; set step 0.05; "
+                     "set speed %.17g; set angle 90", s->k[i].name, s->k[i].speed);
+    for (int j = 0; j < s->nfree; j++) {
+      if (F->use[j]) n += snprintf(line + n, sizeof line - n, "; set %s %.17g", s->f[j].name, x[j]);
+    }
+    if (F->extra[0]) snprintf(line + n, sizeof line - n, "; %s", F->extra);
+    if (ura_run_line(c, line) || ura_grid_run(c, 1) || !c->last.g || !c->last.g->complete) {
+      fprintf(stderr, "calibrate: case %s: %s\n", s->k[i].name,
+              c->err[0] ? c->err : "the grid has failed cells");
+      return -1;
+    }
+    g[i] = c->last.g;
+    c->last.g = NULL;
+  }
+  return 0;
+}
+
+/* the best loss over the discrete combinations; combo, per-case parts and shares of the best */
+static double score(fit* F, urGrid** g, char* combo, size_t len, double* parts, double* shares) {
+  spec* s = F->s;
+  int ncomb = 1, idx[MAXGROUP];
+  for (int i = 0; i < s->ngroup; i++) ncomb *= s->g[i].nalt;
+  double best = INFINITY;
+  for (int m = 0; m < ncomb; m++) {
+    urInjuryParams ip = F->c->st.injury;
+    int r = m;
+    for (int i = 0; i < s->ngroup; i++) {
+      idx[i] = r % s->g[i].nalt;
+      r /= s->g[i].nalt;
+      const alt* a = s->g[i].a + idx[i];
+      for (int j = 0; j < a->nset; j++) ur_injury_param_set(&ip, a->set[j], a->val[j]);
+    }
+    double loss = 0, pt[MAXCASE], sh[MAXCASE];
+    for (int i = 0; i < s->ncase; i++) {
+      pt[i] = case_loss(s, s->k + i, g[i], &ip, sh + i);
+      loss += pt[i];
+      if (s->k[i].share && sh[i] < s->hic_share) loss += s->hic_share - sh[i];
+    }
+    if (loss < best) {
+      best = loss;
+      size_t n = 0;
+      combo[0] = 0;
+      for (int i = 0; i < s->ngroup && n < len; i++) {
+        n += snprintf(combo + n, len - n, "%s%s", i ? "+" : "", s->g[i].a[idx[i]].label);
+      }
+      memcpy(parts, pt, sizeof pt);
+      memcpy(shares, sh, sizeof sh);
+    }
+  }
+  return best;
+}
+
+static double evaluate(fit* F, const double* x) {
+  spec* s = F->s;
+  urGrid* g[MAXCASE] = {0};
+  char combo[128] = "";
+  double parts[MAXCASE] = {0}, shares[MAXCASE] = {0};
+  double loss = INFINITY;
+  if (run_grids(F, x, g) == 0) {
+    loss = score(F, g, combo, sizeof combo, parts, shares);
+  } else {
+    F->failed++;
+  }
+  for (int i = 0; i < s->ncase; i++) ur_grid_free(g[i]);
+
+  /* log every evaluation */
+  F->neval++;
+  fprintf(F->log, "%d", F->neval);
+  for (int j = 0; j < s->nfree; j++) fprintf(F->log, ",%.9g", x[j]);
+  for (int i = 0; i < s->ncase; i++) fprintf(F->log, ",%.6f,%.4f", parts[i], shares[i]);
+  fprintf(F->log, ",%s,%.6f\n", combo, loss);
+  fflush(F->log);
+  if (loss < F->best) {
+    F->best = loss;
+    memcpy(F->bestx, x, sizeof(double) * s->nfree);
+    snprintf(F->bestcombo, sizeof F->bestcombo, "%s", combo);
+    memcpy(F->bestpart, parts, sizeof parts);
+    memcpy(F->bestshare, shares, sizeof shares);
+  }
+  fprintf(stderr, "calibrate: %4d  loss %.5f (best %.5f)\n", F->neval, loss, F->best);
+  return loss;
+}
+
+static double nm_f(const gsl_vector* z, void* ctx) {
+  fit* F = ctx;
+  double x[MAXFREE];
+  for (int j = 0; j < F->s->nfree; j++) x[j] = to_param(F->s->f + j, gsl_vector_get(z, j));
+  return evaluate(F, x);
+}
+
+/* ---- output ---- */
+
+static void write_result(fit* F, const char* dir, double seconds) {
+  spec* s = F->s;
+  char path[LINELEN + 32];
+  snprintf(path, sizeof path, "%s/result.txt", dir);
+  FILE* f = fopen(path, "w");
+  if (!f) {
+    fprintf(stderr, "calibrate: %s: %s\n", path, strerror(errno));
+    return;
+  }
+  FILE* outs[2] = {f, stdout};
+  for (int o = 0; o < 2; o++) {
+    FILE* out = outs[o];
+    fprintf(out, "# calibrate: %d evaluations (%d failed) in %.0f s; best loss %.5f\n", F->neval,
+            F->failed, seconds, F->best);
+    for (int i = 0; i < s->ncase; i++) {
+      fprintf(out, "# case %s: mean |dP| / mean P = %.4f (mean |dP| %.4f, the paper's mean P "
+              "%.4f), HIC share at (0,0) %.3f%s\n", s->k[i].name, F->bestpart[i],
+              F->bestpart[i] * s->k[i].pbar, s->k[i].pbar, F->bestshare[i],
+              s->k[i].share ? " (constrained)" : "");
+    }
+    fprintf(out, "# injury choices: %s\n", F->bestcombo[0] ? F->bestcombo : "none");
+    for (int j = 0; j < s->nfree; j++) {
+      fprintf(out, "set %s %.6g\n", s->f[j].name, F->bestx[j]);
+    }
+  }
+  fclose(f);
+}
+
+int main(int argc, char** argv) {
+  const char* specpath = "src/models/calibrate.spec";
+  const char* dir = "build/calibrate";
+  int maxeval = -1, once = 0, shipped = 0, nload = 0, opt;
+  const char* load[8];
+  while ((opt = getopt(argc, argv, "s:o:n:eml:")) != -1) {
+    switch (opt) {
+    case 's': specpath = optarg; break;
+    case 'o': dir = optarg; break;
+    case 'n': maxeval = atoi(optarg); break;
+    case 'e': once = 1; break;
+    case 'm': shipped = 1; break;
+    case 'l':
+      if (nload < 8) load[nload++] = optarg;
+      break;
+    default:
+      fprintf(stderr, "usage: calibrate [-s SPEC] [-o DIR] [-n MAXEVAL] [-e [-m]] [-l FILE]... "
+              "[NAME=VALUE ...]\n");
+      return 2;
+    }
+  }
+  static spec s;
+  static uraCtx c;
+  fit F = {&c, &s, NULL, 0, INFINITY, {0}, "", {0}, {0}, "", 0, {0}};
+  if (spec_read(specpath, &s)) return 1;
+  for (int i = optind; i < argc; i++) {
+    char* eq = strchr(argv[i], '=');
+    if (!eq) {
+      fprintf(stderr, "calibrate: '%s': expected NAME=VALUE\n", argv[i]);
+      return 2;
+    }
+    size_t n = strlen(F.extra);
+    snprintf(F.extra + n, sizeof F.extra - n, "%sset %.*s %s", n ? "; " : "",
+             (int)(eq - argv[i]), argv[i], eq + 1);
+  }
+  if (maxeval > 0) s.maxeval = maxeval;
+  gsl_set_error_handler_off();
+  ura_init(&c);
+  c.out = fopen("/dev/null", "w");
+  if (!c.out || ura_models_init(&c) || load_tables(&c, &s)) return 1;
+  for (int i = 0; i < nload; i++) {
+    char cmd[LINELEN + 16];
+    snprintf(cmd, sizeof cmd, "model load %s", load[i]);
+    if (ura_run_line(&c, cmd)) {
+      fprintf(stderr, "calibrate: %s\n", c.err);
+      return 1;
+    }
+  }
+  mkdir(dir, 0777);
+  char path[LINELEN + 32];
+  snprintf(path, sizeof path, "%s/log.csv", dir);
+  F.log = fopen(path, "w");
+  if (!F.log) {
+    fprintf(stderr, "calibrate: %s: %s\n", path, strerror(errno));
+    return 1;
+  }
+  fprintf(F.log, "eval");
+  for (int j = 0; j < s.nfree; j++) fprintf(F.log, ",%s", s.f[j].name);
+  for (int i = 0; i < s.ncase; i++) fprintf(F.log, ",loss_%s,hic_share_%s", s.k[i].name,
+                                             s.k[i].name);
+  fprintf(F.log, ",choices,loss\n");
+
+  struct timespec t0, t1;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
+  double x[MAXFREE];
+  const urModel* model = ura_model(&c);
+  if (!model) {
+    fprintf(stderr, "calibrate: %s\n", c.err);
+    return 1;
+  }
+  for (int j = 0; j < s.nfree; j++) {
+    F.use[j] = !shipped || ur_name_param(model, s.f[j].name) >= 0;
+    x[j] = shipped ? ur_model_param(model, s.f[j].name, s.f[j].start) : s.f[j].start;
+    if (!F.use[j]) fprintf(stderr, "calibrate: the model has no %s; left out\n", s.f[j].name);
+  }
+  if (once) {
+    evaluate(&F, x);
+  } else {
+    /* Nelder-Mead in the logistic coordinates, from the spec's start */
+    gsl_multimin_function fn = {nm_f, (size_t)s.nfree, &F};
+    gsl_vector* z = gsl_vector_alloc(s.nfree);
+    gsl_vector* step = gsl_vector_alloc(s.nfree);
+    for (int j = 0; j < s.nfree; j++) {
+      gsl_vector_set(z, j, to_z(s.f + j, x[j]));
+      gsl_vector_set(step, j, s.simplex);
+    }
+    gsl_multimin_fminimizer* nm =
+      gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, s.nfree);
+    gsl_multimin_fminimizer_set(nm, &fn, z, step);
+    while (F.neval < s.maxeval) {
+      if (gsl_multimin_fminimizer_iterate(nm)) break;
+      if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(nm), s.tol) == GSL_SUCCESS) break;
+    }
+    gsl_multimin_fminimizer_free(nm);
+    gsl_vector_free(z);
+    gsl_vector_free(step);
+  }
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  fclose(F.log);
+  write_result(&F, dir, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
+  return isfinite(F.best) ? 0 : 1;
+}
