@@ -6,7 +6,7 @@
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
-#                 zero-wind grids; src/models/calibrate.spec, uasrisk-model(5)); build/calibrate/
+#                 zero-wind grids; src/models/calibrate.spec, uasrisk-model(5)); build/calibration/
 #   make sensitivity  Table 17 under each public alternative for an unknown, calibrated again
 #                 (scripts/sensitivity.sh; build/sensitivity/; STEP=0.1 for a quick look)
 #   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
@@ -106,12 +106,12 @@ bench: all $(BENCH_BIN)
 reproduce: all
 	@sh scripts/reproduce.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/reproduce-step$(STEP))
 
-# the declared calibration (src/tools/calibrate.c): every evaluation in build/calibrate/log.csv,
-# the best values in build/calibrate/result.txt; CALIBRATE_ARGS for more (e.g. -n 50)
+# the declared calibration (src/tools/calibrate.c): every evaluation in build/calibration/log.csv,
+# the best values in build/calibration/result.txt; CALIBRATE_ARGS for more (e.g. -n 50)
 $(BUILD)/calibrate: src/tools/calibrate.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
 calibrate: all $(BUILD)/calibrate
-	$(BUILD)/calibrate -o $(BUILD)/calibrate $(CALIBRATE_ARGS)
+	$(BUILD)/calibrate -o $(BUILD)/calibration $(CALIBRATE_ARGS)
 
 # how far the public ranges of the unknowns move Table 17 (scripts/sensitivity.sh); minutes
 sensitivity: all

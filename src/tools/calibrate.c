@@ -5,7 +5,7 @@
  *
  *   calibrate [-s SPEC] [-o DIR] [-n MAXEVAL] [-e [-m]] [-l FILE]... [NAME=VALUE ...]
  *     -s SPEC    the declaration (default src/models/calibrate.spec)
- *     -o DIR     log.csv (every evaluation) and result.txt go here (default build/calibrate)
+ *     -o DIR     log.csv (every evaluation) and result.txt go here (default build/calibration)
  *     -n N       at most N evaluations (default: the spec's maxeval)
  *     -e         evaluate once at the start (or at the model's own values with -m) and stop
  *     -m         with -e: the model's own values, not the spec's start (free parameters the
@@ -399,7 +399,7 @@ static void write_result(fit* F, const char* dir, double seconds) {
 
 int main(int argc, char** argv) {
   const char* specpath = "src/models/calibrate.spec";
-  const char* dir = "build/calibrate";
+  const char* dir = "build/calibration";
   int maxeval = -1, once = 0, shipped = 0, nload = 0, opt;
   const char* load[8];
   while ((opt = getopt(argc, argv, "s:o:n:eml:")) != -1) {
