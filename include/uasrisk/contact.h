@@ -48,9 +48,10 @@ int ur_collide_ellipsoid_plane(const urEllipsoid* e, const double n[3], double d
    Minkowski difference over the unit sphere. u: in, warm start direction (A towards B) or
    all zeros for a cold start; out, the minimiser. Returns 1 if g > 0, else 0.
    Superellipsoids (p > 2): the support function is the dual norm h(u) = ||diag(r) R^T u||_q,
-   q = p/(p-1); the same minimisation, with line-search steps that can stop where a local
-   coordinate of the support direction changes sign (the flat faces: h is not twice
-   differentiable there). Two ellipsoids take the ellipsoid code alone, bit for bit. */
+   q = p/(p-1); the same minimisation, with a second trial step along each Newton direction
+   that follows |w_l|^q where a local coordinate w_l of the direction is near zero (the flat
+   faces: h is not twice differentiable there). Two ellipsoids take the ellipsoid code alone,
+   bit for bit. */
 int ur_collide_ellipsoids(const urEllipsoid* a, const urEllipsoid* b, double u[3],
                           urGeomContact* out);
 

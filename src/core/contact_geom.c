@@ -492,13 +492,14 @@ static void trystep(const shapeData* A, const shapeData* B, const double dc[3],
   evalsup(A, B, dc, v, p);
 }
 
-/* Riemannian Newton for a pair with a superellipsoid. Where the support point lies on a
-   symmetry plane of a superellipsoid (a local coordinate w_l = 0) h grows like |w_l|^q,
-   1 < q < 2: the Newton step overshoots by a factor up to p-1, so the step is also tried up
-   to the first sign change of a w_l (where the minimum then lies) and the better taken.
-   The gradient need not vanish near such a minimum: the search ends when the squared Newton
-   decrement (the predicted decrease) falls below DEC_TOL, after that last step if it does
-   not increase f. Returns iterations used. */
+/* Riemannian Newton for a pair with a superellipsoid. Where the support point lies on or near
+   a symmetry plane of a superellipsoid (a local coordinate w_l near 0) h grows like |w_l|^q,
+   1 < q < 2: full Newton steps overshoot the zero by up to p-1 times, or crawl away from it,
+   so a second step along the same direction follows that coordinate's power law (powerstep)
+   and the better of the two is taken before backtracking. The gradient need not vanish near
+   such a minimum: the search ends when the squared Newton decrement (the predicted decrease)
+   falls below DEC_TOL, after that last step if it does not increase f, or when f stops
+   decreasing beyond rounding. Returns iterations used. */
 static int snewton(const shapeData* A, const shapeData* B, const double dc[3], double scale,
                    const double u0[3], superPt* cur, int* conv)
 {
