@@ -683,6 +683,12 @@ static void test_super_face(void** state)
     assert_int_equal(hit, gref > 0);
     maxerr = fmax(maxerr, fabs(c.g - gref));
     for (int i = 0; i < 3; i++) maxn = fmax(maxn, fabs(c.n[i] - nrm[i]));
+
+    // the contact point: on the sphere's axis along the face normal, half the depth from its
+    // deepest point (not the face's support point, which may sit anywhere on the face)
+    for (int i = 0; i < 3; i++) {
+      assert_near(c.p[i], b.c[i] - (b.r[0] - 0.5*c.g)*nrm[i], 1e-9);
+    }
     if (c.iters > maxit) maxit = c.iters;
 
     // the plane: the face lying on it, depth d - n.c + c exactly

@@ -590,12 +590,16 @@ static int collide_super(const urEllipsoid* a, const urEllipsoid* b, double u[3]
     }
   }
 
-  // report the minimiser
+  // report the minimiser; the contact point is taken from the rounder body's deepest point, a
+  // depth's half along the normal: on a flat face the support point may sit anywhere on the
+  // face (a direction 1e-17 rad off its normal moves it by 1 % of the face), which would make
+  // the force's lever arm arbitrary
+  double pa = a->p > 2 ? a->p : 2, pb = b->p > 2 ? b->p : 2;
   for (int i = 0; i < 3; i++) {
     out->n[i] = best.u[i];
     out->pa[i] = a->c[i] + best.a.s[i];
     out->pb[i] = b->c[i] - best.b.s[i];
-    out->p[i] = 0.5*(out->pa[i] + out->pb[i]);
+    out->p[i] = pb <= pa ? out->pb[i] + 0.5*best.f*best.u[i] : out->pa[i] - 0.5*best.f*best.u[i];
     u[i] = best.u[i];
   }
   out->g = best.f;
