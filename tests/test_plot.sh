@@ -61,7 +61,7 @@ if command -v gnuplot >/dev/null 2>&1; then
   run -c "set terminal png; set output /nonexistent/dir/x.png; plot pof"
   check bad_output fails_with "set output ./nonexistent/dir/x.png.: cannot open file"
 else
-  echo "note: gnuplot is not installed; the real-gnuplot checks are skipped"
+  skip real_gnuplot_checks "gnuplot is not installed"
 fi
 
 # refused before gnuplot starts

@@ -93,7 +93,7 @@ if [ -n "$REAL" ]; then
   check png_wind cond 'png_magic "$TMP/wind.png" && [ "$(wc -c <"$TMP/wind.png")" -gt 5000 ]'
   [ -n "$KEEP_PNG" ] && cp "$TMP/all.png" "$KEEP_PNG"
 else
-  echo "note: gnuplot is not installed; the PNG checks are skipped"
+  skip png_checks "gnuplot is not installed"
 fi
 
 # refusals: one line each, status 1

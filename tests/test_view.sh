@@ -16,7 +16,7 @@ check needs_terminal cond '[ "$RC" -eq 1 ] &&
   has "$TMP/err" "view: needs a terminal; use .grid show."'
 
 if ! command -v tmux >/dev/null 2>&1; then
-  echo "note: tmux is not installed; the terminal checks of the viewer are skipped"
+  skip viewer_terminal_checks "tmux is not installed"
   finish
 fi
 if [ ! -r "$T6" ] || [ ! -r "$T8" ]; then
