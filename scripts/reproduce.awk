@@ -1,9 +1,9 @@
 # reproduce.awk: the report of 'make reproduce' (run by scripts/reproduce.sh).
-#   awk -f scripts/reproduce.awk -v out=DIR -v values=sessions/paper-values.csv \
+#   awk -f scripts/reproduce.awk -v out=DIR -v values=sessions/paper/values.csv \
 #       -v run=DIR/run.txt -v loads=DIR/paper-load.txt DIR/raw.csv
 # Input: raw.csv, the CSV tables uasrisk printed for sessions/paper.ses (descent, parametric, grid
 # summary rows, sweeps, compare, grid cells); run.txt, the conditions of the run (key=value);
-# paper-values.csv, the paper's printed numbers; paper-load.txt, "FILE Q" per paper grid CSV with
+# values.csv, the paper's printed numbers; paper-load.txt, "FILE Q" per paper grid CSV with
 # the Q that 'grid load' computes. Output in DIR: report.md and the CSV files listed in it.
 # Our values are taken as uasrisk printed them; a value computed twice must be printed the same
 # (the report lists any that differ). Ratios are ours / paper.
@@ -168,7 +168,7 @@ function header(    wall) {
   m("| wall time of the run | " sprintf("%d s (%d min %02d s)", wall, int(wall / 60), wall % 60) " |")
   m("| status | " RUN["status"] " |")
   m("")
-  m("*Ours* is this run; *paper* is the number the paper prints (sessions/paper-values.csv, each")
+  m("*Ours* is this run; *paper* is the number the paper prints (sessions/paper/values.csv, each")
   m("value with its table); *ratio* = ours / paper. These are validation results, reported as they")
   m("are: the models are not tuned to the paper's Q values. The target is every Q within a factor")
   m(TOL " of the paper (ratio in [" sprintf("%.3f", 1 / TOL) ", " TOL "]).")
@@ -437,7 +437,7 @@ function grids_section(    f, fp, l, a, t, c, w, i, cap, o, full, half) {
   p("")
   p("The paper prints each grid for Delta_perp >= 0 only (results are mirror-symmetric for face 0).")
   p("Full-plane sum = 0.0025 m^2 x [sum(column Delta_perp = 0) + 2 x sum(columns Delta_perp > 0)] /")
-  p("100, the mirror rule of ../shared/paper/grids/README.md; half sum = 0.0025 m^2 x sum(printed")
+  p("100, the mirror rule of sessions/paper/grids/README.md; half sum = 0.0025 m^2 x sum(printed")
   p("cells) / 100. `grid load` builds the same full plane (column 0 once, the others mirrored) and")
   p("its Q = sum P x 0.05 m x 0.05 m is given beside it. Our Q is always the full plane.")
   p("")

@@ -1,14 +1,14 @@
 # test_reproduce.sh: the report of 'make reproduce' (scripts/reproduce.sh -n, scripts/reproduce.awk)
 # on a made-up run whose numbers are known: ratios, the Table 17 verdicts, the ordering and rise
-# checks, the paper grids' sums (../shared/paper/grids/README.md), the cell-by-cell comparison and
-# the detection of a value computed twice with different results
+# checks, the paper grids' sums (sessions/paper/grids/README.md), the cell-by-cell comparison and
+# the detection of a value computed twice with different results; and that reproduce.sh stops
+# with one line naming the file when the paper's data cannot be found
 . tests/lib.sh
 
-G=../shared/paper/grids
-if [ ! -r "$G/table04_caseA_wind0.csv" ]; then
-  echo "note: the paper's grids ($G) are absent; the report checks are skipped"
-  finish
-fi
+# the paper's data is part of the repository: its absence is a failure, not a skip
+G=sessions/paper/grids
+check paper_data_present cond '[ -r "$G/table04_caseA_wind0.csv" ] && [ -r sessions/paper/values.csv ] &&
+  [ -r sessions/paper/README.md ] && [ "$(ls "$G"/table*.csv | wc -l)" -eq 8 ]'
 R=$TMP/r
 mkdir -p "$R"
 printf '%s\n' 'date=2000-01-01 00:00:00 UTC' 'commit=abc1234' 'machine=test' 'nproc=2' 'load=0 0 0' \
@@ -91,4 +91,21 @@ check repeats_differ cond 'has "$R/report.md" "SOME DIFFER" && has "$R/report.md
 rm "$R/raw.csv"
 run_report
 check report_needs_run cond '[ "$RC" -ne 0 ] && has "$TMP/err" "raw.csv is missing"'
+
+# the paper's data cannot be found: one line naming the file, status 1, nothing run or written
+PAPER_GRIDS=$TMP/nogrids sh scripts/reproduce.sh -o "$TMP/r2" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check missing_grids cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "^reproduce: the paper.s grid $TMP/nogrids/table04_caseA_wind0.csv is missing" &&
+  [ ! -e "$TMP/r2" ]'
+mkdir -p "$TMP/somegrids"
+cp "$G"/table0*.csv "$TMP/somegrids/"
+PAPER_GRIDS=$TMP/somegrids sh scripts/reproduce.sh -n -o "$R" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check missing_one_grid cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "^reproduce: the paper.s grid $TMP/somegrids/table10_caseC_wind10.csv is missing"'
+PAPER_VALUES=$TMP/none.csv sh scripts/reproduce.sh -o "$TMP/r3" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check missing_values cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "^reproduce: the paper.s values $TMP/none.csv are missing or empty" && [ ! -e "$TMP/r3" ]'
+: >"$TMP/empty.csv"
+PAPER_VALUES=$TMP/empty.csv sh scripts/reproduce.sh -n -o "$R" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check empty_values cond '[ "$RC" -eq 1 ] && has "$TMP/err" "empty.csv are missing or empty"'
 finish
