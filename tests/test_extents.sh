@@ -12,8 +12,10 @@ check derived_values awk '$1 == "along_min" { a = $2 } $1 == "along_max" { b = $
   END { exit !(a < -0.5 && a > -1.2 && b > 0.5 && b < 1.2 && x > 0.5 && x < 1.5 && a == -b) }' "$TMP/out"
 
 # under 10 m/s wind the lattice reaches upstream (the paper's 10 m/s grids reach -1.6 m)
-run -c 'case B; set wind 10; show along_min'
+run -c 'case B; set wind 10; show along_min; show along_max'
 check wind_upstream awk '$1 == "along_min" { exit !($2 <= -1.6) } END { }' "$TMP/out"
+# and ends one cell past its last contact row, which lies upstream of Delta_par = 0 there
+check wind_downstream_end awk '$1 == "along_max" { v = $2; f = 1 } END { exit !(f && v < -0.05 && v > -0.5) }' "$TMP/out"
 
 # set: the lattice is bounded (along_max 0.12 rounds out to 0.15) and show says set
 run -c 'set format csv; case C; set step 0.1; set along_min -0.1; set along_max 0.12; set cross_max 0.1; show along_max; grid; grid cells'

@@ -100,18 +100,19 @@ static int auto_extents(const urImpactSetup* s, const urImpactCond* cond, double
   *scan = (fhi - flo + 1) * (2 * fj + 1);
   if (!(*scan <= MAXCELLS)) return -1;
   long ilo = (long)flo, ihi = (long)fhi, jmax = (long)fj;
-  long lo = 1, hi = -1, kp = 0;
+  long lo = 0, hi = 0, kp = 0;
+  int found = 0;                   /* the rows found so far are lo..hi */
   for (long i = ilo; i <= ihi && !ura_interrupted(); i++) {
     for (long j = -jmax; j <= jmax; j++) {
       if (ur_impact_may_contact(s, cond, i * step, j * step)) {
-        if (i < lo) lo = i;
-        if (i > hi) hi = i;
+        if (!found || i < lo) lo = i;
+        if (!found || i > hi) hi = i;
         if (labs(j) > kp) kp = labs(j);
+        found = 1;
       }
     }
   }
   if (ura_interrupted()) return -1;
-  if (hi < lo) lo = hi = 0;
   *par_min = (lo - 1) * step;
   *par_max = (hi + 1) * step;
   *perp_max = (kp + 1) * step;
