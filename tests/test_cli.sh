@@ -159,12 +159,16 @@ check export_contacts cond '[ "$RC" -eq 0 ] && [ "$(sed -n 2p "$TMP/c.csv")" = "
 run -c "export grid /nonexistent/dir/g.csv"
 check export_unwritable cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ]'
 
-# save session recreates the state exactly
-run -c "case A1; set wind 6; set face 45; set speed 9.5; set bag_kappa 4; set hic_window 0.036; set winds 0,5; set format csv; save session $TMP/x.ses; show"
+# save session recreates the state exactly (the source of speed and angle and tau included)
+run -c "case A1; set wind 6; set face 45; set speed 9.5; set bag_kappa 4; set hic_window 0.036; set winds 0,5; set descent paper; set tau top; set format csv; save session $TMP/x.ses; show"
 cp "$TMP/out" "$TMP/show1"
 run "$TMP/x.ses" -c show
 check save_session_status [ "$RC" -eq 0 ]
 check save_session_same cmp -s "$TMP/show1" "$TMP/out"
+check save_session_descent_tau cond 'grep -q "^set descent paper$" "$TMP/x.ses" && grep -q "^set tau top$" "$TMP/x.ses" &&
+  grep -q "^angle  *51.5 deg  (derived: the paper.s Table 2, case B.s column" "$TMP/out" && grep -q "^tau  *top$" "$TMP/out"'
+run "$TMP/x.ses" -c "set descent model; show angle"
+check save_session_model_again has "$TMP/out" '^angle  *[0-9.]* deg  (derived: descent model at the live wind)$'
 
 # every command listed by help is documented in the man page
 run -c help
