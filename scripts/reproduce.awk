@@ -1,12 +1,16 @@
 # reproduce.awk: the report of 'make reproduce' (run by scripts/reproduce.sh).
-#   awk -f scripts/reproduce.awk -v out=DIR -v values=sessions/paper-values.csv \
+#   awk -f scripts/reproduce.awk -v out=DIR -v values=sessions/paper/values.csv \
 #       -v run=DIR/run.txt -v loads=DIR/paper-load.txt DIR/raw.csv
 # Input: raw.csv, the CSV tables uasrisk printed for sessions/paper.ses (descent, parametric, grid
-# summary rows, sweeps, compare, grid cells); run.txt, the conditions of the run (key=value);
-# paper-values.csv, the paper's printed numbers; paper-load.txt, "FILE Q" per paper grid CSV with
-# the Q that 'grid load' computes. Output in DIR: report.md and the CSV files listed in it.
+# summary rows, sweeps, compare, grid cells, with their '#' notes: the paper's Table 2 as the
+# source of speed and angle, tau top); run.txt, the conditions of the run (key=value);
+# values.csv, the paper's printed numbers; paper-load.txt, "FILE Q" per paper grid CSV with the Q
+# that 'grid load' computes. Output in DIR: report.md and the CSV files listed in it.
 # Our values are taken as uasrisk printed them; a value computed twice must be printed the same
-# (the report lists any that differ). Ratios are ours / paper.
+# (the report lists any that differ). Ratios are ours / paper. Every comparison is labelled
+# training (the zero-wind grids of A, B and C: their cells, P{F|Delta=(0,0)} among them, and
+# their sums) or validation (everything else), the project's calibration rule
+# (sessions/paper/README.md).
 
 BEGIN {
   FS = ","
@@ -21,16 +25,20 @@ BEGIN {
 # ---- raw.csv: remember every value under quantity|case|wind|face ----
 
 /^# grid of case / {
-  # "# grid of case A, wind 0 m/s, face 0 deg (computed); status: complete": cells follow
+  # "# grid of case A, wind 0 m/s, face 0 deg (computed); status: complete[; tau top ...]":
+  # cells follow
   s = $0
   sub(/^# grid of case /, "", s)
   split(s, w, " ")
   sub(/,$/, "", w[1])
-  cellkey = w[1] "|" (w[3] + 0) "|" (w[6] + 0)
+  cellkey = w[1] "|" (w[3] + 0) "|" (w[6] + 0) "|" ($0 ~ /; tau top/ ? "top" : "rmax")
   next
 }
+# the notes of the next table: speed and angle from the paper's Table 2; Delta at tau top
+/^# speed and angle: the paper's Table 2/ { NOTEPAPER = 1; next }
+/^# tau top: / { NOTETOP = 1; next }
 /^#/ { next }
-/^(case|dpar|x|t),/ { hdr = $0; next }
+/^(case|dpar|x|t),/ { hdr = $0; TPAPER = NOTEPAPER; TTOP = NOTETOP; NOTEPAPER = NOTETOP = 0; next }
 hdr == "case,wind,speed,angle" { put("speed", $1, $2, "", $3); put("angle", $1, $2, "", $4); next }
 hdr ~ /^case,wind,speed,angle,planform,/ {
   put("planform", $1, $2, "", $5); put("mtow", $1, $2, "", $6); put("gliding", $1, $2, "", $7)
@@ -39,19 +47,27 @@ hdr ~ /^case,wind,speed,angle,planform,/ {
 }
 hdr ~ /,q,seconds$/ {
   # case,wind,speed,angle,face,step,cells,contact_cells,q,seconds
-  put("q", $1, $2, $5, $9)
+  put(TTOP ? "qtop" : "q", $1, $2, $5, $9)
+  speedrow($1, $2, $3, $4, TPAPER)
   gridstep = $6
-  if (!(($1 " at " $2 " m/s") in SEC)) {
-    SEC[$1 " at " $2 " m/s"] = 1
-    TIMES = TIMES (TIMES == "" ? "" : ", ") $1 " at " $2 " m/s " $10 " s"
+  if (!(($1 " at " $2 " m/s" (TTOP ? " (tau top)" : "")) in SEC)) {
+    SEC[$1 " at " $2 " m/s" (TTOP ? " (tau top)" : "")] = 1
+    TIMES = TIMES (TIMES == "" ? "" : ", ") $1 " at " $2 " m/s" (TTOP ? " (tau top)" : "") " " $10 " s"
   }
   next
 }
-hdr == "case,wind,face,speed,angle,q" { put("q", $1, $2, $3, $6); next }
+hdr == "case,wind,face,speed,angle,q" {
+  put(TTOP ? "qtop" : "q", $1, $2, $3, $6)
+  speedrow($1, $2, $4, $5, TPAPER)
+  next
+}
 hdr ~ /^case,wind,p_centre,/ {
-  # case,wind,p_centre,gliding,q_parametric,q,factor (compare prints no face)
-  put("p_centre", $1, $2, "", $3); put("gliding", $1, $2, "", $4)
+  # case,wind,p_centre,gliding,q_parametric,q,factor (compare prints no face); its gliding area is
+  # at the grid's angle (Table 2's with 'set descent paper'), parametric's at the descent model's
+  put("p_centre", $1, $2, "", $3); put("gliding_compare", $1, $2, "", $4)
   put("q_parametric", $1, $2, "", $5); put("q", $1, $2, "", $6); put("factor", $1, $2, "", $7)
+  NCMP++
+  if (TPAPER) NCMPP++
   next
 }
 hdr ~ /^dpar,dperp,contact,/ && cellkey != "" {
@@ -66,6 +82,8 @@ hdr ~ /^dpar,dperp,contact,/ && cellkey != "" {
 END {
   md = out "/report.md"
   body = out "/report.body"
+  read_grids()
+  SPEEDS = speeds_text()
   values_section()
   table17_section()
   figures_section()
@@ -118,6 +136,39 @@ function ours(q, c, w, f,    k) {
   return (k in OURS) ? OURS[k] : ""
 }
 
+# the speed and angle of one grid (summary row or sweep row) against the paper's Table 2 (case C's
+# column for C, case B's for the others); noted: the table said they came from Table 2
+function speedrow(c, w, sp, an, noted,    col, ps, pa) {
+  NSR++
+  if (noted) NSRN++
+  col = c == "C" ? "C" : "B"
+  ps = paper("Table 2", "speed", col, w)
+  pa = paper("Table 2", "angle", col, w)
+  if (ps != "" && sp + 0 == ps + 0 && an + 0 == pa + 0) NSRM++
+  else if (!((c "|" w) in SPMISS)) {
+    SPMISS[c "|" w] = 1
+    if (++NSPM <= 4) SPM = SPM (SPM == "" ? "" : ", ") c " at " w " m/s: " sp " m/s, " an " deg"
+  }
+}
+
+# where the grids' speeds and angles came from, in one line
+function speeds_text(    s) {
+  if (NSR + 0 == 0) return "no grid rows in the run"
+  s = (NSRN + 0 == NSR + 0 ? "every grid row (" NSR + 0 ") says" : NSRN + 0 " of " NSR + 0 " grid rows say") \
+      " it took the paper's Table 2 (`set descent paper`: case B's column for A, A1, A2, B," \
+      " case C's for C); " NSRM + 0 " of " NSR + 0 " equal Table 2 as printed"
+  if (NCMP + 0 > 0) s = s "; " NCMPP + 0 " of " NCMP + 0 " compare rows (Tables 11-13) say so too"
+  if (SPM != "") s = s "; not Table 2's (case and wind): " SPM (NSPM > 4 ? " and " NSPM - 4 " more" : "")
+  return s
+}
+
+# the project's calibration rule: the zero-wind grids of A, B and C (every cell, and so
+# P{F|Delta=(0,0)}, and their sums) are the only training data; everything else is validation
+function setof(q, c, w) {
+  return ((q == "q" || q == "p_centre") && (c == "A" || c == "B" || c == "C") && w + 0 == 0) ? \
+         "training" : "validation"
+}
+
 # a lattice offset as a key: two decimals, no negative zero
 function lat(x,    s) {
   s = sprintf("%.2f", x + 0)
@@ -164,14 +215,25 @@ function header(    wall) {
   m("| nproc | " RUN["nproc"] " (load average at the start: " RUN["load"] "; the machine is shared, so times are noisy) |")
   m("| grid pitch | " RUN["step"] " |")
   m("| grids run | " RUN["grids"] " (each session stands alone, so some grids are run more than once) |")
+  m("| impact speed and descent angle | " SPEEDS " |")
+  m("| moment tau of Delta | Q, the zero-wind grids and the sweeps: rmax, the paper's text (the drone centre R_max above the head top; at zero wind the same grid as top); the 10 m/s grids compared cell by cell: top (the centre at head-top level, `set tau top`), with rmax beside them |")
   m("| single grids' own timings | " (TIMES == "" ? "-" : TIMES) " (sweeps and compare print no times) |")
   m("| wall time of the run | " sprintf("%d s (%d min %02d s)", wall, int(wall / 60), wall % 60) " |")
   m("| status | " RUN["status"] " |")
   m("")
-  m("*Ours* is this run; *paper* is the number the paper prints (sessions/paper-values.csv, each")
-  m("value with its table); *ratio* = ours / paper. These are validation results, reported as they")
-  m("are: the models are not tuned to the paper's Q values. The target is every Q within a factor")
-  m(TOL " of the paper (ratio in [" sprintf("%.3f", 1 / TOL) ", " TOL "]).")
+  m("*Ours* is this run; *paper* is the number the paper prints (sessions/paper/values.csv, each")
+  m("value with its table; the grids in sessions/paper/grids); *ratio* = ours / paper. The target")
+  m("is every Q within a factor " TOL " of the paper (ratio in [" sprintf("%.3f", 1 / TOL) ", " TOL "]).")
+  m("")
+  m("*Set* labels every comparison by the project's calibration rule: **training** is the three")
+  m("zero-wind grids, Tables 4, 5 and 6 (cases A, B, C at 0 m/s, every cell over the full plane,")
+  m("so also P{F|Delta=(0,0)} at 0 m/s of Tables 11-13 and the grids' sums Q); of the paper, the")
+  m("built-in models were calibrated against Table 6's footprint and P{F|Delta=(0,0)} at 0 m/s only")
+  m("(and public test corridors; uasrisk-model(5)). **Validation** is everything else: Table 17 at")
+  m("4 and 10 m/s, every A1 and")
+  m("A2 value, the 10 m/s grids (Tables 8-10, 15, 16), the faces of Fig. 11, the rest of Tables")
+  m("11-13, and the numbers of Tables 2 and 3. Validation results are reported as they are: nothing")
+  m("was tuned to them.")
   m("")
 }
 
@@ -179,90 +241,156 @@ function header(    wall) {
 function summary(    i) {
   m("## Summary")
   m("")
-  m("- Table 17: **" T17IN " of 15 Q values within a factor " TOL "** of the paper; ratios (ours / paper) " T17R ".")
-  m("- Ordering C >= B >= A >= A1 >= A2 (ours): " ORDS ".")
-  m("- Q rises with wind 0 -> 4 -> 10 m/s (ours): " RISE3 "; over every 2 m/s step: " RISE6 ".")
-  m("- Every printed Q of the paper (all tables, repeats included): " QIN " of " QN " within a factor " TOL ".")
+  m("- Table 17: **" T17IN " of 15 Q values within a factor " TOL "** of the paper (training " T17TIN " of 3, validation " T17VIN " of 12); " T17HOW "; ratios (ours / reference) " T17R ".")
+  m("- Ordering C >= B >= A >= A1 >= A2 (ours, validation): " ORDS ".")
+  m("- Zero-wind grids (training), mean |Delta P| over the union footprint: " MAD0 ".")
+  m("- 10 m/s grids (validation), mean |Delta P| over the union footprint, as computed (tau rmax) -> tau top -> tau top and the best along-course shift by whole cells: " MAD10 ".")
+  m("- Impact speed and descent angle: " SPEEDS ".")
+  m("- Q rises with wind 0 -> 4 -> 10 m/s (ours, validation): " RISE3 "; over every 2 m/s step: " RISE6 ".")
+  m("- Every printed Q of the paper (all tables, repeats included, against the printed value): " QIN " of " QN " within a factor " TOL " (training " QTIN " of " QTN ", validation " QVIN " of " QVN ").")
   m("- The paper's grids: captions against the full-plane sums of the printed cells: " MISMATCH ".")
-  m("- Footprint overlap with the paper's grids (cells with P > 0 in both / in either; a shift is a")
-  m("  diagnostic, not applied): " FOOT ".")
+  m("- Footprint overlap with the paper's grids (cells with P > 0 in both / in either; tau rmax at")
+  m("  0 m/s, tau top at 10 m/s; a shift is a diagnostic, not applied): " FOOT ".")
   m("- Repeated computations: " REPEATS ".")
   m("")
 }
 
 # every printed number of the paper beside ours, grouped by table
-function values_section(    i, o, r, f, last, nq, nin, s, note) {
+function values_section(    i, o, r, f, last, s, note, st, fq, rf) {
   f = out "/values.csv"
-  csvline(f, "source,quantity,case,wind,face,ours,paper,ratio,within_" TOL)
+  csvline(f, "source,quantity,case,wind,face,ours,paper,ratio,within_" TOL ",set,full_plane_sum,ratio_full_plane_sum")
   p("## Every printed number of the paper")
   p("")
   p("All numbers also in `values.csv`. Q in m^2, speed in m/s, angle in degrees, probabilities as")
   p("fractions. Tables 11-13 rows come from `compare` (P{F|Delta=(0,0)} x gliding area against Q).")
+  p("Where the paper prints the grid of a Q, the full-plane sum of its printed cells is given")
+  p("beside the printed value (they differ for Tables 4 and 5, see below). The Table 2 and Table 3")
+  p("rows are uasrisk's descent and parametric models; the grids' own speeds and angles (and so the")
+  p("gliding areas of Tables 11-13, from `compare`) are in the header (*impact speed and descent")
+  p("angle*).")
   last = ""
   for (i = 1; i <= NV; i++) {
-    o = ours(VQ[i], VC[i], VW[i], VF[i])
+    o = ours(VQ[i] == "gliding" && VS[i] ~ /^Table 1[123]$/ ? "gliding_compare" : VQ[i], VC[i], VW[i], VF[i])
     r = ratio(o, VV[i])
     s = VQ[i] == "q" ? within(r) : ""
-    if (VQ[i] == "q" && o != "") { nq++; if (s == "yes") nin++ }
-    csvline(f, VS[i] "," VQ[i] "," VC[i] "," VW[i] "," VF[i] "," o "," VV[i] "," r "," s)
+    st = setof(VQ[i], VC[i], VW[i])
+    fq = VQ[i] == "q" ? fullq(VC[i], VW[i]) : ""
+    rf = ratio(o, fq)
+    if (VQ[i] == "q" && o != "") {
+      nq++; if (s == "yes") nin++
+      if (st == "training") { nqt++; if (s == "yes") nint++ }
+      else { nqv++; if (s == "yes") ninv++ }
+    }
+    csvline(f, VS[i] "," VQ[i] "," VC[i] "," VW[i] "," VF[i] "," o "," VV[i] "," r "," s "," st "," fq "," rf)
     if (VS[i] != last) {
       p("")
       p("### " VS[i])
       p("")
-      p("| quantity | case | wind | ours | paper | ratio | Q within x" TOL " | where |")
-      p("|---|---|---:|---:|---:|---:|---|---|")
+      p("| quantity | case | wind | set | ours | paper | ratio | Q within x" TOL " | full-plane sum of the printed grid (ratio) | where |")
+      p("|---|---|---:|---|---:|---:|---:|---|---|---|")
       last = VS[i]
     }
     note = VN[i]
     gsub(/\|/, "\\|", note)
-    p("| " VQ[i] " | " VC[i] " | " VW[i] " | " blank(o) " | " VV[i] " | " blank(r) " | " s " | " note " |")
+    p("| " VQ[i] " | " VC[i] " | " VW[i] " | " st " | " blank(o) " | " VV[i] " | " blank(r) " | " s " | " \
+      (fq != "" ? fq " (" blank(rf) ")" : "") " | " note " |")
   }
   close(f)
   p("")
-  QIN = nin + 0; QN = nq + 0
-  p("**Q values within a factor " TOL " of the paper: " nin + 0 " of " nq + 0 "** (every Q row above,")
-  p("repeats included).")
+  QIN = nin + 0; QN = nq + 0; QTIN = nint + 0; QTN = nqt + 0; QVIN = ninv + 0; QVN = nqv + 0
+  p("**Q values within a factor " TOL " of the printed value: " nin + 0 " of " nq + 0 "** (every Q row")
+  p("above, repeats included; training " nint + 0 " of " nqt + 0 ", validation " ninv + 0 " of " nqv + 0 ").")
   p("")
 }
 
+# the full-plane sum of the paper's printed grid of a case and wind (4 decimals), or ""
+function fullq(c, w) {
+  return ((c "|" (w + 0)) in FULLQ) ? sprintf("%.4f", FULLQ[c "|" (w + 0)]) : ""
+}
+
 # Table 17, the ordering C >= B >= A >= A1 >= A2 and the rise with wind
-function table17_section(    f, c, w, i, j, o, pv, r, n, nin, line, ord, po, miss, a, b, pa, pb, ok, pok, ck, sw, rc) {
+function table17_section(    f, c, w, i, j, o, pv, r, n, nin, ck, sw, rc, st, ref, refv, rin, r1, r2, i1, i2, rr, a, b, pa, pb, ok, pok, ord, po, miss, qt) {
   f = out "/table17.csv"
   ck = out "/checks.csv"
-  csvline(f, "case,wind,ours,paper,ratio,within_" TOL)
+  csvline(f, "case,wind,ours,paper,ratio,within_" TOL ",set,reference,reference_value,ratio_reference,within_reference")
   csvline(ck, "check,subject,ours,paper")
   p("## Table 17: Q (m^2) for cases C, B, A, A1, A2 at 0, 4 and 10 m/s wind")
   p("")
-  p("| case | 0 m/s ours | paper | ratio | 4 m/s ours | paper | ratio | 10 m/s ours | paper | ratio |")
-  p("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+  p("Each value is scored against a *reference*: the value Table 17 prints, except at 0 m/s for A")
+  p("(the full-plane sum of the paper's own Table 4 grid, computed here from")
+  p("sessions/paper/grids/table04_caseA_wind0.csv: Table 17's 0.031 is that grid's half-plane sum)")
+  p("and for A1 and A2 (no printed grid: the ratio is given against the printed value and against")
+  p("twice it, and the value counts as within a factor " TOL " if either is; the column says which).")
+  p("")
+  p("| case | wind | set | ours | paper (Table 17) | ratio to it | reference | reference value | ratio to the reference | within x" TOL " |")
+  p("|---|---:|---|---:|---:|---:|---|---:|---:|---|")
   split("0 4 10", sw, " ")
+  T17R = ""
   for (i = 1; i <= NCASE; i++) {
     c = CASES[i]
-    line = "| " c
     for (j = 1; j <= 3; j++) {
       w = sw[j]
       o = ours("q", c, w, 0)
       pv = paper("Table 17", "q", c, w)
+      st = setof("q", c, w)
       r = ratio(o, pv)
+      if (c == "A" && w == 0 && fullq("A", 0) != "") {
+        ref = "full-plane sum of Table 4"
+        refv = fullq("A", 0)
+        r1 = ratio(o, FULLQ["A|0"])
+        rin = within(r1)
+        rr = r1
+      } else if ((c == "A1" || c == "A2") && w == 0) {
+        r1 = ratio(o, pv)
+        r2 = ratio(o, 2 * pv)
+        i1 = within(r1); i2 = within(r2)
+        rin = i1 == "yes" || i2 == "yes" ? "yes" : i1 == "" ? "" : "no"
+        ref = i1 == "yes" ? "printed (twice it: out)" : i2 == "yes" ? "twice the printed (printed: out)" : "printed or twice it (both out)"
+        refv = pv " / " sprintf("%.3f", 2 * pv)
+        rr = blank(r1) " / " blank(r2)
+        r1 = i1 == "yes" ? r1 : i2 == "yes" ? r2 : r1
+      } else {
+        ref = "printed"
+        refv = pv
+        r1 = r
+        rin = within(r)
+        rr = r1
+      }
       n++
-      if (within(r) == "yes") nin++
-      csvline(f, c "," w "," o "," pv "," r "," within(r))
-      line = line " | " blank(o) " | " pv " | " blank(r) (within(r) == "no" ? " (out)" : "")
-      T17R = T17R (T17R == "" ? "" : ", ") c "@" w " " blank(r)
+      if (rin == "yes") { nin++; if (st == "training") T17TIN++; else T17VIN++ }
+      csvline(f, c "," w "," o "," pv "," r "," within(r) "," st "," ref "," refv "," r1 "," rin)
+      p("| " c " | " w " | " st " | " blank(o) " | " pv " | " blank(r) " | " ref " | " refv " | " blank(rr) " | " \
+        (rin == "yes" ? "yes" : rin == "no" ? "**no**" : "-") " |")
+      T17R = T17R (T17R == "" ? "" : ", ") c "@" w " " blank(r1)
     }
-    p(line " |")
   }
   close(f)
   p("")
-  T17IN = nin + 0
-  p("**Within a factor " TOL ": " nin + 0 " of " n " values** (\"out\" marks the others). In `table17.csv`.")
+  T17IN = nin + 0; T17TIN += 0; T17VIN += 0
+  T17HOW = "A at 0 m/s against the full-plane sum of Table 4's grid (" blank(fullq("A", 0)) "), A1 and A2 at 0 m/s against the printed value or twice it (" a1a2() ")"
+  p("**Within a factor " TOL ": " nin + 0 " of " n " values** (training " T17TIN " of 3, validation " T17VIN " of 12). In `table17.csv`.")
   p("")
+  qt = ""
+  for (i = 1; i <= NCASE; i++) {
+    o = ours("qtop", CASES[i], 10, 0)
+    if (o != "") qt = qt (qt == "" ? "" : ", ") CASES[i] " " o " (" blank(ratio(o, ours("q", CASES[i], 10, 0))) " x tau rmax)"
+  }
+  if (qt != "") {
+    p("The 10 m/s grids again with tau top (Delta at head-top level), for the cell-by-cell comparison:")
+    p("Q " qt ". The two definitions label the same paths differently, so Q differs only by where")
+    p("the lattice samples the paths.")
+    p("")
+  }
 
   # ordering at each wind of the table
-  p("### Ordering C >= B >= A >= A1 >= A2")
+  p("### Ordering C >= B >= A >= A1 >= A2 (validation)")
+  p("")
+  p("Scored at 4 and 10 m/s. At 0 m/s the paper's printed values mix sums (A's is a half-plane sum),")
+  p("so its row is shown for information only.")
   p("")
   p("| wind | ours | paper |")
   p("|---:|---|---|")
+  ORDS = ""
   for (j = 1; j <= 3; j++) {
     w = sw[j]
     ord = ""; po = ""; miss = ""
@@ -275,18 +403,22 @@ function table17_section(    f, c, w, i, j, o, pv, r, n, nin, line, ord, po, mis
     }
     ok = miss != "" ? "missing" : ord == "" ? "holds" : "fails"
     pok = po == "" ? "holds" : "fails"
-    ORDS = ORDS (ORDS == "" ? "" : "; ") w " m/s " ok (ord != "" ? " (" ord ")" : "")
-    p("| " w " | " ok (ord != "" ? ": " ord : "") (miss != "" ? " (no value for" miss ")" : "") " | " pok (po != "" ? ": " po : "") " |")
+    if (w != 0) ORDS = ORDS (ORDS == "" ? "" : "; ") w " m/s " ok (ord != "" ? " (" ord ")" : "")
+    p("| " w (w == 0 ? " (not scored)" : "") " | " ok (ord != "" ? ": " ord : "") (miss != "" ? " (no value for" miss ")" : "") " | " pok (po != "" ? ": " po : "") " |")
     csvline(ck, "ordering C>=B>=A>=A1>=A2,wind " w "," ok "," pok)
+  }
+  if (ours("q", "A", 0, 0) != "") {
+    ORDS = ORDS "; 0 m/s (not scored) " (index(ORDL0(), "<") ? "fails (" ORDL0() ")" : "holds")
   }
   p("")
 
   # the rise with wind: at the table's winds, and over the 2 m/s steps of Figs. 10 and 13
-  p("### Does Q rise with wind? (A, A1, A2, B; C for reference)")
+  p("### Does Q rise with wind? (A, A1, A2, B; C for reference; validation)")
   p("")
   p("| case | 0 -> 4 -> 10 m/s (Table 17) ours | paper | every 2 m/s step 0..10 (Figs. 10, 13) ours |")
   p("|---|---|---|---|")
   split("A A1 A2 B C", rc, " ")
+  RISE3 = ""; RISE6 = ""
   for (i = 1; i <= 5; i++) {
     c = rc[i]
     ok = rises(c, "0 4 10", "ours")
@@ -300,11 +432,36 @@ function table17_section(    f, c, w, i, j, o, pv, r, n, nin, line, ord, po, mis
     }
     csvline(ck, "Q rises with wind (0;2;4;6;8;10)," c "," word(r) ",")
   }
-  close(ck)
   p("")
   p("The paper prints only 0, 4 and 10 m/s; its Figs. 10 and 13 show rising curves for A, A1, A2")
   p("and B. Checks also in `checks.csv`.")
   p("")
+  # the speeds: every grid at the paper's Table 2
+  csvline(ck, "speed and angle from Table 2 (grid rows),all," NSRM + 0 " of " NSR + 0 ",")
+  close(ck)
+}
+
+# the pairs out of order at 0 m/s (ours), or ""
+function ORDL0(    i, a, b, s) {
+  s = ""
+  for (i = 1; i < NCASE; i++) {
+    a = ours("q", CASES[i], 0, 0); b = ours("q", CASES[i + 1], 0, 0)
+    if (a != "" && b != "" && a + 0 < b + 0) s = s (s == "" ? "" : ", ") CASES[i] " < " CASES[i + 1] " (" a " < " b ")"
+  }
+  return s
+}
+
+# which reference made A1 and A2 at 0 m/s count
+function a1a2(    i, c, o, pv, s, w1, w2) {
+  s = ""
+  for (i = 1; i <= 2; i++) {
+    c = i == 1 ? "A1" : "A2"
+    o = ours("q", c, 0, 0); pv = paper("Table 17", "q", c, 0)
+    if (o == "" || pv == "") { s = s (s == "" ? "" : "; ") c " -"; continue }
+    w1 = within(ratio(o, pv)); w2 = within(ratio(o, 2 * pv))
+    s = s (s == "" ? "" : "; ") c " " (w1 == "yes" ? "within against the printed value" : w2 == "yes" ? "within against twice it" : "out against both")
+  }
+  return s
 }
 
 function word(s) { return s ~ /^yes/ ? "yes" : s ~ /^no/ ? "no" : "missing" }
@@ -345,11 +502,12 @@ function paper_q(c, w,    i) {
 # Figs. 10, 11, 13: our curves, with the paper's printed values where there are any
 function figures_section(    f, i, j, c, w, o, pv, line, lo, hi, fc, v) {
   f = out "/curves.csv"
-  csvline(f, "figure,case,wind,face,ours,paper,paper_source")
-  p("## Figures 10, 11 and 13: Q (m^2) against wind")
+  csvline(f, "figure,case,wind,face,ours,paper,paper_source,set")
+  p("## Figures 10, 11 and 13: Q (m^2) against wind (validation)")
   p("")
   p("The paper draws these curves without printing their values; where a table prints the same")
-  p("point, it is given in brackets (paper value, ratio). All points in `curves.csv`.")
+  p("point, it is given in brackets (paper value, ratio to it). The zero-wind points of A, B and C")
+  p("are the training grids' sums; every other point is validation. All points in `curves.csv`.")
   p("")
   p("### Fig. 10: cases A, B, C, face 0")
   p("")
@@ -381,7 +539,8 @@ function figures_section(    f, i, j, c, w, o, pv, line, lo, hi, fc, v) {
       o = ours("q", "B", w, FACES[i])
       line = line " " blank(o) " |"
       pv = FACES[i] == 0 ? paper_q("B", w) : ""
-      csvline(f, "Fig. 11,B," w "," FACES[i] "," o "," pv "," (pv != "" ? PQSRC : ""))
+      csvline(f, "Fig. 11,B," w "," FACES[i] "," o "," pv "," (pv != "" ? PQSRC : "") "," \
+              (FACES[i] == 0 ? setof("q", "B", w) : "validation"))
       if (o == "") continue
       if (lo == "" || o + 0 < lo + 0) lo = o
       if (hi == "" || o + 0 > hi + 0) hi = o
@@ -414,7 +573,7 @@ function fig_table(fig, list,    n, cs, i, j, w, o, pv, line) {
       o = ours("q", cs[i], w, 0)
       pv = paper_q(cs[i], w)
       line = line " " blank(o) (pv != "" ? " (" pv ", " blank(ratio(o, pv)) ")" : "") " |"
-      csvline(out "/curves.csv", fig "," cs[i] "," w ",0," o "," pv "," (pv != "" ? PQSRC : ""))
+      csvline(out "/curves.csv", fig "," cs[i] "," w ",0," o "," pv "," (pv != "" ? PQSRC : "") "," setof("q", cs[i], w))
     }
     p(line)
   }
@@ -423,8 +582,8 @@ function fig_table(fig, list,    n, cs, i, j, w, o, pv, line) {
 
 # ---- the paper's printed grids: their sums, and cell by cell against ours ----
 
-function grids_section(    f, fp, l, a, t, c, w, i, cap, o, full, half) {
-  # the Q that uasrisk's 'grid load' computes for each file
+# the Q that uasrisk's 'grid load' computes for each file, and the files themselves
+function read_grids(    l, a, i) {
   while ((getline l < loads) > 0) {
     split(l, a, " ")
     NG++
@@ -432,28 +591,33 @@ function grids_section(    f, fp, l, a, t, c, w, i, cap, o, full, half) {
     GLOAD[NG] = a[2]
   }
   close(loads)
+  for (i = 1; i <= NG; i++) {
+    read_paper_grid(i)
+    FULLQ[GC[i] "|" (GW[i] + 0)] = GFULL[i]
+  }
+}
 
+function grids_section(    f, fp, t, c, w, i, cap, o, full, half, k, tau, line) {
   p("## The paper's printed P{F|Delta} grids")
   p("")
   p("The paper prints each grid for Delta_perp >= 0 only (results are mirror-symmetric for face 0).")
   p("Full-plane sum = 0.0025 m^2 x [sum(column Delta_perp = 0) + 2 x sum(columns Delta_perp > 0)] /")
-  p("100, the mirror rule of ../shared/paper/grids/README.md; half sum = 0.0025 m^2 x sum(printed")
+  p("100, the mirror rule of sessions/paper/grids/README.md; half sum = 0.0025 m^2 x sum(printed")
   p("cells) / 100. `grid load` builds the same full plane (column 0 once, the others mirrored) and")
-  p("its Q = sum P x 0.05 m x 0.05 m is given beside it. Our Q is always the full plane.")
+  p("its Q = sum P x 0.05 m x 0.05 m is given beside it. Our Q is always the full plane (tau rmax).")
   p("")
-  p("| table | case | wind | caption Q | full-plane sum | grid load Q | half sum | ours | ours / caption | ours / full-plane sum |")
-  p("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+  p("| table | case | wind | set | caption Q | full-plane sum | grid load Q | half sum | ours | ours / caption | ours / full-plane sum |")
+  p("|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|")
   f = out "/paper-grids.csv"
-  csvline(f, "table,case,wind,caption_q,full_sum,load_q,half_sum,ours_q,ratio_caption,ratio_full")
+  csvline(f, "table,case,wind,caption_q,full_sum,load_q,half_sum,ours_q,ratio_caption,ratio_full,set")
   for (i = 1; i <= NG; i++) {
-    read_paper_grid(i)
     t = GT[i]; c = GC[i]; w = GW[i]
     cap = paper("Table " t, "q", c, w)
     o = ours("q", c, w, 0)
     full = sprintf("%.4f", GFULL[i]); half = sprintf("%.4f", GHALF[i])
-    p("| " t " | " c " | " w " | " cap " | " full " | " GLOAD[i] " | " half " | " blank(o) " | " \
+    p("| " t " | " c " | " w " | " setof("q", c, w) " | " cap " | " full " | " GLOAD[i] " | " half " | " blank(o) " | " \
       blank(ratio(o, cap)) " | " blank(ratio(o, full)) " |")
-    csvline(f, t "," c "," w "," cap "," full "," GLOAD[i] "," half "," o "," ratio(o, cap) "," ratio(o, full))
+    csvline(f, t "," c "," w "," cap "," full "," GLOAD[i] "," half "," o "," ratio(o, cap) "," ratio(o, full) "," setof("q", c, w))
   }
   close(f)
   p("")
@@ -465,6 +629,8 @@ function grids_section(    f, fp, l, a, t, c, w, i, cap, o, full, half) {
   p("## Cell by cell: our grids against the paper's")
   p("")
   FOOT = "not compared"
+  MAD0 = "not compared"
+  MAD10 = "not compared"
   if (gridstep != "" && gridstep + 0 != 0.05) {
     p("Skipped: this run used a " gridstep " m pitch, the paper's grids a 0.05 m pitch.")
     p("")
@@ -474,31 +640,51 @@ function grids_section(    f, fp, l, a, t, c, w, i, cap, o, full, half) {
   p("covers (a point outside a grid counts as no contact, P = 0). The paper's text gives P{F|Delta}")
   p("in percent to one decimal and not its contact boundary (a red line in the PDF), so the")
   p("*footprint* is P > 0 at that precision: paper P > 0, ours P >= 0.05 %. *Touch* counts our cells")
-  p("where the drone touches the person at all. MAD, bias (ours - paper) and max |diff| are in P")
-  p("(0..1) over the union of the two footprints. Per-cell values in `cells-tableNN.csv`, the")
-  p("difference map (ours - paper, percent, the paper's layout) in `diffmap-tableNN.csv`. The last")
-  p("two columns are diagnostics only (nothing is shifted in the comparison): the mean Delta_par of")
-  p("each footprint, and the whole-row shift of our footprint along the course (m, + = forward)")
-  p("that would overlap the paper's best.")
+  p("where the drone touches the person at all. *Mean |Delta P|* (MAD), bias (ours - paper) and max")
+  p("|diff| are in P (0..1) over the *union footprint*, the cells where ours or the paper's P > 0.")
   p("")
-  p("| table | case | wind | both | only ours | only paper | neither | footprint overlap (both / union) | ours touch | MAD | bias | max abs diff (at dpar, dperp) | footprint centre dpar, ours / paper | along shift of ours for the best overlap (overlap) |")
-  p("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|")
+  p("*tau* is the moment our Delta is taken (uasrisk(1), `set tau`): **rmax**, the paper's text (the")
+  p("drone centre R_max above the head top), or **top**, the centre at head-top level, R_max/tan(psi)")
+  p("further along the course. At zero wind the two are the same grid. Under wind the paper's")
+  p("printed grids behave as if taken at top, so the 10 m/s grids are compared at top (their maps,")
+  p("`cells-tableNN.csv` and `diffmap-tableNN.csv`), and at rmax as computed (`cells-tableNN-rmax.csv`,")
+  p("`diffmap-tableNN-rmax.csv`). The last columns are the best whole-row shift of our grid along the")
+  p("course (m, + = forward): the one that gives the smallest mean |Delta P|, with the footprint")
+  p("overlap and the mean |Delta P| there; a diagnostic (nothing is shifted elsewhere, and Q does not")
+  p("depend on it).")
+  p("")
+  p("| table | case | wind | set | tau | both | only ours | only paper | neither | footprint overlap (both / union) | ours touch | mean abs Delta P | bias | max abs diff (at dpar, dperp) | footprint centre dpar, ours / paper | best along shift: shift (overlap, mean abs Delta P) |")
+  p("|---|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|")
   fp = out "/footprint.csv"
-  csvline(fp, "table,case,wind,both,only_ours,only_paper,neither,overlap,ours_touch,mad,bias,max_abs_diff,max_at_dpar,max_at_dperp,centre_ours,centre_paper,best_shift,best_overlap")
-  FOOT = ""
-  for (i = 1; i <= NG; i++) compare_grid(i, fp)
+  csvline(fp, "table,case,wind,both,only_ours,only_paper,neither,overlap,ours_touch,mad,bias,max_abs_diff,max_at_dpar,max_at_dperp,centre_ours,centre_paper,best_shift,best_overlap,tau,set,mad_best_shift,mad_at_best_shift,overlap_at_mad_best_shift")
+  FOOT = ""; MAD0 = ""; MAD10 = ""
+  for (i = 1; i <= NG; i++) {
+    if (GW[i] + 0 == 0) {
+      compare_grid(i, fp, "rmax", 1)
+      MAD0 = MAD0 (MAD0 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " MADS["rmax"]
+    } else {
+      compare_grid(i, fp, "top", 1)
+      compare_grid(i, fp, "rmax", 0)
+      MAD10 = MAD10 (MAD10 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " MADS["rmax"] " -> " \
+              MADS["top"] " -> " MADB["top"] " (" SHB["top"] " m)"
+    }
+  }
   close(fp)
+  p("")
+  p("### Mean |Delta P| over the union footprint")
+  p("")
+  p("| table | case | wind | set | tau rmax (as computed) | rmax, best along shift | tau top | top, best along shift |")
+  p("|---|---|---:|---|---:|---|---:|---|")
+  for (i = 1; i <= NG; i++) p(MADROW[i])
   p("")
   p("Under wind the drone descends at psi < 90 deg, so the along offset of one path depends on the")
   p("height at which it is taken: a footprint moved by s along the course is the footprint of")
-  p("offsets taken s tan(psi) lower. Ours are taken at tau, the drone centre R_max above the head")
-  p("top (paper 4.2, Fig. 7). Where a best shift is found under wind, the summary gives that")
-  p("level difference: it says at which height the paper's printed grids appear to measure Delta.")
-  p("Q does not depend on it (a shift moves cells, it does not change them).")
+  p("offsets taken s tan(psi) lower. With tau rmax our 10 m/s footprints lie upstream of the paper's")
+  p("by about R_max/tan(psi); tau top takes Delta that much later, at head-top level.")
   p("")
-  p("Maps (paper layout: rows Delta_par from front to back, columns Delta_perp from 0 outwards):")
-  p("`=` both have P > 0 within 10 points of each other, `+` / `-` both, ours more than 10 points")
-  p("higher / lower, `o` only ours, `p` only the paper, `.` neither.")
+  p("Maps (paper layout: rows Delta_par from front to back, columns Delta_perp from 0 outwards;")
+  p("tau rmax at 0 m/s, tau top at 10 m/s): `=` both have P > 0 within 10 points of each other, `+` /")
+  p("`-` both, ours more than 10 points higher / lower, `o` only ours, `p` only the paper, `.` neither.")
   p("")
   for (i = 1; i <= NG; i++) map_grid(i)
 }
@@ -583,16 +769,47 @@ function sortnum(v, n, dir,    i, j, x) {
   }
 }
 
-function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp, co, ca, k, kb, nb, ob, sh) {
+# the mean |Delta P| over the union footprint with our grid moved k rows forward (row r of ours
+# lands on row r - k); sets SHOV to the footprint overlap there; -1 if the union is empty
+function mad_shift(k,    sh, a, r, s, sum, n, nb, vo, va) {
+  sum = 0; n = 0; nb = 0
+  for (sh in FO) {
+    split(sh, a, SUBSEP)
+    r = a[1] - k; s = a[2]
+    va = ((r, s) in VA) ? VA[r, s] : 0
+    sum += VO[a[1], s] > va ? VO[a[1], s] - va : va - VO[a[1], s]
+    n++
+    if ((r, s) in FA) nb++
+  }
+  for (sh in FA) {
+    split(sh, a, SUBSEP)
+    r = a[1] + k; s = a[2]
+    if ((r, s) in FO) continue
+    vo = ((r, s) in VO) ? VO[r, s] : 0
+    sum += vo > VA[a[1], s] ? vo - VA[a[1], s] : VA[a[1], s] - vo
+    n++
+  }
+  SHOV = n ? nb / n : 0
+  return n ? sum / n : -1
+}
+
+# one comparison of paper grid i with our grid at tau (rmax or top); primary: its cells, map and
+# difference map are the report's main ones (else the files get a -rmax suffix and no map)
+function compare_grid(i, fp, tau, primary,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp, co, ca, k, kb, nb, ob, sh, st, sfx, kk, km, mm, mo, v, dstep, madrow) {
   t = GT[i]; c = GC[i]; w = GW[i]
-  key = c "|" w "|0"
+  st = setof("q", c, w)
+  key = c "|" w "|0|" tau
+  sfx = primary ? "" : "-" tau
   if (!(key in HAVE)) {
-    p("| " t " | " c " | " w " | no cells of ours for this case and wind in the run |||||||||||")
+    p("| " t " | " c " | " w " | " st " | " tau " | no cells of ours for this case, wind and tau in the run |||||||||||")
+    MADS[tau] = "-"; MADB[tau] = "-"; SHB[tau] = "-"
+    if (primary) MADROW[i] = "| " t " | " c " | " w " | " st " | - | - | - | - |"
+    else MADROW[i] = "| " t " | " c " | " w " | " st " | - | - | " MADS["top"] " | " MADB["top"] " (" SHB["top"] " m) |"
     return
   }
   lattice(i, key)
-  cf = out "/cells-" GNAME[i] ".csv"
-  dm = out "/diffmap-" GNAME[i] ".csv"
+  cf = out "/cells-" GNAME[i] sfx ".csv"
+  dm = out "/diffmap-" GNAME[i] sfx ".csv"
   csvline(cf, "dpar,dperp,ours_p,paper_p,diff,footprint")
   line = "along"
   for (s = 1; s <= NPERP; s++) line = line "," LPERP[s]
@@ -600,6 +817,8 @@ function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa
   both = oo = op = nn = 0; mad = bias = mx = 0; touch = 0; co = ca = 0
   delete FO
   delete FA
+  delete VO
+  delete VA
   for (r = 1; r <= NPAR; r++) {
     par = LPAR[r]
     line = par
@@ -607,11 +826,13 @@ function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa
       perp = LPERP[s]
       po = ((key, par, perp) in OP) ? OP[key, par, perp] : 0
       pa = ((i, par, perp) in PP) ? PP[i, par, perp] : 0
+      VO[r, s] = po
+      VA[r, s] = pa
       if (((key, par, perp) in OC) && OC[key, par, perp]) touch++
       fo = po >= 0.0005
       fa = pa > 0
       d = po - pa
-      CH[i, r, s] = fo && fa ? (d > 0.1 ? "+" : d < -0.1 ? "-" : "=") : fo ? "o" : fa ? "p" : "."
+      if (primary) CH[i, r, s] = fo && fa ? (d > 0.1 ? "+" : d < -0.1 ? "-" : "=") : fo ? "o" : fa ? "p" : "."
       if (fo) { FO[r, s] = 1; co += par }
       if (fa) { FA[r, s] = 1; ca += par }
       if (fo && fa) both++
@@ -631,11 +852,15 @@ function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa
   }
   close(cf)
   close(dm)
-  GR[i] = NPAR
-  GS[i] = NPERP
-  for (r = 1; r <= NPAR; r++) MPAR[i, r] = LPAR[r]
-  for (s = 1; s <= NPERP; s++) MPERP[i, s] = LPERP[s]
+  if (primary) {
+    GR[i] = NPAR
+    GS[i] = NPERP
+    for (r = 1; r <= NPAR; r++) MPAR[i, r] = LPAR[r]
+    for (s = 1; s <= NPERP; s++) MPERP[i, s] = LPERP[s]
+    MTAU[i] = tau
+  }
   un = both + oo + op
+  dstep = LPAR[1] - LPAR[2]
 
   # diagnostic: the along shift of our footprint (whole rows) that overlaps the paper's best
   kb = 0; ob = un ? both / un : 0
@@ -647,17 +872,40 @@ function compare_grid(i, fp,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa
     }
     if (un && nb / (oo + op + 2 * both - nb) > ob + 1e-12) { ob = nb / (oo + op + 2 * both - nb); kb = k }
   }
-  sh = sprintf("%+.2f", kb * (LPAR[1] - LPAR[2]))
-  FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-") \
-         (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along" \
-               lower(kb * (LPAR[1] - LPAR[2]), GPSI[i]) ")" : "")
-  p("| " t " | " c " | " w " | " both " | " oo " | " op " | " nn " | " \
+  sh = sprintf("%+.2f", kb * dstep)
+
+  # the whole-row shift with the smallest mean |Delta P| (the smallest |shift| among equals)
+  km = 0; mm = mad_shift(0); mo = SHOV
+  for (kk = 1; kk <= 60; kk++) {
+    v = mad_shift(kk)
+    if (v >= 0 && v < mm - 1e-12) { mm = v; km = kk; mo = SHOV }
+    v = mad_shift(-kk)
+    if (v >= 0 && v < mm - 1e-12) { mm = v; km = -kk; mo = SHOV }
+  }
+  MADS[tau] = un ? sprintf("%.3f", mad / un) : "-"
+  MADB[tau] = mm >= 0 ? sprintf("%.3f", mm) : "-"
+  SHB[tau] = sprintf("%+.2f", km * dstep)
+  if (w + 0 == 0) {
+    madrow = "| " t " | " c " | " w " | " st " | " MADS[tau] " | " MADB[tau] " (" SHB[tau] " m) | = rmax | = rmax |"
+  } else if (!primary) {
+    madrow = "| " t " | " c " | " w " | " st " | " MADS["rmax"] " | " MADB["rmax"] " (" SHB["rmax"] " m) | " \
+             MADS["top"] " | " MADB["top"] " (" SHB["top"] " m) |"
+  }
+  if (madrow != "") MADROW[i] = madrow
+
+  if (primary) {
+    FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-") \
+           (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along" \
+                 lower(kb * dstep, GPSI[i]) ")" : "")
+  }
+  p("| " t " | " c " | " w " | " st " | " tau " | " both " | " oo " | " op " | " nn " | " \
     (un ? sprintf("%.2f", both / un) : "-") " | " touch " | " (un ? sprintf("%.3f", mad / un) : "-") " | " \
     (un ? sprintf("%+.3f", bias / un) : "-") " | " sprintf("%.3f", mx) (mx > 0 ? " (" mpar ", " mperp ")" : "") " | " \
-    centre(co, both + oo) " / " centre(ca, both + op) " | " sh " (" sprintf("%.2f", ob) ") |")
+    centre(co, both + oo) " / " centre(ca, both + op) " | " SHB[tau] " (" sprintf("%.2f", mo) ", " MADB[tau] ") |")
   csvline(fp, t "," c "," w "," both "," oo "," op "," nn "," (un ? sprintf("%.3f", both / un) : "") "," touch "," \
           (un ? sprintf("%.4f", mad / un) : "") "," (un ? sprintf("%.4f", bias / un) : "") "," sprintf("%.4f", mx) "," mpar "," mperp "," \
-          centre(co, both + oo) "," centre(ca, both + op) "," sh "," sprintf("%.3f", ob))
+          centre(co, both + oo) "," centre(ca, both + op) "," sh "," sprintf("%.3f", ob) "," tau "," st "," \
+          SHB[tau] "," (mm >= 0 ? sprintf("%.4f", mm) : "") "," sprintf("%.3f", mo))
 }
 
 # the level difference a whole-footprint shift along the course amounts to: a drone descending
@@ -674,7 +922,7 @@ function centre(sum, n) { return n ? sprintf("%+.2f", sum / n) : "-" }
 
 function map_grid(i,    r, s, line) {
   if (!(i in GR)) return
-  p("Table " GT[i] " (case " GC[i] ", " GW[i] " m/s); columns Delta_perp = " MPERP[i, 1] " .. " MPERP[i, GS[i]] " m:")
+  p("Table " GT[i] " (case " GC[i] ", " GW[i] " m/s, tau " MTAU[i] "); columns Delta_perp = " MPERP[i, 1] " .. " MPERP[i, GS[i]] " m:")
   p("")
   p("```")
   for (r = 1; r <= GR[i]; r++) {

@@ -11,13 +11,20 @@
 #
 # DIR receives raw.csv (everything uasrisk printed), raw.err, run.txt (date, commit, machine, wall
 # time of the run), report.md, and the CSV files the report describes. The paper's numbers come
-# from sessions/paper-values.csv and its P{F|Delta} grids from $PAPER_GRIDS; the comparison is
-# made by scripts/reproduce.awk. Environment: UASRISK (default ./uasrisk), PAPER_GRIDS (default
-# ../shared/paper/grids). Run from the source directory.
+# from $PAPER_VALUES and its P{F|Delta} grids from $PAPER_GRIDS (sessions/paper/README.md); the
+# comparison is made by scripts/reproduce.awk. Without any of them nothing is run: one line names
+# the missing file and the status is 1. Environment: UASRISK (default ./uasrisk), PAPER_VALUES
+# (default sessions/paper/values.csv), PAPER_GRIDS (default sessions/paper/grids). Run from the
+# source directory.
 set -u
 out=build/reproduce step="" norun=0
 UASRISK=${UASRISK:-./uasrisk}
-PAPER_GRIDS=${PAPER_GRIDS:-../shared/paper/grids}
+PAPER_VALUES=${PAPER_VALUES:-sessions/paper/values.csv}
+PAPER_GRIDS=${PAPER_GRIDS:-sessions/paper/grids}
+# the paper's printed grids the report compares with (sessions/paper/grids/README.md)
+GRID_FILES="table04_caseA_wind0.csv table05_caseB_wind0.csv table06_caseC_wind0.csv
+  table08_caseA_wind10.csv table09_caseB_wind10.csv table10_caseC_wind10.csv
+  table15_caseA1_wind10.csv table16_caseA2_wind10.csv"
 while getopts o:s:n opt; do
   case $opt in
     o) out=$OPTARG ;;
@@ -30,6 +37,17 @@ if [ ! -x "$UASRISK" ]; then
   echo "reproduce: $UASRISK is not built (run make)" >&2
   exit 1
 fi
+# the paper's data first: a report without it would be empty tables
+if [ ! -r "$PAPER_VALUES" ] || [ ! -s "$PAPER_VALUES" ]; then
+  echo "reproduce: the paper's values $PAPER_VALUES are missing or empty (see sessions/paper/README.md; PAPER_VALUES names another file)" >&2
+  exit 1
+fi
+for g in $GRID_FILES; do
+  if [ ! -r "$PAPER_GRIDS/$g" ] || [ ! -s "$PAPER_GRIDS/$g" ]; then
+    echo "reproduce: the paper's grid $PAPER_GRIDS/$g is missing or empty (see sessions/paper/README.md; PAPER_GRIDS names another folder)" >&2
+    exit 1
+  fi
+done
 mkdir -p "$out" || exit 1
 
 # the number of grids a session runs: grid and compare one each, sweep one per value
@@ -111,11 +129,15 @@ done
 
 # the paper's grids as uasrisk's 'grid load' reads them: the full-plane Q it computes
 : >"$out/paper-load.txt"
-for f in "$PAPER_GRIDS"/table*.csv; do
-  [ -r "$f" ] || continue
+for g in $GRID_FILES; do
+  f=$PAPER_GRIDS/$g
   q=$(NO_COLOR=1 "$UASRISK" -c "grid load $f; grid show" |
       sed -n 's/.*: Q = \([0-9.]*\) m^2 over the full plane.*/\1/p')
-  echo "$f ${q:-nan}" >>"$out/paper-load.txt"
+  if [ -z "$q" ]; then
+    echo "reproduce: uasrisk could not load the paper's grid $f ('grid load' gave no Q)" >&2
+    exit 1
+  fi
+  echo "$f $q" >>"$out/paper-load.txt"
 done
 
 # the comparison and the report
@@ -125,7 +147,7 @@ recalled=$(awk '/^# recalled: the grid is / { n++ }
                 /^# recalled: the grids of / { s = $0; sub(/^# recalled: the grids of [a-z]+ /, "", s)
                                                sub(/ are identical.*/, "", s); n += split(s, x, ",") }
                 END { print n + 0 }' "$out/raw.csv")
-awk -f scripts/reproduce.awk -v out="$out" -v values=sessions/paper-values.csv \
+awk -f scripts/reproduce.awk -v out="$out" -v values="$PAPER_VALUES" \
     -v run="$out/run.txt" -v loads="$out/paper-load.txt" -v recalled="$recalled" \
     "$out/raw.csv" || exit 1
 echo "reproduce: report in $out/report.md"

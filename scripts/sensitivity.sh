@@ -16,7 +16,7 @@
 #      (calibration target (b));
 #   2. bag_kappa (and bag_front_kappa, the same design) is set again to the value of
 #      KAPPAS that brings case A's P{F|(0,0)} closest to 0.053 (target (b));
-#   3. the 15 grids of Table 17 are run; Q and its ratio to the paper (sessions/paper-values.csv)
+#   3. the 15 grids of Table 17 are run; Q and its ratio to the paper (sessions/paper/values.csv)
 #      go to DIR/sensitivity.csv, and a summary to DIR/sensitivity.md.
 # Variant 'shipped' is the shipped models as they are (no calibration run), Table 17 of
 # 'make reproduce'. A variant whose settings include bag_kappa keeps that kappa (no step 2).
@@ -126,7 +126,7 @@ variants | while IFS='|' read -r name sets src; do
     done
   done
   "$UASRISK" -c "$cmds" 2>>"$out/err.txt" |
-    awk -F, -v name="$name" -v ft="$ft" -v kp="$kp" -v pv=sessions/paper-values.csv '
+    awk -F, -v name="$name" -v ft="$ft" -v kp="$kp" -v pv=sessions/paper/values.csv '
       BEGIN { FS = ","; while ((getline l < pv) > 0) { split(l, f, ",")
                 if (f[1] == "Table 17" && f[2] == "q") paper[f[3] "," f[4]] = f[6] } }
       NF >= 15 && $1 == "0" { pc = $15; next }

@@ -1,6 +1,9 @@
 # lib.sh: tiny assertion helpers for shell tests; the closing lines match cmocka's, so the
 # test runner counts them the same way.  Use: . tests/lib.sh; check NAME CONDITION...; finish
-T_PASS=0; T_FAIL=0; T_FAILED=""
+# A check that cannot run on this machine (a tool that is not installed) is declared with
+# skip NAME REASON: it is counted and listed as skipped, never silently left out. Data of the
+# repository (sessions/paper) is never a reason to skip: check that it is there instead.
+T_PASS=0; T_FAIL=0; T_FAILED=""; T_SKIP=0; T_SKIPPED=""
 NL='
 '
 TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
@@ -10,6 +13,11 @@ check() {
   name=$1; shift
   if "$@"; then T_PASS=$((T_PASS + 1)); echo "[       OK ] $name"
   else T_FAIL=$((T_FAIL + 1)); T_FAILED="$T_FAILED$NL$name"; echo "[  FAILED  ] $name"; fi
+}
+
+# skip NAME REASON: the checks under NAME cannot run here (counted as one skipped test)
+skip() {
+  T_SKIP=$((T_SKIP + 1)); T_SKIPPED="$T_SKIPPED$NL$1 ($2)"; echo "[  SKIPPED ] $1 ($2)"
 }
 
 # run uasrisk, keeping stdout, stderr and status in $TMP/out, $TMP/err, $RC
@@ -24,6 +32,10 @@ has() { grep -q -- "$2" "$1"; }
 finish() {
   echo "[==========] $((T_PASS + T_FAIL)) test(s) run."
   echo "[  PASSED  ] $T_PASS test(s)."
+  if [ "$T_SKIP" -gt 0 ]; then
+    echo "[  SKIPPED ] $T_SKIP test(s), listed below:"
+    echo "$T_SKIPPED" | sed -n 's/^\(..*\)/[  SKIPPED ] \1/p'
+  fi
   if [ "$T_FAIL" -gt 0 ]; then
     echo "[  FAILED  ] $T_FAIL test(s), listed below:"
     echo "$T_FAILED" | sed -n 's/^\(..*\)/[  FAILED  ] \1/p'

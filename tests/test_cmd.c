@@ -110,6 +110,99 @@ static void cases(void** state) {
   assert_true(f->c.st.descent.wind == 0);
 }
 
+/* set descent paper: derived speed and angle are the paper's Table 2 as printed at the live wind
+   (case C's column for C, case B's for A, A1, A2, B); show says so; only the printed winds are
+   accepted, with one error naming the wind and the accepted ones; set values still win; descent
+   and parametric stay the model (with a note); the default is the model */
+static void descent_paper(void** state) {
+  fixture* f = *state;
+  static const double w[6] = {0, 2, 4, 6, 8, 10};
+  static const double b[6][2] = {{7.5, 90.0}, {7.8, 75.1}, {8.5, 62.0}, {9.6, 51.5},
+                                 {11.0, 43.3}, {12.5, 37.0}};
+  static const double cc[6][2] = {{40.6, 90.0}, {40.6, 89.0}, {40.6, 88.0}, {40.5, 86.9},
+                                  {40.5, 85.8}, {40.4, 84.7}};
+  static const char* const cases[] = {"A", "B", "C", "A1", "A2"};
+  double sp, an;
+  assert_int_equal(f->c.st.descent_src, uraDESC_MODEL);
+  assert_int_equal(ura_impact_conditions(&f->c, &sp, &an), 0);
+  assert_true(fabs(sp - 7.48) < 0.01 && sp != 7.5);
+  const char* out = run(f, "show speed", 0);
+  assert_non_null(strstr(out, "(derived: descent model at the live wind)"));
+
+  run(f, "set descent paper", 0);
+  assert_int_equal(f->c.st.descent_src, uraDESC_PAPER);
+  for (int k = 0; k < 5; k++) {
+    char line[64];
+    snprintf(line, sizeof line, "case %s", cases[k]);
+    run(f, line, 0);
+    assert_int_equal(f->c.st.descent_src, uraDESC_PAPER);
+    for (int i = 0; i < 6; i++) {
+      const double* want = !strcmp(cases[k], "C") ? cc[i] : b[i];
+      f->c.st.descent.wind = w[i];
+      assert_int_equal(ura_impact_conditions(&f->c, &sp, &an), 0);
+      assert_true(sp == want[0] && an == want[1]);
+    }
+  }
+  out = run(f, "case C; set wind 10; show speed", 0);
+  assert_non_null(strstr(out, "speed            40.4 m/s  (derived: the paper's Table 2, case C's "
+                              "column, at the live wind"));
+  out = run(f, "case A1; show angle", 0);
+  assert_non_null(strstr(out, "angle            37 deg  (derived: the paper's Table 2, case B's "
+                              "column"));
+
+  /* an unprinted wind: refused where the speed is needed, one line */
+  run(f, "set wind 3", 0);
+  run(f, "show speed", -1);
+  assert_non_null(strstr(f->c.err, "wind 3 m/s is not printed in the paper's Table 2; accepted: "
+                                   "wind 0, 2, 4, 6, 8 or 10 m/s"));
+  assert_null(strchr(f->c.err, '\n'));
+  run(f, "grid", -1);
+  assert_non_null(strstr(f->c.err, "wind 3 m/s is not printed"));
+  run(f, "sweep wind 0,3", -1);
+  assert_non_null(strstr(f->c.err, "sweep wind: descent paper: wind 3 m/s is not printed"));
+  assert_null(f->c.last.g);
+  /* set speed and angle need nothing derived */
+  run(f, "set speed 9; set angle 60", 0);
+  assert_int_equal(ura_impact_conditions(&f->c, &sp, &an), 0);
+  assert_true(sp == 9 && an == 60);
+  run(f, "set speed auto; set angle auto; set wind 4", 0);
+
+  /* descent and parametric: the model, saying so */
+  out = run(f, "set format csv; case B; set winds 10; descent", 0);
+  assert_non_null(strstr(out, "# the descent model (eq. 2.2); impacts and grids take the paper's "
+                              "Table 2 instead"));
+  assert_non_null(strstr(out, "B,10,12.488,36.80\n"));
+  out = run(f, "parametric", 0);
+  assert_non_null(strstr(out, "B,10,12.488,36.80,"));
+
+  run(f, "set descent nosuch", -1);
+  assert_non_null(strstr(f->c.err, "set descent: 'nosuch' is not accepted; accepted: model or paper"));
+  assert_int_equal(f->c.st.descent_src, uraDESC_PAPER);
+  run(f, "reset", 0);
+  assert_int_equal(f->c.st.descent_src, uraDESC_MODEL);
+}
+
+/* set tau: rmax (default) or top, carried into the impact conditions; 'case' keeps it, reset
+   restores rmax; a refused value changes nothing */
+static void tau_setting(void** state) {
+  fixture* f = *state;
+  urImpactCond cond;
+  assert_int_equal(f->c.st.tau, urTAU_RMAX);
+  assert_int_equal(ura_impact_cond(&f->c, &cond), 0);
+  assert_int_equal(cond.tau, urTAU_RMAX);
+  const char* out = run(f, "set tau top; show tau", 0);
+  assert_non_null(strstr(out, "tau              top\n"));
+  assert_int_equal(ura_impact_cond(&f->c, &cond), 0);
+  assert_int_equal(cond.tau, urTAU_TOP);
+  run(f, "case C", 0);
+  assert_int_equal(f->c.st.tau, urTAU_TOP);
+  run(f, "set tau later", -1);
+  assert_non_null(strstr(f->c.err, "set tau: 'later' is not accepted; accepted: rmax or top"));
+  assert_int_equal(f->c.st.tau, urTAU_TOP);
+  run(f, "reset", 0);
+  assert_int_equal(f->c.st.tau, urTAU_RMAX);
+}
+
 /* CSV: exactly one header line with the contract's column names, one row per wind */
 static void csv_headers(void** state) {
   fixture* f = *state;
@@ -221,6 +314,8 @@ int main(void) {
     cmocka_unit_test_setup_teardown(set_and_show, setup, teardown),
     cmocka_unit_test_setup_teardown(bad_values_leave_state, setup, teardown),
     cmocka_unit_test_setup_teardown(cases, setup, teardown),
+    cmocka_unit_test_setup_teardown(descent_paper, setup, teardown),
+    cmocka_unit_test_setup_teardown(tau_setting, setup, teardown),
     cmocka_unit_test_setup_teardown(csv_headers, setup, teardown),
     cmocka_unit_test_setup_teardown(table_format, setup, teardown),
     cmocka_unit_test_setup_teardown(line_syntax, setup, teardown),

@@ -1,7 +1,8 @@
 # test_extents.sh: the grid extents are derived quantities that can also be set (along_min,
 # along_max, cross_max): show says derived or set, a set extent bounds the lattice (rounded
 # outwards), the derived lattice holds every cell where contact is possible, the cells inside a
-# set lattice equal those of the derived grid, and bad extents get one clear error line
+# set lattice equal those of the derived grid, and bad extents get one clear error line; with
+# 'set tau top' the derived lattice moves downstream by R_max/tan(psi)
 . tests/lib.sh
 
 # derived: case C at zero wind reaches about 0.7 m each way (drone R_max 0.65 m about the head)
@@ -12,8 +13,27 @@ check derived_values awk '$1 == "along_min" { a = $2 } $1 == "along_max" { b = $
   END { exit !(a < -0.5 && a > -1.2 && b > 0.5 && b < 1.2 && x > 0.5 && x < 1.5 && a == -b) }' "$TMP/out"
 
 # under 10 m/s wind the lattice reaches upstream (the paper's 10 m/s grids reach -1.6 m)
-run -c 'case B; set wind 10; show along_min'
+run -c 'case B; set wind 10; show along_min; show along_max'
 check wind_upstream awk '$1 == "along_min" { exit !($2 <= -1.6) } END { }' "$TMP/out"
+# and ends one cell past its last contact row, which lies upstream of Delta_par = 0 there
+check wind_downstream_end awk '$1 == "along_max" { v = $2; f = 1 } END { exit !(f && v < -0.05 && v > -0.5) }' "$TMP/out"
+
+# tau top (Delta at head-top level, R_max/tan(psi) further along the course): the derived
+# lattice moves downstream by that much (within a cell each end); at zero wind it stays
+run -c 'case B; set wind 10; set step 0.05; show along_min; show along_max; set tau top;
+  show along_min; show along_max; set wind 0; show along_min; set tau rmax; show along_min'
+check tau_status [ "$RC" -eq 0 ]
+check tau_top_moves awk '$1 == "along_min" { a[++i] = $2 } $1 == "along_max" { b[++j] = $2 }
+  END { s = 0.65 / (sin(37 * atan2(1, 1) / 45) / cos(37 * atan2(1, 1) / 45))
+        d1 = a[2] - a[1] - s; d2 = b[2] - b[1] - s
+        exit !(i == 4 && j == 2 && d1 * d1 < 0.0064 && d2 * d2 < 0.0064 && a[3] == a[4]) }' "$TMP/out"
+# a shallow descent (psi 5 deg, shift 7.4 m): the region scanned for the extents moves with it
+run -c 'case B; set angle 5; set speed 12; show along_min; show along_max; set tau top;
+  show along_min; show along_max'
+check tau_shallow awk '$1 == "along_min" { a[++i] = $2 } $1 == "along_max" { b[++j] = $2 }
+  END { s = 0.65 / (sin(5 * atan2(1, 1) / 45) / cos(5 * atan2(1, 1) / 45))
+        d1 = a[2] - a[1] - s; d2 = b[2] - b[1] - s
+        exit !(i == 2 && j == 2 && d1 * d1 < 0.01 && d2 * d2 < 0.01 && b[2] > 3) }' "$TMP/out"
 
 # set: the lattice is bounded (along_max 0.12 rounds out to 0.15) and show says set
 run -c 'set format csv; case C; set step 0.1; set along_min -0.1; set along_max 0.12; set cross_max 0.1; show along_max; grid; grid cells'

@@ -1,6 +1,7 @@
 /* test_impact.c: single impacts on the built-in models: stance, symmetry, no-contact offsets,
- * time-step convergence, the zero-wind centre values of the paper's Tables 11-13, and the
- * record of the drone's contacts (urImpactWork.crec) */
+ * time-step convergence, the zero-wind centre values of the paper's Tables 11-13, the record of
+ * the drone's contacts (urImpactWork.crec), and the moment tau at which Delta is taken
+ * (urImpactCond.tau: R_max above the head top, or at head-top level) */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -186,12 +187,73 @@ static void contacts(void** state) {
   check_contacts(fresh("A"), 0, 0, 1);
 }
 
+/* tau top: Delta is taken R_max / tan(psi) further along the course than tau rmax; the run
+   starts from the same point of the path, so a tau-top offset d is the tau-rmax offset
+   d - shift: the same start (pose, velocity), the same impact bit for bit, the same may-contact
+   answer; at psi = 90 deg the shift is exactly 0 */
+static void tau_top_shift(void** state) {
+  uraCtx* c = fresh("B");
+  const urImpactSetup* s = ura_setup(c);
+  assert_non_null(s);
+  urImpactCond rm, top;
+  assert_int_equal(ura_impact_cond(c, &rm), 0);
+  assert_int_equal(rm.tau, urTAU_RMAX);
+  rm.speed = 12.5;
+  rm.angle = 37.0;
+  top = rm;
+  top.tau = urTAU_TOP;
+  double shift = ur_impact_tau_shift(s, &top);
+  assert_true(ur_impact_tau_shift(s, &rm) == 0);
+  assert_true(fabs(shift - s->rmax / tan(37.0 * M_PI / 180)) < 1e-12);
+  assert_true(shift > 0.8 && shift < 0.95);
+
+  /* the start of a tau-top offset is the tau-rmax start of that offset less the shift */
+  double dt = 0.3, dr = dt - shift;
+  double p1[3], q1[4], v1[3], p2[3], q2[4], v2[3];
+  ur_impact_start(s, &top, dt, 0.1, p1, q1, v1);
+  ur_impact_start(s, &rm, dr, 0.1, p2, q2, v2);
+  assert_memory_equal(p1, p2, sizeof p1);
+  assert_memory_equal(q1, q2, sizeof q1);
+  assert_memory_equal(v1, v2, sizeof v1);
+  ur_impact_start(s, &rm, dt, 0.1, p2, q2, v2);
+  assert_true(fabs((p1[0] - p2[0]) * (p1[0] - p2[0]) + (p1[1] - p2[1]) * (p1[1] - p2[1]) -
+                   shift * shift) < 1e-12);
+  assert_true(p1[2] == p2[2] && p2[2] == s->head_top + s->rmax);
+  assert_int_equal(ur_impact_may_contact(s, &top, dt, 0.1), ur_impact_may_contact(s, &rm, dr, 0.1));
+  assert_true(ur_impact_may_contact(s, &top, 0, 0));
+  assert_false(ur_impact_may_contact(s, &top, -2.0, 0));
+
+  /* the same impact */
+  urImpactWork w;
+  urImpactResult a, b;
+  assert_int_equal(ur_impact_work_init(s, &w), 0);
+  assert_int_equal(ur_impact_run(s, &w, &top, &c->st.injury, dt, 0.1, &a), 0);
+  assert_int_equal(ur_impact_run(s, &w, &rm, &c->st.injury, dr, 0.1, &b), 0);
+  assert_true(a.contact);
+  assert_memory_equal(&a.p, &b.p, sizeof a.p);
+  assert_memory_equal(&a.inj.hic15.hic, &b.inj.hic15.hic, sizeof a.inj.hic15.hic);
+  assert_memory_equal(&a.t_first, &b.t_first, sizeof a.t_first);
+
+  /* vertical descent: both moments are one, bit for bit */
+  rm.angle = top.angle = 90;
+  assert_true(ur_impact_tau_shift(s, &top) == 0);
+  ur_impact_start(s, &top, 0.2, -0.1, p1, q1, v1);
+  ur_impact_start(s, &rm, 0.2, -0.1, p2, q2, v2);
+  assert_memory_equal(p1, p2, sizeof p1);
+  assert_memory_equal(v1, v2, sizeof v1);
+  assert_int_equal(ur_impact_run(s, &w, &top, &c->st.injury, 0.2, -0.1, &a), 0);
+  assert_int_equal(ur_impact_run(s, &w, &rm, &c->st.injury, 0.2, -0.1, &b), 0);
+  assert_memory_equal(&a.p, &b.p, sizeof a.p);
+  assert_memory_equal(&a.inj.hic15.hic, &b.inj.hic15.hic, sizeof a.inj.hic15.hic);
+  ur_impact_work_free(&w);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(stance),          cmocka_unit_test(centre_values),
     cmocka_unit_test(no_contact),      cmocka_unit_test(mirror_symmetry),
     cmocka_unit_test(dt_convergence),  cmocka_unit_test(window_convergence),
-    cmocka_unit_test(contacts),
+    cmocka_unit_test(contacts),        cmocka_unit_test(tau_top_shift),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

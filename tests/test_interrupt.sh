@@ -86,7 +86,7 @@ check fifo_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
 
 # ---- at the prompt, on a terminal (tmux) ----
 if ! command -v tmux >/dev/null 2>&1; then
-  echo "note: tmux is not installed; the terminal checks are skipped"
+  skip terminal_checks "tmux is not installed"
   finish
 fi
 SOCK="uasrisk-int-$$"

@@ -5,17 +5,10 @@
 
 # uasrisk by absolute path, so that PATH can be changed
 U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
-T6=../shared/paper/grids/table06_caseC_wind0.csv
-GRIDS=1; [ -r "$T6" ] || GRIDS=0
-if [ "$GRIDS" -eq 0 ]; then
-  # without the paper's files: a small table of our own (Q 0.0143)
-  T6=$TMP/small.csv
-  printf '# case C; wind 0 m/s\nalong,0.00,0.05,0.10\n0.10,0,2,0\n0.05,50,100,10\n' >"$T6"
-  printf '0.00,100,95,0\n-0.05,0,4,0\n' >>"$T6"
-  Q=0.0143
-else
-  Q=0.8469
-fi
+# the paper's Table 6 (sessions/paper/grids, part of the repository: its absence is a failure)
+T6=sessions/paper/grids/table06_caseC_wind0.csv
+Q=0.8469
+check paper_grid_present [ -r "$T6" ]
 png_magic() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; }
 size() { wc -c <"$1" | tr -d ' '; }
 # the command failed with status 1 and one line of error holding $1
@@ -61,7 +54,7 @@ if command -v gnuplot >/dev/null 2>&1; then
   run -c "set terminal png; set output /nonexistent/dir/x.png; plot pof"
   check bad_output fails_with "set output ./nonexistent/dir/x.png.: cannot open file"
 else
-  echo "note: gnuplot is not installed; the real-gnuplot checks are skipped"
+  skip real_gnuplot_checks "gnuplot is not installed"
 fi
 
 # refused before gnuplot starts
@@ -117,15 +110,11 @@ check fake_output [ "$(sed -n 2p "$TMP/script")" = "set output '$TMP/f.png'" ]
 check fake_unset_output [ "$(tail -1 "$TMP/script")" = "unset output" ]
 check fake_no_persist_for_files [ "$(cat "$TMP/args")" = "/dev/stdin" ]
 rows=$(sed -n '/^\$D << EOD$/,/^EOD$/p' "$TMP/script" | grep -c '^-\{0,1\}[0-9]')
-if [ "$GRIDS" -eq 1 ]; then
-  check fake_cells [ "$rows" -eq $((29 * 31)) ]
-  # the cell (0.65, +-0.25) is 12.7 % on both sides; (0.70, 0) is 0
-  check fake_cell_right grep -q '^0.25 0.65 12.7$' "$TMP/script"
-  check fake_cell_left grep -q '^-0.25 0.65 12.7$' "$TMP/script"
-  check fake_cell_zero grep -q '^0 0.7 0$' "$TMP/script"
-else
-  check fake_cells [ "$rows" -eq 20 ]
-fi
+check fake_cells [ "$rows" -eq $((29 * 31)) ]
+# the cell (0.65, +-0.25) is 12.7 % on both sides; (0.70, 0) is 0
+check fake_cell_right grep -q '^0.25 0.65 12.7$' "$TMP/script"
+check fake_cell_left grep -q '^-0.25 0.65 12.7$' "$TMP/script"
+check fake_cell_zero grep -q '^0 0.7 0$' "$TMP/script"
 check fake_image has "$TMP/script" '^plot \$D using 1:2:3 with image'
 check fake_palette has "$TMP/script" "^set cbtics (0, 5, 30, 90, 100)"
 

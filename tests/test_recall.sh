@@ -2,7 +2,8 @@
 # with everything a cell depends on unchanged reuses the cells of the earlier one (the same bytes
 # as a fresh computation, a note says so, seconds about 0); any change that alters a cell
 # computes afresh, as do 'set recall off', new model parts and grids that failed; sweep and
-# compare say which grids they recalled; the setting is shown, saved and kept by 'case'.
+# compare say which grids they recalled; the setting is shown, saved and kept by 'case'. The
+# source of speed and angle (set descent) and the moment tau (set tau) are among the changes.
 . tests/lib.sh
 
 NOTE='^# recalled: the cells of an identical grid computed earlier in this session'
@@ -46,11 +47,15 @@ run -c 'set format csv; set step 0.2; case A; grid;
   set pitch 5; grid; set pitch 0;
   set speed 8; grid; set speed auto;
   set wind 2; grid; set wind 0;
+  set descent paper; grid; set descent model;
+  set tau top; grid; set tau rmax;
   grid; set threads 1; grid'
 check changes_status [ "$RC" -eq 0 ]
-check changes_not_recalled [ "$(recalls)" = 0000000011 ]
-check changes_same_q cond '[ "$(rows | sed -n 1p)" = "$(rows | sed -n 9p)" ] &&
-  [ "$(rows | sed -n 9p)" = "$(rows | sed -n 10p)" ]'
+check changes_not_recalled [ "$(recalls)" = 000000000011 ]
+check changes_same_q cond '[ "$(rows | sed -n 1p)" = "$(rows | sed -n 11p)" ] &&
+  [ "$(rows | sed -n 11p)" = "$(rows | sed -n 12p)" ]'
+# at zero wind tau top is the same grid (but computed, not recalled: tau is part of the key)
+check changes_tau_zero_wind_same [ "$(rows | sed -n 1p)" = "$(rows | sed -n 10p)" ]
 
 # recall off computes (the same cells) and keeps nothing; on again, the earlier grid is recalled
 run -c 'set format csv; set step 0.2; case A; grid; set recall off; grid; show recall; grid cells;

@@ -1,7 +1,8 @@
 # test_sweep.sh: sweeps kept in the live context: several accumulate (one curve per case, kind
 # and conditions), rerunning one replaces it, a what-if is a curve of its own, sweep show and
 # export sweep list them, plot sweep draws them (the script gnuplot gets, and a real PNG), sweep
-# clear forgets them; the refusals. Coarse 0.3 m grids keep it short.
+# clear forgets them; the refusals; a wind sweep takes speed and angle per wind from what 'set
+# descent' says (the paper's Table 2 or the descent model). Coarse 0.3 m grids keep it short.
 . tests/lib.sh
 
 U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
@@ -93,8 +94,27 @@ if [ -n "$REAL" ]; then
   check png_wind cond 'png_magic "$TMP/wind.png" && [ "$(wc -c <"$TMP/wind.png")" -gt 5000 ]'
   [ -n "$KEEP_PNG" ] && cp "$TMP/all.png" "$KEEP_PNG"
 else
-  echo "note: gnuplot is not installed; the PNG checks are skipped"
+  skip png_checks "gnuplot is not installed"
 fi
+
+# set descent paper: each wind of a sweep at the paper's Table 2 (case B's column for A), a note
+# says so, 'changes' names it (a curve of its own beside the model's); tau top likewise; an
+# unprinted wind is refused before any grid runs
+run -c 'set format csv; set step 0.3; case A; sweep wind 0,4; set descent paper; sweep wind 0,4,10;
+  set tau top; sweep wind 10; sweep show'
+check paper_status [ "$RC" -eq 0 ]
+check paper_rows cond 'has "$TMP/out" "^A,0,0,7.500,90.00," && has "$TMP/out" "^A,4,0,8.500,62.00," &&
+  has "$TMP/out" "^A,10,0,12.500,37.00,"'
+check model_rows cond 'has "$TMP/out" "^A,0,0,7.480,90.00," && has "$TMP/out" "^A,4,0,8.482,61.86,"'
+check paper_note has "$TMP/out" "^# speed and angle: the paper's Table 2, case B's column, at each wind ('set descent paper'), not the descent model$"
+check tau_note has "$TMP/out" '^# tau top: Delta is taken when the drone centre reaches head-top level, 0\.8[0-9]* m further along'
+check paper_changes cond 'has "$TMP/out" "^A,wind,4,0,8.500,62.00,0.3,[0-9.]*,descent=paper$" &&
+  has "$TMP/out" "^A,wind,4,0,8.482,61.86,0.3,[0-9.]*,none$" &&
+  has "$TMP/out" "^A,wind,10,0,12.500,37.00,0.3,[0-9.]*,descent=paper tau=top$"'
+run -c 'set step 0.3; set descent paper; case C; sweep wind 0,5,10'
+check paper_refused cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "sweep wind: descent paper: wind 5 m/s is not printed in the paper.s Table 2; accepted: wind 0, 2, 4, 6, 8 or 10 m/s" &&
+  [ ! -s "$TMP/out" ]'
 
 # refusals: one line each, status 1
 fails_with() { [ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "$1"; }

@@ -4,7 +4,7 @@
 . tests/lib.sh
 
 if ! command -v gnuplot >/dev/null 2>&1; then
-  echo "note: gnuplot is not installed; the tour (which plots as text) is skipped"
+  skip tour "gnuplot is not installed; the tour plots as text"
   finish
 fi
 run sessions/tour.ses

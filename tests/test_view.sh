@@ -3,8 +3,8 @@
 # window and resizing, NO_COLOR, scrolling; and grid show in colour on a terminal
 . tests/lib.sh
 
-T6=../shared/paper/grids/table06_caseC_wind0.csv
-T8=../shared/paper/grids/table08_caseA_wind10.csv
+T6=sessions/paper/grids/table06_caseC_wind0.csv
+T8=sessions/paper/grids/table08_caseA_wind10.csv
 
 # without a terminal or a grid: one clear line
 run -c 'view'
@@ -16,13 +16,11 @@ check needs_terminal cond '[ "$RC" -eq 1 ] &&
   has "$TMP/err" "view: needs a terminal; use .grid show."'
 
 if ! command -v tmux >/dev/null 2>&1; then
-  echo "note: tmux is not installed; the terminal checks of the viewer are skipped"
+  skip viewer_terminal_checks "tmux is not installed"
   finish
 fi
-if [ ! -r "$T6" ] || [ ! -r "$T8" ]; then
-  echo "note: the paper's grids (../shared/paper/grids) are absent; the viewer checks are skipped"
-  finish
-fi
+# the paper's grids are part of the repository: their absence is a failure, not a skip
+check paper_grids_present cond '[ -r "$T6" ] && [ -r "$T8" ]'
 
 . tests/lib_tmux.sh
 

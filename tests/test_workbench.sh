@@ -5,7 +5,7 @@
 . tests/lib.sh
 
 if ! command -v tmux >/dev/null 2>&1; then
-  echo "note: tmux is not installed; the workbench checks are skipped"
+  skip workbench_checks "tmux is not installed"
   finish
 fi
 . tests/lib_tmux.sh

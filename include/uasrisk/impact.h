@@ -1,10 +1,20 @@
 /* impact.h: one drone-on-person impact at a horizontal offset, as the paper's section 4.2.
  *
- * At the moment tau the drone's centre is R_max above the top of the head (R_max: largest
- * distance from the drone's centre of mass to its surface) and Delta = (dpar, dperp) is the
- * horizontal offset of the drone's centre from the head CG, dpar along the drone's course and
- * dperp across it (to the left of the course). Until its first contact the drone keeps its speed,
- * descent angle and attitude. The person stands in a stance settled once under gravity; the face
+ * Delta = (dpar, dperp) is the horizontal offset of the drone's centre from the head CG at a
+ * moment tau, dpar along the drone's course and dperp across it (to the left of the course).
+ * Which moment is urImpactCond.tau (urTau):
+ *   urTAU_RMAX (the default) the paper's text (4.2, Fig. 7): tau is the first moment the drone's
+ *              centre is R_max above the top of the head (R_max: largest distance from the
+ *              drone's centre of mass to its surface);
+ *   urTAU_TOP  tau is the moment the drone's centre reaches the level of the head top, that is
+ *              R_max / tan(psi) further along the course on the same straight path. It exists
+ *              because the paper's printed 10 m/s grids (Tables 8-10, 15, 16) behave as if their
+ *              Delta were taken there: under the first definition their footprints lie about
+ *              R_max / tan(psi) downstream of ours. At psi = 90 deg both are the same moment.
+ * Either way the run starts with the drone's centre R_max above the head top (no part of the
+ * drone below it), so the definitions differ only in where a path is labelled: a path's offset
+ * under urTAU_TOP is its offset under urTAU_RMAX plus ur_impact_tau_shift along the course.
+ * Until its first contact the drone keeps its speed, descent angle and attitude. The person stands in a stance settled once under gravity; the face
  * direction phi turns the course instead of the person (the ground is isotropic), so the stance
  * is computed only once. phi = 0: the person faces the incoming drone; phi = 90 deg: the drone
  * comes from the person's right.
@@ -53,12 +63,19 @@ typedef struct {
   char err[160];
 } urImpactSetup;
 
+/* the moment tau at which Delta is taken (see the top of this file) */
+typedef enum {
+  urTAU_RMAX = 0,                  /* the drone's centre R_max above the head top (paper 4.2) */
+  urTAU_TOP = 1                    /* the drone's centre at the level of the head top */
+} urTau;
+
 /* the conditions of an impact */
 typedef struct {
   double speed;                    /* impact speed, m/s */
   double angle;                    /* descent angle psi from the horizontal, deg */
   double face;                     /* face direction phi, deg */
   double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
+  int tau;                         /* urTau: the moment Delta is taken (0: the paper's text) */
 } urImpactCond;
 
 /* what one of the pairs through which the drone acts (urImpactSetup.cand) did during an impact */
@@ -126,7 +143,12 @@ void ur_impact_free(urImpactSetup* s);
 int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w);
 void ur_impact_work_free(urImpactWork* w);
 
-/* drone pose and velocity at tau for an offset */
+/* how far along the course Delta is taken after the drone's centre is R_max above the head
+   top: 0 for urTAU_RMAX, R_max / tan(psi) for urTAU_TOP (exactly 0 at psi >= 90 deg), m */
+double ur_impact_tau_shift(const urImpactSetup* s, const urImpactCond* c);
+
+/* drone pose and velocity at the start of a run for an offset: its centre R_max above the head
+   top, at the offset Delta - ur_impact_tau_shift along the course */
 void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar, double dperp,
                      double pos[3], double quat[4], double vel[3]);
 

@@ -25,6 +25,8 @@
 /* ---- live case state ---- */
 
 typedef enum { uraFMT_TABLE = 0, uraFMT_CSV } uraFormat;
+/* where a derived impact speed and descent angle come from (set descent) */
+typedef enum { uraDESC_MODEL = 0, uraDESC_PAPER } uraDescentSrc;
 
 typedef struct {
   char casename[8];                /* A, B, C, A1, A2 */
@@ -33,7 +35,9 @@ typedef struct {
   double winds[uraMAXLIST];        /* wind list for descent/parametric/sweeps, m/s */
   int nwinds;
   double speed, angle;             /* impact speed (m/s) and descent angle (deg) when set */
-  int speed_set, angle_set;        /* 0: derived from the descent model */
+  int speed_set, angle_set;        /* 0: derived (descent_src says from what) */
+  int descent_src;                 /* uraDescentSrc: the descent model, or the paper's Table 2 */
+  int tau;                         /* urTau: the moment at which Delta is taken */
   double face;                     /* face direction phi, deg */
   int format;                      /* uraFormat */
   urInjuryParams injury;           /* injury criteria and PoF curve settings */
@@ -64,6 +68,9 @@ typedef struct {
   urGrid* g;                       /* NULL: none yet */
   char casename[8];
   double wind, face, speed, angle; /* m/s, deg, m/s, deg */
+  int paper_speed;                 /* speed or angle came from the paper's Table 2 */
+  int tau;                         /* urTau of a computed grid (loaded: urTAU_RMAX) */
+  double tau_shift;                /* ur_impact_tau_shift of a computed grid, m */
   char source[512];                /* "computed", or the file it was loaded from */
   int recalled;                    /* the cells of an identical earlier grid (recall.c) */
   int extents_set;                 /* some extent was set: Q covers only the lattice */
@@ -178,8 +185,19 @@ int ura_injury_find(const char* name);
 int ura_injury_set(uraCtx* c, int i, const char* value);
 void ura_injury_line(uraCtx* c, int i, char* buf, size_t n, int with_unit);
 
-/* current impact speed and angle: set values, or the descent model at the live wind */
+/* current impact speed and angle: set values, or derived at the live wind from the descent
+   model or (set descent paper) the paper's Table 2 */
 int ura_impact_conditions(uraCtx* c, double* speed, double* angle);
+/* 1 if the live speed or angle is derived from the paper's Table 2 */
+int ura_paper_speed(const uraCtx* c);
+
+/* the paper's Table 2 (cmd_paper.c): speed (m/s) and descent angle (deg) of a case at a wind:
+   case C's column for C, case B's for A, A1, A2 and B; only the printed winds 0, 2, ..., 10
+   m/s. 0, or -1 with a message naming the wind and the accepted ones */
+int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed,
+                      double* angle);
+/* the column of Table 2 a case takes: "B" or "C" */
+const char* ura_paper_descent_column(const char* casename);
 
 /* load a paper case preset: A, B, C, A1, A2 (wind and face are kept) */
 int ura_case_load(uraCtx* c, const char* name);
@@ -295,6 +313,10 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
 int ura_impact_cond(uraCtx* c, urImpactCond* cond);
+/* notes for a table computed under cond: where speed and angle came from when it was the paper's
+   Table 2 (paper), and the moment tau when it is not the paper's text (shift: the tau shift, m) */
+void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,
+                    double shift);
 int ura_last_trace(uraCtx* c, uraTrace* tr);     /* histories of the last impact; -1: none */
 /* keep a finished impact (its work space holds the histories) as the last impact, with the case
    and wind it ran for */

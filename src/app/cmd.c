@@ -112,13 +112,26 @@ int ura_cmd_set(uraCtx* c, int argc, char** argv) {
    parameter alone) keeps the derived grid extents across the lines of a listing (ext[3]: 0 not
    sized yet, 1 sized, -1 not available) */
 static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
-  char val[1024];
+  char val[1024], src[160];
   const char* note = "";
   if (p->setoff && !*(const int*)((const char*)&c->st + p->setoff)) {
     double one[4] = {0, 0, 0, 0}, *v = ext ? ext : one;
     if (!strcmp(p->name, "speed") || !strcmp(p->name, "angle")) {
-      if (ura_impact_conditions(c, &v[0], &v[1])) return -1;
-      note = "  (derived: descent model at the live wind)";
+      if (ura_impact_conditions(c, &v[0], &v[1])) {
+        if (!ext) return -1;
+        /* the whole listing still prints (e.g. the paper's Table 2 at an unprinted wind) */
+        fprintf(c->out, "%-16s auto %s  (derived: not available: %s)\n", p->name, p->unit,
+                c->err);
+        c->err[0] = 0;
+        return 0;
+      }
+      if (c->st.descent_src == uraDESC_PAPER) {
+        snprintf(src, sizeof src, "  (derived: the paper's Table 2, case %s's column, at the live "
+                 "wind; set descent paper)", ura_paper_descent_column(c->st.casename));
+        note = src;
+      } else {
+        note = "  (derived: descent model at the live wind)";
+      }
       snprintf(val, sizeof val, "%.6g", v[!strcmp(p->name, "angle")]);
     } else {
       /* grid extents: the lattice the next grid would use (sizing needs the settled stance) */

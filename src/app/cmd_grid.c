@@ -91,28 +91,31 @@ static void cb_progress(void* ctx, int done, int total) {
 
 /* the lattice extents: every cell whose straight path can touch the person, found by scanning
    the region the path can reach (upstream as far as the drone travels while it descends from
-   R_max above the head to the ground), padded by one cell. A region larger than MAXCELLS is
+   R_max above the head to the ground; all of it moved downstream by the tau shift when Delta is
+   taken at head-top level, cond->tau), padded by one cell. A region larger than MAXCELLS is
    refused before it is scanned (its size in *scan); Ctrl-C stops the scan. 0 or -1. */
 static int auto_extents(const urImpactSetup* s, const urImpactCond* cond, double step,
                         double* par_min, double* par_max, double* perp_max, double* scan) {
-  double psi = cond->angle * M_PI / 180.0, reach = 2.0;
+  double psi = cond->angle * M_PI / 180.0, reach = 2.0, shift = ur_impact_tau_shift(s, cond);
   double up = psi < M_PI / 2 - 1e-9 ? (s->head_top + s->rmax) / tan(psi) : 0;
-  double flo = floor(-(up + reach) / step), fhi = ceil(reach / step), fj = ceil(reach / step);
+  double flo = floor((shift - up - reach) / step), fhi = ceil((reach + shift) / step);
+  double fj = ceil(reach / step);
   *scan = (fhi - flo + 1) * (2 * fj + 1);
   if (!(*scan <= MAXCELLS)) return -1;
   long ilo = (long)flo, ihi = (long)fhi, jmax = (long)fj;
-  long lo = 1, hi = -1, kp = 0;
+  long lo = 0, hi = 0, kp = 0;
+  int found = 0;                   /* the rows found so far are lo..hi */
   for (long i = ilo; i <= ihi && !ura_interrupted(); i++) {
     for (long j = -jmax; j <= jmax; j++) {
       if (ur_impact_may_contact(s, cond, i * step, j * step)) {
-        if (i < lo) lo = i;
-        if (i > hi) hi = i;
+        if (!found || i < lo) lo = i;
+        if (!found || i > hi) hi = i;
         if (labs(j) > kp) kp = labs(j);
+        found = 1;
       }
     }
   }
   if (ura_interrupted()) return -1;
-  if (hi < lo) lo = hi = 0;
   *par_min = (lo - 1) * step;
   *par_max = (hi + 1) * step;
   *perp_max = (kp + 1) * step;
@@ -139,8 +142,9 @@ static double seconds_since(const struct timespec* t0) {
   return (t1.tv_sec - t0->tv_sec) + 1e-9 * (t1.tv_nsec - t0->tv_nsec);
 }
 
-/* g becomes the last grid, with the live case's conditions */
-static void keep_last(uraCtx* c, urGrid* g, const urImpactCond* cond, int recalled) {
+/* g becomes the last grid, with the live case's conditions (s: the set-up it was computed on) */
+static void keep_last(uraCtx* c, urGrid* g, const urImpactCond* cond, int recalled,
+                      const urImpactSetup* s) {
   ura_last_free(c);
   c->last.g = g;
   snprintf(c->last.casename, sizeof c->last.casename, "%s", c->st.casename);
@@ -148,6 +152,9 @@ static void keep_last(uraCtx* c, urGrid* g, const urImpactCond* cond, int recall
   c->last.face = c->st.face;
   c->last.speed = cond->speed;
   c->last.angle = cond->angle;
+  c->last.paper_speed = ura_paper_speed(c);
+  c->last.tau = cond->tau;
+  c->last.tau_shift = s ? ur_impact_tau_shift(s, cond) : 0;
   snprintf(c->last.source, sizeof c->last.source, "computed");
   c->last.recalled = recalled;
   c->last.extents_set = c->st.par_min_set || c->st.par_max_set || c->st.perp_max_set;
@@ -201,7 +208,8 @@ int ura_grid_run(uraCtx* c, int quiet) {
   urGrid* old = ura_recall_find(c, &cond);
   if (old) {
     old->seconds = seconds_since(&t0);
-    keep_last(c, old, &cond, 1);
+    /* the tau shift needs R_max: the set-up of the live model (settled already, or kept) */
+    keep_last(c, old, &cond, 1, cond.tau == urTAU_RMAX ? NULL : ura_setup(c));
     return 0;
   }
   const urImpactSetup* s = ura_setup(c);
@@ -274,7 +282,7 @@ int ura_grid_run(uraCtx* c, int quiet) {
   ur_grid_summarise(g);
 
   /* keep it as the last grid, and a complete one for recall */
-  keep_last(c, g, &cond, 0);
+  keep_last(c, g, &cond, 0, s);
   ura_recall_keep(c, &cond, g);
   if (g->npending) {
     return ura_fail(c, "grid: interrupted (Ctrl-C); %d of %d cells finished, kept as a partial "
@@ -308,6 +316,10 @@ static int grid_summary(uraCtx* c) {
                    "lists them, 'impact' names the law)", g->nextrap);
   }
   if (c->last.recalled) ura_table_note(t, "%s", RECALLED);
+  if (!strcmp(c->last.source, "computed")) {
+    ura_cond_notes(t, c->last.casename, c->last.wind, c->last.paper_speed, c->last.tau,
+                   c->last.tau_shift);
+  }
   ura_table_cell(t, "%s", c->last.casename);
   ura_table_cell(t, "%g", c->last.wind);
   ura_table_cell(t, "%.3f", c->last.speed);
@@ -341,9 +353,10 @@ static int grid_cells(uraCtx* c) {
   urGrid* g = c->last.g;
   if (!g) return ura_fail(c, "grid cells: no grid yet; run 'grid' or 'grid load FILE'");
   uraTable* t = ura_table_new(8, cols);
-  ura_table_note(t, "grid of case %s, wind %g m/s, face %g deg (%s); status: %s", 
+  ura_table_note(t, "grid of case %s, wind %g m/s, face %g deg (%s); status: %s%s",
                  c->last.casename, c->last.wind, c->last.face, c->last.source,
-                 g->complete ? "complete" : "PARTIAL");
+                 g->complete ? "complete" : "PARTIAL",
+                 c->last.tau == urTAU_TOP ? "; tau top (Delta at head-top level)" : "");
   if (g->nextrap) {
     char list[uraERRLEN] = "";
     size_t len = 0;

@@ -8,12 +8,28 @@
 #include "app.h"
 
 int ura_impact_cond(uraCtx* c, urImpactCond* cond) {
+  memset(cond, 0, sizeof *cond);
   if (ura_impact_conditions(c, &cond->speed, &cond->angle)) return -1;
   cond->face = c->st.face;
   cond->pitch = c->st.pitch;
   cond->roll = c->st.roll;
   cond->yaw = c->st.yaw;
+  cond->tau = c->st.tau;
   return 0;
+}
+
+void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,
+                    double shift) {
+  if (paper) {
+    ura_table_note(t, "speed and angle: the paper's Table 2, case %s's column, at wind %g m/s "
+                   "('set descent paper'), not the descent model",
+                   ura_paper_descent_column(casename), wind);
+  }
+  if (tau == urTAU_TOP) {
+    ura_table_note(t, "tau top: Delta is taken when the drone centre reaches head-top level, "
+                   "%.3f m further along the course than the paper's text (R_max above the "
+                   "head top; 'set tau rmax')", shift);
+  }
 }
 
 /* the columns of impact rows, shared with grid cells */
@@ -64,6 +80,8 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
     ura_table_note(t, "extrapolated: %d law(s) used beyond their data; furthest: %s", r.nextrap,
                    r.extrap);
   }
+  ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
+                 ur_impact_tau_shift(s, &cond));
   ura_table_cell(t, "%g", dpar);
   ura_table_cell(t, "%g", dperp);
   ura_table_cell(t, "%d", r.contact);
@@ -270,6 +288,7 @@ int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr) {
     cond.angle = c->last.angle;
     cond.face = c->last.face;
   }
+  if (c->last.g && !strcmp(c->last.source, "computed")) cond.tau = c->last.tau;
   if (!c->have_work) {
     if (ur_impact_work_init(s, &c->work)) return ura_fail(c, "out of memory");
     c->have_work = 1;

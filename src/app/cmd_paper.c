@@ -1,13 +1,45 @@
-/* cmd_paper.c: the parts of the paper that need no impact simulation: descent and parametric */
+/* cmd_paper.c: the parts of the paper that need no impact simulation: descent and parametric,
+ * and the paper's Table 2 for 'set descent paper' */
 #include <stdio.h>
+#include <string.h>
 
 #include "app.h"
+
+/* the paper's Table 2 as printed: wind (m/s), then impact speed |v| (m/s) and descent angle psi
+   (deg) of case B (parachute) and case C (no parachute) */
+static const double table2[6][5] = {
+  {0, 7.5, 90.0, 40.6, 90.0},  {2, 7.8, 75.1, 40.6, 89.0},  {4, 8.5, 62.0, 40.6, 88.0},
+  {6, 9.6, 51.5, 40.5, 86.9},  {8, 11.0, 43.3, 40.5, 85.8}, {10, 12.5, 37.0, 40.4, 84.7},
+};
+
+const char* ura_paper_descent_column(const char* casename) {
+  return !strcmp(casename, "C") ? "C" : "B";
+}
+
+int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed,
+                      double* angle) {
+  int col = !strcmp(ura_paper_descent_column(casename), "C") ? 3 : 1;
+  for (int i = 0; i < 6; i++) {
+    if (table2[i][0] == wind) {
+      *speed = table2[i][col];
+      *angle = table2[i][col + 1];
+      return 0;
+    }
+  }
+  return ura_fail(c, "descent paper: wind %g m/s is not printed in the paper's Table 2; accepted: "
+                  "wind 0, 2, 4, 6, 8 or 10 m/s, or 'set descent model' (or set speed and "
+                  "angle)", wind);
+}
 
 int ura_cmd_descent(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"case", "wind", "speed", "angle"};
   uraTable* t = ura_table_new(4, cols);
   urDescentParams p = c->st.descent;
   char err[256];
+  if (c->st.descent_src == uraDESC_PAPER) {
+    ura_table_note(t, "the descent model (eq. 2.2); impacts and grids take the paper's Table 2 "
+                   "instead ('set descent paper')");
+  }
 
   /* one descent per wind of the list */
   for (int i = 0; i < c->st.nwinds; i++) {
@@ -33,6 +65,11 @@ int ura_cmd_parametric(uraCtx* c, int argc, char** argv) {
   const urParametricParams* pp = &c->st.para;
   urDescentParams p = c->st.descent;
   char err[256];
+
+  if (c->st.descent_src == uraDESC_PAPER) {
+    ura_table_note(t, "speed and angle from the descent model (eq. 2.2); impacts and grids take "
+                   "the paper's Table 2 instead ('set descent paper')");
+  }
 
   /* the choices the paper leaves open, stated with the numbers */
   ura_table_note(t, "gliding area D.1 with W=%g m across, L=%g m along, H_P=%g m, 2R_P=%g m, "

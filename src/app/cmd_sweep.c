@@ -8,7 +8,8 @@
 #include "app.h"
 
 /* the settings a grid depends on that differ from the case preset, as "name=value ..." (the
-   wind or face swept, the step and the threads excepted), or "none" */
+   wind or face swept, the step and the threads excepted; descent=paper and tau=top, which 'case'
+   keeps, included), or "none" */
 static void changes(uraCtx* c, char* buf, size_t n) {
   static const char* const names[] = {"speed", "angle", "pitch", "roll", "yaw", "altitude",
                                       "mass", "area_drone", "cd_drone", "area_chute",
@@ -30,6 +31,14 @@ static void changes(uraCtx* c, char* buf, size_t n) {
     if (!set || *(const double*)a == *(const double*)b) continue;
     ura_param_format(c, p, val, sizeof val);
     k += (size_t)snprintf(buf + k, n - k, "%s%s=%s", k ? " " : "", p->name, val);
+  }
+
+  /* where speed and angle come from, and the moment tau */
+  if (c->st.descent_src != ref.descent_src && k < n) {
+    k += (size_t)snprintf(buf + k, n - k, "%sdescent=paper", k ? " " : "");
+  }
+  if (c->st.tau != ref.tau && k < n) {
+    k += (size_t)snprintf(buf + k, n - k, "%stau=top", k ? " " : "");
   }
 
   /* injury settings, and model parameters the user set */
@@ -139,6 +148,17 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "sweep %s: '%s' is not accepted; accepted: comma-separated numbers in "
                     "[%g, %g] %s", argv[1], argv[2], p->min, p->max, p->unit);
   }
+  /* with the paper's Table 2, every wind must be one it prints (refused before any grid runs) */
+  if (ura_paper_speed(c)) {
+    double ws = c->st.descent.wind, sp, an;
+    for (int i = 0; i < (is_wind ? n : 1); i++) {
+      if (ura_paper_descent(c, c->st.casename, is_wind ? v[i] : ws, &sp, &an)) {
+        char why[uraERRLEN];
+        snprintf(why, sizeof why, "%s", c->err);
+        return ura_fail(c, "sweep %s: %.900s", argv[1], why);
+      }
+    }
+  }
 
   /* the sweep to keep: case, kind, the fixed condition, what differs from the preset */
   uraSweep* s = calloc(1, sizeof *s);
@@ -149,9 +169,13 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   s->step = c->st.step;
   changes(c, s->changes, sizeof s->changes);
 
-  /* one grid per value; the live wind or face is restored afterwards */
+  /* one grid per value (speed and angle derived per wind as 'set descent' says); the live wind
+     or face is restored afterwards */
   double keep = is_wind ? c->st.descent.wind : c->st.face;
   uraTable* t = ura_table_new(6, cols);
+  int paper = ura_paper_speed(c);
+  double shift = 0;                /* the tau shift at each value (it depends on the angle) */
+  int shifts_differ = 0;
   int rc = 0;
   char recalled[200] = "";         /* the values whose grids were recalled (recall.c) */
   size_t nr = 0;
@@ -177,6 +201,8 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
       ura_table_cell(t, "%.2f", c->last.angle);
       ura_table_cell(t, "%.4f", c->last.g->q);
       sweep_add(s, v[i], c->last.speed, c->last.angle, c->last.g->q);
+      if (i > 0 && c->last.tau_shift != shift) shifts_differ = 1;
+      shift = c->last.tau_shift;
       if (c->last.recalled && nr < sizeof recalled) {
         nr += (size_t)snprintf(recalled + nr, sizeof recalled - nr, "%s%g", nr ? ", " : "",
                                v[i]);
@@ -185,6 +211,22 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   }
   if (is_wind) c->st.descent.wind = keep;
   else c->st.face = keep;
+  if (paper) {
+    ura_table_note(t, "speed and angle: the paper's Table 2, case %s's column, at each wind "
+                   "('set descent paper'), not the descent model",
+                   ura_paper_descent_column(c->st.casename));
+  }
+  if (c->st.tau == urTAU_TOP) {
+    if (shifts_differ || s->n == 0) {
+      ura_table_note(t, "tau top: Delta is taken when the drone centre reaches head-top level, "
+                     "R_max/tan(psi) further along the course than the paper's text (R_max "
+                     "above the head top; 'set tau rmax')");
+    } else {
+      ura_table_note(t, "tau top: Delta is taken when the drone centre reaches head-top level, "
+                     "%.3f m further along the course than the paper's text (R_max above the "
+                     "head top; 'set tau rmax')", shift);
+    }
+  }
   if (nr) {
     ura_table_note(t, "recalled: the grids of %s %s are identical to grids computed earlier in "
                    "this session and were not simulated again ('set recall off' recomputes)",
@@ -237,6 +279,8 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
     ura_table_note(t, "recalled: the grid is identical to one computed earlier in this session "
                    "and was not simulated again ('set recall off' recomputes)");
   }
+  ura_cond_notes(t, c->st.casename, c->st.descent.wind, c->last.paper_speed, c->last.tau,
+                 c->last.tau_shift);
   ura_table_cell(t, "%s", c->st.casename);
   ura_table_cell(t, "%g", c->st.descent.wind);
   ura_table_cell(t, "%.4f", r.p);

@@ -32,8 +32,9 @@ void ura_grid_conditions(const struct uraCtx* c, char* buf, size_t n) {
     k += (size_t)snprintf(buf + k, n - k, ", speed %.4g m/s", r->speed);
   }
   if (k < n && isfinite(r->angle) && r->angle > 0) {
-    snprintf(buf + k, n - k, ", angle %.4g deg", r->angle);
+    k += (size_t)snprintf(buf + k, n - k, ", angle %.4g deg", r->angle);
   }
+  if (k < n && r->tau == urTAU_TOP) snprintf(buf + k, n - k, ", tau top");
 }
 
 void ura_grid_qtext(const urGrid* g, char* buf, size_t n) {

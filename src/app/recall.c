@@ -1,6 +1,6 @@
 /* recall.c: complete grids kept for recall. A grid asked for again with everything a cell depends
  * on unchanged (the model: its parts and parameter overrides; the impact conditions: speed, angle,
- * face, pitch, roll, yaw; the lattice: step and extents; the injury settings) is a copy of the
+ * face, pitch, roll, yaw, tau; the lattice: step and extents; the injury settings) is a copy of the
  * kept one instead of a computation. The worker threads are left out: the cells do not depend on
  * them. Partial or failed grids are never kept. At most uraRECALLGRIDS grids and uraRECALLBYTES
  * of cells, the least recently used freed first; 'set recall off' neither recalls nor keeps.
@@ -55,6 +55,7 @@ static int key_same(const gridKey* a, const gridKey* b) {
   const urImpactCond *x = &a->cond, *y = &b->cond;
   if (!same(x->speed, y->speed) || !same(x->angle, y->angle) || !same(x->face, y->face) ||
       !same(x->pitch, y->pitch) || !same(x->roll, y->roll) || !same(x->yaw, y->yaw) ||
+      x->tau != y->tau ||
       !same(a->step, b->step) || memcmp(a->set, b->set, sizeof a->set) ||
       !same(a->par_min, b->par_min) || !same(a->par_max, b->par_max) ||
       !same(a->perp_max, b->perp_max)) {

@@ -13,6 +13,8 @@
 
 static const char* const format_names[] = {"table", "csv", NULL};
 static const char* const onoff_names[] = {"off", "on", NULL};
+static const char* const descent_names[] = {"model", "paper", NULL};
+static const char* const tau_names[] = {"rmax", "top", NULL};
 const char* const ura_case_names[] = {"A", "B", "C", "A1", "A2", NULL};
 
 /* one row per settable quantity: name, kind, offset, derived flag, unit, range, help */
@@ -48,6 +50,14 @@ const uraParam ura_params[] = {
    "impact speed; derived from the descent model unless set ('set speed auto')", NULL},
   {"angle", uraP_NUM, OFF(angle), OFF(angle_set), "deg", 1, 90,
    "descent angle psi from the horizontal; derived unless set ('set angle auto')", NULL},
+  {"descent", uraP_ENUM, OFF(descent_src), 0, "", 0, 0,
+   "where derived speed and angle come from: model (the descent model at the live wind) or "
+   "paper (the paper's Table 2 at the live wind, case C's column for C, case B's for the "
+   "others; winds 0, 2, 4, 6, 8, 10 m/s only); 'case' keeps it", descent_names},
+  {"tau", uraP_ENUM, OFF(tau), 0, "", 0, 0,
+   "the moment Delta is taken: rmax (the paper's text: the drone centre R_max above the head "
+   "top) or top (the centre at head-top level, R_max/tan(psi) further along the course, as the "
+   "paper's 10 m/s grids behave); the same at zero wind; 'case' keeps it", tau_names},
   {"altitude", uraP_NUM, OFF(descent.altitude), 0, "m", 0.1, 10000,
    "height at which the descent starts (from rest)", NULL},
   {"mass", uraP_NUM, OFF(descent.mass), 0, "kg", 0.01, 1000,
@@ -287,16 +297,24 @@ void ura_injury_line(uraCtx* c, int i, char* buf, size_t n, int with_unit) {
   if (with_unit && *unit && k < (int)n) snprintf(buf + k, n - k, " %s", unit);
 }
 
+int ura_paper_speed(const uraCtx* c) {
+  return (!c->st.speed_set || !c->st.angle_set) && c->st.descent_src == uraDESC_PAPER;
+}
+
 int ura_impact_conditions(uraCtx* c, double* speed, double* angle) {
   urDescentResult r;
   char err[256];
-  if (!c->st.speed_set || !c->st.angle_set) {
+  int derive = !c->st.speed_set || !c->st.angle_set;
+  if (derive && c->st.descent_src == uraDESC_PAPER) {
+    if (ura_paper_descent(c, c->st.casename, c->st.descent.wind, &r.speed, &r.angle)) return -1;
+  } else if (derive) {
     if (ur_descent(&c->st.descent, &r, err, sizeof err)) return ura_fail(c, "%s", err);
   }
   *speed = c->st.speed_set ? c->st.speed : r.speed;
   *angle = c->st.angle_set ? c->st.angle : r.angle;
   return 0;
 }
+
 
 int ura_case_load(uraCtx* c, const char* name) {
   int k = -1;
@@ -305,8 +323,8 @@ int ura_case_load(uraCtx* c, const char* name) {
   }
   if (k < 0) return ura_fail(c, "case: unknown case '%s'; accepted: A, B, C, A1 or A2", name);
 
-  /* keep the live wind, face, lists, grid step, recall and output settings; everything else
-     from the paper */
+  /* keep the live wind, face, lists, grid step, recall, descent source, tau and output settings;
+     everything else from the paper */
   uraState ns;
   const uraState* keep = &c->st;
   ura_state_defaults(&ns);
@@ -318,6 +336,8 @@ int ura_case_load(uraCtx* c, const char* name) {
   ns.nwinds = keep->nwinds;
   ns.format = keep->format;
   ns.recall = keep->recall;
+  ns.descent_src = keep->descent_src;
+  ns.tau = keep->tau;
   strcpy(ns.terminal, keep->terminal);
   strcpy(ns.output, keep->output);
   strcpy(ns.casename, ura_case_names[k]);

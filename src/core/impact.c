@@ -49,13 +49,22 @@ void ur_impact_work_free(urImpactWork* w) {
 
 /* ---- placement at the moment tau ---- */
 
+double ur_impact_tau_shift(const urImpactSetup* s, const urImpactCond* c) {
+  if (c->tau != urTAU_TOP || !(c->angle < 90.0)) return 0.0;
+  double psi = c->angle * DEG;
+  return s->rmax * cos(psi) / sin(psi);
+}
+
 void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar, double dperp,
                      double pos[3], double quat[4], double vel[3]) {
   double cr[3], lf[3];
   course(c->face, cr, lf);
 
-  /* centre R_max above the head top, offset from the head CG along and across the course */
-  for (int k = 0; k < 2; k++) pos[k] = s->head_cg[k] + dpar * cr[k] + dperp * lf[k];
+  /* centre R_max above the head top, offset from the head CG along and across the course; with
+     tau at head-top level the offset is reached R_max / tan(psi) further on, so the start is
+     that much back along the course */
+  double along = dpar - ur_impact_tau_shift(s, c);
+  for (int k = 0; k < 2; k++) pos[k] = s->head_cg[k] + along * cr[k] + dperp * lf[k];
   pos[2] = s->head_top + s->rmax;
 
   /* velocity along the course, descending at psi */
