@@ -686,7 +686,6 @@ int ur_collide_ellipsoids(const urEllipsoid* a, const urEllipsoid* b, double u[3
     for (int s = 0; s < ns; s++) {
       evalf(&A, &B, dc, starts[s], &cur);
       if (!(cur.f < best.f + tau)) continue;
-      if (!(cur.f < best.f + tau)) continue;
       iters += newton(&A, &B, dc, scale, starts[s], &cur, &conv);
       if (cur.f < best.f) best = cur;
     }
