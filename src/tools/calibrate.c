@@ -6,7 +6,7 @@
  *   calibrate [-s SPEC] [-o DIR] [-n MAXEVAL] [-e [-m]] [-l FILE]... [NAME=VALUE ...]
  *     -s SPEC    the declaration (default src/models/calibrate.spec)
  *     -o DIR     log.csv (every evaluation) and result.txt go here (default build/calibration)
- *     -n N       at most N evaluations (default: the spec's maxeval)
+ *     -n N       at most N evaluations per simplex (default: the spec's maxeval)
  *     -e         evaluate once at the start (or at the model's own values with -m) and stop
  *     -m         with -e: the model's own values, not the spec's start (free parameters the
  *                model does not have are left out)
@@ -78,7 +78,9 @@ typedef struct {
   trainCase k[MAXCASE];
   group g[MAXGROUP];
   double hic_share, threshold, simplex, tol;
-  int maxeval;
+  int maxeval;                     /* evaluations per run of the simplex */
+  int restarts;                    /* new simplices around the best point, while they gain */
+  double gain;                     /* a restart that lowers the loss by less than this ends */
 } spec;
 
 typedef struct {
@@ -133,6 +135,7 @@ static int spec_read(const char* path, spec* s) {
   s->simplex = 1;
   s->tol = 1e-3;
   s->maxeval = 400;
+  s->gain = 0.005;
   char line[LINELEN];
   int ln = 0, rc = 0;
   while (rc == 0 && fgets(line, sizeof line, f)) {
@@ -178,7 +181,8 @@ static int spec_read(const char* path, spec* s) {
       }
     } else if (n == 2 && (!strcmp(w[0], "hic_share") || !strcmp(w[0], "threshold") ||
                           !strcmp(w[0], "simplex") || !strcmp(w[0], "tol") ||
-                          !strcmp(w[0], "maxeval"))) {
+                          !strcmp(w[0], "maxeval") || !strcmp(w[0], "restarts") ||
+                          !strcmp(w[0], "gain"))) {
       double v;
       if (num(w[1], &v)) {
         rc = spec_fail(path, ln, "not a number", w[1]);
@@ -190,6 +194,10 @@ static int spec_read(const char* path, spec* s) {
         s->simplex = v;
       } else if (!strcmp(w[0], "tol")) {
         s->tol = v;
+      } else if (!strcmp(w[0], "restarts")) {
+        s->restarts = (int)v;
+      } else if (!strcmp(w[0], "gain")) {
+        s->gain = v;
       } else {
         s->maxeval = (int)v;
       }
@@ -475,20 +483,27 @@ int main(int argc, char** argv) {
   if (once) {
     evaluate(&F, x);
   } else {
-    /* Nelder-Mead in the logistic coordinates, from the spec's start */
+    /* Nelder-Mead in the logistic coordinates, from the spec's start; then a fresh simplex
+       around the best point (the simplex collapses early in many dimensions), again while a
+       restart lowers the loss by at least `gain` */
     gsl_multimin_function fn = {nm_f, (size_t)s.nfree, &F};
     gsl_vector* z = gsl_vector_alloc(s.nfree);
     gsl_vector* step = gsl_vector_alloc(s.nfree);
-    for (int j = 0; j < s.nfree; j++) {
-      gsl_vector_set(z, j, to_z(s.f + j, x[j]));
-      gsl_vector_set(step, j, s.simplex);
-    }
     gsl_multimin_fminimizer* nm =
       gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, s.nfree);
-    gsl_multimin_fminimizer_set(nm, &fn, z, step);
-    while (F.neval < s.maxeval) {
-      if (gsl_multimin_fminimizer_iterate(nm)) break;
-      if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(nm), s.tol) == GSL_SUCCESS) break;
+    double before = INFINITY;
+    for (int run = 0; run <= s.restarts && before - F.best >= s.gain; run++) {
+      before = F.best;
+      for (int j = 0; j < s.nfree; j++) {
+        gsl_vector_set(z, j, to_z(s.f + j, run ? F.bestx[j] : x[j]));
+        gsl_vector_set(step, j, s.simplex);
+      }
+      fprintf(F.log, "# simplex %d from evaluation %d\n", run + 1, F.neval + 1);
+      gsl_multimin_fminimizer_set(nm, &fn, z, step);
+      for (int n0 = F.neval; F.neval - n0 < s.maxeval;) {
+        if (gsl_multimin_fminimizer_iterate(nm)) break;
+        if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(nm), s.tol) == GSL_SUCCESS) break;
+      }
     }
     gsl_multimin_fminimizer_free(nm);
     gsl_vector_free(z);
