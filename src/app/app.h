@@ -13,6 +13,7 @@
 #include "uasrisk/injury.h"
 #include "uasrisk/modellang.h"
 #include "uasrisk/parametric.h"
+#include "app_risk.h"
 
 #define uraMAXLIST 64              /* values in a list parameter */
 #define uraMAXOV 64                /* model parameters set by the case or the user */
@@ -53,6 +54,7 @@ typedef struct {
   int nov;
   char terminal[64];               /* gnuplot terminal; empty: gnuplot's default */
   char output[512];                /* gnuplot output file; empty: a window */
+  uraRiskSet risk;                 /* deployment reliability, distributions, SORA (app_risk.h) */
 } uraState;
 
 /* one part of the model set (human, ra3, airbags, sim, or loaded from a file) */
@@ -143,6 +145,7 @@ typedef struct uraCtx {
   unsigned long tick;              /* use counter of both, for least-recently-used eviction */
   /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
   int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
+  struct uraMc* mc;                /* the last montecarlo's samples (NULL: none; app_risk.h) */
 } uraCtx;
 
 /* record a failure message; always returns -1 */
@@ -306,6 +309,8 @@ urGrid* ura_recall_find(uraCtx* c, const urImpactCond* cond);
 void ura_recall_keep(uraCtx* c, const urImpactCond* cond, const urGrid* g);
 void ura_recall_flush(uraCtx* c);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
+/* the commands of save session (session.c) */
+void ura_session_write(uraCtx* c, FILE* f);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);
 int ura_cmd_compare(uraCtx* c, int argc, char** argv);

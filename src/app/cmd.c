@@ -36,9 +36,11 @@ const uraCmd ura_cmds[] = {
   {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
    "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
    "q returns"},
-  {"plot", ura_cmd_plot, 1, -1, uraC_NONE, "plot pof|grid|history [SIGNAL...|all]|sweep [wind|face]",
+  {"plot", ura_cmd_plot, 1, -1, uraC_NONE,
+   "plot pof|grid|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",
    "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
-   "the last impact, or Q of the kept sweeps (set terminal/output to write files)"},
+   "the last impact, Q of the kept sweeps, the last montecarlo's Q distribution or its "
+   "variance shares (set terminal/output to write files)"},
   {"impact", ura_cmd_impact, 2, 2, uraC_NONE, "impact DPAR DPERP",
    "simulate one impact at the offset (along, across the course; m) of the live case; columns "
    "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
@@ -53,9 +55,23 @@ const uraCmd ura_cmds[] = {
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
-  {"export", ura_cmd_export, 2, 2, uraC_NONE, "export grid|history|sweep|contacts FILE",
-   "write the last grid's cells, the last impact's histories, the kept sweeps or the last "
-   "impact's contacts as CSV (atomically)"},
+  {"export", ura_cmd_export, 2, 2, uraC_NONE,
+   "export grid|history|sweep|contacts|montecarlo FILE",
+   "write the last grid's cells, the last impact's histories, the kept sweeps, the last "
+   "impact's contacts or the last montecarlo's samples as CSV (atomically)"},
+  {"risk", ura_cmd_risk, 0, 0, uraC_NONE, "risk",
+   "Q of the live case mixed over parachute and airbag deployment (p_chute, p_bag, "
+   "h_chute_min): one grid per branch; columns branch,weight,q, last row mixed"},
+  {"dist", ura_cmd_dist, 0, -1, uraC_PARAM,
+   "dist [NAME normal MEAN SD|uniform LO HI|weibull SCALE SHAPE|discrete VALUES PROBS|off|clear]",
+   "declare the distribution montecarlo draws an input from (wind, wind_dir, face_dir, face, "
+   "p_chute, ... any number parameter); without arguments list them"},
+  {"montecarlo", ura_cmd_montecarlo, 1, 1, uraC_NONE, "montecarlo N|shares|samples",
+   "draw N samples of the declared inputs and deployment outcomes (set seed), Q of each; "
+   "columns n,mean,sd,lo95,hi95; shares: input,share (first-order); samples: every sample"},
+  {"sora", ura_cmd_sora, 0, 1, uraC_NONE, "sora [mc]",
+   "SORA 2.5 figures: critical area (Q, and Annex F) and iGRC of the unmitigated drone and the "
+   "live case, and the reduction factor; mc: with the last montecarlo's intervals"},
   {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
    "write a script that recreates the live state exactly (replay: uasrisk FILE, or source)"},
   {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
@@ -192,6 +208,7 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   for (int i = 0; m && i < m->nparam; i++) {
     fprintf(c->out, "%-16s %.10g\n", m->param[i].name, m->param[i].value);
   }
+  ura_dist_show(c);
   return 0;
 }
 

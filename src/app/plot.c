@@ -768,8 +768,9 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
   }
   if (!strcmp(what, "sweep") && argc <= 3) return ura_plot_sweep(c, argc == 3 ? argv[2] : NULL);
   if (argc > 2) return ura_fail(c, "plot %s: takes no arguments", what);
+  if (!strcmp(what, "montecarlo") || !strcmp(what, "tornado")) return ura_plot_mc(c, what);
   if (!strcmp(what, "pof")) return ura_plot_pof(c, &c->st.injury);
   if (!strcmp(what, "grid")) return ura_plot_grid(c);
   return ura_fail(c, "plot: unknown plot '%s'; accepted: pof, grid, history SIGNAL..., sweep "
-                  "[wind|face]", what);
+                  "[wind|face], montecarlo, tornado", what);
 }

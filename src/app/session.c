@@ -7,7 +7,7 @@
 #include "app.h"
 
 /* write the state as commands: defaults, loaded model parts, case, then every setting */
-static void write_state(uraCtx* c, FILE* f) {
+void ura_session_write(uraCtx* c, FILE* f) {
   char val[2048];
   fprintf(f, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n");
   fprintf(f, "reset\n");
@@ -32,6 +32,7 @@ static void write_state(uraCtx* c, FILE* f) {
   for (int i = 0; i < c->st.nov; i++) {
     if (c->st.ov_user[i]) fprintf(f, "set %s %.17g\n", c->st.ov_name[i], c->st.ov_val[i]);
   }
+  ura_dist_save(c, f);
 }
 
 int ura_cmd_save(uraCtx* c, int argc, char** argv) {
@@ -40,7 +41,7 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   }
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "save session")) return -1;
-  write_state(c, a.f);
+  ura_session_write(c, a.f);
   return ura_atomic_close(c, &a, 1, "save session");
 }
 
@@ -49,10 +50,12 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
 int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   int grid = !strcmp(argv[1], "grid"), hist = !strcmp(argv[1], "history");
   int sweep = !strcmp(argv[1], "sweep"), cont = !strcmp(argv[1], "contacts");
-  if (!grid && !hist && !sweep && !cont) {
+  int mc = !strcmp(argv[1], "montecarlo");
+  if (!grid && !hist && !sweep && !cont && !mc) {
     return ura_fail(c, "export: unknown '%s'; accepted: export grid FILE, export history FILE, "
-                    "export sweep FILE, export contacts FILE", argv[1]);
+                    "export sweep FILE, export contacts FILE, export montecarlo FILE", argv[1]);
   }
+  if (mc && !c->mc) return ura_fail(c, "export montecarlo: no montecarlo yet; run 'montecarlo N'");
   if (sweep && !c->nsweep) {
     return ura_fail(c, "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST'");
   }
@@ -64,8 +67,9 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   int fmt = c->st.format;
   c->out = a.f;
   c->st.format = uraFMT_CSV;
-  char* av[2] = {argv[1], grid ? "cells" : "show"};
+  char* av[2] = {argv[1], grid ? "cells" : mc ? "samples" : "show"};
   int rc = grid ? ura_cmd_grid(c, 2, av) : sweep ? ura_cmd_sweep(c, 2, av) :
+           mc ? ura_cmd_montecarlo(c, 2, av) :
            cont ? ura_cmd_contacts(c, 1, av) : ura_cmd_history(c, 1, av);
   c->out = out;
   c->st.format = fmt;

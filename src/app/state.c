@@ -16,6 +16,7 @@ static const char* const onoff_names[] = {"off", "on", NULL};
 static const char* const descent_names[] = {"model", "paper", NULL};
 static const char* const tau_names[] = {"rmax", "top", NULL};
 const char* const ura_case_names[] = {"A", "B", "C", "A1", "A2", NULL};
+static const char* const mc_method_names[] = {"surface", "exact", NULL};
 
 /* one row per settable quantity: name, kind, offset, derived flag, unit, range, help */
 const uraParam ura_params[] = {
@@ -85,6 +86,30 @@ const uraParam ura_params[] = {
    "whole-body mass of the person (Blunt Criterion)", NULL},
   {"bc_diameter", uraP_NUM, OFF(para.bc_diameter), 0, "m", 0.001, 10,
    "impactor diameter D_imp of the Blunt Criterion", NULL},
+  /* deployment reliability, Monte Carlo, SORA figures (cmd_risk.c, cmd_montecarlo.c) */
+  {"p_chute", uraP_NUM, OFF(risk.p_chute), 0, "", 0, 1,
+   "probability that the parachute deploys in time (risk, montecarlo)", NULL},
+  {"p_bag", uraP_NUM, OFF(risk.p_bag), 0, "", 0, 1,
+   "probability that each airbag deploys (risk, montecarlo)", NULL},
+  {"h_chute_min", uraP_NUM, OFF(risk.h_chute_min), 0, "m", 0, 10000,
+   "minimum deployment height: a failure below it gets no parachute", NULL},
+  {"seed", uraP_INT, OFF(risk.seed), 0, "", 0, 4294967295.0,
+   "key of montecarlo's random numbers: sample i depends on (seed, i) only", NULL},
+  {"mc_method", uraP_ENUM, OFF(risk.mc_method), 0, "", 0, 0,
+   "montecarlo: surface (Q interpolated on a lattice of real grids) or exact (grids per sample)",
+   mc_method_names},
+  {"surface_nodes", uraP_INT, OFF(risk.surface_nodes), 0, "", 2, 65,
+   "nodes of the response surface per continuous input (discrete inputs: their values)", NULL},
+  {"surface_check", uraP_INT, OFF(risk.surface_check), 0, "", 0, 1000,
+   "samples that montecarlo also computes by grids to measure the surface's error", NULL},
+  {"pop_density", uraP_NUM, OFF(risk.pop_density), 0, "ppl/km^2", 1e-6, 1e9,
+   "population density for the iGRC (sora)", NULL},
+  {"tlos", uraP_NUM, OFF(risk.tlos), 0, "1/h", 1e-12, 1,
+   "target level of safety for the iGRC, fatalities per flight hour (sora)", NULL},
+  {"igrc_compensation", uraP_NUM, OFF(risk.igrc_comp), 0, "", 0, 1,
+   "subtracted from the raw iGRC (casex's tables: 0.5; its iGRC(): 0)", NULL},
+  {"annexf_obstacles", uraP_ENUM, OFF(risk.annexf_obstacles), 0, "", 0, 0,
+   "Annex F critical area with the obstacle factor 0.6 (for 1 < width < 40 m)", onoff_names},
   {"format", uraP_ENUM, OFF(format), 0, "", 0, 0,
    "output of tabular commands: aligned table or CSV with one header line", format_names},
   {"terminal", uraP_STR, OFF(terminal), 0, "", 0, 64,
@@ -120,6 +145,7 @@ void ura_state_defaults(uraState* s) {
   s->format = uraFMT_TABLE;
   s->step = 0.05;
   s->recall = 1;
+  ura_risk_defaults(&s->risk);
   long n = sysconf(_SC_NPROCESSORS_ONLN);
   s->threads = n > 0 ? (double)n : 1;
 }
@@ -338,6 +364,7 @@ int ura_case_load(uraCtx* c, const char* name) {
   ns.recall = keep->recall;
   ns.descent_src = keep->descent_src;
   ns.tau = keep->tau;
+  ns.risk = keep->risk;
   strcpy(ns.terminal, keep->terminal);
   strcpy(ns.output, keep->output);
   strcpy(ns.casename, ura_case_names[k]);
