@@ -199,9 +199,21 @@ int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* spee
 /* the column of Table 2 a case takes: "B" or "C" */
 const char* ura_paper_descent_column(const char* casename);
 
-/* load a paper case preset: A, B, C, A1, A2 (wind and face are kept) */
+/* load a case: a preset of the model (the RA3's A, B, C, A1, A2; wind and face are kept); the
+   model's first preset (none: nothing) */
 int ura_case_load(uraCtx* c, const char* name);
-extern const char* const ura_case_names[];
+int ura_case_default(uraCtx* c);
+/* presets (preset.c): by name (any case), the names as "A, B or C", the state a case starts
+   from (the live wind, face, lists, step and output settings kept) */
+const urPreset* ura_preset_find(uraCtx* c, const char* name);
+void ura_preset_names(uraCtx* c, char* buf, size_t n);
+int ura_preset_state(uraCtx* c, const urPreset* pr, uraState* ns);
+/* design parameters (design.c): mass also as the multibody drone's total (its role mass=
+   parameter, as an override of ns; user: set by the user), the models a setting changes */
+int ura_design_mass(const urModel* m, uraState* ns, double mass, int user);
+int ura_design_set(uraCtx* c, const char* name, const char* value, const char* unit);
+const char* ura_design_reach(uraCtx* c, const char* name);
+const char* ura_design_mark(uraCtx* c, const char* name, char* buf, size_t n);
 
 /* ---- tabular output ---- */
 

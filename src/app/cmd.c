@@ -13,9 +13,9 @@ const uraCmd ura_cmds[] = {
    "parameters take an optional unit"},
   {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
    "print the live case state with units, or one parameter; derived values say so"},
-  {"case", ura_cmd_case, 1, 1, uraC_CASE, "case A|B|C|A1|A2",
-   "load the paper's preset for a case; wind, face, step, recall and the output settings keep "
-   "their values"},
+  {"case", ura_cmd_case, 1, 1, uraC_CASE, "case NAME",
+   "load a preset of the model (the RA3's: A, B, C, A1, A2; 'model presets' lists them); wind, "
+   "face, step, recall and the output settings keep their values"},
   {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
   {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
    "impact speed and descent angle for each wind in 'winds' (paper Table 2); "
@@ -92,7 +92,18 @@ int ura_cmd_help(uraCtx* c, int argc, char** argv) {
   return 0;
 }
 
+static int set_one(uraCtx* c, int argc, char** argv);
+
+/* set, then at the prompt the models the setting changes (design.c) */
 int ura_cmd_set(uraCtx* c, int argc, char** argv) {
+  int rc = ura_design_set(c, argv[1], argv[2], argc == 4 ? argv[3] : NULL);
+  if (rc == 1) rc = set_one(c, argc, argv);
+  const char* reach = rc ? NULL : ura_design_reach(c, argv[1]);
+  if (reach && c->interactive) fprintf(c->msg, "set %s: changes %s\n", argv[1], reach);
+  return rc;
+}
+
+static int set_one(uraCtx* c, int argc, char** argv) {
   const uraParam* p = ura_param_find(argv[1]);
   int i = p ? -1 : ura_injury_find(argv[1]);
   if (!p && i < 0) {
@@ -150,6 +161,7 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
   } else {
     ura_param_format(c, p, val, sizeof val);
     if (p->setoff) note = "  (set)";
+    else note = ura_design_mark(c, p->name, src, sizeof src);
   }
   fprintf(c->out, "%-16s %s%s%s%s\n", p->name, val, *p->unit ? " " : "", p->unit, note);
   return 0;
@@ -203,7 +215,7 @@ int ura_cmd_reset(uraCtx* c, int argc, char** argv) {
   ura_models_free(c);
   ura_state_defaults(&c->st);
   if (ura_models_init(c)) return -1;
-  return ura_case_load(c, "A");
+  return ura_case_default(c);
 }
 
 int ura_cmd_quit(uraCtx* c, int argc, char** argv) {

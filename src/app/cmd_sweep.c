@@ -20,9 +20,10 @@ static void changes(uraCtx* c, char* buf, size_t n) {
   size_t k = 0;
   buf[0] = 0;
 
-  /* the preset: the defaults, and case C without parachute (as ura_case_load) */
-  ura_state_defaults(&ref);
-  if (!strcmp(c->st.casename, "C")) ref.descent.area_chute = 0;
+  /* the preset, as ura_case_load makes it */
+  const urPreset* pr = ura_preset_find(c, c->st.casename);
+  if (!pr || ura_preset_state(c, pr, &ref)) ura_state_defaults(&ref);
+  c->err[0] = 0;
   for (int i = 0; names[i] && k < n; i++) {
     const uraParam* p = ura_param_find(names[i]);
     const char* a = (const char*)&c->st + p->off;
