@@ -324,7 +324,11 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
-int ura_impact_cond(uraCtx* c, urImpactCond* cond);
+int ura_impact_cond(uraCtx* c, urImpactCond* cond);   /* refuses angles below uraANGLE_DELTA */
+#define uraANGLE_DELTA 1.0         /* deg: the least descent angle of an offset Delta (grids) */
+/* impact aim head UP SIDE (cmd_aim.c): one impact whose line of travel passes the head's centre
+   at an eccentricity, at any angle 0-90 deg */
+int ura_impact_aim(uraCtx* c, int argc, char** argv);
 /* notes for a table computed under cond: where speed and angle came from when it was the paper's
    Table 2 (paper), and the moment tau when it is not the paper's text (shift: the tau shift, m) */
 void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,

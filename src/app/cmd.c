@@ -39,8 +39,10 @@ const uraCmd ura_cmds[] = {
   {"plot", ura_cmd_plot, 1, -1, uraC_NONE, "plot pof|grid|history [SIGNAL...|all]|sweep [wind|face]",
    "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
    "the last impact, or Q of the kept sweeps (set terminal/output to write files)"},
-  {"impact", ura_cmd_impact, 2, 2, uraC_NONE, "impact DPAR DPERP",
-   "simulate one impact at the offset (along, across the course; m) of the live case; columns "
+  {"impact", ura_cmd_impact, 2, 5, uraC_NONE, "impact DPAR DPERP|aim head UP SIDE",
+   "simulate one impact at the offset (along, across the course; m) of the live case, or (aim) "
+   "with the drone's line of travel UP and SIDE (m) from the head's centre, at any angle 0-90 "
+   "deg; columns "
    "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
    "p_vc,p"},
   {"history", ura_cmd_history, 0, 0, uraC_NONE, "history",

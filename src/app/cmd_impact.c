@@ -15,6 +15,12 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond) {
   cond->roll = c->st.roll;
   cond->yaw = c->st.yaw;
   cond->tau = c->st.tau;
+  if (cond->angle < uraANGLE_DELTA) {
+    return ura_fail(c, "angle %g deg: an offset Delta needs a descent (at angles below %g deg "
+                    "the path stays R_max above the head top); accepted: angle >= %g deg, or "
+                    "'impact aim head UP SIDE' for a flight", cond->angle, uraANGLE_DELTA,
+                    uraANGLE_DELTA);
+  }
   return 0;
 }
 
@@ -39,6 +45,11 @@ static const char* const impact_cols[] = {"dpar", "dperp", "contact", "hic15", "
 
 int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   double dpar, dperp;
+  if (!strcmp(argv[1], "aim")) return ura_impact_aim(c, argc, argv);   /* cmd_aim.c */
+  if (argc != 3) {
+    return ura_fail(c, "impact: %d arguments; accepted: impact DPAR DPERP, or impact aim head "
+                    "UP SIDE", argc - 1);
+  }
   if (ura_parse_number(argv[1], &dpar)) {
     return ura_fail(c, "impact: DPAR '%s' is not a number; accepted: the along offset in m",
                     argv[1]);

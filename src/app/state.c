@@ -48,8 +48,9 @@ const uraParam ura_params[] = {
    "wind speeds of the rows of descent and parametric", NULL},
   {"speed", uraP_NUM, OFF(speed), OFF(speed_set), "m/s", 0.01, 200,
    "impact speed; derived from the descent model unless set ('set speed auto')", NULL},
-  {"angle", uraP_NUM, OFF(angle), OFF(angle_set), "deg", 1, 90,
-   "descent angle psi from the horizontal; derived unless set ('set angle auto')", NULL},
+  {"angle", uraP_NUM, OFF(angle), OFF(angle_set), "deg", 0, 90,
+   "descent angle psi from the horizontal, 0 a horizontal flight (impact aim only: offsets and "
+   "grids need >= 1 deg); derived unless set ('set angle auto')", NULL},
   {"descent", uraP_ENUM, OFF(descent_src), 0, "", 0, 0,
    "where derived speed and angle come from: model (the descent model at the live wind) or "
    "paper (the paper's Table 2 at the live wind, case C's column for C, case B's for the "
