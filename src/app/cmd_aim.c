@@ -10,9 +10,6 @@
 #define AIM_MAX 2.0                /* m: largest |UP|, |SIDE| */
 
 int ura_impact_aim(uraCtx* c, int argc, char** argv) {
-  static const char* const cols[] = {"dpar", "dperp", "contact", "hic15", "nij", "nij_tf",
-                                     "nij_te", "nij_cf", "nij_ce", "vc_thorax", "vc_abdomen",
-                                     "p_hic", "p_nij", "p_vc", "p"};
   double up, side;
   if (argc != 5 || strcmp(argv[2], "head")) {
     return ura_fail(c, "impact aim: usage: impact aim head UP SIDE (the eccentricity in m of "
@@ -53,7 +50,7 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, up, side, &r);
 
   /* the row of 'impact', its offset columns holding the eccentricity */
-  uraTable* t = ura_table_new(15, cols);
+  uraTable* t = ura_impact_table();
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; aim head: dpar, "
                  "dperp are the eccentricity (up, side) of the line of travel from the head's "
                  "centre; HIC15 window %.2f-%.2f ms", c->st.casename, cond.speed, cond.angle,
@@ -62,18 +59,7 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
     ura_table_note(t, "extrapolated: %d law(s) used beyond their data; furthest: %s", r.nextrap,
                    r.extrap);
   }
-  ura_table_cell(t, "%g", up);
-  ura_table_cell(t, "%g", side);
-  ura_table_cell(t, "%d", r.contact);
-  ura_table_cell(t, "%.6g", r.inj.hic15.hic);
-  ura_table_cell(t, "%.6g", r.inj.nij.nij);
-  for (int k = 0; k < 4; k++) ura_table_cell(t, "%.6g", r.inj.nij.mode[k]);
-  ura_table_cell(t, "%.6g", r.inj.vc_thorax.vc);
-  ura_table_cell(t, "%.6g", r.inj.vc_abdomen.vc);
-  ura_table_cell(t, "%.6g", r.inj.p_hic);
-  ura_table_cell(t, "%.6g", r.inj.p_nij);
-  ura_table_cell(t, "%.6g", r.inj.p_vc);
-  ura_table_cell(t, "%.6g", r.p);
+  ura_impact_cells(t, up, side, &r);
   ura_table_print(c, t);
   return 0;
 }

@@ -43,6 +43,25 @@ static const char* const impact_cols[] = {"dpar", "dperp", "contact", "hic15", "
                                           "nij_te", "nij_cf", "nij_ce", "vc_thorax",
                                           "vc_abdomen", "p_hic", "p_nij", "p_vc", "p"};
 
+uraTable* ura_impact_table(void) {
+  return ura_table_new(15, impact_cols);
+}
+
+void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r) {
+  ura_table_cell(t, "%g", dpar);
+  ura_table_cell(t, "%g", dperp);
+  ura_table_cell(t, "%d", r->contact);
+  ura_table_cell(t, "%.6g", r->inj.hic15.hic);
+  ura_table_cell(t, "%.6g", r->inj.nij.nij);
+  for (int k = 0; k < 4; k++) ura_table_cell(t, "%.6g", r->inj.nij.mode[k]);
+  ura_table_cell(t, "%.6g", r->inj.vc_thorax.vc);
+  ura_table_cell(t, "%.6g", r->inj.vc_abdomen.vc);
+  ura_table_cell(t, "%.6g", r->inj.p_hic);
+  ura_table_cell(t, "%.6g", r->inj.p_nij);
+  ura_table_cell(t, "%.6g", r->inj.p_vc);
+  ura_table_cell(t, "%.6g", r->p);
+}
+
 int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   double dpar, dperp;
   if (!strcmp(argv[1], "aim")) return ura_impact_aim(c, argc, argv);   /* cmd_aim.c */
@@ -83,7 +102,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);
 
   /* one row */
-  uraTable* t = ura_table_new(15, impact_cols);
+  uraTable* t = ura_impact_table();
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
                  "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
                  1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
@@ -93,18 +112,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
                  ur_impact_tau_shift(s, &cond));
-  ura_table_cell(t, "%g", dpar);
-  ura_table_cell(t, "%g", dperp);
-  ura_table_cell(t, "%d", r.contact);
-  ura_table_cell(t, "%.6g", r.inj.hic15.hic);
-  ura_table_cell(t, "%.6g", r.inj.nij.nij);
-  for (int k = 0; k < 4; k++) ura_table_cell(t, "%.6g", r.inj.nij.mode[k]);
-  ura_table_cell(t, "%.6g", r.inj.vc_thorax.vc);
-  ura_table_cell(t, "%.6g", r.inj.vc_abdomen.vc);
-  ura_table_cell(t, "%.6g", r.inj.p_hic);
-  ura_table_cell(t, "%.6g", r.inj.p_nij);
-  ura_table_cell(t, "%.6g", r.inj.p_vc);
-  ura_table_cell(t, "%.6g", r.p);
+  ura_impact_cells(t, dpar, dperp, &r);
   ura_table_print(c, t);
   return 0;
 }
