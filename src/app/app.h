@@ -74,6 +74,7 @@ typedef struct {
   char source[512];                /* "computed", or the file it was loaded from */
   int recalled;                    /* the cells of an identical earlier grid (recall.c) */
   int extents_set;                 /* some extent was set: Q covers only the lattice */
+  int diff;                        /* a difference grid (design compare): p is P_b - P_a */
 } uraGridResult;
 
 /* what a compiled model is made of: the generation of the model parts (counted up whenever they
@@ -127,6 +128,10 @@ typedef struct uraCtx {
   uraGridResult last;              /* the last grid */
   uraSweep* sweep;                 /* the kept sweeps, oldest first (sweep clear frees them) */
   int nsweep;
+  struct uraPSweep* psweep;        /* the kept sweeps over other parameters (sweep_param.c) */
+  int npsweep;
+  struct uraDesign* design;        /* the saved designs (design_cmd.c) */
+  int ndesign;
   uraPart part[uraMAXPARTS];       /* the model set, in order */
   int npart;
   unsigned long parts_gen;         /* generation of the model parts */
@@ -319,6 +324,19 @@ void ura_recall_keep(uraCtx* c, const urImpactCond* cond, const urGrid* g);
 void ura_recall_flush(uraCtx* c);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
+int ura_cmd_design(uraCtx* c, int argc, char** argv);   /* designs.c */
+/* the saved designs as commands, for save session (designs.c) */
+void ura_designs_write(uraCtx* c, FILE* f, void (*write_state)(uraCtx*, FILE*));
+/* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
+   (cmd_sweep.c) */
+void ura_sweep_changes(uraCtx* c, char* buf, size_t n);
+/* sweeps over any numeric parameter (sweep_param.c): sweep NAME LIST [UNIT]; their rows for
+   sweep show (t: its table, columns case,sweep,wind,face,speed,angle,step,q,changes,value,
+   unit); plot sweep NAME; forget them */
+int ura_sweep_param(uraCtx* c, int argc, char** argv);
+void ura_sweep_param_rows(uraCtx* c, uraTable* t);
+int ura_plot_psweep(uraCtx* c, const char* name);
+void ura_sweep_param_clear(uraCtx* c);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);
 int ura_cmd_compare(uraCtx* c, int argc, char** argv);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);

@@ -26,13 +26,18 @@ const uraCmd ura_cmds[] = {
   {"grid", ura_cmd_grid, 0, 2, uraC_NONE, "grid [show|cells|load FILE]",
    "run the offset grid of the live case (summary row), print it as coloured text (show), "
    "every cell (cells), or load a grid CSV (the paper's tables) as the last grid"},
-  {"sweep", ura_cmd_sweep, 1, 2, uraC_NONE, "sweep wind LIST|face LIST|show|clear",
+  {"sweep", ura_cmd_sweep, 1, 3, uraC_NONE, "sweep wind LIST|face LIST|NAME LIST [UNIT]|show|clear",
    "one grid per wind speed (m/s) or face direction (deg) of LIST, columns "
-   "case,wind,face,speed,angle,q; the sweeps are kept for plot sweep and export sweep (show "
-   "lists them, clear forgets them)"},
+   "case,wind,face,speed,angle,q; or per value of any numeric parameter NAME (a model "
+   "parameter in UNIT), columns case,NAME,wind,face,speed,angle,q; the sweeps are kept for plot "
+   "sweep and export sweep (show lists them, clear forgets them)"},
   {"compare", ura_cmd_compare, 0, 0, uraC_NONE, "compare",
    "the paper's Tables 11-13 for the live case: P{F|Delta=(0,0)} x gliding area against Q; "
    "columns case,wind,p_centre,gliding,q_parametric,q,factor"},
+  {"design", ura_cmd_design, 1, 3, uraC_NONE, "design save|load|delete NAME|list|compare A B",
+   "keep the live case's full state under NAME, make it live again, forget it, list the kept "
+   "designs, or compare two (a grid each): columns design_a,case_a,q_a,design_b,case_b,q_b,"
+   "ratio (q_b/q_a); the last grid becomes the difference P_b - P_a (view shows it)"},
   {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
    "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
    "q returns"},

@@ -299,6 +299,10 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
 
 /* the viewer's Enter: run the cell's impact for the grid's conditions and give its trace */
 int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr) {
+  if (c->last.diff) {
+    return ura_fail(c, "a difference grid has no impact of its own; 'design compare' names the "
+                    "two designs: load one and run 'impact %g %g'", cell->dpar, cell->dperp);
+  }
   const urImpactSetup* s = ura_setup(c);
   urImpactCond cond;
   if (!s || ura_impact_cond(c, &cond)) return -1;

@@ -40,6 +40,7 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   }
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "save session")) return -1;
+  ura_designs_write(c, a.f, write_state);   /* each saved design, then the live state */
   write_state(c, a.f);
   return ura_atomic_close(c, &a, 1, "save session");
 }
@@ -53,8 +54,9 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "export: unknown '%s'; accepted: export grid FILE, export history FILE, "
                     "export sweep FILE, export contacts FILE", argv[1]);
   }
-  if (sweep && !c->nsweep) {
-    return ura_fail(c, "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST'");
+  if (sweep && !c->nsweep && !c->npsweep) {
+    return ura_fail(c, "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
+                    "(or 'sweep NAME LIST [UNIT]')");
   }
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "export")) return -1;
