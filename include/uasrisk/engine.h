@@ -266,6 +266,8 @@ typedef struct __attribute__((aligned(64))) {
   double u[3];                     /* warm-start direction */
   double n[3];                     /* normal A -> B, world */
   double p[3];                     /* contact point, world, m */
+  double radius;                   /* Hertz radius from the shapes' curvature at the contact, m
+                                      (a law with urHERTZ_CURVATURE; else unused) */
 } urPairData;
 
 typedef struct {

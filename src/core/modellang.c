@@ -115,7 +115,7 @@ static const KeySpec spec_ellipsoid[] = {
 };
 #define LAWTYPE {"type", K_ENUM, 1, 0, 1, "hertz|table|foam"}
 static const KeySpec spec_hertz[] = {
-  LAWTYPE, NUMR("E1"), NUMR("nu1"), NUMR("R1"), NUMR("E2"), NUMR("nu2"), NUMR("R2"), NUM("sy"),
+  LAWTYPE, NUMR("E1"), NUMR("nu1"), NUM("R1"), NUMR("E2"), NUMR("nu2"), NUM("R2"), NUM("sy"),
   NUM("nu_yield"), FLAG("plastic"), FRICTION, ENABLE
 };
 static const KeySpec spec_table[] = {
@@ -1254,6 +1254,18 @@ static int st_ellipsoid(Parser* p, const Bound* b) {
 
 
 /* ellipsoid g, named name, must have degree 2 in its role (a foam pair's a, an airbag target) */
+/* a pair under a Hertz law without radii: both ellipsoids of degree 2 (their curvature) */
+static int curv2(Parser* p, int law, int g, const char* name, int line, const char* what) {
+  if (g < 0 || p->law[law].type != urLAW_HERTZ || p->law[law].radius != urHERTZ_CURVATURE ||
+      p->m->geom[g].degree == 2) {
+    return 0;
+  }
+  return fail(p, line, "%s: ellipsoid '%s' has degree=%g; a Hertz law without R1 and R2 takes "
+              "its radius from the curvature of ellipsoids of degree 2 (give R1 and R2)", what,
+              name, p->m->geom[g].degree);
+}
+
+
 static int degree2(Parser* p, int g, const char* name, int line, const char* what,
                    const char* role) {
   if (p->m->geom[g].degree == 2) {
@@ -1294,9 +1306,18 @@ static int st_law(Parser* p, const Bound* b) {
       return fail(p, get(b, "plastic")->line, "law '%s': plastic=1 needs sy > 0 and nu_yield",
                   b->name);
     }
+    const Val* r1 = get(b, "R1");
+    const Val* r2 = get(b, "R2");
+    if (r1->set != r2->set) {
+      return fail(p, (r1->set ? r1 : r2)->line, "law '%s': give R1 and R2, or neither (the radius "
+                  "then comes from the ellipsoids' curvature at the contact)", b->name);
+    }
     ur_law_hertz(&law, num(b, "E1", 0), num(b, "nu1", 0), num(b, "R1", 0), num(b, "E2", 0),
                  num(b, "nu2", 0), num(b, "R2", 0), num(b, "sy", 0), num(b, "nu_yield", 0),
                  plastic);
+    if (!r1->set) {
+      law.radius = urHERTZ_CURVATURE;
+    }
   } else if (type == 1) {
     law.type = urLAW_TABLE;
     const Val* vl = get(b, "load");
@@ -1350,6 +1371,10 @@ static int st_law(Parser* p, const Bound* b) {
       if (p->law[l].type != urLAW_HERTZ) {
         return fail(p, vb->line, "law '%s': backing '%s' must be a hertz law", b->name, vb->raw);
       }
+      if (p->law[l].radius == urHERTZ_CURVATURE) {
+        return fail(p, vb->line, "law '%s': backing '%s' must give R1 and R2 (a backing has no "
+                    "contact of its own to take a curvature from)", b->name, vb->raw);
+      }
       double K, dy, fy;
       ur_law_hertz_params(p->law + l, &K, &dy, &fy);
       law.lock = vk->v[0];
@@ -1401,8 +1426,9 @@ static int st_pair(Parser* p, const Bound* b) {
   }
   char what[urNAMELEN + 16];
   snprintf(what, sizeof(what), "pair '%s'", b->name);
-  if (p->law[law].type == urLAW_FOAM &&
-      degree2(p, ga, va->raw, va->line, what, "a, under a foam law,")) {
+  if ((p->law[law].type == urLAW_FOAM &&
+       degree2(p, ga, va->raw, va->line, what, "a, under a foam law,")) ||
+      curv2(p, law, ga, va->raw, va->line, what) || curv2(p, law, gb, vb->raw, vb->line, what)) {
     return -1;
   }
   if (declare(p, SYM_PAIR, b->name, b->line, m->npair, 1)) {
@@ -1441,8 +1467,9 @@ static int st_pairs(Parser* p, const Bound* b) {
     }
     char what[urNAMELEN + 16];
     snprintf(what, sizeof(what), "pairs '%s'", b->name);
-    if (p->law[law].type == urLAW_FOAM &&
-        degree2(p, ga, na, va->line, what, "each a, under a foam law,")) {
+    if ((p->law[law].type == urLAW_FOAM &&
+         degree2(p, ga, na, va->line, what, "each a, under a foam law,")) ||
+        curv2(p, law, ga, na, va->line, what)) {
       return -1;
     }
     for (int j = 0; j < vb->n; j++) {
@@ -1450,6 +1477,9 @@ static int st_pairs(Parser* p, const Bound* b) {
       item(vb->raw, j, nb, sizeof(nb));
       int gb = -1;
       if (strcmp(nb, "ground") && (gb = ref(p, SYM_ELLIPSOID, nb, vb->line, NULL)) < 0) {
+        return -1;
+      }
+      if (curv2(p, law, gb, nb, vb->line, what)) {
         return -1;
       }
       if (pairname(pn, b->name, na, nb)) {
