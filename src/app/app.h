@@ -303,6 +303,9 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
 int ura_model_state(uraCtx* c, const uraState* ns, const char* who);
 int ura_cmd_model(uraCtx* c, int argc, char** argv);
+/* the model parts as session commands: model drop for each built-in part missing, model load
+   for each loaded one */
+void ura_model_write_parts(uraCtx* c, FILE* f);
 
 /* the model cache (modelcache.c): the key of the live parts with st's overrides, and equality */
 void ura_model_key(const uraCtx* c, const uraState* st, uraModelKey* k);

@@ -11,11 +11,7 @@ static void write_state(uraCtx* c, FILE* f) {
   char val[2048];
   fprintf(f, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n");
   fprintf(f, "reset\n");
-  for (int i = 0; i < c->npart; i++) {
-    if (strcmp(c->part[i].origin, "built-in")) {
-      fprintf(f, "model load \"%s\"   # part %s\n", c->part[i].origin, c->part[i].name);
-    }
-  }
+  ura_model_write_parts(c, f);
   fprintf(f, "case %s\n", c->st.casename);
   for (const uraParam* p = ura_params; p->name; p++) {
     if (p->kind == uraP_CASE) continue;

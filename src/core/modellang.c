@@ -1690,6 +1690,10 @@ static int st_role(Parser* p, const urlStmt* st, Bound* b) {
     if (id < 0) {
       return -1;
     }
+    if (rk[i].kind == SYM_BODY && r->drone >= 0 && r->drone != id) {
+      return fail(p, v->line, "role drone: the model has a drone already (body '%s'); one model "
+                  "has one drone: drop the other drone's parts first", m->body[r->drone].name);
+    }
     if (rk[i].kind == SYM_BODY &&
         (m->body[id].parent >= 0 || m->body[id].jtype != urJNT_FREE)) {
       return fail(p, v->line, "role drone: body '%s' must have a free joint to the world (the "
