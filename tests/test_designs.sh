@@ -35,6 +35,11 @@ run -c "$S; case B; design save plain; case A; set bag_p0 1.2 atm; design save b
 run -c "source $TMP/d.ses; set format csv; design list; show case"
 check session_designs cond '[ $RC -eq 0 ] && grep -q "^plain,B," "$TMP/out" && grep -q "^bag,A,0,0,bag_p0=121590$" "$TMP/out" && grep -q "^case  *C$" "$TMP/out"'
 
+# the difference grid in grid show: its title and the diverging legend
+run -c "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag; grid show"
+check show_diff_title has "$TMP/out" '^P_b - P_a in %: '
+check show_diff_legend has "$TMP/out" '^legend: none 0 / no contact; safer <=-30 %; safer -30-0 %; riskier 0-30 %; riskier >=30 %$'
+
 # refusals
 run -c "design compare x y"
 check unknown_design has "$TMP/err" "design compare: no design 'x'"
@@ -44,4 +49,24 @@ run -c "set step 0.3; design save a; set step 0.2; design save b; design compare
 check steps_differ has "$TMP/err" "design compare: the designs' grid steps differ (0.3 and 0.2 m)"
 run -c "design frob"
 check usage has "$TMP/err" "design: usage: design save NAME"
+
+# the viewer shows the difference on a diverging scale (blue: B safer)
+if ! command -v tmux >/dev/null 2>&1; then
+  skip diff_viewer "tmux is not installed"
+  finish
+fi
+. tests/lib_tmux.sh
+start d1 120 40
+check d_prompt wait_for d1 'uasrisk\[A\]>'
+line d1 "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag"
+check d_compare wait_for d1 'plain +B +0\.[0-9]+ +bag' 20
+line d1 "view"
+check d_caption wait_for d1 'P_b - P_a in % \(blue: B safer, red: B riskier\)'
+check d_legend wait_for d1 'P_b - P_a: .*<=-30 %.*-30-0 %.*0-30 %.*>=30 %'
+grab d1 -e
+# a grid row (its dpar label, then cells) holds a blue cell: the legend alone does not count
+check d_blue grep -Eq "(^|m) *0\.00 .*$ESC\[([0-9;]*;)?(44|48;5;(25|153))(;[0-9;]*)?m" "$TMP/screen"
+keys d1 Enter
+check d_inspect_refused wait_for d1 'a difference grid has no impact of its own'
+keys d1 q
 finish
