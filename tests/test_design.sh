@@ -48,6 +48,16 @@ run -c "source $TMP/d.ses; set format csv; impact 0.1 0"
 sed -n '/^[-0-9]/p' "$TMP/out" >"$TMP/row2"
 check session_replays_design cond '[ $RC -eq 0 ] && [ -s "$TMP/row1" ] && cmp -s "$TMP/row1" "$TMP/row2"'
 
+# the speed vector set directly: speed and angle both set from it (3-4-5), and a flight
+run -c 'set velocity 3,4; show speed; show angle; set velocity 8,0; show angle'
+check velocity_speed has "$TMP/out" '^speed  *5 m/s  (set)$'
+check velocity_angle has "$TMP/out" '^angle  *53.13010235415[0-9]* deg  (set)$'
+check velocity_level has "$TMP/out" '^angle  *0 deg  (set)$'
+run -c "set format csv; case B; set velocity 8,0; impact aim head 0 0.05; set speed 8; set angle 0; impact aim head 0 0.05"
+check velocity_same_impact cond '[ "$(grep -c "^0,0.05," "$TMP/out")" -eq 2 ] && [ "$(grep "^0,0.05," "$TMP/out" | sort -u | wc -l)" -eq 1 ]'
+run -c 'set velocity -1,2'
+check velocity_refused has "$TMP/err" "set velocity: '-1,2' is not accepted; accepted: VH,VD in m/s"
+
 # the cases are the model's presets; an unknown one lists them
 run -c 'case Z'
 check case_unknown_lists_presets has "$TMP/err" "unknown case 'Z'; accepted: A, B, C, A1 or A2"
@@ -55,6 +65,8 @@ check case_unknown_lists_presets has "$TMP/err" "unknown case 'Z'; accepted: A, 
 # horizontal flight: aim runs it, an offset or a grid is refused with the way out
 run -c "set format csv; case B; set angle 0; set speed 8; impact aim head 0 0; contacts"
 check aim_horizontal_head cond '[ $RC -eq 0 ] && grep -q "^[a-z_0-9]*,head_cranium," "$TMP/out"'
+check aim_contacts_note has "$TMP/out" '^# impact aimed at the head, up and side (0, 0) m: '
+
 run -c 'case B; set angle 0; impact 0 0'
 check offset_refused_at_angle0 has "$TMP/err" "angle 0 deg: an offset Delta needs a descent.*impact aim head UP SIDE"
 run -c 'case B; set angle 0; set step 0.3; grid'

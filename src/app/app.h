@@ -143,6 +143,8 @@ typedef struct uraCtx {
   int have_impact;                 /* the work holds a finished impact */
   urImpactResult last_impact;
   double last_dpar, last_dperp;
+  int last_aim;                    /* the last impact was aimed (impact aim): the two are the
+                                      eccentricity up, side */
   uraModelCache* mcache;           /* other models with their stances (NULL until one is kept) */
   uraRecall* recall;               /* complete grids for recall (NULL until one is kept) */
   unsigned long tick;              /* use counter of both, for least-recently-used eviction */

@@ -151,8 +151,9 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
     names[1 + j] = strdup(buf);
   }
   uraTable* t = ura_table_new(ncol, (const char* const*)names);
-  ura_table_note(t, "impact at (%g, %g) m; t in s from tau; SI units; engine frames "
-                 "(uasrisk-model(5))", c->last_dpar, c->last_dperp);
+  ura_table_note(t, "impact %s (%g, %g) m; t in s from tau; SI units; engine frames "
+                 "(uasrisk-model(5))", c->last_aim ? "aimed at the head, up and side" : "at",
+                 c->last_dpar, c->last_dperp);
   for (int r = 0; r < d->nhist; r++) {
     for (int k = 0; k < ncol; k++) ura_table_cell(t, "%.9g", d->hist[(size_t)r * ncol + k]);
   }
@@ -187,8 +188,9 @@ int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"drone", "person", "first", "last", "peak_force",
                                      "peak_time"};
   uraTable* t = ura_table_new(6, cols);
-  ura_table_note(t, "impact at (%g, %g) m: %d pair%s touched; t in s from tau, force in N",
-                 c->last_dpar, c->last_dperp, n, n == 1 ? "" : "s");
+  ura_table_note(t, "impact %s (%g, %g) m: %d pair%s touched; t in s from tau, force in N",
+                 c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar,
+                 c->last_dperp, n, n == 1 ? "" : "s");
   for (int i = 0; i < n; i++) {
     int k = idx[i], src = s->cand_src[k];
     const char* drone = src < m->npair ? m->geom[s->cand[k][0]].name
@@ -216,12 +218,14 @@ void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpac
   c->last_impact = *r;
   c->last_dpar = dpar;
   c->last_dperp = dperp;
+  c->last_aim = cond->aim;
   char w[32];
   if (isfinite(wind)) snprintf(w, sizeof w, "%g m/s", wind);
   else snprintf(w, sizeof w, "?");
   snprintf(impact_title, sizeof impact_title, "case %s, wind %s, face %g deg, %.3g m/s at %.3g "
-           "deg\nimpact at dpar %.2f m, dperp %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
-           casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle, dpar,
+           "deg\nimpact %s %.2f m, %s %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
+           casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle,
+           cond->aim ? "aimed at the head, up" : "at dpar", dpar, cond->aim ? "side" : "dperp",
            dperp, r->inj.hic15.hic, r->inj.nij.nij, r->contact ? r->p : 0.0);
 }
 

@@ -1,6 +1,7 @@
 /* design.c: design parameters and the models they reach: 'set mass' as the descent's and
  * parametric model's mass and the multibody drone's total (its masses and inertias scaled, its
  * geometry kept), and what each setting changes (set's note at the prompt, show's marks) */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -31,6 +32,7 @@ static const struct {
   {"pitch", 1, "the drone's attitude at impact (impact, grid)"},
   {"roll", 1, "the drone's attitude at impact (impact, grid)"},
   {"yaw", 1, "the drone's attitude at impact (impact, grid)"},
+  {"velocity", 1, "the impact speed and angle (both set; impact, grid)"},
   {NULL, 0, NULL}
 };
 
@@ -87,7 +89,32 @@ const char* ura_design_mark(uraCtx* c, const char* name, char* buf, size_t n) {
   return buf;
 }
 
+/* set velocity VH,VD: the speed vector in the course's vertical plane (horizontal along the
+   course, downward; m/s) as the speed and angle it makes, both set */
+static int set_velocity(uraCtx* c, const char* value, const char* unit) {
+  double v[3];
+  int n = ura_parse_list(value, v, 3);
+  if (unit || n != 2 || !(v[0] >= 0) || !(v[1] >= 0)) {
+    return ura_fail(c, "set velocity: '%s%s%s' is not accepted; accepted: VH,VD in m/s (the "
+                    "horizontal speed along the course and the downward speed, each >= 0; no "
+                    "unit)", value, unit ? " " : "", unit ? unit : "");
+  }
+  char sp[64], an[64];
+  snprintf(sp, sizeof sp, "%.17g", hypot(v[0], v[1]));
+  snprintf(an, sizeof an, "%.17g", atan2(v[1], v[0]) * 180 / M_PI);
+  uraState keep = c->st;
+  if (ura_param_set(c, ura_param_find("speed"), sp) ||
+      ura_param_set(c, ura_param_find("angle"), an)) {
+    char why[uraERRLEN];
+    snprintf(why, sizeof why, "%s", c->err);
+    c->st = keep;
+    return ura_fail(c, "set velocity: %.900s", why);
+  }
+  return 0;
+}
+
 int ura_design_set(uraCtx* c, const char* name, const char* value, const char* unit) {
+  if (!strcmp(name, "velocity")) return set_velocity(c, value, unit);
   if (strcmp(name, "mass")) return 1;
   const uraParam* p = ura_param_find("mass");
   if (unit) {
