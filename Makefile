@@ -7,8 +7,9 @@
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
 #                 zero-wind grids; src/models/calibrate.spec, uasrisk-model(5)); build/calibration/
-#   make sensitivity  Table 17 under each public alternative for an unknown, calibrated again
-#                 (scripts/sensitivity.sh; build/sensitivity/; STEP=0.1 for a quick look)
+#   make sensitivity  how far Table 17 moves with one unknown the calibration does not set
+#                 moved in its public range, at the shipped models (scripts/sensitivity.sh;
+#                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
 #   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
 #                 session under valgrind (scripts/check-san.sh)
 #   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions or FUZZ_SECONDS
@@ -115,7 +116,8 @@ calibrate: all $(BUILD)/calibrate
 
 # how far the public ranges of the unknowns move Table 17 (scripts/sensitivity.sh); minutes
 sensitivity: all
-	@sh scripts/sensitivity.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/sensitivity-step$(STEP))
+	@sh scripts/sensitivity.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/sensitivity-step$(STEP)) \
+	  $(if $(VARIANTS),-v $(VARIANTS))
 
 # the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run);
 # its lanes are the portable vector code without the AVX2 clones (urNO_CLONES), so that the

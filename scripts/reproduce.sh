@@ -12,10 +12,11 @@
 # DIR receives raw.csv (everything uasrisk printed), raw.err, run.txt (date, commit, machine, wall
 # time of the run), report.md, and the CSV files the report describes. The paper's numbers come
 # from $PAPER_VALUES and its P{F|Delta} grids from $PAPER_GRIDS (sessions/paper/README.md); the
-# comparison is made by scripts/reproduce.awk. Without any of them nothing is run: one line names
-# the missing file and the status is 1. Environment: UASRISK (default ./uasrisk), PAPER_VALUES
-# (default sessions/paper/values.csv), PAPER_GRIDS (default sessions/paper/grids). Run from the
-# source directory.
+# comparison is made by scripts/reproduce.awk, with the labels and the scoring of Table 17 of
+# scripts/table17.awk (which 'make sensitivity' shares). Without any of them nothing is run: one
+# line names the missing file and the status is 1. Environment: UASRISK (default ./uasrisk),
+# PAPER_VALUES (default sessions/paper/values.csv), PAPER_GRIDS (default sessions/paper/grids).
+# Run from the source directory.
 set -u
 out=build/reproduce step="" norun=0
 UASRISK=${UASRISK:-./uasrisk}
@@ -147,7 +148,7 @@ recalled=$(awk '/^# recalled: the grid is / { n++ }
                 /^# recalled: the grids of / { s = $0; sub(/^# recalled: the grids of [a-z]+ /, "", s)
                                                sub(/ are identical.*/, "", s); n += split(s, x, ",") }
                 END { print n + 0 }' "$out/raw.csv")
-awk -f scripts/reproduce.awk -v out="$out" -v values="$PAPER_VALUES" \
+awk -f scripts/table17.awk -f scripts/reproduce.awk -v out="$out" -v values="$PAPER_VALUES" \
     -v run="$out/run.txt" -v loads="$out/paper-load.txt" -v recalled="$recalled" \
     "$out/raw.csv" || exit 1
 echo "reproduce: report in $out/report.md"

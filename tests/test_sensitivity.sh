@@ -1,44 +1,96 @@
-# test_sensitivity.sh: 'make sensitivity' (scripts/sensitivity.sh) on coarse 0.2 m grids: the
-# shipped variant is the plain grids, ratios are ours over the paper's Table 17, a variant is
-# calibrated again to target (b) for case B and picks kappa from its list, unknown variants are
-# refused
+# test_sensitivity.sh: 'make sensitivity' (scripts/sensitivity.sh, sensitivity.awk) on coarse 0.2 m
+# grids with two variants: the CSV's header and 15 rows a variant (the shipped models always among
+# them), the shipped variant's Q is the plain grid's at the paper's speeds, ratio = q / paper_q
+# with paper_q Table 17's, the labels, Table 17 scored as 'make reproduce' scores it (A at 0 m/s
+# against the full-plane sum of the paper's Table 4 grid, A1 and A2 at 0 m/s against the printed
+# value or twice it: scripts/table17.awk, checked here on made-up values too), a variant's
+# settings are applied and derived from the shipped values, the summary counts what the CSV says,
+# and an unknown variant is refused with one line listing the variants.
 . tests/lib.sh
 
 S=$TMP/s
-sh scripts/sensitivity.sh -s 0.2 -v shipped,arm_k_1000 -o "$S" >"$TMP/out" 2>"$TMP/err"; RC=$?
+sh scripts/sensitivity.sh -s 0.2 -v nij_rescale_alt,foam_p_6 -o "$S" >"$TMP/out" 2>"$TMP/err"; RC=$?
 C=$S/sensitivity.csv
 check "sensitivity runs" [ "$RC" -eq 0 ]
-check "header" has "$C" '^variant,case,wind,foam_t,kappa,p_centre,q,paper_q,ratio$'
-check "15 rows per variant" cond '[ "$(grep -c "^shipped," "$C")" -eq 15 ] &&
-  [ "$(grep -c "^arm_k_1000," "$C")" -eq 15 ]'
+check "header" has "$C" '^variant,case,wind,q,paper_q,ratio,label,ratio_twice,reference,scored_ratio,within_1.3$'
+check "15 rows per variant, shipped always run" cond '[ "$(grep -c "^shipped," "$C")" -eq 15 ] &&
+  [ "$(grep -c "^nij_rescale_alt," "$C")" -eq 15 ] && [ "$(grep -c "^foam_p_6," "$C")" -eq 15 ] &&
+  [ "$(lines "$C")" -eq 46 ]'
 
-# the shipped variant's Q is the plain grid's
-q=$("$UASRISK" -c 'set format csv; set step 0.2; set wind 4; case B; grid' | awk -F, 'NF == 10 && $1 == "B" { print $9 }')
-check "shipped B@4 is the grid's Q" cond '[ -n "$q" ] && grep -q "^shipped,B,4,model,model,[^,]*,$q,0.382," "$C"'
+# the shipped variant's Q is the plain grid's, at the paper's Table 2 speeds
+q=$("$UASRISK" -c 'set format csv; set descent paper; set step 0.2; set wind 4; case B; grid' |
+  awk -F, 'NF == 10 && $1 == "B" { print $9 }')
+q10=$("$UASRISK" -c 'set format csv; set descent paper; set step 0.2; set wind 10; case A2; grid' |
+  awk -F, 'NF == 10 && $1 == "A2" { print $9 }')
+check "shipped is the plain grids' Q" cond '[ -n "$q" ] && [ -n "$q10" ] &&
+  grep -q "^shipped,B,4,$q,0.382," "$C" && grep -q "^shipped,A2,10,$q10,0.452," "$C"'
 
-# every ratio is q / paper_q, and paper_q is Table 17's
-check "ratios" awk -F, 'NR > 1 { if ($9 - $7 / $8 > 0.0005 || $7 / $8 - $9 > 0.0005) bad = 1 }
-  END { exit bad }' "$C"
-check "paper values" cond 'grep -q "^shipped,C,0,model,model,[^,]*,[^,]*,0.849," "$C" &&
-  grep -q "^shipped,A2,10,model,model,[^,]*,[^,]*,0.452," "$C"'
+# every ratio is q / paper_q; paper_q is Table 17's
+check "ratio = q / paper_q" awk -F, 'NR > 1 { n++; if ($6 - $4 / $5 > 0.0005 || $4 / $5 - $6 > 0.0005) bad = 1 }
+  END { exit bad || n != 45 }' "$C"
+check "paper values" cond 'grep -q "^shipped,C,0,[^,]*,0.849," "$C" && grep -q "^shipped,A,0,[^,]*,0.031," "$C" &&
+  grep -q "^shipped,A1,4,[^,]*,0.086," "$C"'
+# training: the 0 m/s values of C, B and A, nothing else
+check "labels" awk -F, 'NR > 1 { t = ($3 == 0 && ($2 == "C" || $2 == "B" || $2 == "A")) ? "training" : "validation"
+  if ($7 != t) bad = 1 } END { exit bad }' "$C"
 
-# the variant is calibrated again: case B at zero wind within 0.002 of P = 0.64, with the found
-# foam_t; kappa one of the listed values
-check "B calibrated" awk -F, '$1 == "arm_k_1000" && $2 == "B" && $3 == 0 { found = 1
-  if ($6 < 0.638 || $6 > 0.642) bad = 1 } END { exit !found || bad }' "$C"
-ft=$(awk -F, '$1 == "arm_k_1000" { print $4; exit }' "$C")
-p=$("$UASRISK" -c "set format csv; case B; set arm_k 1000; set foam_t $ft; impact 0 0" | awk -F, '$1 == "0" { print $15 }')
-check "foam_t reproduces the target" awk -v p="$p" 'BEGIN { exit !(p >= 0.638 && p <= 0.642) }'
-check "kappa from the list" awk -F, '$1 == "arm_k_1000" { k[$5] = 1 } END { n = 0; for (x in k) n++
-  exit !(n == 1 && (x == 1 || x == 2 || x == 3 || x == 4 || x == 4.5 || x == 5 || x == 5.5 || x == 6 ||
-  x == 7 || x == 8)) }' "$C"
+# A at 0 m/s against the full-plane sum of Table 4's grid (0.0581 as grid load sums it)
+check "A at 0 m/s scoring" awk -F, '$2 == "A" && $3 == 0 { n++
+  if ($9 != "full-plane sum of Table 4" || $10 - $4 / 0.0581225 > 0.0005 || $4 / 0.0581225 - $10 > 0.0005) bad = 1 }
+  END { exit bad || n != 3 }' "$C"
+# A1 and A2 at 0 m/s: the ratio to twice the printed value beside; within if either is, and the
+# reference says which counts; every other row has no ratio_twice and counts against the printed
+check "A1, A2 at 0 m/s scoring" awk -F, 'NR > 1 && ($2 == "A1" || $2 == "A2") && $3 == 0 { n++
+  if ($8 - $4 / (2 * $5) > 0.0005 || $4 / (2 * $5) - $8 > 0.0005) bad = 1
+  in1 = $6 >= 1 / 1.3 && $6 <= 1.3; in2 = $8 >= 1 / 1.3 && $8 <= 1.3
+  if ($11 != (in1 || in2 ? "yes" : "no")) bad = 1
+  if (in1 && ($9 != "printed (twice it: out)" || $10 != $6)) bad = 1
+  if (!in1 && in2 && ($9 != "twice the printed (printed: out)" || $10 != $8)) bad = 1
+  if (!in1 && !in2 && $9 != "printed or twice it (both out)") bad = 1 }
+  NR > 1 && !(($2 == "A1" || $2 == "A2" || $2 == "A") && $3 == 0) {
+  if ($8 != "" || $9 != "printed" || $10 != $6) bad = 1 }
+  END { exit bad || n != 6 }' "$C"
+check "within = scored ratio in [1/1.3, 1.3]" awk -F, 'NR > 1 {
+  if ($11 != ($10 >= 1 / 1.3 && $10 <= 1.3 ? "yes" : "no")) bad = 1 } END { exit bad }' "$C"
 
-# the summary: a row per variant, with its count
-check "summary rows" cond 'grep -q "^| shipped | model | model | 0.640 |" "$S/sensitivity.md" &&
-  grep -q "^| arm_k_1000 | 0\.0[0-9]* | [0-9.]* | 0.64[0-2] | .* of 15 |" "$S/sensitivity.md"'
+# the scoring itself, on made-up values (the rule make reproduce uses, scripts/table17.awk)
+cat >"$TMP/t.awk" <<'EOF'
+BEGIN {
+  if (score17("A", 0, 0.0581, 0.031, 0.0581225) != "yes" || S17RATIO != "1.000") exit 1
+  if (score17("A", 0, 0.031, 0.031, 0.0581225) != "no" || S17REF != "full-plane sum of Table 4") exit 2
+  if (score17("A1", 0, 0.052, 0.026, 0.0581225) != "yes" || S17RATIO != "1.000" || S17R2 != "1.000" ||
+      S17REF != "twice the printed (printed: out)") exit 3
+  if (score17("A2", 0, 0.025, 0.025, "") != "yes" || S17REF != "printed (twice it: out)" || S17R2 != "0.500") exit 4
+  if (score17("A2", 0, 0.1, 0.025, "") != "no" || S17REF != "printed or twice it (both out)") exit 5
+  if (score17("B", 4, 0.5, 0.382, 0.0581225) != "no" || S17REF != "printed" || S17R2 != "") exit 6
+  if (score17("A", 4, "", 0.216, 0.0581225) != "") exit 7
+  if (setof("q", "A", 0) != "training" || setof("q", "A1", 0) != "validation" || setof("q", "C", 4) != "validation") exit 8
+  if (sprintf("%.7f", paper_fullsum("sessions/paper/grids/table04_caseA_wind0.csv")) != "0.0581225") exit 9
+}
+EOF
+check "scoring rule (table17.awk)" awk -f scripts/table17.awk -f "$TMP/t.awk"
 
-# an unknown variant: one line naming the ones there are, status 2
-sh scripts/sensitivity.sh -v nope -o "$TMP/x" >"$TMP/out" 2>"$TMP/err"; RC=$?
+# a variant's settings are applied: without the Nij rescale (or with it, if the shipped models
+# have none) Q moves; its settings are the other value of the shipped one
+r=$("$UASRISK" -c 'show nij_rescale' | awk '{ print $2 }')
+check "variant applied" awk -F, '$1 == "shipped" { s[$2, $3] = $4 } $1 == "nij_rescale_alt" && s[$2, $3] != $4 { d++ }
+  END { exit !(d > 0) }' "$C"
+check "variant settings from the shipped values" cond 'has "$S/variants.txt" "^nij_rescale_alt|set nij_rescale $((1 - r))|" &&
+  has "$S/sensitivity.md" "^| nij_rescale_alt | .set nij_rescale $((1 - r)). |"'
+# the arm damping ratios from the shipped arm_k and a hinge inertia of 0.07 kg m^2
+k=$("$UASRISK" -c 'show arm_k' | awk '{ print $2 }')
+c=$(awk -v k="$k" 'BEGIN { printf "%.3g", 2 * 0.2 * sqrt(k * 0.07) }')
+check "arm damping from the shipped arm_k" has "$S/variants.txt" "^arm_zeta_20|set arm_c $c|"
+
+# the summary: a row per variant that ran, its count that of the CSV
+n=$(awk -F, '$1 == "shipped" && $11 == "yes"' "$C" | wc -l | tr -d ' ')
+check "summary" cond 'has "$S/sensitivity.md" "^| shipped | $n of 15 (" &&
+  has "$S/sensitivity.md" "^| nij_rescale_alt | [0-9]* of 15 ([0-9], [0-9]*) | [0-9.]*-[0-9.]* | [-+][0-9.]* ([A-C12]*@[0-9]*) |" &&
+  [ "$(grep -c "^| [a-z_0-9]* | [0-9]* of 15 " "$S/sensitivity.md")" -eq 3 ]'
+
+# an unknown variant: one line naming the ones there are, status 2, nothing written
+sh scripts/sensitivity.sh -v foam_p_6,nope -o "$TMP/x" >"$TMP/out" 2>"$TMP/err"; RC=$?
 check "unknown variant refused" cond '[ "$RC" -eq 2 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
-  has "$TMP/err" "no variant .nope.; the variants are: shipped recal arm_k_100"'
+  has "$TMP/err" "^sensitivity: no variant .nope.; the variants are: shipped foam_r_01 .* tau_top$" &&
+  [ ! -e "$TMP/x" ]'
 finish

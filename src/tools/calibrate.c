@@ -492,7 +492,7 @@ int main(int argc, char** argv) {
     gsl_multimin_fminimizer* nm =
       gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, s.nfree);
     double before = INFINITY;
-    for (int run = 0; run <= s.restarts && before - F.best >= s.gain; run++) {
+    for (int run = 0; run <= s.restarts && (run == 0 || before - F.best >= s.gain); run++) {
       before = F.best;
       for (int j = 0; j < s.nfree; j++) {
         gsl_vector_set(z, j, to_z(s.f + j, run ? F.bestx[j] : x[j]));
