@@ -1,6 +1,7 @@
 /* designs.c: designs side by side: 'design save NAME' keeps the live case's full state (every
  * setting and model parameter), 'design compare A B' runs a grid for each and prints both Q and
  * their ratio, leaving the difference grid P_b - P_a as the last grid */
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,14 +23,13 @@ static uraDesign* find(uraCtx* c, const char* name) {
   return NULL;
 }
 
+/* a name: a letter or '_', then letters, digits, '_', '.' or '-'; at most urNAMELEN - 1 */
 static int valid_name(const char* s) {
-  if (!*s || strlen(s) >= urNAMELEN || !(s[0] == '_' || (s[0] | 32) >= 'a')) return 0;
+  if (!(isalpha((unsigned char)s[0]) || s[0] == '_') || strlen(s) >= urNAMELEN) return 0;
   for (const char* p = s; *p; p++) {
-    int ok = (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
-             *p == '_' || *p == '.' || *p == '-';
-    if (!ok) return 0;
+    if (!(isalnum((unsigned char)*p) || *p == '_' || *p == '.' || *p == '-')) return 0;
   }
-  return ((s[0] | 32) >= 'a' && (s[0] | 32) <= 'z') || s[0] == '_';
+  return 1;
 }
 
 static int design_save(uraCtx* c, const char* name) {

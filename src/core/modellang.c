@@ -1775,8 +1775,8 @@ static int st_preset(Parser* p, const urlStmt* st) {
     double f = 1, x;
     char ctx[80];
     snprintf(ctx, sizeof(ctx), "preset '%s' key '%s'", name, key);
-    int ref_ = v[0] == '$' || (v[0] == '-' && v[1] == '$');
-    if (!ref_ && k > 0 && k < vn) {
+    int isref = v[0] == '$' || (v[0] == '-' && v[1] == '$');
+    if (!isref && k > 0 && k < vn) {
       if (ur_unit_si(v + k, &f)) {
         return fail(p, line, "%s: unknown unit '%s'; expected a unit of a param line (atm, kg, "
                     "mm, ...)", ctx, quote(v + k, vn - k).s);
