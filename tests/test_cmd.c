@@ -55,6 +55,37 @@ static int count_lines(const char* s, const char* prefix) {
   return n;
 }
 
+/* at the prompt each set says which models it changes (design.c); a script stays quiet */
+static void set_says_reach(void** state) {
+  fixture* f = *state;
+  char* msg = NULL;
+  size_t n = 0;
+  FILE* old = f->c.msg;
+  f->c.msg = open_memstream(&msg, &n);
+  run(f, "set width 2", 0);                         /* not interactive: no note */
+  fflush(f->c.msg);
+  assert_int_equal(n, 0);
+  f->c.interactive = 1;
+  run(f, "set width 2", 0);
+  run(f, "set mass 12", 0);
+  run(f, "set arm_k 7000", 0);
+  run(f, "set drone_size 1.1", 0);
+  run(f, "set wind 3", 0);                          /* no note: obvious */
+  fclose(f->c.msg);
+  f->c.msg = old;
+  assert_non_null(strstr(msg, "set width: changes the parametric model only"));
+  assert_non_null(strstr(msg, "set mass: changes the descent and parametric models and the "
+                          "multibody drone"));
+  assert_non_null(strstr(msg, "set arm_k: changes the multibody model (impact, grid)"));
+  assert_non_null(strstr(msg, "set drone_size: changes the multibody drone's size"));
+  assert_null(strstr(msg, "set wind"));
+  free(msg);
+  /* show marks what the multibody model does not use, and the drone's total */
+  assert_non_null(strstr(run(f, "show width", 0), "(not used by the multibody model)"));
+  assert_non_null(strstr(run(f, "show mass", 0), "(multibody drone: 12 kg)"));
+  assert_null(strstr(run(f, "show step", 0), "multibody"));
+}
+
 static void set_and_show(void** state) {
   fixture* f = *state;
   run(f, "set wind 4", 0);
@@ -312,6 +343,7 @@ int main(void) {
     cmocka_unit_test_setup_teardown(dry_mode, setup, teardown),
     cmocka_unit_test_setup_teardown(model_reuse, setup, teardown),
     cmocka_unit_test_setup_teardown(set_and_show, setup, teardown),
+    cmocka_unit_test_setup_teardown(set_says_reach, setup, teardown),
     cmocka_unit_test_setup_teardown(bad_values_leave_state, setup, teardown),
     cmocka_unit_test_setup_teardown(cases, setup, teardown),
     cmocka_unit_test_setup_teardown(descent_paper, setup, teardown),

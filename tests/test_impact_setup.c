@@ -278,17 +278,18 @@ static void donor_chain(void** state) {
 
 /* a small drone of its own part, placed before or after the person */
 static const char DRONE[] =
-  "# a drone of one body and one arm\n"
-  "body main parent=world joint=free pos=0,0,0 mass=10 inertia=0.5,0.4,0.7\n"
-  "body arm parent=main joint=revolute pos=0.2,0,0 axis=0,1,0 mass=0.5 com=0.2,0,0 "
+  "# a drone of one body and one arm, whose root is not called main: its role says so\n"
+  "body hub parent=world joint=free pos=0,0,0 mass=10 inertia=0.5,0.4,0.7\n"
+  "body arm parent=hub joint=revolute pos=0.2,0,0 axis=0,1,0 mass=0.5 com=0.2,0,0 "
   "inertia=0.001,0.002,0.003\n"
   "restraint arm dof=0 k=$arm_k c=1\n"
-  "ellipsoid frame body=main pos=0,0,0 size=0.3,0.3,0.1\n"
+  "role drone=hub\n"
+  "ellipsoid frame body=hub pos=0,0,0 size=0.3,0.3,0.1\n"
   "ellipsoid arm_tube body=arm pos=0.2,0,0 size=0.2,0.03,0.03\n";
 static const char DRONE_PARAM[] = "# the arm stiffness\nparam arm_k 840\n";
 static const char DRONE_HUGE[] =
   "# a drone whose bounding sphere reaches down to the person\n"
-  "ellipsoid far body=main pos=0,0,0 size=9999,0.1,0.1\n";
+  "ellipsoid far body=hub pos=0,0,0 size=9999,0.1,0.1\n";
 static const char DRONE_SELF[] =
   "# a drone touching itself\n"
   "law self type=table load=tissue_load damping=10 mu=0 v_eps=0.01\n"

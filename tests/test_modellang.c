@@ -416,7 +416,7 @@ static const struct {
 } bad[] = {
   {PRE "bdy c parent=world\n",
    "x.urm:4: unknown keyword 'bdy'; expected one of param, option, curve, body, restraint, "
-   "ellipsoid, law, pair, pairs, airbag, sensor, part"},
+   "ellipsoid, law, pair, pairs, airbag, sensor, part, role, preset"},
   {PRE BODY_C "mass=\n", "x.urm:4: missing value for key 'mass'; expected mass=VALUE"},
   {PRE BODY_C "mass=1 colour=red\n", "x.urm:4: unknown key 'colour' for body; expected one of "
    "parent, joint, pos, quat, rot, mass, com, inertia, axis, axis2, jname, gravity, enable"},
@@ -656,6 +656,96 @@ static void test_short_err(void** state) {
   assert_null(ur_model_parse(&src, 1, NULL, 0, NULL, 0));
 }
 
+//---------------------------------- roles and presets --------------------------------------------
+
+/* role statements name the drone, head and sensors (any names: the model's own); presets keep
+   model parameters in SI (a unit after the number) and workbench settings as written */
+static void test_roles_presets(void** state) {
+  char err[256];
+  char* text = malloc(strlen(model_text) + 600);
+  strcpy(text, model_text);
+  strcat(text,
+         "sensor hp type=bodypos obj=neck\n"
+         "role drone=ra3 head=head head_acc=head_acc neck=neck_load\n"
+         "role head_pos=hp chest=neck_q\n"
+         "preset X p0=1.5atm use_bag=1 area_chute=0\n"
+         "preset Y2 p0=$p0 L=20mm\n");
+  urModel* m = parse1(text, NULL, 0, err);
+  assert_non_null(m);
+  const urRoles* r = &m->roles;
+  assert_int_equal(r->drone, ur_name_body(m, "ra3"));
+  assert_int_equal(r->head, ur_name_geom(m, "head"));
+  assert_int_equal(r->head_acc, ur_name_sensor(m, "head_acc"));
+  assert_int_equal(r->neck, ur_name_sensor(m, "neck_load"));
+  assert_int_equal(r->head_pos, ur_name_sensor(m, "hp"));
+  assert_int_equal(r->chest, ur_name_sensor(m, "neck_q"));
+  assert_int_equal(r->abdomen, -1);
+  assert_int_equal(r->mass_param, -1);
+  assert_near(r->mass0, 15, 0);
+  assert_int_equal(m->npreset, 2);
+  const urPreset* x = m->preset;
+  assert_string_equal(x->name, "X");
+  assert_int_equal(x->n, 3);
+  assert_string_equal(x->key[0], "p0");
+  assert_near(x->value[0], 1.5 * 101325, 1e-9);
+  assert_int_equal(x->param[0], ur_name_param(m, "p0"));
+  assert_int_equal(x->param[1], ur_name_param(m, "use_bag"));
+  assert_string_equal(x->key[2], "area_chute");
+  assert_int_equal(x->param[2], -1);            /* a workbench setting */
+  assert_near(x->value[2], 0, 0);
+  assert_near(m->preset[1].value[0], 1.1 * 101325, 1e-9);
+  assert_near(m->preset[1].value[1], 0.02, 1e-15);
+  ur_model_free(m);
+
+  /* without role statements nothing is declared */
+  m = parse1(model_text, NULL, 0, err);
+  assert_non_null(m);
+  assert_int_equal(m->roles.drone, -1);
+  assert_int_equal(m->roles.head, -1);
+  assert_int_equal(m->npreset, 0);
+  ur_model_free(m);
+
+  /* one error per wrong statement, on its line */
+  static const struct {
+    const char* add;
+    const char* msg;
+  } wrong[] = {
+    {"role drone=pivot\n", "t.urm:43: role drone: body 'pivot' must have a free joint to the "
+     "world (the drone is placed and launched by it)"},
+    {"role head_acc=neck_load\n", "t.urm:43: role head_acc: sensor 'neck_load' must be of "
+     "type=accel"},
+    {"role drone=nosuch\n", "t.urm:43: role: dangling reference to body 'nosuch'*"},
+    {"role mass=15\n", "t.urm:43: role mass: expected a parameter ($NAME) that the workbench can "
+     "set, got '15'"},
+    {"role main\n", "t.urm:43: role takes key=value pairs only (no name)"},
+    {"preset LONGNAME p0=1\n", "t.urm:43: preset 'LONGNAME': a preset name has at most 7 "
+     "characters (it labels the rows of tables)"},
+    {"preset A p0=1 p0=2\n", "t.urm:43: preset 'A': duplicate key 'p0'; a key may appear once"},
+    {"preset A p0=1furlong\n", "t.urm:43: preset 'A' key 'p0': unknown unit 'furlong'*"},
+    {"preset A mass=15kg\n", "t.urm:43: preset 'A' key 'mass': a unit is taken only by model "
+     "parameters*"},
+    {"preset A p0\n", "t.urm:43: preset 'A': expected key=value, got 'p0'*"},
+    {"preset A p0=x\n", "t.urm:43: preset 'A' key 'p0': 'x' is not a number*"},
+    {"preset A p0=1\npreset A p0=2\n", "t.urm:44: duplicate preset name 'A'*"},
+  };
+  int failures = 0;
+  for (size_t i = 0; i < sizeof(wrong)/sizeof(wrong[0]); i++) {
+    strcpy(text, model_text);
+    strcat(text, wrong[i].add);
+    char e[256] = "";
+    urModel* mm = parse1(text, NULL, 0, e);
+    size_t n = strlen(wrong[i].msg);
+    int prefix = wrong[i].msg[n - 1] == '*';
+    if (mm || (prefix ? strncmp(e, wrong[i].msg, n - 1) : strcmp(e, wrong[i].msg))) {
+      print_error("case %d: got '%s'\n  expected '%s'\n", (int)i, e, wrong[i].msg);
+      failures++;
+    }
+    ur_model_free(mm);
+  }
+  free(text);
+  assert_int_equal(failures, 0);
+}
+
 //---------------------------------- pairs ---------------------------------------------------------
 
 /* 'pairs' makes one pair NAME_A_B per combination of the two lists */
@@ -850,6 +940,7 @@ int main(void) {
     cmocka_unit_test(test_malformed),
     cmocka_unit_test(test_scales_lock_sat),
     cmocka_unit_test(test_short_err),
+    cmocka_unit_test(test_roles_presets),
     cmocka_unit_test(test_pairs),
     cmocka_unit_test(test_degree),
     cmocka_unit_test(test_sources),

@@ -53,20 +53,22 @@ check stderr_empty [ ! -s "$TMP/err" ]
 
 # sweep show: every kept value, in increasing order, with what changed from the preset
 sed -n '/^# 5 sweeps kept/,$p' "$TMP/out" >"$TMP/show"
-check show_header [ "$(sed -n 2p "$TMP/show")" = "case,sweep,wind,face,speed,angle,step,q,changes" ]
+check show_header [ "$(sed -n 2p "$TMP/show")" = "case,sweep,wind,face,speed,angle,step,q,changes,value,unit" ]
 check show_rows [ "$(grep -c '^[ABC1-2]*,' "$TMP/show")" -eq 8 ]
-check accumulates cond '[ "$(grep -c "^C,wind,[02],0,.*,0.3,.*,none$" "$TMP/show")" -eq 2 ]'
-check replaced cond '[ "$(grep -c "^B,wind,[02],0,.*,none$" "$TMP/show")" -eq 2 ]'
-check increasing cond 'grep "^B,wind,[02],0,.*,none$" "$TMP/show" | cut -d, -f3 | tr "\n" " " |
+check accumulates cond '[ "$(grep -c "^C,wind,[02],0,.*,0.3,.*,none,[^,]*,[^,]*$" "$TMP/show")" -eq 2 ]'
+check replaced cond '[ "$(grep -c "^B,wind,[02],0,.*,none,[^,]*,[^,]*$" "$TMP/show")" -eq 2 ]'
+check increasing cond 'grep "^B,wind,[02],0,.*,none,[^,]*,[^,]*$" "$TMP/show" | cut -d, -f3 | tr "\n" " " |
   grep -q "^0 2 $"'
-check other_face grep -q '^B,wind,0,90,7.480,90.00,0.3,0\.[0-9]*,none$' "$TMP/show"
-check what_if cond '[ "$(grep -c ",area_chute=3$" "$TMP/show")" -eq 3 ] &&
-  grep -q "^B,face,0,180,.*,area_chute=3$" "$TMP/show"'
+check other_face grep -q '^B,wind,0,90,7.480,90.00,0.3,0\.[0-9]*,none,[^,]*,[^,]*$' "$TMP/show"
+check what_if cond '[ "$(grep -c ",area_chute=3,[^,]*,[^,]*$" "$TMP/show")" -eq 3 ] &&
+  grep -q "^B,face,0,180,.*,area_chute=3,[^,]*,[^,]*$" "$TMP/show"'
 # the same Q as the sweep's own rows
 q_sweep=$(grep '^C,2,0,' "$TMP/out" | head -1 | cut -d, -f6)
-check same_q grep -q "^C,wind,2,0,.*,$q_sweep,none$" "$TMP/show"
+check same_q grep -q "^C,wind,2,0,.*,$q_sweep,none,[^,]*,[^,]*$" "$TMP/show"
 
 # export sweep: the same rows as a CSV file, with the usual file mode
+# the swept value and its unit close each row
+check show_value_unit grep -q '^C,wind,2,0,.*,2,m/s$' "$TMP/show"
 check export_rows cond '[ "$(grep -v "^#" "$TMP/sweeps.csv")" = "$(grep -v "^#" "$TMP/show")" ]'
 check export_mode [ "$(stat -c %a "$TMP/sweeps.csv")" = 644 ]
 
@@ -108,9 +110,9 @@ check paper_rows cond 'has "$TMP/out" "^A,0,0,7.500,90.00," && has "$TMP/out" "^
 check model_rows cond 'has "$TMP/out" "^A,0,0,7.480,90.00," && has "$TMP/out" "^A,4,0,8.482,61.86,"'
 check paper_note has "$TMP/out" "^# speed and angle: the paper's Table 2, case B's column, at each wind ('set descent paper'), not the descent model$"
 check tau_note has "$TMP/out" '^# tau top: Delta is taken when the drone centre reaches head-top level, 0\.8[0-9]* m further along'
-check paper_changes cond 'has "$TMP/out" "^A,wind,4,0,8.500,62.00,0.3,[0-9.]*,descent=paper$" &&
-  has "$TMP/out" "^A,wind,4,0,8.482,61.86,0.3,[0-9.]*,none$" &&
-  has "$TMP/out" "^A,wind,10,0,12.500,37.00,0.3,[0-9.]*,descent=paper tau=top$"'
+check paper_changes cond 'has "$TMP/out" "^A,wind,4,0,8.500,62.00,0.3,[0-9.]*,descent=paper,[^,]*,[^,]*$" &&
+  has "$TMP/out" "^A,wind,4,0,8.482,61.86,0.3,[0-9.]*,none,[^,]*,[^,]*$" &&
+  has "$TMP/out" "^A,wind,10,0,12.500,37.00,0.3,[0-9.]*,descent=paper tau=top,[^,]*,[^,]*$"'
 run -c 'set step 0.3; set descent paper; case C; sweep wind 0,5,10'
 check paper_refused cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "sweep wind: descent paper: wind 5 m/s is not printed in the paper.s Table 2; accepted: wind 0, 2, 4, 6, 8 or 10 m/s" &&

@@ -20,7 +20,7 @@ check history_plot cond 'has "$TMP/out" "HIC15 window [0-9.]*-[0-9.]* ms" &&
 check grid_coarse has "$TMP/out" '^   B     0  7.480  90.00     0  0.25 '
 check grid_show has "$TMP/out" 'Q = 0\.[0-9]* m^2 over the full plane'
 check three_sweeps cond 'has "$TMP/out" "^# 3 sweeps kept" &&
-  [ "$(grep -c "^ *\(B\|A\|A1\)   wind  *\(0\|5\|10\)  *0 .* 0.25 .*none$" "$TMP/out")" -eq 9 ]'
+  [ "$(grep -c "^ *\(B\|A\|A1\)   wind  *\(0\|5\|10\)  *0 .* 0.25 .*none  *[0-9.]*  *m/s$" "$TMP/out")" -eq 9 ]'
 check sweep_plot cond 'has "$TMP/out" "Q against horizontal wind; cases B, A, A1, face 0 deg" &&
   has "$TMP/out" "case A1"'
 finish

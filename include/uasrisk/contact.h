@@ -121,6 +121,15 @@ typedef struct {
   double dres;                     /* residual depth after unloading (permanent set) */
 } urLawState;
 
+/* the Hertz radius of ellipsoids a and b (NULL: the ground plane) from their curvature at the
+   contact gc: 1 / sqrt(det(K_A + K_B)), the curvature tensors in the tangent plane at gc's
+   deepest points (degree-2 ellipsoids), at most urHERTZ_RMAX (flat on flat), m
+   (contact_curv.c). A Hertz law whose radius is urHERTZ_CURVATURE takes it so at every contact
+   (engine_contact.c). */
+#define urHERTZ_CURVATURE (-1.0)
+#define urHERTZ_RMAX 10.0
+double ur_contact_radius(const urEllipsoid* a, const urEllipsoid* b, const urGeomContact* gc);
+
 /* fill a Hertz law from the two materials (R2 = 0 means a flat) */
 void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, double nu2, double R2,
                   double sy, double nu_yield, int plastic);

@@ -181,6 +181,30 @@ typedef struct {
   double value;
 } urParam;
 
+/* the roles an impact needs, declared by the model's role statements (uasrisk-model(5)), and
+   the drone's design handles; -1: not declared */
+typedef struct {
+  int drone;                       /* root body of the drone (free joint) */
+  int head;                        /* head ellipsoid: its top sets the start height, its centre
+                                      is the aim point */
+  int head_acc, neck, head_pos;    /* sensors: head CG acceleration, upper-neck load, head CG */
+  int chest, abdomen;              /* sensors: thorax and abdomen deflections (optional) */
+  int mass_param, size_param;      /* parameters the drone tree is scaled by (role mass=$P,
+                                      size=$P) */
+  double mass0;                    /* the drone tree's total mass as written, kg (0: no drone) */
+  double mass_scale, size_scale;   /* the factors applied (1: as written) */
+} urRoles;
+
+/* a case preset (preset statement): values for model parameters (SI) and workbench settings */
+#define urMAXPRESET 24
+typedef struct {
+  char name[urNAMELEN];
+  int n;
+  char key[urMAXPRESET][urNAMELEN];
+  double value[urMAXPRESET];
+  int param[urMAXPRESET];          /* index of a model parameter, or -1: a workbench setting */
+} urPreset;
+
 typedef struct {
   double dt;                       /* time step, s (default 1e-5) */
   double gravity[3];               /* m/s^2 (default 0, 0, -9.81) */
@@ -216,6 +240,9 @@ typedef struct {
   urAirbag* bag;                   /* nbag */
   urSensor* sensor;                /* nsensor */
   urParam* param;                  /* nparam */
+  urRoles roles;                   /* role statements */
+  urPreset* preset;                /* npreset, in the order of the text */
+  int npreset;
   double* qpos0;                   /* nq: reference configuration */
   // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
   // an active restraint, with a load curve (its extremes are tracked), whose reaction is needed
@@ -239,6 +266,8 @@ typedef struct __attribute__((aligned(64))) {
   double u[3];                     /* warm-start direction */
   double n[3];                     /* normal A -> B, world */
   double p[3];                     /* contact point, world, m */
+  double radius;                   /* Hertz radius from the shapes' curvature at the contact, m
+                                      (a law with urHERTZ_CURVATURE; else unused) */
 } urPairData;
 
 typedef struct {
@@ -373,6 +402,15 @@ int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj
 
 /* Named parameter (set or overwrite). */
 int ur_model_set_param(urModel* m, const char* name, double value);
+
+/* The total mass of the tree rooted at body root (before or after compiling), kg. */
+double ur_model_tree_mass(const urModel* m, int root);
+
+/* Before compiling: scale the tree rooted at root (a design change): masses and inertias by
+   fmass, and its size by fsize (joint anchors below the root, centres of mass, ellipsoids,
+   sensor points, airbag thicknesses; airbag volumes by fsize^3, inertias by fsize^2). Laws,
+   restraints and the root's own placement are kept. 0, or -1 (compiled, bad arguments). */
+int ur_model_scale_tree(urModel* m, int root, double fmass, double fsize);
 
 /* Compile: check, assign addresses, reference configuration. 0 on success, else -1 and m->err. */
 int ur_model_compile(urModel* m);

@@ -36,7 +36,7 @@ extern "C" {
    person (ur_impact_prepare); opaque */
 typedef struct urStance urStance;
 
-/* the roles the impact needs, found by name in the model */
+/* the roles the impact needs, as the model declares them (urModel.roles) */
 typedef struct {
   const urModel* m;
   int drone;                       /* root body of the drone (free joint) */
@@ -76,6 +76,9 @@ typedef struct {
   double face;                     /* face direction phi, deg */
   double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
   int tau;                         /* urTau: the moment Delta is taken (0: the paper's text) */
+  int aim;                         /* 1: (dpar, dperp) are not an offset at tau but the
+                                      eccentricity (up, side) of the drone's line of travel from
+                                      the head's centre (aim mode, below); any angle 0-90 deg */
 } urImpactCond;
 
 /* what one of the pairs through which the drone acts (urImpactSetup.cand) did during an impact */
@@ -116,8 +119,8 @@ typedef struct {
    largest joint deflection of the last settling, rad or m. 0, or -1 if the settling failed. */
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual);
 
-/* find the roles by name (drone root "main", head ellipsoid "head_cranium", sensors head_acc,
-   neck_load, chest_defl, abd_defl), compute R_max, settle the stance (settle_time s of gravity)
+/* take the roles the model declares (urModel.roles: drone, head, head_acc, neck, head_pos,
+   chest, abdomen), compute R_max, settle the stance (settle_time s of gravity)
    and check it; 0 or -1 with s->err. The stance is a state of rest: the person as settled, every
    velocity zero, the drone parked far above in its reference posture with no restraint or contact
    history (while the person settles, the drone is held there at rest). */
@@ -148,7 +151,15 @@ void ur_impact_work_free(urImpactWork* w);
 double ur_impact_tau_shift(const urImpactSetup* s, const urImpactCond* c);
 
 /* drone pose and velocity at the start of a run for an offset: its centre R_max above the head
-   top, at the offset Delta - ur_impact_tau_shift along the course */
+   top, at the offset Delta - ur_impact_tau_shift along the course (the offset needs a descent,
+   angle > 0: at 0 the path stays R_max above the head top).
+   Aim mode (c->aim): the drone's line of travel (through its centre of mass, along its velocity
+   v) passes the centre of the head ellipsoid (urRoles.head, settled) at the eccentricity
+   up * u + side * l, with l the horizontal left of the course and u = v x l (upward for a
+   horizontal flight, forward along the course for a vertical descent). The drone starts on that
+   line R_max before the person's nearest point along it: its centre at the line's point whose
+   distance along v is the least (c_g . v - rbound_g) over the person's ellipsoids g, less R_max
+   (a plane then separates the drone from the person); tau is that start. */
 void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar, double dperp,
                      double pos[3], double quat[4], double vel[3]);
 

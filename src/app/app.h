@@ -76,6 +76,7 @@ typedef struct {
   char source[512];                /* "computed", or the file it was loaded from */
   int recalled;                    /* the cells of an identical earlier grid (recall.c) */
   int extents_set;                 /* some extent was set: Q covers only the lattice */
+  int diff;                        /* a difference grid (design compare): p is P_b - P_a */
 } uraGridResult;
 
 /* what a compiled model is made of: the generation of the model parts (counted up whenever they
@@ -129,6 +130,10 @@ typedef struct uraCtx {
   uraGridResult last;              /* the last grid */
   uraSweep* sweep;                 /* the kept sweeps, oldest first (sweep clear frees them) */
   int nsweep;
+  struct uraPSweep* psweep;        /* the kept sweeps over other parameters (sweep_param.c) */
+  int npsweep;
+  struct uraDesign* design;        /* the saved designs (design_cmd.c) */
+  int ndesign;
   uraPart part[uraMAXPARTS];       /* the model set, in order */
   int npart;
   unsigned long parts_gen;         /* generation of the model parts */
@@ -140,6 +145,8 @@ typedef struct uraCtx {
   int have_impact;                 /* the work holds a finished impact */
   urImpactResult last_impact;
   double last_dpar, last_dperp;
+  int last_aim;                    /* the last impact was aimed (impact aim): the two are the
+                                      eccentricity up, side */
   uraModelCache* mcache;           /* other models with their stances (NULL until one is kept) */
   uraRecall* recall;               /* complete grids for recall (NULL until one is kept) */
   unsigned long tick;              /* use counter of both, for least-recently-used eviction */
@@ -202,9 +209,21 @@ int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* spee
 /* the column of Table 2 a case takes: "B" or "C" */
 const char* ura_paper_descent_column(const char* casename);
 
-/* load a paper case preset: A, B, C, A1, A2 (wind and face are kept) */
+/* load a case: a preset of the model (the RA3's A, B, C, A1, A2; wind and face are kept); the
+   model's first preset (none: nothing) */
 int ura_case_load(uraCtx* c, const char* name);
-extern const char* const ura_case_names[];
+int ura_case_default(uraCtx* c);
+/* presets (preset.c): by name (any case), the names as "A, B or C", the state a case starts
+   from (the live wind, face, lists, step and output settings kept) */
+const urPreset* ura_preset_find(uraCtx* c, const char* name);
+void ura_preset_names(uraCtx* c, char* buf, size_t n);
+int ura_preset_state(uraCtx* c, const urPreset* pr, uraState* ns);
+/* design parameters (design.c): mass also as the multibody drone's total (its role mass=
+   parameter, as an override of ns; user: set by the user), the models a setting changes */
+int ura_design_mass(const urModel* m, uraState* ns, double mass, int user);
+int ura_design_set(uraCtx* c, const char* name, const char* value, const char* unit);
+const char* ura_design_reach(uraCtx* c, const char* name);
+const char* ura_design_mark(uraCtx* c, const char* name, char* buf, size_t n);
 
 /* ---- tabular output ---- */
 
@@ -289,6 +308,9 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
 int ura_model_state(uraCtx* c, const uraState* ns, const char* who);
 int ura_cmd_model(uraCtx* c, int argc, char** argv);
+/* the model parts as session commands: model drop for each built-in part missing, model load
+   for each loaded one */
+void ura_model_write_parts(uraCtx* c, FILE* f);
 
 /* the model cache (modelcache.c): the key of the live parts with st's overrides, and equality */
 void ura_model_key(const uraCtx* c, const uraState* st, uraModelKey* k);
@@ -312,12 +334,32 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv);
 /* the commands of save session (session.c) */
 void ura_session_write(uraCtx* c, FILE* f);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
+int ura_cmd_design(uraCtx* c, int argc, char** argv);   /* designs.c */
+/* the saved designs as commands, for save session (designs.c) */
+void ura_designs_write(uraCtx* c, FILE* f, void (*write_state)(uraCtx*, FILE*));
+/* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
+   (cmd_sweep.c) */
+void ura_sweep_changes(uraCtx* c, char* buf, size_t n);
+/* sweeps over any numeric parameter (sweep_param.c): sweep NAME LIST [UNIT]; their rows for
+   sweep show (t: its table, columns case,sweep,wind,face,speed,angle,step,q,changes,value,
+   unit); plot sweep NAME; forget them */
+int ura_sweep_param(uraCtx* c, int argc, char** argv);
+void ura_sweep_param_rows(uraCtx* c, uraTable* t);
+int ura_plot_psweep(uraCtx* c, const char* name);
+void ura_sweep_param_clear(uraCtx* c);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);
 int ura_cmd_compare(uraCtx* c, int argc, char** argv);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
-int ura_impact_cond(uraCtx* c, urImpactCond* cond);
+int ura_impact_cond(uraCtx* c, urImpactCond* cond);   /* refuses angles below uraANGLE_DELTA */
+#define uraANGLE_DELTA 1.0         /* deg: the least descent angle of an offset Delta (grids) */
+/* impact aim head UP SIDE (cmd_aim.c): one impact whose line of travel passes the head's centre
+   at an eccentricity, at any angle 0-90 deg */
+int ura_impact_aim(uraCtx* c, int argc, char** argv);
+/* the table of impact rows (columns dpar,dperp,contact,hic15,...,p) and one row of it */
+uraTable* ura_impact_table(void);
+void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r);
 /* notes for a table computed under cond: where speed and angle came from when it was the paper's
    Table 2 (paper), and the moment tau when it is not the paper's text (shift: the tau shift, m) */
 void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,

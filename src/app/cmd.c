@@ -13,9 +13,9 @@ const uraCmd ura_cmds[] = {
    "parameters take an optional unit"},
   {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
    "print the live case state with units, or one parameter; derived values say so"},
-  {"case", ura_cmd_case, 1, 1, uraC_CASE, "case A|B|C|A1|A2",
-   "load the paper's preset for a case; wind, face, step, recall and the output settings keep "
-   "their values"},
+  {"case", ura_cmd_case, 1, 1, uraC_CASE, "case NAME",
+   "load a preset of the model (the RA3's: A, B, C, A1, A2; 'model presets' lists them); wind, "
+   "face, step, recall and the output settings keep their values"},
   {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
   {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
    "impact speed and descent angle for each wind in 'winds' (paper Table 2); "
@@ -26,13 +26,18 @@ const uraCmd ura_cmds[] = {
   {"grid", ura_cmd_grid, 0, 2, uraC_NONE, "grid [show|cells|load FILE]",
    "run the offset grid of the live case (summary row), print it as coloured text (show), "
    "every cell (cells), or load a grid CSV (the paper's tables) as the last grid"},
-  {"sweep", ura_cmd_sweep, 1, 2, uraC_NONE, "sweep wind LIST|face LIST|show|clear",
+  {"sweep", ura_cmd_sweep, 1, 3, uraC_NONE, "sweep wind LIST|face LIST|NAME LIST [UNIT]|show|clear",
    "one grid per wind speed (m/s) or face direction (deg) of LIST, columns "
-   "case,wind,face,speed,angle,q; the sweeps are kept for plot sweep and export sweep (show "
-   "lists them, clear forgets them)"},
+   "case,wind,face,speed,angle,q; or per value of any numeric parameter NAME (a model "
+   "parameter in UNIT), columns case,NAME,wind,face,speed,angle,q; the sweeps are kept for plot "
+   "sweep and export sweep (show lists them, clear forgets them)"},
   {"compare", ura_cmd_compare, 0, 0, uraC_NONE, "compare",
    "the paper's Tables 11-13 for the live case: P{F|Delta=(0,0)} x gliding area against Q; "
    "columns case,wind,p_centre,gliding,q_parametric,q,factor"},
+  {"design", ura_cmd_design, 1, 3, uraC_NONE, "design save|load|delete NAME|list|compare A B",
+   "keep the live case's full state under NAME, make it live again, forget it, list the kept "
+   "designs, or compare two (a grid each): columns design_a,case_a,q_a,design_b,case_b,q_b,"
+   "ratio (q_b/q_a); the last grid becomes the difference P_b - P_a (view shows it)"},
   {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
    "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
    "q returns"},
@@ -41,8 +46,10 @@ const uraCmd ura_cmds[] = {
    "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
    "the last impact, Q of the kept sweeps, the last montecarlo's Q distribution or its "
    "variance shares (set terminal/output to write files)"},
-  {"impact", ura_cmd_impact, 2, 2, uraC_NONE, "impact DPAR DPERP",
-   "simulate one impact at the offset (along, across the course; m) of the live case; columns "
+  {"impact", ura_cmd_impact, 2, 5, uraC_NONE, "impact DPAR DPERP|aim head UP SIDE",
+   "simulate one impact at the offset (along, across the course; m) of the live case, or (aim) "
+   "with the drone's line of travel UP and SIDE (m) from the head's centre, at any angle 0-90 "
+   "deg; columns "
    "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
    "p_vc,p"},
   {"history", ura_cmd_history, 0, 0, uraC_NONE, "history",
@@ -50,8 +57,9 @@ const uraCmd ura_cmds[] = {
   {"contacts", ura_cmd_contacts, 0, 0, uraC_NONE, "contacts",
    "list the drone's contacts with the person in the last impact, in order of first touch; "
    "columns drone,person,first,last,peak_force,peak_time (s from tau, N)"},
-  {"model", ura_cmd_model, 1, 2, uraC_NONE, "model show|params|parts|save FILE|load FILE",
-   "print, list, write or load the model set (human, drone, airbags, options: uasrisk-model(5))"},
+  {"model", ura_cmd_model, 1, 2, uraC_NONE, "model show|params|parts|save FILE|load FILE|drop PART",
+   "print, list, write or load the model set (human, drone, airbags, options: uasrisk-model(5)), "
+   "or drop a part (before loading another drone)"},
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
@@ -108,7 +116,18 @@ int ura_cmd_help(uraCtx* c, int argc, char** argv) {
   return 0;
 }
 
+static int set_one(uraCtx* c, int argc, char** argv);
+
+/* set, then at the prompt the models the setting changes (design.c) */
 int ura_cmd_set(uraCtx* c, int argc, char** argv) {
+  int rc = ura_design_set(c, argv[1], argv[2], argc == 4 ? argv[3] : NULL);
+  if (rc == 1) rc = set_one(c, argc, argv);
+  const char* reach = rc ? NULL : ura_design_reach(c, argv[1]);
+  if (reach && c->interactive) fprintf(c->msg, "set %s: changes %s\n", argv[1], reach);
+  return rc;
+}
+
+static int set_one(uraCtx* c, int argc, char** argv) {
   const uraParam* p = ura_param_find(argv[1]);
   int i = p ? -1 : ura_injury_find(argv[1]);
   if (!p && i < 0) {
@@ -166,6 +185,7 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
   } else {
     ura_param_format(c, p, val, sizeof val);
     if (p->setoff) note = "  (set)";
+    else note = ura_design_mark(c, p->name, src, sizeof src);
   }
   fprintf(c->out, "%-16s %s%s%s%s\n", p->name, val, *p->unit ? " " : "", p->unit, note);
   return 0;
@@ -220,7 +240,7 @@ int ura_cmd_reset(uraCtx* c, int argc, char** argv) {
   ura_models_free(c);
   ura_state_defaults(&c->st);
   if (ura_models_init(c)) return -1;
-  return ura_case_load(c, "A");
+  return ura_case_default(c);
 }
 
 int ura_cmd_quit(uraCtx* c, int argc, char** argv) {

@@ -15,6 +15,12 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond) {
   cond->roll = c->st.roll;
   cond->yaw = c->st.yaw;
   cond->tau = c->st.tau;
+  if (cond->angle < uraANGLE_DELTA) {
+    return ura_fail(c, "angle %g deg: an offset Delta needs a descent (at angles below %g deg "
+                    "the path stays R_max above the head top); accepted: angle >= %g deg, or "
+                    "'impact aim head UP SIDE' for a flight", cond->angle, uraANGLE_DELTA,
+                    uraANGLE_DELTA);
+  }
   return 0;
 }
 
@@ -37,8 +43,32 @@ static const char* const impact_cols[] = {"dpar", "dperp", "contact", "hic15", "
                                           "nij_te", "nij_cf", "nij_ce", "vc_thorax",
                                           "vc_abdomen", "p_hic", "p_nij", "p_vc", "p"};
 
+uraTable* ura_impact_table(void) {
+  return ura_table_new(15, impact_cols);
+}
+
+void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r) {
+  ura_table_cell(t, "%g", dpar);
+  ura_table_cell(t, "%g", dperp);
+  ura_table_cell(t, "%d", r->contact);
+  ura_table_cell(t, "%.6g", r->inj.hic15.hic);
+  ura_table_cell(t, "%.6g", r->inj.nij.nij);
+  for (int k = 0; k < 4; k++) ura_table_cell(t, "%.6g", r->inj.nij.mode[k]);
+  ura_table_cell(t, "%.6g", r->inj.vc_thorax.vc);
+  ura_table_cell(t, "%.6g", r->inj.vc_abdomen.vc);
+  ura_table_cell(t, "%.6g", r->inj.p_hic);
+  ura_table_cell(t, "%.6g", r->inj.p_nij);
+  ura_table_cell(t, "%.6g", r->inj.p_vc);
+  ura_table_cell(t, "%.6g", r->p);
+}
+
 int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   double dpar, dperp;
+  if (!strcmp(argv[1], "aim")) return ura_impact_aim(c, argc, argv);   /* cmd_aim.c */
+  if (argc != 3) {
+    return ura_fail(c, "impact: %d arguments; accepted: impact DPAR DPERP, or impact aim head "
+                    "UP SIDE", argc - 1);
+  }
   if (ura_parse_number(argv[1], &dpar)) {
     return ura_fail(c, "impact: DPAR '%s' is not a number; accepted: the along offset in m",
                     argv[1]);
@@ -72,7 +102,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);
 
   /* one row */
-  uraTable* t = ura_table_new(15, impact_cols);
+  uraTable* t = ura_impact_table();
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
                  "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
                  1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
@@ -82,18 +112,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
                  ur_impact_tau_shift(s, &cond));
-  ura_table_cell(t, "%g", dpar);
-  ura_table_cell(t, "%g", dperp);
-  ura_table_cell(t, "%d", r.contact);
-  ura_table_cell(t, "%.6g", r.inj.hic15.hic);
-  ura_table_cell(t, "%.6g", r.inj.nij.nij);
-  for (int k = 0; k < 4; k++) ura_table_cell(t, "%.6g", r.inj.nij.mode[k]);
-  ura_table_cell(t, "%.6g", r.inj.vc_thorax.vc);
-  ura_table_cell(t, "%.6g", r.inj.vc_abdomen.vc);
-  ura_table_cell(t, "%.6g", r.inj.p_hic);
-  ura_table_cell(t, "%.6g", r.inj.p_nij);
-  ura_table_cell(t, "%.6g", r.inj.p_vc);
-  ura_table_cell(t, "%.6g", r.p);
+  ura_impact_cells(t, dpar, dperp, &r);
   ura_table_print(c, t);
   return 0;
 }
@@ -132,8 +151,9 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
     names[1 + j] = strdup(buf);
   }
   uraTable* t = ura_table_new(ncol, (const char* const*)names);
-  ura_table_note(t, "impact at (%g, %g) m; t in s from tau; SI units; engine frames "
-                 "(uasrisk-model(5))", c->last_dpar, c->last_dperp);
+  ura_table_note(t, "impact %s (%g, %g) m; t in s from tau; SI units; engine frames "
+                 "(uasrisk-model(5))", c->last_aim ? "aimed at the head, up and side" : "at",
+                 c->last_dpar, c->last_dperp);
   for (int r = 0; r < d->nhist; r++) {
     for (int k = 0; k < ncol; k++) ura_table_cell(t, "%.9g", d->hist[(size_t)r * ncol + k]);
   }
@@ -168,8 +188,9 @@ int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"drone", "person", "first", "last", "peak_force",
                                      "peak_time"};
   uraTable* t = ura_table_new(6, cols);
-  ura_table_note(t, "impact at (%g, %g) m: %d pair%s touched; t in s from tau, force in N",
-                 c->last_dpar, c->last_dperp, n, n == 1 ? "" : "s");
+  ura_table_note(t, "impact %s (%g, %g) m: %d pair%s touched; t in s from tau, force in N",
+                 c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar,
+                 c->last_dperp, n, n == 1 ? "" : "s");
   for (int i = 0; i < n; i++) {
     int k = idx[i], src = s->cand_src[k];
     const char* drone = src < m->npair ? m->geom[s->cand[k][0]].name
@@ -197,12 +218,14 @@ void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpac
   c->last_impact = *r;
   c->last_dpar = dpar;
   c->last_dperp = dperp;
+  c->last_aim = cond->aim;
   char w[32];
   if (isfinite(wind)) snprintf(w, sizeof w, "%g m/s", wind);
   else snprintf(w, sizeof w, "?");
   snprintf(impact_title, sizeof impact_title, "case %s, wind %s, face %g deg, %.3g m/s at %.3g "
-           "deg\nimpact at dpar %.2f m, dperp %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
-           casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle, dpar,
+           "deg\nimpact %s %.2f m, %s %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
+           casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle,
+           cond->aim ? "aimed at the head, up" : "at dpar", dpar, cond->aim ? "side" : "dperp",
            dperp, r->inj.hic15.hic, r->inj.nij.nij, r->contact ? r->p : 0.0);
 }
 
@@ -280,6 +303,10 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
 
 /* the viewer's Enter: run the cell's impact for the grid's conditions and give its trace */
 int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr) {
+  if (c->last.diff) {
+    return ura_fail(c, "a difference grid has no impact of its own; 'design compare' names the "
+                    "two designs: load one and run 'impact %g %g'", cell->dpar, cell->dperp);
+  }
   const urImpactSetup* s = ura_setup(c);
   urImpactCond cond;
   if (!s || ura_impact_cond(c, &cond)) return -1;

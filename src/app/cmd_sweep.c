@@ -10,7 +10,7 @@
 /* the settings a grid depends on that differ from the case preset, as "name=value ..." (the
    wind or face swept, the step and the threads excepted; descent=paper and tau=top, which 'case'
    keeps, included), or "none" */
-static void changes(uraCtx* c, char* buf, size_t n) {
+void ura_sweep_changes(uraCtx* c, char* buf, size_t n) {
   static const char* const names[] = {"speed", "angle", "pitch", "roll", "yaw", "altitude",
                                       "mass", "area_drone", "cd_drone", "area_chute",
                                       "cd_chute", "rho", "g", NULL};
@@ -20,9 +20,12 @@ static void changes(uraCtx* c, char* buf, size_t n) {
   size_t k = 0;
   buf[0] = 0;
 
-  /* the preset: the defaults, and case C without parachute (as ura_case_load) */
-  ura_state_defaults(&ref);
-  if (!strcmp(c->st.casename, "C")) ref.descent.area_chute = 0;
+  /* the preset, as ura_case_load makes it */
+  const urPreset* pr = ura_preset_find(c, c->st.casename);
+  if (!pr || ura_preset_state(c, pr, &ref)) ura_state_defaults(&ref);
+  c->err[0] = 0;
+  ref.descent_src = uraDESC_MODEL;      /* 'case' keeps these: the changes name them */
+  ref.tau = urTAU_RMAX;
   for (int i = 0; names[i] && k < n; i++) {
     const uraParam* p = ura_param_find(names[i]);
     const char* a = (const char*)&c->st + p->off;
@@ -95,17 +98,19 @@ static void sweep_add(uraSweep* s, double x, double speed, double angle, double 
   s->q[i] = q;
 }
 
-/* sweep show: every kept value; columns case,sweep,wind,face,speed,angle,step,q,changes */
+/* sweep show: every kept value; columns case,sweep,wind,face,speed,angle,step,q,changes,value,
+   unit (value: the swept value in unit) */
 static int sweep_show(uraCtx* c) {
   static const char* const cols[] = {"case", "sweep", "wind", "face", "speed", "angle", "step",
-                                     "q", "changes"};
-  if (!c->nsweep) {
-    return ura_fail(c, "sweep show: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST'");
+                                     "q", "changes", "value", "unit"};
+  if (!c->nsweep && !c->npsweep) {
+    return ura_fail(c, "sweep show: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
+                    "(or 'sweep NAME LIST [UNIT]')");
   }
-  uraTable* t = ura_table_new(9, cols);
+  uraTable* t = ura_table_new(11, cols);
   ura_table_note(t, "%d sweep%s kept (plot sweep draws them; sweep clear forgets them); "
-                 "changes: settings that differ from the case preset", c->nsweep,
-                 c->nsweep == 1 ? "" : "s");
+                 "changes: settings that differ from the case preset", c->nsweep + c->npsweep,
+                 c->nsweep + c->npsweep == 1 ? "" : "s");
   for (int i = 0; i < c->nsweep; i++) {
     const uraSweep* s = &c->sweep[i];
     for (int k = 0; k < s->n; k++) {
@@ -118,8 +123,11 @@ static int sweep_show(uraCtx* c) {
       ura_table_cell(t, "%g", s->step);
       ura_table_cell(t, "%.4f", s->q[k]);
       ura_table_cell(t, "%s", s->changes);
+      ura_table_cell(t, "%g", s->x[k]);
+      ura_table_cell(t, "%s", s->over_face ? "deg" : "m/s");
     }
   }
+  ura_sweep_param_rows(c, t);
   ura_table_print(c, t);
   return 0;
 }
@@ -131,7 +139,11 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     free(c->sweep);
     c->sweep = NULL;
     c->nsweep = 0;
+    ura_sweep_param_clear(c);
     return 0;
+  }
+  if (argc >= 3 && strcmp(argv[1], "wind") && strcmp(argv[1], "face")) {
+    return ura_sweep_param(c, argc, argv);   /* sweep NAME LIST [UNIT] (sweep_param.c) */
   }
   int is_wind = !strcmp(argv[1], "wind"), is_face = !strcmp(argv[1], "face");
   double v[uraMAXLIST];
@@ -167,7 +179,7 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   s->over_face = is_face;
   s->fixed = is_wind ? c->st.face : c->st.descent.wind;
   s->step = c->st.step;
-  changes(c, s->changes, sizeof s->changes);
+  ura_sweep_changes(c, s->changes, sizeof s->changes);
 
   /* one grid per value (speed and angle derived per wind as 'set descent' says); the live wind
      or face is restored afterwards */

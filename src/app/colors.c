@@ -19,6 +19,8 @@ static const uraStyle styles[uraSCHEME_N][uraROLE_N] = {
     [uraROLE_PENDING] = {-1, -1, 0, '?'},
     [uraROLE_AXIS] = {-1, -1, 0, ' '},
     [uraROLE_TITLE] = {-1, -1, 0, ' '},
+    [uraROLE_SAFER2] = {-1, -1, 0, '='}, [uraROLE_SAFER] = {-1, -1, 0, '-'},
+    [uraROLE_RISKIER] = {-1, -1, 0, '+'}, [uraROLE_RISKIER2] = {-1, -1, 0, '*'},
   },
   [uraSCHEME_MONO] = {
     [uraROLE_NONE] = {-1, -1, 0, ' '},
@@ -30,6 +32,9 @@ static const uraStyle styles[uraSCHEME_N][uraROLE_N] = {
     [uraROLE_PENDING] = {-1, -1, uraATTR_DIM, '?'},
     [uraROLE_AXIS] = {-1, -1, uraATTR_BOLD, ' '},
     [uraROLE_TITLE] = {-1, -1, uraATTR_BOLD, ' '},
+    [uraROLE_SAFER2] = {-1, -1, uraATTR_REVERSE, '='}, [uraROLE_SAFER] = {-1, -1, uraATTR_DIM, '-'},
+    [uraROLE_RISKIER] = {-1, -1, uraATTR_BOLD, '+'},
+    [uraROLE_RISKIER2] = {-1, -1, uraATTR_REVERSE | uraATTR_BOLD, '*'},
   },
   [uraSCHEME_BASIC] = {
     [uraROLE_NONE] = {-1, -1, 0, ' '},
@@ -41,6 +46,8 @@ static const uraStyle styles[uraSCHEME_N][uraROLE_N] = {
     [uraROLE_PENDING] = {-1, -1, uraATTR_DIM, '?'},
     [uraROLE_AXIS] = {6, -1, uraATTR_BOLD, ' '},
     [uraROLE_TITLE] = {-1, -1, uraATTR_BOLD, ' '},
+    [uraROLE_SAFER2] = {7, 4, uraATTR_BOLD, '='}, [uraROLE_SAFER] = {4, -1, 0, '-'},
+    [uraROLE_RISKIER] = {1, -1, 0, '+'}, [uraROLE_RISKIER2] = {7, 1, uraATTR_BOLD, '*'},
   },
   [uraSCHEME_XTERM] = {
     [uraROLE_NONE] = {-1, -1, 0, ' '},
@@ -52,6 +59,8 @@ static const uraStyle styles[uraSCHEME_N][uraROLE_N] = {
     [uraROLE_PENDING] = {244, -1, 0, '?'},
     [uraROLE_AXIS] = {39, -1, uraATTR_BOLD, ' '},
     [uraROLE_TITLE] = {-1, -1, uraATTR_BOLD, ' '},
+    [uraROLE_SAFER2] = {231, 25, uraATTR_BOLD, '='}, [uraROLE_SAFER] = {16, 153, 0, '-'},
+    [uraROLE_RISKIER] = {16, 217, 0, '+'}, [uraROLE_RISKIER2] = {231, 160, uraATTR_BOLD, '*'},
   },
 };
 
@@ -59,6 +68,8 @@ static const char* const names[uraROLE_N] = {
   [uraROLE_NONE] = "none", [uraROLE_LOW] = "low", [uraROLE_MEDIUM] = "medium",
   [uraROLE_HIGH] = "high", [uraROLE_SEVERE] = "severe", [uraROLE_FAILED] = "failed",
   [uraROLE_PENDING] = "pending", [uraROLE_AXIS] = "axis", [uraROLE_TITLE] = "title",
+  [uraROLE_SAFER2] = "safer", [uraROLE_SAFER] = "safer", [uraROLE_RISKIER] = "riskier",
+  [uraROLE_RISKIER2] = "riskier",
 };
 
 static const char* const labels[uraROLE_N] = {
@@ -71,6 +82,10 @@ static const char* const labels[uraROLE_N] = {
   [uraROLE_PENDING] = "?",
   [uraROLE_AXIS] = "axis",
   [uraROLE_TITLE] = "title",
+  [uraROLE_SAFER2] = "<=-30 %",
+  [uraROLE_SAFER] = "-30-0 %",
+  [uraROLE_RISKIER] = "0-30 %",
+  [uraROLE_RISKIER2] = ">=30 %",
 };
 
 uraRole ura_band_role(double p) {
@@ -88,6 +103,20 @@ uraRole ura_cell_role(const urCell* cell) {
   if (cell->status == urCELL_PENDING) return uraROLE_PENDING;
   if (cell->status == urCELL_NOCONTACT) return uraROLE_NONE;
   return ura_band_role(cell->p);
+}
+
+uraRole ura_diff_role(const urCell* cell) {
+  if (cell->status == urCELL_FAILED) return uraROLE_FAILED;
+  if (cell->status == urCELL_PENDING) return uraROLE_PENDING;
+  double pc = cell->p * 100.0;
+  if (!(pc != 0)) return uraROLE_NONE;
+  if (pc <= -uraBAND_HIGH + 1e-9) return uraROLE_SAFER2;
+  if (pc < 0) return uraROLE_SAFER;
+  return pc < uraBAND_HIGH - 1e-9 ? uraROLE_RISKIER : uraROLE_RISKIER2;
+}
+
+uraRole ura_grid_role(int diff, const urCell* cell) {
+  return diff ? ura_diff_role(cell) : ura_cell_role(cell);
 }
 
 const uraStyle* ura_style(uraScheme s, uraRole r) {

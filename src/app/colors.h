@@ -25,6 +25,11 @@ typedef enum {
   uraROLE_PENDING,                 /* the cell is not computed */
   uraROLE_AXIS,                    /* axis labels */
   uraROLE_TITLE,                   /* title and status lines */
+  /* a difference grid P_b - P_a (design compare), a diverging scale: */
+  uraROLE_SAFER2,                  /* P_b - P_a <= -30 % (deep blue) */
+  uraROLE_SAFER,                   /* -30 % < P_b - P_a < 0 (light blue) */
+  uraROLE_RISKIER,                 /* 0 < P_b - P_a < 30 % (light red) */
+  uraROLE_RISKIER2,                /* P_b - P_a >= 30 % (deep red) */
   uraROLE_N
 } uraRole;
 
@@ -47,6 +52,11 @@ typedef struct {
 /* role of a probability 0..1 (band), and of a grid cell (band, failed or pending) */
 uraRole ura_band_role(double p);
 uraRole ura_cell_role(const urCell* cell);
+
+/* role of a cell of a difference grid (diverging: 0 is none), and of a cell of a grid that is
+   one (diff) or not */
+uraRole ura_diff_role(const urCell* cell);
+uraRole ura_grid_role(int diff, const urCell* cell);
 
 /* style of a role in a scheme */
 const uraStyle* ura_style(uraScheme s, uraRole r);

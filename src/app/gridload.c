@@ -174,9 +174,11 @@ static void meta_parse(meta* m, const char* s) {
   if (isalnum((unsigned char)q[n])) return;
   memcpy(tok, q, n);
   tok[n] = 0;
-  for (int i = 0; ura_case_names[i]; i++) {
-    if (!strcasecmp(tok, ura_case_names[i])) {
-      strcpy(m->casename, ura_case_names[i]);
+  /* the paper's case names (its files are named by them) */
+  static const char* const paper_cases[] = {"A", "B", "C", "A1", "A2", NULL};
+  for (int i = 0; paper_cases[i]; i++) {
+    if (!strcasecmp(tok, paper_cases[i])) {
+      strcpy(m->casename, paper_cases[i]);
       return;
     }
   }

@@ -85,7 +85,8 @@ int ura_grid_show(uraCtx* c) {
 
   /* title and column header: cross offsets */
   ura_grid_conditions(c, buf, sizeof buf);
-  fprintf(f, "P{F|Delta} in %%: %s\n", buf);
+  int diff = c->last.diff;
+  fprintf(f, "%s in %%: %s\n", diff ? "P_b - P_a" : "P{F|Delta}", buf);
   fprintf(f, "rows: along offset dpar (m); columns: cross offset dperp (m)%s\n",
           half ? ", dperp >= 0 shown (mirror-symmetric)" : "");
   span(f, s, uraROLE_AXIS, " dpar ");
@@ -106,15 +107,17 @@ int ura_grid_show(uraCtx* c) {
       char t[8];
       ura_cell_text(cl, t);
       snprintf(buf, sizeof buf, " %s", t);
-      span(f, s, ura_cell_role(cl), buf);
+      span(f, s, ura_grid_role(diff, cl), buf);
     }
     fputc('\n', f);
   }
 
   /* legend: each band's name and thresholds on its colour */
   fprintf(f, "legend:");
-  for (uraRole r = uraROLE_NONE; r <= uraROLE_PENDING; r++) {
-    if (r >= uraROLE_FAILED && !(r == uraROLE_FAILED ? g->nfailed : g->npending)) continue;
+  for (uraRole r = uraROLE_NONE; r <= (diff ? uraROLE_RISKIER2 : uraROLE_PENDING); r++) {
+    if (r >= uraROLE_FAILED && r <= uraROLE_PENDING &&
+        !(r == uraROLE_FAILED ? g->nfailed : g->npending)) continue;
+    if (diff ? r > uraROLE_NONE && r < uraROLE_SAFER2 : r > uraROLE_PENDING) continue;
     if (s == uraSCHEME_PLAIN) {
       fprintf(f, "%s %s %s", r ? ";" : "", ura_role_name(r), ura_role_label(r));
     } else {

@@ -305,6 +305,71 @@ static int model_load(uraCtx* c, const char* path) {
   return rc;
 }
 
+/* model drop PART: the part leaves the model set (e.g. the RA3 and its airbags before another
+   drone is loaded); the overrides of parameters that no part defines any more go with it */
+static int model_drop(uraCtx* c, const char* name) {
+  int at = -1;
+  for (int i = 0; i < c->npart; i++) {
+    if (!strcmp(c->part[i].name, name)) at = i;
+  }
+  if (at < 0) return ura_fail(c, "model drop: no part '%s'; 'model parts' lists them", name);
+  uraPart np[uraMAXPARTS];
+  int nn = 0;
+  for (int i = 0; i < c->npart; i++) {
+    if (i == at) continue;
+    np[nn] = c->part[i];
+    np[nn].text = strdup(c->part[i].text);
+    if (!np[nn++].text) {
+      parts_free(np, nn);
+      return ura_fail(c, "model drop: out of memory");
+    }
+  }
+
+  /* the parameters the rest defines (compiled without overrides), then its overrides */
+  uraState ns = c->st;
+  ns.nov = 0;
+  char err[300];
+  urModel* m = compile(np, nn, &ns, err, sizeof err);
+  if (!m) {
+    parts_free(np, nn);
+    return ura_fail(c, "model drop %s: refused, the other parts do not compile alone: %s", name,
+                    err);
+  }
+  for (int i = 0; i < c->st.nov; i++) {
+    if (ur_name_param(m, c->st.ov_name[i]) < 0) continue;
+    snprintf(ns.ov_name[ns.nov], urNAMELEN, "%s", c->st.ov_name[i]);
+    ns.ov_val[ns.nov] = c->st.ov_val[i];
+    ns.ov_user[ns.nov++] = c->st.ov_user[i];
+  }
+  ur_model_free(m);
+  uraState keep = c->st;
+  c->st = ns;
+  if (parts_commit(c, np, nn)) {
+    c->st = keep;
+    return -1;
+  }
+  return 0;
+}
+
+/* the model parts of a session: the built-in parts it lacks dropped, the loaded ones loaded */
+void ura_model_write_parts(uraCtx* c, FILE* f) {
+  int nb = 0;
+  while (builtin_order[nb]) nb++;
+  for (int b = nb - 1; b >= 0; b--) {      /* later parts may use earlier ones: last first */
+    int have = 0;
+    for (int i = 0; i < c->npart; i++) {
+      have |= !strcmp(c->part[i].name, builtin_order[b]) && !strcmp(c->part[i].origin,
+                                                                      "built-in");
+    }
+    if (!have) fprintf(f, "model drop %s\n", builtin_order[b]);
+  }
+  for (int i = 0; i < c->npart; i++) {
+    if (strcmp(c->part[i].origin, "built-in")) {
+      fprintf(f, "model load \"%s\"   # part %s\n", c->part[i].origin, c->part[i].name);
+    }
+  }
+}
+
 /* parameters of the model: name, SI value, and who set it */
 static int model_params(uraCtx* c) {
   const urModel* m = ura_model(c);
@@ -327,11 +392,12 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
   if (argc == 2 && !strcmp(argv[1], "params")) return model_params(c);
   if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
+  if (argc == 3 && !strcmp(argv[1], "drop")) return model_drop(c, argv[2]);
   if (argc == 2 && !strcmp(argv[1], "parts")) {
     for (int i = 0; i < c->npart; i++) {
       fprintf(c->out, "%-12s %s\n", c->part[i].name, c->part[i].origin);
     }
     return 0;
   }
-  return ura_fail(c, "model: usage: model show|params|parts|save FILE|load FILE");
+  return ura_fail(c, "model: usage: model show|params|parts|save FILE|load FILE|drop PART");
 }

@@ -133,9 +133,9 @@ int ura_plot_sweep(uraCtx* c, const char* kind) {
   int nw = common(c, 0).n, nf = common(c, 1).n;
   int want_wind = nw > 0, want_face = nf > 0;
   if (kind && strcmp(kind, "wind") && strcmp(kind, "face")) {
-    return ura_fail(c, "%s: unknown '%s'; accepted: plot sweep, plot sweep wind, plot sweep face",
-                    who, kind);
+    return ura_plot_psweep(c, kind);        /* a sweep over another parameter (sweep_param.c) */
   }
+  if (!kind && !nw && !nf && c->npsweep) return ura_plot_psweep(c, NULL);
   if (kind) {
     want_wind = !strcmp(kind, "wind");
     want_face = !want_wind;

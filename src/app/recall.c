@@ -55,7 +55,7 @@ static int key_same(const gridKey* a, const gridKey* b) {
   const urImpactCond *x = &a->cond, *y = &b->cond;
   if (!same(x->speed, y->speed) || !same(x->angle, y->angle) || !same(x->face, y->face) ||
       !same(x->pitch, y->pitch) || !same(x->roll, y->roll) || !same(x->yaw, y->yaw) ||
-      x->tau != y->tau ||
+      x->tau != y->tau || x->aim != y->aim ||
       !same(a->step, b->step) || memcmp(a->set, b->set, sizeof a->set) ||
       !same(a->par_min, b->par_min) || !same(a->par_max, b->par_max) ||
       !same(a->perp_max, b->perp_max)) {

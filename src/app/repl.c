@@ -115,7 +115,11 @@ static char** complete(const char* text, int start, int end) {
     switch (cmd->compl) {
     case uraC_COMMAND: for (int i = 0; ura_cmds[i].name; i++) add(ura_cmds[i].name); break;
     case uraC_PARAM: add_params(); break;
-    case uraC_CASE: for (int i = 0; ura_case_names[i]; i++) add(ura_case_names[i]); break;
+    case uraC_CASE: {              /* the model's presets */
+      const urModel* m = repl_ctx ? ura_model(repl_ctx) : NULL;
+      for (int i = 0; m && i < m->npreset; i++) add(m->preset[i].name);
+      break;
+    }
     case uraC_POF: for (int i = 0; ura_pof_names[i]; i++) add(ura_pof_names[i]); break;
     case uraC_FILE: break;
     case uraC_NONE: keywords(args, NULL); break;

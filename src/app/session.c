@@ -11,11 +11,7 @@ void ura_session_write(uraCtx* c, FILE* f) {
   char val[2048];
   fprintf(f, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n");
   fprintf(f, "reset\n");
-  for (int i = 0; i < c->npart; i++) {
-    if (strcmp(c->part[i].origin, "built-in")) {
-      fprintf(f, "model load \"%s\"   # part %s\n", c->part[i].origin, c->part[i].name);
-    }
-  }
+  ura_model_write_parts(c, f);
   fprintf(f, "case %s\n", c->st.casename);
   for (const uraParam* p = ura_params; p->name; p++) {
     if (p->kind == uraP_CASE) continue;
@@ -41,6 +37,7 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   }
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "save session")) return -1;
+  ura_designs_write(c, a.f, ura_session_write);   /* each saved design, then the live state */
   ura_session_write(c, a.f);
   return ura_atomic_close(c, &a, 1, "save session");
 }
@@ -56,8 +53,9 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
                     "export sweep FILE, export contacts FILE, export montecarlo FILE", argv[1]);
   }
   if (mc && !c->mc) return ura_fail(c, "export montecarlo: no montecarlo yet; run 'montecarlo N'");
-  if (sweep && !c->nsweep) {
-    return ura_fail(c, "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST'");
+  if (sweep && !c->nsweep && !c->npsweep) {
+    return ura_fail(c, "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
+                    "(or 'sweep NAME LIST [UNIT]')");
   }
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "export")) return -1;

@@ -15,14 +15,14 @@ static const char* const format_names[] = {"table", "csv", NULL};
 static const char* const onoff_names[] = {"off", "on", NULL};
 static const char* const descent_names[] = {"model", "paper", NULL};
 static const char* const tau_names[] = {"rmax", "top", NULL};
-const char* const ura_case_names[] = {"A", "B", "C", "A1", "A2", NULL};
 static const char* const mc_method_names[] = {"surface", "exact", NULL};
 
 /* one row per settable quantity: name, kind, offset, derived flag, unit, range, help */
 const uraParam ura_params[] = {
   {"case", uraP_CASE, OFF(casename), 0, "", 0, 0,
-   "paper case: A (parachute, 1.0 atm bottom airbag), B (parachute), C (none), "
-   "A1 (1.1 atm bottom), A2 (1.1 atm bottom and front); change it with 'case'", NULL},
+   "the case: a preset of the model (the RA3's: A parachute and 1.0 atm bottom airbag, B "
+   "parachute, C none, A1 1.1 atm bottom, A2 1.1 atm bottom and front); change it with 'case'",
+   NULL},
   {"wind", uraP_NUM, OFF(descent.wind), 0, "m/s", 0, 60, "horizontal wind speed", NULL},
   {"face", uraP_NUM, OFF(face), 0, "deg", -360, 360,
    "face direction phi of the person; 0 faces the incoming drone (into the wind)", NULL},
@@ -49,8 +49,9 @@ const uraParam ura_params[] = {
    "wind speeds of the rows of descent and parametric", NULL},
   {"speed", uraP_NUM, OFF(speed), OFF(speed_set), "m/s", 0.01, 200,
    "impact speed; derived from the descent model unless set ('set speed auto')", NULL},
-  {"angle", uraP_NUM, OFF(angle), OFF(angle_set), "deg", 1, 90,
-   "descent angle psi from the horizontal; derived unless set ('set angle auto')", NULL},
+  {"angle", uraP_NUM, OFF(angle), OFF(angle_set), "deg", 0, 90,
+   "descent angle psi from the horizontal, 0 a horizontal flight (impact aim only: offsets and "
+   "grids need >= 1 deg); derived unless set ('set angle auto')", NULL},
   {"descent", uraP_ENUM, OFF(descent_src), 0, "", 0, 0,
    "where derived speed and angle come from: model (the descent model at the live wind) or "
    "paper (the paper's Table 2 at the live wind, case C's column for C, case B's for the "
@@ -62,7 +63,9 @@ const uraParam ura_params[] = {
   {"altitude", uraP_NUM, OFF(descent.altitude), 0, "m", 0.1, 10000,
    "height at which the descent starts (from rest)", NULL},
   {"mass", uraP_NUM, OFF(descent.mass), 0, "kg", 0.01, 1000,
-   "mass of the UAS (descent, MTOW area, impact energy)", NULL},
+   "mass of the UAS (descent, MTOW area, impact energy) and, when changed, the multibody "
+   "drone's total (masses and inertias scaled, geometry kept; drone_mass alone: the multibody "
+   "drone only)", NULL},
   {"area_drone", uraP_NUM, OFF(descent.area_drone), 0, "m^2", 0, 100,
    "reference area of the drone A_S^d", NULL},
   {"cd_drone", uraP_NUM, OFF(descent.cd_drone), 0, "", 0, 10, "drag coefficient of the drone", NULL},
@@ -156,7 +159,7 @@ void ura_init(uraCtx* c) {
   c->out = stdout;
   c->msg = stderr;
   c->inspect = ura_inspect_cell;
-  if (ura_models_init(c) == 0) ura_case_load(c, "A");
+  if (ura_models_init(c) == 0) ura_case_default(c);
 }
 
 const uraParam* ura_param_find(const char* name) {
@@ -189,7 +192,7 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
 
   switch (p->kind) {
   case uraP_CASE:
-    return ura_fail(c, "set case: use the command 'case A|B|C|A1|A2'");
+    return ura_fail(c, "set case: use the command 'case NAME' (a preset of the model)");
 
   case uraP_STR: {
     size_t n = strlen(value);
@@ -343,46 +346,23 @@ int ura_impact_conditions(uraCtx* c, double* speed, double* angle) {
 
 
 int ura_case_load(uraCtx* c, const char* name) {
-  int k = -1;
-  for (int i = 0; ura_case_names[i]; i++) {
-    if (!strcasecmp(name, ura_case_names[i])) k = i;
+  /* the cases are the model's presets (preset.c); the model is compiled once, and not at all
+     when the overrides are as they were */
+  if (!ura_model(c)) return -1;
+  const urPreset* pr = ura_preset_find(c, name);
+  if (!pr) {
+    char names[400];
+    ura_preset_names(c, names, sizeof names);
+    return ura_fail(c, "case: unknown case '%s'; accepted: %s", name, names);
   }
-  if (k < 0) return ura_fail(c, "case: unknown case '%s'; accepted: A, B, C, A1 or A2", name);
-
-  /* keep the live wind, face, lists, grid step, recall, descent source, tau and output settings;
-     everything else from the paper */
   uraState ns;
-  const uraState* keep = &c->st;
-  ura_state_defaults(&ns);
-  ns.descent.wind = keep->descent.wind;
-  ns.face = keep->face;
-  memcpy(ns.winds, keep->winds, sizeof ns.winds);
-  ns.threads = keep->threads;
-  ns.step = keep->step;
-  ns.nwinds = keep->nwinds;
-  ns.format = keep->format;
-  ns.recall = keep->recall;
-  ns.descent_src = keep->descent_src;
-  ns.tau = keep->tau;
-  ns.risk = keep->risk;
-  strcpy(ns.terminal, keep->terminal);
-  strcpy(ns.output, keep->output);
-  strcpy(ns.casename, ura_case_names[k]);
+  if (ura_preset_state(c, pr, &ns)) return -1;
+  return ura_model_state(c, &ns, "case");
+}
 
-  /* case C has no parachute; A, A1, A2 descend as B (the airbag does not change the descent) */
-  if (!strcmp(ns.casename, "C")) ns.descent.area_chute = 0;
-
-  /* airbags of the case, as model parameters (skipped if the model has no such parameter);
-     the model is compiled once, and not at all when they are as they were */
-  static const double bags[5][3] = {{1, 0, 1.0}, {0, 0, 1.0}, {0, 0, 1.0}, {1, 0, 1.1},
-                                    {1, 1, 1.1}};
-  static const char* const names[3] = {"bag_bottom", "bag_front", "bag_p0"};
-  for (int i = 0; i < 3; i++) {
-    if (ura_model_param_find(c, names[i]) < 0) continue;
-    snprintf(ns.ov_name[ns.nov], urNAMELEN, "%s", names[i]);
-    ns.ov_val[ns.nov] = i == 2 ? bags[k][i] * 101325.0 : bags[k][i];
-    ns.ov_user[ns.nov++] = 0;
-  }
-  if (ura_model_state(c, &ns, "case")) return -1;
-  return 0;
+int ura_case_default(uraCtx* c) {
+  const urModel* m = ura_model(c);
+  if (!m) return -1;
+  if (m->npreset == 0) return 0;
+  return ura_case_load(c, m->preset[0].name);
 }

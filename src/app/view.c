@@ -144,9 +144,11 @@ static void draw_cursor_line(viewer* v, int y) {
 
 static void draw_legend(viewer* v, int y) {
   int x = 0;
-  put(stdscr, y, x, A_NORMAL, "P{F|Delta}:");
+  int diff = v->c->last.diff;
+  put(stdscr, y, x, A_NORMAL, diff ? "P_b - P_a:" : "P{F|Delta}:");
   x += 12;
-  for (int r = uraROLE_NONE; r <= uraROLE_PENDING && x < COLS; r++) {
+  for (int r = uraROLE_NONE; r <= (diff ? uraROLE_RISKIER2 : uraROLE_PENDING) && x < COLS; r++) {
+    if (diff && r > uraROLE_NONE && r < uraROLE_SAFER2) continue;
     if (r == uraROLE_FAILED && !v->g->nfailed) continue;
     if (r == uraROLE_PENDING && !v->g->npending) continue;
     char buf[64];
@@ -172,7 +174,9 @@ static void draw_grid(viewer* v) {
   put(stdscr, 0, 0, v->role_attr[uraROLE_TITLE], buf);
 
   /* axis caption, cross offset labels; along offset labels at the left */
-  put(stdscr, 1, LABEL_W, A_NORMAL, "P{F|Delta} in %; columns: cross offset dperp (m), "
+  put(stdscr, 1, LABEL_W, A_NORMAL, v->c->last.diff ?
+      "P_b - P_a in % (blue: B safer, red: B riskier); columns: cross offset dperp (m), "
+      "rows: along offset dpar (m)" : "P{F|Delta} in %; columns: cross offset dperp (m), "
       "rows: along offset dpar (m)");
   put(stdscr, 2, 0, v->role_attr[uraROLE_AXIS], "  dpar");
   for (int j = v->left; j < v->g->ncol && j < v->left + nc; j++) {
@@ -189,7 +193,7 @@ static void draw_grid(viewer* v) {
     /* cells: colour by band; without colour a glyph tells the band */
     for (int j = v->left; j < v->g->ncol && j < v->left + nc; j++) {
       const urCell* cl = cell_at(v, i, j);
-      uraRole r = ura_cell_role(cl);
+      uraRole r = ura_grid_role(v->c->last.diff, cl);
       char t[8];
       ura_cell_text(cl, t);
       char glyph = v->scheme == uraSCHEME_MONO ? ura_style(v->scheme, r)->glyph : ' ';
@@ -305,7 +309,7 @@ static void draw_panel(viewer* v) {
   snprintf(buf, sizeof buf, "p_vc  %s", e);
   put(w, 3, pw - 20, A_NORMAL, buf);
   snprintf(buf, sizeof buf, "p     %.4f (%.1f %%)", cl->p, cl->p * 100);
-  put(w, 4, 2, v->role_attr[ura_cell_role(cl)], buf);
+  put(w, 4, 2, v->role_attr[ura_grid_role(v->c->last.diff, cl)], buf);
 
   /* the head acceleration, or why there is none */
   if (!v->c->inspect) {

@@ -207,7 +207,15 @@ static inline __attribute__((always_inline)) void narrow1(const urModel* m, urDa
   if (pr->law.type == urLAW_FOAM) {
     pd->area = ur_section_area(&ea, gc.n, gc.g);
   }
-  pd->fn = ur_law_force(&pr->law, &pd->ls, gc.g, pd->rate, pd->area);
+  const urLaw* law = &pr->law;
+  urLaw curv;
+  if (law->type == urLAW_HERTZ && law->radius == urHERTZ_CURVATURE) {
+    /* the radius from the shapes' curvature at this contact */
+    curv = *law;
+    curv.radius = pd->radius = ur_contact_radius(&ea, pr->geom2 >= 0 ? &eb : NULL, &gc);
+    law = &curv;
+  }
+  pd->fn = ur_law_force(law, &pd->ls, gc.g, pd->rate, pd->area);
   if (!(pd->fn > 0)) {
     pd->fn = 0;
     return;
@@ -281,7 +289,14 @@ void ur_contacts_commit(const urModel* m, urData* d) {
     int i = d->plist[k];
     urPairData* pd = d->pair + i;
     if (d->pdepth[i] > 0 || pd->ls.touching) {
-      ur_law_commit(&m->pair[i].law, &pd->ls, d->pdepth[i], pd->rate, pd->area);
+      const urLaw* law = &m->pair[i].law;
+      urLaw curv;
+      if (law->type == urLAW_HERTZ && law->radius == urHERTZ_CURVATURE) {
+        curv = *law;
+        curv.radius = pd->radius > 0 ? pd->radius : urHERTZ_RMAX;
+        law = &curv;
+      }
+      ur_law_commit(law, &pd->ls, d->pdepth[i], pd->rate, pd->area);
     }
   }
 }

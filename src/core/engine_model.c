@@ -85,6 +85,10 @@ urModel* ur_model_new(void) {
   m->opt.ke_settle = 1e-3;
   m->opt.vmax = 1e4;
   m->opt.jump_margin = 1e-3;
+  urRoles* r = &m->roles;
+  r->drone = r->head = r->head_acc = r->neck = r->head_pos = r->chest = r->abdomen = -1;
+  r->mass_param = r->size_param = -1;
+  r->mass_scale = r->size_scale = 1;
   return m;
 }
 
@@ -99,6 +103,7 @@ void ur_model_free(urModel* m) {
   free(m->bag);
   free(m->sensor);
   free(m->param);
+  free(m->preset);
   free(m->qpos0);
   free(m->grav);
   free(m);

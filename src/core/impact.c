@@ -50,9 +50,31 @@ void ur_impact_work_free(urImpactWork* w) {
 /* ---- placement at the moment tau ---- */
 
 double ur_impact_tau_shift(const urImpactSetup* s, const urImpactCond* c) {
-  if (c->tau != urTAU_TOP || !(c->angle < 90.0)) return 0.0;
+  if (c->aim || c->tau != urTAU_TOP || !(c->angle < 90.0)) return 0.0;
   double psi = c->angle * DEG;
   return s->rmax * cos(psi) / sin(psi);
+}
+
+/* aim mode: the start on the line that passes the head's centre at the eccentricity (up, side),
+   R_max before the person's nearest point along it (impact.h) */
+static void aim_start(const urImpactSetup* s, const urImpactCond* c, double up, double side,
+                      const double cr[3], const double lf[3], double pos[3]) {
+  const urModel* m = s->m;
+  const urData* d = s->rest;
+  double psi = c->angle * DEG, v[3], u[3], p[3];
+  for (int k = 0; k < 3; k++) v[k] = cos(psi) * cr[k];
+  v[2] = -sin(psi);
+  uru_cross3(u, v, lf);
+  const double* h = d->gxpos + 3 * s->head_geom;
+  for (int k = 0; k < 3; k++) p[k] = h[k] + up * u[k] + side * lf[k];
+  double near = INFINITY;
+  for (int g = 0; g < m->ngeom; g++) {
+    if (m->body[m->geom[g].body].tree == s->drone) continue;
+    double w[3] = {d->gxpos[3 * g] - p[0], d->gxpos[3 * g + 1] - p[1], d->gxpos[3 * g + 2] - p[2]};
+    near = fmin(near, uru_dot3(w, v) - m->geom[g].rbound);
+  }
+  double t = (isfinite(near) ? near : 0) - s->rmax;
+  for (int k = 0; k < 3; k++) pos[k] = p[k] + t * v[k];
 }
 
 void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar, double dperp,
@@ -60,17 +82,21 @@ void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar,
   double cr[3], lf[3];
   course(c->face, cr, lf);
 
-  /* centre R_max above the head top, offset from the head CG along and across the course; with
-     tau at head-top level the offset is reached R_max / tan(psi) further on, so the start is
-     that much back along the course */
-  double along = dpar - ur_impact_tau_shift(s, c);
-  for (int k = 0; k < 2; k++) pos[k] = s->head_cg[k] + along * cr[k] + dperp * lf[k];
-  pos[2] = s->head_top + s->rmax;
-
   /* velocity along the course, descending at psi */
   double psi = c->angle * DEG;
   for (int k = 0; k < 3; k++) vel[k] = c->speed * (cos(psi) * cr[k]);
   vel[2] = -c->speed * sin(psi);
+
+  if (c->aim) {
+    aim_start(s, c, dpar, dperp, cr, lf, pos);
+  } else {
+    /* centre R_max above the head top, offset from the head CG along and across the course;
+       with tau at head-top level the offset is reached R_max / tan(psi) further on, so the
+       start is that much back along the course */
+    double along = dpar - ur_impact_tau_shift(s, c);
+    for (int k = 0; k < 2; k++) pos[k] = s->head_cg[k] + along * cr[k] + dperp * lf[k];
+    pos[2] = s->head_top + s->rmax;
+  }
 
   /* attitude: along axis on the course, then yaw, pitch, roll in the drone frame */
   static const double ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0}, ez[3] = {0, 0, 1};

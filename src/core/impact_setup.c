@@ -1,5 +1,5 @@
 /* impact_setup.c: the set-up of impacts on one model: the person balanced and settled under
- * gravity with the drone parked far above, the roles found by name, R_max, the rest state; and
+ * gravity with the drone parked far above, the roles the model declares, R_max, the rest state; and
  * the stance shared with a model whose person is the same (ur_impact_prepare) */
 #include <math.h>
 #include <stdint.h>
@@ -151,7 +151,7 @@ static int balance(urModel* m, int drone, double settle_time, int iters, double*
 }
 
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual) {
-  int drone = ur_name_body(m, "main");
+  int drone = m->roles.drone;
   if (drone < 0 || m->body[drone].jtype != urJNT_FREE) return -1;
   return balance(m, drone, settle_time, iters, residual, NULL);
 }
@@ -462,21 +462,24 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   memset(s, 0, sizeof *s);
   s->m = m;
 
-  /* roles by name */
-  s->drone = ur_name_body(m, "main");
-  s->head_geom = ur_name_geom(m, "head_cranium");
-  s->s_head_acc = ur_name_sensor(m, "head_acc");
-  s->s_neck = ur_name_sensor(m, "neck_load");
-  s->s_chest = ur_name_sensor(m, "chest_defl");
-  s->s_abd = ur_name_sensor(m, "abd_defl");
-  int s_head_pos = ur_name_sensor(m, "head_pos");
+  /* the roles the model declares (role statements, uasrisk-model(5)) */
+  const urRoles* ro = &m->roles;
+  s->drone = ro->drone;
+  s->head_geom = ro->head;
+  s->s_head_acc = ro->head_acc;
+  s->s_neck = ro->neck;
+  s->s_chest = ro->chest;
+  s->s_abd = ro->abdomen;
+  int s_head_pos = ro->head_pos;
   if (s->drone < 0 || m->body[s->drone].jtype != urJNT_FREE) {
-    snprintf(s->err, sizeof s->err, "the model needs a free body 'main' (the drone)");
+    snprintf(s->err, sizeof s->err, "the model declares no drone: add 'role drone=BODY' (its "
+             "root body, free joint)");
     return -1;
   }
   if (s->head_geom < 0 || s->s_head_acc < 0 || s->s_neck < 0 || s_head_pos < 0) {
-    snprintf(s->err, sizeof s->err, "the model needs ellipsoid head_cranium and sensors head_acc, "
-             "neck_load, head_pos");
+    snprintf(s->err, sizeof s->err, "the model declares no %s: add 'role head=ELLIPSOID "
+             "head_acc=SENSOR neck=SENSOR head_pos=SENSOR'", s->head_geom < 0 ? "head" :
+             s->s_head_acc < 0 ? "head_acc" : s->s_neck < 0 ? "neck" : "head_pos");
     return -1;
   }
 
@@ -579,9 +582,10 @@ int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iter
                       const urImpactSetup* const* donors, int ndonor) {
   memset(s, 0, sizeof *s);
   s->m = m;
-  int drone = ur_name_body(m, "main");
+  int drone = m->roles.drone;
   if (drone < 0 || m->body[drone].jtype != urJNT_FREE || m->body[drone].parent >= 0) {
-    snprintf(s->err, sizeof s->err, "the model needs a free body 'main' (the drone)");
+    snprintf(s->err, sizeof s->err, "the model declares no drone: add 'role drone=BODY' (its "
+             "root body, free joint)");
     return -2;
   }
   urData* d = ur_data_new(m);

@@ -16,7 +16,8 @@
 #define NUMLEN   400               /* longest number accepted, characters */
 
 static const char* const keywords =
-  "param, option, curve, body, restraint, ellipsoid, law, pair, pairs, airbag, sensor, part";
+  "param, option, curve, body, restraint, ellipsoid, law, pair, pairs, airbag, sensor, part, "
+  "role, preset";
 static const char* const expect_num =
   "expected a decimal number such as 12, -0.5 or 2.5e-3, or $param";
 static const char* const expect_name =
@@ -27,10 +28,11 @@ static const char* const expect_name =
 /* kinds of names */
 enum {
   SYM_PARAM = 0, SYM_CURVE, SYM_LAW, SYM_BODY, SYM_JOINT, SYM_ELLIPSOID, SYM_PAIR, SYM_AIRBAG,
-  SYM_SENSOR, SYM_PART
+  SYM_SENSOR, SYM_PART, SYM_PRESET
 };
 static const char* const symkind[] = {
-  "parameter", "curve", "law", "body", "joint", "ellipsoid", "pair", "airbag", "sensor", "part"
+  "parameter", "curve", "law", "body", "joint", "ellipsoid", "pair", "airbag", "sensor", "part",
+  "preset"
 };
 
 /* units: name and factor to SI */
@@ -113,7 +115,7 @@ static const KeySpec spec_ellipsoid[] = {
 };
 #define LAWTYPE {"type", K_ENUM, 1, 0, 1, "hertz|table|foam"}
 static const KeySpec spec_hertz[] = {
-  LAWTYPE, NUMR("E1"), NUMR("nu1"), NUMR("R1"), NUMR("E2"), NUMR("nu2"), NUMR("R2"), NUM("sy"),
+  LAWTYPE, NUMR("E1"), NUMR("nu1"), NUM("R1"), NUMR("E2"), NUMR("nu2"), NUM("R2"), NUM("sy"),
   NUM("nu_yield"), FLAG("plastic"), FRICTION, ENABLE
 };
 static const KeySpec spec_table[] = {
@@ -133,6 +135,10 @@ static const KeySpec spec_airbag[] = {
   NAMER("geom"), NUMR("p0"), NUMR("patm"), NUMR("v0"), NUMR("gamma"), NUMR("kappa"),
   NUMR("thickness"), NUM("fabric_k"), NUM("fabric_c"), NUM("mu"), NUM("v_eps"),
   {"targets", K_NAMES, urMAXBAGTGT, 1, 1, NULL}, ENABLE
+};
+static const KeySpec spec_role[] = {
+  NAME("drone"), NAME("head"), NAME("head_acc"), NAME("neck"), NAME("head_pos"), NAME("chest"),
+  NAME("abdomen"), NUM("mass"), NUM("size"), ENABLE
 };
 static const KeySpec spec_sensor[] = {
   {"type", K_ENUM, 1, 0, 1, "accel|jointload|jointpos|jointvel|contact|airbag|bodypos|bodyvel"},
@@ -319,7 +325,8 @@ static int findsym(const Parser* p, int kind, const char* name, int enabled) {
 /* keyword that defines a kind of name */
 static const char* kindword(int kind) {
   static const char* const kw[] = {
-    "param", "curve", "law", "body", NULL, "ellipsoid", "pair", "airbag", "sensor", "part"
+    "param", "curve", "law", "body", NULL, "ellipsoid", "pair", "airbag", "sensor", "part",
+    "preset"
   };
   return kw[kind];
 }
@@ -1247,6 +1254,18 @@ static int st_ellipsoid(Parser* p, const Bound* b) {
 
 
 /* ellipsoid g, named name, must have degree 2 in its role (a foam pair's a, an airbag target) */
+/* a pair under a Hertz law without radii: both ellipsoids of degree 2 (their curvature) */
+static int curv2(Parser* p, int law, int g, const char* name, int line, const char* what) {
+  if (g < 0 || p->law[law].type != urLAW_HERTZ || p->law[law].radius != urHERTZ_CURVATURE ||
+      p->m->geom[g].degree == 2) {
+    return 0;
+  }
+  return fail(p, line, "%s: ellipsoid '%s' has degree=%g; a Hertz law without R1 and R2 takes "
+              "its radius from the curvature of ellipsoids of degree 2 (give R1 and R2)", what,
+              name, p->m->geom[g].degree);
+}
+
+
 static int degree2(Parser* p, int g, const char* name, int line, const char* what,
                    const char* role) {
   if (p->m->geom[g].degree == 2) {
@@ -1287,9 +1306,18 @@ static int st_law(Parser* p, const Bound* b) {
       return fail(p, get(b, "plastic")->line, "law '%s': plastic=1 needs sy > 0 and nu_yield",
                   b->name);
     }
+    const Val* r1 = get(b, "R1");
+    const Val* r2 = get(b, "R2");
+    if (r1->set != r2->set) {
+      return fail(p, (r1->set ? r1 : r2)->line, "law '%s': give R1 and R2, or neither (the radius "
+                  "then comes from the ellipsoids' curvature at the contact)", b->name);
+    }
     ur_law_hertz(&law, num(b, "E1", 0), num(b, "nu1", 0), num(b, "R1", 0), num(b, "E2", 0),
                  num(b, "nu2", 0), num(b, "R2", 0), num(b, "sy", 0), num(b, "nu_yield", 0),
                  plastic);
+    if (!r1->set) {
+      law.radius = urHERTZ_CURVATURE;
+    }
   } else if (type == 1) {
     law.type = urLAW_TABLE;
     const Val* vl = get(b, "load");
@@ -1343,6 +1371,10 @@ static int st_law(Parser* p, const Bound* b) {
       if (p->law[l].type != urLAW_HERTZ) {
         return fail(p, vb->line, "law '%s': backing '%s' must be a hertz law", b->name, vb->raw);
       }
+      if (p->law[l].radius == urHERTZ_CURVATURE) {
+        return fail(p, vb->line, "law '%s': backing '%s' must give R1 and R2 (a backing has no "
+                    "contact of its own to take a curvature from)", b->name, vb->raw);
+      }
       double K, dy, fy;
       ur_law_hertz_params(p->law + l, &K, &dy, &fy);
       law.lock = vk->v[0];
@@ -1394,8 +1426,9 @@ static int st_pair(Parser* p, const Bound* b) {
   }
   char what[urNAMELEN + 16];
   snprintf(what, sizeof(what), "pair '%s'", b->name);
-  if (p->law[law].type == urLAW_FOAM &&
-      degree2(p, ga, va->raw, va->line, what, "a, under a foam law,")) {
+  if ((p->law[law].type == urLAW_FOAM &&
+       degree2(p, ga, va->raw, va->line, what, "a, under a foam law,")) ||
+      curv2(p, law, ga, va->raw, va->line, what) || curv2(p, law, gb, vb->raw, vb->line, what)) {
     return -1;
   }
   if (declare(p, SYM_PAIR, b->name, b->line, m->npair, 1)) {
@@ -1434,8 +1467,9 @@ static int st_pairs(Parser* p, const Bound* b) {
     }
     char what[urNAMELEN + 16];
     snprintf(what, sizeof(what), "pairs '%s'", b->name);
-    if (p->law[law].type == urLAW_FOAM &&
-        degree2(p, ga, na, va->line, what, "each a, under a foam law,")) {
+    if ((p->law[law].type == urLAW_FOAM &&
+         degree2(p, ga, na, va->line, what, "each a, under a foam law,")) ||
+        curv2(p, law, ga, na, va->line, what)) {
       return -1;
     }
     for (int j = 0; j < vb->n; j++) {
@@ -1443,6 +1477,9 @@ static int st_pairs(Parser* p, const Bound* b) {
       item(vb->raw, j, nb, sizeof(nb));
       int gb = -1;
       if (strcmp(nb, "ground") && (gb = ref(p, SYM_ELLIPSOID, nb, vb->line, NULL)) < 0) {
+        return -1;
+      }
+      if (curv2(p, law, gb, nb, vb->line, what)) {
         return -1;
       }
       if (pairname(pn, b->name, na, nb)) {
@@ -1625,6 +1662,194 @@ static int st_sensor(Parser* p, const Bound* b) {
 }
 
 
+/* role key=value...: the elements an impact needs, and the parameters that scale the drone */
+static int st_role(Parser* p, const urlStmt* st, Bound* b) {
+  int rc = bind(p, st, 1, spec_role, NKEY(spec_role), b);
+  if (rc) {
+    return rc < 0 ? -1 : 0;
+  }
+  urModel* m = p->m;
+  urRoles* r = &m->roles;
+  static const struct {
+    const char* key;
+    int kind;
+    int type;                      /* sensor type, or -1 */
+  } rk[] = {
+    {"drone", SYM_BODY, -1}, {"head", SYM_ELLIPSOID, -1}, {"head_acc", SYM_SENSOR, urSENS_ACCEL},
+    {"neck", SYM_SENSOR, urSENS_JOINTLOAD}, {"head_pos", SYM_SENSOR, urSENS_BODYPOS},
+    {"chest", SYM_SENSOR, urSENS_JOINTPOS}, {"abdomen", SYM_SENSOR, urSENS_JOINTPOS}
+  };
+  int* slot[] = {&r->drone, &r->head, &r->head_acc, &r->neck, &r->head_pos, &r->chest,
+                 &r->abdomen};
+  for (int i = 0; i < (int)(sizeof(rk)/sizeof(rk[0])); i++) {
+    const Val* v = get(b, rk[i].key);
+    if (!v->set) {
+      continue;
+    }
+    int id = ref(p, rk[i].kind, v->raw, v->line, "role");
+    if (id < 0) {
+      return -1;
+    }
+    if (rk[i].kind == SYM_BODY && r->drone >= 0 && r->drone != id) {
+      return fail(p, v->line, "role drone: the model has a drone already (body '%s'); one model "
+                  "has one drone: drop the other drone's parts first", m->body[r->drone].name);
+    }
+    if (rk[i].kind == SYM_BODY &&
+        (m->body[id].parent >= 0 || m->body[id].jtype != urJNT_FREE)) {
+      return fail(p, v->line, "role drone: body '%s' must have a free joint to the world (the "
+                  "drone is placed and launched by it)", v->raw);
+    }
+    if (rk[i].type >= 0 && (int)m->sensor[id].type != rk[i].type) {
+      static const char* const tname[] = {"accel", "jointload", "jointpos", "jointvel",
+                                          "contact", "airbag", "bodypos", "bodyvel"};
+      int t = rk[i].type;
+      return fail(p, v->line, "role %s: sensor '%s' must be of type=%s", rk[i].key, v->raw,
+                  t >= 0 && t < 8 ? tname[t] : "?");
+    }
+    *slot[i] = id;
+  }
+  static const char* const design[] = {"mass", "size"};
+  int* dslot[] = {&r->mass_param, &r->size_param};
+  for (int i = 0; i < 2; i++) {
+    const Val* v = get(b, design[i]);
+    if (!v->set) {
+      continue;
+    }
+    if (v->raw[0] != '$') {
+      return fail(p, v->line, "role %s: expected a parameter ($NAME) that the workbench can set, "
+                  "got '%s'", design[i], quote(v->raw, strlen(v->raw)).s);
+    }
+    if (!(v->v[0] > 0)) {
+      return fail(p, v->line, "role %s: must be > 0 (got %g)", design[i], v->v[0]);
+    }
+    *dslot[i] = ur_name_param(m, v->raw + 1);
+  }
+  return 0;
+}
+
+
+/* preset NAME key=value...: a case, as model parameters (VALUE[UNIT] or $param) and workbench
+   settings (plain numbers, checked by the workbench) */
+static int st_preset(Parser* p, const urlStmt* st) {
+  if (st->nword < 2 || strchr(url_word(&p->lx, st->word + 1), '=')) {
+    return fail(p, st->line, "preset needs a NAME before its keys; expected 'preset NAME "
+                "key=value ...'");
+  }
+  const char* name = url_word(&p->lx, st->word + 1);
+  if (checkname(p, name, strlen(name), st->line, "preset")) {
+    return -1;
+  }
+  if (strlen(name) > 7) {
+    return fail(p, st->line, "preset '%s': a preset name has at most 7 characters (it labels "
+                "the rows of tables)", name);
+  }
+  urPreset pr;
+  memset(&pr, 0, sizeof(pr));
+  snprintf(pr.name, sizeof(pr.name), "%s", name);
+  for (int w = 2; w < st->nword; w++) {
+    const char* s = url_word(&p->lx, st->word + w);
+    int line = p->lx.word[st->word + w].line;
+    const char* eq = strchr(s, '=');
+    size_t kl = eq ? (size_t)(eq - s) : 0;
+    if (!eq || kl == 0 || !eq[1]) {
+      return fail(p, line, "preset '%s': expected key=value, got '%s' (no blanks around '=')",
+                  name, quote(s, strlen(s)).s);
+    }
+    char key[urNAMELEN];
+    if (checkname(p, s, kl, line, "preset key")) {
+      return -1;
+    }
+    memcpy(key, s, kl);
+    key[kl] = 0;
+    for (int k = 0; k < pr.n; k++) {
+      if (!strcmp(pr.key[k], key)) {
+        return fail(p, line, "preset '%s': duplicate key '%s'; a key may appear once", name, key);
+      }
+    }
+    if (pr.n == urMAXPRESET) {
+      return fail(p, line, "preset '%s': more than %d keys", name, urMAXPRESET);
+    }
+    int isparam = findsym(p, SYM_PARAM, key, 1) >= 0;
+    const char* v = eq + 1;
+    size_t vn = strlen(v), k = decimal_prefix(v, vn);
+    double f = 1, x;
+    char ctx[80];
+    snprintf(ctx, sizeof(ctx), "preset '%s' key '%s'", name, key);
+    int isref = v[0] == '$' || (v[0] == '-' && v[1] == '$');
+    if (!isref && k > 0 && k < vn) {
+      if (ur_unit_si(v + k, &f)) {
+        return fail(p, line, "%s: unknown unit '%s'; expected a unit of a param line (atm, kg, "
+                    "mm, ...)", ctx, quote(v + k, vn - k).s);
+      }
+      if (!isparam) {
+        return fail(p, line, "%s: a unit is taken only by model parameters ('%s' is a "
+                    "workbench setting, in the unit its 'show' prints)", ctx, key);
+      }
+      vn = k;
+    }
+    if (number(p, v, vn, line, ctx, &x)) {
+      return -1;
+    }
+    x *= f;
+    if (!isfinite(x)) {
+      return fail(p, line, "%s: value overflows after conversion to SI", ctx);
+    }
+    snprintf(pr.key[pr.n], urNAMELEN, "%s", key);
+    pr.value[pr.n] = x;
+    pr.param[pr.n] = isparam ? ur_name_param(p->m, key) : -1;
+    pr.n++;
+  }
+  if (declare(p, SYM_PRESET, name, st->line, p->m->npreset, 1)) {
+    return -1;
+  }
+  urPreset* np = realloc(p->m->preset, (size_t)(p->m->npreset + 1)*sizeof(urPreset));
+  if (!np) {
+    return fail(p, st->line, "out of memory");
+  }
+  p->m->preset = np;
+  np[p->m->npreset++] = pr;
+  return 0;
+}
+
+
+/* the drone tree scaled by its design parameters (role mass=, size=) */
+static int apply_design(Parser* p) {
+  urModel* m = p->m;
+  urRoles* r = &m->roles;
+  if (r->drone < 0) {
+    return 0;
+  }
+  r->mass0 = ur_model_tree_mass(m, r->drone);
+  double fm = 1, fs = 1;
+  if (r->mass_param >= 0) {
+    double mm = m->param[r->mass_param].value;
+    if (!(mm > 0) || !(r->mass0 > 0)) {
+      snprintf(p->msg, sizeof(p->msg), "role mass: parameter '%s' must be > 0 (got %g)",
+               m->param[r->mass_param].name, mm);
+      return -1;
+    }
+    fm = mm/r->mass0;
+  }
+  if (r->size_param >= 0) {
+    fs = m->param[r->size_param].value;
+    if (!(fs > 0)) {
+      snprintf(p->msg, sizeof(p->msg), "role size: parameter '%s' must be > 0 (got %g)",
+               m->param[r->size_param].name, fs);
+      return -1;
+    }
+  }
+  if (fabs(fm - 1) <= 1e-12) {
+    fm = 1;                        /* the total as written, to rounding: the bodies as written */
+  }
+  r->mass_scale = fm;
+  r->size_scale = fs;
+  if (fm != 1 || fs != 1) {
+    ur_model_scale_tree(m, r->drone, fm, fs);
+  }
+  return 0;
+}
+
+
 /* part NAME */
 static int st_part(Parser* p, const urlStmt* st) {
   if (st->nword != 2 || strchr(url_word(&p->lx, st->word + 1), '=')) {
@@ -1662,6 +1887,15 @@ static int statement(Parser* p, const urlStmt* st) {
   }
   if (!strcmp(kw, "part")) {
     return st_part(p, st);
+  }
+  if (!strcmp(kw, "preset")) {
+    return st_preset(p, st);
+  }
+  if (!strcmp(kw, "role")) {
+    if (st->nword > 1 && !strchr(url_word(&p->lx, st->word + 1), '=')) {
+      return fail(p, st->line, "role takes key=value pairs only (no name)");
+    }
+    return st_role(p, st, &b);
   }
   if (!strcmp(kw, "option")) {
     if (st->nword > 1 && !strchr(url_word(&p->lx, st->word + 1), '=')) {
@@ -1841,7 +2075,11 @@ urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov
     rc = statement(&p, p.lx.stmt + i);
   }
 
-  /* compile (elements were checked on their lines; this should not fail) */
+  /* the drone's design parameters, then compile (elements were checked on their lines; this
+     should not fail) */
+  if (!rc) {
+    rc = apply_design(&p);
+  }
   if (!rc && ur_model_compile(p.m)) {
     snprintf(p.msg, sizeof(p.msg), "%s: the model does not compile: %s",
              srcname(&p, nsrc - 1), p.m->err);

@@ -1,0 +1,238 @@
+/* sweep_param.c: sweep NAME LIST [UNIT]: one grid per value of any numeric parameter (a workbench
+ * setting, an injury setting or a model parameter, which takes a unit), Q against it; the sweeps
+ * are kept for sweep show, export sweep and plot sweep NAME */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+#include "plot.h"
+
+typedef struct uraPSweep {
+  char casename[8];
+  char param[urNAMELEN];
+  char unit[16];                   /* the unit of the values as given ("" : the setting's own) */
+  double wind, face, step;
+  char changes[200];
+  int n;
+  double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
+} uraPSweep;
+
+/* is name a numeric parameter that a sweep may set (wind and face have their own sweeps) */
+static int sweepable(uraCtx* c, const char* name, const char** unit) {
+  const uraParam* p = ura_param_find(name);
+  *unit = "";
+  if (p) {
+    *unit = p->unit;
+    return (p->kind == uraP_NUM || p->kind == uraP_INT) && strcmp(name, "threads");
+  }
+  if (ura_injury_find(name) >= 0) return 1;
+  return ura_model_param_find(c, name) >= 0;
+}
+
+/* keep s: it replaces the sweep of the same case, parameter, unit, fixed conditions and changes */
+static int keep(uraCtx* c, const uraPSweep* s) {
+  for (int i = 0; i < c->npsweep; i++) {
+    uraPSweep* o = c->psweep + i;
+    if (!strcmp(o->casename, s->casename) && !strcmp(o->param, s->param) &&
+        !strcmp(o->unit, s->unit) && o->wind == s->wind && o->face == s->face &&
+        !strcmp(o->changes, s->changes)) {
+      *o = *s;
+      return 0;
+    }
+  }
+  if (c->nsweep + c->npsweep >= uraMAXSWEEPS) {
+    return ura_fail(c, "sweep: %d sweeps are kept already; 'sweep clear' forgets them",
+                    uraMAXSWEEPS);
+  }
+  uraPSweep* m = realloc(c->psweep, (size_t)(c->npsweep + 1) * sizeof *m);
+  if (!m) return ura_fail(c, "sweep: out of memory");
+  c->psweep = m;
+  c->psweep[c->npsweep++] = *s;
+  return 0;
+}
+
+void ura_sweep_param_clear(uraCtx* c) {
+  free(c->psweep);
+  c->psweep = NULL;
+  c->npsweep = 0;
+}
+
+int ura_sweep_param(uraCtx* c, int argc, char** argv) {
+  const char* name = argv[1];
+  const char* own;
+  if (!sweepable(c, name, &own)) {
+    c->err[0] = 0;
+    return ura_fail(c, "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face LIST, "
+                    "sweep NAME LIST [UNIT] with NAME a numeric setting, injury setting or model "
+                    "parameter ('show' lists them), sweep show, sweep clear", name);
+  }
+  double v[uraMAXLIST];
+  int n = ura_parse_list(argv[2], v, uraMAXLIST);
+  if (n <= 0) {
+    return ura_fail(c, "sweep %s: '%s' is not a list of numbers; accepted: comma-separated "
+                    "numbers (at most %d)", name, argv[2], uraMAXLIST);
+  }
+  const char* unit = argc == 4 ? argv[3] : NULL;
+
+  /* every value is checked by 'set' before any grid runs; the live state comes back after */
+  uraState saved = c->st;
+  char val[64], *av[4] = {"set", (char*)name, val, (char*)unit};
+  for (int i = 0; i < n; i++) {
+    snprintf(val, sizeof val, "%.17g", v[i]);
+    if (ura_cmd_set(c, unit ? 4 : 3, av)) {
+      char why[uraERRLEN];
+      snprintf(why, sizeof why, "%s", c->err);
+      ura_model_state(c, &saved, "sweep");
+      return ura_fail(c, "sweep %s: %.900s", name, why);
+    }
+  }
+  if (ura_model_state(c, &saved, "sweep")) return -1;
+
+  uraPSweep* s = calloc(1, sizeof *s);
+  if (!s) return ura_fail(c, "sweep: out of memory");
+  snprintf(s->casename, sizeof s->casename, "%s", c->st.casename);
+  snprintf(s->param, sizeof s->param, "%s", name);
+  snprintf(s->unit, sizeof s->unit, "%s", unit ? unit : own);
+  s->wind = c->st.descent.wind;
+  s->face = c->st.face;
+  s->step = c->st.step;
+  ura_sweep_changes(c, s->changes, sizeof s->changes);
+
+  const char* cols[] = {"case", name, "wind", "face", "speed", "angle", "q"};
+  uraTable* t = ura_table_new(7, cols);
+  if (*s->unit) ura_table_note(t, "%s in %s", name, s->unit);
+  int rc = 0;
+  for (int i = 0; i < n && rc == 0; i++) {
+    snprintf(val, sizeof val, "%.17g", v[i]);
+    rc = ura_cmd_set(c, unit ? 4 : 3, av);
+    if (rc == 0) rc = ura_grid_run(c, 0);
+    if (rc && ura_interrupted()) {
+      char why[uraERRLEN];
+      snprintf(why, sizeof why, "%s", c->err);
+      ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", name,
+               v[i], i, n, why);
+    }
+    if (rc == 0 && !c->last.g->complete) {
+      rc = ura_fail(c, "sweep: %d cells failed at %s %g; Q is not complete", c->last.g->nfailed,
+                    name, v[i]);
+    }
+    if (rc) break;
+    ura_table_cell(t, "%s", c->st.casename);
+    ura_table_cell(t, "%g", v[i]);
+    ura_table_cell(t, "%g", c->st.descent.wind);
+    ura_table_cell(t, "%g", c->st.face);
+    ura_table_cell(t, "%.3f", c->last.speed);
+    ura_table_cell(t, "%.2f", c->last.angle);
+    ura_table_cell(t, "%.4f", c->last.g->q);
+    int k = s->n++;
+    s->x[k] = v[i];
+    s->speed[k] = c->last.speed;
+    s->angle[k] = c->last.angle;
+    s->q[k] = c->last.g->q;
+  }
+
+  /* the live state as it was (its model is kept: no settling again) */
+  char err[uraERRLEN];
+  snprintf(err, sizeof err, "%s", c->err);
+  ura_model_state(c, &saved, "sweep");
+  snprintf(c->err, sizeof c->err, "%s", err);
+  ura_table_print(c, t);
+  if (s->n > 0) {
+    if (keep(c, s)) rc = -1;
+    else if (rc) snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err,
+                          s->n);
+  }
+  free(s);
+  return rc;
+}
+
+void ura_sweep_param_rows(uraCtx* c, uraTable* t) {
+  for (int i = 0; i < c->npsweep; i++) {
+    const uraPSweep* s = c->psweep + i;
+    for (int k = 0; k < s->n; k++) {
+      ura_table_cell(t, "%s", s->casename);
+      ura_table_cell(t, "%s", s->param);
+      ura_table_cell(t, "%g", s->wind);
+      ura_table_cell(t, "%g", s->face);
+      ura_table_cell(t, "%.3f", s->speed[k]);
+      ura_table_cell(t, "%.2f", s->angle[k]);
+      ura_table_cell(t, "%g", s->step);
+      ura_table_cell(t, "%.4f", s->q[k]);
+      ura_table_cell(t, "%s", s->changes);
+      ura_table_cell(t, "%g", s->x[k]);
+      ura_table_cell(t, "%s", s->unit);
+    }
+  }
+}
+
+/* a label with its quotes and backslashes escaped for gnuplot */
+static void quoted(FILE* f, const char* s) {
+  fputc('"', f);
+  for (; *s; s++) {
+    if (*s == '"' || *s == '\\') fputc('\\', f);
+    fputc(*s, f);
+  }
+  fputc('"', f);
+}
+
+int ura_plot_psweep(uraCtx* c, const char* name) {
+  static const char* const colours[8] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00", "#0072b2",
+                                         "#d55e00", "#cc79a7", "#000000"};
+  const char* who = "plot sweep";
+  if (!name && c->npsweep) name = c->psweep[c->npsweep - 1].param;
+  int n = 0;
+  const uraPSweep* first = NULL;
+  for (int i = 0; i < c->npsweep; i++) {
+    if (strcmp(c->psweep[i].param, name)) continue;
+    if (!first) first = c->psweep + i;
+    n++;
+  }
+  if (!n) {
+    return ura_fail(c, "%s: unknown '%s'; accepted: plot sweep, plot sweep wind, plot sweep "
+                    "face, or plot sweep NAME after 'sweep NAME LIST' (none over '%s' yet)", who,
+                    name, name);
+  }
+  char* s = NULL;
+  size_t len = 0;
+  FILE* f = open_memstream(&s, &len);
+  if (!f) return ura_fail(c, "%s: out of memory", who);
+  fprintf(f, "set grid\nset key below left Left reverse noenhanced samplen 3 maxrows 3\n"
+          "set tics out\n");
+  for (int i = 0; i < c->npsweep; i++) {
+    const uraPSweep* w = c->psweep + i;
+    if (strcmp(w->param, name)) continue;
+    fprintf(f, "$P%d << EOD\n", i);
+    for (int j = 0; j < w->n; j++) fprintf(f, "%.9g %.9g\n", w->x[j], w->q[j]);
+    fprintf(f, "EOD\n");
+  }
+  char title[300], xl[100];
+  snprintf(title, sizeof title, "Q against %s; grid step %g m", name, first->step);
+  snprintf(xl, sizeof xl, "%s%s%s%s", name, *first->unit ? " (" : "", first->unit,
+           *first->unit ? ")" : "");
+  fprintf(f, "set title ");
+  quoted(f, title);
+  fprintf(f, " noenhanced\nset xlabel ");
+  quoted(f, xl);
+  fprintf(f, " noenhanced\nset ylabel \"Q (m^2)\" noenhanced\nset yrange [0:*]\n"
+          "set autoscale xfix\nset offsets graph 0.04, graph 0.04, graph 0.1, 0\nplot ");
+  int k = 0;
+  for (int i = 0; i < c->npsweep; i++) {
+    const uraPSweep* w = c->psweep + i;
+    if (strcmp(w->param, name)) continue;
+    char label[400];
+    snprintf(label, sizeof label, "case %s, wind %g m/s, face %g deg%s%s%s%s", w->casename,
+             w->wind, w->face, strcmp(w->unit, first->unit) ? ", in " : "",
+             strcmp(w->unit, first->unit) ? w->unit : "", strcmp(w->changes, "none") ? ", " : "",
+             strcmp(w->changes, "none") ? w->changes : "");
+    fprintf(f, "%s$P%d using 1:2 with linespoints lc rgb '%s' lw 2 pt %d ps 1.2 title ",
+            k ? ", " : "", i, colours[k % 8], 5 + 2 * (k % 4));
+    quoted(f, label);
+    k++;
+  }
+  fprintf(f, "\n");
+  fclose(f);
+  int rc = ura_gnuplot_run(c, who, s, len);
+  free(s);
+  return rc;
+}

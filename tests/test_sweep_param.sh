@@ -1,0 +1,38 @@
+# test_sweep_param.sh: sweep NAME LIST [UNIT] over any numeric parameter (src/app/sweep_param.c):
+# columns case,NAME,wind,face,speed,angle,q; each Q is the grid the same setting gives; the
+# live state comes back; sweep show and export sweep list the values in their unit; plot sweep
+# NAME draws Q against it; bad names, values and units are refused before any grid runs.
+. tests/lib.sh
+
+mkdir -p "$TMP/bin"
+printf '#!/bin/sh\ncat >>"%s/plot.gp"\n' "$TMP" >"$TMP/bin/gnuplot"
+chmod +x "$TMP/bin/gnuplot"
+U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+
+S='set format csv; set step 0.3; case A'
+run -c "$S; show bag_p0; sweep bag_p0 1.0,1.2 atm; show bag_p0; set bag_p0 1.2 atm; grid; sweep show; export sweep $TMP/s.csv"
+check sweep_runs cond '[ $RC -eq 0 ]'
+check sweep_header has "$TMP/out" '^case,bag_p0,wind,face,speed,angle,q$'
+check sweep_rows cond '[ "$(grep -c "^A,1\(\.2\)\?,0,0," "$TMP/out")" -eq 2 ]'
+check live_state_back cond '[ "$(grep -c "^bag_p0  *101325 (SI)" "$TMP/out")" -eq 2 ]'
+# the grid at 1.2 atm gives the Q of the sweep's second row
+qs=$(awk -F, '/^A,1.2,/ {print $7}' "$TMP/out")
+check sweep_q_is_grid_q cond '[ -n "$qs" ] && grep -q "^A,bag_p0,0,0,[^,]*,[^,]*,0.3,$qs,none,1.2,atm$" "$TMP/out"'
+check export_has_unit has "$TMP/s.csv" '^A,bag_p0,0,0,.*,1,atm$'
+run -c "$S; set bag_p0 1.2 atm; grid"
+check grid_equals_sweep has "$TMP/out" ",$qs\(,\|$\)"
+
+# plot sweep NAME
+PATH="$TMP/bin:$PATH" "$U" -c "set step 0.3; case C; set terminal png; set output $TMP/p.png; sweep mass 10,20; plot sweep mass" >"$TMP/out" 2>"$TMP/err"
+check plot_sweep_name cond '[ $? -eq 0 ] && grep -q "Q against mass" "$TMP/plot.gp" && grep -q "^10 " "$TMP/plot.gp"'
+
+# refusals, nothing run
+run -c "$S; sweep nosuch 1,2"
+check unknown_name has "$TMP/err" "sweep: 'nosuch' is not accepted; accepted: .*sweep NAME LIST"
+run -c "$S; sweep bag_p0 1,x atm"
+check bad_list has "$TMP/err" "sweep bag_p0: '1,x' is not a list of numbers"
+run -c "$S; sweep bag_p0 1 furlong"
+check bad_unit has "$TMP/err" "sweep bag_p0: set bag_p0: unknown unit 'furlong'"
+run -c "$S; sweep angle 30,120"
+check out_of_range has "$TMP/err" "sweep angle: set angle: 120 is out of range"
+finish
