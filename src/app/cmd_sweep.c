@@ -212,12 +212,8 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   if (!s || ura_impact_cond(c, &cond)) return -1;
 
   /* P{F|Delta=(0,0)}, the gliding area at this descent, and the grid's Q */
-  if (!c->have_work) {
-    if (ur_impact_work_init(s, &c->work)) return ura_fail(c, "compare: out of memory");
-    c->have_work = 1;
-  }
   urImpactResult r;
-  if (ur_impact_run(s, &c->work, &cond, &c->st.injury, 0, 0, &r)) {
+  if (ura_impact_fresh(c, s, &cond, 0, 0, &r)) {
     if (r.status == urSTAT_STOPPED) return ura_fail(c, "compare: interrupted (Ctrl-C)");
     return ura_fail(c, "compare: the impact at (0, 0) failed: %s", r.reason);
   }

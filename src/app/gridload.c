@@ -53,8 +53,7 @@ static int bad(reader* r, int line, const char* fmt, ...) {
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  ura_fail(r->c, "%s:%d: %s", r->path, line, msg);
-  r->c->err_located = 1;
+  ura_fail(r->c, "%s:%d: %s", r->path, line, msg);   /* a script adds its own FILE:LINE */
   return -1;
 }
 

@@ -78,17 +78,20 @@ const uraParam ura_params[] = {
   {"format", uraP_ENUM, OFF(format), 0, "", 0, 0,
    "output of tabular commands: aligned table or CSV with one header line", format_names},
   {"terminal", uraP_STR, OFF(terminal), 0, "", 0, 64,
-   "gnuplot terminal for plot (png, svg, pdfcairo, ...); 'default' for gnuplot's own", NULL},
+   "gnuplot terminal for plot (png, svg, pdfcairo, ...); 'default' for gnuplot's own", NULL,
+   ura_terminal_check},
   {"output", uraP_STR, OFF(output), 0, "", 0, 512,
-   "file that plot writes (with a file terminal); 'none' for a window", NULL},
+   "file that plot writes (with a file terminal); 'none' for a window", NULL, ura_output_check},
   {NULL, 0, 0, 0, NULL, 0, 0, NULL, NULL}
 };
 
 int ura_fail(uraCtx* c, const char* fmt, ...) {
+  char raw[uraERRLEN];
   va_list ap;
   va_start(ap, fmt);
-  vsnprintf(c->err, sizeof c->err, fmt, ap);
+  vsnprintf(raw, sizeof raw, fmt, ap);
   va_end(ap);
+  ura_printable(raw, c->err, sizeof c->err);   /* no echoed input drives the terminal */
   c->err_located = 0;
   return -1;
 }
@@ -162,7 +165,9 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
                       (int)p->max - 1);
     }
     int none = !strcmp(value, "default") || !strcmp(value, "none") || n == 0;
-    strcpy(base + p->off, none ? "" : value);
+    char norm[512];
+    if (!none && p->check && p->check(c, value, norm, (size_t)p->max)) return -1;
+    strcpy(base + p->off, none ? "" : p->check ? norm : value);
     return 0;
   }
 
@@ -299,6 +304,12 @@ int ura_impact_conditions(uraCtx* c, double* speed, double* angle) {
 }
 
 int ura_case_load(uraCtx* c, const char* name) {
+  uraState ns;
+  if (ura_case_state(c, name, NULL, &ns)) return -1;
+  return ura_model_state(c, &ns, "case");
+}
+
+int ura_case_state(uraCtx* c, const char* name, const urModel* m, uraState* out) {
   int k = -1;
   for (int i = 0; ura_case_names[i]; i++) {
     if (!strcasecmp(name, ura_case_names[i])) k = i;
@@ -310,6 +321,7 @@ int ura_case_load(uraCtx* c, const char* name) {
   uraState ns;
   const uraState* keep = &c->st;
   ura_state_defaults(&ns);
+  if (!m) m = ura_model(c);
   ns.descent.wind = keep->descent.wind;
   ns.face = keep->face;
   memcpy(ns.winds, keep->winds, sizeof ns.winds);
@@ -331,11 +343,11 @@ int ura_case_load(uraCtx* c, const char* name) {
                                     {1, 1, 1.1}};
   static const char* const names[3] = {"bag_bottom", "bag_front", "bag_p0"};
   for (int i = 0; i < 3; i++) {
-    if (ura_model_param_find(c, names[i]) < 0) continue;
+    if (!m || ur_name_param(m, names[i]) < 0) continue;
     snprintf(ns.ov_name[ns.nov], urNAMELEN, "%s", names[i]);
     ns.ov_val[ns.nov] = i == 2 ? bags[k][i] * 101325.0 : bags[k][i];
     ns.ov_user[ns.nov++] = 0;
   }
-  if (ura_model_state(c, &ns, "case")) return -1;
+  *out = ns;
   return 0;
 }

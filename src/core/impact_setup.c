@@ -455,6 +455,39 @@ static void rest(const urModel* m, urData* d, int drone) {
   ur_forward(m, d);
 }
 
+int ur_impact_check(const urModel* m, char* err, size_t n) {
+  int drone = ur_name_body(m, "main");
+  double dt = m->opt.dt, tmax = m->opt.tmax;
+  double settle_dt = ur_model_param(m, "settle_dt", NAN), window = ur_model_param(m, "window", 1);
+  if (drone < 0 || m->body[drone].jtype != urJNT_FREE || m->body[drone].parent >= 0) {
+    snprintf(err, n, "the model needs a free body 'main' (the drone) with parent=world");
+  } else if (ur_name_geom(m, "head_cranium") < 0 || ur_name_sensor(m, "head_acc") < 0 ||
+             ur_name_sensor(m, "neck_load") < 0 || ur_name_sensor(m, "head_pos") < 0) {
+    snprintf(err, n, "the model needs ellipsoid head_cranium and sensors head_acc, neck_load, "
+             "head_pos (the person)");
+  } else if (!(dt > 0 && dt <= 1e-3)) {
+    snprintf(err, n, "dt %g s is out of range; accepted: (0, 1e-3] s (a contact pulse lasts "
+             "about 1 ms: a coarser step cannot follow it)", dt);
+  } else if (!(tmax > 0 && tmax <= 1)) {
+    snprintf(err, n, "tmax %g s is out of range; accepted: (0, 1] s (an impact is over within "
+             "0.15 s; a longer run only fills memory with its histories)", tmax);
+  } else if (!(tmax / dt <= 1e5)) {
+    snprintf(err, n, "tmax/dt = %.3g steps; accepted: at most 1e5 steps of one impact (each "
+             "impact keeps its histories in memory, about 30 MB at 1e5 steps)", tmax / dt);
+  } else if (!isnan(settle_dt) && !(settle_dt >= dt && settle_dt <= 0.01)) {
+    snprintf(err, n, "settle_dt %g s is out of range; accepted: [dt, 0.01] s = [%g, 0.01] s "
+             "(the stance never settles with a finer step than the impact's, and 1 s of settling "
+             "needs at least 100 steps)", settle_dt, dt);
+  } else if (!(window > 0)) {
+    snprintf(err, n, "window %g s is out of range; accepted: > 0 s (an impact ends this long "
+             "after its first contact)", window);
+  } else {
+    if (n) err[0] = 0;
+    return 0;
+  }
+  return -1;
+}
+
 /* the roles, R_max and the stance: settled (from NULL; the person's settled state saved into
    keep if given, top raised as settle does), or the settled state of from, whose person is m's */
 static int setup(urImpactSetup* s, const urModel* m, double settle_time, const urStance* from,
