@@ -84,6 +84,13 @@ interrupt
 check fifo_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "interrupted (Ctrl-C) while opening"'
 
+# ... and a grid file that is a FIFO nobody writes
+"$U" -c "grid load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
+sleep 0.5
+interrupt
+check fifo_grid_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+  has "$TMP/err" "grid load: interrupted (Ctrl-C) while opening"'
+
 # ---- at the prompt, on a terminal (tmux) ----
 if ! command -v tmux >/dev/null 2>&1; then
   echo "note: tmux is not installed; the terminal checks are skipped"

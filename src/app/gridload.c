@@ -587,6 +587,9 @@ int ura_grid_load(uraCtx* c, const char* path) {
 
   if (ura_dry(c, "grid load")) return -1;
   r.f = fopen(path, "r");
+  if (!r.f && ura_interrupted()) {
+    return ura_fail(c, "grid load: interrupted (Ctrl-C) while opening '%s'", path);
+  }
   if (!r.f) return ura_fail(c, "grid load: cannot open '%s': %s", path, strerror(errno));
 
   /* comments (conditions), then the header that tells the format */
