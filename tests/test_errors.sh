@@ -133,6 +133,10 @@ check echo_c1_sanitised cond '[ "$RC" -eq 1 ] && has "$TMP/err" "\\\\xc2\\\\x9b0
   has "$TMP/err" "été"'
 run -c "grid load $TMP/x${ESC}[2Jy.csv"
 check echo_path_sanitised cond '[ "$RC" -eq 1 ] && ! grep -q "$ESC" "$TMP/err"'
+cp "$TMP/tiny.csv" "$TMP/x${ESC}[2Jy.csv"
+run -c "grid load $TMP/x${ESC}[2Jy.csv; grid show; grid cells"
+check source_sanitised cond '[ "$RC" -eq 0 ] && ! grep -q "$ESC" "$TMP/out" &&
+  has "$TMP/out" "x\\\\x1b\[2Jy.csv"'
 
 # ---- a grid file's error names the script line that loaded it as well ----
 printf 'along,0.00\n0.10,zz\n' >"$TMP/badgrid.csv"

@@ -626,7 +626,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
   c->last.face = m.face;
   c->last.speed = m.speed;
   c->last.angle = m.angle;
-  snprintf(c->last.source, sizeof c->last.source, "%s", path);
+  ura_printable(path, c->last.source, sizeof c->last.source);   /* shown by grid show, view */
   g = NULL;
   rc = 0;
 done:
