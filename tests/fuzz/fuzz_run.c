@@ -211,10 +211,21 @@ static void fresh(void) {
   c.inspect = ura_inspect_cell;
 }
 
+/* the scratch folder goes with the process */
+static void remove_scratch(void) {
+  if (!*scratch || chdir(scratch)) return;
+  clean();
+  unlink("bin/gnuplot");
+  unlink("bin/sim.urm");
+  rmdir("bin");
+  if (!chdir("/")) rmdir(scratch);
+}
+
 int LLVMFuzzerInitialize(int* argc, char*** argv) {
   null = fopen("/dev/null", "w");
   snprintf(scratch, sizeof scratch, "/tmp/uasrisk-fuzz-run.XXXXXX");
   if (!null || !mkdtemp(scratch) || chdir(scratch)) return 1;
+  atexit(remove_scratch);
   mkdir("bin", 0755);
   snprintf(simfile, sizeof simfile, "%s/bin/sim.urm", scratch);
   FILE* g = fopen("bin/gnuplot", "w");
