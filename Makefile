@@ -12,8 +12,10 @@
 #                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
 #   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
 #                 session under valgrind (scripts/check-san.sh)
-#   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions or FUZZ_SECONDS
-#                 each (clang; build-fuzz/)
+#   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions (FUZZ_RUN_RUNS for
+#                 the executing script target) or FUZZ_SECONDS each (clang; build-fuzz/)
+#   make check-tsan  a ThreadSanitizer build (build-tsan/) runs a short grid on 2 threads and is
+#                 interrupted by SIGINT in the middle (scripts/check-tsan.sh)
 #   make install PREFIX=/usr/local
 
 PREFIX  ?= /usr/local
@@ -46,7 +48,8 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasrisk.a
 APPLIB  = $(BUILD)/libuasrisk-app.a
 
-.PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz
+.PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz \
+  check-tsan
 all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -136,20 +139,33 @@ check-san:
 
 # fuzzing with libFuzzer: each target until FUZZ_RUNS executions or FUZZ_SECONDS, corpora in
 # tests/fuzz/corpus_*. Each target has its own build: the model-language target instruments
-# everything for coverage; the command target only the application (the core, the model parser
-# above all, is the model target's field and would slow it five-fold), under ASan+UBSan all.
+# everything for coverage; the command targets only the application (the core, the model parser
+# above all, is the model target's field and would slow them five-fold), under ASan+UBSan all.
+# The executing script target (fuzz_run: short simulations, files in a scratch folder, a fake
+# gnuplot) is slower per input: FUZZ_RUN_RUNS executions.
 FUZZ_SAN = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_OPT = $(FUZZ_SAN) -fsanitize=fuzzer-no-link
 FUZZ_RUNS ?= 1000000
+FUZZ_RUN_RUNS ?= 100000
 FUZZ_SECONDS ?= 7200
 fuzz:
 	@sh scripts/setup.sh fuzz
 	@$(MAKE) --no-print-directory BUILD=build-fuzz/model CC=clang OPT='$(FUZZ_OPT)' \
 	  build-fuzz/model/fuzz/fuzz_model
 	@$(MAKE) --no-print-directory BUILD=build-fuzz/script CC=clang OPT='$(FUZZ_OPT)' \
-	  CORE_OPT='$(FUZZ_SAN)' build-fuzz/script/fuzz/fuzz_script
+	  CORE_OPT='$(FUZZ_SAN)' build-fuzz/script/fuzz/fuzz_script build-fuzz/script/fuzz/fuzz_run
 	@sh scripts/fuzz.sh $(FUZZ_RUNS) $(FUZZ_SECONDS) build-fuzz/model/fuzz/fuzz_model \
 	  build-fuzz/script/fuzz/fuzz_script
+	@sh scripts/fuzz.sh $(FUZZ_RUN_RUNS) $(FUZZ_SECONDS) build-fuzz/script/fuzz/fuzz_run
+
+# ThreadSanitizer: the application and the core built with -fsanitize=thread (build-tsan/), a
+# short grid on 2 threads interrupted by SIGINT while its workers run; any report fails
+TSAN_OPT = -O1 -g -fsanitize=thread -fno-omit-frame-pointer -DurNO_CLONES
+check-tsan:
+	@sh scripts/setup.sh tsan
+	@$(MAKE) --no-print-directory BUILD=build-tsan BIN=build-tsan/uasrisk OPT='$(TSAN_OPT)' \
+	  LDFLAGS='-pthread $(TSAN_OPT)' build-tsan/uasrisk
+	@sh scripts/check-tsan.sh build-tsan/uasrisk
 
 # the core built with other options than the application (CORE_OPT, for the fuzz builds)
 ifneq ($(CORE_OPT),)
@@ -171,6 +187,6 @@ install: all
 	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man7/; done; true
 
 clean:
-	rm -rf $(BUILD) build-san build-vg build-fuzz uasrisk
+	rm -rf $(BUILD) build-san build-vg build-fuzz build-tsan uasrisk
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

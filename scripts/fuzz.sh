@@ -5,17 +5,20 @@
 # New inputs go to new_NAME beside BIN (the committed corpus is only read); with
 # FUZZ_MINIMISE=1 the corpus is afterwards replaced by the minimal set (libFuzzer -merge=1)
 # covering it and the new inputs. Prints the executions each target reached; a crash, a timeout,
-# a leak or a sanitizer report fails, its input kept beside BIN.
+# a leak or a sanitizer report fails, its input kept beside BIN. Paths are given to libFuzzer
+# absolute: a target may work in a folder of its own (fuzz_run works in a scratch folder).
 set -u
 runs=$1; secs=$2; shift 2
 status=0
+root=$(pwd)
 for bin in "$@"; do
+  case "$bin" in /*) ;; *) bin=$root/$bin ;; esac
   t=$(basename "$bin"); dir=$(dirname "$bin"); name=${t#fuzz_}
-  corpus=tests/fuzz/corpus_$name
+  corpus=$root/tests/fuzz/corpus_$name
   new=$dir/new_$name
   log=$dir/$t.log
   mkdir -p "$new" "$corpus"
-  dict=""; [ -r "tests/fuzz/$name.dict" ] && dict="-dict=tests/fuzz/$name.dict"
+  dict=""; [ -r "tests/fuzz/$name.dict" ] && dict="-dict=$root/tests/fuzz/$name.dict"
   start=$(date +%s)
   "$bin" -runs="$runs" -max_total_time="$secs" -timeout=20 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$dir/$t-" $dict "$new" "$corpus" >"$log" 2>&1

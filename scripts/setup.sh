@@ -2,13 +2,15 @@
 # setup.sh: install the Debian packages uasrisk needs, only those that are missing.
 # Called by the Makefile (make deps, run, check); safe to run again; prints nothing when all is there.
 # 'setup.sh fuzz' adds what make fuzz needs (clang, libFuzzer); 'setup.sh san' what make
-# check-san needs (valgrind; the sanitizer runtimes come with gcc).
+# check-san needs (valgrind; the sanitizer runtimes come with gcc); 'setup.sh tsan' the
+# ThreadSanitizer runtime of make check-tsan.
 set -e
 
 pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev gnuplot-nox tmux"
 case "$1" in
   fuzz) pkgs="$pkgs clang libclang-rt-dev" ;;
   san) pkgs="$pkgs valgrind" ;;
+  tsan) pkgs="$pkgs libtsan2" ;;
 esac
 [ -n "$UASRISK_EXTRA_PKGS" ] && pkgs="$pkgs $UASRISK_EXTRA_PKGS"
 

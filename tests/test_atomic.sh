@@ -1,8 +1,10 @@
 # test_atomic.sh: every writer (save session, export grid, export history, export contacts,
 # model save) writes a temporary file beside the target and renames it: a write that fails (the
-# file size limit, ulimit -f, stands for a full disk) or a rename that fails (the target is a
-# directory) leaves the old file intact and no temporary file behind; a good write keeps the old
-# file's mode
+# file size limit, ulimit -f, stands for a full disk) leaves the old file intact and no temporary
+# file behind, a directory in the way is refused; a good write keeps the old file's mode. What is
+# not a regular file is never replaced: a device (/dev/full: "No space left on device", reported)
+# or a FIFO is written in place, /dev/stdout through the open descriptor; a symbolic link is
+# followed to its file and stays a link; SIGTERM during a write leaves no temporary file.
 . tests/lib.sh
 
 U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
@@ -30,6 +32,8 @@ lim_session=1 lim_grid=1 lim_history=1 lim_contacts=0 lim_model=1
 # no temporary file beside the target
 no_temp() { ! ls "$TMP/d" | grep -q '\.tmp\.'; }
 
+mknod "$TMP/full" c 1 7 2>/dev/null && mknod "$TMP/null" c 1 3 2>/dev/null ||
+  echo "note: cannot make device nodes (not root); the device checks are skipped"
 for w in session grid history contacts model; do
   eval "pre=\$pre_$w; cmd=\$write_$w; lim=\$lim_$w"
   mkdir -p "$TMP/d"
@@ -45,13 +49,33 @@ for w in session grid history contacts model; do
   check "${w}_old_intact" [ "$(cat "$TMP/d/$w.out")" = "OLD CONTENT" ]
   check "${w}_no_temp_after_write" no_temp
 
-  # the rename fails: a directory stands where the file goes
+  # a directory stands where the file goes: refused before anything is written
   mkdir -p "$TMP/d/$w.dir"
   run -c "$pre; $cmd $TMP/d/$w.dir"
-  check "${w}_rename_fails" cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
-    has "$TMP/err" "cannot write .*/d/$w.dir.: Is a directory; the file is unchanged$" &&
+  check "${w}_directory_refused" cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+    has "$TMP/err" "cannot write .*/d/$w.dir.: it is a directory; accepted: a regular file" &&
     [ -d "$TMP/d/$w.dir" ]'
-  check "${w}_no_temp_after_rename" no_temp
+  check "${w}_no_temp_after_directory" no_temp
+
+  # a full device: written in place, the error reported as it is, the device still a device
+  # (nodes of our own, as /dev/full and /dev/null: a writer that replaced them must not harm
+  # the machine's)
+  if [ -c "$TMP/full" ]; then
+    run -c "$pre; $cmd $TMP/full"
+    check "${w}_dev_full" cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+      has "$TMP/err" "cannot write .*/full.: No space left on device$" && [ -c "$TMP/full" ]'
+    run -c "$pre; $cmd $TMP/null"
+    check "${w}_dev_null" cond '[ "$RC" -eq 0 ] && [ -c "$TMP/null" ] && [ ! -s "$TMP/err" ]'
+  fi
+
+  # a symbolic link: the file it names is replaced, the link stays
+  printf 'OLD CONTENT\n' >"$TMP/d/$w.real"
+  ln -s "$w.real" "$TMP/d/$w.link"
+  run -c "$pre; $cmd $TMP/d/$w.link"
+  check "${w}_symlink_followed" cond '[ "$RC" -eq 0 ] && [ -L "$TMP/d/$w.link" ] &&
+    [ "$(readlink "$TMP/d/$w.link")" = "$w.real" ] && ! grep -q "OLD CONTENT" "$TMP/d/$w.real" &&
+    [ -s "$TMP/d/$w.real" ]'
+  check "${w}_no_temp_after_symlink" no_temp
 
   # a good write replaces the file whole and keeps its mode
   chmod 640 "$TMP/d/$w.out"
@@ -62,6 +86,46 @@ for w in session grid history contacts model; do
   check "${w}_no_temp_after_success" no_temp
   rm -rf "$TMP/d"
 done
+
+# a dangling symbolic link: the file it names is made
+ln -s made.csv "$TMP/dangling.csv"
+run -c "grid load $TMP/small.csv; export grid $TMP/dangling.csv"
+check dangling_link_target_made cond '[ "$RC" -eq 0 ] && [ -L "$TMP/dangling.csv" ] &&
+  [ -s "$TMP/made.csv" ]'
+
+# /dev/stdout: through the open descriptor, in order with the other output, a file or a pipe
+"$U" -c "grid load $TMP/small.csv; show wind; export grid /dev/stdout; show face" >"$TMP/out" \
+  2>"$TMP/err"; RC=$?
+check stdout_file cond '[ "$RC" -eq 0 ] && [ "$(sed -n 1p "$TMP/out" | cut -c1-4)" = wind ] &&
+  grep -q "^dpar,dperp,contact" "$TMP/out" && [ "$(tail -1 "$TMP/out" | cut -c1-4)" = face ] &&
+  [ -f "$TMP/out" ] && ! ls "$TMP" | grep -q "out.tmp"'
+"$U" -c "grid load $TMP/small.csv; export grid /dev/stdout" | grep -c '^-\{0,1\}0\.' >"$TMP/n"
+check stdout_pipe [ "$(cat "$TMP/n")" -ge 10 ]
+
+# a FIFO: written in place when a reader comes; without one, Ctrl-C stops the wait
+mkfifo "$TMP/fifo"
+timeout 10 cat "$TMP/fifo" >"$TMP/fifo.out" &
+run -c "grid load $TMP/small.csv; export grid $TMP/fifo"
+wait
+check fifo_written cond '[ "$RC" -eq 0 ] && [ -p "$TMP/fifo" ] && grep -q "^dpar,dperp" "$TMP/fifo.out"'
+"$U" -c "grid load $TMP/small.csv; export grid $TMP/fifo" >/dev/null 2>"$TMP/err" & PID=$!
+sleep 0.5; t0=$(date +%s%N); kill -INT $PID; wait $PID; RC=$?
+MS=$(( ($(date +%s%N) - t0) / 1000000 )); echo "  (SIGINT while a writer waits for a FIFO reader: ended after $MS ms)"
+check fifo_wait_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+  has "$TMP/err" "export: interrupted (Ctrl-C) while opening"'
+
+# SIGTERM while the temporary file is being written (a large export): no temporary file stays
+awk 'BEGIN { print "dpar,dperp,p"; for (i = 0; i < 500; i++) for (j = -250; j < 250; j++)
+       printf "%.2f,%.2f,%.3f\n", i * 0.05, j * 0.05, (i + j + 300) % 10 / 10 }' >"$TMP/big.csv"
+mkdir -p "$TMP/t"
+"$U" -c "grid load $TMP/big.csv; export grid $TMP/t/g.csv; export grid $TMP/t/g.csv; export grid $TMP/t/g.csv" \
+  >/dev/null 2>&1 & PID=$!
+n=0
+while ! ls "$TMP/t" | grep -q '\.tmp\.' && [ "$n" -lt 600 ]; do sleep 0.01; n=$((n + 1)); done
+check sigterm_while_writing cond 'ls "$TMP/t" | grep -q "\.tmp\."'
+kill -TERM $PID; wait $PID; RC=$?
+check sigterm_status [ "$RC" -eq 143 ]
+check sigterm_no_temp cond '! ls "$TMP/t" | grep -q "\.tmp\."'
 
 # a new file: the mode a plain fopen gives (0666 less the umask)
 (umask 027; exec "$U" -c "grid load $TMP/small.csv; export grid $TMP/new.csv") >/dev/null 2>&1

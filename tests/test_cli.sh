@@ -188,4 +188,18 @@ check quote_double_holds_single cond '[ "$RC" -eq 0 ] && has "$TMP/out" "it.s\.p
 run -c "set output '/tmp/x.png"
 check quote_unterminated cond '[ "$RC" -eq 1 ] && has "$TMP/err" "unterminated quote"'
 
+# ---- standard output that cannot be written: one message, a non-zero exit (issue 24, item 6) ----
+"$UASRISK" -c 'case C; impact 0 0; history' >/dev/full 2>"$TMP/err"; RC=$?
+check stdout_full cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "^-c:1: impact: cannot write the output: No space left on device$"'
+"$UASRISK" -c 'help' >/dev/full 2>"$TMP/err"; RC=$?
+check stdout_full_help cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "help: cannot write the output: No space left on device$"'
+printf 'show wind\n' | "$UASRISK" >/dev/full 2>"$TMP/err"; RC=$?
+check stdout_full_stdin cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "^<stdin>:1: show: cannot write the output: No space left on device$"'
+"$UASRISK" -h >/dev/full 2>"$TMP/err"; RC=$?
+check stdout_full_usage cond '[ "$RC" -eq 1 ] &&
+  has "$TMP/err" "^uasrisk: cannot write standard output: No space left on device$"'
+
 finish

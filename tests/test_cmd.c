@@ -318,6 +318,28 @@ static void model_reuse(void** state) {
 
 /* dry mode (the fuzz harness): arguments are still checked, then simulations, grids, plots,
    the viewer and files are refused, and nothing is written */
+/* an impact that fails (here: stopped by Ctrl-C at its first step) keeps the last impact: its
+   contacts and histories are as they were (issue 24, item 4) */
+static void failed_impact_keeps_last(void** state) {
+  fixture* f = *state;
+  run(f, "case C; impact 0.25 0.25", 0);
+  char* contacts = strdup(run(f, "contacts", 0));
+  char* history = strdup(run(f, "history", 0));
+  assert_non_null(strstr(contacts, "impact at (0.25, 0.25) m"));
+
+  *ura_interrupt_flag() = 1;
+  char* argv[] = {"impact", "0", "0", NULL};
+  assert_int_equal(ura_cmd_impact(&f->c, 3, argv), -1);
+  ura_interrupt_clear();
+  assert_non_null(strstr(f->c.err, "impact 0 0: interrupted (Ctrl-C); the last impact is kept"));
+  assert_string_equal(run(f, "contacts", 0), contacts);
+  assert_string_equal(run(f, "history", 0), history);
+  uraTrace tr;
+  assert_int_equal(ura_last_trace(&f->c, &tr), 0);          /* plot history has it too */
+  free(contacts);
+  free(history);
+}
+
 static void dry_mode(void** state) {
   fixture* f = *state;
   f->c.dry = 1;
@@ -341,6 +363,7 @@ static void dry_mode(void** state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test_setup_teardown(dry_mode, setup, teardown),
+    cmocka_unit_test_setup_teardown(failed_impact_keeps_last, setup, teardown),
     cmocka_unit_test_setup_teardown(model_reuse, setup, teardown),
     cmocka_unit_test_setup_teardown(set_and_show, setup, teardown),
     cmocka_unit_test_setup_teardown(set_says_reach, setup, teardown),

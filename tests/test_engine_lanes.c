@@ -279,7 +279,7 @@ static void test_more_than_lanes(void** state) {
 static void test_stop_lanes(void** state) {
   urModel* m = scene_build(0);
   assert_non_null(m);
-  volatile int stop = 0;
+  _Atomic int stop = 0;
   m->opt.stop = &stop;
   urLanes L;
   assert_int_equal(ur_lanes_init(m, &L), 0);

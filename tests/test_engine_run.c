@@ -158,7 +158,7 @@ static void test_stop_request(void** state) {
   double I[6] = {0.01, 0.01, 0.01, 0, 0, 0};
   int b = ur_model_add_body(m, "arm", -1, urJNT_REVOLUTE, NULL, NULL);
   ur_model_set_inertia(m, b, 1, (double[3]){0.1, 0, 0}, I);
-  volatile int stop = 0;
+  _Atomic int stop = 0;
   m->opt.stop = &stop;
   m->opt.tmax = 1;
   assert_int_equal(ur_model_compile(m), 0);

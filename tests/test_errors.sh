@@ -122,6 +122,29 @@ check gnuplot_absent cond '[ "$RC" -eq 0 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "^error: plot grid: gnuplot not found; install it (Debian: gnuplot-nox) or use export" &&
   has "$TMP/out" "^wind  *3 m/s"'
 
+# ---- echoed input is made printable: no control byte of a name reaches the terminal ----
+ESC=$(printf '\033')
+run -c "set ${ESC}[2J${ESC}[31mred$(printf '\007')x 1"
+check echo_sanitised cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  ! grep -q "$ESC" "$TMP/err" && ! grep -q "$(printf "\007")" "$TMP/err" &&
+  has "$TMP/err" "unknown parameter .\\\\x1b\[2J\\\\x1b\[31mred\\\\x07x."'
+run -c "$(printf 'show \302\2330m\303\251t\303\251')"
+check echo_c1_sanitised cond '[ "$RC" -eq 1 ] && has "$TMP/err" "\\\\xc2\\\\x9b0m" &&
+  has "$TMP/err" "été"'
+run -c "grid load $TMP/x${ESC}[2Jy.csv"
+check echo_path_sanitised cond '[ "$RC" -eq 1 ] && ! grep -q "$ESC" "$TMP/err"'
+cp "$TMP/tiny.csv" "$TMP/x${ESC}[2Jy.csv"
+run -c "grid load $TMP/x${ESC}[2Jy.csv; grid show; grid cells"
+check source_sanitised cond '[ "$RC" -eq 0 ] && ! grep -q "$ESC" "$TMP/out" &&
+  has "$TMP/out" "x\\\\x1b\[2Jy.csv"'
+
+# ---- a grid file's error names the script line that loaded it as well ----
+printf 'along,0.00\n0.10,zz\n' >"$TMP/badgrid.csv"
+printf 'show wind\ngrid load %s\n' "$TMP/badgrid.csv" >"$TMP/g.ses"
+run "$TMP/g.ses"
+check gridload_script_line cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "^.*g.ses:2: .*badgrid.csv:2: value at cross offset 0.00: .zz. is not a number"'
+
 # ---- no terminal: the viewer says what to use (a too small terminal: tests/test_view.sh) ----
 refused view_no_tty "grid load $TMP/tiny.csv; view" "view: needs a terminal; use 'grid show'$"
 

@@ -13,8 +13,8 @@
 typedef struct {
   double r;
   int fail_row;                    /* cells with this dpar (x100) fail */
-  volatile int* stop_after;        /* set *stop after this many cells */
-  volatile int stop;
+  _Atomic int* stop_after;         /* set *stop after this many cells */
+  _Atomic int stop;
   long calls;
 } synth;
 

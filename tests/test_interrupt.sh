@@ -70,7 +70,7 @@ check sweep_message cond '[ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "s.ses:6: sweep: interrupted (Ctrl-C) at wind 0; 0 of 2 grids finished (grid: interrupted"'
 
 # ---- the settling of the stance (a fine settling step makes it long): stops at its next step ----
-printf 'set settle_dt 1e-5\nset dt 1e-5\nsave session %s/ready.ses\nimpact 0 0\n' "$TMP" >"$TMP/st.ses"
+printf 'set dt 1e-5\nset settle_dt 1e-5\nsave session %s/ready.ses\nimpact 0 0\n' "$TMP" >"$TMP/st.ses"
 IN= start_bg settle 0.3 "$TMP/st.ses"
 interrupt
 check settle_stopped cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
@@ -83,6 +83,13 @@ sleep 0.5
 interrupt
 check fifo_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "interrupted (Ctrl-C) while opening"'
+
+# ... and a grid file that is a FIFO nobody writes
+"$U" -c "grid load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
+sleep 0.5
+interrupt
+check fifo_grid_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+  has "$TMP/err" "grid load: interrupted (Ctrl-C) while opening"'
 
 # ---- at the prompt, on a terminal (tmux) ----
 if ! command -v tmux >/dev/null 2>&1; then

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <cmocka.h>
 #include "uasrisk/modellang.h"
 
@@ -928,8 +929,57 @@ static void test_split(void** state) {
 
 //---------------------------------- main ----------------------------------------------------------
 
+/* a stop request ends the parse between statements; the limits end a model that is too large
+   at the statement past them, in time linear in the text (issue 24, item 5) */
+static void test_stop_and_limits(void** state) {
+  char err[300];
+  _Atomic int stop = 1;
+  urModelSource src = {"param a 1\nparam b 2\n", "s.urm", 1};
+  assert_null(ur_model_parse_stop(&src, 1, NULL, 0, &stop, err, sizeof err));
+  assert_string_equal(err, "s.urm:1: stopped on request (interrupted)");
+  stop = 0;
+  urModel* m = ur_model_parse_stop(&src, 1, NULL, 0, &stop, err, sizeof err);
+  assert_non_null(m);
+  ur_model_free(m);
+
+  /* 1001 bodies: refused at the 1001st, with the limit named */
+  size_t cap = 1 << 20, n = 0;
+  char* text = malloc(cap);
+  n += (size_t)snprintf(text + n, cap - n, "body b0 parent=world joint=free pos=0,0,0 mass=1 "
+                        "inertia=1,1,1\n");
+  for (int i = 1; i <= 1000; i++) {
+    n += (size_t)snprintf(text + n, cap - n, "body b%d parent=b%d joint=revolute pos=0,0,0.01 "
+                          "mass=1\n", i, i - 1);
+  }
+  urModelSource big = {text, "big.urm", 1};
+  assert_null(ur_model_parse(&big, 1, NULL, 0, err, sizeof err));
+  assert_string_equal(err, "big.urm:1001: more than 1000 bodies in the model; accepted: at most "
+                      "1000 (uasrisk-model(5), LIMITS)");
+
+  /* 1000 bodies and 3999 parameters parse in well under a second (names by hash) */
+  char* end = strstr(text, "body b1000 ");
+  n = (size_t)(end - text);
+  for (int i = 0; i < 3999; i++) n += (size_t)snprintf(text + n, cap - n, "param p%d %d\n", i, i);
+  struct timespec t0, t1;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
+  m = ur_model_parse(&big, 1, NULL, 0, err, sizeof err);
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  if (!m) fail_msg("%s", err);
+  ur_model_free(m);
+  assert_true(t1.tv_sec - t0.tv_sec + 1e-9 * (t1.tv_nsec - t0.tv_nsec) < 1.0);
+
+  /* 257 part lines: refused by the split */
+  n = 0;
+  for (int i = 0; i < 257; i++) n += (size_t)snprintf(text + n, cap - n, "part p%d\n", i);
+  urModelPart parts[4];
+  assert_int_equal(ur_model_split(text, "parts.urm", parts, 4, err, sizeof err), -1);
+  assert_non_null(strstr(err, "parts.urm:257: more than 256 parts"));
+  free(text);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_stop_and_limits),
     cmocka_unit_test(test_model_fields),
     cmocka_unit_test(test_numbers_accepted),
     cmocka_unit_test(test_units),

@@ -48,9 +48,11 @@ if command -v gnuplot >/dev/null 2>&1; then
   run -c 'set terminal "dumb size 90,30"; plot pof'
   check dumb_stdout cond '[ "$RC" -eq 0 ] && has "$TMP/out" "HIC15 -> P_HIC"'
 
-  # gnuplot's own refusals name the setting
+  # an unknown terminal is refused when set; gnuplot's own refusals name the setting
   run -c "set terminal nosuchterm; set output $TMP/x.png; plot pof"
-  check bad_terminal fails_with "set terminal nosuchterm: unknown or ambiguous terminal"
+  check bad_terminal fails_with "set terminal: unknown terminal 'nosuchterm'; accepted: NAME"
+  run -c "set terminal 'png ansi'; set output $TMP/x.png; plot pof"
+  check bad_terminal_option cond '[ "$RC" -eq 1 ] && has "$TMP/err" "set terminal png ansi: "'
   run -c "set terminal png; set output /nonexistent/dir/x.png; plot pof"
   check bad_output fails_with "set output ./nonexistent/dir/x.png.: cannot open file"
 else
@@ -71,6 +73,52 @@ run -c 'plot history head_acc'
 check history_not_yet cond '[ "$RC" -eq 1 ] && has "$TMP/err" "plot history: no impact yet"'
 run -c 'plot sweep'
 check sweep_not_yet cond '[ "$RC" -eq 1 ] && has "$TMP/err" "plot sweep: no sweep yet"'
+
+# ---- gnuplot receives no command from a setting (issue 24, item 1) ----
+# a terminal size that is an expression, a font that is a function call, an output that is a
+# pipe, a backquote in an output name: refused when set (or passed as a plain string), never run;
+# a session file holding them stops at its line; with a real gnuplot when there is one
+mkdir -p "$TMP/atk"
+( cd "$TMP/atk" &&
+  "$U" -c "set terminal 'dumb size 80+0*strlen(system(\"touch pwned1\")),24'; plot pof" \
+    >"$TMP/out" 2>"$TMP/err"; echo $? >"$TMP/rc" )
+RC=$(cat "$TMP/rc")
+check inject_size_refused fails_with "set terminal: option 'size': size needs W,H: two positive"
+( cd "$TMP/atk" &&
+  "$U" -c "set terminal \"pngcairo font system('touch pwned2')\"; set output f.png; plot pof" \
+    >"$TMP/out" 2>"$TMP/err"; echo $? >"$TMP/rc" )
+RC=$(cat "$TMP/rc")
+check inject_font_refused fails_with "set terminal: option 'font': font needs a quoted 'NAME,SIZE'"
+( cd "$TMP/atk" &&
+  "$U" -c "set terminal dumb; set output '|touch pwned3'; plot pof" >"$TMP/out" 2>"$TMP/err"
+  echo $? >"$TMP/rc" )
+RC=$(cat "$TMP/rc")
+check inject_pipe_refused fails_with "set output: '|touch pwned3' is refused: it starts with '|'"
+( cd "$TMP/atk" && "$U" -c "set terminal dumb; set output ' |touch pwned4'; plot pof" \
+    >/dev/null 2>&1 )
+( cd "$TMP/atk" && "$U" -c "set terminal dumb; set output 'x\`touch pwned5\`.txt'; plot pof" \
+    >"$TMP/out" 2>"$TMP/err"; echo $? >"$TMP/rc" )
+printf '%s\n' "set terminal 'dumb size 80+0*strlen(system(\"touch pwned6\")),24'" 'plot pof' \
+  >"$TMP/atk/evil.ses"
+( cd "$TMP/atk" && "$U" evil.ses >"$TMP/out" 2>"$TMP/err2"; echo $? >"$TMP/rc2" )
+check inject_session_stops cond '[ "$(cat "$TMP/rc2")" -eq 1 ] &&
+  has "$TMP/err2" "^evil.ses:1: set terminal: option .size."'
+check inject_nothing_ran cond '! ls "$TMP/atk" | grep -q "^pwned"'
+if command -v gnuplot >/dev/null 2>&1; then
+  check inject_backquote_plain cond '[ "$(cat "$TMP/rc")" -eq 0 ] &&
+    [ -s "$TMP/atk/x\`touch pwned5\`.txt" ]'
+fi
+# what reaches gnuplot: the terminal as uasrisk writes it, the output in single quotes
+run -c "set terminal 'pngcairo  font \"Arial,10\" size 640,480 noenhanced'; show terminal"
+check terminal_normalised has "$TMP/out" "^terminal  *pngcairo font 'Arial,10' size 640,480 noenhanced$"
+
+# ---- save session writes the terminal and output back so that they replay (item 7) ----
+run -c "set terminal 'pngcairo font \"Arial,10\"'; set output \"it's.png\"; save session $TMP/q.ses"
+check save_quoted cond 'grep -qx "set terminal \"pngcairo font '"'"'Arial,10'"'"'\"" "$TMP/q.ses" &&
+  grep -qx "set output \"it'"'"'s.png\"" "$TMP/q.ses"'
+run "$TMP/q.ses" -c 'show terminal; show output'
+check save_replays cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^terminal  *pngcairo font .Arial,10.$" &&
+  has "$TMP/out" "^output  *it.s.png$"'
 
 # gnuplot missing: one clear line, status 1
 env PATH=/nonexistent "$U" -c "set terminal png; set output $TMP/m.png; plot pof" \
@@ -95,6 +143,7 @@ case "$FAKE_GP" in
   fail) head -c 100 >/dev/null; echo '"/dev/stdin" line 7: fake failure' >&2; exit 1 ;;
   kill) kill -9 $$ ;;
   early) sleep 0.2; exit 3 ;;
+  hang) echo $$ >"$FAKE_DIR/gp.pid"; exec sleep 100 ;;
 esac
 EOF
 chmod +x "$TMP/bin/gnuplot"
@@ -145,5 +194,15 @@ awk 'BEGIN { print "dpar,dperp,p"; for (i = 0; i < 200; i++) for (j = -100; j <=
 fake early -c "grid load $TMP/big.csv; set terminal png; set output $TMP/f.png; plot grid"
 check sigpipe_survived [ "$RC" -eq 1 ]
 check sigpipe_message has "$TMP/err" "plot grid: gnuplot failed (it stopped reading)"
+
+# a gnuplot that hangs: Ctrl-C stops the wait (and gnuplot) within 0.2 s, not at the timeout
+env PATH="$TMP/bin:/usr/bin:/bin" FAKE_DIR="$TMP" FAKE_GP=hang DISPLAY= WAYLAND_DISPLAY= \
+  "$U" -c "set terminal png; set output $TMP/h.png; plot pof" >"$TMP/out" 2>"$TMP/err" & PID=$!
+sleep 0.5
+t0=$(date +%s%N); kill -INT $PID; wait $PID; RC=$?; MS=$(( ($(date +%s%N) - t0) / 1000000 ))
+echo "  (SIGINT while gnuplot hangs: ended after $MS ms)"
+check hang_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+  has "$TMP/err" "plot pof: interrupted (Ctrl-C); gnuplot was stopped$"'
+check hang_gnuplot_gone cond '[ -s "$TMP/gp.pid" ] && ! kill -0 "$(cat "$TMP/gp.pid")" 2>/dev/null'
 
 finish

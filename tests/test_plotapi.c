@@ -106,8 +106,8 @@ static void trace_all(void** state) {
   assert_int_equal(block_rows(s, "T"), N);
   assert_non_null(strstr(s, "\n10 152.957"));            /* 10 ms, 1500 m/s^2 = 152.96 g */
   assert_non_null(strstr(s, "set multiplot layout 2,1"));
-  assert_non_null(strstr(s, "set ylabel \"head_acc (g)\""));
-  assert_non_null(strstr(s, "set ylabel \"neck_fz (N)\""));
+  assert_non_null(strstr(s, "set ylabel 'head_acc (g)'"));
+  assert_non_null(strstr(s, "set ylabel 'neck_fz (N)'"));
   /* the HIC15 window of a 10 ms half-sine lies inside the pulse */
   const char* r = strstr(s, "set object 1 rect from ");
   assert_non_null(r);
@@ -117,7 +117,7 @@ static void trace_all(void** state) {
   assert_non_null(strstr(s, "plot $T using 1:2 with lines"));
   assert_non_null(strstr(s, "plot $T using 1:3 with lines"));
   /* a legend entry per signal and for the window; a canvas for two panels */
-  assert_non_null(strstr(s, "title \"head CG acceleration, resultant\""));
+  assert_non_null(strstr(s, "title 'head CG acceleration, resultant'"));
   assert_non_null(strstr(s, "keyentry with boxes"));
   assert_non_null(strstr(s, "set terminal png size 800,540\n"));
 }
@@ -129,10 +129,10 @@ static void trace_title(void** state) {
   f->tr.title = "case B, wind 0 m/s\nimpact at dpar 0.00 m";
   assert_int_equal(ura_plot_trace(&f->c, &f->tr, 1, h), 0);
   const char* s = sent(f);
-  assert_non_null(strstr(s, "set title \"case B, wind 0 m/s\\nimpact at dpar 0.00 m\" noenhanced"));
+  assert_non_null(strstr(s, "set title 'case B, wind 0 m/s'.\"\\n\".'impact at dpar 0.00 m' noenhanced"));
   assert_non_null(strstr(s, "set terminal png\n"));         /* one panel: the default canvas */
   assert_int_equal(ura_plot_trace(&f->c, &f->tr, 0, NULL), 0);
-  assert_non_null(strstr(sent(f), "set multiplot layout 2,1 title \"case B, wind 0 m/s\\n"));
+  assert_non_null(strstr(sent(f), "set multiplot layout 2,1 title 'case B, wind 0 m/s'.\"\\n\".'"));
 }
 
 /* selected signals, a given window, an unknown name */
@@ -167,9 +167,9 @@ static void xy(void** state) {
   assert_int_equal(block_rows(t, "S0"), 3);
   assert_int_equal(block_rows(t, "S1"), 3);
   assert_non_null(strstr(t, "\n4 NaN\n"));
-  assert_non_null(strstr(t, "title \"case \\\"B\\\"\""));
+  assert_non_null(strstr(t, "title 'case \"B\"'"));
   assert_non_null(strstr(t, "notitle"));
-  assert_non_null(strstr(t, "set xlabel \"wind (m/s)\" noenhanced"));
+  assert_non_null(strstr(t, "set xlabel 'wind (m/s)' noenhanced"));
   assert_int_equal(ura_plot_xy(&f->c, "plot sweep", NULL, NULL, NULL, 0, s), -1);
 }
 

@@ -80,12 +80,12 @@ check plot_panels grep -q '^set multiplot layout 1,2' "$S0"
 check plot_canvas grep -q '^set terminal png size 1200,520$' "$S0"
 check plot_blocks cond '[ "$(grep -c "^\$W[0-9] << EOD$" "$S0")" -eq 4 ] &&
   [ "$(grep -c "^\$F[0-9] << EOD$" "$S0")" -eq 1 ]'
-check plot_wind_title grep -q '^set title "Q against horizontal wind; cases C, B, grid step 0.3 m"' "$S0"
-check plot_face_title grep -q \
-  '^set title "Q against face direction; case B, wind 0 m/s, grid step 0.3 m\\narea_chute=3"' "$S0"
-check plot_labels cond 'grep -q "title \"case C, face 0 deg\"" "$S0" &&
-  grep -q "title \"case B, face 90 deg\"" "$S0" &&
-  grep -q "title \"case B, face 0 deg, area_chute=3\"" "$S0"'
+check plot_wind_title grep -q "^set title 'Q against horizontal wind; cases C, B, grid step 0.3 m'" "$S0"
+check plot_face_title grep -Fq \
+  "set title 'Q against face direction; case B, wind 0 m/s, grid step 0.3 m'.\"\\n\".'area_chute=3'" "$S0"
+check plot_labels cond 'grep -q "title '"'"'case C, face 0 deg'"'"'" "$S0" &&
+  grep -q "title '"'"'case B, face 90 deg'"'"'" "$S0" &&
+  grep -q "title '"'"'case B, face 0 deg, area_chute=3'"'"'" "$S0"'
 check plot_axes cond 'grep -q "set xlabel \"horizontal wind speed (m/s)\"" "$S0" &&
   grep -q "set xlabel \"face direction phi (deg" "$S0" && grep -q "set ylabel \"Q (m^2)\"" "$S0"'
 check plot_points cond 'sed -n "/^\$F[0-9] << EOD$/,/^EOD$/p" "$S0" | grep -c "^[0-9]" | grep -qx 2'

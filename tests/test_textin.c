@@ -80,9 +80,31 @@ static void refused(void** state) {
   free(buf);
 }
 
+/* text echoed in messages: control bytes, DEL, C1 controls and bytes that are not UTF-8 as \xNN;
+   printable ASCII and UTF-8 kept; cut to the buffer, never in the middle of an escape */
+static void printable(void** state) {
+  char buf[64];
+  ura_printable("set \033[2J\a\x7f", buf, sizeof buf);
+  assert_string_equal(buf, "set \\x1b[2J\\x07\\x7f");
+  ura_printable("\xc2\x9b" "31m \xc3\xa9t\xc3\xa9 \xe2\x82\xac", buf, sizeof buf);
+  assert_string_equal(buf, "\\xc2\\x9b31m \xc3\xa9t\xc3\xa9 \xe2\x82\xac");
+  ura_printable("\xff\xc3(\xed\xa0\x80\xc0\xaf", buf, sizeof buf);   /* invalid, surrogate, overlong */
+  assert_string_equal(buf, "\\xff\\xc3(\\xed\\xa0\\x80\\xc0\\xaf");
+  assert_int_equal(ura_printable("ab\ncd", buf, 7), 6);
+  assert_string_equal(buf, "ab\\x0a");
+  assert_int_equal(ura_printable("abcdef", buf, 4), 3);
+  assert_string_equal(buf, "abc");
+
+  /* every message goes through it */
+  uraCtx c;
+  memset(&c, 0, sizeof c);
+  ura_fail(&c, "unknown '%s'", "\033]0;x\007");
+  assert_string_equal(c.err, "unknown '\\x1b]0;x\\x07'");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(lines), cmocka_unit_test(refused),
+    cmocka_unit_test(lines), cmocka_unit_test(refused), cmocka_unit_test(printable),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -24,6 +24,16 @@ check paper_grids_present cond '[ -r "$T6" ] && [ -r "$T8" ]'
 
 . tests/lib_tmux.sh
 
+# ---- TERM=dumb: no cursor addressing; one line saying so, no escape codes, the prompt again ----
+start v0 100 20 TERM=dumb
+check dumb_prompt wait_for v0 'uasrisk\[A\]>'
+line v0 "grid load $TMP/tiny.csv; view"
+check dumb_refused wait_for v0 'error: view: the terminal \(TERM=dumb\) cannot place the cursor'
+line v0 "show case"
+check dumb_goes_on wait_for v0 '^case +A$'
+grab v0 -e
+check dumb_no_escapes cond '! grep -q "$ESC\[[0-9;]*[HJ]" "$TMP/screen"'
+
 # ---- a 160x50 terminal ----
 start v1 160 50
 check prompt wait_for v1 'uasrisk\[A\]>'

@@ -221,7 +221,7 @@ typedef struct {
   double ke_settle;                /* or kinetic energy below this for t_quiet, J (default 1e-3) */
   double vmax;                     /* failure beyond this joint speed, m/s or rad/s (default 1e4) */
   double jump_margin;              /* free-flight jump stops this far from contact, m (1e-3) */
-  volatile int* stop;              /* optional (not part of the model text): a step fails with
+  const _Atomic int* stop;         /* optional (not part of the model text): a step fails with
                                       urSTAT_STOPPED while *stop != 0 (an interrupt flag) */
 } urOption;
 

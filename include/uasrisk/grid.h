@@ -77,7 +77,7 @@ typedef struct {
   urImpactFn impact;
   urProgressFn progress;           /* optional; called from worker threads, serialised */
   void* ctx;
-  volatile int* stop;              /* optional; workers stop starting cells when *stop != 0 */
+  const _Atomic int* stop;         /* optional; workers stop starting cells when *stop != 0 */
   urImpactStreamFn impact_stream;  /* optional; when set, each worker hands it its cells instead
                                       of calling impact per cell */
 } urGridSpec;

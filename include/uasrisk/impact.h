@@ -119,6 +119,14 @@ typedef struct {
    largest joint deflection of the last settling, rad or m. 0, or -1 if the settling failed. */
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual);
 
+/* whether a compiled model can run impacts, before anything is settled: the roles it declares
+   (role drone=, head=, head_acc=, neck=, head_pos=) and the bounds of the simulation options,
+   each with its reason: dt in (0, 1e-3] s, tmax in (0, 1] s, at most 1e5 steps (tmax/dt),
+   settle_dt (when the model defines it) in [dt, 0.01] s, window (when defined) > 0. 0, or -1
+   with one line in err (n bytes) saying what was wrong and what is accepted. ur_impact_prepare
+   and ur_impact_setup fail on such a model too, later. */
+int ur_impact_check(const urModel* m, char* err, size_t n);
+
 /* take the roles the model declares (urModel.roles: drone, head, head_acc, neck, head_pos,
    chest, abdomen), compute R_max, settle the stance (settle_time s of gravity)
    and check it; 0 or -1 with s->err. The stance is a state of rest: the person as settled, every

@@ -40,16 +40,23 @@ typedef struct {
    a later source may refer to names of an earlier one), apply the overrides, build and compile
    the model. Returns the compiled model, or NULL with a one-line message in err (at most
    errlen bytes, "FILE:LINE: what was wrong; expected ...") and nothing allocated. An override
-   naming a parameter that no source defines is an error. err may be NULL. */
+   naming a parameter that no source defines is an error, and so is a model beyond the limits of
+   uasrisk-model(5) (e.g. more than 1000 bodies). err may be NULL. Time and memory grow linearly
+   with the text up to those limits. */
 urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
                         char* err, int errlen);
+
+/* The same, polling *stop (when stop is not NULL) between statements: a stop request fails the
+   parse with "FILE:LINE: stopped on request (interrupted)" (an interrupt flag, e.g. Ctrl-C). */
+urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
+                             const _Atomic int* stop, char* err, int errlen);
 
 /* Split text at its 'part NAME' lines. Each part starts at the beginning of the line holding its
    'part' statement and ends where the next part starts, so the parts concatenated in order give
    back the text exactly. Text before the first part line is a part named "", present only when
    that text is not empty (an empty text has no parts). Fills at most maxpart parts (parts may be
    NULL with maxpart 0) and returns the total number of parts, or -1 with a message in err
-   ("FILE:LINE: ...", FILE from file, may be NULL) for a malformed part line, a duplicate part
+   ("FILE:LINE: ...", FILE from file, may be NULL) for a malformed part line, more than 256 part lines, a duplicate part
    name or a continuation at the end of the text. */
 int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart,
                    char* err, int errlen);

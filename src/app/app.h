@@ -153,6 +153,9 @@ typedef struct uraCtx {
   /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
   int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
   struct uraMc* mc;                /* the last montecarlo's samples (NULL: none; app_risk.h) */
+  /* optional: asked before each command runs (the executing fuzz target bounds the work and the
+     files of its inputs); nonzero refuses the command with c->err set */
+  int (*guard)(struct uraCtx* c, int argc, char** argv);
 } uraCtx;
 
 /* record a failure message; always returns -1 */
@@ -181,6 +184,9 @@ typedef struct {
   double min, max;                 /* accepted closed range (numbers, list items); STR: size */
   const char* help;
   const char* const* choices;      /* uraP_ENUM: NULL-terminated names */
+  /* uraP_STR: checks a value and writes what is kept into norm (n bytes); 0, or -1 with the
+     failure recorded (NULL: any text of the size) */
+  int (*check)(struct uraCtx* c, const char* value, char* norm, size_t n);
 } uraParam;
 
 extern const uraParam ura_params[];
@@ -217,7 +223,7 @@ int ura_case_default(uraCtx* c);
    from (the live wind, face, lists, step and output settings kept) */
 const urPreset* ura_preset_find(uraCtx* c, const char* name);
 void ura_preset_names(uraCtx* c, char* buf, size_t n);
-int ura_preset_state(uraCtx* c, const urPreset* pr, uraState* ns);
+int ura_preset_state(uraCtx* c, const urPreset* pr, const urModel* m, uraState* ns);
 /* design parameters (design.c): mass also as the multibody drone's total (its role mass=
    parameter, as an override of ns; user: set by the user), the models a setting changes */
 int ura_design_mass(const urModel* m, uraState* ns, double mass, int user);
@@ -283,14 +289,29 @@ int ura_grid_show(uraCtx* c);
 int ura_grid_load(uraCtx* c, const char* path);
 int ura_cmd_view(uraCtx* c, int argc, char** argv);
 int ura_cmd_plot(uraCtx* c, int argc, char** argv);
+/* the checks of the terminal and output settings (plot.c): a terminal is a known name with
+   checked options (kept normalised: fonts in single quotes), an output a file name that gnuplot
+   cannot take for a pipe; both can be written back by save session */
+int ura_terminal_check(uraCtx* c, const char* value, char* norm, size_t n);
+int ura_output_check(uraCtx* c, const char* value, char* norm, size_t n);
+/* a word a script reads back as s: in double quotes, or single ones when s holds a double quote
+   (session.c); -1 when it cannot be written (a control byte, or both quote characters) */
+int ura_word_ok(const char* s);
+void ura_put_word(FILE* f, const char* s);
 void ura_last_free(uraCtx* c);
 
-/* files written atomically (atomic.c): open a temporary file beside path; close renames it over
-   path if ok and everything was written, else removes it (a failure message unless !ok) */
+/* files written atomically (atomic.c): open a temporary file beside path (symbolic links
+   followed); close renames it over the file if ok and everything was written, else removes it (a
+   failure message unless !ok). A FIFO, a character device or an open descriptor (/dev/stdout)
+   is written in place; directories, block devices and sockets are refused. */
 typedef struct {
   FILE* f;
-  char tmp[1100];
-  char path[1024];
+  int fd;
+  int inplace;                     /* written in place (no temporary file, no rename) */
+  int err;                         /* errno of the first failed write */
+  char path[1024];                 /* as given (messages) */
+  char real[4096];                 /* the file replaced */
+  char tmp[4200];                  /* the temporary file beside it */
 } uraAtomic;
 int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);
 int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
@@ -370,6 +391,11 @@ int ura_last_trace(uraCtx* c, uraTrace* tr);     /* histories of the last impact
 void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
                      double dpar, double dperp, const urImpactResult* r);
 int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr);
+/* run one impact in a work space of its own, which becomes c->work only when it finishes: a
+   failed or interrupted impact leaves the last one (histories, contacts) as it was; 0, or -1
+   with r->status and r->reason */
+int ura_impact_fresh(uraCtx* c, const urImpactSetup* s, const urImpactCond* cond, double dpar,
+                     double dperp, urImpactResult* r);
 
 /* interactive loop on GNU readline */
 int ura_repl(uraCtx* c);
@@ -381,14 +407,27 @@ int ura_dry(uraCtx* c, const char* what);
    the program), the flag that long work polls (also the models' opt.stop), cleared at the
    prompt */
 void ura_interrupt_install(int interactive);
-volatile int* ura_interrupt_flag(void);
+_Atomic int* ura_interrupt_flag(void);
 int ura_interrupted(void);
 void ura_interrupt_clear(void);
+/* the temporary file of a write under way, removed if SIGTERM, SIGHUP or a fatal Ctrl-C end the
+   program (at most one at a time); disarm when it is renamed or removed */
+void ura_temp_arm(const char* path);
+void ura_temp_disarm(void);
 
 /* text files (textin.c): the next line of f without its line end into *buf (realloc'ed, *cap
    its size), at most max bytes; its length, or one of these */
 enum { uraLINE_EOF = -1, uraLINE_ERROR = -2 /* errno */, uraLINE_LONG = -3, uraLINE_NUL = -4 };
 long ura_read_line(FILE* f, char** buf, size_t* cap, size_t max);
 #define uraMAXLINE (1L << 20)      /* longest line of a script or grid file, bytes */
+/* s as printable text into buf (n bytes, cut to fit): control bytes, DEL, C1 controls and bytes
+   that are not UTF-8 as \xNN, printable ASCII and UTF-8 kept; its length. Every message goes
+   through it (ura_fail), so that no input echoed in an error can drive the terminal. */
+size_t ura_printable(const char* s, char* buf, size_t n);
+/* a buffered stream writing to fd (standard output when it is not a terminal) that keeps the
+   errno of its first failed write: ura_out_errno, 0 if none since ura_out_clear */
+FILE* ura_out_stream(int fd);
+int ura_out_errno(void);
+void ura_out_clear(void);
 
 #endif

@@ -62,6 +62,25 @@ void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResu
   ura_table_cell(t, "%.6g", r->p);
 }
 
+int ura_impact_fresh(uraCtx* c, const urImpactSetup* s, const urImpactCond* cond, double dpar,
+                     double dperp, urImpactResult* r) {
+  urImpactWork w;
+  if (ur_impact_work_init(s, &w)) {
+    ur_impact_work_free(&w);
+    snprintf(r->reason, sizeof r->reason, "out of memory");
+    r->status = 0;
+    return -1;
+  }
+  if (ur_impact_run(s, &w, cond, &c->st.injury, dpar, dperp, r)) {
+    ur_impact_work_free(&w);
+    return -1;
+  }
+  if (c->have_work) ur_impact_work_free(&c->work);
+  c->work = w;
+  c->have_work = 1;
+  return 0;
+}
+
 int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   double dpar, dperp;
   if (!strcmp(argv[1], "aim")) return ura_impact_aim(c, argc, argv);   /* cmd_aim.c */
@@ -85,19 +104,15 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   urImpactCond cond;
   const urImpactSetup* s = ura_setup(c);
   if (!s || ura_impact_cond(c, &cond)) return -1;
-  if (!c->have_work) {
-    if (ur_impact_work_init(s, &c->work)) return ura_fail(c, "impact: out of memory");
-    c->have_work = 1;
-  }
 
-  /* run */
+  /* run; a failure keeps the last impact */
   urImpactResult r;
-  c->have_impact = 0;
-  if (ur_impact_run(s, &c->work, &cond, &c->st.injury, dpar, dperp, &r)) {
+  if (ura_impact_fresh(c, s, &cond, dpar, dperp, &r)) {
+    const char* kept = c->have_impact ? "; the last impact is kept" : "";
     if (r.status == urSTAT_STOPPED) {
-      return ura_fail(c, "impact %g %g: interrupted (Ctrl-C)", dpar, dperp);
+      return ura_fail(c, "impact %g %g: interrupted (Ctrl-C)%s", dpar, dperp, kept);
     }
-    return ura_fail(c, "impact %g %g: the simulation failed: %s", dpar, dperp, r.reason);
+    return ura_fail(c, "impact %g %g: the simulation failed: %s%s", dpar, dperp, r.reason, kept);
   }
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);
 
@@ -316,13 +331,10 @@ int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr) {
     cond.face = c->last.face;
   }
   if (c->last.g && !strcmp(c->last.source, "computed")) cond.tau = c->last.tau;
-  if (!c->have_work) {
-    if (ur_impact_work_init(s, &c->work)) return ura_fail(c, "out of memory");
-    c->have_work = 1;
-  }
   urImpactResult r;
-  if (ur_impact_run(s, &c->work, &cond, &c->st.injury, cell->dpar, cell->dperp, &r)) {
-    return ura_fail(c, "impact (%g, %g) failed: %s", cell->dpar, cell->dperp, r.reason);
+  if (ura_impact_fresh(c, s, &cond, cell->dpar, cell->dperp, &r)) {
+    return ura_fail(c, "impact (%g, %g) failed: %s", cell->dpar, cell->dperp,
+                    r.status == urSTAT_STOPPED ? "interrupted (Ctrl-C)" : r.reason);
   }
   ura_impact_keep(c, c->last.casename, c->last.wind, &cond, cell->dpar, cell->dperp, &r);
   return ura_last_trace(c, tr);

@@ -22,7 +22,7 @@ void ura_sweep_changes(uraCtx* c, char* buf, size_t n) {
 
   /* the preset, as ura_case_load makes it */
   const urPreset* pr = ura_preset_find(c, c->st.casename);
-  if (!pr || ura_preset_state(c, pr, &ref)) ura_state_defaults(&ref);
+  if (!pr || ura_preset_state(c, pr, c->model, &ref)) ura_state_defaults(&ref);
   c->err[0] = 0;
   ref.descent_src = uraDESC_MODEL;      /* 'case' keeps these: the changes name them */
   ref.tau = urTAU_RMAX;
@@ -266,12 +266,8 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   if (!s || ura_impact_cond(c, &cond)) return -1;
 
   /* P{F|Delta=(0,0)}, the gliding area at this descent, and the grid's Q */
-  if (!c->have_work) {
-    if (ur_impact_work_init(s, &c->work)) return ura_fail(c, "compare: out of memory");
-    c->have_work = 1;
-  }
   urImpactResult r;
-  if (ur_impact_run(s, &c->work, &cond, &c->st.injury, 0, 0, &r)) {
+  if (ura_impact_fresh(c, s, &cond, 0, 0, &r)) {
     if (r.status == urSTAT_STOPPED) return ura_fail(c, "compare: interrupted (Ctrl-C)");
     return ura_fail(c, "compare: the impact at (0, 0) failed: %s", r.reason);
   }

@@ -53,8 +53,7 @@ static int bad(reader* r, int line, const char* fmt, ...) {
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  ura_fail(r->c, "%s:%d: %s", r->path, line, msg);
-  r->c->err_located = 1;
+  ura_fail(r->c, "%s:%d: %s", r->path, line, msg);   /* a script adds its own FILE:LINE */
   return -1;
 }
 
@@ -590,6 +589,9 @@ int ura_grid_load(uraCtx* c, const char* path) {
 
   if (ura_dry(c, "grid load")) return -1;
   r.f = fopen(path, "r");
+  if (!r.f && ura_interrupted()) {
+    return ura_fail(c, "grid load: interrupted (Ctrl-C) while opening '%s'", path);
+  }
   if (!r.f) return ura_fail(c, "grid load: cannot open '%s': %s", path, strerror(errno));
 
   /* comments (conditions), then the header that tells the format */
@@ -626,7 +628,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
   c->last.face = m.face;
   c->last.speed = m.speed;
   c->last.angle = m.angle;
-  snprintf(c->last.source, sizeof c->last.source, "%s", path);
+  ura_printable(path, c->last.source, sizeof c->last.source);   /* shown by grid show, view */
   g = NULL;
   rc = 0;
 done:

@@ -1,4 +1,5 @@
 /* main.c: command line: uasrisk [-i] [-c COMMANDS] [FILE]... */
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -16,14 +17,35 @@ static void usage(FILE* f) {
           "  -h, --help   this text; see uasrisk(1)\n");
 }
 
+/* the exit status, after what is still buffered for standard output was written: a failed
+   write is one message and status 1 (unless the run failed already) */
+static uraCtx ctx;
+
+static int done(int rc) {
+  errno = 0;
+  int bad = fflush(ctx.out) || ferror(ctx.out);
+  int e = ura_out_errno() ? ura_out_errno() : errno;
+  if (!bad) bad = fflush(stdout) || ferror(stdout), e = errno;
+  if (bad) {
+    fprintf(stderr, "uasrisk: cannot write standard output: %s\n", strerror(e ? e : EIO));
+    return rc ? rc : 1;
+  }
+  return rc;
+}
+
 int main(int argc, char** argv) {
-  static uraCtx ctx;
   uraCtx* c = &ctx;
 
   /* Ctrl-C stops work, not the program; a file size limit is a write error, not a kill */
   ura_interrupt_install(0);
   signal(SIGXFSZ, SIG_IGN);
   ura_init(c);
+
+  /* results to a file or a pipe through a stream that keeps why a write failed */
+  if (!isatty(STDOUT_FILENO)) {
+    FILE* out = ura_out_stream(STDOUT_FILENO);
+    if (out) c->out = out;
+  }
   if (!c->model) fprintf(stderr, "uasrisk: warning: built-in model: %s\n", c->err);
 
   /* options first: -i anywhere, help */
@@ -31,7 +53,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
       usage(stdout);
-      return 0;
+      return done(0);
     } else if (!strcmp(argv[i], "-i")) {
       stay = 1;
     } else if (!strcmp(argv[i], "-c")) {
@@ -63,19 +85,19 @@ int main(int argc, char** argv) {
     }
     if (rc) {
       fprintf(stderr, "%s\n", c->err);
-      if (!stay) return ura_interrupted() ? 130 : 1;
+      if (!stay) return done(ura_interrupted() ? 130 : 1);
       break;
     }
   }
-  if (c->quit) return 0;
+  if (c->quit) return done(0);
 
   /* interactive on a terminal; otherwise standard input is a script */
-  if (stay || (!work && isatty(STDIN_FILENO))) return ura_repl(c);
+  if (stay || (!work && isatty(STDIN_FILENO))) return done(ura_repl(c));
   if (!work) {
     if (ura_run_stream(c, stdin, "<stdin>")) {
       fprintf(stderr, "%s\n", c->err);
-      return ura_interrupted() ? 130 : 1;
+      return done(ura_interrupted() ? 130 : 1);
     }
   }
-  return 0;
+  return done(0);
 }

@@ -69,9 +69,55 @@ static urModel* compile(const uraPart* part, int n, const uraState* st, char* er
     ov[i].name = st->ov_name[i];
     ov[i].value = st->ov_val[i];
   }
-  urModel* m = ur_model_parse(src, n, ov, st->nov, err, errlen);
+  urModel* m = ur_model_parse_stop(src, n, ov, st->nov, ura_interrupt_flag(), err, errlen);
   if (m) m->opt.stop = ura_interrupt_flag();   /* Ctrl-C stops its runs at the next step */
   return m;
+}
+
+/* a compiled model of these parts must run impacts (ur_impact_check) and compile in every case
+   preset with the user's overrides of st, so that 'case', 'reset' and a saved session's replay
+   cannot meet a model that fails; 0, or -1 with what broke in err (m: the parts compiled with
+   st's overrides) */
+static int fits(uraCtx* c, const uraPart* part, int n, const uraState* st, const urModel* m,
+                char* err, size_t errlen) {
+  char e[300];
+  if (ur_impact_check(m, e, sizeof e)) {
+    snprintf(err, errlen, "%s", e);
+    return -1;
+  }
+  /* every preset of the candidate model, the live case first: a failure there is not one of
+     another case */
+  const urPreset* order[m->npreset > 0 ? m->npreset : 1];
+  int no = 0;
+  for (int k = 0; k < m->npreset; k++) {
+    if (!strcasecmp(m->preset[k].name, st->casename)) order[no++] = m->preset + k;
+  }
+  for (int k = 0; k < m->npreset; k++) {
+    if (strcasecmp(m->preset[k].name, st->casename)) order[no++] = m->preset + k;
+  }
+  for (int k = 0; k < no; k++) {
+    uraState ns;
+    if (ura_preset_state(c, order[k], m, &ns)) return -1;
+    for (int i = 0; i < st->nov; i++) {
+      if (!st->ov_user[i]) continue;
+      int at = -1;
+      for (int j = 0; j < ns.nov; j++) if (!strcmp(ns.ov_name[j], st->ov_name[i])) at = j;
+      if (at < 0 && ns.nov == uraMAXOV) continue;
+      if (at < 0) at = ns.nov++;
+      memcpy(ns.ov_name[at], st->ov_name[i], urNAMELEN);
+      ns.ov_val[at] = st->ov_val[i];
+      ns.ov_user[at] = 1;
+    }
+    urModel* mk = compile(part, n, &ns, e, sizeof e);
+    int bad = !mk || ur_impact_check(mk, e, sizeof e);
+    ur_model_free(mk);
+    if (bad) {
+      if (k) snprintf(err, errlen, "in case %s: %s", order[k]->name, e);
+      else snprintf(err, errlen, "%s", e);
+      return -1;
+    }
+  }
+  return 0;
 }
 
 /* add or replace the parts of a text in the candidate set np[0..*nn) (its texts owned) */
@@ -106,14 +152,36 @@ static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const ch
   return 0;
 }
 
-/* the candidate set replaces the model set if it compiles with the current overrides; np is
-   consumed either way; on error nothing changes */
-static int parts_commit(uraCtx* c, uraPart* np, int nn) {
-  char err[300];
+/* the candidate set replaces the model set if it compiles with the current overrides and fits
+   (every set but the first, the built-in parts; file: the parts loaded from file, which failures
+   name); np is consumed either way; on error nothing changes */
+static int parts_commit(uraCtx* c, uraPart* np, int nn, const char* file) {
+  char err[300], why[400];
   urModel* m = compile(np, nn, &c->st, err, sizeof err);
+  int bad = !m, in_file = 0;
   if (!m) {
+    /* an error in the file names its line; one elsewhere is the file's doing all the same */
+    size_t fl = file ? strlen(file) : 0;
+    in_file = !file || (!strncmp(err, file, fl) && err[fl] == ':');
+    snprintf(why, sizeof why, "%s", err);
+  } else if (c->npart) {
+    bad = fits(c, np, nn, &c->st, m, why, sizeof why);
+  }
+  if (bad) {
+    ur_model_free(m);
+    int first = -1;
+    for (int i = 0; file && i < nn && first < 0; i++) if (!strcmp(np[i].origin, file)) first = i;
+    if (ura_interrupted()) {
+      ura_fail(c, "model load: interrupted (Ctrl-C) while compiling '%s'; the model is unchanged",
+               file ? file : "model");
+    } else if (in_file || first < 0) {
+      ura_fail(c, "%s", why);
+    } else {
+      ura_fail(c, "model load: %s:%d: part '%s' does not fit the model: %s; the model is "
+               "unchanged", file, np[first].line, np[first].name, why);
+    }
     parts_free(np, nn);
-    return ura_fail(c, "%s", err);
+    return -1;
   }
   parts_changed(c, 1);
   parts_free(c->part, c->npart);
@@ -139,7 +207,7 @@ static int parts_merge(uraCtx* c, const char* text, const char* file, const char
     parts_free(np, nn);
     return -1;
   }
-  return parts_commit(c, np, nn);
+  return parts_commit(c, np, nn, file);
 }
 
 /* the built-in parts in order, compiled once */
@@ -155,7 +223,7 @@ int ura_models_init(uraCtx* c) {
       }
     }
   }
-  return parts_commit(c, np, nn);
+  return parts_commit(c, np, nn, NULL);
 }
 
 const urModel* ura_model(uraCtx* c) {
@@ -208,9 +276,14 @@ int ura_model_state(uraCtx* c, const uraState* ns, const char* who) {
     return 0;
   }
 
-  /* otherwise the model must compile with them before anything changes */
+  /* otherwise the model must compile with them, and run impacts, before anything changes */
   char err[300];
   urModel* m = compile(c->part, c->npart, ns, err, sizeof err);
+  if (m && ur_impact_check(m, err, sizeof err)) {
+    ur_model_free(m);
+    m = NULL;
+  }
+  if (!m && ura_interrupted()) return ura_fail(c, "%s: interrupted (Ctrl-C)", who);
   if (!m) return ura_fail(c, "%s: refused, the model does not accept it: model: %s", who, err);
   ura_mcache_park(c);
   c->model = m;
@@ -246,6 +319,15 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
   ns.ov_user[at] = user;
   char who[urNAMELEN + 8];
   snprintf(who, sizeof who, "set %s", name);
+
+  /* a value the model takes only while the element that reads it is disabled (an airbag's
+     pressure in case B) is refused as well: it must hold in every case */
+  char err[400];
+  const urModel* live = ura_model(c);
+  if (user && live && fits(c, c->part, c->npart, &ns, live, err, sizeof err)) {
+    if (ura_interrupted()) return ura_fail(c, "%s: interrupted (Ctrl-C)", who);
+    return ura_fail(c, "%s: refused, the model does not accept it: model: %s", who, err);
+  }
   return ura_model_state(c, &ns, who);
 }
 
@@ -270,7 +352,15 @@ static int model_save(uraCtx* c, const char* path) {
 
 static int model_load(uraCtx* c, const char* path) {
   if (ura_dry(c, "model load")) return -1;
+  if (ura_word_ok(path)) {
+    return ura_fail(c, "model load: cannot use '%s': the name holds a control character or both "
+                    "quote characters; accepted: a file name that save session can write back",
+                    path);
+  }
   FILE* f = fopen(path, "r");
+  if (!f && ura_interrupted()) {
+    return ura_fail(c, "model load: interrupted (Ctrl-C) while opening '%s'", path);
+  }
   if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
 
   /* the whole text, bounded (a device never ends), read errors named */
@@ -285,7 +375,8 @@ static int model_load(uraCtx* c, const char* path) {
   size_t k;
   long total = 0;
   int nul = 0;
-  while (!nul && total <= MAXMODELFILE && (k = fread(buf, 1, sizeof buf, f)) > 0) {
+  while (!nul && total <= MAXMODELFILE && !ura_interrupted() &&
+         (k = fread(buf, 1, sizeof buf, f)) > 0) {
     fwrite(buf, 1, k, mem);
     total += (long)k;
     nul = memchr(buf, 0, k) != NULL;
@@ -293,6 +384,11 @@ static int model_load(uraCtx* c, const char* path) {
   int e = errno, rerr = ferror(f);
   fclose(f);
   fclose(mem);
+  if (ura_interrupted()) {
+    free(text);
+    return ura_fail(c, "model load: interrupted (Ctrl-C) while reading '%s'; the model is "
+                    "unchanged", path);
+  }
   const char* why = nul ? "it contains NUL bytes" : rerr ? strerror(e) :
                     total > MAXMODELFILE ? "larger than 16 MiB" : NULL;
   if (why) {
@@ -344,7 +440,7 @@ static int model_drop(uraCtx* c, const char* name) {
   ur_model_free(m);
   uraState keep = c->st;
   c->st = ns;
-  if (parts_commit(c, np, nn)) {
+  if (parts_commit(c, np, nn, NULL)) {
     c->st = keep;
     return -1;
   }
@@ -365,7 +461,9 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
   }
   for (int i = 0; i < c->npart; i++) {
     if (strcmp(c->part[i].origin, "built-in")) {
-      fprintf(f, "model load \"%s\"   # part %s\n", c->part[i].origin, c->part[i].name);
+      fprintf(f, "model load ");
+      ura_put_word(f, c->part[i].origin);
+      fprintf(f, "   # part %s\n", c->part[i].name);
     }
   }
 }

@@ -11,6 +11,7 @@
 #define UASRISK_PLOT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "app.h"
 #include "uasrisk/injury.h"
@@ -55,6 +56,10 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
 /* Q of the kept sweeps (c->sweep) against wind or face, one curve per sweep; kind "wind" or
    "face" for one panel, NULL for every kind kept (plot_sweep.c) */
 int ura_plot_sweep(uraCtx* c, const char* kind);
+
+/* s as a gnuplot string constant: in single quotes (gnuplot substitutes nothing there), line
+   breaks as '...'."\n".'...'; the only way a text reaches a plot script */
+void ura_plot_quote(FILE* f, const char* s);
 
 /* index of a signal of a trace by name, or -1 */
 int ura_trace_find(const uraTrace* tr, const char* name);

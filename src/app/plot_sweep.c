@@ -67,14 +67,11 @@ static void panel(uraCtx* c, FILE* f, int over_face) {
   }
   if (sh.step) k += (size_t)snprintf(title + k, sizeof title - k, ", grid step %g m", first->step);
   if (sh.changes && strcmp(first->changes, "none") && k < sizeof title) {
-    snprintf(title + k, sizeof title - k, "\\n%s", first->changes);
+    snprintf(title + k, sizeof title - k, "\n%s", first->changes);
   }
-  fprintf(f, "set title \"");
-  for (const char* p = title; *p; p++) {
-    if (*p == '"') fputc('\\', f);
-    fputc(*p, f);
-  }
-  fprintf(f, "\" noenhanced\n");
+  fprintf(f, "set title ");
+  ura_plot_quote(f, title);
+  fprintf(f, " noenhanced\n");
   if (over_face) {
     fprintf(f, "set xlabel \"face direction phi (deg; 0 faces the incoming drone)\" noenhanced\n"
             "set xtics 45\n");
@@ -101,13 +98,9 @@ static void panel(uraCtx* c, FILE* f, int over_face) {
     if (!sh.changes && strcmp(w->changes, "none") && m < sizeof label) {
       snprintf(label + m, sizeof label - m, ", %s", w->changes);
     }
-    fprintf(f, "%s$%c%d using 1:2 with linespoints lc rgb '%s' lw 2 pt %d ps 1.2 title \"",
+    fprintf(f, "%s$%c%d using 1:2 with linespoints lc rgb '%s' lw 2 pt %d ps 1.2 title ",
             first_curve ? "" : ", ", over_face ? 'F' : 'W', i, colours[i % 8], 5 + 2 * (i % 4));
-    for (const char* p = label; *p; p++) {
-      if (*p == '"' || *p == '\\') fputc('\\', f);
-      fputc(*p, f);
-    }
-    fprintf(f, "\"");
+    ura_plot_quote(f, label);
     first_curve = 0;
   }
   fprintf(f, "\n");

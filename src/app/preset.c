@@ -50,7 +50,7 @@ static int preset_setting(uraCtx* c, uraState* ns, const char* preset, const cha
   return 0;
 }
 
-int ura_preset_state(uraCtx* c, const urPreset* pr, uraState* ns) {
+int ura_preset_state(uraCtx* c, const urPreset* pr, const urModel* m, uraState* ns) {
   /* keep the live wind, face, lists, grid step, recall, descent source, tau and output settings;
      everything else from the defaults and the preset */
   const uraState* keep = &c->st;
@@ -71,7 +71,6 @@ int ura_preset_state(uraCtx* c, const urPreset* pr, uraState* ns) {
   snprintf(ns->casename, sizeof ns->casename, "%.7s", pr->name);
 
   /* model parameters as overrides set by the case; workbench settings as 'set' takes them */
-  const urModel* m = c->model;
   for (int i = 0; i < pr->n; i++) {
     if (pr->param[i] < 0) {
       if (preset_setting(c, ns, pr->name, pr->key[i], pr->value[i])) return -1;

@@ -11,16 +11,7 @@
 #define MAXARGS 64
 #define MAXDEPTH 16
 
-/* printable copy of untrusted text for messages (control and non-ASCII bytes as \xNN) */
-static void printable(const char* s, char* buf, size_t n) {
-  size_t k = 0;
-  for (; *s && k + 5 < n; s++) {
-    unsigned char ch = (unsigned char)*s;
-    if (ch >= 32 && ch < 127) buf[k++] = (char)ch;
-    else k += snprintf(buf + k, n - k, "\\x%02x", ch);
-  }
-  buf[k] = 0;
-}
+#define printable ura_printable
 
 void ura_locate(uraCtx* c, const char* name, int lineno) {
   if (c->err_located) return;
@@ -71,7 +62,19 @@ static int run_words(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "%s: wrong number of arguments (%d); usage: %s", cmd->name, nargs,
                     cmd->usage);
   }
-  return cmd->fn(c, argc, argv);
+  if (c->guard && c->guard(c, argc, argv)) return -1;
+  int rc = cmd->fn(c, argc, argv);
+
+  /* what the command printed reached its destination, or the command failed (a full disk, a
+     closed pipe): the error is not lost when the buffer is written later */
+  errno = 0;
+  if (c->out && (fflush(c->out) || ferror(c->out))) {
+    int e = ura_out_errno() ? ura_out_errno() : errno ? errno : EIO;
+    ura_out_clear();
+    clearerr(c->out);
+    if (!rc) rc = ura_fail(c, "%s: cannot write the output: %s", cmd->name, strerror(e));
+  }
+  return rc;
 }
 
 int ura_run_line(uraCtx* c, const char* line) {

@@ -6,7 +6,21 @@
 
 #include "app.h"
 
-/* write the state as commands: defaults, loaded model parts, case, then every setting */
+int ura_word_ok(const char* s) {
+  for (const char* p = s; *p; p++) {
+    if ((unsigned char)*p < 32 || *p == 127) return -1;
+  }
+  return strchr(s, '"') && strchr(s, '\'') ? -1 : 0;
+}
+
+void ura_put_word(FILE* f, const char* s) {
+  char q = strchr(s, '"') ? '\'' : '"';
+  fprintf(f, "%c%s%c", q, s, q);
+}
+
+/* write the state as commands: defaults, loaded model parts, case, then every setting; every
+   text is one quoted word that the reader takes back as it is (the terminal and output were
+   checked when set: nothing in them is run) */
 void ura_session_write(uraCtx* c, FILE* f) {
   char val[2048];
   fprintf(f, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n");
@@ -16,8 +30,10 @@ void ura_session_write(uraCtx* c, FILE* f) {
   for (const uraParam* p = ura_params; p->name; p++) {
     if (p->kind == uraP_CASE) continue;
     ura_param_format(c, p, val, sizeof val);
-    fprintf(f, "set %s %s%s%s\n", p->name, p->kind == uraP_STR ? "\"" : "", val,
-            p->kind == uraP_STR ? "\"" : "");
+    fprintf(f, "set %s ", p->name);
+    if (p->kind == uraP_STR) ura_put_word(f, val);
+    else fputs(val, f);
+    fputc('\n', f);
   }
   for (int i = 0; i < ur_injury_param_count(); i++) {
     const char* name;

@@ -116,17 +116,20 @@ const uraParam ura_params[] = {
   {"format", uraP_ENUM, OFF(format), 0, "", 0, 0,
    "output of tabular commands: aligned table or CSV with one header line", format_names},
   {"terminal", uraP_STR, OFF(terminal), 0, "", 0, 64,
-   "gnuplot terminal for plot (png, svg, pdfcairo, ...); 'default' for gnuplot's own", NULL},
+   "gnuplot terminal for plot (png, svg, pdfcairo, ...); 'default' for gnuplot's own", NULL,
+   ura_terminal_check},
   {"output", uraP_STR, OFF(output), 0, "", 0, 512,
-   "file that plot writes (with a file terminal); 'none' for a window", NULL},
+   "file that plot writes (with a file terminal); 'none' for a window", NULL, ura_output_check},
   {NULL, 0, 0, 0, NULL, 0, 0, NULL, NULL}
 };
 
 int ura_fail(uraCtx* c, const char* fmt, ...) {
+  char raw[uraERRLEN];
   va_list ap;
   va_start(ap, fmt);
-  vsnprintf(c->err, sizeof c->err, fmt, ap);
+  vsnprintf(raw, sizeof raw, fmt, ap);
   va_end(ap);
+  ura_printable(raw, c->err, sizeof c->err);   /* no echoed input drives the terminal */
   c->err_located = 0;
   return -1;
 }
@@ -201,7 +204,9 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
                       (int)p->max - 1);
     }
     int none = !strcmp(value, "default") || !strcmp(value, "none") || n == 0;
-    strcpy(base + p->off, none ? "" : value);
+    char norm[512];
+    if (!none && p->check && p->check(c, value, norm, (size_t)p->max)) return -1;
+    strcpy(base + p->off, none ? "" : p->check ? norm : value);
     return 0;
   }
 
@@ -356,7 +361,7 @@ int ura_case_load(uraCtx* c, const char* name) {
     return ura_fail(c, "case: unknown case '%s'; accepted: %s", name, names);
   }
   uraState ns;
-  if (ura_preset_state(c, pr, &ns)) return -1;
+  if (ura_preset_state(c, pr, c->model, &ns)) return -1;
   return ura_model_state(c, &ns, "case");
 }
 

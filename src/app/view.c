@@ -519,6 +519,18 @@ int ura_cmd_view(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "view: cannot use the terminal (TERM=%s); use 'grid show'", t ? t : "");
   }
   set_term(scr);
+
+  /* a terminal that cannot place the cursor (TERM=dumb) would show nothing but stray codes */
+  const char* cup = tigetstr("cup");
+  if (!cup || cup == (char*)-1) {
+    endwin();
+    delscreen(scr);
+    for (int i = 0; i < 4; i++) sigaction(sigs[i], &saved[i], NULL);
+    fflush(c->out);
+    const char* t = getenv("TERM");
+    return ura_fail(c, "view: the terminal (TERM=%s) cannot place the cursor; accepted: a "
+                    "terminal such as xterm, screen or tmux; use 'grid show' here", t ? t : "");
+  }
   raw();
   noecho();
   nonl();

@@ -240,7 +240,7 @@ void ur_contacts_narrow(const urModel* m, urData* d) {
     urPairData* pd = d->pair + commit[k];
     pd->active = 0;
     pd->fn = pd->ft = pd->rate = pd->area = 0;
-    if (pd->ls.touching) {
+    if (pd->ls.touching && -d->pdepth[commit[k]] > 0) {   // culled now: listed to unload
       touch[nt++] = commit[k];
     }
   }
@@ -259,9 +259,7 @@ void ur_contacts_narrow(const urModel* m, urData* d) {
     }
   }
   for (int k = 0; k < nt; k++) {
-    if (-d->pdepth[touch[k]] > 0) {
-      commit[d->npcommit++] = touch[k];
-    }
+    commit[d->npcommit++] = touch[k];   // (decided before narrow1 also made depths < 0)
   }
 }
 

@@ -455,6 +455,51 @@ static void rest(const urModel* m, urData* d, int drone) {
   ur_forward(m, d);
 }
 
+/* the roles an impact needs, declared by the model: 0, or -1 with the missing one in err */
+static int roles_check(const urModel* m, char* err, size_t n) {
+  const urRoles* ro = &m->roles;
+  if (ro->drone < 0 || m->body[ro->drone].jtype != urJNT_FREE) {
+    snprintf(err, n, "the model declares no drone: add 'role drone=BODY' (its root body, free "
+             "joint)");
+    return -1;
+  }
+  if (ro->head < 0 || ro->head_acc < 0 || ro->neck < 0 || ro->head_pos < 0) {
+    snprintf(err, n, "the model declares no %s: add 'role head=ELLIPSOID head_acc=SENSOR "
+             "neck=SENSOR head_pos=SENSOR'", ro->head < 0 ? "head" : ro->head_acc < 0 ?
+             "head_acc" : ro->neck < 0 ? "neck" : "head_pos");
+    return -1;
+  }
+  return 0;
+}
+
+int ur_impact_check(const urModel* m, char* err, size_t n) {
+  double dt = m->opt.dt, tmax = m->opt.tmax;
+  double settle_dt = ur_model_param(m, "settle_dt", NAN), window = ur_model_param(m, "window", 1);
+  if (roles_check(m, err, n)) {
+    return -1;
+  } else if (!(dt > 0 && dt <= 1e-3)) {
+    snprintf(err, n, "dt %g s is out of range; accepted: (0, 1e-3] s (a contact pulse lasts "
+             "about 1 ms: a coarser step cannot follow it)", dt);
+  } else if (!(tmax > 0 && tmax <= 1)) {
+    snprintf(err, n, "tmax %g s is out of range; accepted: (0, 1] s (an impact is over within "
+             "0.15 s; a longer run only fills memory with its histories)", tmax);
+  } else if (!(tmax / dt <= 1e5)) {
+    snprintf(err, n, "tmax/dt = %.3g steps; accepted: at most 1e5 steps of one impact (each "
+             "impact keeps its histories in memory, about 30 MB at 1e5 steps)", tmax / dt);
+  } else if (!isnan(settle_dt) && !(settle_dt >= dt && settle_dt <= 0.01)) {
+    snprintf(err, n, "settle_dt %g s is out of range; accepted: [dt, 0.01] s = [%g, 0.01] s "
+             "(the stance never settles with a finer step than the impact's, and 1 s of settling "
+             "needs at least 100 steps)", settle_dt, dt);
+  } else if (!(window > 0)) {
+    snprintf(err, n, "window %g s is out of range; accepted: > 0 s (an impact ends this long "
+             "after its first contact)", window);
+  } else {
+    if (n) err[0] = 0;
+    return 0;
+  }
+  return -1;
+}
+
 /* the roles, R_max and the stance: settled (from NULL; the person's settled state saved into
    keep if given, top raised as settle does), or the settled state of from, whose person is m's */
 static int setup(urImpactSetup* s, const urModel* m, double settle_time, const urStance* from,
@@ -470,16 +515,7 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   s->s_neck = ro->neck;
   s->s_chest = ro->chest;
   s->s_abd = ro->abdomen;
-  int s_head_pos = ro->head_pos;
-  if (s->drone < 0 || m->body[s->drone].jtype != urJNT_FREE) {
-    snprintf(s->err, sizeof s->err, "the model declares no drone: add 'role drone=BODY' (its "
-             "root body, free joint)");
-    return -1;
-  }
-  if (s->head_geom < 0 || s->s_head_acc < 0 || s->s_neck < 0 || s_head_pos < 0) {
-    snprintf(s->err, sizeof s->err, "the model declares no %s: add 'role head=ELLIPSOID "
-             "head_acc=SENSOR neck=SENSOR head_pos=SENSOR'", s->head_geom < 0 ? "head" :
-             s->s_head_acc < 0 ? "head_acc" : s->s_neck < 0 ? "neck" : "head_pos");
+  if (roles_check(m, s->err, sizeof s->err)) {
     return -1;
   }
 
@@ -546,7 +582,7 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   rest(m, d, s->drone);
   if (top) *top = fmax(*top, person_top(m, d, s->drone));
   const double* sd = d->sensordata;
-  memcpy(s->head_cg, sd + m->sensor[s_head_pos].adr, 3 * sizeof(double));
+  memcpy(s->head_cg, sd + m->sensor[m->roles.head_pos].adr, 3 * sizeof(double));
   s->head_top = ellipsoid_top(m, d, s->head_geom);
   s->neck_preload = -sd[m->sensor[s->s_neck].adr + 2];
   s->rest = d;

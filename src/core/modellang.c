@@ -34,6 +34,18 @@ static const char* const symkind[] = {
   "parameter", "curve", "law", "body", "joint", "ellipsoid", "pair", "airbag", "sensor", "part",
   "preset"
 };
+static const char* const symkinds[] = {
+  "parameters", "curves", "laws", "bodies", "joints", "ellipsoids", "pairs", "airbags", "sensors",
+  "parts"
+};
+
+/* the most elements of each kind a model may have (uasrisk-model(5), LIMITS): a model of the
+   person and a drone has tens of bodies and a few hundred pairs; the limits keep the largest
+   model parsing and compiling within about a second (the builder checks each new name among
+   the elements of its kind) */
+static const int limit[] = {
+  4000, 4000, 4000, 1000, 0, 2000, 5000, 64, 1000, 256
+};
 
 /* units: name and factor to SI */
 static const struct {
@@ -155,6 +167,7 @@ typedef struct {
   int id;                          /* index in the model or parser table */
   int src, line;
   int enabled;
+  int next;                        /* the symbol before it in its hash chain, or -1 */
 } Sym;
 
 /* one parsed value */
@@ -189,6 +202,9 @@ typedef struct {
   urModel* m;
   Sym* sym;
   int nsym, capsym;
+  int* chain;                      /* capsym chain heads: the last symbol of each hash */
+  int count[SYM_PART + 1];         /* enabled elements of each kind (limits) */
+  const _Atomic int* stop;         /* a stop request (Ctrl-C), polled between statements */
   urCurve* curve;
   int ncurve, capcurve;
   urLaw* law;
@@ -309,10 +325,15 @@ static unsigned namehash(const char* s) {
 }
 
 
-/* last enabled symbol of a kind and name, or -1 */
+/* last enabled symbol of a kind and name, or -1: its hash chain holds the symbols of that hash
+   (and of others in the same bucket), newest first, so that a model of n names parses in time
+   linear in n */
 static int findsym(const Parser* p, int kind, const char* name, int enabled) {
+  if (!p->capsym) {
+    return -1;
+  }
   unsigned h = namehash(name);
-  for (int i = p->nsym - 1; i >= 0; i--) {
+  for (int i = p->chain[h & (unsigned)(p->capsym - 1)]; i >= 0; i = p->sym[i].next) {
     if (p->sym[i].hash == h && p->sym[i].kind == kind && p->sym[i].enabled == enabled &&
         !strcmp(p->sym[i].name, name)) {
       return i;
@@ -401,16 +422,35 @@ static int declare(Parser* p, int kind, const char* name, int line, int id, int 
                   "unique", symkind[kind], name, srcname(p, p->sym[i].src), p->sym[i].line);
     }
   }
+  if (enabled && kind != SYM_JOINT && ++p->count[kind] > limit[kind]) {
+    return fail(p, line, "more than %d %s in the model; accepted: at most %d (uasrisk-model(5), "
+                "LIMITS)", limit[kind], symkinds[kind], limit[kind]);
+  }
   if (p->nsym == p->capsym) {
+    /* twice the room, and the chains rebuilt over twice the buckets (a power of two) */
     int nc = p->capsym ? 2*p->capsym : 64;
     Sym* s = realloc(p->sym, (size_t)nc*sizeof(Sym));
     if (!s) {
       return fail(p, line, "out of memory");
     }
     p->sym = s;
+    int* ch = realloc(p->chain, (size_t)nc*sizeof(int));
+    if (!ch) {
+      return fail(p, line, "out of memory");
+    }
+    p->chain = ch;
     p->capsym = nc;
+    for (int i = 0; i < nc; i++) {
+      ch[i] = -1;
+    }
+    for (int i = 0; i < p->nsym; i++) {
+      int* head = ch + (p->sym[i].hash & (unsigned)(nc - 1));
+      p->sym[i].next = *head;
+      *head = i;
+    }
   }
-  Sym* s = p->sym + p->nsym++;
+  int at = p->nsym++;
+  Sym* s = p->sym + at;
   s->kind = kind;
   snprintf(s->name, sizeof(s->name), "%s", name);
   s->hash = namehash(s->name);
@@ -418,6 +458,9 @@ static int declare(Parser* p, int kind, const char* name, int line, int id, int 
   s->src = p->cursrc;
   s->line = line;
   s->enabled = enabled;
+  int* head = p->chain + (s->hash & (unsigned)(p->capsym - 1));
+  s->next = *head;
+  *head = at;
   return 0;
 }
 
@@ -1081,6 +1124,19 @@ static int st_body(Parser* p, const Bound* b) {
     if (!(I[0] > 0 && d2 > 0 && d3 > 0)) {
       return fail(p, vi->line, "body '%s': inertia must be positive definite (got xx,yy,zz,"
                   "xy,xz,yz = %g,%g,%g,%g,%g,%g)", b->name, I[0], I[1], I[2], I[3], I[4], I[5]);
+    }
+    /* a real mass distribution: no principal moment above the sum of the other two, that is
+       J = tr(I)/2 E - I positive semidefinite (its principal minors >= 0, to rounding) */
+    double h = 0.5*(I[0] + I[1] + I[2]), e = 1e-9*h;
+    double J[6] = {h - I[0] + e, h - I[1] + e, h - I[2] + e, -I[3], -I[4], -I[5]};
+    double j2 = J[0]*J[1] - J[3]*J[3];
+    double j3 = J[0]*(J[1]*J[2] - J[5]*J[5]) - J[3]*(J[3]*J[2] - J[5]*J[4]) +
+                J[4]*(J[3]*J[5] - J[1]*J[4]);
+    if (!(J[0] > 0 && j2 > 0 && j3 > 0)) {
+      return fail(p, vi->line, "body '%s': inertia is not that of a real body: a principal moment "
+                  "exceeds the sum of the other two (got xx,yy,zz,xy,xz,yz = %g,%g,%g,%g,%g,%g); "
+                  "expected moments such as a box's or a rod's", b->name, I[0], I[1], I[2], I[3],
+                  I[4], I[5]);
     }
   } else if (jt == urJNT_FREE || jt == urJNT_SPHERICAL) {
     return fail(p, b->line, "body '%s': a %s joint needs inertia=xx,yy,zz[,xy,xz,yz]", b->name,
@@ -2034,6 +2090,7 @@ static int check_overrides(Parser* p) {
 static void release(Parser* p) {
   url_free(&p->lx);
   free(p->sym);
+  free(p->chain);
   free(p->curve);
   free(p->law);
   free(p->pval);
@@ -2042,8 +2099,15 @@ static void release(Parser* p) {
 
 urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
                         char* err, int errlen) {
+  return ur_model_parse_stop(src, nsrc, ov, nov, NULL, err, errlen);
+}
+
+
+urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
+                             const _Atomic int* stop, char* err, int errlen) {
   Parser p;
   memset(&p, 0, sizeof(p));
+  p.stop = stop;
   p.src = src;
   p.nsrc = nsrc;
   p.ov = ov;
@@ -2072,6 +2136,12 @@ urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov
   for (int i = 0; !rc && i < p.lx.nstmt; i++) {
     p.cur = i;
     p.cursrc = p.lx.stmt[i].src;
+    if (p.stop && *p.stop) {
+      snprintf(p.msg, sizeof(p.msg), "%s:%d: stopped on request (interrupted)", srcname(&p, p.cursrc),
+               p.lx.stmt[i].line);
+      rc = -1;
+      break;
+    }
     rc = statement(&p, p.lx.stmt + i);
   }
 
@@ -2113,7 +2183,10 @@ int ur_model_split(const char* text, const char* file, urModelPart* parts, int m
   }
   int rc = url_lex(&lx, text, 0, file, 1, msg, sizeof(msg));
 
-  /* check the part lines: one valid name each, no duplicates */
+  /* check the part lines: one valid name each, no duplicates, at most limit[SYM_PART] (each
+     compared with the part lines before it) */
+  int* seen = NULL;
+  int nseen = 0;
   for (int s = 0; !rc && s < lx.nstmt; s++) {
     const urlStmt* st = lx.stmt + s;
     if (strcmp(url_word(&lx, st->word), "part")) {
@@ -2124,17 +2197,27 @@ int ur_model_split(const char* text, const char* file, urModelPart* parts, int m
       snprintf(msg, sizeof(msg), "%s:%d: part takes exactly one NAME; expected 'part NAME' (%s)",
                file, st->line, expect_name);
       rc = -1;
+    } else if (nseen == limit[SYM_PART]) {
+      snprintf(msg, sizeof(msg), "%s:%d: more than %d parts; accepted: at most %d "
+               "(uasrisk-model(5), LIMITS)", file, st->line, limit[SYM_PART], limit[SYM_PART]);
+      rc = -1;
+    } else if (!seen && !(seen = malloc(sizeof(int)*(size_t)limit[SYM_PART]))) {
+      snprintf(msg, sizeof(msg), "%s: out of memory", file);
+      rc = -1;
     }
-    for (int k = 0; !rc && k < s; k++) {
-      const urlStmt* sk = lx.stmt + k;
-      if (!strcmp(url_word(&lx, sk->word), "part") && sk->nword == 2 &&
-          !strcmp(url_word(&lx, sk->word + 1), name)) {
+    for (int k = 0; !rc && k < nseen; k++) {
+      const urlStmt* sk = lx.stmt + seen[k];
+      if (!strcmp(url_word(&lx, sk->word + 1), name)) {
         snprintf(msg, sizeof(msg), "%s:%d: duplicate part name '%s' (first at line %d); names "
                  "must be unique", file, st->line, name, sk->line);
         rc = -1;
       }
     }
+    if (!rc) {
+      seen[nseen++] = s;
+    }
   }
+  free(seen);
   if (rc) {
     url_free(&lx);
     if (err && errlen > 0) {

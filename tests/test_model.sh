@@ -1,0 +1,106 @@
+# test_model.sh: the model set as a session changes it (src/app/model.c): 'model load' is
+# transactional (a part that leaves the model unable to run impacts, or that breaks another part
+# in some case, is refused naming the loaded file and line, and the session is exactly as
+# before); a model parameter must hold in every case (an airbag's pressure set in case B);
+# the simulation options have bounds that say why (tmax, settle_dt, dt); impossible inertias are
+# refused; the largest model within the limits loads in about a second, beyond them one line;
+# Ctrl-C stops a load that waits (issue 24, items 3, 5 and 8)
+. tests/lib.sh
+
+U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+fails_with() { [ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "$1"; }
+now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
+
+# ---- a drone part without bodies: refused in any case, the file and line named ----
+printf '# no drone here\npart ra3\nparam xx 1\n' >"$TMP/nobodies.urm"
+run -c "case B; model load $TMP/nobodies.urm"
+check nobodies_case_b fails_with \
+  "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: the model needs a free body 'main'"
+run -c "case A; model load $TMP/nobodies.urm"
+check nobodies_case_a fails_with \
+  "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: airbags:[0-9]*: .*unknown parameter 'frame_a'"
+
+# interactively: the session is exactly as it was (parts, parameters, the last impact)
+printf 'case B\nimpact 0 0\nmodel parts\nshow\nmodel load %s\nmodel parts\nshow\ncontacts\nimpact 0 0\nset bag_p0 -1\nsave session %s/s.ses\n' \
+  "$TMP/nobodies.urm" "$TMP" >"$TMP/in"
+run_in "$TMP/in" -i
+awk '/^uasrisk\[/{next} /^human /{n++} n==1{print >f1} n==2{print >f2}' f1="$TMP/a1" f2="$TMP/a2" "$TMP/out"
+check nobodies_state_kept cond '[ -s "$TMP/a1" ] && head -n "$(wc -l <"$TMP/a1")" "$TMP/a2" |
+  cmp -s - "$TMP/a1" && has "$TMP/a2" "^ra3  *built-in$"'
+check nobodies_impact_kept cond 'has "$TMP/out" "^# impact at (0, 0) m: [0-9]* pair"'
+check nobodies_one_error cond '[ "$(grep -c "^error: " "$TMP/err")" -eq 2 ]'
+run "$TMP/s.ses" -c 'show case; impact 0 0'
+check nobodies_session_replays cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^case  *B$"'
+
+# a part that is fine is still loaded, and a part with an error of its own names its line
+sed -n '/^part ra3/,$p' src/models/ra3.urm >"$TMP/ra3.urm"
+run -c "model load $TMP/ra3.urm; model parts"
+check good_part_loads cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^ra3  *.*ra3.urm$"'
+printf 'part extra\nparam a 1\nbody b parent=nobody joint=fixed pos=0,0,0 mass=1\n' >"$TMP/bad.urm"
+run -c "model load $TMP/bad.urm"
+check own_error_line fails_with "^-c:1: .*/bad.urm:3: .*dangling reference to body 'nobody'"
+
+# ---- a model parameter must hold in every case: bag_p0 -1 is refused in case B ----
+run -c 'case B; set bag_p0 -1'
+check bag_p0_case_b fails_with \
+  "set bag_p0: refused, the model does not accept it: model: in case A: airbags:[0-9]*: airbag 'bag_bottom': p0 must be > 0"
+run -c 'case B; set bag_p0 1.2 atm; show bag_p0'
+check bag_p0_good cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^bag_p0  *121590 (SI)"'
+
+# ---- simulation options: bounds that say why ----
+run -c 'set tmax 1e9'
+check tmax_bound fails_with "set tmax: refused.*tmax 1e+09 s is out of range; accepted: (0, 1\] s (an impact is over"
+run -c 'set settle_dt 1e-5'
+check settle_dt_bound fails_with "settle_dt 1e-05 s is out of range; accepted: \[dt, 0.01\] s = \[5e-05, 0.01\] s (the stance"
+run -c 'set dt 0.01'
+check dt_bound fails_with "dt 0.01 s is out of range; accepted: (0, 1e-3\] s (a contact pulse"
+run -c 'set dt 1e-6'
+check steps_bound fails_with "tmax/dt = 1.5e+05 steps; accepted: at most 1e5 steps"
+run -c 'set dt 1e-5; set settle_dt 1e-5; show settle_dt'
+check settle_dt_in_order cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^settle_dt  *1e-05"'
+
+# ---- impossible inertias ----
+printf 'part extra\nbody rod parent=world joint=free pos=0,0,9 mass=1 inertia=1,1,3\n' >"$TMP/i.urm"
+run -c "model load $TMP/i.urm"
+check inertia_triangle fails_with "i.urm:2: body 'rod': inertia is not that of a real body: a principal moment exceeds"
+printf 'part extra\nbody rod parent=world joint=free pos=0,0,9 mass=1 inertia=1,1,2\n' >"$TMP/i2.urm"
+run -c "model load $TMP/i2.urm"
+check inertia_thin_rod_ok [ "$RC" -eq 0 ]
+
+# ---- size: the largest model within the limits loads in about a second; beyond, one line ----
+awk 'BEGIN { print "part big"; print "body b0 parent=world joint=free pos=0,0,5 mass=1 inertia=1,1,1"
+  for (i = 1; i < 900; i++) printf "body b%d parent=b%d joint=revolute pos=0,0,0.01 mass=1 axis=1,0,0\n", i, i - 1
+  for (i = 0; i < 1800; i++) printf "ellipsoid e%d body=b%d pos=0,0,0 size=0.01,0.01,0.01\n", i, i % 900
+  for (i = 0; i < 3500; i++) printf "param p%d %d\n", i, i }' >"$TMP/big.urm"
+t0=$(now_ms); run -c "model load $TMP/big.urm"; MS=$(( $(now_ms) - t0 ))
+echo "  (a model of 900 bodies, 1800 ellipsoids, 3500 parameters more: $MS ms)"
+check big_model_loads cond '[ "$RC" -eq 0 ] && [ "$MS" -lt 5000 ]'
+awk 'BEGIN { print "part big"; print "body b0 parent=world joint=free pos=0,0,5 mass=1 inertia=1,1,1"
+  for (i = 1; i < 100000; i++) printf "body b%d parent=b%d joint=revolute pos=0,0,0.01 mass=1 axis=1,0,0\n", i, i - 1 }' \
+  >"$TMP/huge.urm"
+t0=$(now_ms); run -c "model load $TMP/huge.urm"; MS=$(( $(now_ms) - t0 ))
+echo "  (a model of 100000 bodies refused after $MS ms)"
+check huge_model_refused cond 'fails_with "huge.urm:[0-9]*: more than 1000 bodies in the model; accepted: at most 1000 (uasrisk-model(5), LIMITS)" &&
+  [ "$MS" -lt 3000 ]'
+awk 'BEGIN { for (i = 0; i < 300; i++) printf "part p%d\n", i }' >"$TMP/parts.urm"
+run -c "model load $TMP/parts.urm"
+check too_many_parts fails_with "parts.urm:257: more than 256 parts"
+
+# ---- Ctrl-C while a load waits (a FIFO nobody writes) ----
+mkfifo "$TMP/fifo"
+"$U" -c "model load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
+sleep 0.5
+t0=$(now_ms); kill -INT $PID; wait $PID; RC=$?; MS=$(( $(now_ms) - t0 ))
+check load_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+  has "$TMP/err" "model load: interrupted (Ctrl-C) while opening"'
+# ... and while it reads one that is written slowly
+( printf 'part extra\n'; sleep 5; printf 'param a 1\n' ) >"$TMP/fifo" &
+W=$!
+"$U" -c "model load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
+sleep 0.5
+t0=$(now_ms); kill -INT $PID; wait $PID; RC=$?; MS=$(( $(now_ms) - t0 ))
+kill $W 2>/dev/null; wait $W 2>/dev/null
+check read_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+  has "$TMP/err" "model load: interrupted (Ctrl-C) while reading"'
+
+finish
