@@ -15,7 +15,7 @@ now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
 printf '# no drone here\npart ra3\nparam xx 1\n' >"$TMP/nobodies.urm"
 run -c "case B; model load $TMP/nobodies.urm"
 check nobodies_case_b fails_with \
-  "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: the model needs a free body 'main'"
+  "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: the model declares no drone: add 'role drone=BODY'"
 run -c "case A; model load $TMP/nobodies.urm"
 check nobodies_case_a fails_with \
   "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: airbags:[0-9]*: .*unknown parameter 'frame_a'"

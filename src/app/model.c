@@ -152,9 +152,10 @@ static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const ch
   return 0;
 }
 
-/* the candidate set replaces the model set if it compiles with the current overrides and fits
-   (every set but the first, the built-in parts; file: the parts loaded from file, which failures
-   name); np is consumed either way; on error nothing changes */
+/* the candidate set replaces the model set if it compiles with the current overrides and, when
+   file is given (the parts loaded from file, which failures name), fits; a drop need not fit (a
+   model may be rebuilt a part at a time: 'model drop ra3' before loading another drone); np is
+   consumed either way; on error nothing changes */
 static int parts_commit(uraCtx* c, uraPart* np, int nn, const char* file) {
   char err[300], why[400];
   urModel* m = compile(np, nn, &c->st, err, sizeof err);
@@ -164,7 +165,7 @@ static int parts_commit(uraCtx* c, uraPart* np, int nn, const char* file) {
     size_t fl = file ? strlen(file) : 0;
     in_file = !file || (!strncmp(err, file, fl) && err[fl] == ':');
     snprintf(why, sizeof why, "%s", err);
-  } else if (c->npart) {
+  } else if (file) {
     bad = fits(c, np, nn, &c->st, m, why, sizeof why);
   }
   if (bad) {

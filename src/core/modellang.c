@@ -36,7 +36,7 @@ static const char* const symkind[] = {
 };
 static const char* const symkinds[] = {
   "parameters", "curves", "laws", "bodies", "joints", "ellipsoids", "pairs", "airbags", "sensors",
-  "parts"
+  "parts", "presets"
 };
 
 /* the most elements of each kind a model may have (uasrisk-model(5), LIMITS): a model of the
@@ -44,8 +44,11 @@ static const char* const symkinds[] = {
    model parsing and compiling within about a second (the builder checks each new name among
    the elements of its kind) */
 static const int limit[] = {
-  4000, 4000, 4000, 1000, 0, 2000, 5000, 64, 1000, 256
+  4000, 4000, 4000, 1000, 0, 2000, 5000, 64, 1000, 256, 64
 };
+_Static_assert(sizeof limit / sizeof limit[0] == sizeof symkind / sizeof symkind[0] &&
+               sizeof symkinds / sizeof symkinds[0] == sizeof symkind / sizeof symkind[0],
+               "a kind of name without its limit or plural");
 
 /* units: name and factor to SI */
 static const struct {
@@ -203,7 +206,7 @@ typedef struct {
   Sym* sym;
   int nsym, capsym;
   int* chain;                      /* capsym chain heads: the last symbol of each hash */
-  int count[SYM_PART + 1];         /* enabled elements of each kind (limits) */
+  int count[SYM_PRESET + 1];       /* enabled elements of each kind (limits) */
   const _Atomic int* stop;         /* a stop request (Ctrl-C), polled between statements */
   urCurve* curve;
   int ncurve, capcurve;
