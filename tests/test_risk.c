@@ -209,6 +209,13 @@ static void first_order(void** state) {
   NEAR(ur_mc_first_order(x3, y3, n), 2.25 / 3.25, 0.02);
   NEAR(ur_mc_first_order(x1, y3, n), 0, 0.02);
   NEAR(ur_mc_first_order(k, y, n), 0, 0);
+  /* a rare outcome (S = 0.996 in 1000 samples: 4 failures) that alone sets y: its share is 1
+     (equal-count bins pooled it with the common outcome into one bin: a share of 0) */
+  for (int i = 0; i < 1000; i++) {
+    x3[i] = i % 250 == 7 ? 0 : 1;
+    y3[i] = x3[i] == 0 ? 10 : 1e-3 * ur_rng_uniform(1, (uint64_t)i, 5);
+  }
+  NEAR(ur_mc_first_order(x3, y3, 1000), 1, 0.01);
   assert_true(isnan(ur_mc_first_order(x1, k, n)));
   free(x1), free(x2), free(x3), free(y), free(y3), free(k);
 }

@@ -35,4 +35,9 @@ run -c "$S; sweep bag_p0 1 furlong"
 check bad_unit has "$TMP/err" "sweep bag_p0: set bag_p0: unknown unit 'furlong'"
 run -c "$S; sweep angle 30,120"
 check out_of_range has "$TMP/err" "sweep angle: set angle: 120 is out of range"
+# the kept-sweeps limit counts both kinds: after 32 parameter sweeps a wind sweep is refused
+L="set format csv; set step 0.6; case C"
+for i in $(seq 1 32); do L="$L; set face $i; sweep mass 10"; done
+run -c "$L; set face 0; sweep wind 1"
+check sweep_limit_both_kinds has "$TMP/err" "sweep: 32 sweeps are kept already; 'sweep clear' forgets them"
 finish

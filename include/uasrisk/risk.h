@@ -93,7 +93,8 @@ int ur_mc_ratio(const double* num, const double* den, int n, double* r, double* 
 
 /* first-order variance share (Sobol index) of an input x for the output y from one sample, by
    conditional means over bins of x: the sample sorted by x is cut into about sqrt(n) bins of
-   equal count (equal values of x never split, so a discrete input gets one bin per value),
+   equal count (equal values of x never split; an input with at most sqrt(n) distinct values
+   gets one bin per value, however rare),
    S = (SSB - (m - 1) MSW) / SST with m bins (ANOVA's bias-corrected between-bin share), clipped
    to [0, 1]; 0 when x is constant, NAN when y is (or without memory). */
 double ur_mc_first_order(const double* x, const double* y, int n);

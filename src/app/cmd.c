@@ -14,7 +14,7 @@ const uraCmd ura_cmds[] = {
   {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
    "print the live case state with units, or one parameter; derived values say so"},
   {"case", ura_cmd_case, 1, 1, uraC_CASE, "case NAME",
-   "load a preset of the model (the RA3's: A, B, C, A1, A2; 'model presets' lists them); wind, "
+   "load a preset of the model (the RA3's: A, B, C, A1, A2; 'model show' lists their preset lines); wind, "
    "face, step, recall and the output settings keep their values"},
   {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
   {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
@@ -136,8 +136,9 @@ static int set_one(uraCtx* c, int argc, char** argv) {
     }
     return ura_fail(c, "set: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
   }
-  if (argc == 4) {
-    return ura_fail(c, "set %s: takes no unit (it is in %s)", argv[1],
+  /* a unit is accepted when it is the parameter's own (set wind 3 m/s) */
+  if (argc == 4 && !(p && *p->unit && !strcmp(argv[3], p->unit))) {
+    return ura_fail(c, "set %s: takes no unit but its own (it is in %s)", argv[1],
                     p && *p->unit ? p->unit : "the unit 'show' prints");
   }
   return p ? ura_param_set(c, p, argv[2]) : ura_injury_set(c, i, argv[2]);

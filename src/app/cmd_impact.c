@@ -17,8 +17,8 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond) {
   cond->tau = c->st.tau;
   if (cond->angle < uraANGLE_DELTA) {
     return ura_fail(c, "angle %g deg: an offset Delta needs a descent (at angles below %g deg "
-                    "the path stays R_max above the head top); accepted: angle >= %g deg, or "
-                    "'impact aim head UP SIDE' for a flight", cond->angle, uraANGLE_DELTA,
+                    "the path stays R_max above the head top); accepted: angle >= %g deg, "
+                    "'set angle auto' (the descent's), or 'impact aim head UP SIDE' for a flight", cond->angle, uraANGLE_DELTA,
                     uraANGLE_DELTA);
   }
   return 0;

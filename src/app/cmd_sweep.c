@@ -72,7 +72,7 @@ static int sweep_keep(uraCtx* c, const uraSweep* s) {
       return 0;
     }
   }
-  if (c->nsweep == uraMAXSWEEPS) {
+  if (c->nsweep + c->npsweep >= uraMAXSWEEPS) { /* both kinds count */
     return ura_fail(c, "sweep: %d sweeps are kept already; 'sweep clear' forgets them",
                     uraMAXSWEEPS);
   }
@@ -147,6 +147,10 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   }
   int is_wind = !strcmp(argv[1], "wind"), is_face = !strcmp(argv[1], "face");
   double v[uraMAXLIST];
+  if ((is_wind || is_face) && argc == 2) {
+    return ura_fail(c, "sweep %s: needs a list of values, e.g. 'sweep %s %s'", argv[1], argv[1],
+                    is_wind ? "0,4,10" : "0,90,180");
+  }
   if ((!is_wind && !is_face) || argc != 3) {
     return ura_fail(c, "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face "
                     "LIST, sweep show, sweep clear", argv[1]);

@@ -117,8 +117,8 @@ int ura_design_set(uraCtx* c, const char* name, const char* value, const char* u
   if (!strcmp(name, "velocity")) return set_velocity(c, value, unit);
   if (strcmp(name, "mass")) return 1;
   const uraParam* p = ura_param_find("mass");
-  if (unit) {
-    return ura_fail(c, "set mass: takes no unit (it is in %s)", p->unit);
+  if (unit && strcmp(unit, p->unit)) {
+    return ura_fail(c, "set mass: takes no unit but its own (it is in %s)", p->unit);
   }
   uraState keep = c->st;
   if (ura_param_set(c, p, value)) return -1;

@@ -203,8 +203,13 @@ double ur_mc_first_order(const double* x, const double* y, int n) {
     free(p);
     return NAN;
   }
-  /* bins of about n / sqrt(n) samples in the order of x, equal x never split */
-  double per = n / fmax(2.0, nearbyint(sqrt((double)n)));
+  /* bins of about n / sqrt(n) samples in the order of x, equal x never split; an input with at
+     most that many distinct values (a deployment outcome, a discrete choice) gets one bin per
+     value, so a rare value is never pooled with a common one */
+  double nb = fmax(2.0, nearbyint(sqrt((double)n))), per = n / nb;
+  int distinct = 1;
+  for (int i = 1; i < n && distinct <= nb; i++) distinct += x[p[i]] != x[p[i - 1]];
+  if (distinct <= nb) per = 1;
   int m = 0;
   for (int i = 0; i < n;) {
     int j = i;
