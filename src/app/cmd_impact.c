@@ -117,7 +117,8 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);
 
   /* one row */
-  uraTable* t = ura_impact_table();
+  int compact = ura_impact_compact(c);
+  uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table();
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
                  "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
                  1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
@@ -127,7 +128,8 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
                  ur_impact_tau_shift(s, &cond));
-  ura_impact_cells(t, dpar, dperp, &r);
+  if (compact) ura_impact_compact_row(t, dpar, dperp, &r);
+  else ura_impact_cells(t, dpar, dperp, &r);
   ura_table_print(c, t);
   return 0;
 }

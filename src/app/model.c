@@ -299,9 +299,17 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
     return ura_fail(c, "set %s: '%s' is not a number; accepted: a number, optionally with a "
                     "unit (uasrisk-model(5))", name, value);
   }
-  if (unit && ur_unit_si(unit, &f)) {
+  char si[urNAMELEN];
+  if (unit && ur_unit_parse(unit, &f, si, sizeof si)) {
     return ura_fail(c, "set %s: unknown unit '%s'; accepted: the units of uasrisk-model(5) "
-                    "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L)", name, unit);
+                    "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L), or several "
+                    "joined by * and / (N*m/rad)", name, unit);
+  }
+  int k = unit ? ura_model_param_find(c, name) : -1;
+  const char* want = k >= 0 ? c->model->param[k].unit : "";
+  if (unit && *want && strcmp(si, want)) {
+    return ura_fail(c, "set %s: the unit '%s' is in %s, not %s; accepted: a unit of %s (as in "
+                    "its param line)", name, unit, *si ? si : "no unit", want, want);
   }
   v *= f;
 
@@ -478,7 +486,9 @@ static int model_params(uraCtx* c) {
     for (int k = 0; k < c->st.nov; k++) {
       if (!strcmp(c->st.ov_name[k], m->param[i].name)) who = c->st.ov_user[k] ? "set" : "case";
     }
-    fprintf(c->out, "%-16s %.10g  (SI; %s)\n", m->param[i].name, m->param[i].value, who);
+    const char* u = m->param[i].unit;
+    fprintf(c->out, "%-16s %.10g%s%s  (%s)\n", m->param[i].name, m->param[i].value, *u ? " " : "",
+            u, who);
   }
   return 0;
 }
