@@ -52,8 +52,11 @@ const uraCmd ura_cmds[] = {
    "deg; columns "
    "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
    "p_vc,p"},
-  {"history", ura_cmd_history, 0, 0, uraC_NONE, "history",
-   "print the time histories of the last impact (time and every sensor channel)"},
+  {"history", ura_cmd_history, 0, -1, uraC_NONE, "history [all|CHANNEL...] [FROM:TO]",
+   "the last impact at a glance: the peak of each derived signal and its time, the injury "
+   "criteria and P; all: every sensor channel's samples (time and every channel, as export "
+   "history writes them); CHANNEL...: those signals' samples; FROM:TO: only the samples from "
+   "FROM to TO ms after tau"},
   {"contacts", ura_cmd_contacts, 0, 0, uraC_NONE, "contacts",
    "list the drone's contacts with the person in the last impact, in order of first touch; "
    "columns drone,person,first,last,peak_force,peak_time (s from tau, N)"},

@@ -152,8 +152,8 @@ static void channel_name(const urModel* m, int j, char* buf, size_t n) {
   }
 }
 
-/* every sensor channel of the last impact, one row per sample */
-int ura_cmd_history(uraCtx* c, int argc, char** argv) {
+/* every sensor channel of the last impact, one row per sample from from to to (s) */
+int ura_history_samples(uraCtx* c, double from, double to) {
   if (!c->have_impact) return ura_fail(c, "history: no impact yet; run 'impact DPAR DPERP'");
   const urModel* m = c->setup.m;
   const urData* d = c->work.d;
@@ -172,6 +172,8 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
                  "(uasrisk-model(5))", c->last_aim ? "aimed at the head, up and side" : "at",
                  c->last_dpar, c->last_dperp);
   for (int r = 0; r < d->nhist; r++) {
+    double tr = d->hist[(size_t)r * ncol];
+    if (tr < from || tr > to) continue;
     for (int k = 0; k < ncol; k++) ura_table_cell(t, "%.9g", d->hist[(size_t)r * ncol + k]);
   }
   ura_table_print(c, t);

@@ -27,8 +27,8 @@ void ura_impact_compact_row(uraTable* t, double dpar, double dperp, const urImpa
     ura_table_note(t, "no contact: the drone passes the person at this offset; every criterion "
                    "and P are 0");
   } else {
-    ura_table_note(t, "Nij %s (NTF %.3g, NTE %.3g, NCF %.3g, NCE %.3g); vc_th/vc_ab: VC "
-                   "thorax/abdomen, m/s", modes[m],
+    ura_table_note(t, "Nij %s (NTF %.3g, NTE %.3g, NCF %.3g, NCE %.3g); vc_th, vc_ab: VC "
+                   "in m/s", modes[m],
                    r->inj.nij.mode[0], r->inj.nij.mode[1], r->inj.nij.mode[2],
                    r->inj.nij.mode[3]);
   }

@@ -1,5 +1,6 @@
 /* session.c: save session FILE (a script that recreates the live state exactly) and export */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,7 +85,7 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   char* av[2] = {argv[1], grid ? "cells" : mc ? "samples" : "show"};
   int rc = grid ? ura_cmd_grid(c, 2, av) : sweep ? ura_cmd_sweep(c, 2, av) :
            mc ? ura_cmd_montecarlo(c, 2, av) :
-           cont ? ura_cmd_contacts(c, 1, av) : ura_cmd_history(c, 1, av);
+           cont ? ura_cmd_contacts(c, 1, av) : ura_history_samples(c, -INFINITY, INFINITY);
   c->out = out;
   c->st.format = fmt;
   return ura_atomic_close(c, &a, rc == 0, "export");
