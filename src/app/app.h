@@ -356,6 +356,13 @@ void ura_recall_flush(uraCtx* c);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 /* the commands of save session (session.c) */
 void ura_session_write(uraCtx* c, FILE* f);
+/* what a session leaves out (session_base.c): the state 'reset; case NAME' gives with the live
+   model parts (0, or -1: the defaults, the case is not a preset); the shortest text of v that
+   reads back exactly; a model parameter's value in the unit that writes it shortest and exactly
+   ("1.1 atm", "26 kN", "0.25 m") */
+int ura_session_base(uraCtx* c, uraState* base);
+void ura_num_shortest(char* buf, size_t n, double v);
+void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
 int ura_cmd_design(uraCtx* c, int argc, char** argv);   /* designs.c */
 /* the saved designs as commands, for save session (designs.c) */
