@@ -455,6 +455,8 @@ void ura_term_size(int* rows, int* cols);
 int ura_text_width(const uraCtx* c);
 int ura_pager_begin(uraCtx* c, const char* cmd);
 void ura_pager_end(uraCtx* c);
+/* "uasrisk VERSION (commit HASH[-dirty])" (version.c) */
+const char* ura_version(void);
 /* "did you mean" (suggest.c): the edit distance of two names; the nearest name offered for a
    word, near enough for a typing slip; its text (" (did you mean 'NAME'?)" or ""); the names of
    the command table, of the parameter tables, of a usage text's keywords */
