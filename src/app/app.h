@@ -474,5 +474,8 @@ void ura_suggest_params(uraCtx* c, uraSuggest* s);
 void ura_suggest_keywords(uraSuggest* s, const char* usage);
 /* text after lead, wrapped between words at width (0: one line), later lines after cont */
 void ura_wrap(FILE* f, const char* lead, const char* cont, const char* text, int width);
+/* s split at its double spaces into at most max lines of width (the last takes the rest); the
+   number of lines */
+int ura_split_fields(const char* s, int width, char (*out)[256], int max);
 
 #endif

@@ -33,3 +33,24 @@ void ura_wrap(FILE* f, const char* lead, const char* cont, const char* text, int
   }
   fputc('\n', f);
 }
+
+int ura_split_fields(const char* s, int width, char (*out)[256], int max) {
+  int n = 0;
+  size_t len = 0;
+  if (max < 1) return 0;
+  out[0][0] = 0;
+  while (*s) {
+    const char* sep = strstr(s, "  ");
+    size_t k = sep ? (size_t)(sep - s) : strlen(s);
+    if (len && len + 2 + k > (size_t)width && n + 1 < max) {
+      out[++n][0] = 0;
+      len = 0;
+    }
+    len += (size_t)snprintf(out[n] + len, len < 256 ? 256 - len : 0, "%s%.*s", len ? "  " : "",
+                            (int)k, s);
+    if (len > 255) len = 255;
+    s += k;
+    while (*s == ' ') s++;
+  }
+  return n + 1;
+}
