@@ -379,6 +379,9 @@ int ura_plot_psweep(uraCtx* c, const char* name);
 void ura_sweep_param_clear(uraCtx* c);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);
 int ura_cmd_compare(uraCtx* c, int argc, char** argv);
+/* why compare's p_centre is 0, as a note of t (explain.c): the impact r at (0, 0) missed or no
+   criterion counts; where the grid g's P is largest (nothing when r->p > 0) */
+void ura_explain_centre(uraTable* t, const urImpactResult* r, const urGrid* g);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv);         /* cmd_history.c */
 /* every sensor channel's samples of the last impact from from to to (s from tau) */

@@ -289,6 +289,7 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, c->last.paper_speed, c->last.tau,
                  c->last.tau_shift);
+  ura_explain_centre(t, &r, c->last.g);
   ura_table_cell(t, "%s", c->st.casename);
   ura_table_cell(t, "%g", c->st.descent.wind);
   ura_table_cell(t, "%.4f", r.p);
