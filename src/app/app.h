@@ -458,6 +458,11 @@ void ura_term_size(int* rows, int* cols);
 int ura_text_width(const uraCtx* c);
 int ura_pager_begin(uraCtx* c, const char* cmd);
 void ura_pager_end(uraCtx* c);
+/* the progress line on standard error (progress.c): a label before it (a sweep's value; NULL:
+   none), the start of the work, one line "LABEL WHAT DONE/TOTAL NOUN, ELAPSED, about T left" */
+void ura_progress_label(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+void ura_progress_start(void);
+void ura_progress_line(const char* what, long done, long total, const char* noun);
 /* "uasrisk VERSION (commit HASH[-dirty])" (version.c) */
 const char* ura_version(void);
 /* "did you mean" (suggest.c): the edit distance of two names; the nearest name offered for a

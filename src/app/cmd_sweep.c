@@ -194,7 +194,10 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   for (int i = 0; i < n && rc == 0; i++) {
     if (is_wind) c->st.descent.wind = v[i];
     else c->st.face = v[i];
+    ura_progress_label("sweep %s %g %s (%d of %d): ", argv[1], v[i], is_wind ? "m/s" : "deg",
+                       i + 1, n);
     rc = ura_grid_run(c, 0);
+    ura_progress_label(NULL);
     if (rc && ura_interrupted()) {
       char why[uraERRLEN];
       snprintf(why, sizeof why, "%s", c->err);
