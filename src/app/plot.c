@@ -638,8 +638,9 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   quote(f, title);
   fprintf(f, " noenhanced\n");
   fprintf(f, "set xtics %g\n", width > 1.2 ? 0.4 : 0.2);
-  fprintf(f, "set xlabel \"cross offset dperp (m)\" noenhanced\n");
-  fprintf(f, "set ylabel \"along offset dpar (m)\" noenhanced\n");
+  fprintf(f, "set xlabel \"cross offset dperp (m), + left of the course (the paper's layout)\" "
+          "noenhanced\n");
+  fprintf(f, "set ylabel \"along offset dpar (m), + ahead\" noenhanced\n");
   fprintf(f, "set cblabel \"P{F|Delta} (%%)\" noenhanced\n");
   fprintf(f, "set size ratio -1\nset xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n",
           g->perp_min - h, g->perp_min + (g->ncol - 1) * g->step + h,
