@@ -22,6 +22,11 @@ check history_bad_range cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ]
 run -c 'show bag'
 check show_prefix cond '[ "$RC" -eq 0 ] && [ "$(lines "$TMP/out")" -ge 5 ] &&
   ! grep -qv "^bag_" "$TMP/out" && has "$TMP/out" "^bag_p0  *101325 Pa$"'
+run -c 'model params bag'
+check model_params_prefix cond '[ "$RC" -eq 0 ] && [ "$(lines "$TMP/out")" -ge 5 ] &&
+  ! grep -qv "^bag_" "$TMP/out" && has "$TMP/out" "^bag_p0  *101325 Pa  (case)$"'
+run -c 'model params zz'
+check model_params_none cond '[ "$RC" -eq 1 ] && has "$TMP/err" "no model parameter starts with .zz."'
 run -c 'set bag_p0 3 kg'
 check unit_of_another_kind cond '[ "$RC" -eq 1 ] &&
   has "$TMP/err" "set bag_p0: the unit .kg. is in kg, not Pa; accepted: a unit of Pa"'

@@ -60,9 +60,11 @@ const uraCmd ura_cmds[] = {
   {"contacts", ura_cmd_contacts, 0, 0, uraC_NONE, "contacts",
    "list the drone's contacts with the person in the last impact, in order of first touch; "
    "columns drone,person,first,last,peak_force,peak_time (s from tau, N)"},
-  {"model", ura_cmd_model, 1, 2, uraC_NONE, "model show|params|parts|save FILE|load FILE|drop PART",
-   "print, list, write or load the model set (human, drone, airbags, options: uasrisk-model(5)), "
-   "or drop a part (before loading another drone)"},
+  {"model", ura_cmd_model, 1, 2, uraC_NONE,
+   "model show|params [PREFIX]|parts|save FILE|load FILE|drop PART",
+   "print, list (params: with units and who set them; PREFIX: the names starting with it), "
+   "write or load the model set (human, drone, airbags, options: uasrisk-model(5)), or drop a "
+   "part (before loading another drone)"},
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
