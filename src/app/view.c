@@ -208,6 +208,9 @@ static void draw_grid(viewer* v) {
   snprintf(buf, sizeof buf, "%s; columns: dperp (m, + left of the course), rows: dpar (m, + "
            "ahead); the paper's layout", what);
   if ((int)strlen(buf) > COLS - LABEL_W) {
+    snprintf(buf, sizeof buf, "%s; cols dperp m (+ left of course), rows dpar m (+ ahead)", what);
+  }
+  if ((int)strlen(buf) > COLS - LABEL_W) {
     snprintf(buf, sizeof buf, "%s; cols dperp m (+ left of course), rows dpar m (+ ahead)",
              v->c->last.diff ? "P_b - P_a %" : "P %");
   }
