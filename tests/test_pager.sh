@@ -56,6 +56,10 @@ check impact_compact wait_for p1 '^dpar +dperp +hic15 +nij +vc_th +vc_ab +p_hic 
 check impact_values wait_for p1 '^ +0 +0 +[0-9]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[01]\.[0-9]{3} +[01]\.[0-9]{3} +[01]\.[0-9]{3} +[01]\.[0-9]{3}$'
 check impact_nij_note wait_for p1 '^# Nij (NTF|NTE|NCF|NCE) \(NTF '
 check impact_fits fits80 p1
+# set format wide: every column at the prompt too
+keys p1 C-l
+line p1 "set format wide; impact 0 0; set format table"
+check impact_wide wait_for p1 '^dpar +dperp +contact +hic15 +nij +nij_tf' 60
 
 # history: a summary that fits the screen, the samples through less
 keys p1 C-l
