@@ -121,6 +121,14 @@ check prompt2 wait_for p2 'uasrisk\[A\]> *$'
 line p2 "show"
 check pager_env wait_for p2 '^case +A$'
 check pager_env_used cond '[ "$(grep -c . "$TMP/screen")" -le 4 ]'
+# the whole help listing (PAGER=cat: all of it on screen and in the scrollback) in 80 columns
+line p2 "set pager off"
+keys p2 C-l
+line p2 "help"
+check help_all wait_for p2 '^  exit +leave uasrisk$'
+TM capture-pane -p -J -S -300 -t p2 >"$TMP/screen"
+check help_all_fits cond '! awk "length > 80 { bad = 1 } END { exit !bad }" "$TMP/screen" &&
+  grep -q "^ *nij_ce,vc_thorax" "$TMP/screen"'
 start p3 80 24 PAGER=/nonexistent/pager
 check prompt3 wait_for p3 'uasrisk\[A\]> *$'
 line p3 "show"

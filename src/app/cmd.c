@@ -123,7 +123,7 @@ int ura_cmd_help(uraCtx* c, int argc, char** argv) {
   int width = ura_text_width(c);
   for (const uraCmd* k = ura_cmds; k->name; k++) {
     char lead[300];
-    if (strlen(k->usage) > 26) fprintf(c->out, "  %s\n", k->usage);
+    if (strlen(k->usage) > 26) ura_wrap(c->out, "  ", "    ", k->usage, width);
     snprintf(lead, sizeof lead, "  %-26s ", strlen(k->usage) > 26 ? "" : k->usage);
     ura_wrap(c->out, lead, "                             ", k->help, width);
   }

@@ -17,7 +17,12 @@ void ura_wrap(FILE* f, const char* lead, const char* cont, const char* text, int
     while (*s == ' ') s++;
     if (!*s) break;
     size_t k = strcspn(s, " ");
-    if (!first && col + 1 + k > (size_t)width) {
+    /* a word that fits a line of its own goes to the next line whole; a longer one starts here
+       when its first piece fits */
+    size_t p0 = strcspn(s, ",|") + 1;
+    if (p0 > k) p0 = k;
+    size_t need = strlen(cont) + k <= (size_t)width ? k : p0;
+    if (!first && col + 1 + need > (size_t)width) {
       fprintf(f, "\n%s", cont);
       col = strlen(cont);
       first = 1;
@@ -26,10 +31,20 @@ void ura_wrap(FILE* f, const char* lead, const char* cont, const char* text, int
       fputc(' ', f);
       col++;
     }
-    fwrite(s, 1, k, f);
-    col += k;
-    first = 0;
-    s += k;
+    /* a word longer than a line (a list of column names) breaks after its commas and bars */
+    const char* e = s + k;
+    while (s < e) {
+      size_t piece = strcspn(s, ",|");
+      piece = s + piece < e ? piece + 1 : (size_t)(e - s);
+      if (!first && col + piece > (size_t)width) {
+        fprintf(f, "\n%s", cont);
+        col = strlen(cont);
+      }
+      fwrite(s, 1, piece, f);
+      col += piece;
+      first = 0;
+      s += piece;
+    }
   }
   fputc('\n', f);
 }
