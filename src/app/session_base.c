@@ -5,13 +5,19 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "app.h"
 
-/* the state 'reset' then 'case NAME' give with the live model parts (NAME: the live case) */
+/* the state 'reset' then 'case NAME' give with the live model parts (NAME: the live case); the
+   compiled model as it is (nothing is compiled here: save session may run on a design's state
+   while the live model stays) */
 int ura_session_base(uraCtx* c, uraState* base) {
   uraState live = c->st;
-  const urPreset* pr = ura_preset_find(c, live.casename);
+  const urPreset* pr = NULL;
+  for (int i = 0; c->model && i < c->model->npreset; i++) {
+    if (!strcasecmp(c->model->preset[i].name, live.casename)) pr = c->model->preset + i;
+  }
   ura_state_defaults(&c->st);
   int rc = pr ? ura_preset_state(c, pr, c->model, base) : -1;
   if (rc) ura_state_defaults(base);
@@ -42,7 +48,7 @@ static const char* const units[] = {"m", "mm", "cm", "kg", "g", "s", "ms", "N", 
                                     "MPa", "GPa", "atm", "bar", "rad", "deg", "J", "L", NULL};
 
 void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n) {
-  int k = ura_model_param_find(c, name);
+  int k = c->model ? ur_name_param(c->model, name) : -1;
   const char* si = k >= 0 ? c->model->param[k].unit : "";
   ura_num_shortest(buf, n, v);
   if (!*si) return;
