@@ -56,6 +56,25 @@ all: $(BIN) $(LIB)
 deps:
 	@sh scripts/setup.sh
 
+# the version, and the commit it was built from (uasrisk --version): git's in a checkout (-dirty
+# with uncommitted changes), else the COMMIT file that git archive fills in (export-subst in
+# .gitattributes); build/version.h is rewritten only when they change
+VERSION = 0.1
+ifeq ($(filter clean,$(MAKECMDGOALS)),)
+COMMIT := $(shell [ "$$(git rev-parse --show-toplevel 2>/dev/null)" = "$(CURDIR)" ] && \
+  git rev-parse --short=12 HEAD 2>/dev/null)
+ifneq ($(COMMIT),)
+COMMIT := $(COMMIT)$(shell git diff --quiet HEAD -- 2>/dev/null || echo -dirty)
+else
+COMMIT := $(shell sed -n '/^[0-9a-f][0-9a-f]*$$/p' COMMIT 2>/dev/null)
+endif
+$(shell mkdir -p $(BUILD) && printf '#define uraVERSION "%s"\n#define uraCOMMIT "%s"\n' \
+  '$(VERSION)' '$(COMMIT)' | cmp -s - $(BUILD)/version.h || printf \
+  '#define uraVERSION "%s"\n#define uraCOMMIT "%s"\n' '$(VERSION)' '$(COMMIT)' > $(BUILD)/version.h)
+endif
+$(BUILD)/src/app/version.o: $(BUILD)/version.h
+$(BUILD)/src/app/version.o: CFLAGS += -I$(BUILD)
+
 # everything is rebuilt when the compiler or its flags change (e.g. make OPT='-O0 -g')
 FLAGS = $(BUILD)/.flags
 ifeq ($(filter clean,$(MAKECMDGOALS)),)

@@ -17,11 +17,11 @@ check mass_runs cond '[ $RC -eq 0 ] && [ "$(lines "$TMP/h")" -eq 3 ]'
 check mass_changes_hic cond '[ "$(sed -n 1p "$TMP/h")" != "$(sed -n 2p "$TMP/h")" ]'
 check mass_doubling_raises_hic awk 'NR==2{a=$1} NR==3{b=$1} END{exit !(b > a)}' "$TMP/h"
 check show_mass_multibody has "$TMP/out" '^mass  *20 kg  (multibody drone: 20 kg)'
-check drone_mass_set has "$TMP/out" '^drone_mass  *20  (SI; set)'
+check drone_mass_set has "$TMP/out" '^drone_mass  *20 kg  (set)'
 
 # the same mass again changes nothing (a saved session sets every setting)
 run -c "$B; set mass 15; model params"
-check same_mass_no_override has "$TMP/out" '^drone_mass .*(SI; model)'
+check same_mass_no_override has "$TMP/out" '^drone_mass .*kg  (model)'
 
 # drone_size, arm_k (an arm on the head), foam_t (the cargo box), bag_p0 (case A's bag)
 run -c "$B; impact 0 0; set drone_size 1.2; impact 0 0"

@@ -86,8 +86,10 @@ static void plain_layout(void** state) {
   assert_int_equal(ura_grid_load(&f->c, f->path), 0);
   const char* out = show(f);
   assert_null(strchr(out, '\033'));
-  /* two title lines, the header, 4 rows, legend, Q line */
-  assert_int_equal(count_lines(out), 2 + 1 + 4 + 2);
+  /* title lines (conditions, orientation, the half plane), the header, 4 rows, legend, Q */
+  assert_int_equal(count_lines(out), 3 + 1 + 4 + 2);
+  assert_non_null(strstr(out, "rows: dpar m (+ ahead); columns: dperp m (+ left of course); the "
+                              "paper's layout\n"));
   assert_non_null(strstr(out, " dpar   0.00  0.05  0.10\n"));
   assert_non_null(strstr(out, "\n  0.10   0.0   2.0   0.0\n  0.05  50.0 100.0  10.0\n"
                               "  0.00 100.0  95.0   0.0\n -0.05   0.0   4.0   0.0\n"));
@@ -106,7 +108,7 @@ static void paper_table6(void** state) {
   assert_int_equal(ura_grid_load(&f->c, "sessions/paper/grids/table06_caseC_wind0.csv"), 0);
   const char* out = show(f);
   assert_null(strchr(out, '\033'));
-  assert_int_equal(count_lines(out), 2 + 1 + 29 + 2);
+  assert_int_equal(count_lines(out), 3 + 1 + 29 + 2);
   assert_non_null(strstr(out, "  0.65   0.0   0.0   0.0   0.0   0.0  12.7 100.0 100.0   0.0"));
   assert_non_null(strstr(out, "case C, wind 0 m/s, face 0 deg, speed 40.6 m/s, angle 90 deg: "
                               "Q = 0.8469 m^2"));

@@ -109,7 +109,8 @@ wait_for() { n=0; lim=$(( ${2:-10} * 20 ))
   echo "  (waited for '$1'; the screen was:)"; sed 's/^/  | /' "$TMP/screen"; return 1
 }
 alive() { [ "$(TM display -p -t t "#{pane_dead}")" = 0 ]; }
-TM new-session -d -s t -x 150 -y 50 -c "$PWD" "env HOME=$TMP $U"
+# PAGER=cat: grid show's long output straight to the screen (the pager is test_pager.sh's)
+TM new-session -d -s t -x 150 -y 50 -c "$PWD" "env HOME=$TMP PAGER=cat $U"
 TM set -t t remain-on-exit on
 check tty_prompt wait_for 'uasrisk\[A\]>'
 TM send-keys -t t -l 'show wi'

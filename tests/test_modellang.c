@@ -276,6 +276,47 @@ static void test_units(void** state) {
   }
 }
 
+/* compound units (N*m/rad, kN/m): the factor, the SI unit a parameter keeps for show and save,
+   and what is refused */
+static void test_compound_units(void** state) {
+  static const struct {
+    const char* unit;
+    double f;
+    const char* si;
+  } u[] = {
+    {"kN/m", 1e3, "N/m"}, {"N*m/rad", 1, "N*m/rad"}, {"N*m*s/rad", 1, "N*m*s/rad"},
+    {"N*s/m", 1, "N*s/m"}, {"atm", 101325, "Pa"}, {"deg", M_PI / 180, "rad"}, {"mm", 1e-3, "m"},
+    {"kg/L", 1e3, "kg/m^3"}, {"none", 1, ""}
+  };
+  for (size_t i = 0; i < sizeof u / sizeof u[0]; i++) {
+    double f;
+    char si[32], text[64], err[256];
+    assert_int_equal(ur_unit_parse(u[i].unit, &f, si, sizeof si), 0);
+    assert_near(f, u[i].f, 1e-12 * u[i].f);
+    assert_string_equal(si, u[i].si);
+    snprintf(text, sizeof text, "param x 2 %s\n", u[i].unit);
+    urModel* m = parse1(text, NULL, 0, err);
+    assert_non_null(m);
+    int k = ur_name_param(m, "x");
+    assert_true(k >= 0);
+    assert_string_equal(m->param[k].unit, u[i].si);
+    ur_model_free(m);
+  }
+  static const char* const bad[] = {"kN/", "*m", "N**m", "N/furlong", "none*m", "", "N m"};
+  for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+    double f;
+    assert_int_equal(ur_unit_parse(bad[i], &f, NULL, 0), -1);
+  }
+  char err[256];
+  assert_null(parse1("param x 2 N/furlong\n", NULL, 0, err));
+  assert_non_null(strstr(err, "unknown unit 'N/furlong'"));
+  /* no unit: none kept */
+  urModel* m = parse1("param x 2\n", NULL, 0, err);
+  assert_non_null(m);
+  assert_string_equal(m->param[ur_name_param(m, "x")].unit, "");
+  ur_model_free(m);
+}
+
 /* lexical rules: BOM, CRLF, tabs, comment after '\\', lists wrapped after ',', '#' in a word */
 static void test_lexical(void** state) {
   char err[256];
@@ -466,7 +507,8 @@ static const struct {
    "before its definition (at x.urm:5)*"},
   {PRE BODY_C "mass=$zz\n", "x.urm:4: key 'mass': unknown parameter 'zz'*"},
   {PRE "param q 3 furlong\n", "x.urm:4: param 'q': unknown unit 'furlong'; expected one of m, "
-   "mm, cm, kg, g, s, ms, N, kN, Pa, kPa, MPa, GPa, atm, bar, deg, rad, J, L, none"},
+   "mm, cm, kg, g, s, ms, N, kN, Pa, kPa, MPa, GPa, atm, bar, deg, rad, J, L, none, or several "
+   "joined by * and / (N*m/rad)"},
   {PRE "param q\n", "x.urm:4: param takes NAME VALUE [UNIT]; got 1 word(s) after 'param'"},
   {PRE "param 9q 1\n", "x.urm:4: param: '9q' is not a valid name*"},
   {PRE "body abcdefghijabcdefghijabcdefghijkl parent=world joint=fixed pos=0,0,0 mass=1\n",
@@ -983,6 +1025,7 @@ int main(void) {
     cmocka_unit_test(test_model_fields),
     cmocka_unit_test(test_numbers_accepted),
     cmocka_unit_test(test_units),
+    cmocka_unit_test(test_compound_units),
     cmocka_unit_test(test_lexical),
     cmocka_unit_test(test_overrides),
     cmocka_unit_test(test_enable),

@@ -112,13 +112,14 @@ fi
 run -c "set terminal 'pngcairo  font \"Arial,10\" size 640,480 noenhanced'; show terminal"
 check terminal_normalised has "$TMP/out" "^terminal  *pngcairo font 'Arial,10' size 640,480 noenhanced$"
 
-# ---- save session writes the terminal and output back so that they replay (item 7) ----
+# ---- save session writes the terminal back so that it replays (item 7); the output file is
+# the last plot's, not part of the state a session recreates (issue 26) ----
 run -c "set terminal 'pngcairo font \"Arial,10\"'; set output \"it's.png\"; save session $TMP/q.ses"
 check save_quoted cond 'grep -qx "set terminal \"pngcairo font '"'"'Arial,10'"'"'\"" "$TMP/q.ses" &&
-  grep -qx "set output \"it'"'"'s.png\"" "$TMP/q.ses"'
+  ! grep -q "^set output" "$TMP/q.ses"'
 run "$TMP/q.ses" -c 'show terminal; show output'
 check save_replays cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^terminal  *pngcairo font .Arial,10.$" &&
-  has "$TMP/out" "^output  *it.s.png$"'
+  has "$TMP/out" "^output  *none$"'
 
 # gnuplot missing: one clear line, status 1
 env PATH=/nonexistent "$U" -c "set terminal png; set output $TMP/m.png; plot pof" \

@@ -14,7 +14,7 @@ run -c "$S; show bag_p0; sweep bag_p0 1.0,1.2 atm; show bag_p0; set bag_p0 1.2 a
 check sweep_runs cond '[ $RC -eq 0 ]'
 check sweep_header has "$TMP/out" '^case,bag_p0,wind,face,speed,angle,q$'
 check sweep_rows cond '[ "$(grep -c "^A,1\(\.2\)\?,0,0," "$TMP/out")" -eq 2 ]'
-check live_state_back cond '[ "$(grep -c "^bag_p0  *101325 (SI)" "$TMP/out")" -eq 2 ]'
+check live_state_back cond '[ "$(grep -c "^bag_p0  *101325 Pa$" "$TMP/out")" -eq 2 ]'
 # the grid at 1.2 atm gives the Q of the sweep's second row
 qs=$(awk -F, '/^A,1.2,/ {print $7}' "$TMP/out")
 check sweep_q_is_grid_q cond '[ -n "$qs" ] && grep -q "^A,bag_p0,0,0,[^,]*,[^,]*,0.3,$qs,none,1.2,atm$" "$TMP/out"'

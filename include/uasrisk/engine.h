@@ -179,6 +179,7 @@ typedef struct {
 typedef struct {
   char name[urNAMELEN];
   double value;
+  char unit[urNAMELEN];            /* SI unit from its param line (N/m, Pa; "": none given) */
 } urParam;
 
 /* the roles an impact needs, declared by the model's role statements (uasrisk-model(5)), and

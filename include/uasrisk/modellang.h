@@ -61,8 +61,11 @@ urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverrid
 int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart,
                    char* err, int errlen);
 
-/* factor from a unit of the language (m, mm, atm, deg, ...) to SI; 0, or -1 if unknown */
+/* factor from a unit of the language (m, mm, atm, deg, ...; several joined by '*' and '/':
+   N*m/rad, kN/m) to SI; 0, or -1 if unknown. ur_unit_parse also gives the SI unit (kN/m: N/m,
+   atm: Pa, none: "") into si (n bytes; NULL: not wanted). */
 int ur_unit_si(const char* unit, double* factor);
+int ur_unit_parse(const char* unit, double* factor, char* si, size_t n);
 
 #ifdef __cplusplus
 }

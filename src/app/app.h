@@ -25,7 +25,8 @@
 
 /* ---- live case state ---- */
 
-typedef enum { uraFMT_TABLE = 0, uraFMT_CSV } uraFormat;
+/* table: rows fit 80 columns at a terminal, every column elsewhere; wide: every column always */
+typedef enum { uraFMT_TABLE = 0, uraFMT_CSV, uraFMT_WIDE } uraFormat;
 /* where a derived impact speed and descent angle come from (set descent) */
 typedef enum { uraDESC_MODEL = 0, uraDESC_PAPER } uraDescentSrc;
 
@@ -41,6 +42,7 @@ typedef struct {
   int tau;                         /* urTau: the moment at which Delta is taken */
   double face;                     /* face direction phi, deg */
   int format;                      /* uraFormat */
+  int pager;                       /* 1: long output at the prompt through $PAGER (pager.c) */
   urInjuryParams injury;           /* injury criteria and PoF curve settings */
   double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
   double step;                     /* grid pitch, m */
@@ -354,6 +356,13 @@ void ura_recall_flush(uraCtx* c);
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 /* the commands of save session (session.c) */
 void ura_session_write(uraCtx* c, FILE* f);
+/* what a session leaves out (session_base.c): the state 'reset; case NAME' gives with the live
+   model parts (0, or -1: the defaults, the case is not a preset); the shortest text of v that
+   reads back exactly; a model parameter's value in the unit that writes it shortest and exactly
+   ("1.1 atm", "26 kN", "0.25 m") */
+int ura_session_base(uraCtx* c, uraState* base);
+void ura_num_shortest(char* buf, size_t n, double v);
+void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
 int ura_cmd_design(uraCtx* c, int argc, char** argv);   /* designs.c */
 /* the saved designs as commands, for save session (designs.c) */
@@ -370,8 +379,13 @@ int ura_plot_psweep(uraCtx* c, const char* name);
 void ura_sweep_param_clear(uraCtx* c);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);
 int ura_cmd_compare(uraCtx* c, int argc, char** argv);
+/* why compare's p_centre is 0, as a note of t (explain.c): the impact r at (0, 0) missed or no
+   criterion counts; where the grid g's P is largest (nothing when r->p > 0) */
+void ura_explain_centre(uraTable* t, const urImpactResult* r, const urGrid* g);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
-int ura_cmd_history(uraCtx* c, int argc, char** argv);
+int ura_cmd_history(uraCtx* c, int argc, char** argv);         /* cmd_history.c */
+/* every sensor channel's samples of the last impact from from to to (s from tau) */
+int ura_history_samples(uraCtx* c, double from, double to);
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
 int ura_impact_cond(uraCtx* c, urImpactCond* cond);   /* refuses angles below uraANGLE_DELTA */
 #define uraANGLE_DELTA 1.0         /* deg: the least descent angle of an offset Delta (grids) */
@@ -381,6 +395,11 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv);
 /* the table of impact rows (columns dpar,dperp,contact,hic15,...,p) and one row of it */
 uraTable* ura_impact_table(void);
 void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r);
+/* the impact row at a terminal (impact_compact.c): whether to print it, its table (columns
+   dpar,dperp,hic15,nij,vc_th,vc_ab,p_hic,p_nij,p_vc,p) and its row with a note */
+int ura_impact_compact(const uraCtx* c);
+uraTable* ura_impact_compact_table(void);
+void ura_impact_compact_row(uraTable* t, double dpar, double dperp, const urImpactResult* r);
 /* notes for a table computed under cond: where speed and angle came from when it was the paper's
    Table 2 (paper), and the moment tau when it is not the paper's text (shift: the tau shift, m) */
 void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,
@@ -429,5 +448,42 @@ size_t ura_printable(const char* s, char* buf, size_t n);
 FILE* ura_out_stream(int fd);
 int ura_out_errno(void);
 void ura_out_clear(void);
+
+/* the terminal (pager.c): f is a terminal (or the pager's buffer of one); a command typed at the
+   prompt writes to a terminal; its size; the width text wraps at (0: no wrapping: not at a
+   terminal, or format wide); gather a command's output and page it when taller than the screen */
+int ura_tty(FILE* f);
+int ura_at_terminal(const uraCtx* c);
+void ura_term_size(int* rows, int* cols);
+int ura_text_width(const uraCtx* c);
+int ura_pager_begin(uraCtx* c, const char* cmd);
+void ura_pager_end(uraCtx* c);
+/* the progress line on standard error (progress.c): a label before it (a sweep's value; NULL:
+   none), the start of the work, one line "LABEL WHAT DONE/TOTAL NOUN, ELAPSED, about T left" */
+void ura_progress_label(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+void ura_progress_start(void);
+void ura_progress_line(const char* what, long done, long total, const char* noun);
+/* "uasrisk VERSION (commit HASH[-dirty])" (version.c) */
+const char* ura_version(void);
+/* "did you mean" (suggest.c): the edit distance of two names; the nearest name offered for a
+   word, near enough for a typing slip; its text (" (did you mean 'NAME'?)" or ""); the names of
+   the command table, of the parameter tables, of a usage text's keywords */
+typedef struct {
+  const char* word;
+  char best[64];
+  int d;
+} uraSuggest;
+int ura_edit_distance(const char* a, const char* b);
+void ura_suggest_init(uraSuggest* s, const char* word);
+void ura_suggest_add(uraSuggest* s, const char* name);
+const char* ura_suggest_text(const uraSuggest* s, char* buf, size_t n);
+void ura_suggest_commands(uraSuggest* s);
+void ura_suggest_params(uraCtx* c, uraSuggest* s);
+void ura_suggest_keywords(uraSuggest* s, const char* usage);
+/* text after lead, wrapped between words at width (0: one line), later lines after cont */
+void ura_wrap(FILE* f, const char* lead, const char* cont, const char* text, int width);
+/* s split at its double spaces into at most max lines of width (the last takes the rest); the
+   number of lines */
+int ura_split_fields(const char* s, int width, char (*out)[256], int max);
 
 #endif

@@ -52,14 +52,19 @@ const uraCmd ura_cmds[] = {
    "deg; columns "
    "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
    "p_vc,p"},
-  {"history", ura_cmd_history, 0, 0, uraC_NONE, "history",
-   "print the time histories of the last impact (time and every sensor channel)"},
+  {"history", ura_cmd_history, 0, -1, uraC_NONE, "history [all|CHANNEL...] [FROM:TO]",
+   "the last impact at a glance: the peak of each derived signal and its time, the injury "
+   "criteria and P; all: every sensor channel's samples (time and every channel, as export "
+   "history writes them); CHANNEL...: those signals' samples; FROM:TO: only the samples from "
+   "FROM to TO ms after tau"},
   {"contacts", ura_cmd_contacts, 0, 0, uraC_NONE, "contacts",
    "list the drone's contacts with the person in the last impact, in order of first touch; "
    "columns drone,person,first,last,peak_force,peak_time (s from tau, N)"},
-  {"model", ura_cmd_model, 1, 2, uraC_NONE, "model show|params|parts|save FILE|load FILE|drop PART",
-   "print, list, write or load the model set (human, drone, airbags, options: uasrisk-model(5)), "
-   "or drop a part (before loading another drone)"},
+  {"model", ura_cmd_model, 1, 2, uraC_NONE,
+   "model show|params [PREFIX]|parts|save FILE|load FILE|drop PART",
+   "print, list (params: with units and who set them; PREFIX: the names starting with it), "
+   "write or load the model set (human, drone, airbags, options: uasrisk-model(5)), or drop a "
+   "part (before loading another drone)"},
   {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
@@ -101,17 +106,26 @@ int ura_cmd_help(uraCtx* c, int argc, char** argv) {
   if (argc == 2) {
     const uraCmd* k = ura_cmd_find(argv[1]);
     if (!k) {
-      return ura_fail(c, "help: no command '%s'; type 'help' for the list", argv[1]);
+      uraSuggest sg;
+      char dym[120];
+      ura_suggest_init(&sg, argv[1]);
+      ura_suggest_commands(&sg);
+      return ura_fail(c, "help: no command '%s'%s; type 'help' for the list", argv[1],
+                      ura_suggest_text(&sg, dym, sizeof dym));
     }
-    fprintf(c->out, "usage: %s\n  %s\n", k->usage, k->help);
+    fprintf(c->out, "usage: %s\n", k->usage);
+    ura_wrap(c->out, "  ", "  ", k->help, ura_text_width(c));
     return 0;
   }
 
   /* the whole table */
   fprintf(c->out, "commands (help COMMAND for one; set/show NAME for parameters):\n");
+  int width = ura_text_width(c);
   for (const uraCmd* k = ura_cmds; k->name; k++) {
-    if (strlen(k->usage) > 26) fprintf(c->out, "  %s\n  %-26s %s\n", k->usage, "", k->help);
-    else fprintf(c->out, "  %-26s %s\n", k->usage, k->help);
+    char lead[300];
+    if (strlen(k->usage) > 26) ura_wrap(c->out, "  ", "    ", k->usage, width);
+    snprintf(lead, sizeof lead, "  %-26s ", strlen(k->usage) > 26 ? "" : k->usage);
+    ura_wrap(c->out, lead, "                             ", k->help, width);
   }
   return 0;
 }
@@ -134,7 +148,12 @@ static int set_one(uraCtx* c, int argc, char** argv) {
     if (ura_model_param_find(c, argv[1]) >= 0) {
       return ura_model_param_set(c, argv[1], argv[2], argc == 4 ? argv[3] : NULL, 1);
     }
-    return ura_fail(c, "set: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
+    uraSuggest sg;
+    char dym[120];
+    ura_suggest_init(&sg, argv[1]);
+    ura_suggest_params(c, &sg);
+    return ura_fail(c, "set: unknown parameter '%s'%s; 'show' lists the parameters", argv[1],
+                    ura_suggest_text(&sg, dym, sizeof dym));
   }
   /* a unit is accepted when it is the parameter's own (set wind 3 m/s) */
   if (argc == 4 && !(p && *p->unit && !strcmp(argv[3], p->unit))) {
@@ -201,17 +220,51 @@ static void show_injury(uraCtx* c, int i) {
   fprintf(c->out, "%-16s %s\n", name, val);
 }
 
+/* one model parameter: name, SI value, its unit */
+static void show_model_param(uraCtx* c, const urParam* p) {
+  fprintf(c->out, "%-16s %.10g%s%s\n", p->name, p->value, *p->unit ? " " : "", p->unit);
+}
+
+/* show PREFIX: every parameter whose name starts with it, in the order of the full listing */
+static int show_prefix(uraCtx* c, const char* prefix) {
+  size_t n = strlen(prefix);
+  int found = 0;
+  const char* name;
+  for (const uraParam* p = ura_params; p->name; p++) {
+    if (!strncmp(p->name, prefix, n) && p->kind != uraP_CASE) {
+      if (show_one(c, p, NULL)) return -1;
+      found++;
+    }
+  }
+  for (int i = 0; ur_injury_param_info(i, &name, NULL, NULL) == 0; i++) {
+    if (!strncmp(name, prefix, n)) show_injury(c, i), found++;
+  }
+  const urModel* m = ura_model(c);
+  for (int i = 0; m && i < m->nparam; i++) {
+    if (!strncmp(m->param[i].name, prefix, n)) show_model_param(c, &m->param[i]), found++;
+  }
+  return found;
+}
+
 int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   if (argc == 2) {
     const uraParam* p = ura_param_find(argv[1]);
     int i = p ? -1 : ura_injury_find(argv[1]);
     int k = p || i >= 0 ? -1 : ura_model_param_find(c, argv[1]);
     if (k >= 0) {
-      fprintf(c->out, "%-16s %.10g (SI)\n", argv[1], c->model->param[k].value);
+      show_model_param(c, &c->model->param[k]);
       return 0;
     }
     if (!p && i < 0) {
-      return ura_fail(c, "show: unknown parameter '%s'; 'show' lists the parameters", argv[1]);
+      int found = show_prefix(c, argv[1]);
+      if (found) return found < 0 ? -1 : 0;
+      uraSuggest sg;
+      char dym[120];
+      ura_suggest_init(&sg, argv[1]);
+      ura_suggest_params(c, &sg);
+      return ura_fail(c, "show: unknown parameter '%s'%s; 'show' lists the parameters, 'show "
+                      "PREFIX' those whose names start with PREFIX", argv[1],
+                      ura_suggest_text(&sg, dym, sizeof dym));
     }
     if (p) return show_one(c, p, NULL);
     show_injury(c, i);
@@ -226,9 +279,7 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   fprintf(c->out, "# model parameters, SI units (uasrisk-model(5); 'model params' says who set "
           "them)\n");
   const urModel* m = ura_model(c);
-  for (int i = 0; m && i < m->nparam; i++) {
-    fprintf(c->out, "%-16s %.10g\n", m->param[i].name, m->param[i].value);
-  }
+  for (int i = 0; m && i < m->nparam; i++) show_model_param(c, &m->param[i]);
   ura_dist_show(c);
   return 0;
 }

@@ -84,7 +84,7 @@ static void cb_stream(void* ctx, int worker, urCellTakeFn take, urCellPutFn put,
 static void cb_progress(void* ctx, int done, int total) {
   gridRun* g = ctx;
   if (g->tty && (done == total || done % 8 == 0)) {
-    fprintf(stderr, "\rgrid: %d/%d impacts", done, total);
+    ura_progress_line("grid:", done, total, "impacts");
     if (done == total) fputs("\r\033[K", stderr);
   }
 }
@@ -259,6 +259,7 @@ int ura_grid_run(uraCtx* c, int quiet) {
   gridRun run = {s, cond, &c->st.injury, w, !quiet && isatty(STDERR_FILENO)};
   spec.ctx = &run;
   spec.impact_stream = cb_stream;
+  if (run.tty) ura_progress_start();
   int rc = ur_grid_run(g, &spec);
   for (int i = 0; i < nw; i++) ur_impact_lanes_free(w[i]);
   free(w);

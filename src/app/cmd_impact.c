@@ -117,7 +117,8 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);
 
   /* one row */
-  uraTable* t = ura_impact_table();
+  int compact = ura_impact_compact(c);
+  uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table();
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
                  "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
                  1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
@@ -127,7 +128,8 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
                  ur_impact_tau_shift(s, &cond));
-  ura_impact_cells(t, dpar, dperp, &r);
+  if (compact) ura_impact_compact_row(t, dpar, dperp, &r);
+  else ura_impact_cells(t, dpar, dperp, &r);
   ura_table_print(c, t);
   return 0;
 }
@@ -150,8 +152,8 @@ static void channel_name(const urModel* m, int j, char* buf, size_t n) {
   }
 }
 
-/* every sensor channel of the last impact, one row per sample */
-int ura_cmd_history(uraCtx* c, int argc, char** argv) {
+/* every sensor channel of the last impact, one row per sample from from to to (s) */
+int ura_history_samples(uraCtx* c, double from, double to) {
   if (!c->have_impact) return ura_fail(c, "history: no impact yet; run 'impact DPAR DPERP'");
   const urModel* m = c->setup.m;
   const urData* d = c->work.d;
@@ -170,6 +172,8 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
                  "(uasrisk-model(5))", c->last_aim ? "aimed at the head, up and side" : "at",
                  c->last_dpar, c->last_dperp);
   for (int r = 0; r < d->nhist; r++) {
+    double tr = d->hist[(size_t)r * ncol];
+    if (tr < from || tr > to) continue;
     for (int k = 0; k < ncol; k++) ura_table_cell(t, "%.9g", d->hist[(size_t)r * ncol + k]);
   }
   ura_table_print(c, t);

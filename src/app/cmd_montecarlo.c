@@ -193,7 +193,9 @@ static double surface_at(const struct uraMc* m, const surface* s, int mask, int 
 }
 
 static void progress(int tty, const char* what, long k, long n) {
-  if (tty) fprintf(stderr, "\rmontecarlo: %s %ld/%ld", what, k, n);
+  char w[80];
+  snprintf(w, sizeof w, "montecarlo: %s", what);
+  if (tty) ura_progress_line(w, k, n, "");
 }
 
 /* Q of every sample from the surface; a few samples again by their own grids */
@@ -400,6 +402,7 @@ int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv) {
 
   /* Q of each sample, then the Annex F areas at each sample's impact conditions */
   int tty = isatty(STDERR_FILENO);
+  ura_progress_start();
   if (rc == 0) {
     rc = st->risk.mc_method == uraMC_EXACT ? by_grids(c, m, st, tmp, ns, tty) :
                                              by_surface(c, m, st, tmp, ns, tty);

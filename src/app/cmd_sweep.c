@@ -198,7 +198,10 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   for (int i = 0; i < n && rc == 0; i++) {
     if (is_wind) c->st.descent.wind = v[i];
     else c->st.face = v[i];
+    ura_progress_label("sweep %s %g %s (%d of %d): ", argv[1], v[i], is_wind ? "m/s" : "deg",
+                       i + 1, n);
     rc = ura_grid_run(c, 0);
+    ura_progress_label(NULL);
     if (rc && ura_interrupted()) {
       char why[uraERRLEN];
       snprintf(why, sizeof why, "%s", c->err);
@@ -293,6 +296,7 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, c->last.paper_speed, c->last.tau,
                  c->last.tau_shift);
+  ura_explain_centre(t, &r, c->last.g);
   ura_table_cell(t, "%s", c->st.casename);
   ura_table_cell(t, "%g", c->st.descent.wind);
   ura_table_cell(t, "%.4f", r.p);

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "app.h"
 #include "colors.h"
 
 /* styles per scheme and role: fg, bg, attributes, glyph (htop's CRT_colors) */
@@ -140,8 +141,7 @@ int ura_no_color(void) {
 
 uraScheme ura_scheme_for_stream(FILE* f) {
   /* colour only for a terminal, and only when NO_COLOR is unset */
-  int fd = f ? fileno(f) : -1;
-  if (fd < 0 || !isatty(fd) || ura_no_color()) return uraSCHEME_PLAIN;
+  if (!ura_tty(f) || ura_no_color()) return uraSCHEME_PLAIN;
   const char* term = getenv("TERM");
   const char* ct = getenv("COLORTERM");
   if (term && !strcmp(term, "dumb")) return uraSCHEME_PLAIN;

@@ -87,8 +87,8 @@ int ura_grid_show(uraCtx* c) {
   ura_grid_conditions(c, buf, sizeof buf);
   int diff = c->last.diff;
   fprintf(f, "%s in %%: %s\n", diff ? "P_b - P_a" : "P{F|Delta}", buf);
-  fprintf(f, "rows: along offset dpar (m); columns: cross offset dperp (m)%s\n",
-          half ? ", dperp >= 0 shown (mirror-symmetric)" : "");
+  fprintf(f, "rows: dpar m (+ ahead); columns: dperp m (+ left of course); the paper's layout\n"
+          "%s", half ? "dperp >= 0 shown (mirror-symmetric)\n" : "");
   span(f, s, uraROLE_AXIS, " dpar ");
   for (int j = j0; j < g->ncol; j++) {
     double x = g->perp_min + j * g->step;

@@ -1,4 +1,4 @@
-/* main.c: command line: uasrisk [-i] [-c COMMANDS] [FILE]... */
+/* main.c: command line: uasrisk [-i] [-c COMMANDS] [FILE]... (-h, -V) */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -14,7 +14,8 @@ static void usage(FILE* f) {
           "  FILE         replay a session script\n"
           "  -c COMMANDS  run commands (separated by ';')\n"
           "  -i           stay interactive after the scripts and commands\n"
-          "  -h, --help   this text; see uasrisk(1)\n");
+          "  -h, --help   this text; see uasrisk(1)\n"
+          "  -V, --version  the version and the commit it was built from\n");
 }
 
 /* the exit status, after what is still buffered for standard output was written: a failed
@@ -53,6 +54,9 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
       usage(stdout);
+      return done(0);
+    } else if (!strcmp(argv[i], "-V") || !strcmp(argv[i], "--version")) {
+      fprintf(stdout, "%s\n", ura_version());
       return done(0);
     } else if (!strcmp(argv[i], "-i")) {
       stay = 1;

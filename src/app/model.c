@@ -299,9 +299,17 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
     return ura_fail(c, "set %s: '%s' is not a number; accepted: a number, optionally with a "
                     "unit (uasrisk-model(5))", name, value);
   }
-  if (unit && ur_unit_si(unit, &f)) {
+  char si[urNAMELEN];
+  if (unit && ur_unit_parse(unit, &f, si, sizeof si)) {
     return ura_fail(c, "set %s: unknown unit '%s'; accepted: the units of uasrisk-model(5) "
-                    "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L)", name, unit);
+                    "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L), or several "
+                    "joined by * and / (N*m/rad)", name, unit);
+  }
+  int k = unit ? ura_model_param_find(c, name) : -1;
+  const char* want = k >= 0 ? c->model->param[k].unit : "";
+  if (unit && *want && strcmp(si, want)) {
+    return ura_fail(c, "set %s: the unit '%s' is in %s, not %s; accepted: a unit of %s (as in "
+                    "its param line)", name, unit, *si ? si : "no unit", want, want);
   }
   v *= f;
 
@@ -469,16 +477,26 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
   }
 }
 
-/* parameters of the model: name, SI value, and who set it */
-static int model_params(uraCtx* c) {
+/* parameters of the model (those whose names start with prefix): name, SI value, unit, and who
+   set it */
+static int model_params(uraCtx* c, const char* prefix) {
   const urModel* m = ura_model(c);
   if (!m) return -1;
+  int found = 0;
   for (int i = 0; i < m->nparam; i++) {
+    if (strncmp(m->param[i].name, prefix, strlen(prefix))) continue;
+    found++;
     const char* who = "model";
     for (int k = 0; k < c->st.nov; k++) {
       if (!strcmp(c->st.ov_name[k], m->param[i].name)) who = c->st.ov_user[k] ? "set" : "case";
     }
-    fprintf(c->out, "%-16s %.10g  (SI; %s)\n", m->param[i].name, m->param[i].value, who);
+    const char* u = m->param[i].unit;
+    fprintf(c->out, "%-16s %.10g%s%s  (%s)\n", m->param[i].name, m->param[i].value, *u ? " " : "",
+            u, who);
+  }
+  if (!found) {
+    return ura_fail(c, "model params: no model parameter starts with '%s'; accepted: a prefix of "
+                    "the names 'model params' lists", prefix);
   }
   return 0;
 }
@@ -488,7 +506,7 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
     write_parts(c, c->out, 1);
     return 0;
   }
-  if (argc == 2 && !strcmp(argv[1], "params")) return model_params(c);
+  if (argc <= 3 && !strcmp(argv[1], "params")) return model_params(c, argc == 3 ? argv[2] : "");
   if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "drop")) return model_drop(c, argv[2]);
@@ -498,5 +516,6 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
     }
     return 0;
   }
-  return ura_fail(c, "model: usage: model show|params|parts|save FILE|load FILE|drop PART");
+  return ura_fail(c, "model: usage: model show|params [PREFIX]|parts|save FILE|load FILE|drop "
+                  "PART");
 }

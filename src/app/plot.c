@@ -638,8 +638,9 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   quote(f, title);
   fprintf(f, " noenhanced\n");
   fprintf(f, "set xtics %g\n", width > 1.2 ? 0.4 : 0.2);
-  fprintf(f, "set xlabel \"cross offset dperp (m)\" noenhanced\n");
-  fprintf(f, "set ylabel \"along offset dpar (m)\" noenhanced\n");
+  fprintf(f, "set xlabel \"cross offset dperp (m), + left of the course (the paper's layout)\" "
+          "noenhanced\n");
+  fprintf(f, "set ylabel \"along offset dpar (m), + ahead\" noenhanced\n");
   fprintf(f, "set cblabel \"P{F|Delta} (%%)\" noenhanced\n");
   fprintf(f, "set size ratio -1\nset xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n",
           g->perp_min - h, g->perp_min + (g->ncol - 1) * g->step + h,
@@ -684,21 +685,20 @@ static int write_pof(uraCtx* c, FILE* f, const void* arg) {
     fprintf(f, "EOD\n");
   }
 
-  /* four panels: HIC, Nij, the AIS curves of Nij, VC; keys in the empty top left */
+  /* four panels on a canvas sized for them (ura_plot_pof): HIC, Nij, the AIS curves of Nij,
+     VC; keys outside the data, right of their panel */
   fprintf(f, "set grid\nset yrange [0:100]\nset ylabel \"P (%%)\"\n"
-          "set key top left Left reverse samplen 2 noenhanced\n");
+          "set key outside right top vertical Left reverse samplen 2 noenhanced\n");
   fprintf(f, "set multiplot layout 2,2 title \"probability of fatality curves "
           "(uasrisk-injury(7))\" noenhanced\n");
   fprintf(f, "set title \"HIC15 -> P_HIC\" noenhanced\nset xlabel \"HIC15\"\n"
-          "set xtics 1000\nplot $HIC using 1:2 with lines lw 2 notitle\n"
-          "set key bottom right\n");
+          "set xtics 1000\nplot $HIC using 1:2 with lines lw 2 notitle\n");
   fprintf(f, "set title \"Nij -> P_NI (C.3)\" noenhanced\nset xlabel \"Nij\"\n"
           "set xtics autofreq\nplot $NIJ using 1:2 with lines lw 2 notitle\n");
   fprintf(f, "set title \"Nij -> P(AIS >= k)\" noenhanced\n"
           "plot for [k=2:5] $NIJ using 1:(column(k+1)) with lines lw 2 "
           "title sprintf(\"AIS%%d+\", k)\n");
   fprintf(f, "set title \"VC -> P_VC\" noenhanced\nset xlabel \"VC (m/s)\"\n"
-          "set key top left\n"
           "set xrange [0:%.9g]\n"
           "plot $VCT using 1:2 with lines lw 2 title \"thorax\", "
           "$VCA using 1:2 with lines lw 2 title \"abdomen\", "
@@ -713,7 +713,11 @@ int ura_plot_pof(uraCtx* c, const urInjuryParams* p) {
     ur_injury_defaults(&def);
     p = &def;
   }
-  return run_script(c, "plot pof", write_pof, p);
+  canvas_w = 1280;
+  canvas_h = 860;
+  int rc = run_script(c, "plot pof", write_pof, p);
+  canvas_w = canvas_h = 0;
+  return rc;
 }
 
 /* ---- time histories ---- */
@@ -846,6 +850,25 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
   return 0;
 }
 
+/* a channel that stays at rounding noise: its largest |value| below 1e-9 (SI units), or below
+   1e-9 of the largest of the channels of its sensor (the names before the last '_') */
+static int noise(const uraTrace* tr, int k) {
+  double peak = 0, ref = 0;
+  const char* us = strrchr(tr->names[k], '_');
+  size_t stem = us ? (size_t)(us - tr->names[k]) : strlen(tr->names[k]);
+  for (int j = 0; j < tr->nsig; j++) {
+    const char* uj = strrchr(tr->names[j], '_');
+    size_t sj = uj ? (size_t)(uj - tr->names[j]) : strlen(tr->names[j]);
+    if (sj != stem || strncmp(tr->names[j], tr->names[k], stem)) continue;
+    for (int i = 0; i < tr->n; i++) {
+      double a = fabs(tr->v[(size_t)j * tr->n + i]);
+      if (j == k && a > peak) peak = a;
+      if (a > ref) ref = a;
+    }
+  }
+  return peak < 1e-9 || peak < 1e-9 * ref;
+}
+
 int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names,
                        double t1, double t2) {
   const char* who = "plot history";
@@ -868,20 +891,33 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
   }
   if (every || n == 0) {
     for (int k = 0; k < tr->nsig && nsel == 0; k++) sel[n++] = k;
-    for (int k = 0; k < tr->nsig && every; k++) sel[n++] = k;
+    int left = 0;
+    for (int k = 0; k < tr->nsig && every; k++) {
+      if (noise(tr, k)) left++;
+      else sel[n++] = k;
+    }
+    if (left && c->interactive) {
+      fprintf(c->msg, "%s all: %d channel%s that stay at noise level (|value| < 1e-9) left out\n",
+              who, left, left == 1 ? "" : "s");
+    }
   }
   for (int s = 0; s < nsel && !every; s++) {
     int k;
     for (k = 0; k < tr->nsig && strcmp(tr->names[k], names[s]); k++) {}
     if (k == tr->nsig) {
-      char list[512];
+      char list[512], dym[120];
       size_t m = 0;
+      uraSuggest sg;
+      ura_suggest_init(&sg, names[s]);
       list[0] = 0;
       for (int j = 0; j < tr->nsig && m < sizeof list; j++) {
-        m += (size_t)snprintf(list + m, sizeof list - m, "%s%s", j ? ", " : "", tr->names[j]);
+        if (ura_trace_find(tr, tr->names[j]) != j) continue;   /* each name once */
+        ura_suggest_add(&sg, tr->names[j]);
+        m += (size_t)snprintf(list + m, sizeof list - m, "%s%s", m ? ", " : "", tr->names[j]);
       }
       free(sel);
-      return ura_fail(c, "%s: no signal '%s'; signals: %s (or all)", who, names[s], list);
+      return ura_fail(c, "%s: no signal '%s'%s; signals: %s (or all)", who, names[s],
+                      ura_suggest_text(&sg, dym, sizeof dym), list);
     }
     sel[n++] = k;
   }
@@ -936,6 +972,10 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
   if (!strcmp(what, "montecarlo") || !strcmp(what, "tornado")) return ura_plot_mc(c, what);
   if (!strcmp(what, "pof")) return ura_plot_pof(c, &c->st.injury);
   if (!strcmp(what, "grid")) return ura_plot_grid(c);
-  return ura_fail(c, "plot: unknown plot '%s'; accepted: pof, grid, history SIGNAL..., sweep "
-                  "[wind|face], montecarlo, tornado", what);
+  uraSuggest sg;
+  char dym[120];
+  ura_suggest_init(&sg, what);
+  ura_suggest_keywords(&sg, ura_cmd_find("plot")->usage + strlen("plot "));
+  return ura_fail(c, "plot: unknown plot '%s'%s; accepted: pof, grid, history SIGNAL..., sweep "
+                  "[wind|face], montecarlo, tornado", what, ura_suggest_text(&sg, dym, sizeof dym));
 }

@@ -161,6 +161,32 @@ static int on_signal(void) {
   return 0;
 }
 
+/* the prompt: the case, then the live model where it is not the case's: the parts loaded from
+   files by name, "modified" when built-in parts were dropped or model parameters set
+   (uasrisk[A|bag2]>, uasrisk[A|modified]>) */
+static void prompt_text(uraCtx* c, char* buf, size_t n) {
+  size_t k = (size_t)snprintf(buf, n, "uasrisk[%s", c->st.casename);
+  for (int i = 0; i < c->npart && k < n; i++) {
+    if (strcmp(c->part[i].origin, "built-in")) {
+      k += (size_t)snprintf(buf + k, n - k, "%s%s", strchr(buf, '|') ? "," : "|",
+                            c->part[i].name);
+    }
+  }
+  int modified = 0;
+  for (int i = 0; i < c->st.nov; i++) modified |= c->st.ov_user[i];
+  char* drops = NULL;
+  size_t nd = 0;
+  FILE* f = open_memstream(&drops, &nd);
+  if (f) {
+    ura_model_write_parts(c, f);
+    fclose(f);
+    modified |= drops && strstr(drops, "model drop") != NULL;
+    free(drops);
+  }
+  if (modified && k < n) k += (size_t)snprintf(buf + k, n - k, "|modified");
+  if (k < n) snprintf(buf + k, n - k, "]> ");
+}
+
 int ura_repl(uraCtx* c) {
   char* hist = history_path();
   rl_readline_name = "uasrisk";
@@ -176,8 +202,8 @@ int ura_repl(uraCtx* c) {
 
   /* read, run, report; errors never end the session */
   while (!c->quit) {
-    char prompt[64];
-    snprintf(prompt, sizeof prompt, "uasrisk[%s]> ", c->st.casename);
+    char prompt[200];
+    prompt_text(c, prompt, sizeof prompt);
     ura_interrupt_clear();
     char* line = readline(prompt);
     if (!line) {

@@ -54,8 +54,13 @@ static int run_words(uraCtx* c, int argc, char** argv) {
   char name[128];
   const uraCmd* cmd = ura_cmd_find(argv[0]);
   if (!cmd) {
+    uraSuggest sg;
+    char dym[120];
     printable(argv[0], name, sizeof name);
-    return ura_fail(c, "unknown command '%s'; type 'help' for the list of commands", name);
+    ura_suggest_init(&sg, argv[0]);
+    ura_suggest_commands(&sg);
+    return ura_fail(c, "unknown command '%s'%s; type 'help' for the list of commands", name,
+                    ura_suggest_text(&sg, dym, sizeof dym));
   }
   int nargs = argc - 1;
   if (nargs < cmd->minargs || (cmd->maxargs >= 0 && nargs > cmd->maxargs)) {
@@ -63,7 +68,9 @@ static int run_words(uraCtx* c, int argc, char** argv) {
                     cmd->usage);
   }
   if (c->guard && c->guard(c, argc, argv)) return -1;
+  int paged = ura_pager_begin(c, cmd->name);
   int rc = cmd->fn(c, argc, argv);
+  if (paged) ura_pager_end(c);
 
   /* what the command printed reached its destination, or the command failed (a full disk, a
      closed pipe): the error is not lost when the buffer is written later */

@@ -1,5 +1,6 @@
 /* session.c: save session FILE (a script that recreates the live state exactly) and export */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,18 +19,27 @@ void ura_put_word(FILE* f, const char* s) {
   fprintf(f, "%c%s%c", q, s, q);
 }
 
-/* write the state as commands: defaults, loaded model parts, case, then every setting; every
-   text is one quoted word that the reader takes back as it is (the terminal and output were
-   checked when set: nothing in them is run) */
+/* write the state as commands: defaults, loaded model parts, case, then every setting that
+   differs from what those give (session_base.c; never threads or the plot output, which belong
+   to the machine and the last plot); every text is one quoted word that the reader takes back as
+   it is (the terminal was checked when set: nothing in it is run) */
 void ura_session_write(uraCtx* c, FILE* f) {
-  char val[2048];
+  char val[2048], was[2048];
+  uraState base;
+  ura_session_base(c, &base);
+  uraCtx bc = *c;
+  bc.st = base;
   fprintf(f, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n");
   fprintf(f, "reset\n");
   ura_model_write_parts(c, f);
   fprintf(f, "case %s\n", c->st.casename);
   for (const uraParam* p = ura_params; p->name; p++) {
-    if (p->kind == uraP_CASE) continue;
+    if (p->kind == uraP_CASE || !strcmp(p->name, "threads") || !strcmp(p->name, "output")) {
+      continue;
+    }
     ura_param_format(c, p, val, sizeof val);
+    ura_param_format(&bc, p, was, sizeof was);
+    if (!strcmp(val, was)) continue;
     fprintf(f, "set %s ", p->name);
     if (p->kind == uraP_STR) ura_put_word(f, val);
     else fputs(val, f);
@@ -39,10 +49,18 @@ void ura_session_write(uraCtx* c, FILE* f) {
     const char* name;
     ur_injury_param_info(i, &name, NULL, NULL);
     ura_injury_line(c, i, val, sizeof val, 0);
-    fprintf(f, "set %s %s\n", name, val);
+    ura_injury_line(&bc, i, was, sizeof was, 0);
+    if (strcmp(val, was)) fprintf(f, "set %s %s\n", name, val);
   }
   for (int i = 0; i < c->st.nov; i++) {
-    if (c->st.ov_user[i]) fprintf(f, "set %s %.17g\n", c->st.ov_name[i], c->st.ov_val[i]);
+    if (!c->st.ov_user[i]) continue;
+    int same = 0;
+    for (int k = 0; k < base.nov; k++) {
+      same |= !strcmp(base.ov_name[k], c->st.ov_name[i]) && base.ov_val[k] == c->st.ov_val[i];
+    }
+    if (same) continue;
+    ura_model_value_text(c, c->st.ov_name[i], c->st.ov_val[i], val, sizeof val);
+    fprintf(f, "set %s %s\n", c->st.ov_name[i], val);
   }
   ura_dist_save(c, f);
 }
@@ -84,7 +102,7 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   char* av[2] = {argv[1], grid ? "cells" : mc ? "samples" : "show"};
   int rc = grid ? ura_cmd_grid(c, 2, av) : sweep ? ura_cmd_sweep(c, 2, av) :
            mc ? ura_cmd_montecarlo(c, 2, av) :
-           cont ? ura_cmd_contacts(c, 1, av) : ura_cmd_history(c, 1, av);
+           cont ? ura_cmd_contacts(c, 1, av) : ura_history_samples(c, -INFINITY, INFINITY);
   c->out = out;
   c->st.format = fmt;
   return ura_atomic_close(c, &a, rc == 0, "export");

@@ -11,7 +11,7 @@
 
 #define OFF(f) offsetof(uraState, f)
 
-static const char* const format_names[] = {"table", "csv", NULL};
+static const char* const format_names[] = {"table", "csv", "wide", NULL};
 static const char* const onoff_names[] = {"off", "on", NULL};
 static const char* const descent_names[] = {"model", "paper", NULL};
 static const char* const tau_names[] = {"rmax", "top", NULL};
@@ -114,7 +114,12 @@ const uraParam ura_params[] = {
   {"annexf_obstacles", uraP_ENUM, OFF(risk.annexf_obstacles), 0, "", 0, 0,
    "Annex F critical area with the obstacle factor 0.6 (for 1 < width < 40 m)", onoff_names},
   {"format", uraP_ENUM, OFF(format), 0, "", 0, 0,
-   "output of tabular commands: aligned table or CSV with one header line", format_names},
+   "output of tabular commands: aligned table (at a terminal rows fit 80 columns: impact "
+   "prints its main columns, notes wrap), CSV with one header line, or wide (an aligned table "
+   "with every column, also at a terminal)", format_names},
+  {"pager", uraP_ENUM, OFF(pager), 0, "", 0, 0,
+   "on: at a terminal, output taller than the screen goes through $PAGER (less -FRSX when "
+   "unset); never in scripts, -c or pipes", onoff_names},
   {"terminal", uraP_STR, OFF(terminal), 0, "", 0, 64,
    "gnuplot terminal for plot (png, svg, pdfcairo, ...); 'default' for gnuplot's own", NULL,
    ura_terminal_check},
@@ -151,6 +156,7 @@ void ura_state_defaults(uraState* s) {
   s->format = uraFMT_TABLE;
   s->step = 0.05;
   s->recall = 1;
+  s->pager = 1;
   ura_risk_defaults(&s->risk);
   long n = sysconf(_SC_NPROCESSORS_ONLN);
   s->threads = n > 0 ? (double)n : 1;

@@ -56,8 +56,9 @@ void ura_table_print(uraCtx* c, uraTable* t) {
   FILE* f = c->out;
   int nrow = t->ncell / t->ncol;
 
-  /* notes first, as comment lines in both formats */
-  for (int i = 0; i < t->nnote; i++) fprintf(f, "# %s\n", t->notes[i]);
+  /* notes first, as comment lines in both formats (at a terminal wrapped between words) */
+  int width = ura_text_width(c);
+  for (int i = 0; i < t->nnote; i++) ura_wrap(f, "# ", "#   ", t->notes[i], width);
 
   if (c->st.format == uraFMT_CSV) {
     for (int j = 0; j < t->ncol; j++) fprintf(f, "%s%s", j ? "," : "", t->names[j]);

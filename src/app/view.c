@@ -26,8 +26,14 @@
 #define CELL_W 6                   /* one cell: a glyph or blank, then %5.1f */
 #define MIN_W 60                   /* smallest usable terminal */
 #define MIN_H 12
-#define HEAD_ROWS 3                /* title, axis caption, cross offset labels */
-#define FOOT_ROWS 3                /* legend, cursor values, keys */
+/* the rows above the grid (title, axis caption, cross offset labels) and below it (legend,
+   cursor values, keys): more when the title, the values or the keys need two lines to fit */
+static int head_rows = 3, foot_rows = 3;
+#define HEAD_ROWS head_rows
+#define FOOT_ROWS foot_rows
+#define STATUS_ONE_LINE 104        /* narrower: the cursor values take two lines */
+#define KEYS "arrows/hjkl move  PgUp/PgDn page  Home/End first/last row  0/$ first/last column" \
+  "  c centre  Enter inspect  p plot  q back"
 
 typedef struct {
   uraCtx* c;
@@ -125,7 +131,7 @@ static void put(WINDOW* w, int y, int x, chtype attr, const char* s) {
 
 static void draw_cursor_line(viewer* v, int y) {
   const urCell* cl = cell_at(v, v->row, v->col);
-  char hic[32], nij[32], vt[32], va[32], p[32], buf[512];
+  char hic[32], nij[32], vt[32], va[32], p[32], buf[1100], vc[512];
   static const char* const modes[] = {"NTF", "NTE", "NCF", "NCE"};
   fmt_num(hic, sizeof hic, "%.1f", cl->hic15);
   fmt_num(nij, sizeof nij, "%.3f", cl->nij);
@@ -134,12 +140,32 @@ static void draw_cursor_line(viewer* v, int y) {
   fmt_num(p, sizeof p, "%.1f %%", cl->p * 100.0);
   const char* st = cl->status == urCELL_DONE ? "" : cl->status == urCELL_NOCONTACT ?
                    "  no contact" : cl->status == urCELL_FAILED ? "  FAILED: " : "  pending";
-  snprintf(buf, sizeof buf, "dpar %.2f m  dperp %.2f m  P %s  HIC15 %s  Nij %s%s%s  "
-           "VC thorax %s abdomen %s m/s%s%s", cl->dpar, cl->dperp, p, hic, nij,
+  snprintf(buf, sizeof buf, "dpar %.2f m  dperp %.2f m  P %s  HIC15 %s  Nij %s%s%s", cl->dpar,
+           cl->dperp, p, hic, nij,
            isfinite(cl->nij) && cl->nij_mode >= 0 && cl->nij_mode < 4 ? " " : "",
-           isfinite(cl->nij) && cl->nij_mode >= 0 && cl->nij_mode < 4 ? modes[cl->nij_mode] : "",
-           vt, va, st, cl->status == urCELL_FAILED ? cl->reason : "");
-  put(stdscr, y, 0, v->role_attr[uraROLE_TITLE], buf);
+           isfinite(cl->nij) && cl->nij_mode >= 0 && cl->nij_mode < 4 ? modes[cl->nij_mode] : "");
+  snprintf(vc, sizeof vc, "VC thorax %s abdomen %s m/s%s%s", vt, va, st,
+           cl->status == urCELL_FAILED ? cl->reason : "");
+  /* one line when wide enough, else the VC values and the status on a second */
+  if (COLS >= STATUS_ONE_LINE) {
+    size_t k = strlen(buf);
+    snprintf(buf + k, sizeof buf - k, "  %s", vc);
+    put(stdscr, y, 0, v->role_attr[uraROLE_TITLE], buf);
+  } else {
+    put(stdscr, y, 0, v->role_attr[uraROLE_TITLE], buf);
+    put(stdscr, y + 1, 0, v->role_attr[uraROLE_TITLE], vc);
+  }
+}
+
+/* the rows the head and the foot take at this width */
+static void layout(viewer* v) {
+  char title[1200], cond[256], q[256], lines[4][256];
+  ura_grid_conditions(v->c, cond, sizeof cond);
+  ura_grid_qtext(v->g, q, sizeof q);
+  snprintf(title, sizeof title, "%s  %s  [%s]", cond, q, v->c->last.source);
+  head_rows = 2 + ura_split_fields(title, COLS, lines, 2);
+  foot_rows = 1 + (COLS >= STATUS_ONE_LINE ? 1 : 2) + (v->note[0] ? 1 :
+                                                       ura_split_fields(KEYS, COLS, lines, 3));
 }
 
 static void draw_legend(viewer* v, int y) {
@@ -167,22 +193,33 @@ static void draw_grid(viewer* v) {
   int nr = vis_rows(), nc = vis_cols();
   char buf[1200], cond[256], q[256];
 
-  /* title: conditions, Q, source */
+  /* title: conditions, Q, source (two lines when one does not fit) */
+  char lines[4][256];
   ura_grid_conditions(v->c, cond, sizeof cond);
   ura_grid_qtext(v->g, q, sizeof q);
   snprintf(buf, sizeof buf, "%s  %s  [%s]", cond, q, v->c->last.source);
-  put(stdscr, 0, 0, v->role_attr[uraROLE_TITLE], buf);
+  int nt = ura_split_fields(buf, COLS, lines, 2);
+  for (int k = 0; k < nt; k++) put(stdscr, k, 0, v->role_attr[uraROLE_TITLE], lines[k]);
 
-  /* axis caption, cross offset labels; along offset labels at the left */
-  put(stdscr, 1, LABEL_W, A_NORMAL, v->c->last.diff ?
-      "P_b - P_a in % (blue: B safer, red: B riskier); columns: cross offset dperp (m), "
-      "rows: along offset dpar (m)" : "P{F|Delta} in %; columns: cross offset dperp (m), "
-      "rows: along offset dpar (m)");
-  put(stdscr, 2, 0, v->role_attr[uraROLE_AXIS], "  dpar");
+  /* axis caption with the orientation (the paper's layout: uasrisk(1), ORIENTATION), cross
+     offset labels; along offset labels at the left */
+  const char* what = v->c->last.diff ? "P_b - P_a in % (blue: B safer, red: B riskier)" :
+                     "P{F|Delta} in %";
+  snprintf(buf, sizeof buf, "%s; columns: dperp (m, + left of the course), rows: dpar (m, + "
+           "ahead); the paper's layout", what);
+  if ((int)strlen(buf) > COLS - LABEL_W) {
+    snprintf(buf, sizeof buf, "%s; cols dperp m (+ left of course), rows dpar m (+ ahead)", what);
+  }
+  if ((int)strlen(buf) > COLS - LABEL_W) {
+    snprintf(buf, sizeof buf, "%s; cols dperp m (+ left of course), rows dpar m (+ ahead)",
+             v->c->last.diff ? "P_b - P_a %" : "P %");
+  }
+  put(stdscr, HEAD_ROWS - 2, (int)strlen(buf) > COLS - LABEL_W ? 0 : LABEL_W, A_NORMAL, buf);
+  put(stdscr, HEAD_ROWS - 1, 0, v->role_attr[uraROLE_AXIS], "  dpar");
   for (int j = v->left; j < v->g->ncol && j < v->left + nc; j++) {
     double x = v->g->perp_min + j * v->g->step;
     snprintf(buf, sizeof buf, "%*.2f", CELL_W, fabs(x) < 5e-13 ? 0.0 : x);
-    put(stdscr, 2, LABEL_W + (j - v->left) * CELL_W, v->role_attr[uraROLE_AXIS], buf);
+    put(stdscr, HEAD_ROWS - 1, LABEL_W + (j - v->left) * CELL_W, v->role_attr[uraROLE_AXIS], buf);
   }
   for (int i = v->top; i < v->g->nrow && i < v->top + nr; i++) {
     int y = HEAD_ROWS + i - v->top;
@@ -209,17 +246,19 @@ static void draw_grid(viewer* v) {
   /* scroll marks when part of the grid is off screen */
   if (v->top > 0) put(stdscr, HEAD_ROWS, LABEL_W - 1, A_BOLD, "^");
   if (v->top + nr < v->g->nrow) put(stdscr, HEAD_ROWS + nr - 1, LABEL_W - 1, A_BOLD, "v");
-  if (v->left > 0) put(stdscr, 2, LABEL_W - 1, A_BOLD, "<");
-  if (v->left + nc < v->g->ncol) put(stdscr, 2, LABEL_W + nc * CELL_W, A_BOLD, ">");
+  if (v->left > 0) put(stdscr, HEAD_ROWS - 1, LABEL_W - 1, A_BOLD, "<");
+  if (v->left + nc < v->g->ncol) put(stdscr, HEAD_ROWS - 1, LABEL_W + nc * CELL_W, A_BOLD, ">");
 
   /* legend, the cell under the cursor, keys or the last message */
-  draw_legend(v, LINES - 3);
-  draw_cursor_line(v, LINES - 2);
+  int y = LINES - FOOT_ROWS;
+  draw_legend(v, y);
+  draw_cursor_line(v, y + 1);
+  y += COLS >= STATUS_ONE_LINE ? 2 : 3;
   if (v->note[0]) {
-    put(stdscr, LINES - 1, 0, A_BOLD, v->note);
+    put(stdscr, y, 0, A_BOLD, v->note);
   } else {
-    put(stdscr, LINES - 1, 0, A_DIM, "arrows/hjkl move  PgUp/PgDn page  Home/End first/last row"
-        "  0/$ first/last column  c centre  Enter inspect  p plot  q back");
+    int nk = ura_split_fields(KEYS, COLS, lines, 3);
+    for (int k = 0; k < nk; k++) put(stdscr, y + k, 0, A_DIM, lines[k]);
   }
 }
 
@@ -344,6 +383,7 @@ static void draw(viewer* v) {
     refresh();
     return;
   }
+  layout(v);
   clamp(v);
   draw_grid(v);
   if (v->panel) draw_panel(v);

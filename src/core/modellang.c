@@ -50,25 +50,49 @@ _Static_assert(sizeof limit / sizeof limit[0] == sizeof symkind / sizeof symkind
                sizeof symkinds / sizeof symkinds[0] == sizeof symkind / sizeof symkind[0],
                "a kind of name without its limit or plural");
 
-/* units: name and factor to SI */
+/* units: name, factor to SI, and the SI unit it is in */
 static const struct {
   const char* name;
   double f;
+  const char* si;
 } units[] = {
-  {"m", 1}, {"mm", 1e-3}, {"cm", 1e-2}, {"kg", 1}, {"g", 1e-3}, {"s", 1}, {"ms", 1e-3},
-  {"N", 1}, {"kN", 1e3}, {"Pa", 1}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9},
-  {"atm", 101325}, {"bar", 1e5}, {"deg", M_PI/180}, {"rad", 1}, {"J", 1}, {"L", 1e-3},
-  {"none", 1}
+  {"m", 1, "m"}, {"mm", 1e-3, "m"}, {"cm", 1e-2, "m"}, {"kg", 1, "kg"}, {"g", 1e-3, "kg"},
+  {"s", 1, "s"}, {"ms", 1e-3, "s"}, {"N", 1, "N"}, {"kN", 1e3, "N"}, {"Pa", 1, "Pa"},
+  {"kPa", 1e3, "Pa"}, {"MPa", 1e6, "Pa"}, {"GPa", 1e9, "Pa"}, {"atm", 101325, "Pa"},
+  {"bar", 1e5, "Pa"}, {"deg", M_PI/180, "rad"}, {"rad", 1, "rad"}, {"J", 1, "J"},
+  {"L", 1e-3, "m^3"}, {"none", 1, ""}
 };
 
-int ur_unit_si(const char* unit, double* factor) {
-  for (size_t i = 0; unit && i < sizeof units / sizeof units[0]; i++) {
-    if (!strcmp(units[i].name, unit)) {
-      *factor = units[i].f;
-      return 0;
+/* a unit: units of the table joined by '*' and '/' (N*m/rad, kN/m); the factor to SI and the
+   SI unit (si may be NULL) */
+int ur_unit_parse(const char* unit, double* factor, char* si, size_t n) {
+  double f = 1;
+  size_t k = 0;
+  char op = '*';
+  if (!unit || !*unit) return -1;
+  if (si && n) si[0] = 0;
+  for (const char* s = unit;;) {
+    size_t len = strcspn(s, "*/");
+    size_t i = 0, nu = sizeof units / sizeof units[0];
+    while (i < nu && !(strlen(units[i].name) == len && !strncmp(units[i].name, s, len))) i++;
+    if (i == nu || (op != 0 && len == 0)) return -1;
+    if (!strcmp(units[i].name, "none") && strlen(unit) != 4) return -1;
+    f = op == '*' ? f * units[i].f : f / units[i].f;
+    if (si && *units[i].si) {
+      k += (size_t)snprintf(si + k, k < n ? n - k : 0, "%s%s", k ? (op == '*' ? "*" : "/") :
+                            op == '/' ? "1/" : "", units[i].si);
     }
+    if (!s[len]) break;
+    op = s[len];
+    s += len + 1;
   }
-  return -1;
+  if (si && k >= n) return -1;
+  *factor = f;
+  return 0;
+}
+
+int ur_unit_si(const char* unit, double* factor) {
+  return ur_unit_parse(unit, factor, NULL, 0);
 }
 
 /* kinds of values */
@@ -970,21 +994,19 @@ static int st_param(Parser* p, const urlStmt* st) {
   if (number(p, w[2], strlen(w[2]), ln[2], ctx, &v)) {
     return -1;
   }
+  char si[urNAMELEN] = "";
   if (w[3]) {
-    int u = 0, nu = (int)(sizeof(units)/sizeof(units[0]));
-    while (u < nu && strcmp(units[u].name, w[3])) {
-      u++;
-    }
-    if (u == nu) {
+    double f;
+    if (ur_unit_parse(w[3], &f, si, sizeof si)) {
       char list[200];
       size_t k = 0;
-      for (int i = 0; i < nu; i++) {
+      for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
         k += (size_t)snprintf(list + k, sizeof(list) - k, "%s%s", i ? ", " : "", units[i].name);
       }
-      return fail(p, ln[3], "param '%s': unknown unit '%s'; expected one of %s", w[1],
-                  quote(w[3], strlen(w[3])).s, list);
+      return fail(p, ln[3], "param '%s': unknown unit '%s'; expected one of %s, or several "
+                  "joined by * and / (N*m/rad)", w[1], quote(w[3], strlen(w[3])).s, list);
     }
-    v *= units[u].f;
+    v *= f;
     if (!isfinite(v)) {
       return fail(p, ln[3], "param '%s': value overflows after conversion to SI", w[1]);
     }
@@ -1003,9 +1025,11 @@ static int st_param(Parser* p, const urlStmt* st) {
     return -1;
   }
   p->pval[id] = v;
-  if (ur_model_set_param(p->m, w[1], v) < 0) {
+  int k = ur_model_set_param(p->m, w[1], v);
+  if (k < 0) {
     return fail(p, st->line, "param '%s': %s", w[1], p->m->err);
   }
+  snprintf(p->m->param[k].unit, sizeof p->m->param[k].unit, "%s", si);
   return 0;
 }
 
