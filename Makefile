@@ -2,7 +2,8 @@
 #   make          build ./uasrisk and build/libuasrisk.a
 #   make run      set up, build, start the workbench (replays sessions/demo.ses without a terminal)
 #   make check    set up, build, run every test
-#   make bench    benchmarks (not part of check); REPRODUCE=0 leaves out the timing of reproduce
+#   make bench    benchmarks (not part of check; tests/bench_scale.sh: 2 MPI ranks against 1);
+#                 REPRODUCE=0 leaves out the timing of reproduce
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
@@ -114,6 +115,7 @@ test: check
 REPRODUCE ?= 1
 bench: all mpi $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do $$b || exit 1; done
+	@sh tests/bench_scale.sh
 	@if [ "$(REPRODUCE)" != 0 ]; then t0=$$(date +%s); \
 	  echo "bench: timing make reproduce (many minutes; progress in $(BUILD)/reproduce.log)"; \
 	  sh scripts/reproduce.sh >$(BUILD)/reproduce.log 2>&1 || { cat $(BUILD)/reproduce.log; exit 1; }; \
