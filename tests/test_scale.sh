@@ -2,8 +2,8 @@
 # as 3 shards merged (uasrisk --shard I/N --part OUT; uasrisk merge), and under mpirun -n 2
 # (./uasrisk-mpi, make mpi), the outputs and the exported file must be the serial run's apart
 # from the wall-clock fields (the grid row's seconds, montecarlo's time note). The script has a
-# grid, its cells, an impact, a wind sweep, a model-parameter sweep, risk, a small montecarlo and
-# an export. Then every refusal of merge (status 2, one line) and of --shard, and Ctrl-C or
+# grid, its cells, an impact, a wind sweep, a model-parameter sweep, risk, sora, compare, a small
+# montecarlo on a response surface with its check grids, and an export. Then every refusal of merge (status 2, one line) and of --shard, and Ctrl-C or
 # SIGTERM on MPI rank 0 stopping every rank.
 . tests/lib.sh
 
@@ -34,15 +34,19 @@ sweep wind 0,4
 sweep neck_k_flex 120,200
 set p_chute 0.9
 risk
+sora
+compare
 set surface_nodes 2
+set surface_check 2
 dist wind discrete 0,4 0.5,0.5
+dist face uniform -180 180
 montecarlo 20
 export montecarlo mc.csv
 SES
 done
 
 cd "$TMP/serial" && "$U" t.ses >out 2>err; RC=$?
-check serial_runs cond '[ $RC -eq 0 ] && [ -s mc.csv ] && grep -q "^mixed," out'
+check serial_runs cond '[ $RC -eq 0 ] && [ -s mc.csv ] && grep -q "^mixed," out && grep -q "^# surface check: samples 0..1" out'
 mask out >masked
 
 # two shards, then three given out of order
