@@ -75,6 +75,13 @@ if command -v mpirun >/dev/null 2>&1 && [ -x "$MPI" ]; then
   check mpi2_equals_serial cond '[ $RC -eq 0 ] && cmp -s masked "$TMP/serial/masked"'
   check mpi2_export_equal cmp -s mc.csv "$TMP/serial/mc.csv"
 
+  # scripts only; a failing script fails every rank with the serial status and message
+  mpirun -n 2 "$MPI" -i t.ses </dev/null >o 2>e; RC=$?
+  check mpi_no_session cond '[ $RC -eq 2 ] && grep -q "runs scripts, not sessions" e'
+  printf 'set format csv\ncase A\nset step 0.2\ngrid\nnosuch\n' >f.ses
+  mpirun -n 2 "$MPI" f.ses >o 2>e; RC=$?
+  check mpi_failure cond '[ $RC -eq 1 ] && [ "$(grep -c "f.ses:5: unknown command" e)" -eq 1 ] && grep -q "^A,0," o'
+
   # Ctrl-C on rank 0 stops every rank: status 130; SIGTERM on rank 0 ends the run too
   printf 'set threads 1\nset step 0.02\ncase C\ngrid\ngrid\ngrid\n' >long.ses
   for sig in INT TERM; do
@@ -140,6 +147,15 @@ done
 check shard_needs_part cond '[ $rc -eq 2 ] && grep -q "go together" e'
 "$U" --shard 0/2 --part px -i t.ses >o 2>e </dev/null; rc=$?
 check shard_no_i cond '[ $rc -eq 2 ] && grep -q "not accepted" e && [ ! -e px ]'
+
+# Ctrl-C stops a shard with status 130 and no part (nor a temporary file of one)
+printf 'set threads 1\nset step 0.02\ncase C\ngrid\ngrid\n' >long.ses
+"$U" --shard 0/2 --part pl long.ses >o 2>e &
+sp=$!
+sleep 1
+kill -INT $sp
+wait $sp; rc=$?
+check shard_ctrl_c cond '[ $rc -eq 130 ] && [ ! -e pl ] && [ -z "$(ls | grep "^pl")" ] && grep -q "interrupted" e'
 
 # a shard whose script fails keeps the status, and its part says so
 printf 'set step 0.2\ncase A\ngrid\nnosuch\n' >fail.ses

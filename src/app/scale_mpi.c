@@ -6,7 +6,7 @@
  * is handed out, every rank sends rank 0 the cells it simulated, and rank 0 broadcasts the whole
  * grid, so that every rank goes on with the same state. Waiting polls with short sleeps instead
  * of spinning: ranks share cores with worker threads. Ctrl-C on rank 0 aborts every rank (status
- * 130); SIGTERM ends rank 0, and mpirun the others. */
+ * 130); SIGTERM ends rank 0, and mpirun the others. Scripts only (no -i, no standard input). */
 #include "scale.h"
 
 #ifndef URA_MPI
@@ -37,6 +37,7 @@ typedef struct {
   pthread_t server;
   int serving;
   long *mine, nmine, cap;          /* positions this rank simulated (this grid) */
+  int err_fd;                      /* ranks but 0: their standard error, kept for a lone failure */
 } mpiDist;
 
 static void pause_us(long us) {
@@ -229,9 +230,30 @@ static int p_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
   return rc;
 }
 
+/* the end of the run. Ranks replay the same script, so a failing command fails on every rank and
+   they all arrive here; a rank that fails alone (a file only its node lacks, a full disk on rank
+   0) would leave the others waiting in the next grid: a failed rank waits at most FINISH_WAIT s
+   for the others, then aborts them all with its status and message */
+#define FINISH_WAIT 5.0
 static int p_finish(uraScale* s, int rc) {
   mpiDist* d = s->impl;
   if (rc == 130 && d->size > 1) abort_all("interrupted (Ctrl-C)");
+  MPI_Request r;
+  int done = 0;
+  double t0 = MPI_Wtime();
+  MPI_Ibarrier(MPI_COMM_WORLD, &r);
+  while (!done) {
+    MPI_Test(&r, &done, MPI_STATUS_IGNORE);
+    if (done) break;
+    if (rc && MPI_Wtime() - t0 > FINISH_WAIT) {
+      if (d->err_fd >= 0) {
+        dprintf(d->err_fd, "uasrisk-mpi: rank %d failed alone: %s\n", d->rank, s->c->err);
+      }
+      fprintf(stderr, "uasrisk-mpi: rank %d failed alone; every rank stopped\n", d->rank);
+      MPI_Abort(MPI_COMM_WORLD, rc);
+    }
+    pause_us(1000);
+  }
   MPI_Finalize();
   free(d->mine);
   pthread_mutex_destroy(&d->lock);
@@ -262,8 +284,26 @@ uraScale* ura_mpi_new(uraCtx* c, int* argc, char*** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &d->rank);
   MPI_Comm_size(MPI_COMM_WORLD, &d->size);
   pthread_mutex_init(&d->lock, NULL);
+
+  /* scripts only: an interactive session would read its commands on rank 0 alone */
+  int work = 0;
+  for (int i = 1; i < *argc; i++) {
+    if (!strcmp((*argv)[i], "-i")) work = -1000;
+    work += strcmp((*argv)[i], "-c") ? ((*argv)[i][0] != '-') : 1;
+    if (!strcmp((*argv)[i], "-c")) i++;
+  }
+  if (work <= 0) {
+    if (d->rank == 0) {
+      fprintf(stderr, "uasrisk-mpi: runs scripts, not sessions; accepted: mpirun -n N "
+              "uasrisk-mpi [-c COMMANDS] [FILE]... (no -i)\n");
+    }
+    MPI_Finalize();
+    exit(2);
+  }
+  d->err_fd = -1;
   if (d->rank != 0) {                /* rank 0 speaks for all */
     ura_scale_mute(c);
+    d->err_fd = dup(STDERR_FILENO);
     int fd = open("/dev/null", O_WRONLY);
     if (fd >= 0) dup2(fd, STDERR_FILENO), close(fd);
   }
