@@ -82,9 +82,12 @@ static void* serve(void* arg) {
       pause_us(50);
       continue;
     }
-    long grid, chunk[2];
-    MPI_Recv(&grid, 1, MPI_LONG, st.MPI_SOURCE, TAG_REQ, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (grid != s->grid) abort_all("ranks out of step (do they run the same script?)");
+    long req[3], chunk[2];         /* grid number, list length, key: the same on every rank */
+    MPI_Recv(req, 3, MPI_LONG, st.MPI_SOURCE, TAG_REQ, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (req[0] != s->grid || req[1] != d->ntodo || req[2] != (long)strtoull(s->key, NULL, 16)) {
+      abort_all("ranks out of step: another grid on another rank (do all nodes see the same "
+                "script and model files?)");
+    }
     pthread_mutex_lock(&d->lock);
     carve(d, &chunk[0], &chunk[1]);
     pthread_mutex_unlock(&d->lock);
@@ -119,9 +122,9 @@ static long p_next(uraScale* s) {
     if (d->rank == 0) {
       carve(d, &d->lo, &d->hi);
     } else {
-      long chunk[2];
+      long chunk[2], req[3] = {s->grid, d->ntodo, (long)strtoull(s->key, NULL, 16)};
       MPI_Request r;
-      MPI_Send(&s->grid, 1, MPI_LONG, 0, TAG_REQ, MPI_COMM_WORLD);
+      MPI_Send(req, 3, MPI_LONG, 0, TAG_REQ, MPI_COMM_WORLD);
       MPI_Irecv(chunk, 2, MPI_LONG, 0, TAG_CHUNK, MPI_COMM_WORLD, &r);
       wait_req(&r);
       d->lo = chunk[0];
