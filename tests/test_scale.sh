@@ -147,6 +147,8 @@ done
 check shard_needs_part cond '[ $rc -eq 2 ] && grep -q "go together" e'
 "$U" --shard 0/2 --part px -i t.ses >o 2>e </dev/null; rc=$?
 check shard_no_i cond '[ $rc -eq 2 ] && grep -q "not accepted" e && [ ! -e px ]'
+"$U" --shard 0/2 --part px <t.ses >o 2>e; rc=$?
+check shard_no_stdin cond '[ $rc -eq 2 ] && grep -q "standard input is not accepted" e && [ ! -e px ]'
 
 # Ctrl-C stops a shard with status 130 and no part (nor a temporary file of one)
 printf 'set threads 1\nset step 0.02\ncase C\ngrid\ngrid\n' >long.ses

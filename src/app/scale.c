@@ -120,11 +120,18 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
             "OUT FILE.ses\n");
     return 2;
   }
+  int work = 0;
   for (int i = 1; i < w; i++) {
     if (!strcmp(av[i], "-i")) {
       fprintf(stderr, "uasrisk: --shard runs a script, not a session; -i is not accepted\n");
       return 2;
     }
+    work = 1;
+  }
+  if (!work) {
+    fprintf(stderr, "uasrisk: --shard needs the script as FILE or -c COMMANDS; standard input is "
+            "not accepted (merge could not replay it)\n");
+    return 2;
   }
   c->scale = ura_shard_new(c, shard, nshard, part, w - 1, av + 1);
   if (!c->scale) {

@@ -93,8 +93,6 @@ typedef struct uraPartGrid {
 } uraPartGrid;
 /* write the header of a part */
 void ura_part_header(FILE* f, int shard, int nshard, int argc, char** argv);
-/* the trailer: status, grids and the checksum of everything before */
-void ura_part_trailer(FILE* f, int status, long ngrid, unsigned long long sum);
 /* read and check a part; 0, or -1 with why in err */
 int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr);
 void ura_part_free(uraPartFile* p);

@@ -60,11 +60,6 @@ void ura_part_header(FILE* f, int shard, int nshard, int argc, char** argv) {
   for (int i = 0; i < argc; i++) put_arg(f, argv[i]);
 }
 
-void ura_part_trailer(FILE* f, int status, long ngrid, unsigned long long sum) {
-  (void)sum;
-  fprintf(f, "end %d %ld\n", status, ngrid);
-}
-
 void ura_part_free(uraPartFile* p) {
   for (long g = 0; g < p->ngrid; g++) {
     free(p->grid[g].pos);
