@@ -1,7 +1,7 @@
 # bench_scale.sh: the speed-up of 2 MPI ranks x 1 thread over 1 rank x 1 thread on a zero-wind
 # grid (case B, step 0.05 m, the paper's pitch), the two runs back to back, repeated R times
 # (min and median of each); and the figures of the cost model in uasrisk(1), SCALING OUT: the
-# seconds per impact (one thread), the set-up per grid (a grid of one cell after a model change:
+# seconds per impact (one thread, in the grid and alone), the set-up per grid (a grid of one cell after a model change:
 # compile and settled stance) and the bytes a simulated cell costs in a part or message.
 #   sh tests/bench_scale.sh [R]        (make bench; needs ./uasrisk-mpi: make mpi)
 # The machine may be shared: the load average is printed with the times.
@@ -49,6 +49,15 @@ sp() { paste "$T/r1" "$T/r2" | awk -v c="$1" '{ print $c / $(c + 4) }' | sort -g
 echo "  speed-up 2 ranks over 1: grid $(sp 2); whole run $(sp 1)"
 gm=$(awk '{ print $2 }' "$T/r1" | sort -g | head -1)
 echo "  seconds per impact (1 thread, best grid): $(echo "scale=5; $gm / $n" | bc) s"
+
+# a single impact through the impact command (with its histories): 21 impacts against 1
+imp() {
+  { printf 'set threads 1\ncase B\n'; for k in $(seq 0 "$1"); do printf 'impact 0.%02d 0.1\n' "$k"; done; } >"$T/i.ses"
+  t0=$(now); "$U" "$T/i.ses" >/dev/null 2>&1 || exit 1; t1=$(now)
+  echo "$t1 - $t0" | bc
+}
+a=$(imp 0); b=$(imp 20)
+echo "  a single impact (the impact command, 1 thread): $(echo "scale=4; ($b - $a) / 20" | bc) s"
 
 # set-up per grid: 11 grids of one cell, each after a model change, against 1
 setup() {

@@ -88,7 +88,10 @@ static int load(merge* m, int nfile, char** file) {
   uraPartFile p;
   char err[uraERRLEN];
   for (int f = 0; f < nfile; f++) {
-    if (ura_part_read(file[f], &p, err, sizeof err)) return refuse("%s%s", err, "");
+    if (ura_part_read(file[f], &p, err, sizeof err)) {
+      ura_part_free(&p);
+      return refuse("%s%s", err, "");
+    }
     if (!m->part) {
       m->n = p.nshard;
       m->part = calloc((size_t)m->n, sizeof *m->part);
