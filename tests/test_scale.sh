@@ -82,9 +82,10 @@ if command -v mpirun >/dev/null 2>&1 && [ -x "$MPI" ]; then
   mpirun -n 2 "$MPI" f.ses >o 2>e; RC=$?
   check mpi_failure cond '[ $RC -eq 1 ] && [ "$(grep -c "f.ses:5: unknown command" e)" -eq 1 ] && grep -q "^A,0," o'
 
-  # Ctrl-C on rank 0 stops every rank: status 130; SIGTERM on rank 0 ends the run too
+  # Ctrl-C on rank 0 stops every rank: status 130; SIGTERM on rank 0 ends the run too, and so
+  # does Ctrl-C on mpirun
   printf 'set threads 1\nset step 0.02\ncase C\ngrid\ngrid\ngrid\n' >long.ses
-  for sig in INT TERM; do
+  for sig in INT TERM RUN; do
     mpirun -n 2 "$MPI" long.ses >l.out 2>l.err &
     mp=$!
     r0=""; k=0
@@ -95,13 +96,16 @@ if command -v mpirun >/dev/null 2>&1 && [ -x "$MPI" ]; then
       done
     done
     sleep 1
-    [ -n "$r0" ] && kill -$sig "$r0"
+    if [ $sig = RUN ]; then kill -INT $mp; else [ -n "$r0" ] && kill -$sig "$r0"; fi
     wait $mp; RC=$?
+    sleep 0.3
     left=$(pgrep -f "$MPI long.ses" | wc -l)
     if [ $sig = INT ]; then
       check mpi_ctrl_c_130 cond '[ -n "$r0" ] && [ $RC -eq 130 ] && [ "$left" -eq 0 ] && grep -q "interrupted (Ctrl-C) on rank 0; every rank stopped" l.err'
-    else
+    elif [ $sig = TERM ]; then
       check mpi_sigterm_stops cond '[ -n "$r0" ] && [ $RC -ne 0 ] && [ "$left" -eq 0 ]'
+    else   # Ctrl-C at a terminal reaches mpirun, which ends every rank itself
+      check mpirun_ctrl_c_stops cond '[ $RC -ne 0 ] && [ "$left" -eq 0 ]'
     fi
   done
 else
