@@ -67,6 +67,11 @@ cd "$TMP/s3" && for i in 0 1 2; do "$U" --shard $i/3 --part p$i t.ses || echo fa
 mask out >masked
 check merge3_equals_serial cond '[ $RC -eq 0 ] && [ ! -s sh.out ] && cmp -s masked "$TMP/serial/masked"'
 check merge3_export_equal cmp -s mc.csv "$TMP/serial/mc.csv"
+# every cell bitwise the same whoever computed it: the three parts' cells are one shard's
+"$U" --shard 0/1 --part p01 t.ses
+cells() { awk '/^grid /{ g = $2 } /^c /{ $1 = ""; print g, $0 }' "$@" | sort; }
+cells p01 >one; cells p0 p1 p2 >three
+check cells_bitwise_equal cond '[ "$(lines one)" -gt 300 ] && cmp -s one three'
 
 # MPI: 2 ranks
 if command -v mpirun >/dev/null 2>&1 && [ -x "$MPI" ]; then
