@@ -2,7 +2,8 @@
 #   make          build ./uasrisk and build/libuasrisk.a
 #   make run      set up, build, start the workbench (replays sessions/demo.ses without a terminal)
 #   make check    set up, build, run every test
-#   make bench    benchmarks (not part of check); REPRODUCE=0 leaves out the timing of reproduce
+#   make bench    benchmarks (not part of check; tests/bench_scale.sh: 2 MPI ranks against 1);
+#                 REPRODUCE=0 leaves out the timing of reproduce
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
@@ -14,6 +15,7 @@
 #                 session under valgrind (scripts/check-san.sh)
 #   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions (FUZZ_RUN_RUNS for
 #                 the executing script target) or FUZZ_SECONDS each (clang; build-fuzz/)
+#   make mpi      ./uasrisk-mpi, the MPI build (OpenMPI from Debian; mpirun -n N ./uasrisk-mpi FILE)
 #   make check-tsan  a ThreadSanitizer build (build-tsan/) runs a short grid on 2 threads and is
 #                 interrupted by SIGINT in the middle (scripts/check-tsan.sh)
 #   make install PREFIX=/usr/local
@@ -49,7 +51,7 @@ LIB     = $(BUILD)/libuasrisk.a
 APPLIB  = $(BUILD)/libuasrisk-app.a
 
 .PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz \
-  check-tsan
+  check-tsan mpi mpideps
 all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -108,17 +110,31 @@ $(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(TEST_LIBS) $(APP_LIBS) $(CORE_LIBS)
 
+# the MPI build: only the distributor (src/app/scale_mpi.c) is compiled by mpicc with URA_MPI;
+# its object comes before the application's archive, whose MPI-less stub is then not linked
+MPICC ?= mpicc
+MPI_BIN = uasrisk-mpi
+mpideps:
+	@sh scripts/setup.sh mpi
+mpi: $(MPI_BIN)
+$(BUILD)/mpi/scale_mpi.o: src/app/scale_mpi.c $(FLAGS) | mpideps
+	@mkdir -p $(dir $@)
+	$(MPICC) $(CFLAGS) -DURA_MPI -c $< -o $@
+$(MPI_BIN): $(BUILD)/src/app/main.o $(BUILD)/mpi/scale_mpi.o $(APPLIB) $(LIB) | mpideps
+	$(MPICC) $(LDFLAGS) -o $@ $^ $(APP_LIBS) $(CORE_LIBS)
+
 run: all
 	@if [ -t 0 ]; then ./uasrisk; else ./uasrisk sessions/demo.ses; fi
 
-check: all $(TEST_BIN) $(BUILD)/calibrate
+check: all mpi $(TEST_BIN) $(BUILD)/calibrate
 	@sh scripts/runtests.sh $(TEST_BIN)
 
 test: check
 
 REPRODUCE ?= 1
-bench: all $(BENCH_BIN)
+bench: all mpi $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do $$b || exit 1; done
+	@sh tests/bench_scale.sh
 	@if [ "$(REPRODUCE)" != 0 ]; then t0=$$(date +%s); \
 	  echo "bench: timing make reproduce (many minutes; progress in $(BUILD)/reproduce.log)"; \
 	  sh scripts/reproduce.sh >$(BUILD)/reproduce.log 2>&1 || { cat $(BUILD)/reproduce.log; exit 1; }; \
@@ -206,6 +222,6 @@ install: all
 	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man7/; done; true
 
 clean:
-	rm -rf $(BUILD) build-san build-vg build-fuzz build-tsan uasrisk
+	rm -rf $(BUILD) build-san build-vg build-fuzz build-tsan uasrisk uasrisk-mpi
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -3,7 +3,8 @@
 # Called by the Makefile (make deps, run, check); safe to run again; prints nothing when all is there.
 # 'setup.sh fuzz' adds what make fuzz needs (clang, libFuzzer); 'setup.sh san' what make
 # check-san needs (valgrind; the sanitizer runtimes come with gcc); 'setup.sh tsan' the
-# ThreadSanitizer runtime of make check-tsan.
+# ThreadSanitizer runtime of make check-tsan; 'setup.sh mpi' OpenMPI for make mpi (make check
+# and make bench build it: the comparison of MPI runs with serial ones is part of the tests).
 set -e
 
 pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev gnuplot-nox tmux"
@@ -11,6 +12,7 @@ case "$1" in
   fuzz) pkgs="$pkgs clang libclang-rt-dev" ;;
   san) pkgs="$pkgs valgrind" ;;
   tsan) pkgs="$pkgs libtsan2" ;;
+  mpi) pkgs="$pkgs libopenmpi-dev openmpi-bin" ;;
 esac
 [ -n "$UASRISK_EXTRA_PKGS" ] && pkgs="$pkgs $UASRISK_EXTRA_PKGS"
 

@@ -1,4 +1,5 @@
-/* test_grid.c: lattice, Q sum, mirror rule, thread independence, interruption, failures */
+/* test_grid.c: lattice, Q sum, mirror rule, thread independence, interruption, failures, work
+ * split over processes (urGridDist) */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -151,10 +152,91 @@ static void failures(void** state) {
   ur_grid_free(g);
 }
 
+/* a distributor of one of two "processes": this one simulates the positions of its parity and
+   takes the other ones from the cells the other process kept (by position) */
+typedef struct {
+  int parity;
+  long ntodo, next;
+  urCell* kept;                    /* by position: the cells of this process (kept for the other) */
+  const urCell* other;             /* the other process's kept cells (NULL: placeholders) */
+  int fail_begin, fail_end;
+  long handed;
+} half;
+
+static int h_begin(void* ctx, long ntodo) {
+  half* h = ctx;
+  h->ntodo = ntodo;
+  h->next = h->parity;
+  return h->fail_begin ? -1 : 0;
+}
+
+static long h_next(void* ctx) {
+  half* h = ctx;
+  long k = __atomic_fetch_add(&h->next, 2, __ATOMIC_RELAXED);
+  if (k >= h->ntodo) return -1;
+  __atomic_add_fetch(&h->handed, 1, __ATOMIC_RELAXED);
+  return k;
+}
+
+static int h_end(void* ctx, urGrid* g, const long* todo, long ntodo) {
+  half* h = ctx;
+  for (long k = 0; k < ntodo; k++) {
+    urCell* c = &g->cell[todo[k]];
+    if (k % 2 == h->parity) {
+      h->kept[k] = *c;
+    } else if (h->other) {
+      double dpar = c->dpar, dperp = c->dperp;
+      *c = h->other[k];
+      c->dpar = dpar;
+      c->dperp = dperp;
+    } else {
+      c->status = urCELL_DONE;   /* a placeholder, as a shard leaves it */
+    }
+  }
+  return h->fail_end ? -1 : 0;
+}
+
+/* two halves, the second filled from the first, give the cells of one process bitwise; each
+   simulates only its half; a failing distributor makes the run return -2 */
+static void distributed(void** state) {
+  synth a = {0.3}, b = {0.3}, c = {0.3};
+  urGridSpec sa = spec(&a, 1, 2), sb = spec(&b, 1, 1), sc = spec(&c, 1, 2);
+  urGrid *ga = ur_grid_new(&sa), *gb = ur_grid_new(&sb), *gc = ur_grid_new(&sc);
+  long n = (long)ga->nrow * ga->ncol;
+  urCell* kept_b = calloc(n, sizeof *kept_b);
+  urCell* kept_c = calloc(n, sizeof *kept_c);
+  half hb = {1, 0, 0, kept_b, NULL}, hc = {0, 0, 0, kept_c, kept_b};
+  urGridDist db = {&hb, h_begin, h_next, h_end}, dc = {&hc, h_begin, h_next, h_end};
+  sb.dist = &db;
+  sc.dist = &dc;
+  assert_int_equal(ur_grid_run(ga, &sa), 0);
+  assert_int_equal(ur_grid_run(gb, &sb), 0);
+  assert_int_equal(ur_grid_run(gc, &sc), 0);
+  assert_int_equal(hb.ntodo, hc.ntodo);
+  assert_int_equal(hb.handed, hb.ntodo / 2);
+  assert_int_equal(hc.handed, (hc.ntodo + 1) / 2);
+  assert_int_equal(b.calls + c.calls, a.calls);
+  assert_memory_equal(ga->cell, gc->cell, sizeof(urCell) * n);
+  assert_true(ga->q == gc->q);
+  assert_true(gb->complete && gb->q < ga->q);      /* placeholders: no contact, no Q */
+
+  hb.fail_begin = 1;
+  assert_int_equal(ur_grid_run(gb, &sb), -2);
+  hb.fail_begin = 0;
+  hb.fail_end = 1;
+  assert_int_equal(ur_grid_run(gb, &sb), -2);
+  free(kept_b);
+  free(kept_c);
+  ur_grid_free(ga);
+  ur_grid_free(gb);
+  ur_grid_free(gc);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(lattice),  cmocka_unit_test(q_sum),       cmocka_unit_test(mirror),
     cmocka_unit_test(threads),  cmocka_unit_test(interrupted), cmocka_unit_test(failures),
+    cmocka_unit_test(distributed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

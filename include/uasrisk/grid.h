@@ -67,6 +67,19 @@ typedef void (*urImpactStreamFn)(void* ctx, int worker, urCellTakeFn take, urCel
 /* progress: cells finished so far out of the total to simulate */
 typedef void (*urProgressFn)(void* ctx, int done, int total);
 
+/* optional: who simulates which cell, for work split over processes. The cells to simulate form
+   a fixed list (row-major order of the cells neither mirrored nor decided geometrically), the
+   same in every process. begin is told its length; next hands out the next position of the list
+   this process simulates (-1: none left), from any worker thread; end, after the workers, fills
+   the cells simulated elsewhere (status and results; dpar, dperp are kept) before the mirror rule
+   and the summary. begin or end failing makes ur_grid_run return -2. */
+typedef struct {
+  void* ctx;
+  int (*begin)(void* ctx, long ntodo);
+  long (*next)(void* ctx);
+  int (*end)(void* ctx, urGrid* g, const long* todo, long ntodo);
+} urGridDist;
+
 typedef struct {
   double step;                     /* pitch, m */
   double par_min, par_max;         /* along extent, m (rounded outwards to the lattice) */
@@ -80,6 +93,7 @@ typedef struct {
   const _Atomic int* stop;         /* optional; workers stop starting cells when *stop != 0 */
   urImpactStreamFn impact_stream;  /* optional; when set, each worker hands it its cells instead
                                       of calling impact per cell */
+  const urGridDist* dist;          /* optional; NULL: this process simulates every cell */
 } urGridSpec;
 
 /* allocate the lattice of a spec (cells pending); NULL on bad extents or no memory */
@@ -89,7 +103,8 @@ void ur_grid_free(urGrid* g);
 /* cells the spec would hold, for refusing huge grids before allocating */
 long ur_grid_cell_count(const urGridSpec* spec);
 
-/* run the spec on a grid from ur_grid_new; keeps finished cells when stopped */
+/* run the spec on a grid from ur_grid_new; keeps finished cells when stopped. 0; -1 out of
+   memory; -2 the distributor (spec->dist) failed */
 int ur_grid_run(urGrid* g, const urGridSpec* spec);
 
 /* recompute q and the counts from the cells */

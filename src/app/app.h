@@ -158,6 +158,8 @@ typedef struct uraCtx {
   /* optional: asked before each command runs (the executing fuzz target bounds the work and the
      files of its inputs); nonzero refuses the command with c->err set */
   int (*guard)(struct uraCtx* c, int argc, char** argv);
+  struct uraScale* scale;          /* the work split over processes (scale.h; NULL: serial) */
+  int mute;                        /* results, notes, files and plots go nowhere (scale.h) */
 } uraCtx;
 
 /* record a failure message; always returns -1 */

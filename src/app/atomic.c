@@ -124,6 +124,7 @@ int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) 
   memset(a, 0, sizeof *a);
   a->fd = -1;
   if (ura_dry(c, who)) return -1;
+  if (c->mute) path = "/dev/null";  /* a shard or an MPI rank but 0: its files go nowhere */
   if (!*path || strlen(path) >= sizeof a->path - 16) {
     return ura_fail(c, "%s: cannot write '%.200s': %s; accepted: a file name of 1 to %d bytes",
                     who, path, *path ? "name too long" : "empty name", (int)sizeof a->path - 17);

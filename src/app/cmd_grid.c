@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "scale.h"
 
 #define MAXCELLS 4000000L          /* largest grid (and region scanned for its extents), cells */
 #define STOPPED "interrupted"      /* reason of a cell whose impact Ctrl-C stopped */
@@ -260,12 +261,15 @@ int ura_grid_run(uraCtx* c, int quiet) {
   spec.ctx = &run;
   spec.impact_stream = cb_stream;
   if (run.tty) ura_progress_start();
+  urGridDist dist;
+  if (c->scale) ura_scale_grid(c, &spec, &dist);   /* cells split over processes (scale.h) */
   int rc = ur_grid_run(g, &spec);
   for (int i = 0; i < nw; i++) ur_impact_lanes_free(w[i]);
   free(w);
   if (run.tty) fputs("\r\033[K", stderr);
   if (rc) {
     ur_grid_free(g);
+    if (rc == -2) return -1;       /* the distributor said why */
     return ura_fail(c, "grid: out of memory for %ld cells", ncell);
   }
 

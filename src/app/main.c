@@ -6,10 +6,13 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "scale.h"
 
 static void usage(FILE* f) {
   fprintf(f,
           "usage: uasrisk [-i] [-c COMMANDS] [FILE]...\n"
+          "       uasrisk --shard I/N --part OUT [-c COMMANDS] [FILE]...\n"
+          "       uasrisk merge PART...\n"
           "  with no arguments: interactive on a terminal, else replay standard input\n"
           "  FILE         replay a session script\n"
           "  -c COMMANDS  run commands (separated by ';')\n"
@@ -23,6 +26,7 @@ static void usage(FILE* f) {
 static uraCtx ctx;
 
 static int done(int rc) {
+  rc = ura_scale_end(&ctx, rc);    /* a shard's part written; MPI finished */
   errno = 0;
   int bad = fflush(ctx.out) || ferror(ctx.out);
   int e = ura_out_errno() ? ura_out_errno() : errno;
@@ -48,6 +52,10 @@ int main(int argc, char** argv) {
     if (out) c->out = out;
   }
   if (!c->model) fprintf(stderr, "uasrisk: warning: built-in model: %s\n", c->err);
+
+  /* --shard I/N --part OUT, merge PART..., or an MPI rank (scale.h) */
+  int st = ura_scale_args(c, &argc, &argv);
+  if (st) return done(st);
 
   /* options first: -i anywhere, help */
   int stay = 0, work = 0;

@@ -385,6 +385,7 @@ static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
 
 int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) {
   if (ura_dry(c, who)) return -1;
+  if (c->mute) return 0;           /* a shard or an MPI rank but 0 draws nothing */
   /* the settings, then gnuplot and a display */
   char* pre = NULL;
   size_t npre = 0;

@@ -123,8 +123,9 @@ static urCell* take(void* feed) {
   runWorker* w = feed;
   runShared* sh = w->sh;
   if (sh->s->stop && *sh->s->stop) return NULL;
-  long k = __atomic_fetch_add(&sh->next, 1, __ATOMIC_RELAXED);
-  if (k >= sh->ntodo) return NULL;
+  const urGridDist* d = sh->s->dist;
+  long k = d ? d->next(d->ctx) : __atomic_fetch_add(&sh->next, 1, __ATOMIC_RELAXED);
+  if (k < 0 || k >= sh->ntodo) return NULL;
   urCell* c = &sh->g->cell[sh->todo[k]];
   double dpar = c->dpar, dperp = c->dperp;
   memset(c, 0, sizeof *c);
@@ -187,7 +188,12 @@ int ur_grid_run(urGrid* g, const urGridSpec* s) {
     }
   }
 
-  /* workers over the list */
+  /* workers over the list (or this process's share of it) */
+  const urGridDist* d = s->dist;
+  if (d && d->begin(d->ctx, ntodo)) {
+    free(todo);
+    return -2;
+  }
   runShared sh = {g, s, todo, ntodo, 0, 0};
   pthread_mutex_init(&sh.lock, NULL);
   int nt = s->threads < 1 ? 1 : s->threads;
@@ -205,7 +211,9 @@ int ur_grid_run(urGrid* g, const urGridSpec* s) {
   worker(&w[0]);
   for (int i = 1; i <= started; i++) pthread_join(th[i], NULL);
   pthread_mutex_destroy(&sh.lock);
+  int bad = d && d->end(d->ctx, g, todo, ntodo);
   free(todo);
+  if (bad) return -2;
 
   /* mirror rule: column -j is column +j with the cross offset negated */
   if (s->mirror) {

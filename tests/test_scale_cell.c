@@ -1,0 +1,106 @@
+/* test_scale_cell.c: a grid cell's results as one line of text and back (src/app/scale_cell.c):
+ * exact for every double (negative zero, subnormals, infinities, NaN), the reason kept (control
+ * characters as spaces), dpar and dperp left as they are; malformed lines refused. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "../src/app/scale.h"
+
+static urCell sample(void) {
+  urCell c;
+  memset(&c, 0, sizeof c);
+  c.dpar = 0.25;
+  c.dperp = -0.5;
+  c.status = urCELL_DONE;
+  c.contact = 1;
+  c.hic15 = 520.86312345678901;
+  c.hic_t1 = 0.0934;
+  c.hic_t2 = 0.10585;
+  c.nij = 0.68482;
+  c.nij_mode = 3;
+  c.vc_thorax = 4.9e-324;          /* the smallest subnormal */
+  c.vc_abdomen = -0.0;
+  c.p_hic = 1.0 / 3.0;
+  c.p_nij = INFINITY;
+  c.p_vc = NAN;
+  c.p = 0x1.fffffffffffffp-1;
+  c.extrap = 2;
+  return c;
+}
+
+static void round_trip(void** state) {
+  urCell a = sample(), b;
+  char line[512];
+  memset(&b, 0x5a, sizeof b);
+  b.dpar = 7;
+  b.dperp = 8;
+  assert_true(ura_cell_write(&a, line, sizeof line) > 0);
+  assert_null(strchr(line, '\n'));
+  assert_int_equal(ura_cell_read(line, &b), 0);
+  assert_true(b.dpar == 7 && b.dperp == 8);         /* the offsets are the grid's */
+  b.dpar = a.dpar;
+  b.dperp = a.dperp;
+  assert_int_equal(b.status, a.status);
+  assert_int_equal(b.contact, a.contact);
+  assert_int_equal(b.nij_mode, a.nij_mode);
+  assert_int_equal(b.extrap, a.extrap);
+  assert_memory_equal(&b.hic15, &a.hic15, sizeof a.hic15);
+  assert_memory_equal(&b.vc_thorax, &a.vc_thorax, sizeof a.vc_thorax);
+  assert_true(b.vc_abdomen == 0 && signbit(b.vc_abdomen));
+  assert_true(isinf(b.p_nij) && isnan(b.p_vc));
+  assert_true(b.p == a.p && b.p_hic == a.p_hic && b.hic_t2 == a.hic_t2 && b.nij == a.nij);
+  assert_string_equal(b.reason, "");
+}
+
+static void reason(void** state) {
+  urCell a = sample(), b = sample();
+  char line[512];
+  a.status = urCELL_FAILED;
+  snprintf(a.reason, sizeof a.reason, "step\tsize | too small\n");
+  assert_true(ura_cell_write(&a, line, sizeof line) > 0);
+  assert_int_equal(ura_cell_read(line, &b), 0);
+  assert_int_equal(b.status, urCELL_FAILED);
+  assert_string_equal(b.reason, "step size | too small ");
+  assert_int_equal(ura_cell_write(&a, line, 20), -1);   /* too small a buffer */
+}
+
+static void malformed(void** state) {
+  urCell a = sample(), b = sample();
+  char line[512], bad[600];
+  assert_true(ura_cell_write(&a, line, sizeof line) > 0);
+  const char* cut = strchr(line, '|');
+  snprintf(bad, sizeof bad, "%.*s", (int)(cut - line), line);          /* no reason marker */
+  assert_int_equal(ura_cell_read(bad, &b), -1);
+  snprintf(bad, sizeof bad, " %s", line);                             /* leading space */
+  assert_int_equal(ura_cell_read(bad, &b), -1);
+  snprintf(bad, sizeof bad, "9%s", line + 1);                          /* no such status */
+  assert_int_equal(ura_cell_read(bad, &b), -1);
+  snprintf(bad, sizeof bad, "%s", line);
+  char* sp = strchr(strchr(bad, ' ') + 1, ' ');                       /* a field dropped */
+  memmove(sp, strchr(sp + 1, ' '), strlen(strchr(sp + 1, ' ')) + 1);
+  assert_int_equal(ura_cell_read(bad, &b), -1);
+  snprintf(bad, sizeof bad, "%s", line);
+  *strchr(strchr(bad, ' ') + 1, ' ') = 'x';                           /* junk in a number */
+  assert_int_equal(ura_cell_read(bad, &b), -1);
+  assert_int_equal(ura_cell_read("", &b), -1);
+  snprintf(bad, sizeof bad, "%s%070d", line, 0);                       /* reason too long */
+  assert_int_equal(ura_cell_read(bad, &b), -1);
+  urCell keep = b;                                                     /* a refusal changes nothing */
+  assert_int_equal(ura_cell_read("2 1 0x1p+0", &b), -1);
+  assert_memory_equal(&keep, &b, sizeof b);
+  assert_int_equal(ura_cell_read(line, &b), 0);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(round_trip),
+    cmocka_unit_test(reason),
+    cmocka_unit_test(malformed),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
