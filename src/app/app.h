@@ -379,8 +379,9 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond);   /* refuses angles below ur
    at an eccentricity, at any angle 0-90 deg */
 int ura_impact_aim(uraCtx* c, int argc, char** argv);
 /* the table of impact rows (columns dpar,dperp,contact,hic15,...,p) and one row of it */
-uraTable* ura_impact_table(void);
-void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r);
+uraTable* ura_impact_table(const urInjuryParams* ip);
+void ura_impact_cells(uraTable* t, const urInjuryParams* ip, double dpar, double dperp,
+                      const urImpactResult* r);
 /* notes for a table computed under cond: where speed and angle came from when it was the paper's
    Table 2 (paper), and the moment tau when it is not the paper's text (shift: the tau shift, m) */
 void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,

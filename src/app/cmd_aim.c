@@ -50,7 +50,7 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, up, side, &r);
 
   /* the row of 'impact', its offset columns holding the eccentricity */
-  uraTable* t = ura_impact_table();
+  uraTable* t = ura_impact_table(&c->st.injury);
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; aim head: dpar, "
                  "dperp are the eccentricity (up, side) of the line of travel from the head's "
                  "centre; HIC15 window %.2f-%.2f ms", c->st.casename, cond.speed, cond.angle,
@@ -59,7 +59,7 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
     ura_table_note(t, "extrapolated: %d law(s) used beyond their data; furthest: %s", r.nextrap,
                    r.extrap);
   }
-  ura_impact_cells(t, up, side, &r);
+  ura_impact_cells(t, &c->st.injury, up, side, &r);
   ura_table_print(c, t);
   return 0;
 }

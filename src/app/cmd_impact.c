@@ -38,27 +38,33 @@ void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, i
   }
 }
 
-/* the columns of impact rows, shared with grid cells */
-static const char* const impact_cols[] = {"dpar", "dperp", "contact", "hic15", "nij", "nij_tf",
-                                          "nij_te", "nij_cf", "nij_ce", "vc_thorax",
-                                          "vc_abdomen", "p_hic", "p_nij", "p_vc", "p"};
-
-uraTable* ura_impact_table(void) {
-  return ura_table_new(15, impact_cols);
+/* the columns of impact rows: dpar,dperp,contact, the row values of the criteria in use, their
+   PoF columns, p (the paper's criteria: hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,
+   vc_abdomen,p_hic,p_nij,p_vc) */
+uraTable* ura_impact_table(const urInjuryParams* ip) {
+  const char* cols[3 + urNVAL + urNCRIT + 1] = {"dpar", "dperp", "contact"};
+  int n = 3;
+  for (int v = 0; v < urNVAL; v++) {
+    if (ur_value_shown(v, urIN_ROW, ip)) cols[n++] = ur_value_def(v)->name;
+  }
+  for (int k = 0; k < urNCRIT; k++) {
+    if (ur_criterion_used(k, ip)) cols[n++] = ur_criterion(k)->pof_col;
+  }
+  cols[n++] = "p";
+  return ura_table_new(n, cols);
 }
 
-void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r) {
+void ura_impact_cells(uraTable* t, const urInjuryParams* ip, double dpar, double dperp,
+                      const urImpactResult* r) {
   ura_table_cell(t, "%g", dpar);
   ura_table_cell(t, "%g", dperp);
   ura_table_cell(t, "%d", r->contact);
-  ura_table_cell(t, "%.6g", r->inj.hic15.hic);
-  ura_table_cell(t, "%.6g", r->inj.nij.nij);
-  for (int k = 0; k < 4; k++) ura_table_cell(t, "%.6g", r->inj.nij.mode[k]);
-  ura_table_cell(t, "%.6g", r->inj.vc_thorax.vc);
-  ura_table_cell(t, "%.6g", r->inj.vc_abdomen.vc);
-  ura_table_cell(t, "%.6g", r->inj.p_hic);
-  ura_table_cell(t, "%.6g", r->inj.p_nij);
-  ura_table_cell(t, "%.6g", r->inj.p_vc);
+  for (int v = 0; v < urNVAL; v++) {
+    if (ur_value_shown(v, urIN_ROW, ip)) ura_table_cell(t, "%.6g", r->inj.val[v]);
+  }
+  for (int k = 0; k < urNCRIT; k++) {
+    if (ur_criterion_used(k, ip)) ura_table_cell(t, "%.6g", r->inj.pof[k]);
+  }
   ura_table_cell(t, "%.6g", r->p);
 }
 
@@ -117,7 +123,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, dpar, dperp, &r);
 
   /* one row */
-  uraTable* t = ura_impact_table();
+  uraTable* t = ura_impact_table(&c->st.injury);
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
                  "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
                  1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
@@ -127,7 +133,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
                  ur_impact_tau_shift(s, &cond));
-  ura_impact_cells(t, dpar, dperp, &r);
+  ura_impact_cells(t, &c->st.injury, dpar, dperp, &r);
   ura_table_print(c, t);
   return 0;
 }
