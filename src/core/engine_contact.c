@@ -8,7 +8,7 @@
 //---------------------------------- helpers -------------------------------------------------------
 
 // ellipsoid g in world coordinates
-void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e) {
+void ur_geom_ellipsoid(const urModel* m, urData* d, int g, urEllipsoid* e) {
   memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
   memcpy(e->R, ur_geom_xmat(m, d, g), 9*sizeof(double));
   memcpy(e->r, m->geom[g].size, 3*sizeof(double));
@@ -18,7 +18,7 @@ void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e)
 
 // half-width of ellipsoid g along unit u: |diag(r) R^T u| (superellipsoid: the q-norm,
 // contact.h)
-double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double u[3]) {
+double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]) {
   const double* R = ur_geom_xmat(m, d, g);
   const double* r = m->geom[g].size;
   double w[3];
@@ -36,7 +36,7 @@ double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double 
 // cheap upper bound on the signed depth of ellipsoids ga, gb: the support-function gap
 // f(u) = (cA - cB).u + hA(u) + hB(u) >= min f = depth, at the centre line and at the warm
 // start u (if set); a negative bound proves separation without the narrow phase
-double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]) {
+double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]) {
   const double* ca = d->gxpos + 3*ga;
   const double* cb = d->gxpos + 3*gb;
   double dc[3] = {ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]}, c[3];

@@ -34,12 +34,12 @@ int uru_invsym(double* Ainv, const double* A, int n);
 void ur_kinematics_bodies(const urModel* m, urData* d);
 void ur_kinematics_geoms(const urModel* m, urData* d);
 void ur_kinematics_gpos(const urModel* m, urData* d);
-const double* ur_geom_xmat(const urModel* m, const urData* d, int g);
+const double* ur_geom_xmat(const urModel* m, urData* d, int g);
 void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
 void ur_forward_pre(const urModel* m, urData* d);
-void ur_forward_forces(const urModel* m, urData* d, int lanes);
+void ur_forward_loads(const urModel* m, urData* d);
 int ur_forward_post(const urModel* m, urData* d);
 int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
@@ -59,7 +59,7 @@ void ur_outputs(const urModel* m, urData* d);
 void ur_apply_force(const urModel* m, urData* d, int body, const double f[3], const double p[3]);
 void ur_point_acc(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
 void ur_set_status(urData* d, int status, const char* msg);
-void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e);
+void ur_geom_ellipsoid(const urModel* m, urData* d, int g, urEllipsoid* e);
 void ur_relvel(const urModel* m, const urData* d, int a, int b, const double p[3], double v[3]);
 double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double n[3],
                         const double p[3], const double v[3], double fn, double rate,
@@ -100,7 +100,7 @@ void ur_lanes_free(urLanes* L);
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
 int ur_tree_active(const urModel* m, const urData* d, int tree);
-double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]);
-double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double u[3]);
+double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]);
+double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]);
 
 #endif

@@ -466,7 +466,8 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
     return 0;
   }
 
-  // poses and velocities for all lanes at once, the applied forces lane by lane
+  // ur_forward_pre's stages: poses, velocities, broad phase and restraint kinematics for all
+  // lanes at once, the applied forces lane by lane
   gather_state(m, L, run, k);
   urv_kinematics_bodies(m, L);
   urv_kinematics_gpos(m, L);
@@ -475,7 +476,7 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   restraints_kin4(m, L);
   scatter_kin(m, L, run, k);
   for (int l = 0; l < k; l++) {
-    ur_forward_forces(m, run[l], 1);
+    ur_forward_loads(m, run[l]);
   }
 
   // accelerations for all lanes at once

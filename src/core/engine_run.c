@@ -42,18 +42,21 @@ const char* ur_status_str(int status) {
 
 //---------------------------------- forward -------------------------------------------------------
 
-// the forward pipeline up to the accelerations: positions, velocities, applied forces (gravity
-// compensation, restraints, contacts, airbags)
+// the forward pipeline up to the accelerations: positions, velocities, the restraint kinematics
+// and the contacts' broad phase, the applied forces (gravity compensation, restraints, contacts,
+// airbags). The lanes run the same stages: the first four over vectors, then ur_forward_loads.
 void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics(m, d);
   ur_velocities(m, d);
-  ur_forward_forces(m, d, 0);
+  ur_restraints_kin(m, d);
+  ur_contacts_broad(m, d);
+  ur_forward_loads(m, d);
 }
 
 
-// the applied forces of the forward pipeline (needs the poses and velocities; lanes: the lanes
-// computed the contacts' broad phase (pair depths) and the restraint kinematics already)
-void ur_forward_forces(const urModel* m, urData* d, int lanes) {
+// the applied forces of the forward pipeline, from the poses, velocities, restraint kinematics
+// (rkin) and pair depths of the broad phase
+void ur_forward_loads(const urModel* m, urData* d) {
   memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
   for (int j = 0; j < m->ngrav; j++) {
@@ -64,10 +67,6 @@ void ur_forward_forces(const urModel* m, urData* d, int lanes) {
       f[k] = -(1 - b->gravity)*b->mass*m->opt.gravity[k];
     }
     ur_apply_force(m, d, i, f, d->xcom + 3*i);
-  }
-  if (!lanes) {
-    ur_restraints_kin(m, d);
-    ur_contacts_broad(m, d);
   }
   ur_restraints(m, d);
   ur_contacts_narrow(m, d);
@@ -181,7 +180,7 @@ static int gap_holds(const urModel* m, double s, double c, double T) {
 // from below and shrinks at most at rate (v1 - v2).e + w1 + w2; tried along the centre line
 // with the bounding spheres (h = rbound, unchanged by spin) and with the ellipsoids, and along
 // u. Each closing rate comes with a_clear T^2/2 for the relative acceleration.
-static int stays_clear(const urModel* m, const urData* d, int g1, int g2, double sep,
+static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep,
                        const double u[3], double T) {
   double v1[3], v2[3], w1, w2, e[3];
   const double* c1 = d->gxpos + 3*g1;
@@ -215,7 +214,7 @@ static int stays_clear(const urModel* m, const urData* d, int g1, int g2, double
 
 // is item k (a pair, then the airbag targets in order) across the projectile tree clear for T
 // (1 also for items within a tree or with the ground)
-static int item_clear(const urModel* m, const urData* d, int k, double T) {
+static int item_clear(const urModel* m, urData* d, int k, double T) {
   int tree = d->proj;
   if (k < m->npair) {
     const urPair* p = m->pair + k;
@@ -451,7 +450,7 @@ static double firsthit(const urModel* m, const urData* d, int gm, int gs, const 
 // targets, ground excluded); -INFINITY if some already overlap. Exact distances are computed in
 // the order of a cheap lower bound (bounding-sphere gap, support-function bound) and only while
 // that bound is below the best so far.
-static double separation(const urModel* m, const urData* d, int root) {
+static double separation(const urModel* m, urData* d, int root) {
   int n = m->npair + m->nbag*urMAXBAGTGT, k = 0;
   int g1s[n > 0 ? n : 1], g2s[n > 0 ? n : 1];
   double lb[n > 0 ? n : 1];

@@ -16,7 +16,7 @@ static int intree(const urModel* m, int b, int root) {
 }
 
 /* height of the top of an ellipsoid in the world */
-static double ellipsoid_top(const urModel* m, const urData* d, int g) {
+static double ellipsoid_top(const urModel* m, urData* d, int g) {
   const double* R = ur_geom_xmat(m, d, g);
   double s = 0;
   for (int k = 0; k < 3; k++) {
