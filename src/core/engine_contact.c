@@ -7,6 +7,36 @@
 
 //---------------------------------- helpers -------------------------------------------------------
 
+int ur_cand_count(const urModel* m) {
+  int n = m->npair;
+  for (int i = 0; i < m->nbag; i++) {
+    n += m->bag[i].ntarget;
+  }
+  return n;
+}
+
+
+int ur_cand_at(const urModel* m, int k, urCand* c) {
+  if (k < 0) {
+    return -1;
+  }
+  if (k < m->npair) {
+    *c = (urCand){m->pair[k].geom1, m->pair[k].geom2, -1, k, k};
+    return 0;
+  }
+  k -= m->npair;
+  for (int i = 0; i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    if (k < b->ntarget) {
+      *c = (urCand){b->geom, b->target[k], i, k, ur_cand_bag_slot(m, i, k)};
+      return 0;
+    }
+    k -= b->ntarget;
+  }
+  return -1;
+}
+
+
 // ellipsoid g in world coordinates
 void ur_geom_ellipsoid(const urModel* m, urData* d, int g, urEllipsoid* e) {
   memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));

@@ -152,12 +152,6 @@ static void checkstate(const urModel* m, urData* d) {
 }
 
 
-// does a geom belong to a tree
-static int intree(const urModel* m, int g, int tree) {
-  return g >= 0 && m->body[m->geom[g].body].tree == tree;
-}
-
-
 // centre velocity of ellipsoid g and the speed bound of its surface about the centre (spin
 // times the largest semi-axis)
 static void geomspeed(const urModel* m, const urData* d, int g, double v[3], double* w) {
@@ -212,25 +206,20 @@ static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep,
 }
 
 
-// is item k (a pair, then the airbag targets in order) across the projectile tree clear for T
-// (1 also for items within a tree or with the ground)
+// is contact candidate k (ur_cand_at) across the projectile tree clear for T (1 also for
+// candidates within a tree or with the ground)
 static int item_clear(const urModel* m, urData* d, int k, double T) {
   int tree = d->proj;
-  if (k < m->npair) {
-    const urPair* p = m->pair + k;
-    return p->geom2 < 0 || intree(m, p->geom1, tree) == intree(m, p->geom2, tree) ||
-           stays_clear(m, d, p->geom1, p->geom2, -d->pdepth[k], d->pair[k].u, T);
+  urCand c;
+  if (ur_cand_at(m, k, &c) || c.g2 < 0 ||
+      ur_geom_intree(m, c.g1, tree) == ur_geom_intree(m, c.g2, tree)) {
+    return 1;
   }
-  k -= m->npair;
-  for (int i = 0; i < m->nbag; i++) {
-    const urAirbag* b = m->bag + i;
-    if (k < b->ntarget) {
-      return intree(m, b->geom, tree) == intree(m, b->target[k], tree) ||
-             stays_clear(m, d, b->geom, b->target[k], -d->bag[i].depth[k], d->bag[i].u[k], T);
-    }
-    k -= b->ntarget;
+  if (c.bag < 0) {
+    return stays_clear(m, d, c.g1, c.g2, -d->pdepth[c.idx], d->pair[c.idx].u, T);
   }
-  return 1;
+  const urBagData* bd = d->bag + c.bag;
+  return stays_clear(m, d, c.g1, c.g2, -bd->depth[c.idx], bd->u[c.idx], T);
 }
 
 
@@ -239,10 +228,7 @@ static int item_clear(const urModel* m, urData* d, int k, double T) {
 // item that failed last is tried first (d->clear_hint): in the tail of a run the same one
 // usually fails step after step.
 static int proj_clear(const urModel* m, urData* d, double T) {
-  int n = m->npair;
-  for (int i = 0; i < m->nbag; i++) {
-    n += m->bag[i].ntarget;
-  }
+  int n = ur_cand_count(m);
   int h = d->clear_hint < n ? d->clear_hint : 0;
   if (!item_clear(m, d, h, T)) {
     return 0;
@@ -393,7 +379,7 @@ int ur_tree_active(const urModel* m, const urData* d, int tree) {
   for (int k = 0; k < d->npactive; k++) {
     int i = d->plist[m->npair + k];
     const urPair* p = m->pair + i;
-    if (d->pair[i].active && intree(m, p->geom1, tree) != intree(m, p->geom2, tree)) {
+    if (d->pair[i].active && ur_geom_intree(m, p->geom1, tree) != ur_geom_intree(m, p->geom2, tree)) {
       return 1;
     }
   }
@@ -403,7 +389,7 @@ int ur_tree_active(const urModel* m, const urData* d, int tree) {
       continue;
     }
     for (int t = 0; t < b->ntarget; t++) {
-      if (d->bag[i].ftgt[t] > 0 && intree(m, b->geom, tree) != intree(m, b->target[t], tree)) {
+      if (d->bag[i].ftgt[t] > 0 && ur_geom_intree(m, b->geom, tree) != ur_geom_intree(m, b->target[t], tree)) {
         return 1;
       }
     }
@@ -451,25 +437,14 @@ static double firsthit(const urModel* m, const urData* d, int gm, int gs, const 
 // the order of a cheap lower bound (bounding-sphere gap, support-function bound) and only while
 // that bound is below the best so far.
 static double separation(const urModel* m, urData* d, int root) {
-  int n = m->npair + m->nbag*urMAXBAGTGT, k = 0;
+  int n = ur_cand_count(m), k = 0;
   int g1s[n > 0 ? n : 1], g2s[n > 0 ? n : 1];
   double lb[n > 0 ? n : 1];
   static const double u0[3] = {0, 0, 0};
-  for (int i = 0; i < n; i++) {
-    int g1, g2;
-    if (i < m->npair) {
-      g1 = m->pair[i].geom1;
-      g2 = m->pair[i].geom2;
-    } else {
-      const urAirbag* bg = m->bag + (i - m->npair)/urMAXBAGTGT;
-      int t = (i - m->npair) % urMAXBAGTGT;
-      if (t >= bg->ntarget) {
-        continue;
-      }
-      g1 = bg->geom;
-      g2 = bg->target[t];
-    }
-    if (g2 < 0 || intree(m, g1, root) == intree(m, g2, root)) {
+  urCand c;
+  for (int i = 0; ur_cand_at(m, i, &c) == 0; i++) {
+    int g1 = c.g1, g2 = c.g2;
+    if (g2 < 0 || ur_geom_intree(m, g1, root) == ur_geom_intree(m, g2, root)) {
       continue;
     }
     const double* c1 = d->gxpos + 3*g1;
@@ -540,7 +515,7 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
     d->tpeak[k] = 0;
   }
   for (int i = 0; i < m->npair; i++) {
-    if (intree(m, m->pair[i].geom1, root) || intree(m, m->pair[i].geom2, root)) {
+    if (ur_geom_intree(m, m->pair[i].geom1, root) || ur_geom_intree(m, m->pair[i].geom2, root)) {
       memset(d->pair + i, 0, sizeof(urPairData));
       d->pdepth[i] = -INFINITY;
     }
@@ -561,24 +536,13 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
 
   // earliest possible contact of the tree's swept bounding spheres
   double tmin = INFINITY;
-  for (int i = 0; i < m->npair; i++) {
-    int g1 = m->pair[i].geom1, g2 = m->pair[i].geom2;
-    int in1 = intree(m, g1, root), in2 = intree(m, g2, root);
+  urCand c;
+  for (int k = 0; ur_cand_at(m, k, &c) == 0; k++) {
+    int in1 = ur_geom_intree(m, c.g1, root), in2 = ur_geom_intree(m, c.g2, root);
     if (in1 && !in2) {
-      tmin = fmin(tmin, firsthit(m, d, g1, g2, vel));
+      tmin = fmin(tmin, firsthit(m, d, c.g1, c.g2, vel));
     } else if (in2 && !in1) {
-      tmin = fmin(tmin, firsthit(m, d, g2, g1, vel));
-    }
-  }
-  for (int i = 0; i < m->nbag; i++) {
-    const urAirbag* b = m->bag + i;
-    for (int t = 0; t < b->ntarget; t++) {
-      int inb = intree(m, b->geom, root), int_ = intree(m, b->target[t], root);
-      if (inb && !int_) {
-        tmin = fmin(tmin, firsthit(m, d, b->geom, b->target[t], vel));
-      } else if (int_ && !inb) {
-        tmin = fmin(tmin, firsthit(m, d, b->target[t], b->geom, vel));
-      }
+      tmin = fmin(tmin, firsthit(m, d, c.g2, c.g1, vel));
     }
   }
 
