@@ -29,6 +29,7 @@ static void axisrot(double R[9], const double a[3], double ang) {
 #undef urFN
 #undef urD
 #undef urAXISROT
+#include "engine_template_check.h"
 
 //---------------------------------- world poses ---------------------------------------------------
 
