@@ -153,6 +153,16 @@ typedef struct uraCtx {
   /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
   int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
   struct uraMc* mc;                /* the last montecarlo's samples (NULL: none; app_risk.h) */
+  char impact_title[400];          /* the last impact's conditions and results (plot titles) */
+  struct {                         /* the last trace's signals (ura_last_trace; ura_trace_free) */
+    double* t;
+    double* v;
+    char** names;
+    const char** units;
+    int nsig;
+  } trace;
+  int canvas_w, canvas_h;          /* canvas (pixels) a plot of several panels asks for; 0: the
+                                      terminal's default (ura_plot_canvas) */
   /* optional: asked before each command runs (the executing fuzz target bounds the work and the
      files of its inputs); nonzero refuses the command with c->err set */
   int (*guard)(struct uraCtx* c, int argc, char** argv);
@@ -319,6 +329,7 @@ int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
 /* models (model.c) */
 int ura_models_init(uraCtx* c);
 void ura_models_free(uraCtx* c);
+void ura_trace_free(uraCtx* c);                 /* the signals of the last trace */
 const urModel* ura_model(uraCtx* c);          /* compiled model, or NULL with c->err */
 const urImpactSetup* ura_setup(uraCtx* c);    /* settled stance, or NULL with c->err */
 void ura_model_stale(uraCtx* c);

@@ -329,28 +329,25 @@ static int gp_error(const char* err, char* buf, size_t n) {
   return 0;
 }
 
-/* a canvas size (pixels) a plot of several panels asks for; 0: the terminal's default */
-static int canvas_w, canvas_h;
-
 /* a file terminal named without options gets the canvas size asked for (vector terminals in
    inches at 100 pixels per inch) */
-static void put_terminal(FILE* f, const char* term) {
+static void put_terminal(const uraCtx* c, FILE* f, const char* term) {
   static const char* const px[] = {"png", "pngcairo", "svg", "jpeg", "gif", NULL};
   static const char* const in[] = {"pdfcairo", "epscairo", NULL};
   int bare = !strpbrk(term, " \t"), kind = 0;
   for (int i = 0; px[i]; i++) if (!strcmp(term, px[i])) kind = 1;
   for (int i = 0; in[i]; i++) if (!strcmp(term, in[i])) kind = 2;
   fprintf(f, "set terminal %s", term);
-  if (bare && kind == 1 && canvas_w > 0) fprintf(f, " size %d,%d", canvas_w, canvas_h);
-  if (bare && kind == 2 && canvas_w > 0) {
-    fprintf(f, " size %.2fin,%.2fin", canvas_w / 100.0, canvas_h / 100.0);
+  if (bare && kind == 1 && c->canvas_w > 0) fprintf(f, " size %d,%d", c->canvas_w, c->canvas_h);
+  if (bare && kind == 2 && c->canvas_w > 0) {
+    fprintf(f, " size %.2fin,%.2fin", c->canvas_w / 100.0, c->canvas_h / 100.0);
   }
   fputc('\n', f);
 }
 
-void ura_plot_canvas(int w, int h) {
-  canvas_w = w;
-  canvas_h = h;
+void ura_plot_canvas(uraCtx* c, int w, int h) {
+  c->canvas_w = w;
+  c->canvas_h = h;
 }
 
 /* the terminal and output preamble, or -1 with the error recorded: both checked again (they
@@ -374,7 +371,7 @@ static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
     return ura_fail(c, "%s: terminal '%s' writes a file; use 'set output FILE'", who, term);
   }
   *window = !*out && kind == TERM_WINDOW;
-  if (*term) put_terminal(f, term);
+  if (*term) put_terminal(c, f, term);
   if (*out) {
     fprintf(f, "set output ");
     quote(f, out);
@@ -909,11 +906,10 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
   traceargs ta = {tr, n, sel, t1, t2};
   if (n > 1) {
     int cols = n > 4 ? 2 : 1, rows = (n + cols - 1) / cols;
-    canvas_w = cols == 1 ? 800 : 1100;
-    canvas_h = 80 + 230 * rows;
+    ura_plot_canvas(c, cols == 1 ? 800 : 1100, 80 + 230 * rows);
   }
   int rc = run_script(c, who, write_trace, &ta);
-  canvas_w = canvas_h = 0;
+  ura_plot_canvas(c, 0, 0);
   free(sel);
   return rc;
 }

@@ -30,7 +30,7 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len);
 
 /* the canvas size (pixels) the next plot asks of a file terminal named without options (png,
    svg, pdfcairo, ...); 0, 0: the terminal's default */
-void ura_plot_canvas(int w, int h);
+void ura_plot_canvas(uraCtx* c, int w, int h);
 
 /* curves in one panel: title, axis labels (NULL: none) */
 int ura_plot_xy(uraCtx* c, const char* who, const char* title, const char* xlabel,
