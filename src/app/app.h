@@ -10,6 +10,7 @@
 #include "uasrisk/descent.h"
 #include "uasrisk/grid.h"
 #include "uasrisk/impact.h"
+#include "uasrisk/init.h"
 #include "uasrisk/injury.h"
 #include "uasrisk/modellang.h"
 #include "uasrisk/parametric.h"

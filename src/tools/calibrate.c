@@ -439,8 +439,7 @@ int main(int argc, char** argv) {
              (int)(eq - argv[i]), argv[i], eq + 1);
   }
   if (maxeval > 0) s.maxeval = maxeval;
-  gsl_set_error_handler_off();
-  ura_init(&c);
+  ura_init(&c);                                  /* GSL failures as return codes (ur_init) */
   c.out = fopen("/dev/null", "w");
   if (!c.out || ura_models_init(&c) || load_tables(&c, &s)) return 1;
   for (int i = 0; i < nload; i++) {
