@@ -24,8 +24,8 @@ static int probe(int flags) {
   fflush(NULL);
   pid_t pid = fork();
   if (pid == 0) {
-    signal(SIGABRT, SIG_DFL);                        /* cmocka catches it in the parent */
-    if (!freopen("/dev/null", "w", stderr)) _exit(3);   /* GSL's default handler prints */
+    signal(SIGABRT, SIG_DFL);                         /* cmocka catches it in the parent */
+    if (!freopen("/dev/null", "w", stderr)) _exit(3); /* GSL's default handler prints */
     if (flags >= 0 && ur_init((unsigned)flags)) _exit(2);
     gsl_vector *a = gsl_vector_calloc(2), *b = gsl_vector_calloc(3);
     if (!a || !b) _exit(4);
@@ -40,7 +40,7 @@ static void test_default_aborts(void** state) {
   (void)state;
   int st = probe(-1);
   assert_true(WIFSIGNALED(st) && WTERMSIG(st) == SIGABRT);
-  st = probe(0);                                   /* no option: GSL's handler is left alone */
+  st = probe(0); /* no option: GSL's handler is left alone */
   assert_true(WIFSIGNALED(st) && WTERMSIG(st) == SIGABRT);
 }
 
@@ -59,9 +59,9 @@ static void test_unknown_flag(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_default_aborts),
-    cmocka_unit_test(test_codes),
-    cmocka_unit_test(test_unknown_flag),
+      cmocka_unit_test(test_default_aborts),
+      cmocka_unit_test(test_codes),
+      cmocka_unit_test(test_unknown_flag),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -85,8 +85,10 @@ static void test_fusion(void** state) {
   (void)state;
   urInjuryParams p;
   ur_injury_defaults(&p);
-  const double q[][urNCRIT] = {{0.1, 0.2, 0.3, 0.9}, {1e-9, 0.123456789, 0.987654321, 0.5},
-                               {0, 0, 0, 1}, {0.3333333333333333, 0.7, 0.0001, 0.25}};
+  const double q[][urNCRIT] = {{0.1, 0.2, 0.3, 0.9},
+                               {1e-9, 0.123456789, 0.987654321, 0.5},
+                               {0, 0, 0, 1},
+                               {0.3333333333333333, 0.7, 0.0001, 0.25}};
   for (size_t i = 0; i < sizeof q / sizeof q[0]; i++) {
     double a = ur_pof_fuse_used(q[i], &p), b = ur_pof_fuse(q[i][0], q[i][1], q[i][2]);
     assert_memory_equal(&a, &b, sizeof a);
@@ -110,7 +112,7 @@ static void test_defl_curve(void** state) {
   assert_true(fabs(ur_pof_defl(0.063, &p) - 0.046165508729) < 1e-9);
   assert_true(ur_pof_defl(0, &p) == 0 && ur_pof_defl(-0.01, &p) == 0);
   assert_true(ur_pof_defl(NAN, &p) == 0);
-  assert_true(fabs(ur_pof_defl(1.0, &p) - p.defl_pof) < 1e-9);   /* saturates at defl_pof */
+  assert_true(fabs(ur_pof_defl(1.0, &p) - p.defl_pof) < 1e-9); /* saturates at defl_pof */
 
   // the `pof defl` curve: from 0, ascending, reaching 99.5 % of its limit
   double x[51], y[51];
@@ -127,7 +129,7 @@ static void test_defl_curve(void** state) {
 static void test_defl_eval(void** state) {
   (void)state;
   static double t[NS], d[NS], acc[NS];
-  const double amp = 0.05, dt = 1e-4, w = M_PI / (2 * 100 * dt);   /* peak at sample 100 */
+  const double amp = 0.05, dt = 1e-4, w = M_PI / (2 * 100 * dt); /* peak at sample 100 */
   for (int i = 0; i < NS; i++) {
     t[i] = i * dt;
     d[i] = amp * sin(w * t[i]);
@@ -142,7 +144,7 @@ static void test_defl_eval(void** state) {
   assert_true(off.pof[urCRIT_DEFL] == ur_pof_defl(off.val[urVAL_DEFL_THORAX], &p));
   assert_true(off.pof[urCRIT_DEFL] > 0.02);
   double three = ur_pof_fuse(off.pof[urCRIT_HIC], off.pof[urCRIT_NIJ], off.pof[urCRIT_VC]);
-  assert_memory_equal(&off.p_total, &three, sizeof three);   /* off: not in the fusion */
+  assert_memory_equal(&off.p_total, &three, sizeof three); /* off: not in the fusion */
 
   p.use_defl = 1;
   assert_int_equal(ur_injury_eval(&in, &p, NULL, &on), 0);
@@ -180,9 +182,9 @@ static void test_value_format(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_rows_consistent), cmocka_unit_test(test_columns_stable),
-    cmocka_unit_test(test_fusion),          cmocka_unit_test(test_defl_curve),
-    cmocka_unit_test(test_defl_eval),       cmocka_unit_test(test_value_format),
+      cmocka_unit_test(test_rows_consistent), cmocka_unit_test(test_columns_stable),
+      cmocka_unit_test(test_fusion),          cmocka_unit_test(test_defl_curve),
+      cmocka_unit_test(test_defl_eval),       cmocka_unit_test(test_value_format),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

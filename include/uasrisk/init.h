@@ -14,7 +14,7 @@
 extern "C" {
 #endif
 
-#define urINIT_GSL_CODES 1u        /* turn GSL's abort handler off: its errors become codes */
+#define urINIT_GSL_CODES 1u /* turn GSL's abort handler off: its errors become codes */
 
 /* apply the options (bits above); 0, or -1 for an unknown bit (then nothing is changed) */
 int ur_init(unsigned flags);

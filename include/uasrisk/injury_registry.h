@@ -16,62 +16,62 @@ extern "C" {
 
 /* every value a criterion computes, in column order (the CSV names are in the rows) */
 typedef enum {
-  urVAL_HIC15 = 0,                 /* HIC15, - */
-  urVAL_HIC_T1,                    /* HIC15 window start, s */
-  urVAL_HIC_T2,                    /* HIC15 window end, s */
-  urVAL_NIJ,                       /* max of the four Nij modes, - */
-  urVAL_NIJ_MODE,                  /* urNijMode of that maximum (0 NTF, 1 NTE, 2 NCF, 3 NCE) */
-  urVAL_NIJ_TF,                    /* per-mode maxima, - */
+  urVAL_HIC15 = 0, /* HIC15, - */
+  urVAL_HIC_T1,    /* HIC15 window start, s */
+  urVAL_HIC_T2,    /* HIC15 window end, s */
+  urVAL_NIJ,       /* max of the four Nij modes, - */
+  urVAL_NIJ_MODE,  /* urNijMode of that maximum (0 NTF, 1 NTE, 2 NCF, 3 NCE) */
+  urVAL_NIJ_TF,    /* per-mode maxima, - */
   urVAL_NIJ_TE,
   urVAL_NIJ_CF,
   urVAL_NIJ_CE,
-  urVAL_VC_THORAX,                 /* VC of the thorax, m/s */
-  urVAL_VC_ABDOMEN,                /* VC of the abdomen, m/s */
-  urVAL_DEFL_THORAX,               /* peak thorax deflection, m */
+  urVAL_VC_THORAX,   /* VC of the thorax, m/s */
+  urVAL_VC_ABDOMEN,  /* VC of the abdomen, m/s */
+  urVAL_DEFL_THORAX, /* peak thorax deflection, m */
   urNVAL
 } urValueId;
 
 /* every criterion, in fusion order */
 typedef enum {
-  urCRIT_HIC = 0,                  /* head: HIC -> P_HIC */
-  urCRIT_NIJ,                      /* neck: Nij -> P_NI */
-  urCRIT_VC,                       /* thorax and abdomen: VC -> P_VC */
-  urCRIT_DEFL,                     /* thorax: peak deflection -> P_DEFL (off by default) */
+  urCRIT_HIC = 0, /* head: HIC -> P_HIC */
+  urCRIT_NIJ,     /* neck: Nij -> P_NI */
+  urCRIT_VC,      /* thorax and abdomen: VC -> P_VC */
+  urCRIT_DEFL,    /* thorax: peak deflection -> P_DEFL (off by default) */
   urNCRIT
 } urCritId;
 
 /* where a value appears (urValueDef.where) */
-#define urIN_ROW 1                 /* `impact` rows (CSV columns of the impact command) */
-#define urIN_CELL 2                /* grid cells: `grid cells`, `export grid` */
-#define urIN_LOAD 4                /* read back by `grid load` */
-#define urIN_PANEL 8               /* the viewer's inspect panel */
-#define urIN_CURSOR 16             /* the viewer's cursor line */
+#define urIN_ROW    1  /* `impact` rows (CSV columns of the impact command) */
+#define urIN_CELL   2  /* grid cells: `grid cells`, `export grid` */
+#define urIN_LOAD   4  /* read back by `grid load` */
+#define urIN_PANEL  8  /* the viewer's inspect panel */
+#define urIN_CURSOR 16 /* the viewer's cursor line */
 
 struct urInjuryParams;
 struct urInjuryResult;
 struct urInjuryInput;
 
 typedef struct {
-  const char* name;                /* CSV column name (a public interface: never renamed) */
-  const char* unit;                /* SI unit of the stored value, "" for none */
-  int crit;                        /* the criterion that computes it (urCritId) */
-  int where;                       /* urIN_* bits */
-  const char* label;               /* display label before the number ("" for the main value) */
-  const char* fmt;                 /* display format of the number (after scale) */
-  double scale;                    /* display = stored * scale */
-  const char* dunit;               /* display unit, "" for none */
-  const char* const* names;        /* labels of an integer-coded value (NULL: a number) */
+  const char* name;         /* CSV column name (a public interface: never renamed) */
+  const char* unit;         /* SI unit of the stored value, "" for none */
+  int crit;                 /* the criterion that computes it (urCritId) */
+  int where;                /* urIN_* bits */
+  const char* label;        /* display label before the number ("" for the main value) */
+  const char* fmt;          /* display format of the number (after scale) */
+  double scale;             /* display = stored * scale */
+  const char* dunit;        /* display unit, "" for none */
+  const char* const* names; /* labels of an integer-coded value (NULL: a number) */
   int nnames;
 } urValueDef;
 
 typedef struct {
-  const char* name;                /* curve name of `pof NAME` (also the suffix of pof_col) */
-  const char* pof_col;             /* CSV column of its PoF ("p_hic") */
-  const char* label;               /* short display label ("HIC15") */
-  const char* channels;            /* input channels it reads (urInjuryInput fields), words */
-  int val0, nval;                  /* its values: ids [val0, val0 + nval) */
-  const char* use;                 /* the setting that switches it into the fusion, NULL: always */
-  int use_default;                 /* whether it is in the fusion by default */
+  const char* name;     /* curve name of `pof NAME` (also the suffix of pof_col) */
+  const char* pof_col;  /* CSV column of its PoF ("p_hic") */
+  const char* label;    /* short display label ("HIC15") */
+  const char* channels; /* input channels it reads (urInjuryInput fields), words */
+  int val0, nval;       /* its values: ids [val0, val0 + nval) */
+  const char* use;      /* the setting that switches it into the fusion, NULL: always */
+  int use_default;      /* whether it is in the fusion by default */
   /* compute its values and PoF from conditioned channels into out->val, out->pof and its
      detail fields; absent channels leave zeros. work: ur_injury_work_size(n) doubles less the
      channel buffers (see injury_eval.c). 0, or -1 on bad input. */

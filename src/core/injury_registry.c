@@ -61,8 +61,7 @@ static int crit_vc(const urInjuryInput* in, const urInjuryParams* p, double* wor
     out->p_vc_thorax = ur_pof_vc(out->vc_thorax.vc, urTHORAX, p);
   }
   if (in->abdomen_d) {
-    if (ur_vc(in->t, in->abdomen_d, in->n, p->vc_d0_abdomen, p->vc_sf, NULL,
-              &out->vc_abdomen)) {
+    if (ur_vc(in->t, in->abdomen_d, in->n, p->vc_d0_abdomen, p->vc_sf, NULL, &out->vc_abdomen)) {
       return -1;
     }
     out->p_vc_abdomen = ur_pof_vc(out->vc_abdomen.vc, urABDOMEN, p);
@@ -111,36 +110,36 @@ static const char* const kNijModes[] = {"NTF", "NTE", "NCF", "NCE"};
 #define ALL (urIN_ROW | urIN_CELL | urIN_LOAD | urIN_PANEL | urIN_CURSOR)
 
 static const urValueDef kValues[urNVAL] = {
-  [urVAL_HIC15] = {"hic15", "", urCRIT_HIC, ALL, "", "%.1f", 1, "", NULL, 0},
-  [urVAL_HIC_T1] = {"hic_t1", "s", urCRIT_HIC, urIN_LOAD | urIN_PANEL, "window", "%.2f", 1e3,
-                    "ms", NULL, 0},
-  [urVAL_HIC_T2] = {"hic_t2", "s", urCRIT_HIC, urIN_LOAD | urIN_PANEL, "to", "%.2f", 1e3, "ms",
-                    NULL, 0},
-  [urVAL_NIJ] = {"nij", "", urCRIT_NIJ, ALL, "", "%.3f", 1, "", NULL, 0},
-  [urVAL_NIJ_MODE] = {"nij_mode", "", urCRIT_NIJ, urIN_LOAD | urIN_PANEL | urIN_CURSOR, "mode",
-                      "%.0f", 1, "", kNijModes, 4},
-  [urVAL_NIJ_TF] = {"nij_tf", "", urCRIT_NIJ, urIN_ROW, "tf", "%.3f", 1, "", NULL, 0},
-  [urVAL_NIJ_TE] = {"nij_te", "", urCRIT_NIJ, urIN_ROW, "te", "%.3f", 1, "", NULL, 0},
-  [urVAL_NIJ_CF] = {"nij_cf", "", urCRIT_NIJ, urIN_ROW, "cf", "%.3f", 1, "", NULL, 0},
-  [urVAL_NIJ_CE] = {"nij_ce", "", urCRIT_NIJ, urIN_ROW, "ce", "%.3f", 1, "", NULL, 0},
-  [urVAL_VC_THORAX] = {"vc_thorax", "m/s", urCRIT_VC, ALL, "thorax", "%.3f", 1, "m/s", NULL, 0},
-  [urVAL_VC_ABDOMEN] = {"vc_abdomen", "m/s", urCRIT_VC, ALL, "abdomen", "%.3f", 1, "m/s", NULL,
-                        0},
-  [urVAL_DEFL_THORAX] = {"defl_thorax", "m", urCRIT_DEFL, ALL, "thorax", "%.1f", 1e3, "mm", NULL,
-                         0},
+    [urVAL_HIC15] = {"hic15", "", urCRIT_HIC, ALL, "", "%.1f", 1, "", NULL, 0},
+    [urVAL_HIC_T1] = {"hic_t1", "s", urCRIT_HIC, urIN_LOAD | urIN_PANEL, "window", "%.2f", 1e3,
+                      "ms", NULL, 0},
+    [urVAL_HIC_T2] = {"hic_t2", "s", urCRIT_HIC, urIN_LOAD | urIN_PANEL, "to", "%.2f", 1e3, "ms",
+                      NULL, 0},
+    [urVAL_NIJ] = {"nij", "", urCRIT_NIJ, ALL, "", "%.3f", 1, "", NULL, 0},
+    [urVAL_NIJ_MODE] = {"nij_mode", "", urCRIT_NIJ, urIN_LOAD | urIN_PANEL | urIN_CURSOR, "mode",
+                        "%.0f", 1, "", kNijModes, 4},
+    [urVAL_NIJ_TF] = {"nij_tf", "", urCRIT_NIJ, urIN_ROW, "tf", "%.3f", 1, "", NULL, 0},
+    [urVAL_NIJ_TE] = {"nij_te", "", urCRIT_NIJ, urIN_ROW, "te", "%.3f", 1, "", NULL, 0},
+    [urVAL_NIJ_CF] = {"nij_cf", "", urCRIT_NIJ, urIN_ROW, "cf", "%.3f", 1, "", NULL, 0},
+    [urVAL_NIJ_CE] = {"nij_ce", "", urCRIT_NIJ, urIN_ROW, "ce", "%.3f", 1, "", NULL, 0},
+    [urVAL_VC_THORAX] = {"vc_thorax", "m/s", urCRIT_VC, ALL, "thorax", "%.3f", 1, "m/s", NULL, 0},
+    [urVAL_VC_ABDOMEN] = {"vc_abdomen", "m/s", urCRIT_VC, ALL, "abdomen", "%.3f", 1, "m/s", NULL,
+                          0},
+    [urVAL_DEFL_THORAX] = {"defl_thorax", "m", urCRIT_DEFL, ALL, "thorax", "%.1f", 1e3, "mm", NULL,
+                           0},
 };
 
 #undef ALL
 
 static const urCriterion kCriteria[urNCRIT] = {
-  [urCRIT_HIC] = {"hic", "p_hic", "HIC15", "head_acc", urVAL_HIC15, 3, NULL, 1, crit_hic,
-                  pof_hic},
-  [urCRIT_NIJ] = {"nij", "p_nij", "Nij", "neck_fz neck_my [neck_fx]", urVAL_NIJ, 6, NULL, 1,
-                  crit_nij, pof_nij},
-  [urCRIT_VC] = {"vc", "p_vc", "VC", "thorax_d abdomen_d", urVAL_VC_THORAX, 2, NULL, 1, crit_vc,
-                 pof_vc},
-  [urCRIT_DEFL] = {"defl", "p_defl", "Dmax", "thorax_d", urVAL_DEFL_THORAX, 1, "use_defl", 0,
-                   crit_defl, pof_defl},
+    [urCRIT_HIC] = {"hic", "p_hic", "HIC15", "head_acc", urVAL_HIC15, 3, NULL, 1, crit_hic,
+                    pof_hic},
+    [urCRIT_NIJ] = {"nij", "p_nij", "Nij", "neck_fz neck_my [neck_fx]", urVAL_NIJ, 6, NULL, 1,
+                    crit_nij, pof_nij},
+    [urCRIT_VC] = {"vc", "p_vc", "VC", "thorax_d abdomen_d", urVAL_VC_THORAX, 2, NULL, 1, crit_vc,
+                   pof_vc},
+    [urCRIT_DEFL] = {"defl", "p_defl", "Dmax", "thorax_d", urVAL_DEFL_THORAX, 1, "use_defl", 0,
+                     crit_defl, pof_defl},
 };
 
 const urCriterion* ur_criterion(int k) {
