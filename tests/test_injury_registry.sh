@@ -34,4 +34,18 @@ check grid_cells_defl cond '[ "$RC" -eq 0 ] &&
 check grid_load_defl cond '[ "$(awk -F, "/^dpar/{n++} n==1&&!/^(#|dpar)/{print \$8}" "$TMP/out" | md5sum)" = \
   "$(awk -F, "/^dpar/{n++} n==2&&!/^(#|dpar)/{print \$8}" "$TMP/out" | md5sum)" ] &&
   awk -F, "!/^(#|dpar)/ && \$8 > 0 {f=1} END{exit !f}" "$TMP/out"'
+
+# grid load reads every registry column it knows: the times, an integer-coded value by its codes
+# (one line naming them when out of range), the PoF columns
+cat >"$TMP/x.csv" <<'CSV'
+dpar,dperp,contact,hic15,hic_t1,hic_t2,nij,nij_mode,vc_thorax,vc_abdomen,defl_thorax,p_hic,p_nij,p_vc,p_defl,p
+0,0,1,1000,0.001,0.016,0.5,2,0.1,0.05,0.02,0.3,0.1,0.01,0.001,0.4
+0,0.05,0,0,0,0,0,0,0,0,0,0,0,0,0,0
+CSV
+run -c "set format csv; set use_defl 1; grid load $TMP/x.csv; grid cells"
+check load_registry_columns cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^0.000,0.000,1,1000,0.5,0.1,0.05,0.02,0.4$"'
+sed 's/,0.5,2,/,0.5,7,/' "$TMP/x.csv" >"$TMP/y.csv"
+run -c "grid load $TMP/y.csv"
+check load_bad_code cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "y.csv:2: nij_mode is 7, expected 0 (NTF), 1 (NTE), 2 (NCF) or 3 (NCE)"'
 finish
