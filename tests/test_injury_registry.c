@@ -67,7 +67,19 @@ static void test_columns_stable(void** state) {
   assert_string_equal(buf, "hic15,nij,vc_thorax,vc_abdomen");
   shown(urIN_LOAD, &p, buf, sizeof buf);
   assert_string_equal(buf, "hic15,hic_t1,hic_t2,nij,nij_mode,vc_thorax,vc_abdomen");
-  for (int k = 0; k < urNCRIT; k++) assert_int_equal(ur_criterion_used(k, &p), k != urCRIT_DEFL);
+  for (int k = 0; k < urNCRIT; k++) {
+    const urCriterion* c = ur_criterion(k);
+    assert_int_equal(ur_criterion_used(k, &p), k != urCRIT_DEFL);
+    if (!c->use) continue;
+    // the offset and the named setting are the same int, and its default is the row's
+    double v;
+    assert_int_equal(ur_injury_param_get(&p, c->use, &v), 0);
+    assert_int_equal((int)v, c->use_default);
+    assert_int_equal(ur_injury_param_set(&p, c->use, 1), 0);
+    assert_true(ur_criterion_used(k, &p));
+    assert_int_equal(ur_injury_param_set(&p, c->use, 0), 0);
+    assert_false(ur_criterion_used(k, &p));
+  }
 
   assert_int_equal(ur_injury_param_set(&p, "use_defl", 1), 0);
   assert_true(ur_criterion_used(urCRIT_DEFL, &p));

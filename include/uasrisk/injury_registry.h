@@ -71,6 +71,7 @@ typedef struct {
   const char* channels; /* input channels it reads (urInjuryInput fields), words */
   int val0, nval;       /* its values: ids [val0, val0 + nval) */
   const char* use;      /* the setting that switches it into the fusion, NULL: always */
+  unsigned use_off;     /* where that int setting is: offsetof(urInjuryParams, ...) */
   int use_default;      /* whether it is in the fusion by default */
   /* compute its values and PoF from conditioned channels into out->val, out->pof and its
      detail fields; absent channels leave zeros. work: ur_injury_work_size(n) doubles less the

@@ -2,6 +2,7 @@
  * and each criterion's compute function: the glue from conditioned channels to the criterion
  * functions (ur_hic, ur_nij, ur_vc, ...) and their PoF curves. */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -132,14 +133,14 @@ static const urValueDef kValues[urNVAL] = {
 #undef ALL
 
 static const urCriterion kCriteria[urNCRIT] = {
-    [urCRIT_HIC] = {"hic", "p_hic", "HIC15", "head_acc", urVAL_HIC15, 3, NULL, 1, crit_hic,
+    [urCRIT_HIC] = {"hic", "p_hic", "HIC15", "head_acc", urVAL_HIC15, 3, NULL, 0, 1, crit_hic,
                     pof_hic},
-    [urCRIT_NIJ] = {"nij", "p_nij", "Nij", "neck_fz neck_my [neck_fx]", urVAL_NIJ, 6, NULL, 1,
+    [urCRIT_NIJ] = {"nij", "p_nij", "Nij", "neck_fz neck_my [neck_fx]", urVAL_NIJ, 6, NULL, 0, 1,
                     crit_nij, pof_nij},
-    [urCRIT_VC] = {"vc", "p_vc", "VC", "thorax_d abdomen_d", urVAL_VC_THORAX, 2, NULL, 1, crit_vc,
-                   pof_vc},
-    [urCRIT_DEFL] = {"defl", "p_defl", "Dmax", "thorax_d", urVAL_DEFL_THORAX, 1, "use_defl", 0,
-                     crit_defl, pof_defl},
+    [urCRIT_VC] = {"vc", "p_vc", "VC", "thorax_d abdomen_d", urVAL_VC_THORAX, 2, NULL, 0, 1,
+                   crit_vc, pof_vc},
+    [urCRIT_DEFL] = {"defl", "p_defl", "Dmax", "thorax_d", urVAL_DEFL_THORAX, 1, "use_defl",
+                     offsetof(urInjuryParams, use_defl), 0, crit_defl, pof_defl},
 };
 
 const urCriterion* ur_criterion(int k) {
@@ -161,9 +162,7 @@ int ur_criterion_used(int k, const urInjuryParams* p) {
   const urCriterion* c = ur_criterion(k);
   if (!c) return 0;
   if (!c->use) return 1;
-  double v = c->use_default;
-  ur_injury_param_get(p, c->use, &v);
-  return v != 0;
+  return *(const int*)((const char*)p + c->use_off) != 0; /* per cell in the calibration */
 }
 
 int ur_value_shown(int v, int where, const urInjuryParams* p) {
