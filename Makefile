@@ -18,6 +18,8 @@
 #   make mpi      ./uasrisk-mpi, the MPI build (OpenMPI from Debian; mpirun -n N ./uasrisk-mpi FILE)
 #   make check-tsan  a ThreadSanitizer build (build-tsan/) runs a short grid on 2 threads and is
 #                 interrupted by SIGINT in the middle (scripts/check-tsan.sh)
+#   make format   apply the house style (.clang-format, clang-format 14) to every C source
+#                 (scripts/format-files.sh); make check fails when a file would change
 #   make install PREFIX=/usr/local
 
 PREFIX  ?= /usr/local
@@ -51,7 +53,7 @@ LIB     = $(BUILD)/libuasrisk.a
 APPLIB  = $(BUILD)/libuasrisk-app.a
 
 .PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz \
-  check-tsan mpi mpideps
+  check-tsan mpi mpideps format
 all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -220,6 +222,12 @@ install: all
 	install -m 644 man/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 	for f in man/*.5; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man5/; done; true
 	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man7/; done; true
+
+# the house style on every source; the transitional list of sources not yet formatted goes
+CLANG_FORMAT ?= clang-format
+format:
+	$(CLANG_FORMAT) -i $$(sh scripts/format-files.sh)
+	rm -f .clang-format-pending
 
 clean:
 	rm -rf $(BUILD) build-san build-vg build-fuzz build-tsan uasrisk uasrisk-mpi

@@ -67,8 +67,7 @@ static int same_cells(const urGrid* a, const urGrid* b) {
   for (int k = 0; k < a->nrow * a->ncol; k++) {
     const urCell *x = &a->cell[k], *y = &b->cell[k];
     if (x->status != y->status || x->contact != y->contact || x->p != y->p ||
-        x->hic15 != y->hic15 || x->nij != y->nij || x->vc_thorax != y->vc_thorax ||
-        x->vc_abdomen != y->vc_abdomen) {
+        memcmp(x->val, y->val, sizeof x->val) || memcmp(x->pof, y->pof, sizeof x->pof)) {
       return 0;
     }
   }

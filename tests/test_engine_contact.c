@@ -284,8 +284,62 @@ static void test_commit_list_once(void** state) {
   ur_model_free(m);
 }
 
+/* the one enumeration of contact candidates: the pairs in order, then each airbag's targets in
+   order, dense indices, and the slots of urImpactSetup.cand_src (npair + bag * urMAXBAGTGT + t) */
+static void test_candidates(void** state) {
+  (void)state;
+  urModel* m = ur_model_new();
+  double I[6] = {0.01, 0.01, 0.01, 0, 0, 0};
+  int a = ur_model_add_body(m, "a", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, a, 1, NULL, I);
+  int b = ur_model_add_body(m, "b", -1, urJNT_FREE, (double[3]){0, 0, 1}, NULL);
+  ur_model_set_inertia(m, b, 1, NULL, I);
+  int ga = ur_model_add_ellipsoid(m, "ga", a, NULL, NULL, (double[3]){0.1, 0.1, 0.1});
+  int gb = ur_model_add_ellipsoid(m, "gb", b, NULL, NULL, (double[3]){0.1, 0.1, 0.1});
+  int gc = ur_model_add_ellipsoid(m, "gc", b, NULL, NULL, (double[3]){0.1, 0.1, 0.1});
+  urLaw law = {0};
+  ur_law_hertz(&law, 1e8, 0.3, 0.1, 1e8, 0.3, 0.1, 0, 0, 0);
+  ur_model_add_pair(m, "ab", ga, gb, &law);
+  ur_model_add_pair(m, "ground", ga, -1, &law);
+  for (int i = 0; i < 2; i++) {
+    urAirbag bag = {0};
+    snprintf(bag.name, sizeof bag.name, "bag%d", i);
+    bag.geom = ga;
+    bag.gas.v0 = 0.02;
+    bag.gas.p0 = bag.gas.patm = 101325;
+    bag.gas.gamma = 1.4;
+    bag.kappa = 1;
+    bag.thickness = 0.05;
+    bag.ntarget = i + 1;
+    bag.target[0] = gc;
+    bag.target[1] = gb;
+    ur_model_add_airbag(m, &bag);
+  }
+  assert_int_equal(ur_model_compile(m), 0);
+
+  const int want[][5] = {{ga, gb, -1, 0, 0}, {ga, -1, -1, 1, 1},
+                         {ga, gc, 0, 0, 2}, {ga, gc, 1, 0, 2 + urMAXBAGTGT},
+                         {ga, gb, 1, 1, 3 + urMAXBAGTGT}};
+  assert_int_equal(ur_cand_count(m), 5);
+  urCand c;
+  for (int k = 0; k < 5; k++) {
+    assert_int_equal(ur_cand_at(m, k, &c), 0);
+    assert_int_equal(c.g1, want[k][0]);
+    assert_int_equal(c.g2, want[k][1]);
+    assert_int_equal(c.bag, want[k][2]);
+    assert_int_equal(c.idx, want[k][3]);
+    assert_int_equal(c.src, want[k][4]);
+  }
+  assert_int_equal(ur_cand_at(m, 5, &c), -1);
+  assert_int_equal(ur_cand_at(m, -1, &c), -1);
+  assert_int_equal(ur_cand_slots(m), 2 + 2 * urMAXBAGTGT);
+  assert_true(ur_geom_intree(m, gc, b) && !ur_geom_intree(m, gc, a) && !ur_geom_intree(m, -1, a));
+  ur_model_free(m);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_candidates),
     cmocka_unit_test(test_hertz_sphere_plane),
     cmocka_unit_test(test_two_body_momentum),
     cmocka_unit_test(test_slide_to_roll),

@@ -38,7 +38,7 @@ static int read_dyn(const urModel* m, int i) {
 }
 
 /* byte-compare what a lane run keeps against the scalar run; fails naming the first field */
-static void assert_same(const urModel* m, const urData* a, const urData* b, long step) {
+static void assert_same(const urModel* m, urData* a, urData* b, long step) {
   // the lane run computes the ellipsoids' orientations on first use: every one through the
   // accessor, then byte-compared like the rest
   for (int g = 0; g < m->ngeom; g++) {

@@ -34,7 +34,7 @@ static int impact(void* ctx, int worker, urCell* c) {
   double d = hypot(c->dpar, c->dperp);
   c->contact = 1;
   c->p = d <= s->r ? 1.0 : exp(-50 * (d - s->r)) * (0.5 + 0.1 * sin(40 * c->dperp * c->dperp));
-  c->hic15 = 1000 * c->p;
+  c->val[urVAL_HIC15] = 1000 * c->p;
   return 0;
 }
 

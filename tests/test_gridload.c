@@ -156,7 +156,7 @@ static void paper_cells(void** state) {
   assert_int_equal(z->status, urCELL_NOCONTACT);
   assert_int_equal(z->contact, 0);
   assert_true(z->p == 0);
-  assert_true(isnan(a->hic15));          /* the paper gives no criteria */
+  assert_true(isnan(a->val[urVAL_HIC15]));          /* the paper gives no criteria */
   assert_string_equal(f->c.last.casename, "C");
   assert_true(fabs(f->c.last.speed - 40.6) < 1e-12);
   assert_true(fabs(f->c.last.angle - 90) < 1e-12);
@@ -296,11 +296,12 @@ static void export_format(void** state) {
   /* cells where the rows put them; contact 0 is no contact, contact with p 0 is done */
   urCell* a = find(g, 0.05, 0);
   assert_int_equal(a->status, urCELL_DONE);
-  assert_true(a->hic15 == 1200.5 && a->nij == 0.8 && a->vc_abdomen == 0.2 && a->p == 0.75);
+  assert_true(a->val[urVAL_HIC15] == 1200.5 && a->val[urVAL_NIJ] == 0.8 &&
+              a->val[urVAL_VC_ABDOMEN] == 0.2 && a->p == 0.75);
   assert_int_equal(find(g, 0.05, -0.05)->status, urCELL_NOCONTACT);
   assert_int_equal(find(g, 0.05, 0.05)->status, urCELL_DONE);
   assert_int_equal(find(g, 0.05, 0.05)->contact, 1);
-  assert_true(isnan(find(g, 0, -0.05)->hic15));
+  assert_true(isnan(find(g, 0, -0.05)->val[urVAL_HIC15]));
 
   /* three cells are not in the file: pending, so the grid is partial */
   assert_int_equal(g->npending, 3);

@@ -57,7 +57,8 @@ static void stance(void** state) {
    A above 0 and below B; at the centres of A and B HIC's share of P is at least 2/3, the
    calibration's constraint (uasrisk-model(5)), within 0.005 */
 static double hic_share(const urImpactResult* r) {
-  return r->inj.p_hic / (r->inj.p_hic + r->inj.p_nij + r->inj.p_vc);
+  const double* q = r->inj.pof;
+  return q[urCRIT_HIC] / (q[urCRIT_HIC] + q[urCRIT_NIJ] + q[urCRIT_VC]);
 }
 
 /* a case at the paper's impact speed (Table 2), as the calibration ran it */

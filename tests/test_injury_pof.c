@@ -220,10 +220,11 @@ static void test_eval_all(void** state)
   assert_true(r.vc_abdomen.vc == 0.0 && r.p_vc_abdomen == 0.0);
 
   // PoFs and the fusion
-  assert_true(fabs(r.p_hic - ur_pof_hic(r.hic15.hic, &p)) < 1e-15);
-  assert_true(fabs(r.p_nij - ur_pof_nij(1.0, &p)) < 1e-6);
-  assert_true(fabs(r.p_vc - r.p_vc_thorax) < 1e-15);
-  assert_true(fabs(r.p_total - (1 - (1 - r.p_hic) * (1 - r.p_nij) * (1 - r.p_vc))) < 1e-15);
+  assert_true(fabs(r.pof[urCRIT_HIC] - ur_pof_hic(r.hic15.hic, &p)) < 1e-15);
+  assert_true(fabs(r.pof[urCRIT_NIJ] - ur_pof_nij(1.0, &p)) < 1e-6);
+  assert_true(fabs(r.pof[urCRIT_VC] - r.p_vc_thorax) < 1e-15);
+  assert_true(fabs(r.p_total - (1 - (1 - r.pof[urCRIT_HIC]) * (1 - r.pof[urCRIT_NIJ]) *
+                                        (1 - r.pof[urCRIT_VC]))) < 1e-15);
 
   // without HIC36 (as impacts evaluate): hic36 zero, everything else the same bits
   urInjuryResult r2;

@@ -69,7 +69,7 @@ static void inspect_cells(uraCtx* c) {
     assert_int_equal(c->inspect(c, &g->cell[k], &tr), 0);
     assert_true(tr.n > 10 && tr.nsig > 6);
     assert_memory_equal(&c->last_impact.p, &cell.p, sizeof cell.p);
-    assert_memory_equal(&c->last_impact.inj.hic15.hic, &cell.hic15, sizeof cell.hic15);
+    assert_memory_equal(&c->last_impact.inj.hic15.hic, &cell.val[urVAL_HIC15], sizeof(double));
     tried++;
   }
   assert_int_equal(tried, 3);

@@ -255,10 +255,11 @@ typedef struct {
 
 //---------------------------------- data ----------------------------------------------------------
 
-/* what the narrow phase reads or writes for a pair (rate to ls.dmax) shares one cache line; a
-   pair culled by its bounding spheres is not touched (its depth is in urData.pdepth) */
-typedef struct __attribute__((aligned(64))) {
-  double rate;                     /* penetration rate, m/s */
+/* what the narrow phase reads or writes for a pair (rate to ls.dmax) shares one cache line (the
+   first member's C11 alignment aligns the whole struct to 64 bytes); a pair culled by its
+   bounding spheres is not touched (its depth is in urData.pdepth) */
+typedef struct {
+  _Alignas(64) double rate;        /* penetration rate, m/s */
   double fn;                       /* normal force, N */
   double ft;                       /* friction force magnitude, N */
   double area;                     /* section area used (foam), m^2 */

@@ -12,6 +12,8 @@
 #ifndef UASRISK_GRID_H
 #define UASRISK_GRID_H
 
+#include "uasrisk/injury_registry.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -28,12 +30,8 @@ typedef struct {
   int status;                      /* urCellStatus */
   int contact;                     /* the drone touched the person */
   int mirrored;                    /* copied from the mirror cell (-dperp) */
-  double hic15;                    /* HIC15 */
-  double hic_t1, hic_t2;           /* HIC15 window, s */
-  double nij;                      /* max of the four Nij modes */
-  int nij_mode;                    /* 0 NTF, 1 NTE, 2 NCF, 3 NCE */
-  double vc_thorax, vc_abdomen;    /* VC, m/s */
-  double p_hic, p_nij, p_vc;       /* injury-specific PoF */
+  double val[urNVAL];              /* the criteria's values (urValueId; NAN: not known) */
+  double pof[urNCRIT];             /* injury-specific PoF (urCritId; NAN: not known) */
   double p;                        /* fused PoF (eq. 3.1) */
   int extrap;                      /* laws or curves used beyond their data (urImpactResult) */
   char reason[64];                 /* why a cell failed */

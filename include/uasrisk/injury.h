@@ -9,6 +9,8 @@
 #ifndef UASRISK_INJURY_H
 #define UASRISK_INJURY_H
 
+#include "uasrisk/injury_registry.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -28,7 +30,7 @@ typedef enum {
   urVCFUSE_MAX = 1                 /* P_VC = max(P_thorax, P_abdomen) */
 } urVcFuse;
 
-typedef struct {
+typedef struct urInjuryParams {
   /* signal conditioning */
   int filter;                      /* 1: CFC-filter channels before the criteria (default 0) */
   double cfc_head;                 /* head acceleration channel class, Hz (1000) */
@@ -65,6 +67,12 @@ typedef struct {
   double vc_pof_abdomen;           /* P{F | abdomen AIS5+ injury}, - (1.0 = pof_ais6) */
   int vc_rescale;                  /* 1: rescale the VC curves to 0 at VC = 0 (default 1) */
   int vc_fuse;                     /* urVcFuse thorax/abdomen combination (default product) */
+  /* peak thorax deflection (urCRIT_DEFL, off by default: not in the paper) */
+  int use_defl;                    /* 1: P_DEFL enters the fusion (3.1) (default 0) */
+  double defl_alpha;               /* AIS3+ curve 1/(1+exp(alpha - beta D^e)), D in mm (10.5456) */
+  double defl_beta;                /* its beta, mm^-e (1.568) */
+  double defl_exp;                 /* its exponent e, - (0.4612) */
+  double defl_pof;                 /* P{F | thorax AIS3+}, - (0.09 = pof_ais3) */
 } urInjuryParams;
 
 /* fill the documented defaults */
@@ -174,7 +182,12 @@ double ur_pof_vc(double vc, urRegion region, const urInjuryParams* p);
 /* P{F_VC} from the two regions' PoF (vc_fuse setting) */
 double ur_pof_vc_fuse(double p_thorax, double p_abdomen, const urInjuryParams* p);
 
-/* overall PoF, eq. (3.1): 1 - (1 - P_HIC)(1 - P_NI)(1 - P_VC) */
+/* P{F | peak thorax deflection d (m)}: the AIS3+ curve rescaled to 0 at d = 0, times
+   defl_pof; 0 for d <= 0 */
+double ur_pof_defl(double d, const urInjuryParams* p);
+
+/* overall PoF, eq. (3.1): 1 - (1 - P_HIC)(1 - P_NI)(1 - P_VC); with criteria beyond the paper's
+   three, ur_pof_fuse_used (injury_registry.h) */
 double ur_pof_fuse(double p_hic, double p_nij, double p_vc);
 
 typedef enum {
@@ -182,7 +195,8 @@ typedef enum {
   urPOF_NIJ = 1,                   /* x = Nij */
   urPOF_VC = 2,                    /* x = VC (m/s) in both regions, fused by vc_fuse */
   urPOF_VC_THORAX = 3,             /* x = thorax VC, m/s */
-  urPOF_VC_ABDOMEN = 4             /* x = abdomen VC, m/s */
+  urPOF_VC_ABDOMEN = 4,            /* x = abdomen VC, m/s */
+  urPOF_DEFL = 5                   /* x = peak thorax deflection, m */
 } urPofKind;
 
 /* n >= 2 points (x ascending from 0, prob) of a PoF curve over a range that reaches 99.5 % of
@@ -191,7 +205,7 @@ int ur_pof_curve(urPofKind kind, const urInjuryParams* p, int n, double* x, doub
 
 /* ---- all criteria at once ---- */
 
-typedef struct {
+typedef struct urInjuryInput {
   int n;                           /* number of samples */
   const double* t;                 /* times, s, ascending */
   const double* head_acc[3];       /* head CG acceleration x,y,z, m/s^2; only [0]: resultant */
@@ -204,25 +218,25 @@ typedef struct {
                                       0.036, when hic holds it anyway) */
 } urInjuryInput;
 
-typedef struct {
+typedef struct urInjuryResult {
+  double val[urNVAL];              /* every criterion's values (urValueId), SI */
+  double pof[urNCRIT];             /* every criterion's PoF (urCritId), used in the fusion or not */
   urHic hic15;                     /* HIC15 */
   urHic hic36;                     /* HIC36 */
   urHic hic;                       /* HIC with hic_window, used for P_HIC */
   urNij nij;                       /* Nij modes and maximum */
   urVc vc_thorax;                  /* thorax VC */
   urVc vc_abdomen;                 /* abdomen VC */
-  double p_hic;                    /* P{F_HIC} */
-  double p_nij;                    /* P{F_NI} */
   double p_vc_thorax;              /* P{F | VC thorax} */
   double p_vc_abdomen;             /* P{F | VC abdomen} */
-  double p_vc;                     /* P{F_VC} */
-  double p_total;                  /* P{F | impact}, eq. (3.1) */
+  double p_total;                  /* P{F | impact}, eq. (3.1) over the criteria in use */
 } urInjuryResult;
 
 /* doubles of workspace ur_injury_eval needs for n samples */
 int ur_injury_work_size(int n);
 
-/* Filter (if p->filter), compute every criterion whose channels are given, and the PoFs.
+/* Filter (if p->filter), compute every criterion of the registry whose channels are given, and
+   the PoFs.
    Absent channels give zero criteria and zero PoF. work: ur_injury_work_size(n) doubles, or NULL
    to allocate once. Returns 0, -1 bad input, -2 out of memory, -3 filter on but samples not
    uniformly spaced or sampled too slowly for the CFC. */

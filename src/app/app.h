@@ -10,6 +10,7 @@
 #include "uasrisk/descent.h"
 #include "uasrisk/grid.h"
 #include "uasrisk/impact.h"
+#include "uasrisk/init.h"
 #include "uasrisk/injury.h"
 #include "uasrisk/modellang.h"
 #include "uasrisk/parametric.h"
@@ -155,6 +156,16 @@ typedef struct uraCtx {
   /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
   int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
   struct uraMc* mc;                /* the last montecarlo's samples (NULL: none; app_risk.h) */
+  char impact_title[400];          /* the last impact's conditions and results (plot titles) */
+  struct {                         /* the last trace's signals (ura_last_trace; ura_trace_free) */
+    double* t;
+    double* v;
+    char** names;
+    const char** units;
+    int nsig;
+  } trace;
+  int canvas_w, canvas_h;          /* canvas (pixels) a plot of several panels asks for; 0: the
+                                      terminal's default (ura_plot_canvas) */
   /* optional: asked before each command runs (the executing fuzz target bounds the work and the
      files of its inputs); nonzero refuses the command with c->err set */
   int (*guard)(struct uraCtx* c, int argc, char** argv);
@@ -323,6 +334,7 @@ int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
 /* models (model.c) */
 int ura_models_init(uraCtx* c);
 void ura_models_free(uraCtx* c);
+void ura_trace_free(uraCtx* c);                 /* the signals of the last trace */
 const urModel* ura_model(uraCtx* c);          /* compiled model, or NULL with c->err */
 const urImpactSetup* ura_setup(uraCtx* c);    /* settled stance, or NULL with c->err */
 void ura_model_stale(uraCtx* c);
@@ -395,8 +407,9 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond);   /* refuses angles below ur
    at an eccentricity, at any angle 0-90 deg */
 int ura_impact_aim(uraCtx* c, int argc, char** argv);
 /* the table of impact rows (columns dpar,dperp,contact,hic15,...,p) and one row of it */
-uraTable* ura_impact_table(void);
-void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r);
+uraTable* ura_impact_table(const urInjuryParams* ip);
+void ura_impact_cells(uraTable* t, const urInjuryParams* ip, double dpar, double dperp,
+                      const urImpactResult* r);
 /* the impact row at a terminal (impact_compact.c): whether to print it, its table (columns
    dpar,dperp,hic15,nij,vc_th,vc_ab,p_hic,p_nij,p_vc,p) and its row with a note */
 int ura_impact_compact(const uraCtx* c);

@@ -51,7 +51,7 @@ const uraCmd ura_cmds[] = {
    "with the drone's line of travel UP and SIDE (m) from the head's centre, at any angle 0-90 "
    "deg; columns "
    "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
-   "p_vc,p"},
+   "p_vc,p (with 'set use_defl 1' also defl_thorax after vc_abdomen and p_defl after p_vc)"},
   {"history", ura_cmd_history, 0, -1, uraC_NONE, "history [all|CHANNEL...] [FROM:TO]",
    "the last impact at a glance: the peak of each derived signal and its time, the injury "
    "criteria and P; all: every sensor channel's samples (time and every channel, as export "
@@ -65,7 +65,7 @@ const uraCmd ura_cmds[] = {
    "print, list (params: with units and who set them; PREFIX: the names starting with it), "
    "write or load the model set (human, drone, airbags, options: uasrisk-model(5)), or drop a "
    "part (before loading another drone)"},
-  {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen",
+  {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen|defl",
    "print a probability-of-fatality curve of the injury criteria as columns x,p "
    "(Appendix C; settings in uasrisk-injury(7))"},
   {"export", ura_cmd_export, 2, 2, uraC_NONE,

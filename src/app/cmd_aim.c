@@ -51,7 +51,7 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
 
   /* the row of 'impact', its offset columns holding the eccentricity */
   int compact = ura_impact_compact(c);
-  uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table();
+  uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table(&c->st.injury);
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; aim head: dpar, "
                  "dperp are the eccentricity (up, side) of the line of travel from the head's "
                  "centre; HIC15 window %.2f-%.2f ms", c->st.casename, cond.speed, cond.angle,
@@ -61,7 +61,7 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
                    r.extrap);
   }
   if (compact) ura_impact_compact_row(t, up, side, &r);
-  else ura_impact_cells(t, up, side, &r);
+  else ura_impact_cells(t, &c->st.injury, up, side, &r);
   ura_table_print(c, t);
   return 0;
 }

@@ -36,16 +36,8 @@ static int cell_result(urCell* cell, int rc, const urImpactResult* r) {
     return -1;
   }
   cell->contact = r->contact;
-  cell->hic15 = r->inj.hic15.hic;
-  cell->hic_t1 = r->inj.hic15.t1;
-  cell->hic_t2 = r->inj.hic15.t2;
-  cell->nij = r->inj.nij.nij;
-  cell->nij_mode = r->inj.nij.which;
-  cell->vc_thorax = r->inj.vc_thorax.vc;
-  cell->vc_abdomen = r->inj.vc_abdomen.vc;
-  cell->p_hic = r->inj.p_hic;
-  cell->p_nij = r->inj.p_nij;
-  cell->p_vc = r->inj.p_vc;
+  memcpy(cell->val, r->inj.val, sizeof cell->val);
+  memcpy(cell->pof, r->inj.pof, sizeof cell->pof);
   cell->p = r->contact ? r->p : 0.0;
   cell->extrap = r->nextrap;
   return 0;
@@ -351,13 +343,20 @@ void ura_last_free(uraCtx* c) {
   memset(&c->last, 0, sizeof c->last);
 }
 
-/* every cell of the last grid: dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p */
+/* every cell of the last grid: dpar,dperp,contact, the cell values of the criteria in use
+   (hic15,nij,vc_thorax,vc_abdomen by default), p */
 static int grid_cells(uraCtx* c) {
-  static const char* const cols[] = {"dpar", "dperp", "contact", "hic15", "nij", "vc_thorax",
-                                     "vc_abdomen", "p"};
+  const char* cols[3 + urNVAL + 1] = {"dpar", "dperp", "contact"};
+  int vals[urNVAL], nval = 0, ncol = 3;
+  for (int v = 0; v < urNVAL; v++) {
+    if (!ur_value_shown(v, urIN_CELL, &c->st.injury)) continue;
+    vals[nval++] = v;
+    cols[ncol++] = ur_value_def(v)->name;
+  }
+  cols[ncol++] = "p";
   urGrid* g = c->last.g;
   if (!g) return ura_fail(c, "grid cells: no grid yet; run 'grid' or 'grid load FILE'");
-  uraTable* t = ura_table_new(8, cols);
+  uraTable* t = ura_table_new(ncol, cols);
   ura_table_note(t, "grid of case %s, wind %g m/s, face %g deg (%s); status: %s%s",
                  c->last.casename, c->last.wind, c->last.face, c->last.source,
                  g->complete ? "complete" : "PARTIAL",
@@ -383,10 +382,7 @@ static int grid_cells(uraCtx* c) {
     ura_table_cell(t, "%.3f", e->dpar);
     ura_table_cell(t, "%.3f", e->dperp);
     ura_table_cell(t, "%d", e->contact);
-    ura_table_cell(t, "%.6g", e->hic15);
-    ura_table_cell(t, "%.6g", e->nij);
-    ura_table_cell(t, "%.6g", e->vc_thorax);
-    ura_table_cell(t, "%.6g", e->vc_abdomen);
+    for (int i = 0; i < nval; i++) ura_table_cell(t, "%.6g", e->val[vals[i]]);
     ura_table_cell(t, "%.6g", e->p);
   }
   ura_table_print(c, t);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "uasrisk/injury_registry.h"
 #include "plot.h"
 
 /* FROM:TO in ms into s; 1 if word is a range, 0 if not, -1 with a message if malformed */
@@ -65,11 +66,11 @@ static int summary(uraCtx* c, const uraTrace* tr) {
   ura_table_cell(t, "HIC15");
   ura_table_cell(t, "%.1f", in->hic15.hic);
   ura_table_cell(t, "%.2f-%.2f ms", 1e3 * in->hic15.t1, 1e3 * in->hic15.t2);
-  ura_table_cell(t, "%.4f", in->p_hic);
+  ura_table_cell(t, "%.4f", in->pof[urCRIT_HIC]);
   ura_table_cell(t, "Nij");
   ura_table_cell(t, "%.3f", in->nij.nij);
   ura_table_cell(t, "%s", modes[w]);
-  ura_table_cell(t, "%.4f", in->p_nij);
+  ura_table_cell(t, "%.4f", in->pof[urCRIT_NIJ]);
   ura_table_cell(t, "VC thorax");
   ura_table_cell(t, "%.3g m/s", in->vc_thorax.vc);
   ura_table_cell(t, "%.2f ms", 1e3 * in->vc_thorax.t);
@@ -78,6 +79,19 @@ static int summary(uraCtx* c, const uraTrace* tr) {
   ura_table_cell(t, "%.3g m/s", in->vc_abdomen.vc);
   ura_table_cell(t, "%.2f ms", 1e3 * in->vc_abdomen.t);
   ura_table_cell(t, "%.4f", in->p_vc_abdomen);
+  /* the registry's criteria after HIC, Nij and VC that are in use (e.g. use_defl 1) */
+  for (int k = urCRIT_VC + 1; k < urNCRIT; k++) {
+    const urCriterion* cr = ur_criterion(k);
+    if (!ur_criterion_used(k, &c->st.injury)) continue;
+    char v[64], d[96];
+    ur_value_format(cr->val0, in->val[cr->val0], v, sizeof v);
+    const urValueDef* vd = ur_value_def(cr->val0);
+    snprintf(d, sizeof d, "%s%s%s", v, *vd->dunit ? " " : "", vd->dunit);
+    ura_table_cell(t, "%s", cr->label);
+    ura_table_cell(t, "%s", d);
+    ura_table_cell(t, "-");
+    ura_table_cell(t, "%.4f", in->pof[k]);
+  }
   ura_table_cell(t, "P");
   ura_table_cell(t, "-");
   ura_table_cell(t, "-");

@@ -38,27 +38,33 @@ void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, i
   }
 }
 
-/* the columns of impact rows, shared with grid cells */
-static const char* const impact_cols[] = {"dpar", "dperp", "contact", "hic15", "nij", "nij_tf",
-                                          "nij_te", "nij_cf", "nij_ce", "vc_thorax",
-                                          "vc_abdomen", "p_hic", "p_nij", "p_vc", "p"};
-
-uraTable* ura_impact_table(void) {
-  return ura_table_new(15, impact_cols);
+/* the columns of impact rows: dpar,dperp,contact, the row values of the criteria in use, their
+   PoF columns, p (the paper's criteria: hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,
+   vc_abdomen,p_hic,p_nij,p_vc) */
+uraTable* ura_impact_table(const urInjuryParams* ip) {
+  const char* cols[3 + urNVAL + urNCRIT + 1] = {"dpar", "dperp", "contact"};
+  int n = 3;
+  for (int v = 0; v < urNVAL; v++) {
+    if (ur_value_shown(v, urIN_ROW, ip)) cols[n++] = ur_value_def(v)->name;
+  }
+  for (int k = 0; k < urNCRIT; k++) {
+    if (ur_criterion_used(k, ip)) cols[n++] = ur_criterion(k)->pof_col;
+  }
+  cols[n++] = "p";
+  return ura_table_new(n, cols);
 }
 
-void ura_impact_cells(uraTable* t, double dpar, double dperp, const urImpactResult* r) {
+void ura_impact_cells(uraTable* t, const urInjuryParams* ip, double dpar, double dperp,
+                      const urImpactResult* r) {
   ura_table_cell(t, "%g", dpar);
   ura_table_cell(t, "%g", dperp);
   ura_table_cell(t, "%d", r->contact);
-  ura_table_cell(t, "%.6g", r->inj.hic15.hic);
-  ura_table_cell(t, "%.6g", r->inj.nij.nij);
-  for (int k = 0; k < 4; k++) ura_table_cell(t, "%.6g", r->inj.nij.mode[k]);
-  ura_table_cell(t, "%.6g", r->inj.vc_thorax.vc);
-  ura_table_cell(t, "%.6g", r->inj.vc_abdomen.vc);
-  ura_table_cell(t, "%.6g", r->inj.p_hic);
-  ura_table_cell(t, "%.6g", r->inj.p_nij);
-  ura_table_cell(t, "%.6g", r->inj.p_vc);
+  for (int v = 0; v < urNVAL; v++) {
+    if (ur_value_shown(v, urIN_ROW, ip)) ura_table_cell(t, "%.6g", r->inj.val[v]);
+  }
+  for (int k = 0; k < urNCRIT; k++) {
+    if (ur_criterion_used(k, ip)) ura_table_cell(t, "%.6g", r->inj.pof[k]);
+  }
   ura_table_cell(t, "%.6g", r->p);
 }
 
@@ -118,7 +124,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
 
   /* one row */
   int compact = ura_impact_compact(c);
-  uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table();
+  uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table(&c->st.injury);
   ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
                  "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
                  1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
@@ -129,7 +135,7 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
                  ur_impact_tau_shift(s, &cond));
   if (compact) ura_impact_compact_row(t, dpar, dperp, &r);
-  else ura_impact_cells(t, dpar, dperp, &r);
+  else ura_impact_cells(t, &c->st.injury, dpar, dperp, &r);
   ura_table_print(c, t);
   return 0;
 }
@@ -228,9 +234,6 @@ int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
 
 /* ---- the histories of the last impact as a trace (plot history, the viewer's inspection) ---- */
 
-/* the conditions and results of the last impact, for plot titles */
-static char impact_title[400];
-
 void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
                      double dpar, double dperp, const urImpactResult* r) {
   c->have_impact = 1;
@@ -241,8 +244,8 @@ void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpac
   char w[32];
   if (isfinite(wind)) snprintf(w, sizeof w, "%g m/s", wind);
   else snprintf(w, sizeof w, "?");
-  snprintf(impact_title, sizeof impact_title, "case %s, wind %s, face %g deg, %.3g m/s at %.3g "
-           "deg\nimpact %s %.2f m, %s %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
+  snprintf(c->impact_title, sizeof c->impact_title, "case %s, wind %s, face %g deg, %.3g m/s at "
+           "%.3g deg\nimpact %s %.2f m, %s %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
            casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle,
            cond->aim ? "aimed at the head, up" : "at dpar", dpar, cond->aim ? "side" : "dperp",
            dperp, r->inj.hic15.hic, r->inj.nij.nij, r->contact ? r->p : 0.0);
@@ -254,21 +257,13 @@ static const char* const trace_names[] = {"head_acc", "neck_fz", "neck_my", "nec
 static const char* const trace_units[] = {"m/s^2", "N", "N m", "N", "m", "m"};
 #define NDERIVED 6
 
-static struct {
-  double* t;
-  double* v;
-  char** names;
-  const char** units;
-  int nsig;
-} tr_store;
-
-static void trace_free(void) {
-  for (int k = NDERIVED; k < tr_store.nsig; k++) free(tr_store.names[k]);
-  free(tr_store.t);
-  free(tr_store.v);
-  free(tr_store.names);
-  free(tr_store.units);
-  memset(&tr_store, 0, sizeof tr_store);
+void ura_trace_free(uraCtx* c) {
+  for (int k = NDERIVED; k < c->trace.nsig; k++) free(c->trace.names[k]);
+  free(c->trace.t);
+  free(c->trace.v);
+  free(c->trace.names);
+  free(c->trace.units);
+  memset(&c->trace, 0, sizeof c->trace);
 }
 
 int ura_last_trace(uraCtx* c, uraTrace* tr) {
@@ -277,46 +272,46 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
   const urModel* m = s->m;
   const urData* d = c->work.d;
   int n = d->nhist, nsig = NDERIVED + m->nsensordata, stride = 1 + m->nsensordata;
-  trace_free();
-  tr_store.t = malloc(sizeof(double) * n);
-  tr_store.v = calloc((size_t)nsig * n, sizeof(double));
-  tr_store.names = calloc(nsig, sizeof(char*));
-  tr_store.units = calloc(nsig, sizeof(char*));
-  tr_store.nsig = nsig;
+  ura_trace_free(c);
+  c->trace.t = malloc(sizeof(double) * n);
+  c->trace.v = calloc((size_t)nsig * n, sizeof(double));
+  c->trace.names = calloc(nsig, sizeof(char*));
+  c->trace.units = calloc(nsig, sizeof(char*));
+  c->trace.nsig = nsig;
   for (int k = 0; k < NDERIVED; k++) {
-    tr_store.names[k] = (char*)trace_names[k];
-    tr_store.units[k] = trace_units[k];
+    c->trace.names[k] = (char*)trace_names[k];
+    c->trace.units[k] = trace_units[k];
   }
 
   /* raw channels, then the derived ones in the injury criteria's signs */
-  for (int i = 0; i < n; i++) tr_store.t[i] = d->hist[(size_t)i * stride];
+  for (int i = 0; i < n; i++) c->trace.t[i] = d->hist[(size_t)i * stride];
   for (int j = 0; j < m->nsensordata; j++) {
     char buf[80];
     channel_name(m, j, buf, sizeof buf);
-    tr_store.names[NDERIVED + j] = strdup(buf);
-    tr_store.units[NDERIVED + j] = "SI";
+    c->trace.names[NDERIVED + j] = strdup(buf);
+    c->trace.units[NDERIVED + j] = "SI";
     for (int i = 0; i < n; i++) {
-      tr_store.v[(size_t)(NDERIVED + j) * n + i] = d->hist[(size_t)i * stride + 1 + j];
+      c->trace.v[(size_t)(NDERIVED + j) * n + i] = d->hist[(size_t)i * stride + 1 + j];
     }
   }
   int a = m->sensor[s->s_head_acc].adr, nk = m->sensor[s->s_neck].adr;
   for (int i = 0; i < n; i++) {
     const double* row = d->hist + (size_t)i * stride + 1;
-    tr_store.v[0 * (size_t)n + i] = sqrt(row[a] * row[a] + row[a + 1] * row[a + 1] +
+    c->trace.v[0 * (size_t)n + i] = sqrt(row[a] * row[a] + row[a + 1] * row[a + 1] +
                                          row[a + 2] * row[a + 2]);
-    tr_store.v[1 * (size_t)n + i] = -row[nk + 2];
-    tr_store.v[2 * (size_t)n + i] = -row[nk + 4];
-    tr_store.v[3 * (size_t)n + i] = row[nk + 0];
-    if (s->s_chest >= 0) tr_store.v[4 * (size_t)n + i] = -row[m->sensor[s->s_chest].adr];
-    if (s->s_abd >= 0) tr_store.v[5 * (size_t)n + i] = -row[m->sensor[s->s_abd].adr];
+    c->trace.v[1 * (size_t)n + i] = -row[nk + 2];
+    c->trace.v[2 * (size_t)n + i] = -row[nk + 4];
+    c->trace.v[3 * (size_t)n + i] = row[nk + 0];
+    if (s->s_chest >= 0) c->trace.v[4 * (size_t)n + i] = -row[m->sensor[s->s_chest].adr];
+    if (s->s_abd >= 0) c->trace.v[5 * (size_t)n + i] = -row[m->sensor[s->s_abd].adr];
   }
   tr->n = n;
   tr->nsig = nsig;
-  tr->t = tr_store.t;
-  tr->v = tr_store.v;
-  tr->names = (const char* const*)tr_store.names;
-  tr->units = (const char* const*)tr_store.units;
-  tr->title = impact_title[0] ? impact_title : NULL;
+  tr->t = c->trace.t;
+  tr->v = c->trace.v;
+  tr->names = (const char* const*)c->trace.names;
+  tr->units = (const char* const*)c->trace.units;
+  tr->title = c->impact_title[0] ? c->impact_title : NULL;
   return 0;
 }
 

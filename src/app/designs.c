@@ -120,8 +120,10 @@ static urGrid* difference(const urGrid* a, const urGrid* b) {
     cell->status = urCELL_DONE;
     cell->contact = (ca && ca->contact) || (cb && cb->contact);
     cell->p = (cb ? cb->p : 0) - (ca ? ca->p : 0);
-    cell->hic15 = (cb ? cb->hic15 : 0) - (ca ? ca->hic15 : 0);
-    cell->nij = (cb ? cb->nij : 0) - (ca ? ca->nij : 0);
+    for (int v = 0; v < urNVAL; v++) {
+      if (v != urVAL_HIC15 && v != urVAL_NIJ) continue;   /* the two the difference has kept */
+      cell->val[v] = (cb ? cb->val[v] : 0) - (ca ? ca->val[v] : 0);
+    }
   }
   ur_grid_summarise(g);
   return g;

@@ -35,15 +35,21 @@ typedef struct {
   int nfld, capfld;
 } reader;
 
-/* export columns we know; others are ignored */
-enum {
-  X_DPAR, X_DPERP, X_CONTACT, X_STATUS, X_HIC15, X_HIC_T1, X_HIC_T2, X_NIJ, X_NIJ_MODE,
-  X_VC_THORAX, X_VC_ABDOMEN, X_P_HIC, X_P_NIJ, X_P_VC, X_P, X_N
-};
-static const char* const xnames[X_N] = {
-  "dpar", "dperp", "contact", "status", "hic15", "hic_t1", "hic_t2", "nij", "nij_mode",
-  "vc_thorax", "vc_abdomen", "p_hic", "p_nij", "p_vc", "p"
-};
+/* export columns we know (others are ignored): the offsets, contact, status and p, then every
+   criterion value grid load reads (urIN_LOAD) and every criterion's PoF, by the registry */
+enum { X_DPAR, X_DPERP, X_CONTACT, X_STATUS, X_P, X_VAL, X_POF = X_VAL + urNVAL,
+       X_N = X_POF + urNCRIT };
+
+/* the name of known column k, NULL for a value grid load does not read */
+static const char* xname(int k) {
+  static const char* const fixed[X_VAL] = {"dpar", "dperp", "contact", "status", "p"};
+  if (k < X_VAL) return fixed[k];
+  if (k < X_POF) {
+    const urValueDef* d = ur_value_def(k - X_VAL);
+    return d->where & urIN_LOAD ? d->name : NULL;
+  }
+  return ur_criterion(k - X_POF)->pof_col;
+}
 
 /* record FILE:LINE: message as the failure; always -1 */
 static int bad(reader* r, int line, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -218,11 +224,8 @@ static void grid_free(urGrid* g) {
 
 /* result fields the file does not give */
 static void cell_unknown(urCell* cl) {
-  cl->hic15 = cl->hic_t1 = cl->hic_t2 = NAN;
-  cl->nij = NAN;
-  cl->nij_mode = 0;
-  cl->vc_thorax = cl->vc_abdomen = NAN;
-  cl->p_hic = cl->p_nij = cl->p_vc = NAN;
+  for (int v = 0; v < urNVAL; v++) cl->val[v] = NAN;
+  for (int k = 0; k < urNCRIT; k++) cl->pof[k] = NAN;
 }
 
 /* the paper's table: header along,0.00,0.05,...; rows of percent, dperp >= 0 only */
@@ -412,6 +415,20 @@ static double common_gap(double* gap, int n) {
   return best;
 }
 
+/* an integer-coded value outside its codes: "nij_mode is 5, expected 0 (NTF), 1 (NTE), 2 (NCF)
+   or 3 (NCE)" */
+static int bad_code(reader* r, const urValueDef* d, double v) {
+  char list[uraERRLEN] = "";
+  size_t len = 0;
+  for (int i = 0; i < d->nnames && len < sizeof list; i++) {
+    int w = snprintf(list + len, sizeof list - len, "%s%d (%s)",
+                     i == 0 ? "" : i == d->nnames - 1 ? " or " : ", ", i, d->names[i]);
+    if (w < 0) break;
+    len += (size_t)w;
+  }
+  return bad(r, r->line, "%s is %g, expected %s", d->name, v, list);
+}
+
 /* parse the fields of one export row into a cell */
 static int export_row(reader* r, const int* col, xrow* x) {
   urCell* cl = &x->cell;
@@ -423,21 +440,17 @@ static int export_row(reader* r, const int* col, xrow* x) {
   if (field_number(r, col[X_P], "p", &cl->p)) return -1;
   if (cl->p < 0 || cl->p > 1) return bad(r, r->line, "p is %g, outside [0, 1]", cl->p);
 
-  /* criteria: numbers, or nan for unknown */
-  static const int opt[] = {X_HIC15, X_HIC_T1, X_HIC_T2, X_NIJ, X_VC_THORAX, X_VC_ABDOMEN,
-                            X_P_HIC, X_P_NIJ, X_P_VC};
-  double* dst[] = {&cl->hic15, &cl->hic_t1, &cl->hic_t2, &cl->nij, &cl->vc_thorax,
-                   &cl->vc_abdomen, &cl->p_hic, &cl->p_nij, &cl->p_vc};
-  for (size_t k = 0; k < sizeof opt / sizeof opt[0]; k++) {
-    if (col[opt[k]] >= 0 && field_optional(r, col[opt[k]], xnames[opt[k]], dst[k])) return -1;
-  }
-  if (col[X_NIJ_MODE] >= 0) {
-    double v;
-    if (field_number(r, col[X_NIJ_MODE], "nij_mode", &v)) return -1;
-    if (v != floor(v) || v < 0 || v > 3) {
-      return bad(r, r->line, "nij_mode is %g, expected 0 (NTF), 1 (NTE), 2 (NCF) or 3 (NCE)", v);
+  /* criteria: numbers, or nan for unknown; an integer-coded value one of its codes */
+  for (int k = X_VAL; k < X_N; k++) {
+    if (col[k] < 0) continue;
+    const urValueDef* d = k < X_POF ? ur_value_def(k - X_VAL) : NULL;
+    double* dst = k < X_POF ? &cl->val[k - X_VAL] : &cl->pof[k - X_POF];
+    if (d && d->names) {
+      if (field_number(r, col[k], d->name, dst)) return -1;
+      if (*dst != floor(*dst) || *dst < 0 || *dst >= d->nnames) return bad_code(r, d, *dst);
+    } else if (field_optional(r, col[k], xname(k), dst)) {
+      return -1;
     }
-    cl->nij_mode = (int)v;
   }
 
   /* contact and status: given, or told by p */
@@ -461,8 +474,8 @@ static int load_export(reader* r, int hline, urGrid** out) {
   for (int k = 0; k < X_N; k++) col[k] = -1;
   for (int i = 0; i < r->nfld; i++) {
     for (int k = 0; k < X_N; k++) {
-      if (strcmp(r->fld[i], xnames[k])) continue;
-      if (col[k] >= 0) return bad(r, hline, "header: column '%s' appears twice", xnames[k]);
+      if (!xname(k) || strcmp(r->fld[i], xname(k))) continue;
+      if (col[k] >= 0) return bad(r, hline, "header: column '%s' appears twice", xname(k));
       col[k] = i;
     }
   }

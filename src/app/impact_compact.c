@@ -38,8 +38,8 @@ void ura_impact_compact_row(uraTable* t, double dpar, double dperp, const urImpa
   ura_table_cell(t, "%.3f", r->inj.nij.nij);
   ura_table_cell(t, "%.3f", r->inj.vc_thorax.vc);
   ura_table_cell(t, "%.3f", r->inj.vc_abdomen.vc);
-  ura_table_cell(t, "%.3f", r->inj.p_hic);
-  ura_table_cell(t, "%.3f", r->inj.p_nij);
-  ura_table_cell(t, "%.3f", r->inj.p_vc);
+  ura_table_cell(t, "%.3f", r->inj.pof[urCRIT_HIC]);
+  ura_table_cell(t, "%.3f", r->inj.pof[urCRIT_NIJ]);
+  ura_table_cell(t, "%.3f", r->inj.pof[urCRIT_VC]);
   ura_table_cell(t, "%.3f", r->p);
 }

@@ -53,6 +53,7 @@ void ura_models_free(uraCtx* c) {
   parts_changed(c, 0);
   parts_free(c->part, c->npart);
   c->npart = 0;
+  ura_trace_free(c);
 }
 
 /* compile parts with the state's parameter overrides (messages name built-in parts by name, a

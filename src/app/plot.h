@@ -30,7 +30,7 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len);
 
 /* the canvas size (pixels) the next plot asks of a file terminal named without options (png,
    svg, pdfcairo, ...); 0, 0: the terminal's default */
-void ura_plot_canvas(int w, int h);
+void ura_plot_canvas(uraCtx* c, int w, int h);
 
 /* curves in one panel: title, axis labels (NULL: none) */
 int ura_plot_xy(uraCtx* c, const char* who, const char* title, const char* xlabel,
@@ -60,6 +60,16 @@ int ura_plot_sweep(uraCtx* c, const char* kind);
 /* s as a gnuplot string constant: in single quotes (gnuplot substitutes nothing there), line
    breaks as '...'."\n".'...'; the only way a text reaches a plot script */
 void ura_plot_quote(FILE* f, const char* s);
+
+/* what a gnuplot terminal draws on (plot_term.c) */
+enum { uraTERM_WINDOW = 0, uraTERM_TEXT, uraTERM_FILE };
+
+/* the kind of a terminal setting (its first word; empty: gnuplot's default window) */
+int ura_term_kind(const char* term);
+
+/* the terminal an output file's extension implies (.png pngcairo, .svg, .pdf pdfcairo, .eps
+   epscairo, .txt dumb, .jpg/.jpeg jpeg, .gif), NULL for none */
+const char* ura_term_for_ext(const char* path);
 
 /* index of a signal of a trace by name, or -1 */
 int ura_trace_find(const uraTrace* tr, const char* name);

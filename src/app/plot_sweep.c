@@ -147,9 +147,9 @@ int ura_plot_sweep(uraCtx* c, const char* kind) {
   if (!f) return ura_fail(c, "%s: out of memory", who);
   write_sweep(c, f, want_wind, want_face);
   fclose(f);
-  if (want_wind && want_face) ura_plot_canvas(1200, 520);
+  if (want_wind && want_face) ura_plot_canvas(c, 1200, 520);
   int rc = ura_gnuplot_run(c, who, s, n);
-  ura_plot_canvas(0, 0);
+  ura_plot_canvas(c, 0, 0);
   free(s);
   return rc;
 }

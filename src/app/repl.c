@@ -8,7 +8,11 @@
 
 #include "app.h"
 
-/* the candidates for the word being completed, gathered by complete() and filtered by gen() */
+/* the candidates for the word being completed, gathered by complete() and filtered by gen().
+   The one justified exception to "the application's state lives in uraCtx": GNU readline calls
+   its completion hooks (rl_attempted_completion_function, rl_completion_entry_function) without
+   a user-data pointer, so the context they need and the candidates they share are file statics,
+   set by ura_repl for the one interactive loop a process runs. */
 #define MAXCAND 512
 static char cand[MAXCAND][64];
 static int ncand;

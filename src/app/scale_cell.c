@@ -15,9 +15,17 @@ int ura_cell_write(const urCell* c, char* buf, size_t n) {
     reason[k] = ch < 32 || ch == 127 ? ' ' : (char)ch;
   }
   reason[k] = 0;
-  int w = snprintf(buf, n, "%d %d %a %a %a %a %d %a %a %a %a %a %a %d |%s", c->status, c->contact,
-                   c->hic15, c->hic_t1, c->hic_t2, c->nij, c->nij_mode, c->vc_thorax,
-                   c->vc_abdomen, c->p_hic, c->p_nij, c->p_vc, c->p, c->extrap, reason);
+  /* status, contact, every registry value and PoF (urNVAL, urNCRIT of this build), p, extrap */
+  int w = snprintf(buf, n, "%d %d", c->status, c->contact);
+  for (int i = 0; i < urNVAL && w >= 0 && (size_t)w < n; i++) {
+    w += snprintf(buf + w, n - (size_t)w, " %a", c->val[i]);
+  }
+  for (int i = 0; i < urNCRIT && w >= 0 && (size_t)w < n; i++) {
+    w += snprintf(buf + w, n - (size_t)w, " %a", c->pof[i]);
+  }
+  if (w >= 0 && (size_t)w < n) {
+    w += snprintf(buf + w, n - (size_t)w, " %a %d |%s", c->p, c->extrap, reason);
+  }
   return w < 0 || (size_t)w >= n ? -1 : w;
 }
 
@@ -43,14 +51,13 @@ static int get_double(const char** s, double* v) {
 int ura_cell_read(const char* s, urCell* c) {
   urCell t;
   memset(&t, 0, sizeof t);
-  if (get_int(&s, urCELL_PENDING, urCELL_FAILED, &t.status) || get_int(&s, 0, 1, &t.contact) ||
-      get_double(&s, &t.hic15) || get_double(&s, &t.hic_t1) || get_double(&s, &t.hic_t2) ||
-      get_double(&s, &t.nij) || get_int(&s, -1, 3, &t.nij_mode) ||
-      get_double(&s, &t.vc_thorax) || get_double(&s, &t.vc_abdomen) ||
-      get_double(&s, &t.p_hic) || get_double(&s, &t.p_nij) || get_double(&s, &t.p_vc) ||
-      get_double(&s, &t.p) || get_int(&s, 0, 1 << 30, &t.extrap) || *s != '|') {
-    return -1;
-  }
+  int bad = get_int(&s, urCELL_PENDING, urCELL_FAILED, &t.status) || get_int(&s, 0, 1, &t.contact);
+  for (int i = 0; i < urNVAL && !bad; i++) bad = get_double(&s, &t.val[i]);
+  for (int i = 0; i < urNCRIT && !bad; i++) bad = get_double(&s, &t.pof[i]);
+  if (bad || get_double(&s, &t.p) || get_int(&s, 0, 1 << 30, &t.extrap) || *s != '|') return -1;
+  /* the Nij mode is an index: a whole number of -1..3 or NAN */
+  double md = t.val[urVAL_NIJ_MODE];
+  if (md == md && (md != (int)md || md < -1 || md > 3)) return -1;
   s++;
   size_t n = strcspn(s, "\n");
   if (n >= sizeof t.reason) return -1;

@@ -163,6 +163,7 @@ void ura_state_defaults(uraState* s) {
 }
 
 void ura_init(uraCtx* c) {
+  ur_init(urINIT_GSL_CODES);                     /* the core's GSL failures as return codes */
   memset(c, 0, sizeof *c);
   ura_state_defaults(&c->st);
   c->out = stdout;

@@ -129,32 +129,52 @@ static void put(WINDOW* w, int y, int x, chtype attr, const char* s) {
 
 /* ---- the screen ---- */
 
+/* the values of criterion k that a place (urIN_PANEL, urIN_CURSOR) shows, from the registry:
+   "0.812 mode NCF", "thorax 0.500 m/s abdomen 0.300 m/s" */
+static void crit_values(const urCell* cl, int k, int where, char* buf, size_t n) {
+  const urCriterion* cr = ur_criterion(k);
+  size_t len = 0;
+  buf[0] = 0;
+  for (int i = cr->val0; i < cr->val0 + cr->nval && len < n; i++) {
+    const urValueDef* d = ur_value_def(i);
+    if (!(d->where & where)) continue;
+    char num[32];
+    ur_value_format(i, cl->val[i], num, sizeof num);
+    int w = snprintf(buf + len, n - len, "%s%s%s%s%s%s", len ? " " : "", d->label,
+                     *d->label ? " " : "", num, *d->dunit ? " " : "", d->dunit);
+    if (w < 0) break;
+    len += (size_t)w;
+  }
+}
+
 static void draw_cursor_line(viewer* v, int y) {
   const urCell* cl = cell_at(v, v->row, v->col);
-  char hic[32], nij[32], vt[32], va[32], p[32], buf[1100], vc[512];
-  static const char* const modes[] = {"NTF", "NTE", "NCF", "NCE"};
-  fmt_num(hic, sizeof hic, "%.1f", cl->hic15);
-  fmt_num(nij, sizeof nij, "%.3f", cl->nij);
-  fmt_num(vt, sizeof vt, "%.3f", cl->vc_thorax);
-  fmt_num(va, sizeof va, "%.3f", cl->vc_abdomen);
+  char p[32], vals[160], buf[512], more[512] = "";
   fmt_num(p, sizeof p, "%.1f %%", cl->p * 100.0);
   const char* st = cl->status == urCELL_DONE ? "" : cl->status == urCELL_NOCONTACT ?
                    "  no contact" : cl->status == urCELL_FAILED ? "  FAILED: " : "  pending";
-  snprintf(buf, sizeof buf, "dpar %.2f m  dperp %.2f m  P %s  HIC15 %s  Nij %s%s%s", cl->dpar,
-           cl->dperp, p, hic, nij,
-           isfinite(cl->nij) && cl->nij_mode >= 0 && cl->nij_mode < 4 ? " " : "",
-           isfinite(cl->nij) && cl->nij_mode >= 0 && cl->nij_mode < 4 ? modes[cl->nij_mode] : "");
-  snprintf(vc, sizeof vc, "VC thorax %s abdomen %s m/s%s%s", vt, va, st,
-           cl->status == urCELL_FAILED ? cl->reason : "");
-  /* one line when wide enough, else the VC values and the status on a second */
-  if (COLS >= STATUS_ONE_LINE) {
-    size_t k = strlen(buf);
-    snprintf(buf + k, sizeof buf - k, "  %s", vc);
-    put(stdscr, y, 0, v->role_attr[uraROLE_TITLE], buf);
-  } else {
-    put(stdscr, y, 0, v->role_attr[uraROLE_TITLE], buf);
-    put(stdscr, y + 1, 0, v->role_attr[uraROLE_TITLE], vc);
+  /* the criteria in use from the registry; at a narrow screen those after the first two (HIC
+     and Nij) and the status go on a second line */
+  int two = COLS < STATUS_ONE_LINE, shown = 0;
+  int len = snprintf(buf, sizeof buf, "dpar %.2f m  dperp %.2f m  P %s", cl->dpar, cl->dperp, p);
+  for (int k = 0; k < urNCRIT && len >= 0 && (size_t)len < sizeof buf; k++) {
+    if (!ur_criterion_used(k, &v->c->st.injury)) continue;
+    crit_values(cl, k, urIN_CURSOR, vals, sizeof vals);
+    if (two && shown++ >= 2) {
+      size_t m = strlen(more);
+      snprintf(more + m, sizeof more - m, "%s%s %s", m ? "  " : "", ur_criterion(k)->label, vals);
+    } else {
+      len += snprintf(buf + len, sizeof buf - (size_t)len, "  %s %s", ur_criterion(k)->label,
+                      vals);
+    }
   }
+  char* tail = two ? more : buf;
+  size_t tl = strlen(tail), cap = two ? sizeof more : sizeof buf;
+  if (tl < cap) {
+    snprintf(tail + tl, cap - tl, "%s%s", st, cl->status == urCELL_FAILED ? cl->reason : "");
+  }
+  put(stdscr, y, 0, v->role_attr[uraROLE_TITLE], buf);
+  if (two) put(stdscr, y + 1, 0, v->role_attr[uraROLE_TITLE], more);
 }
 
 /* the rows the head and the foot take at this width */
@@ -317,46 +337,39 @@ static void draw_panel(viewer* v) {
   WINDOW* w = newwin(ph, pw, (LINES - ph) / 2, (COLS - pw) / 2);
   if (!w) return;
   const urCell* cl = cell_at(v, v->row, v->col);
-  static const char* const modes[] = {"NTF", "NTE", "NCF", "NCE"};
-  char buf[256], a[32], b[32], d[32], e[32];
+  char buf[256], vals[160], e[32];
   werase(w);
   box(w, 0, 0);
   snprintf(buf, sizeof buf, " cell dpar %.2f m, dperp %.2f m ", cl->dpar, cl->dperp);
   put(w, 0, 2, A_BOLD, buf);
 
-  /* peak values and the injury-specific PoF */
-  fmt_num(a, sizeof a, "%.1f", cl->hic15);
-  fmt_num(b, sizeof b, "%.2f", cl->hic_t1 * 1e3);
-  fmt_num(d, sizeof d, "%.2f", cl->hic_t2 * 1e3);
-  fmt_num(e, sizeof e, "%.4f", cl->p_hic);
-  snprintf(buf, sizeof buf, "HIC15 %-10s window %s-%s ms", a, b, d);
-  put(w, 1, 2, A_NORMAL, buf);
-  snprintf(buf, sizeof buf, "p_hic %s", e);
-  put(w, 1, pw - 20, A_NORMAL, buf);
-  fmt_num(a, sizeof a, "%.3f", cl->nij);
-  fmt_num(e, sizeof e, "%.4f", cl->p_nij);
-  snprintf(buf, sizeof buf, "Nij   %-10s mode %s", a,
-           isfinite(cl->nij) && cl->nij_mode >= 0 && cl->nij_mode < 4 ? modes[cl->nij_mode] : "-");
-  put(w, 2, 2, A_NORMAL, buf);
-  snprintf(buf, sizeof buf, "p_nij %s", e);
-  put(w, 2, pw - 20, A_NORMAL, buf);
-  fmt_num(a, sizeof a, "%.3f", cl->vc_thorax);
-  fmt_num(b, sizeof b, "%.3f", cl->vc_abdomen);
-  fmt_num(e, sizeof e, "%.4f", cl->p_vc);
-  snprintf(buf, sizeof buf, "VC    thorax %s m/s, abdomen %s m/s", a, b);
-  put(w, 3, 2, A_NORMAL, buf);
-  snprintf(buf, sizeof buf, "p_vc  %s", e);
-  put(w, 3, pw - 20, A_NORMAL, buf);
+  /* peak values and the injury-specific PoF of each criterion in use */
+  int y = 1;
+  for (int k = 0; k < urNCRIT; k++) {
+    if (!ur_criterion_used(k, &v->c->st.injury)) continue;
+    const urCriterion* cr = ur_criterion(k);
+    crit_values(cl, k, urIN_PANEL, vals, sizeof vals);
+    snprintf(buf, sizeof buf, "%-5s %s", cr->label, vals);
+    put(w, y, 2, A_NORMAL, buf);
+    fmt_num(e, sizeof e, "%.4f", cl->pof[k]);
+    snprintf(buf, sizeof buf, "%-5s %s", cr->pof_col, e);
+    put(w, y++, pw - 20, A_NORMAL, buf);
+  }
   snprintf(buf, sizeof buf, "p     %.4f (%.1f %%)", cl->p, cl->p * 100);
-  put(w, 4, 2, v->role_attr[ura_grid_role(v->c->last.diff, cl)], buf);
+  put(w, y, 2, v->role_attr[ura_grid_role(v->c->last.diff, cl)], buf);
 
   /* the head acceleration, or why there is none */
+  y += 2;
   if (!v->c->inspect) {
-    put(w, 6, 2, A_BOLD, "impact simulation not available: stored cell values only");
+    put(w, y, 2, A_BOLD, "impact simulation not available: stored cell values only");
   } else if (v->have_trace) {
-    put(w, 6, 2, A_NORMAL, "head acceleration vs time, HIC15 window shaded:");
-    if (ph - 10 >= 3) draw_trace(v, w, 7, 2, ph - 10, pw - 4, cl->hic_t1, cl->hic_t2);
-    else put(w, 7, 2, A_DIM, "(enlarge the window to see the trace)");
+    put(w, y, 2, A_NORMAL, "head acceleration vs time, HIC15 window shaded:");
+    if (ph - y - 4 >= 3) {
+      draw_trace(v, w, y + 1, 2, ph - y - 4, pw - 4, cl->val[urVAL_HIC_T1],
+                 cl->val[urVAL_HIC_T2]);
+    } else {
+      put(w, y + 1, 2, A_DIM, "(enlarge the window to see the trace)");
+    }
   }
   put(w, ph - 2, 2, A_DIM, "p plot in gnuplot   any other key closes");
   wnoutrefresh(stdscr);
@@ -468,7 +481,8 @@ static void plot(viewer* v) {
   const urCell* cl = cell_at(v, v->row, v->col);
   quiet q;
   quiet_begin(v->c, &q);
-  int rc = ura_plot_trace_hic(v->c, &v->trace, 0, NULL, cl->hic_t1, cl->hic_t2);
+  int rc = ura_plot_trace_hic(v->c, &v->trace, 0, NULL, cl->val[urVAL_HIC_T1],
+                              cl->val[urVAL_HIC_T2]);
   quiet_end(v->c, &q, NULL, 0);
   if (rc) snprintf(v->note, sizeof v->note, "%s", v->c->err);
   else if (v->c->st.output[0]) snprintf(v->note, sizeof v->note, "plot: wrote %s",

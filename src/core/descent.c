@@ -74,6 +74,10 @@ int ur_descent(const urDescentParams* p, urDescentResult* out, char* err, int er
   gsl_odeiv2_evolve* ev = gsl_odeiv2_evolve_alloc(4);
   gsl_odeiv2_driver* drv = gsl_odeiv2_driver_alloc_y_new(&sys, T, 1e-3, EPS_ABS, EPS_REL);
   int rc = -1;
+  if (!step || !ctl || !ev || !drv) {
+    if (err) snprintf(err, errlen, "descent: out of memory");
+    goto done;
+  }
 
   /* march until the altitude changes sign, keeping the last state above ground */
   double t = 0, h = 1e-3, tmax = 1e5;
@@ -105,7 +109,7 @@ int ur_descent(const urDescentParams* p, urDescentResult* out, char* err, int er
         for (int i = 0; i < 4; i++) yc[i] = yprev[i];
         tt = tprev;
         gsl_odeiv2_driver_reset(drv);
-        gsl_odeiv2_driver_apply(drv, &tt, tc, yc);
+        if (tc > tprev && gsl_odeiv2_driver_apply(drv, &tt, tc, yc) != GSL_SUCCESS) break;
         out->vh = yc[2];
         out->vz = -yc[3];
         out->speed = hypot(yc[2], yc[3]);
@@ -119,9 +123,10 @@ int ur_descent(const urDescentParams* p, urDescentResult* out, char* err, int er
   }
   if (rc && err) snprintf(err, errlen, "descent: integration failed to reach the ground");
 
-  gsl_odeiv2_driver_free(drv);
-  gsl_odeiv2_evolve_free(ev);
-  gsl_odeiv2_control_free(ctl);
-  gsl_odeiv2_step_free(step);
+done:
+  if (drv) gsl_odeiv2_driver_free(drv);
+  if (ev) gsl_odeiv2_evolve_free(ev);
+  if (ctl) gsl_odeiv2_control_free(ctl);
+  if (step) gsl_odeiv2_step_free(step);
   return rc;
 }

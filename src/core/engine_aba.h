@@ -1,13 +1,13 @@
-/* engine_aba.h: Featherstone's articulated-body algorithm as a template, included once for doubles
- * (ur_aba on urData, engine_dynamics.c) and once for lanes of runs in lock-step (urv_aba on
- * urLanes, engine_lanes.c). Parameters: urT element type, urBC(x) a double broadcast to urT,
+/* engine_aba.h: Featherstone's articulated-body algorithm as a template, included once for
+ * doubles (ur_aba on urData, engine_dynamics.c) and once for lanes of runs in lock-step (urv_aba
+ * on urLanes, engine_lanes.c). Parameters: urT element type, urBC(x) a double broadcast to urT,
  * urK(name) the spatial kernels (engine_spatial.h), urFN(name) this file's function names, urD
  * the data (fields S IA pA U Dinv uu cbias cvel cacc Xe Xr qfrc fext qacc freact energy), and
  * urINVSYM(d, Dinv, D, nv) the inverse of a joint-space inertia with its failure handling,
  * urSETENERGY(d, ke) the store of the kinetic energy, urABA_ATTR (optional) attributes of the
- * entry point. The
- * same expressions in the same order make each lane's bits those of the scalar run. No include
- * guard. */
+ * entry point. The same expressions in the same order make each lane's bits those of the scalar
+ * run. No include guard: included once per instance; the protocol (who defines and undefines the
+ * parameters, the bit-exactness rules): src/README. */
 
 // base acceleration (-gravity) expressed in root body i
 static void urFN(baseacc)(const urModel* m, const urD* d, int i, urT a[6]) {
@@ -300,3 +300,4 @@ void urFN(aba)(const urModel* m, urD* d) {
   }
 }
 
+#undef urABA_ATTR

@@ -7,8 +7,38 @@
 
 //---------------------------------- helpers -------------------------------------------------------
 
+int ur_cand_count(const urModel* m) {
+  int n = m->npair;
+  for (int i = 0; i < m->nbag; i++) {
+    n += m->bag[i].ntarget;
+  }
+  return n;
+}
+
+
+int ur_cand_at(const urModel* m, int k, urCand* c) {
+  if (k < 0) {
+    return -1;
+  }
+  if (k < m->npair) {
+    *c = (urCand){m->pair[k].geom1, m->pair[k].geom2, -1, k, k};
+    return 0;
+  }
+  k -= m->npair;
+  for (int i = 0; i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    if (k < b->ntarget) {
+      *c = (urCand){b->geom, b->target[k], i, k, ur_cand_bag_slot(m, i, k)};
+      return 0;
+    }
+    k -= b->ntarget;
+  }
+  return -1;
+}
+
+
 // ellipsoid g in world coordinates
-void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e) {
+void ur_geom_ellipsoid(const urModel* m, urData* d, int g, urEllipsoid* e) {
   memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
   memcpy(e->R, ur_geom_xmat(m, d, g), 9*sizeof(double));
   memcpy(e->r, m->geom[g].size, 3*sizeof(double));
@@ -18,7 +48,7 @@ void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e)
 
 // half-width of ellipsoid g along unit u: |diag(r) R^T u| (superellipsoid: the q-norm,
 // contact.h)
-double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double u[3]) {
+double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]) {
   const double* R = ur_geom_xmat(m, d, g);
   const double* r = m->geom[g].size;
   double w[3];
@@ -36,7 +66,7 @@ double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double 
 // cheap upper bound on the signed depth of ellipsoids ga, gb: the support-function gap
 // f(u) = (cA - cB).u + hA(u) + hB(u) >= min f = depth, at the centre line and at the warm
 // start u (if set); a negative bound proves separation without the narrow phase
-double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]) {
+double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]) {
   const double* ca = d->gxpos + 3*ga;
   const double* cb = d->gxpos + 3*gb;
   double dc[3] = {ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]}, c[3];

@@ -27,6 +27,7 @@
 #undef urD
 #undef urSETENERGY
 #undef urINVSYM
+#include "engine_template_check.h"
 
 //---------------------------------- joint reactions -----------------------------------------------
 

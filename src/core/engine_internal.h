@@ -34,12 +34,12 @@ int uru_invsym(double* Ainv, const double* A, int n);
 void ur_kinematics_bodies(const urModel* m, urData* d);
 void ur_kinematics_geoms(const urModel* m, urData* d);
 void ur_kinematics_gpos(const urModel* m, urData* d);
-const double* ur_geom_xmat(const urModel* m, const urData* d, int g);
+const double* ur_geom_xmat(const urModel* m, urData* d, int g);
 void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
 void ur_forward_pre(const urModel* m, urData* d);
-void ur_forward_forces(const urModel* m, urData* d, int lanes);
+void ur_forward_loads(const urModel* m, urData* d);
 int ur_forward_post(const urModel* m, urData* d);
 int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
@@ -59,11 +59,41 @@ void ur_outputs(const urModel* m, urData* d);
 void ur_apply_force(const urModel* m, urData* d, int body, const double f[3], const double p[3]);
 void ur_point_acc(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
 void ur_set_status(urData* d, int status, const char* msg);
-void ur_geom_ellipsoid(const urModel* m, const urData* d, int g, urEllipsoid* e);
+void ur_geom_ellipsoid(const urModel* m, urData* d, int g, urEllipsoid* e);
 void ur_relvel(const urModel* m, const urData* d, int a, int b, const double p[3], double v[3]);
 double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double n[3],
                         const double p[3], const double v[3], double fn, double rate,
                         const urLaw* law, double mu, double v_eps);
+//---------------------------------- trees -------------------------------------------------------
+// whether body b, or the body of ellipsoid g, belongs to the kinematic tree rooted at body root
+// (urBody.tree); -1 (no body, the ground) belongs to none
+static inline int ur_body_intree(const urModel* m, int b, int root) {
+  return b >= 0 && m->body[b].tree == root;
+}
+static inline int ur_geom_intree(const urModel* m, int g, int root) {
+  return g >= 0 && ur_body_intree(m, m->geom[g].body, root);
+}
+
+//---------------------------------- contact candidates (engine_contact.c) ----------------------
+// The one enumeration of the ellipsoid pairs a force can act through: the model's contact pairs
+// in order, then each airbag's targets in order. Candidate k (0 <= k < ur_cand_count) is dense;
+// src names its force's slot: k for a pair, npair + airbag * urMAXBAGTGT + target for an airbag
+// target (the encoding of urImpactSetup.cand_src; slots below ur_cand_slots).
+typedef struct {
+  int g1, g2;                      // ellipsoids (g2 -1: the ground; for a target: bag, target)
+  int bag;                         // the airbag, -1 for a contact pair
+  int idx;                         // the pair's index, or the target's index in its airbag
+  int src;                         // the slot
+} urCand;
+int ur_cand_count(const urModel* m);
+int ur_cand_at(const urModel* m, int k, urCand* c);   // 0, or -1 when k is out of range
+static inline int ur_cand_bag_slot(const urModel* m, int bag, int target) {
+  return m->npair + bag*urMAXBAGTGT + target;
+}
+static inline int ur_cand_slots(const urModel* m) {
+  return ur_cand_bag_slot(m, m->nbag, 0);
+}
+
 //---------------------------------- lanes (engine_lanes.c) --------------------------------------
 // up to urNLANE runs of one model stepped in lock-step, their poses, velocities and the
 // articulated-body algorithm computed over vectors of lanes; each run's bits are those of
@@ -100,7 +130,7 @@ void ur_lanes_free(urLanes* L);
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
 int ur_tree_active(const urModel* m, const urData* d, int tree);
-double ur_depth_bound(const urModel* m, const urData* d, int ga, int gb, const double u[3]);
-double ur_geom_halfwidth(const urModel* m, const urData* d, int g, const double u[3]);
+double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]);
+double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]);
 
 #endif

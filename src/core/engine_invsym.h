@@ -1,7 +1,9 @@
 /* engine_invsym.h: the inverse of a small symmetric matrix (joint-space inertias), as a template
- * like engine_spatial.h: urT the element type, urK(name) the name, urSTORAGE the linkage, urBC(x)
- * a double broadcast, urALL(c) true if comparison c holds (in every lane), urSQRT(x) the square
- * root (lane by lane). For lanes, -1 means some lane's matrix is singular. No include guard. */
+ * like engine_spatial.h: urT the element type, urK(name) the name, urSTORAGE the linkage,
+ * urBC(x) a double broadcast, urALL(c) true if comparison c holds (in every lane), urSQRT(x) the
+ * square root (lane by lane). For lanes, -1 means some lane's matrix is singular. No include
+ * guard: included once per instance; the protocol (who defines and undefines the parameters, the
+ * bit-exactness rules): src/README. */
 
 // inverse of a small n x n symmetric matrix (closed forms up to 3, Cholesky beyond, which
 // needs positive definiteness); -1 if singular

@@ -1,12 +1,13 @@
 /* engine_kin.h: joint transforms and motion subspaces (jcalc), world poses of bodies and
- * ellipsoids, spatial
- * velocities and velocity-product accelerations, as a template like engine_aba.h: included for
- * doubles (engine_kinematics.c: ur_kinematics_bodies, ur_kinematics_geoms, ur_velocities on urData) and
- * for lanes (engine_lanes.c: urv_ on urLanes). Parameters: urT, urBC(x), urK(name), urFN(name),
- * urD (fields qpos qvel S cbias Xe Xr xmat xpos xcom gxmat gxpos cvel), urAXISROT(R, axis, angle) a
- * rotation matrix about a unit axis (axis: urT[3], angle: urT), urKIN_ATTR (optional)
- * attributes of the entry points. Model constants are broadcast to urT before they meet the
- * data, so both instances evaluate the same operations. No include guard. */
+ * ellipsoids, spatial velocities and velocity-product accelerations, as a template like
+ * engine_aba.h: included for doubles (engine_kinematics.c: ur_kinematics_bodies,
+ * ur_kinematics_geoms, ur_velocities on urData) and for lanes (engine_lanes.c: urv_ on urLanes).
+ * Parameters: urT, urBC(x), urK(name), urFN(name), urD (fields qpos qvel S cbias Xe Xr xmat xpos
+ * xcom gxmat gxpos cvel), urAXISROT(R, axis, angle) a rotation matrix about a unit axis (axis:
+ * urT[3], angle: urT), urKIN_ATTR (optional) attributes of the entry points. Model constants are
+ * broadcast to urT before they meet the data, so both instances evaluate the same operations. No
+ * include guard: included once per instance; the protocol (who defines and undefines the
+ * parameters, the bit-exactness rules): src/README. */
 
 #ifndef urKIN_ATTR
 #define urKIN_ATTR

@@ -29,6 +29,7 @@ static void axisrot(double R[9], const double a[3], double ang) {
 #undef urFN
 #undef urD
 #undef urAXISROT
+#include "engine_template_check.h"
 
 //---------------------------------- world poses ---------------------------------------------------
 
@@ -48,13 +49,13 @@ void ur_kinematics_geoms(const urModel* m, urData* d) {
 }
 
 
-// the orientation of ellipsoid g, computed now if the lanes left it out (the per-run data is
-// never const where it lives, so the cast is sound; the same expression gives the same bits)
-const double* ur_geom_xmat(const urModel* m, const urData* d, int g) {
+// the orientation of ellipsoid g, computed now if the lanes left it out: gxmat is a cache in the
+// per-run data, so whoever reads an orientation holds the data writable (the same expression
+// gives the same bits whenever it is computed)
+const double* ur_geom_xmat(const urModel* m, urData* d, int g) {
   if (!d->gmat_ok[g]) {
-    urData* w = (urData*)d;
-    ur_geom_mat(m, w, g);
-    w->gmat_ok[g] = 1;
+    ur_geom_mat(m, d, g);
+    d->gmat_ok[g] = 1;
   }
   return d->gxmat + 9*g;
 }

@@ -51,8 +51,14 @@ static inline __attribute__((always_inline)) urV4 bc4(double x) {
 }
 #endif
 
+// the lane instances of the templates (src/README, "Templates"): the parameters every instance
+// here shares are defined once, those of one template around its include; all are undefined at
+// the end of the block (engine_template_check.h)
 #define urT urV4
 #define urK(name) urv_##name
+#define urFN(name) urv_##name
+#define urD urLanes
+#define urBC(x) bc4(x)
 #include "engine_spatial.h"
 #define urSTORAGE static inline __attribute__((always_inline))
 #include "engine_spatial_inertia.h"
@@ -65,12 +71,10 @@ static inline __attribute__((always_inline)) int all4(urV4I c) {
 }
 
 #define urSTORAGE static inline __attribute__((always_inline))
-#define urBC(x) bc4(x)
 #define urALL(c) all4(c)
 #define urSQRT(x) ({ urV4 r_ = (x); for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]); r_; })
 #include "engine_invsym.h"
 #undef urSTORAGE
-#undef urBC
 #undef urALL
 #undef urSQRT
 
@@ -97,22 +101,17 @@ void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
   }
 }
 
-#define urT urV4
-#define urBC(x) bc4(x)
-#define urFN(name) urv_##name
-#define urD urLanes
 #define urSETENERGY(d, ke) ((d)->energy[0] = (ke))
 #define urINVSYM(d, Dinv, D, nv) invsym4(d, Dinv, D, nv)
 #define urABA_ATTR urCLONES
 #include "engine_aba.h"
+#undef urSETENERGY
+#undef urINVSYM
 
 // sincos and the first-quadrant atan2 over the vectors (engine_trig.h)
 typedef unsigned long long urV4U __attribute__((vector_size(4*sizeof(long long))));
-#define urT urV4
 #define urM urV4I
 #define urU urV4U
-#define urK(name) urv_##name
-#define urBC(x) bc4(x)
 #define urSEL(m, a, b) ((urV4)(((urV4I)(a) & (m)) | ((urV4I)(b) & ~(m))))
 #define urANY(m) ((m)[0] | (m)[1] | (m)[2] | (m)[3])
 #define urNEL urNLANE
@@ -166,6 +165,13 @@ void axisrot4(urV4 R[9], const urV4 a[3], const urV4* ang) {
 #define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
 #define urKIN_ATTR urCLONES
 #include "engine_kin.h"
+#undef urAXISROT
+#undef urT
+#undef urK
+#undef urFN
+#undef urD
+#undef urBC
+#include "engine_template_check.h"
 
 // square roots in place of the pairs' entries of L->gap (the pairs between two ellipsoids)
 static void sqrt_pairs_default(const urModel* m, urLanes* L) {
@@ -466,7 +472,8 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
     return 0;
   }
 
-  // poses and velocities for all lanes at once, the applied forces lane by lane
+  // ur_forward_pre's stages: poses, velocities, broad phase and restraint kinematics for all
+  // lanes at once, the applied forces lane by lane
   gather_state(m, L, run, k);
   urv_kinematics_bodies(m, L);
   urv_kinematics_gpos(m, L);
@@ -475,7 +482,7 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   restraints_kin4(m, L);
   scatter_kin(m, L, run, k);
   for (int l = 0; l < k; l++) {
-    ur_forward_forces(m, run[l], 1);
+    ur_forward_loads(m, run[l]);
   }
 
   // accelerations for all lanes at once

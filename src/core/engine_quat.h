@@ -1,9 +1,11 @@
 /* engine_quat.h: the quaternion maps of the integrators and the spherical restraints, the
- * integrators' position update and the restraints' kinematics, as a template like engine_spatial.h, branch-free (a condition
- * picks between both results), so that lanes give each run the bits of its scalar call.
- * Parameters: urT, urM, urK(name), urSTORAGE the linkage, urBC(x), urSEL(m, a, b) and urSQRT(x)
- * as in engine_trig.h and engine_invsym.h; uses the instance's sincos and atan2q
- * (engine_trig.h), mulquat and mulmat3 (engine_spatial.h). No include guard. */
+ * integrators' position update and the restraints' kinematics, as a template like
+ * engine_spatial.h, branch-free (a condition picks between both results), so that lanes give
+ * each run the bits of its scalar call. Parameters: urT, urM, urK(name), urSTORAGE the linkage,
+ * urBC(x), urSEL(m, a, b) and urSQRT(x) as in engine_trig.h and engine_invsym.h; uses the
+ * instance's sincos and atan2q (engine_trig.h), mulquat and mulmat3 (engine_spatial.h). No
+ * include guard: included once per instance; the protocol (who defines and undefines the
+ * parameters, the bit-exactness rules): src/README. */
 
 // q <- q * exp(omega dt / 2), omega in the local frame, then normalised (a zero or non-finite
 // norm gives the identity); q unchanged if |omega| dt < 1e-300

@@ -42,18 +42,21 @@ const char* ur_status_str(int status) {
 
 //---------------------------------- forward -------------------------------------------------------
 
-// the forward pipeline up to the accelerations: positions, velocities, applied forces (gravity
-// compensation, restraints, contacts, airbags)
+// the forward pipeline up to the accelerations: positions, velocities, the restraint kinematics
+// and the contacts' broad phase, the applied forces (gravity compensation, restraints, contacts,
+// airbags). The lanes run the same stages: the first four over vectors, then ur_forward_loads.
 void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics(m, d);
   ur_velocities(m, d);
-  ur_forward_forces(m, d, 0);
+  ur_restraints_kin(m, d);
+  ur_contacts_broad(m, d);
+  ur_forward_loads(m, d);
 }
 
 
-// the applied forces of the forward pipeline (needs the poses and velocities; lanes: the lanes
-// computed the contacts' broad phase (pair depths) and the restraint kinematics already)
-void ur_forward_forces(const urModel* m, urData* d, int lanes) {
+// the applied forces of the forward pipeline, from the poses, velocities, restraint kinematics
+// (rkin) and pair depths of the broad phase
+void ur_forward_loads(const urModel* m, urData* d) {
   memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
   for (int j = 0; j < m->ngrav; j++) {
@@ -64,10 +67,6 @@ void ur_forward_forces(const urModel* m, urData* d, int lanes) {
       f[k] = -(1 - b->gravity)*b->mass*m->opt.gravity[k];
     }
     ur_apply_force(m, d, i, f, d->xcom + 3*i);
-  }
-  if (!lanes) {
-    ur_restraints_kin(m, d);
-    ur_contacts_broad(m, d);
   }
   ur_restraints(m, d);
   ur_contacts_narrow(m, d);
@@ -153,12 +152,6 @@ static void checkstate(const urModel* m, urData* d) {
 }
 
 
-// does a geom belong to a tree
-static int intree(const urModel* m, int g, int tree) {
-  return g >= 0 && m->body[m->geom[g].body].tree == tree;
-}
-
-
 // centre velocity of ellipsoid g and the speed bound of its surface about the centre (spin
 // times the largest semi-axis)
 static void geomspeed(const urModel* m, const urData* d, int g, double v[3], double* w) {
@@ -181,7 +174,7 @@ static int gap_holds(const urModel* m, double s, double c, double T) {
 // from below and shrinks at most at rate (v1 - v2).e + w1 + w2; tried along the centre line
 // with the bounding spheres (h = rbound, unchanged by spin) and with the ellipsoids, and along
 // u. Each closing rate comes with a_clear T^2/2 for the relative acceleration.
-static int stays_clear(const urModel* m, const urData* d, int g1, int g2, double sep,
+static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep,
                        const double u[3], double T) {
   double v1[3], v2[3], w1, w2, e[3];
   const double* c1 = d->gxpos + 3*g1;
@@ -213,25 +206,20 @@ static int stays_clear(const urModel* m, const urData* d, int g1, int g2, double
 }
 
 
-// is item k (a pair, then the airbag targets in order) across the projectile tree clear for T
-// (1 also for items within a tree or with the ground)
-static int item_clear(const urModel* m, const urData* d, int k, double T) {
+// is contact candidate k (ur_cand_at) across the projectile tree clear for T (1 also for
+// candidates within a tree or with the ground)
+static int item_clear(const urModel* m, urData* d, int k, double T) {
   int tree = d->proj;
-  if (k < m->npair) {
-    const urPair* p = m->pair + k;
-    return p->geom2 < 0 || intree(m, p->geom1, tree) == intree(m, p->geom2, tree) ||
-           stays_clear(m, d, p->geom1, p->geom2, -d->pdepth[k], d->pair[k].u, T);
+  urCand c;
+  if (ur_cand_at(m, k, &c) || c.g2 < 0 ||
+      ur_geom_intree(m, c.g1, tree) == ur_geom_intree(m, c.g2, tree)) {
+    return 1;
   }
-  k -= m->npair;
-  for (int i = 0; i < m->nbag; i++) {
-    const urAirbag* b = m->bag + i;
-    if (k < b->ntarget) {
-      return intree(m, b->geom, tree) == intree(m, b->target[k], tree) ||
-             stays_clear(m, d, b->geom, b->target[k], -d->bag[i].depth[k], d->bag[i].u[k], T);
-    }
-    k -= b->ntarget;
+  if (c.bag < 0) {
+    return stays_clear(m, d, c.g1, c.g2, -d->pdepth[c.idx], d->pair[c.idx].u, T);
   }
-  return 1;
+  const urBagData* bd = d->bag + c.bag;
+  return stays_clear(m, d, c.g1, c.g2, -bd->depth[c.idx], bd->u[c.idx], T);
 }
 
 
@@ -240,10 +228,7 @@ static int item_clear(const urModel* m, const urData* d, int k, double T) {
 // item that failed last is tried first (d->clear_hint): in the tail of a run the same one
 // usually fails step after step.
 static int proj_clear(const urModel* m, urData* d, double T) {
-  int n = m->npair;
-  for (int i = 0; i < m->nbag; i++) {
-    n += m->bag[i].ntarget;
-  }
+  int n = ur_cand_count(m);
   int h = d->clear_hint < n ? d->clear_hint : 0;
   if (!item_clear(m, d, h, T)) {
     return 0;
@@ -394,7 +379,7 @@ int ur_tree_active(const urModel* m, const urData* d, int tree) {
   for (int k = 0; k < d->npactive; k++) {
     int i = d->plist[m->npair + k];
     const urPair* p = m->pair + i;
-    if (d->pair[i].active && intree(m, p->geom1, tree) != intree(m, p->geom2, tree)) {
+    if (d->pair[i].active && ur_geom_intree(m, p->geom1, tree) != ur_geom_intree(m, p->geom2, tree)) {
       return 1;
     }
   }
@@ -404,7 +389,7 @@ int ur_tree_active(const urModel* m, const urData* d, int tree) {
       continue;
     }
     for (int t = 0; t < b->ntarget; t++) {
-      if (d->bag[i].ftgt[t] > 0 && intree(m, b->geom, tree) != intree(m, b->target[t], tree)) {
+      if (d->bag[i].ftgt[t] > 0 && ur_geom_intree(m, b->geom, tree) != ur_geom_intree(m, b->target[t], tree)) {
         return 1;
       }
     }
@@ -451,26 +436,15 @@ static double firsthit(const urModel* m, const urData* d, int gm, int gs, const 
 // targets, ground excluded); -INFINITY if some already overlap. Exact distances are computed in
 // the order of a cheap lower bound (bounding-sphere gap, support-function bound) and only while
 // that bound is below the best so far.
-static double separation(const urModel* m, const urData* d, int root) {
-  int n = m->npair + m->nbag*urMAXBAGTGT, k = 0;
+static double separation(const urModel* m, urData* d, int root) {
+  int n = ur_cand_count(m), k = 0;
   int g1s[n > 0 ? n : 1], g2s[n > 0 ? n : 1];
   double lb[n > 0 ? n : 1];
   static const double u0[3] = {0, 0, 0};
-  for (int i = 0; i < n; i++) {
-    int g1, g2;
-    if (i < m->npair) {
-      g1 = m->pair[i].geom1;
-      g2 = m->pair[i].geom2;
-    } else {
-      const urAirbag* bg = m->bag + (i - m->npair)/urMAXBAGTGT;
-      int t = (i - m->npair) % urMAXBAGTGT;
-      if (t >= bg->ntarget) {
-        continue;
-      }
-      g1 = bg->geom;
-      g2 = bg->target[t];
-    }
-    if (g2 < 0 || intree(m, g1, root) == intree(m, g2, root)) {
+  urCand c;
+  for (int i = 0; ur_cand_at(m, i, &c) == 0; i++) {
+    int g1 = c.g1, g2 = c.g2;
+    if (g2 < 0 || ur_geom_intree(m, g1, root) == ur_geom_intree(m, g2, root)) {
       continue;
     }
     const double* c1 = d->gxpos + 3*g1;
@@ -541,7 +515,7 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
     d->tpeak[k] = 0;
   }
   for (int i = 0; i < m->npair; i++) {
-    if (intree(m, m->pair[i].geom1, root) || intree(m, m->pair[i].geom2, root)) {
+    if (ur_geom_intree(m, m->pair[i].geom1, root) || ur_geom_intree(m, m->pair[i].geom2, root)) {
       memset(d->pair + i, 0, sizeof(urPairData));
       d->pdepth[i] = -INFINITY;
     }
@@ -562,24 +536,13 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
 
   // earliest possible contact of the tree's swept bounding spheres
   double tmin = INFINITY;
-  for (int i = 0; i < m->npair; i++) {
-    int g1 = m->pair[i].geom1, g2 = m->pair[i].geom2;
-    int in1 = intree(m, g1, root), in2 = intree(m, g2, root);
+  urCand c;
+  for (int k = 0; ur_cand_at(m, k, &c) == 0; k++) {
+    int in1 = ur_geom_intree(m, c.g1, root), in2 = ur_geom_intree(m, c.g2, root);
     if (in1 && !in2) {
-      tmin = fmin(tmin, firsthit(m, d, g1, g2, vel));
+      tmin = fmin(tmin, firsthit(m, d, c.g1, c.g2, vel));
     } else if (in2 && !in1) {
-      tmin = fmin(tmin, firsthit(m, d, g2, g1, vel));
-    }
-  }
-  for (int i = 0; i < m->nbag; i++) {
-    const urAirbag* b = m->bag + i;
-    for (int t = 0; t < b->ntarget; t++) {
-      int inb = intree(m, b->geom, root), int_ = intree(m, b->target[t], root);
-      if (inb && !int_) {
-        tmin = fmin(tmin, firsthit(m, d, b->geom, b->target[t], vel));
-      } else if (int_ && !inb) {
-        tmin = fmin(tmin, firsthit(m, d, b->target[t], b->geom, vel));
-      }
+      tmin = fmin(tmin, firsthit(m, d, c.g2, c.g1, vel));
     }
   }
 

@@ -1,8 +1,9 @@
 /* engine_spatial.h: the small vector, matrix and spatial-algebra kernels that run many times per
- * step, as a template: included with urT the element type (double, or a vector of lanes that
- * run in lock-step) and urK(name) the function name. Scalar and lane instances are the same
+ * step, as a template: included with urT the element type (double, or a vector of lanes that run
+ * in lock-step) and urK(name) the function name. Scalar and lane instances are the same
  * expressions in the same order, so each lane gives the bits of the scalar kernel. No include
- * guard: included once per instance (engine_util_inline.h, engine_lanes.c). */
+ * guard: included once per instance (engine_util_inline.h, engine_lanes.c); the protocol (who
+ * defines and undefines the parameters, the bit-exactness rules): src/README. */
 
 static inline void urK(cross3)(urT r[3], const urT a[3], const urT b[3]) {
   urT t0 = a[1]*b[2] - a[2]*b[1];

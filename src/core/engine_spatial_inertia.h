@@ -1,7 +1,8 @@
 /* engine_spatial_inertia.h: r += X^T I X for a spatial inertia I (the congruence that carries an
  * articulated inertia to the parent), as a template like engine_spatial.h: urT the element type,
  * urK(name) the names, urSTORAGE the linkage (empty: extern, engine_util.c; static:
- * engine_lanes.c). No include guard. */
+ * engine_lanes.c). No include guard: included once per instance; the protocol (who defines and
+ * undefines the parameters, the bit-exactness rules): src/README. */
 
 // component k of a x b (k constant in unrolled loops; a macro, so that no vector is returned by
 // value)
@@ -92,3 +93,5 @@ urSTORAGE void urK(xinertia_t_add)(urT r[36], const urT E[9], const urT p[3], co
     }
   }
 }
+
+#undef urCROSSK

@@ -62,6 +62,7 @@ void uru_axisangle2quat(double q[4], const double axis[3], double angle) {
 #undef urBC
 #undef urSEL
 #undef urSQRT
+#include "engine_template_check.h"
 
 
 //---------------------------------- spatial algebra -----------------------------------------------
@@ -92,6 +93,7 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 #undef urT
 #undef urK
 #undef urSTORAGE
+#include "engine_template_check.h"
 
 
 // uru_invsym for doubles, from its template
@@ -108,3 +110,4 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 #undef urBC
 #undef urALL
 #undef urSQRT
+#include "engine_template_check.h"

@@ -16,6 +16,7 @@ static inline double uru_dot3(const double a[3], const double b[3]) {
 #include "engine_spatial.h"
 #undef urT
 #undef urK
+#include "engine_template_check.h"
 
 static inline double uru_norm3(const double a[3]) {
   return sqrt(a[0]*a[0] + a[1]*a[1] + a[2]*a[2]);
@@ -97,5 +98,6 @@ static inline double uru_ast(unsigned long long i) {
 #undef urEL
 #undef urASI
 #undef urAST
+#include "engine_template_check.h"
 
 #endif

@@ -235,7 +235,7 @@ static void contacts_record(const urImpactSetup* s, urImpactWork* w) {
   for (int b = 0; b < m->nbag; b++) {
     if (!d->bag[b].active) continue;
     for (int j = 0; j < m->bag[b].ntarget; j++) {
-      int c = s->cand_of[m->npair + b * urMAXBAGTGT + j];
+      int c = s->cand_of[ur_cand_bag_slot(m, b, j)];
       if (c >= 0) contact_note(w->crec + c, d->bag[b].ftgt[j], t);
     }
   }

@@ -10,13 +10,8 @@
 #include "uasrisk/impact.h"
 #include "engine_internal.h"
 
-/* is body b in the tree rooted at root */
-static int intree(const urModel* m, int b, int root) {
-  return b >= 0 && m->body[b].tree == root;
-}
-
 /* height of the top of an ellipsoid in the world */
-static double ellipsoid_top(const urModel* m, const urData* d, int g) {
+static double ellipsoid_top(const urModel* m, urData* d, int g) {
   const double* R = ur_geom_xmat(m, d, g);
   double s = 0;
   for (int k = 0; k < 3; k++) {
@@ -59,7 +54,7 @@ static double settle_step(const urModel* m) {
 static void hold(const urModel* m, urData* d, int drone) {
   for (int b = 0; b < m->nbody; b++) {
     const urBody* bd = m->body + b;
-    if (!intree(m, b, drone)) continue;
+    if (!ur_body_intree(m, b, drone)) continue;
     memcpy(d->qpos + bd->qadr, m->qpos0 + bd->qadr, bd->nq * sizeof(double));
     memset(d->qvel + bd->vadr, 0, bd->nv * sizeof(double));
     memset(d->rst + 2 * bd->vadr, 0, 2 * bd->nv * sizeof(double));
@@ -75,7 +70,7 @@ static void hold(const urModel* m, urData* d, int drone) {
 static double person_top(const urModel* m, const urData* d, int drone) {
   double top = -INFINITY;
   for (int g = 0; g < m->ngeom; g++) {
-    if (!intree(m, m->geom[g].body, drone)) {
+    if (!ur_geom_intree(m, g, drone)) {
       top = fmax(top, d->gxpos[3 * g + 2] + m->geom[g].rbound);
     }
   }
@@ -85,7 +80,7 @@ static double person_top(const urModel* m, const urData* d, int drone) {
 static double drone_low(const urModel* m, const urData* d, int drone) {
   double low = INFINITY;
   for (int g = 0; g < m->ngeom; g++) {
-    if (intree(m, m->geom[g].body, drone)) {
+    if (ur_geom_intree(m, g, drone)) {
       low = fmin(low, d->gxpos[3 * g + 2] - m->geom[g].rbound);
     }
   }
@@ -118,7 +113,7 @@ static double settle(const urModel* m0, urData* d, int drone, double t, double* 
   }
   double dmax = 0, x[3];
   for (int b = 0; b < m->nbody; b++) {
-    if (intree(m, b, drone)) continue;
+    if (ur_body_intree(m, b, drone)) continue;
     int n = deflections(m, d, b, x);
     for (int k = 0; k < n; k++) dmax = fmax(dmax, fabs(x[k] - m->body[b].rst[k].x0));
   }
@@ -137,7 +132,7 @@ static int balance(urModel* m, int drone, double settle_time, int iters, double*
     if (!isfinite(res)) break;
     for (int b = 0; b < m->nbody; b++) {
       double x[3];
-      if (intree(m, b, drone)) continue;
+      if (ur_body_intree(m, b, drone)) continue;
       int n = deflections(m, d, b, x);
       for (int k = 0; k < n; k++) {
         urRestraint* r = &m->body[b].rst[k];
@@ -301,8 +296,8 @@ static void put_geom(urStance* st, const urModel* m, int g) {
 /* a pair of the person: both ellipsoids off the drone (or the ground) */
 static int person_pair(const urModel* m, int i, int drone) {
   const urPair* p = m->pair + i;
-  return !intree(m, m->geom[p->geom1].body, drone) &&
-         (p->geom2 < 0 || !intree(m, m->geom[p->geom2].body, drone));
+  return !ur_geom_intree(m, p->geom1, drone) &&
+         (p->geom2 < 0 || !ur_geom_intree(m, p->geom2, drone));
 }
 
 static void stance_free(urStance* st) {
@@ -340,14 +335,14 @@ static urStance* stance_new(const urModel* m, int drone, double settle_time, int
   PUT(st, m->opt.implicit_damping);
   PUT(st, m->opt.vmax);
   for (int b = 0; b < m->nbody; b++) {
-    if (intree(m, b, drone)) continue;
+    if (ur_body_intree(m, b, drone)) continue;
     put_body(st, m, b);
     st->nx0 += 3;
     st->nq += m->body[b].nq;
     st->nrst += 2 * m->body[b].nv;
   }
   for (int g = 0; g < m->ngeom; g++) {
-    if (!intree(m, m->geom[g].body, drone)) put_geom(st, m, g);
+    if (!ur_geom_intree(m, g, drone)) put_geom(st, m, g);
   }
   for (int i = 0; i < m->npair; i++) {
     if (!person_pair(m, i, drone)) continue;
@@ -395,7 +390,7 @@ static urStance* stance_copy(const urStance* a) {
 static void stance_x0(urStance* st, urModel* m, int drone, int save) {
   int ix = 0;
   for (int b = 0; b < m->nbody; b++) {
-    if (intree(m, b, drone)) continue;
+    if (ur_body_intree(m, b, drone)) continue;
     for (int k = 0; k < 3; k++, ix++) {
       if (save) st->x0[ix] = m->body[b].rst[k].x0;
       else m->body[b].rst[k].x0 = st->x0[ix];
@@ -409,7 +404,7 @@ static void stance_state(urStance* st, const urModel* m, urData* d, int drone, i
   int iq = 0, ir = 0, ip = 0;
   for (int b = 0; b < m->nbody; b++) {
     const urBody* bd = m->body + b;
-    if (intree(m, b, drone)) continue;
+    if (ur_body_intree(m, b, drone)) continue;
     double* q = d->qpos + bd->qadr;
     double* r = d->rst + 2 * bd->vadr;
     size_t nq = bd->nq * sizeof(double), nr = 2 * bd->nv * sizeof(double);
@@ -520,33 +515,24 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   }
 
   /* the ellipsoid pairs through which the drone can act on the person */
-  s->cand = malloc((m->npair + m->nbag * urMAXBAGTGT + 1) * sizeof *s->cand);
-  s->cand_src = malloc((m->npair + m->nbag * urMAXBAGTGT + 1) * sizeof *s->cand_src);
-  s->cand_of = malloc((m->npair + m->nbag * urMAXBAGTGT + 1) * sizeof *s->cand_of);
+  int nslot = ur_cand_slots(m);
+  s->cand = malloc((size_t)(ur_cand_count(m) + 1) * sizeof *s->cand);
+  s->cand_src = malloc((size_t)(ur_cand_count(m) + 1) * sizeof *s->cand_src);
+  s->cand_of = malloc((size_t)(nslot + 1) * sizeof *s->cand_of);
   if (!s->cand || !s->cand_src || !s->cand_of) {
     snprintf(s->err, sizeof s->err, "out of memory");
     return -1;
   }
-  for (int i = 0; i < m->npair + m->nbag * urMAXBAGTGT; i++) {
-    int ga, gb;
-    s->cand_of[i] = -1;
-    if (i < m->npair) {
-      ga = m->pair[i].geom1;
-      gb = m->pair[i].geom2;
-    } else {
-      const urAirbag* b = m->bag + (i - m->npair) / urMAXBAGTGT;
-      int t = (i - m->npair) % urMAXBAGTGT;
-      if (t >= b->ntarget) continue;
-      ga = b->geom;
-      gb = b->target[t];
-    }
-    if (gb < 0) continue;
-    int ina = intree(m, m->geom[ga].body, s->drone), inb = intree(m, m->geom[gb].body, s->drone);
+  for (int i = 0; i < nslot; i++) s->cand_of[i] = -1;
+  urCand cd;
+  for (int k = 0; ur_cand_at(m, k, &cd) == 0; k++) {
+    if (cd.g2 < 0) continue;
+    int ina = ur_geom_intree(m, cd.g1, s->drone), inb = ur_geom_intree(m, cd.g2, s->drone);
     if (ina == inb) continue;
-    s->cand[s->ncand][0] = ina ? ga : gb;
-    s->cand[s->ncand][1] = ina ? gb : ga;
-    s->cand_src[s->ncand] = i;
-    s->cand_of[i] = s->ncand;
+    s->cand[s->ncand][0] = ina ? cd.g1 : cd.g2;
+    s->cand[s->ncand][1] = ina ? cd.g2 : cd.g1;
+    s->cand_src[s->ncand] = cd.src;
+    s->cand_of[cd.src] = s->ncand;
     s->ncand++;
   }
 
@@ -559,7 +545,7 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   ur_kinematics(m, d);
   const double* cm = d->xcom + 3 * s->drone;
   for (int g = 0; g < m->ngeom; g++) {
-    if (!intree(m, m->geom[g].body, s->drone)) continue;
+    if (!ur_geom_intree(m, g, s->drone)) continue;
     double r = 0, *c = d->gxpos + 3 * g;
     for (int k = 0; k < 3; k++) r += (c[k] - cm[k]) * (c[k] - cm[k]);
     r = sqrt(r) + m->geom[g].rbound;
@@ -600,15 +586,15 @@ int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time) {
 static int trees_apart(const urModel* m, int drone) {
   for (int i = 0; i < m->nbag; i++) {
     const urAirbag* b = m->bag + i;
-    if (!intree(m, m->geom[b->geom].body, drone)) return 0;
+    if (!ur_geom_intree(m, b->geom, drone)) return 0;
     for (int t = 0; t < b->ntarget; t++) {
-      if (intree(m, m->geom[b->target[t]].body, drone)) return 0;
+      if (ur_geom_intree(m, b->target[t], drone)) return 0;
     }
   }
   for (int i = 0; i < m->npair; i++) {
     const urPair* p = m->pair + i;
-    int in1 = intree(m, m->geom[p->geom1].body, drone);
-    int in2 = p->geom2 < 0 || intree(m, m->geom[p->geom2].body, drone);
+    int in1 = ur_geom_intree(m, p->geom1, drone);
+    int in2 = p->geom2 < 0 || ur_geom_intree(m, p->geom2, drone);
     if (in1 && in2) return 0;
   }
   return 1;

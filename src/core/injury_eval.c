@@ -1,11 +1,13 @@
-/* injury_eval.c: all injury criteria and PoFs of one impact from its time histories. */
+/* injury_eval.c: all injury criteria and PoFs of one impact from its time histories: the
+ * channels conditioned once, then every criterion of the registry (injury_registry.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "uasrisk/injury.h"
 
-#define NBUF 10                    /* work buffers of n doubles; the last one holds the HIC work */
+#define NBUF 10                    /* work buffers of n doubles: 8 conditioned channels, then the
+                                      criteria's work space (n doubles and the HIC work) */
 
 int ur_injury_work_size(int n)
 {
@@ -84,53 +86,21 @@ int ur_injury_eval(const urInjuryInput* in, const urInjuryParams* p, double* wor
     goto done;
   }
 
-  // HIC from the resultant head acceleration in g
-  if (ha[0]) {
-    double* ag = buf[8];
-    for (int i = 0; i < n; i++) {
-      double s = ha[0][i] * ha[0][i];
-      s += ha[1] ? ha[1][i] * ha[1][i] : 0.0;
-      s += ha[2] ? ha[2][i] * ha[2][i] : 0.0;
-      ag[i] = (ha[1] || ha[2] ? sqrt(s) : ha[0][i]) / urGRAVITY;
-    }
-    if (ur_hic(in->t, ag, n, 0.015, buf[9], &out->hic15) ||
-        (!in->skip_hic36 && ur_hic(in->t, ag, n, 0.036, buf[9], &out->hic36)) ||
-        (p->hic_window == 0.015 ? (out->hic = out->hic15, 0)
-                                : ur_hic(in->t, ag, n, p->hic_window, buf[9], &out->hic))) {
+  // every criterion of the registry on the conditioned channels, then the fusion (3.1)
+  urInjuryInput cond = *in;
+  for (int k = 0; k < 3; k++) cond.head_acc[k] = ha[k];
+  cond.neck_fz = fz;
+  cond.neck_my = my;
+  cond.neck_fx = fx;
+  cond.thorax_d = dth;
+  cond.abdomen_d = dab;
+  for (int k = 0; k < urNCRIT; k++) {
+    if (ur_criterion(k)->compute(&cond, p, buf[8], out)) {
       err = -1;
       goto done;
     }
-    out->p_hic = ur_pof_hic(out->hic.hic, p);
   }
-
-  // Nij
-  if (fz && my) {
-    if (ur_nij(fz, my, fx, n, p, &out->nij)) {
-      err = -1;
-      goto done;
-    }
-    out->p_nij = ur_pof_nij(out->nij.nij, p);
-  }
-
-  // VC of thorax and abdomen
-  if (dth) {
-    if (ur_vc(in->t, dth, n, p->vc_d0_thorax, p->vc_sf, NULL, &out->vc_thorax)) {
-      err = -1;
-      goto done;
-    }
-    out->p_vc_thorax = ur_pof_vc(out->vc_thorax.vc, urTHORAX, p);
-  }
-  if (dab) {
-    if (ur_vc(in->t, dab, n, p->vc_d0_abdomen, p->vc_sf, NULL, &out->vc_abdomen)) {
-      err = -1;
-      goto done;
-    }
-    out->p_vc_abdomen = ur_pof_vc(out->vc_abdomen.vc, urABDOMEN, p);
-  }
-  out->p_vc = ur_pof_vc_fuse(out->p_vc_thorax, out->p_vc_abdomen, p);
-
-  // fusion (3.1)
-  out->p_total = ur_pof_fuse(out->p_hic, out->p_nij, out->p_vc);
+  out->p_total = ur_pof_fuse_used(out->pof, p);
 
 done:
   if (!work) {

@@ -55,6 +55,13 @@ void ur_injury_defaults(urInjuryParams* p)
   p->vc_pof_abdomen = 1.0;
   p->vc_rescale = 1;
   p->vc_fuse = urVCFUSE_PRODUCT;
+
+  // peak thorax deflection: off (not in the paper); NHTSA (2008) NCAP HIII-50M AIS3+ curve
+  p->use_defl = 0;
+  p->defl_alpha = 10.5456;
+  p->defl_beta = 1.568;
+  p->defl_exp = 0.4612;
+  p->defl_pof = 0.09;
 }
 
 /* one named setting */
@@ -109,6 +116,11 @@ static const urParamDef kParams[] = {
   {"vc_pof_abdomen", D(vc_pof_abdomen), 0, 1, 0, "", "P{F|abdomen AIS5+} (G-W AIS 6)"},
   {"vc_rescale", I(vc_rescale), 0, 1, 0, "", "1: VC curves rescaled to 0 at VC = 0"},
   {"vc_fuse", I(vc_fuse), 0, 1, 0, "", "thorax+abdomen: 0 1-(1-Pt)(1-Pa), 1 max"},
+  {"use_defl", I(use_defl), 0, 1, 0, "", "1: peak thorax deflection enters the fusion"},
+  {"defl_alpha", D(defl_alpha), -1e3, 1e3, 0, "", "AIS3+ deflection alpha (NHTSA 2008)"},
+  {"defl_beta", D(defl_beta), 0, 1e3, 1, "", "AIS3+ deflection beta, per mm^exp (NHTSA 2008)"},
+  {"defl_exp", D(defl_exp), 0, 10, 1, "", "AIS3+ deflection exponent (NHTSA 2008)"},
+  {"defl_pof", D(defl_pof), 0, 1, 0, "", "P{F|thorax AIS3+} (G-W AIS 3)"},
 };
 
 #undef D

@@ -89,6 +89,18 @@ double ur_pof_vc_fuse(double p_thorax, double p_abdomen, const urInjuryParams* p
   return 1.0 - (1.0 - p_thorax) * (1.0 - p_abdomen);
 }
 
+double ur_pof_defl(double d, const urInjuryParams* p)
+{
+  if (!(d > 0)) {
+    return 0;
+  }
+
+  // AIS3+ 1 / (1 + exp(alpha - beta D^e)), D in mm, rescaled to 0 at D = 0, times P{F|AIS3+}
+  double q = logistic(p->defl_alpha, p->defl_beta, pow(1e3 * d, p->defl_exp));
+  double q0 = logistic(p->defl_alpha, p->defl_beta, 0.0);
+  return p->defl_pof * (q - q0) / (1.0 - q0);
+}
+
 double ur_pof_fuse(double p_hic, double p_nij, double p_vc)
 {
   // (3.1), independent criteria
@@ -109,18 +121,23 @@ static double curve_eval(urPofKind kind, const urInjuryParams* p, double x)
     return ur_pof_vc(x, urTHORAX, p);
   case urPOF_VC_ABDOMEN:
     return ur_pof_vc(x, urABDOMEN, p);
+  case urPOF_DEFL:
+    return ur_pof_defl(x, p);
   }
   return 0;
 }
 
 int ur_pof_curve(urPofKind kind, const urInjuryParams* p, int n, double* x, double* prob)
 {
-  if (!p || !x || !prob || n < 2 || (int)kind < 0 || (int)kind > (int)urPOF_VC_ABDOMEN) {
+  if (!p || !x || !prob || n < 2 || (int)kind < 0 || (int)kind > (int)urPOF_DEFL) {
     return -1;
   }
 
   // start value and a point far out for the curve's upper limit
-  double x0 = kind == urPOF_HIC ? 500.0 : (kind == urPOF_NIJ ? 1.0 : 0.5);
+  double x0 = kind == urPOF_HIC ? 500.0 : kind == urPOF_NIJ ? 1.0 : 0.5;
+  if (kind == urPOF_DEFL) {
+    x0 = 0.05;
+  }
   double sup = curve_eval(kind, p, x0 * 1e4);
 
   // grow the range until the curve reaches 99.5 % of its limit

@@ -248,22 +248,19 @@ static double to_z(const freeParam* p, double x) {
   return log((x - p->lo) / (p->hi - x));
 }
 
-/* the fused P of a simulated cell under injury settings ip */
-static double cell_p(const urCell* e, const urInjuryParams* ip, double part[3]) {
-  part[0] = part[1] = part[2] = 0;
+/* the fused P of a simulated cell under injury settings ip, each criterion's in part */
+static double cell_p(const urCell* e, const urInjuryParams* ip, double part[urNCRIT]) {
+  for (int k = 0; k < urNCRIT; k++) part[k] = 0;
   if (!e || e->status != urCELL_DONE || !e->contact) return 0;
-  part[0] = ur_pof_hic(e->hic15, ip);
-  part[1] = ur_pof_nij(e->nij, ip);
-  part[2] = ur_pof_vc_fuse(ur_pof_vc(e->vc_thorax, urTHORAX, ip),
-                           ur_pof_vc(e->vc_abdomen, urABDOMEN, ip), ip);
-  return ur_pof_fuse(part[0], part[1], part[2]);
+  for (int k = 0; k < urNCRIT; k++) part[k] = ur_criterion(k)->pof(e->val, ip);
+  return ur_pof_fuse_used(part, ip);
 }
 
 /* mean |dP| over the union footprint / the paper's mean P, and HIC's share at the centre */
 static double case_loss(const spec* s, const trainCase* k, urGrid* ours,
                         const urInjuryParams* ip, double* share) {
   const urGrid* pg = k->paper;
-  double sum = 0, w = 0, part[3];
+  double sum = 0, w = 0, part[urNCRIT];
   for (long j = 0; j < (long)pg->nrow * pg->ncol; j++) {
     const urCell* pc = pg->cell + j;
     double po = cell_p(ur_grid_find(ours, pc->dpar, pc->dperp), ip, part);
@@ -273,7 +270,8 @@ static double case_loss(const spec* s, const trainCase* k, urGrid* ours,
     }
   }
   double p0 = cell_p(ur_grid_find(ours, 0, 0), ip, part);
-  double tot = part[0] + part[1] + part[2];
+  double tot = 0;
+  for (int c = 0; c < urNCRIT; c++) tot += ur_criterion_used(c, ip) ? part[c] : 0;
   *share = p0 > 0 && tot > 0 ? part[0] / tot : 1;
   return w > 0 ? sum / w / k->pbar : 0;
 }
@@ -441,8 +439,7 @@ int main(int argc, char** argv) {
              (int)(eq - argv[i]), argv[i], eq + 1);
   }
   if (maxeval > 0) s.maxeval = maxeval;
-  gsl_set_error_handler_off();
-  ura_init(&c);
+  ura_init(&c);                                  /* GSL failures as return codes (ur_init) */
   c.out = fopen("/dev/null", "w");
   if (!c.out || ura_models_init(&c) || load_tables(&c, &s)) return 1;
   for (int i = 0; i < nload; i++) {
