@@ -11,7 +11,7 @@
 static double cpu(void) {
   struct timespec t;
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9*t.tv_nsec;
+  return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
 
@@ -39,19 +39,19 @@ int main(int argc, char** argv) {
   urData* rest = ur_data_new(m);
   double park[3] = {0, 0, 100}, zero[3] = {0, 0, 0};
   ur_set_free(m, rest, dr, park, NULL, zero, zero);
-  int n = (int)(0.3/m->opt.dt);
+  int n = (int)(0.3 / m->opt.dt);
   double t0 = cpu();
   for (int i = 0; i < n; i++) {
     ur_step(m, rest);
   }
-  double ts = (cpu() - t0)/n;
-  printf("  stepping (no drone contact): %.2f us/step, %.3f ms CPU per simulated ms\n", 1e6*ts,
-         1e3*ts*1e-3/m->opt.dt);
+  double ts = (cpu() - t0) / n;
+  printf("  stepping (no drone contact): %.2f us/step, %.3f ms CPU per simulated ms\n", 1e6 * ts,
+         1e3 * ts * 1e-3 / m->opt.dt);
   printf("  kinetic energy left after settling: %.3g J (then zeroed)\n", rest->energy);
-  memset(rest->qvel, 0, (size_t)m->nv*sizeof(double));
+  memset(rest->qvel, 0, (size_t)m->nv * sizeof(double));
   rest->time = 0;
   ur_forward(m, rest);
-  printf("  settled stance after %.2f s: %s, neck load %.1f N\n", n*m->opt.dt,
+  printf("  settled stance after %.2f s: %s, neck load %.1f N\n", n * m->opt.dt,
          ur_status_str(rest->status), rest->sensordata[m->sensor[ns].adr + 2]);
 
   // complete impacts at several offsets and speeds
@@ -71,14 +71,15 @@ int main(int argc, char** argv) {
       runs++;
       const double* pk = d->peakmax + m->sensor[hs].adr;
       const double* pn = d->peakmin + m->sensor[hs].adr;
-      printf("  impact v %4.1f off %.2f: %-20s %5ld steps (%4.1f ms), %6.2f ms CPU, "
-             "head a [%6.0f, %6.0f] m/s^2, neck Fz [%6.0f, %6.0f] N\n", spd[s], offs[o],
-             ur_status_str(st), d->nstep, 1e3*(d->time - d->t_jump), 1e3*t, pn[2], pk[2],
-             d->peakmin[m->sensor[ns].adr + 2], d->peakmax[m->sensor[ns].adr + 2]);
+      printf(
+          "  impact v %4.1f off %.2f: %-20s %5ld steps (%4.1f ms), %6.2f ms CPU, "
+          "head a [%6.0f, %6.0f] m/s^2, neck Fz [%6.0f, %6.0f] N\n",
+          spd[s], offs[o], ur_status_str(st), d->nstep, 1e3 * (d->time - d->t_jump), 1e3 * t, pn[2],
+          pk[2], d->peakmin[m->sensor[ns].adr + 2], d->peakmax[m->sensor[ns].adr + 2]);
     }
   }
   printf("  impacts: mean %.2f ms CPU, worst %.2f ms CPU, %.2f us/step in contact\n",
-         1e3*tot/runs, 1e3*worst, 1e6*tot/steps);
+         1e3 * tot / runs, 1e3 * worst, 1e6 * tot / steps);
   ur_data_free(d);
   ur_data_free(rest);
   ur_model_free(m);

@@ -22,7 +22,7 @@ static double now(double* cpu) {
 }
 
 typedef struct {
-  double setup, wall, cpu, q;       /* model and settled stance; the grid itself; CPU of the grid */
+  double setup, wall, cpu, q; /* model and settled stance; the grid itself; CPU of the grid */
   int impacts, cells;
 } result;
 
@@ -56,9 +56,11 @@ static int grid(uraCtx* c, const char* setup, double step, int threads, result* 
 }
 
 static void report(const char* name, const result* r) {
-  printf("  %-10s %6.2f s wall (+%5.2f s set-up)  %5d cells  %4d impacts  %6.1f impacts/s  "
-         "%5.1f ms CPU/impact  Q %.4f m^2\n", name, r->wall, r->setup, r->cells, r->impacts,
-         r->impacts / r->wall, 1e3 * r->cpu / (r->impacts ? r->impacts : 1), r->q);
+  printf(
+      "  %-10s %6.2f s wall (+%5.2f s set-up)  %5d cells  %4d impacts  %6.1f impacts/s  "
+      "%5.1f ms CPU/impact  Q %.4f m^2\n",
+      name, r->wall, r->setup, r->cells, r->impacts, r->impacts / r->wall,
+      1e3 * r->cpu / (r->impacts ? r->impacts : 1), r->q);
 }
 
 /* every cell's results, for comparing two grids exactly */
@@ -96,17 +98,18 @@ int main(int argc, char** argv) {
     fclose(f);
   }
   int nt = ncpu >= 2 ? 2 : 1;
-  printf("bench_grid: grids of step %g m, %d worker threads, %ld CPUs online, load average "
-         "%.2f %.2f %.2f\n", step, nt, ncpu, load[0], load[1], load[2]);
+  printf(
+      "bench_grid: grids of step %g m, %d worker threads, %ld CPUs online, load average "
+      "%.2f %.2f %.2f\n",
+      step, nt, ncpu, load[0], load[1], load[2]);
 
   /* zero-wind grids of A, B, C and the 10 m/s grid of B, face 0 */
   static const char* const names[] = {"A, 0 m/s", "B, 0 m/s", "C, 0 m/s", "B, 10 m/s"};
-  static const char* const setups[] = {"set wind 0; set face 0; case A",
-                                       "set wind 0; set face 0; case B",
-                                       "set wind 0; set face 0; case C",
-                                       "set wind 10; set face 0; case B"};
+  static const char* const setups[] = {
+      "set wind 0; set face 0; case A", "set wind 0; set face 0; case B",
+      "set wind 0; set face 0; case C", "set wind 10; set face 0; case B"};
   result r[4];
-  urGrid* b0 = NULL;                 /* B at 0 m/s with nt threads, kept for the thread check */
+  urGrid* b0 = NULL; /* B at 0 m/s with nt threads, kept for the thread check */
   double zero = 0, imp = 0, wall = 0;
   for (int i = 0; i < 4; i++) {
     if (grid(c, setups[i], step, nt, &r[i])) return 1;
@@ -119,8 +122,10 @@ int main(int argc, char** argv) {
       c->last.g = NULL;
     }
   }
-  printf("  zero-wind grid: mean %.2f s wall (target 1 s); %.1f impacts per second over the four "
-         "grids\n", zero / 3, imp / wall);
+  printf(
+      "  zero-wind grid: mean %.2f s wall (target 1 s); %.1f impacts per second over the four "
+      "grids\n",
+      zero / 3, imp / wall);
 
   /* 1 -> 2 threads on the zero-wind grid of B: the speed-up, and the same cells */
   int rc = 0;

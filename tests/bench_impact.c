@@ -104,9 +104,11 @@ static int bench(const char* cs) {
       runs++;
     }
   }
-  printf("  case %-2s set-up %6.0f ms; %3d impacts alone: mean %5.2f ms CPU (worst %5.2f), "
-         "%4.0f steps of %5.2f us (dt %.0e s)\n", cs, 1e3 * tsetup, runs, 1e3 * tot / runs,
-         1e3 * worst, (double)steps / runs, 1e6 * tot / steps, s->m->opt.dt);
+  printf(
+      "  case %-2s set-up %6.0f ms; %3d impacts alone: mean %5.2f ms CPU (worst %5.2f), "
+      "%4.0f steps of %5.2f us (dt %.0e s)\n",
+      cs, 1e3 * tsetup, runs, 1e3 * tot / runs, 1e3 * worst, (double)steps / runs,
+      1e6 * tot / steps, s->m->opt.dt);
   ur_impact_work_free(&w);
 
   /* the same offsets in lanes, NREP times: this machine's speed varies from run to run, so the
@@ -120,8 +122,10 @@ static int bench(const char* cs) {
     ur_impact_run_many(s, L, &cond, &c.st.injury, lanes_next, lanes_done, &f);
     tl[k] = cpu() - t0;
     if (f.failed || f.ndone != runs || f.steps != steps) {
-      fprintf(stderr, "bench_impact: case %s: the lanes ran %d impacts (%d failed), %ld steps; "
-              "alone %d, %ld\n", cs, f.ndone, f.failed, f.steps, runs, steps);
+      fprintf(stderr,
+              "bench_impact: case %s: the lanes ran %d impacts (%d failed), %ld steps; "
+              "alone %d, %ld\n",
+              cs, f.ndone, f.failed, f.steps, runs, steps);
       ur_impact_lanes_free(L);
       return 1;
     }
@@ -129,9 +133,10 @@ static int bench(const char* cs) {
   ur_impact_lanes_free(L);
   gsl_sort(tl, 1, NREP);
   double best = tl[0], med = gsl_stats_median_from_sorted_data(tl, 1, NREP);
-  printf("  case %-2s %22s%3d impacts in lanes: %5.2f ms CPU per impact (best of %d; median "
-         "%5.2f), %5.2f us per step (x%.2f)\n", cs, "", runs, 1e3 * best / runs, NREP,
-         1e3 * med / runs, 1e6 * best / steps, tot / med);
+  printf(
+      "  case %-2s %22s%3d impacts in lanes: %5.2f ms CPU per impact (best of %d; median "
+      "%5.2f), %5.2f us per step (x%.2f)\n",
+      cs, "", runs, 1e3 * best / runs, NREP, 1e3 * med / runs, 1e6 * best / steps, tot / med);
   return 0;
 }
 

@@ -21,8 +21,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   char line[400];
-  snprintf(line, sizeof line, "set step %g; case A; set recall off; dist wind weibull 5 2; "
-           "dist face uniform -180 180; set surface_check 10", step);
+  snprintf(line, sizeof line,
+           "set step %g; case A; set recall off; dist wind weibull 5 2; "
+           "dist face uniform -180 180; set surface_check 10",
+           step);
   if (ura_run_line(c, line)) {
     fprintf(stderr, "bench_montecarlo: %s\n", c->err);
     return 1;
@@ -35,7 +37,9 @@ int main(int argc, char** argv) {
     fprintf(stderr, "bench_montecarlo: %s\n", c->err);
     return 1;
   }
-  printf("bench_montecarlo: 1000 samples of case A over wind and face at step %g m: %.1f s wall "
-         "(summary above)\n", step, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
+  printf(
+      "bench_montecarlo: 1000 samples of case A over wind and face at step %g m: %.1f s wall "
+      "(summary above)\n",
+      step, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
   return 0;
 }

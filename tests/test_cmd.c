@@ -62,7 +62,7 @@ static void set_says_reach(void** state) {
   size_t n = 0;
   FILE* old = f->c.msg;
   f->c.msg = open_memstream(&msg, &n);
-  run(f, "set width 2", 0);                         /* not interactive: no note */
+  run(f, "set width 2", 0); /* not interactive: no note */
   fflush(f->c.msg);
   assert_int_equal(n, 0);
   f->c.interactive = 1;
@@ -70,12 +70,13 @@ static void set_says_reach(void** state) {
   run(f, "set mass 12", 0);
   run(f, "set arm_k 7000", 0);
   run(f, "set drone_size 1.1", 0);
-  run(f, "set wind 3", 0);                          /* no note: obvious */
+  run(f, "set wind 3", 0); /* no note: obvious */
   fclose(f->c.msg);
   f->c.msg = old;
   assert_non_null(strstr(msg, "set width: changes the parametric model only"));
-  assert_non_null(strstr(msg, "set mass: changes the descent and parametric models and the "
-                          "multibody drone"));
+  assert_non_null(strstr(msg,
+                         "set mass: changes the descent and parametric models and the "
+                         "multibody drone"));
   assert_non_null(strstr(msg, "set arm_k: changes the multibody model (impact, grid)"));
   assert_non_null(strstr(msg, "set drone_size: changes the multibody drone's size"));
   assert_null(strstr(msg, "set wind"));
@@ -107,10 +108,19 @@ static void set_and_show(void** state) {
 static void bad_values_leave_state(void** state) {
   fixture* f = *state;
   run(f, "set wind 3", 0);
-  static const char* const bad[] = {"set wind abc", "set wind -1", "set wind nan",
-                                    "set wind 1e400", "set wind 0x10", "set wind 3m",
-                                    "set wind \"\"", "set winds 1,,2", "set format xml",
-                                    "set nosuch 1", "set wind", "set wind 1 2", NULL};
+  static const char* const bad[] = {"set wind abc",
+                                    "set wind -1",
+                                    "set wind nan",
+                                    "set wind 1e400",
+                                    "set wind 0x10",
+                                    "set wind 3m",
+                                    "set wind \"\"",
+                                    "set winds 1,,2",
+                                    "set format xml",
+                                    "set nosuch 1",
+                                    "set wind",
+                                    "set wind 1 2",
+                                    NULL};
   for (int i = 0; bad[i]; i++) {
     run(f, bad[i], -1);
     assert_true(f->c.st.descent.wind == 3);
@@ -148,10 +158,10 @@ static void cases(void** state) {
 static void descent_paper(void** state) {
   fixture* f = *state;
   static const double w[6] = {0, 2, 4, 6, 8, 10};
-  static const double b[6][2] = {{7.5, 90.0}, {7.8, 75.1}, {8.5, 62.0}, {9.6, 51.5},
-                                 {11.0, 43.3}, {12.5, 37.0}};
-  static const double cc[6][2] = {{40.6, 90.0}, {40.6, 89.0}, {40.6, 88.0}, {40.5, 86.9},
-                                  {40.5, 85.8}, {40.4, 84.7}};
+  static const double b[6][2] = {{7.5, 90.0}, {7.8, 75.1},  {8.5, 62.0},
+                                 {9.6, 51.5}, {11.0, 43.3}, {12.5, 37.0}};
+  static const double cc[6][2] = {{40.6, 90.0}, {40.6, 89.0}, {40.6, 88.0},
+                                  {40.5, 86.9}, {40.5, 85.8}, {40.4, 84.7}};
   static const char* const cases[] = {"A", "B", "C", "A1", "A2"};
   double sp, an;
   assert_int_equal(f->c.st.descent_src, uraDESC_MODEL);
@@ -175,17 +185,20 @@ static void descent_paper(void** state) {
     }
   }
   out = run(f, "case C; set wind 10; show speed", 0);
-  assert_non_null(strstr(out, "speed            40.4 m/s  (derived: the paper's Table 2, case C's "
-                              "column, at the live wind"));
+  assert_non_null(strstr(out,
+                         "speed            40.4 m/s  (derived: the paper's Table 2, case C's "
+                         "column, at the live wind"));
   out = run(f, "case A1; show angle", 0);
-  assert_non_null(strstr(out, "angle            37 deg  (derived: the paper's Table 2, case B's "
-                              "column"));
+  assert_non_null(strstr(out,
+                         "angle            37 deg  (derived: the paper's Table 2, case B's "
+                         "column"));
 
   /* an unprinted wind: refused where the speed is needed, one line */
   run(f, "set wind 3", 0);
   run(f, "show speed", -1);
-  assert_non_null(strstr(f->c.err, "wind 3 m/s is not printed in the paper's Table 2; accepted: "
-                                   "wind 0, 2, 4, 6, 8 or 10 m/s"));
+  assert_non_null(strstr(f->c.err,
+                         "wind 3 m/s is not printed in the paper's Table 2; accepted: "
+                         "wind 0, 2, 4, 6, 8 or 10 m/s"));
   assert_null(strchr(f->c.err, '\n'));
   run(f, "grid", -1);
   assert_non_null(strstr(f->c.err, "wind 3 m/s is not printed"));
@@ -200,14 +213,16 @@ static void descent_paper(void** state) {
 
   /* descent and parametric: the model, saying so */
   out = run(f, "set format csv; case B; set winds 10; descent", 0);
-  assert_non_null(strstr(out, "# the descent model (eq. 2.2); impacts and grids take the paper's "
-                              "Table 2 instead"));
+  assert_non_null(strstr(out,
+                         "# the descent model (eq. 2.2); impacts and grids take the paper's "
+                         "Table 2 instead"));
   assert_non_null(strstr(out, "B,10,12.488,36.80\n"));
   out = run(f, "parametric", 0);
   assert_non_null(strstr(out, "B,10,12.488,36.80,"));
 
   run(f, "set descent nosuch", -1);
-  assert_non_null(strstr(f->c.err, "set descent: 'nosuch' is not accepted; accepted: model or paper"));
+  assert_non_null(
+      strstr(f->c.err, "set descent: 'nosuch' is not accepted; accepted: model or paper"));
   assert_int_equal(f->c.st.descent_src, uraDESC_PAPER);
   run(f, "reset", 0);
   assert_int_equal(f->c.st.descent_src, uraDESC_MODEL);
@@ -241,8 +256,10 @@ static void csv_headers(void** state) {
   assert_int_equal(count_lines(out, "case,wind,speed,angle\n"), 1);
   assert_int_equal(count_lines(out, "B,"), 6);
   out = run(f, "parametric", 0);
-  assert_int_equal(count_lines(out, "case,wind,speed,angle,planform,mtow,gliding,pof_rcc,"
-                               "pof_bc,pof_awke\n"), 1);
+  assert_int_equal(count_lines(out,
+                               "case,wind,speed,angle,planform,mtow,gliding,pof_rcc,"
+                               "pof_bc,pof_awke\n"),
+                   1);
   assert_int_equal(count_lines(out, "B,"), 6);
   assert_non_null(strstr(out, "B,0,7.480,90.00,1.430,3.000,2.550,"));
   out = run(f, "set winds 10; descent", 0);
@@ -312,8 +329,8 @@ static void model_reuse(void** state) {
   assert_ptr_not_equal(ura_model(&f->c), NULL);
   assert_true(f->c.model->param[ura_model_param_find(&f->c, "bag_bottom")].value == 1);
   run(f, "set bag_p0 1.1 atm", 0);
-  assert_true(fabs(f->c.model->param[ura_model_param_find(&f->c, "bag_p0")].value - 111457.5)
-              < 1e-6);
+  assert_true(fabs(f->c.model->param[ura_model_param_find(&f->c, "bag_p0")].value - 111457.5) <
+              1e-6);
 }
 
 /* dry mode (the fuzz harness): arguments are still checked, then simulations, grids, plots,
@@ -335,7 +352,7 @@ static void failed_impact_keeps_last(void** state) {
   assert_string_equal(run(f, "contacts", 0), contacts);
   assert_string_equal(run(f, "history", 0), history);
   uraTrace tr;
-  assert_int_equal(ura_last_trace(&f->c, &tr), 0);          /* plot history has it too */
+  assert_int_equal(ura_last_trace(&f->c, &tr), 0); /* plot history has it too */
   free(contacts);
   free(history);
 }
@@ -345,10 +362,17 @@ static void dry_mode(void** state) {
   f->c.dry = 1;
   run(f, "impact 0.1 zz", -1);
   assert_non_null(strstr(f->c.err, "DPERP 'zz' is not a number"));
-  static const char* const refused[] = {"impact 0 0", "grid", "sweep wind 0,2", "compare",
-                                        "source /dev/null", "model load /dev/null",
-                                        "grid load /dev/null", "save session /tmp/dry.ses",
-                                        "model save /tmp/dry.urm", "plot pof", NULL};
+  static const char* const refused[] = {"impact 0 0",
+                                        "grid",
+                                        "sweep wind 0,2",
+                                        "compare",
+                                        "source /dev/null",
+                                        "model load /dev/null",
+                                        "grid load /dev/null",
+                                        "save session /tmp/dry.ses",
+                                        "model save /tmp/dry.urm",
+                                        "plot pof",
+                                        NULL};
   for (int i = 0; refused[i]; i++) {
     run(f, refused[i], -1);
     assert_non_null(strstr(f->c.err, "not run (dry mode"));
@@ -362,20 +386,20 @@ static void dry_mode(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test_setup_teardown(dry_mode, setup, teardown),
-    cmocka_unit_test_setup_teardown(failed_impact_keeps_last, setup, teardown),
-    cmocka_unit_test_setup_teardown(model_reuse, setup, teardown),
-    cmocka_unit_test_setup_teardown(set_and_show, setup, teardown),
-    cmocka_unit_test_setup_teardown(set_says_reach, setup, teardown),
-    cmocka_unit_test_setup_teardown(bad_values_leave_state, setup, teardown),
-    cmocka_unit_test_setup_teardown(cases, setup, teardown),
-    cmocka_unit_test_setup_teardown(descent_paper, setup, teardown),
-    cmocka_unit_test_setup_teardown(tau_setting, setup, teardown),
-    cmocka_unit_test_setup_teardown(csv_headers, setup, teardown),
-    cmocka_unit_test_setup_teardown(table_format, setup, teardown),
-    cmocka_unit_test_setup_teardown(line_syntax, setup, teardown),
-    cmocka_unit_test_setup_teardown(help_from_table, setup, teardown),
-    cmocka_unit_test_setup_teardown(show_set_roundtrip, setup, teardown),
+      cmocka_unit_test_setup_teardown(dry_mode, setup, teardown),
+      cmocka_unit_test_setup_teardown(failed_impact_keeps_last, setup, teardown),
+      cmocka_unit_test_setup_teardown(model_reuse, setup, teardown),
+      cmocka_unit_test_setup_teardown(set_and_show, setup, teardown),
+      cmocka_unit_test_setup_teardown(set_says_reach, setup, teardown),
+      cmocka_unit_test_setup_teardown(bad_values_leave_state, setup, teardown),
+      cmocka_unit_test_setup_teardown(cases, setup, teardown),
+      cmocka_unit_test_setup_teardown(descent_paper, setup, teardown),
+      cmocka_unit_test_setup_teardown(tau_setting, setup, teardown),
+      cmocka_unit_test_setup_teardown(csv_headers, setup, teardown),
+      cmocka_unit_test_setup_teardown(table_format, setup, teardown),
+      cmocka_unit_test_setup_teardown(line_syntax, setup, teardown),
+      cmocka_unit_test_setup_teardown(help_from_table, setup, teardown),
+      cmocka_unit_test_setup_teardown(show_set_roundtrip, setup, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -60,7 +60,8 @@ static double ground_force(const char* law) {
            "body ball parent=world joint=free pos=0,0,0.099 mass=1 inertia=0.01,0.01,0.01\n"
            "ellipsoid s body=ball pos=0,0,0 size=0.1,0.1,0.1\n"
            "law h type=hertz E1=2e7 nu1=0.3 E2=2e11 nu2=0.3 %s\n"
-           "pair g a=s b=ground law=h\n", law);
+           "pair g a=s b=ground law=h\n",
+           law);
   urModelSource src = {text, "t.urm", 1};
   urModel* m = ur_model_parse(&src, 1, NULL, 0, err, sizeof err);
   if (!m) print_error("%s\n", err);
@@ -76,31 +77,34 @@ static double ground_force(const char* law) {
 static void engine_law(void** state) {
   double a = ground_force("R1=0.1 R2=0"), b = ground_force("");
   assert_true(a > 0 && fabs(a - b) < 1e-6 * a);
-  assert_true(ground_force("R1=0.2 R2=0") > 1.2 * b);    /* the radius matters: the test can fail */
+  assert_true(ground_force("R1=0.2 R2=0") > 1.2 * b); /* the radius matters: the test can fail */
 }
 
 static void refusals(void** state) {
   char err[256];
   urModelSource src = {"law h type=hertz E1=2e7 nu1=0.3 E2=2e11 nu2=0.3 R1=0.1\n", "t.urm", 1};
   assert_null(ur_model_parse(&src, 1, NULL, 0, err, sizeof err));
-  assert_string_equal(err, "t.urm:1: law 'h': give R1 and R2, or neither (the radius then comes "
+  assert_string_equal(err,
+                      "t.urm:1: law 'h': give R1 and R2, or neither (the radius then comes "
                       "from the ellipsoids' curvature at the contact)");
-  src.text = "body b parent=world joint=free pos=0,0,1 mass=1 inertia=1,1,1\n"
-             "ellipsoid s body=b pos=0,0,0 size=0.1,0.1,0.1 degree=4\n"
-             "law h type=hertz E1=2e7 nu1=0.3 E2=2e11 nu2=0.3\n"
-             "pair g a=s b=ground law=h\n";
+  src.text =
+      "body b parent=world joint=free pos=0,0,1 mass=1 inertia=1,1,1\n"
+      "ellipsoid s body=b pos=0,0,0 size=0.1,0.1,0.1 degree=4\n"
+      "law h type=hertz E1=2e7 nu1=0.3 E2=2e11 nu2=0.3\n"
+      "pair g a=s b=ground law=h\n";
   assert_null(ur_model_parse(&src, 1, NULL, 0, err, sizeof err));
-  assert_string_equal(err, "t.urm:4: pair 'g': ellipsoid 's' has degree=4; a Hertz law without "
+  assert_string_equal(err,
+                      "t.urm:4: pair 'g': ellipsoid 's' has degree=4; a Hertz law without "
                       "R1 and R2 takes its radius from the curvature of ellipsoids of degree 2 "
                       "(give R1 and R2)");
 }
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(spheres),
-    cmocka_unit_test(pole_on_ground),
-    cmocka_unit_test(engine_law),
-    cmocka_unit_test(refusals),
+      cmocka_unit_test(spheres),
+      cmocka_unit_test(pole_on_ground),
+      cmocka_unit_test(engine_law),
+      cmocka_unit_test(refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -17,15 +17,14 @@
 
 #include "uasrisk/contact.h"
 
-#define NPAIR 1000
+#define NPAIR   1000
 #define NSAMPLE 20000
 
 /* ---- helpers ---- */
 
 /* |a - b| <= tol with both values printed on failure (cmocka 1.1 has float-only compares) */
 #define assert_near(a, b, tol) near_((a), (b), (tol), #a, __FILE__, __LINE__)
-static void near_(double a, double b, double tol, const char* what, const char* file, int line)
-{
+static void near_(double a, double b, double tol, const char* what, const char* file, int line) {
   if (!(fabs(a - b) <= tol)) {
     print_error("%s = %.17g, expected %.17g +- %.3g\n", what, a, b, tol);
     _fail(file, line);
@@ -33,59 +32,59 @@ static void near_(double a, double b, double tol, const char* what, const char* 
 }
 
 /* random rotation matrix (row-major) from a uniform random unit quaternion */
-static void randrot(gsl_rng* rng, double R[9])
-{
+static void randrot(gsl_rng* rng, double R[9]) {
   double q[4], s = 0;
   for (int i = 0; i < 4; i++) {
     q[i] = gsl_ran_gaussian(rng, 1.0);
-    s += q[i]*q[i];
+    s += q[i] * q[i];
   }
   s = 1.0 / sqrt(s);
-  double w = q[0]*s, x = q[1]*s, y = q[2]*s, z = q[3]*s;
-  R[0] = 1 - 2*(y*y + z*z); R[1] = 2*(x*y - w*z);     R[2] = 2*(x*z + w*y);
-  R[3] = 2*(x*y + w*z);     R[4] = 1 - 2*(x*x + z*z); R[5] = 2*(y*z - w*x);
-  R[6] = 2*(x*z - w*y);     R[7] = 2*(y*z + w*x);     R[8] = 1 - 2*(x*x + y*y);
+  double w = q[0] * s, x = q[1] * s, y = q[2] * s, z = q[3] * s;
+  R[0] = 1 - 2 * (y * y + z * z);
+  R[1] = 2 * (x * y - w * z);
+  R[2] = 2 * (x * z + w * y);
+  R[3] = 2 * (x * y + w * z);
+  R[4] = 1 - 2 * (x * x + z * z);
+  R[5] = 2 * (y * z - w * x);
+  R[6] = 2 * (x * z - w * y);
+  R[7] = 2 * (y * z + w * x);
+  R[8] = 1 - 2 * (x * x + y * y);
 }
 
-static void randunit(gsl_rng* rng, double u[3])
-{
+static void randunit(gsl_rng* rng, double u[3]) {
   gsl_ran_dir_3d(rng, &u[0], &u[1], &u[2]);
 }
 
-static void randell(gsl_rng* rng, urEllipsoid* e, double rlo, double rhi)
-{
+static void randell(gsl_rng* rng, urEllipsoid* e, double rlo, double rhi) {
   e->p = 0;
   randrot(rng, e->R);
   for (int i = 0; i < 3; i++) {
-    e->r[i] = rlo + (rhi - rlo)*gsl_rng_uniform(rng);
+    e->r[i] = rlo + (rhi - rlo) * gsl_rng_uniform(rng);
     e->c[i] = 0;
   }
 }
 
-static double minaxis(const urEllipsoid* e)
-{
+static double minaxis(const urEllipsoid* e) {
   return fmin(e->r[0], fmin(e->r[1], e->r[2]));
 }
 
 /* independent support point: local frame, x_l = D^2 v / |D v| with v = R^T u */
-static void support(const urEllipsoid* e, const double u[3], double x[3])
-{
+static void support(const urEllipsoid* e, const double u[3], double x[3]) {
   double v[3], dv[3], n = 0;
   for (int k = 0; k < 3; k++) {
-    v[k] = e->R[k]*u[0] + e->R[3 + k]*u[1] + e->R[6 + k]*u[2];
-    dv[k] = e->r[k]*v[k];
-    n += dv[k]*dv[k];
+    v[k] = e->R[k] * u[0] + e->R[3 + k] * u[1] + e->R[6 + k] * u[2];
+    dv[k] = e->r[k] * v[k];
+    n += dv[k] * dv[k];
   }
   n = sqrt(n);
   for (int i = 0; i < 3; i++) {
     x[i] = e->c[i];
-    for (int k = 0; k < 3; k++) x[i] += e->R[3*i + k] * e->r[k]*dv[k] / n;
+    for (int k = 0; k < 3; k++) x[i] += e->R[3 * i + k] * e->r[k] * dv[k] / n;
   }
 }
 
 /* boundary point of A - B with outward normal u: w = s_A(u) - s_B(-u) */
-static void mdiff(const urEllipsoid* a, const urEllipsoid* b, const double u[3], double w[3])
-{
+static void mdiff(const urEllipsoid* a, const urEllipsoid* b, const double u[3], double w[3]) {
   double mu[3] = {-u[0], -u[1], -u[2]}, xa[3], xb[3];
   support(a, u, xa);
   support(b, mu, xb);
@@ -103,47 +102,43 @@ typedef struct {
   double u0[3], t1[3], t2[3];
 } chart;
 
-static void chartdir(const chart* c, const gsl_vector* x, double u[3])
-{
+static void chartdir(const chart* c, const gsl_vector* x, double u[3]) {
   double p = gsl_vector_get(x, 0), q = gsl_vector_get(x, 1), s = 0;
   for (int i = 0; i < 3; i++) {
-    u[i] = c->u0[i] + p*c->t1[i] + q*c->t2[i];
-    s += u[i]*u[i];
+    u[i] = c->u0[i] + p * c->t1[i] + q * c->t2[i];
+    s += u[i] * u[i];
   }
   s = 1.0 / sqrt(s);
   for (int i = 0; i < 3; i++) u[i] *= s;
 }
 
-static void setchart(chart* c, const double u[3])
-{
+static void setchart(chart* c, const double u[3]) {
   double e[3] = {1, 0, 0};
   if (fabs(u[0]) > 0.6) {
     e[0] = 0;
     e[1] = 1;
   }
-  double d = e[0]*u[0] + e[1]*u[1] + e[2]*u[2], s = 0;
+  double d = e[0] * u[0] + e[1] * u[1] + e[2] * u[2], s = 0;
   for (int i = 0; i < 3; i++) {
     c->u0[i] = u[i];
-    c->t1[i] = e[i] - d*u[i];
-    s += c->t1[i]*c->t1[i];
+    c->t1[i] = e[i] - d * u[i];
+    s += c->t1[i] * c->t1[i];
   }
   s = 1.0 / sqrt(s);
   for (int i = 0; i < 3; i++) c->t1[i] *= s;
-  c->t2[0] = u[1]*c->t1[2] - u[2]*c->t1[1];
-  c->t2[1] = u[2]*c->t1[0] - u[0]*c->t1[2];
-  c->t2[2] = u[0]*c->t1[1] - u[1]*c->t1[0];
+  c->t2[0] = u[1] * c->t1[2] - u[2] * c->t1[1];
+  c->t2[1] = u[2] * c->t1[0] - u[0] * c->t1[2];
+  c->t2[2] = u[0] * c->t1[1] - u[1] * c->t1[0];
 }
 
 /* squared distance of the Minkowski-difference boundary point from the origin */
-static double dist2(const urEllipsoid* a, const urEllipsoid* b, const double u[3])
-{
+static double dist2(const urEllipsoid* a, const urEllipsoid* b, const double u[3]) {
   double w[3];
   mdiff(a, b, u, w);
-  return w[0]*w[0] + w[1]*w[1] + w[2]*w[2];
+  return w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
 }
 
-static double chartobj(const gsl_vector* x, void* par)
-{
+static double chartobj(const gsl_vector* x, void* par) {
   const chart* c = par;
   double u[3];
   chartdir(c, x, u);
@@ -152,8 +147,7 @@ static double chartobj(const gsl_vector* x, void* par)
 
 /* Nelder-Mead polish of objective fn from direction u (in/out) */
 static double nmpolish(const urEllipsoid* a, const urEllipsoid* b, dirfn fn, double u[3],
-                       double step)
-{
+                       double step) {
   double best = 0;
   for (int pass = 0; pass < 3; pass++) {
     chart c = {a, b, fn, {0}, {0}, {0}};
@@ -162,8 +156,8 @@ static double nmpolish(const urEllipsoid* a, const urEllipsoid* b, dirfn fn, dou
     gsl_vector* x = gsl_vector_calloc(2);
     gsl_vector* ss = gsl_vector_alloc(2);
     gsl_vector_set_all(ss, step);
-    gsl_multimin_fminimizer* m = gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2,
-                                                               2);
+    gsl_multimin_fminimizer* m =
+        gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 2);
     gsl_multimin_fminimizer_set(m, &mf, x, ss);
     for (int it = 0; it < 5000; it++) {
       if (gsl_multimin_fminimizer_iterate(m)) break;
@@ -181,21 +175,22 @@ static double nmpolish(const urEllipsoid* a, const urEllipsoid* b, dirfn fn, dou
 
 /* brute-force minimum of fn: dense direction sampling, then Nelder-Mead polish of the best
    few separated candidates; uref its direction */
-static double bestdir(const urEllipsoid* a, const urEllipsoid* b, dirfn fn, double uref[3])
-{
-  enum { NCAND = 4 };
+static double bestdir(const urEllipsoid* a, const urEllipsoid* b, dirfn fn, double uref[3]) {
+  enum {
+    NCAND = 4
+  };
   double cu[NCAND][3], cv[NCAND];
   int nc = 0;
   double ga = M_PI * (3 - sqrt(5.0));
 
   // Fibonacci sphere sampling; keep the best NCAND mutually distant directions
   for (int k = 0; k < NSAMPLE; k++) {
-    double z = 1 - (2*k + 1.0) / NSAMPLE, r = sqrt(1 - z*z);
-    double u[3] = {r*cos(ga*k), r*sin(ga*k), z};
+    double z = 1 - (2 * k + 1.0) / NSAMPLE, r = sqrt(1 - z * z);
+    double u[3] = {r * cos(ga * k), r * sin(ga * k), z};
     double v = fn(a, b, u);
     int near = -1;
     for (int j = 0; j < nc; j++) {
-      if (cu[j][0]*u[0] + cu[j][1]*u[1] + cu[j][2]*u[2] > cos(0.3)) near = j;
+      if (cu[j][0] * u[0] + cu[j][1] * u[1] + cu[j][2] * u[2] > cos(0.3)) near = j;
     }
     if (near >= 0) {
       if (v < cv[near]) {
@@ -232,29 +227,27 @@ static double bestdir(const urEllipsoid* a, const urEllipsoid* b, dirfn fn, doub
 
 /* brute-force signed depth: the distance to the boundary of A - B (bestdir of dist2); sign
    from the side of the origin (w.u > 0: inside) */
-static double bruteforce(const urEllipsoid* a, const urEllipsoid* b, double uref[3])
-{
+static double bruteforce(const urEllipsoid* a, const urEllipsoid* b, double uref[3]) {
   double best = bestdir(a, b, dist2, uref);
   double w[3];
   mdiff(a, b, uref, w);
-  double s = w[0]*uref[0] + w[1]*uref[1] + w[2]*uref[2];
+  double s = w[0] * uref[0] + w[1] * uref[1] + w[2] * uref[2];
   return s > 0 ? sqrt(best) : -sqrt(best);
 }
 
 /* random pair: semi-axes 0.02-0.22 m, random rotations, centre distance from deep overlap
    to clear separation */
-static void randpair(gsl_rng* rng, urEllipsoid* a, urEllipsoid* b)
-{
+static void randpair(gsl_rng* rng, urEllipsoid* a, urEllipsoid* b) {
   randell(rng, a, 0.02, 0.22);
   randell(rng, b, 0.02, 0.22);
   double d[3];
   randunit(rng, d);
   double ra = fmax(a->r[0], fmax(a->r[1], a->r[2]));
   double rb = fmax(b->r[0], fmax(b->r[1], b->r[2]));
-  double s = (0.4 + 0.75*gsl_rng_uniform(rng)) * (ra + rb);
+  double s = (0.4 + 0.75 * gsl_rng_uniform(rng)) * (ra + rb);
   for (int i = 0; i < 3; i++) {
-    a->c[i] = 0.3*gsl_rng_uniform(rng) - 0.15;
-    b->c[i] = a->c[i] + s*d[i];
+    a->c[i] = 0.3 * gsl_rng_uniform(rng) - 0.15;
+    b->c[i] = a->c[i] + s * d[i];
   }
 }
 
@@ -266,34 +259,35 @@ typedef struct {
   const double* n;
 } planepar;
 
-static double planeobj(const gsl_vector* x, void* par)
-{
+static double planeobj(const gsl_vector* x, void* par) {
   const planepar* p = par;
   double th = gsl_vector_get(x, 0), ph = gsl_vector_get(x, 1);
-  double l[3] = {p->e->r[0]*sin(th)*cos(ph), p->e->r[1]*sin(th)*sin(ph), p->e->r[2]*cos(th)};
+  double l[3] = {p->e->r[0] * sin(th) * cos(ph), p->e->r[1] * sin(th) * sin(ph),
+                 p->e->r[2] * cos(th)};
   double v = 0;
   for (int i = 0; i < 3; i++) {
     double xi = p->e->c[i];
-    for (int k = 0; k < 3; k++) xi += p->e->R[3*i + k]*l[k];
-    v += p->n[i]*xi;
+    for (int k = 0; k < 3; k++) xi += p->e->R[3 * i + k] * l[k];
+    v += p->n[i] * xi;
   }
   return v;
 }
 
 /* minimum of obj over (theta, phi): a 201 x 400 grid, then three Nelder-Mead passes (steps
    0.02, 2e-5, 2e-8 rad; the chart shifted away from the poles by the restarts); xy its place */
-static double surfmin(double (*obj)(const gsl_vector*, void*), void* par, double xy[2])
-{
+static double surfmin(double (*obj)(const gsl_vector*, void*), void* par, double xy[2]) {
   gsl_vector* x = gsl_vector_alloc(2);
   double bv = INFINITY, bth = 0, bph = 0;
   for (int i = 0; i <= 200; i++) {
     for (int j = 0; j < 400; j++) {
-      double th = M_PI*i/200, ph = 2*M_PI*j/400;
+      double th = M_PI * i / 200, ph = 2 * M_PI * j / 400;
       gsl_vector_set(x, 0, th);
       gsl_vector_set(x, 1, ph);
       double v = obj(x, par);
       if (v < bv) {
-        bv = v; bth = th; bph = ph;
+        bv = v;
+        bth = th;
+        bph = ph;
       }
     }
   }
@@ -305,7 +299,7 @@ static double surfmin(double (*obj)(const gsl_vector*, void*), void* par, double
   for (int pass = 0; pass < 3; pass++) {
     gsl_vector_set_all(ss, step);
     gsl_multimin_fminimizer* m =
-      gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 2);
+        gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 2);
     gsl_multimin_fminimizer_set(m, &fn, x, ss);
     for (int it = 0; it < 5000; it++) {
       if (gsl_multimin_fminimizer_iterate(m)) break;
@@ -323,8 +317,7 @@ static double surfmin(double (*obj)(const gsl_vector*, void*), void* par, double
   return bv;
 }
 
-static void test_plane_bruteforce(void** state)
-{
+static void test_plane_bruteforce(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 11);
   double maxerr = 0, maxperr = 0;
@@ -334,7 +327,7 @@ static void test_plane_bruteforce(void** state)
     for (int i = 0; i < 3; i++) e.c[i] = gsl_rng_uniform(rng) - 0.5;
     double n[3];
     randunit(rng, n);
-    double d = n[0]*e.c[0] + n[1]*e.c[1] + n[2]*e.c[2] + 0.4*gsl_rng_uniform(rng) - 0.3;
+    double d = n[0] * e.c[0] + n[1] * e.c[1] + n[2] * e.c[2] + 0.4 * gsl_rng_uniform(rng) - 0.3;
 
     // grid search for min n.x over the surface, then Nelder-Mead in (theta, phi)
     planepar p = {&e, n};
@@ -342,10 +335,11 @@ static void test_plane_bruteforce(void** state)
     double bv = surfmin(planeobj, &p, xy);
     double gref = d - bv;
     double th = xy[0], ph = xy[1];
-    double l[3] = {e.r[0]*sin(th)*cos(ph), e.r[1]*sin(th)*sin(ph), e.r[2]*cos(th)}, pref[3];
+    double l[3] = {e.r[0] * sin(th) * cos(ph), e.r[1] * sin(th) * sin(ph), e.r[2] * cos(th)},
+           pref[3];
     for (int i = 0; i < 3; i++) {
       pref[i] = e.c[i];
-      for (int k = 0; k < 3; k++) pref[i] += e.R[3*i + k]*l[k];
+      for (int k = 0; k < 3; k++) pref[i] += e.R[3 * i + k] * l[k];
     }
 
     urGeomContact c;
@@ -357,10 +351,10 @@ static void test_plane_bruteforce(void** state)
       pe = fmax(pe, fabs(c.pa[i] - pref[i]));
       assert_near(c.n[i], -n[i], 1e-15);
       // pb lies on the plane, p is the midpoint
-      assert_near(c.p[i], 0.5*(c.pa[i] + c.pb[i]), 1e-15);
+      assert_near(c.p[i], 0.5 * (c.pa[i] + c.pb[i]), 1e-15);
     }
     maxperr = fmax(maxperr, pe);
-    assert_near(n[0]*c.pb[0] + n[1]*c.pb[1] + n[2]*c.pb[2], d, 1e-14);
+    assert_near(n[0] * c.pb[0] + n[1] * c.pb[1] + n[2] * c.pb[2], d, 1e-14);
   }
   printf("plane: max |g - g_ref| = %.3g m, max |pa - pa_ref| = %.3g m (200 cases)\n", maxerr,
          maxperr);
@@ -370,8 +364,7 @@ static void test_plane_bruteforce(void** state)
 }
 
 /* sphere-sphere against the closed form r_A + r_B - |c_B - c_A| */
-static void test_sphere_sphere(void** state)
-{
+static void test_sphere_sphere(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 5);
   for (int t = 0; t < 500; t++) {
@@ -382,10 +375,10 @@ static void test_sphere_sphere(void** state)
     b.r[1] = b.r[2] = b.r[0];
     double d[3];
     randunit(rng, d);
-    double s = (0.2 + 1.0*gsl_rng_uniform(rng)) * (a.r[0] + b.r[0]);
+    double s = (0.2 + 1.0 * gsl_rng_uniform(rng)) * (a.r[0] + b.r[0]);
     for (int i = 0; i < 3; i++) {
       a.c[i] = gsl_rng_uniform(rng);
-      b.c[i] = a.c[i] + s*d[i];
+      b.c[i] = a.c[i] + s * d[i];
     }
     double u[3] = {0, 0, 0};
     urGeomContact c;
@@ -395,16 +388,15 @@ static void test_sphere_sphere(void** state)
     assert_near(c.g, gref, 1e-14);
     for (int i = 0; i < 3; i++) {
       assert_near(c.n[i], d[i], 1e-12);
-      assert_near(c.pa[i], a.c[i] + a.r[0]*d[i], 1e-12);
-      assert_near(c.pb[i], b.c[i] - b.r[0]*d[i], 1e-12);
+      assert_near(c.pa[i], a.c[i] + a.r[0] * d[i], 1e-12);
+      assert_near(c.pb[i], b.c[i] - b.r[0] * d[i], 1e-12);
     }
   }
   gsl_rng_free(rng);
 }
 
 /* 1000 random pairs against the brute-force distance to the boundary of A - B */
-static void test_pairs_bruteforce(void** state)
-{
+static void test_pairs_bruteforce(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 2025);
   double maxerr = 0, maxang = 0, maxdeep = 0;
@@ -422,8 +414,8 @@ static void test_pairs_bruteforce(void** state)
     // consistency of the record: g = n.(pa - pb), p midpoint, u returned = n
     double gd = 0;
     for (int i = 0; i < 3; i++) {
-      gd += c.n[i]*(c.pa[i] - c.pb[i]);
-      assert_near(c.p[i], 0.5*(c.pa[i] + c.pb[i]), 1e-15);
+      gd += c.n[i] * (c.pa[i] - c.pb[i]);
+      assert_near(c.p[i], 0.5 * (c.pa[i] + c.pb[i]), 1e-15);
       assert_near(u[i], c.n[i], 0);
     }
     assert_near(gd, c.g, 1e-14);
@@ -437,7 +429,7 @@ static void test_pairs_bruteforce(void** state)
       nshallow++;
       if (gref < 0) nsep++;
       maxerr = fmax(maxerr, err);
-      double dt = c.n[0]*uref[0] + c.n[1]*uref[1] + c.n[2]*uref[2];
+      double dt = c.n[0] * uref[0] + c.n[1] * uref[1] + c.n[2] * uref[2];
       maxang = fmax(maxang, acos(fmin(1.0, dt)));
       if (err > 1e-9) {
         printf("pair %d: g = %.15g  ref = %.15g\n", t, c.g, gref);
@@ -449,11 +441,14 @@ static void test_pairs_bruteforce(void** state)
       if (err > 1e-9) ndeepbad++;
     }
   }
-  printf("pairs: %d within the exactness range (%d separated, %d overlapping), "
-         "max |g - g_ref| = %.3g m, max normal angle = %.3g rad; max iterations %d\n", nshallow,
-         nsep, nshallow - nsep, maxerr, maxang, maxit);
-  printf("pairs: %d deeper than the smallest semi-axis: %d differ by > 1e-9 m "
-         "(max %.3g m)\n", ndeep, ndeepbad, maxdeep);
+  printf(
+      "pairs: %d within the exactness range (%d separated, %d overlapping), "
+      "max |g - g_ref| = %.3g m, max normal angle = %.3g rad; max iterations %d\n",
+      nshallow, nsep, nshallow - nsep, maxerr, maxang, maxit);
+  printf(
+      "pairs: %d deeper than the smallest semi-axis: %d differ by > 1e-9 m "
+      "(max %.3g m)\n",
+      ndeep, ndeepbad, maxdeep);
   assert_true(nshallow - nsep > 150);
   assert_true(nsep > 200);
   assert_true(maxang < 1e-6);
@@ -464,8 +459,7 @@ static void test_pairs_bruteforce(void** state)
 }
 
 /* warm starts (small and large perturbations, and along a trajectory) equal the cold start */
-static void test_warm_equals_cold(void** state)
-{
+static void test_warm_equals_cold(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 77);
   double maxdg = 0, maxdu = 0;
@@ -479,7 +473,7 @@ static void test_warm_equals_cold(void** state)
       // perturb the minimiser by 1e-4, 1e-2 and 0.3 rad
       double amp = k == 0 ? 1e-4 : k == 1 ? 1e-2 : 0.3, p[3], w[3];
       randunit(rng, p);
-      for (int i = 0; i < 3; i++) w[i] = cold.n[i] + amp*p[i];
+      for (int i = 0; i < 3; i++) w[i] = cold.n[i] + amp * p[i];
       ur_collide_ellipsoids(&a, &b, w, &warm);
       maxdg = fmax(maxdg, fabs(warm.g - cold.g));
       if (cold.g < fmin(minaxis(&a), minaxis(&b))) {
@@ -492,7 +486,7 @@ static void test_warm_equals_cold(void** state)
     randunit(rng, v);
     double uw[3] = {cold.n[0], cold.n[1], cold.n[2]};
     for (int s = 0; s < 20; s++) {
-      for (int i = 0; i < 3; i++) b.c[i] += 1e-4*v[i];
+      for (int i = 0; i < 3; i++) b.c[i] += 1e-4 * v[i];
       double uc[3] = {0, 0, 0};
       ur_collide_ellipsoids(&a, &b, uw, &warm);
       ur_collide_ellipsoids(&a, &b, uc, &cold);
@@ -506,8 +500,7 @@ static void test_warm_equals_cold(void** state)
 }
 
 /* section area and cap volume: sphere closed forms, ellipsoid Monte Carlo */
-static void test_section_cap(void** state)
-{
+static void test_section_cap(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 3);
 
@@ -517,9 +510,9 @@ static void test_section_cap(void** state)
   double n[3];
   randunit(rng, n);
   for (int k = -2; k <= 24; k++) {
-    double R = 0.0875, d = R*k/10.0, dc = fmin(fmax(d, 0), 2*R);
-    assert_near(ur_section_area(&s, n, d), M_PI*(2*R*dc - dc*dc), 1e-15);
-    assert_near(ur_cap_volume(&s, n, d), M_PI*dc*dc*(3*R - dc)/3, 1e-16);
+    double R = 0.0875, d = R * k / 10.0, dc = fmin(fmax(d, 0), 2 * R);
+    assert_near(ur_section_area(&s, n, d), M_PI * (2 * R * dc - dc * dc), 1e-15);
+    assert_near(ur_cap_volume(&s, n, d), M_PI * dc * dc * (3 * R - dc) / 3, 1e-16);
   }
 
   // ellipsoid: Monte Carlo in the local box; tolerance 5 standard errors
@@ -529,27 +522,27 @@ static void test_section_cap(void** state)
     randunit(rng, n);
     double nl[3], sig = 0;
     for (int k = 0; k < 3; k++) {
-      nl[k] = e.R[k]*n[0] + e.R[3 + k]*n[1] + e.R[6 + k]*n[2];
-      sig += e.r[k]*e.r[k]*nl[k]*nl[k];
+      nl[k] = e.R[k] * n[0] + e.R[3 + k] * n[1] + e.R[6 + k] * n[2];
+      sig += e.r[k] * e.r[k] * nl[k] * nl[k];
     }
     sig = sqrt(sig);
-    double d = (0.2 + 1.5*gsl_rng_uniform(rng)) * sig;
+    double d = (0.2 + 1.5 * gsl_rng_uniform(rng)) * sig;
     const int N = 2000000;
     int inside = 0;
     for (int i = 0; i < N; i++) {
       double x[3], q = 0, h = 0;
       for (int k = 0; k < 3; k++) {
-        x[k] = e.r[k]*(2*gsl_rng_uniform(rng) - 1);
-        q += x[k]*x[k]/(e.r[k]*e.r[k]);
-        h += nl[k]*x[k];
+        x[k] = e.r[k] * (2 * gsl_rng_uniform(rng) - 1);
+        q += x[k] * x[k] / (e.r[k] * e.r[k]);
+        h += nl[k] * x[k];
       }
       if (q <= 1 && h >= sig - d) inside++;
     }
-    double box = 8*e.r[0]*e.r[1]*e.r[2], p = (double)inside / N;
-    double vmc = box*p, se = box*sqrt(p*(1 - p)/N);
+    double box = 8 * e.r[0] * e.r[1] * e.r[2], p = (double)inside / N;
+    double vmc = box * p, se = box * sqrt(p * (1 - p) / N);
     double v = ur_cap_volume(&e, n, d);
     printf("cap volume: %.6g m^3, MC %.6g +- %.2g\n", v, vmc, se);
-    assert_true(fabs(v - vmc) < 5*se);
+    assert_true(fabs(v - vmc) < 5 * se);
 
     // section: sample the plane h = sig - d over a square of side 2 rmax (local frame)
     double t1[3], t2[3], a[3] = {1, 0, 0};
@@ -557,31 +550,32 @@ static void test_section_cap(void** state)
       a[0] = 0;
       a[1] = 1;
     }
-    double dd = a[0]*nl[0] + a[1]*nl[1] + a[2]*nl[2], tn = 0;
+    double dd = a[0] * nl[0] + a[1] * nl[1] + a[2] * nl[2], tn = 0;
     for (int k = 0; k < 3; k++) {
-      t1[k] = a[k] - dd*nl[k];
-      tn += t1[k]*t1[k];
+      t1[k] = a[k] - dd * nl[k];
+      tn += t1[k] * t1[k];
     }
     for (int k = 0; k < 3; k++) t1[k] /= sqrt(tn);
-    t2[0] = nl[1]*t1[2] - nl[2]*t1[1];
-    t2[1] = nl[2]*t1[0] - nl[0]*t1[2];
-    t2[2] = nl[0]*t1[1] - nl[1]*t1[0];
+    t2[0] = nl[1] * t1[2] - nl[2] * t1[1];
+    t2[1] = nl[2] * t1[0] - nl[0] * t1[2];
+    t2[2] = nl[0] * t1[1] - nl[1] * t1[0];
     double rm = fmax(e.r[0], fmax(e.r[1], e.r[2]));
     inside = 0;
     for (int i = 0; i < N; i++) {
-      double p1 = rm*(2*gsl_rng_uniform(rng) - 1), p2 = rm*(2*gsl_rng_uniform(rng) - 1), q = 0;
+      double p1 = rm * (2 * gsl_rng_uniform(rng) - 1), p2 = rm * (2 * gsl_rng_uniform(rng) - 1),
+             q = 0;
       for (int k = 0; k < 3; k++) {
-        double xk = (sig - d)*nl[k] + p1*t1[k] + p2*t2[k];
-        q += xk*xk/(e.r[k]*e.r[k]);
+        double xk = (sig - d) * nl[k] + p1 * t1[k] + p2 * t2[k];
+        q += xk * xk / (e.r[k] * e.r[k]);
       }
       if (q <= 1) inside++;
     }
-    double sq = 4*rm*rm;
+    double sq = 4 * rm * rm;
     p = (double)inside / N;
-    double amc = sq*p, sa = sq*sqrt(p*(1 - p)/N);
+    double amc = sq * p, sa = sq * sqrt(p * (1 - p) / N);
     double area = ur_section_area(&e, n, d);
     printf("section area: %.6g m^2, MC %.6g +- %.2g\n", area, amc, sa);
-    assert_true(fabs(area - amc) < 5*sa);
+    assert_true(fabs(area - amc) < 5 * sa);
   }
   gsl_rng_free(rng);
 }
@@ -590,39 +584,35 @@ static void test_section_cap(void** state)
 /* ---- superellipsoids ---- */
 
 /* independent half-width ||diag(r) R^T u||_q, q = p/(p-1), straight from the definition */
-static double hsup(const urEllipsoid* e, const double u[3])
-{
+static double hsup(const urEllipsoid* e, const double u[3]) {
   double p = e->p > 2 ? e->p : 2, q = p / (p - 1), s = 0;
   for (int k = 0; k < 3; k++) {
-    double v = e->R[k]*u[0] + e->R[3 + k]*u[1] + e->R[6 + k]*u[2];
-    s += pow(fabs(e->r[k]*v), q);
+    double v = e->R[k] * u[0] + e->R[3 + k] * u[1] + e->R[6 + k] * u[2];
+    s += pow(fabs(e->r[k] * v), q);
   }
   return pow(s, 1 / q);
 }
 
 /* support function of A - B: (c_A - c_B).u + h_A(u) + h_B(u); its minimum is the signed depth */
-static double fsup(const urEllipsoid* a, const urEllipsoid* b, const double u[3])
-{
+static double fsup(const urEllipsoid* a, const urEllipsoid* b, const double u[3]) {
   double dc = 0;
-  for (int i = 0; i < 3; i++) dc += (a->c[i] - b->c[i])*u[i];
+  for (int i = 0; i < 3; i++) dc += (a->c[i] - b->c[i]) * u[i];
   return dc + hsup(a, u) + hsup(b, u);
 }
 
 /* the level sum |x_l / r_l|^p of a world point (1 on the surface) */
-static double level(const urEllipsoid* e, const double x[3])
-{
+static double level(const urEllipsoid* e, const double x[3]) {
   double s = 0, p = e->p > 2 ? e->p : 2;
   for (int k = 0; k < 3; k++) {
     double l = 0;
-    for (int i = 0; i < 3; i++) l += e->R[3*i + k]*(x[i] - e->c[i]);
+    for (int i = 0; i < 3; i++) l += e->R[3 * i + k] * (x[i] - e->c[i]);
     s += pow(fabs(l / e->r[k]), p);
   }
   return s;
 }
 
 /* brute-force signed depth: the minimum of the support function (bestdir of fsup) */
-static double brutesup(const urEllipsoid* a, const urEllipsoid* b, double uref[3])
-{
+static double brutesup(const urEllipsoid* a, const urEllipsoid* b, double uref[3]) {
   return bestdir(a, b, fsup, uref);
 }
 
@@ -630,20 +620,19 @@ static double brutesup(const urEllipsoid* a, const urEllipsoid* b, double uref[3
    20 %), semi-axes 0.02-0.3 m, random rotations; B placed along a random direction d so that
    the depth along d runs from 0.05 m apart to 1.5 times the smallest semi-axis deep (the
    depth, the minimum over all directions, is at most that) */
-static void randsuper(gsl_rng* rng, urEllipsoid* a, urEllipsoid* b)
-{
+static void randsuper(gsl_rng* rng, urEllipsoid* a, urEllipsoid* b) {
   randell(rng, a, 0.02, 0.3);
   randell(rng, b, 0.02, 0.3);
-  a->p = 2 + 8*gsl_rng_uniform(rng);
-  b->p = gsl_rng_uniform(rng) < 0.3 ? 2 : 2 + 8*gsl_rng_uniform(rng);
+  a->p = 2 + 8 * gsl_rng_uniform(rng);
+  b->p = gsl_rng_uniform(rng) < 0.3 ? 2 : 2 + 8 * gsl_rng_uniform(rng);
   if (gsl_rng_uniform(rng) < 0.2) b->p = a->p;
   double d[3];
   randunit(rng, d);
   double lim = fmin(minaxis(a), minaxis(b));
-  double s = hsup(a, d) + hsup(b, d) + 0.05 - (1.5*lim + 0.05)*gsl_rng_uniform(rng);
+  double s = hsup(a, d) + hsup(b, d) + 0.05 - (1.5 * lim + 0.05) * gsl_rng_uniform(rng);
   for (int i = 0; i < 3; i++) {
-    a->c[i] = 0.3*gsl_rng_uniform(rng) - 0.15;
-    b->c[i] = a->c[i] + s*d[i];
+    a->c[i] = 0.3 * gsl_rng_uniform(rng) - 0.15;
+    b->c[i] = a->c[i] + s * d[i];
   }
 }
 
@@ -652,8 +641,7 @@ static void randsuper(gsl_rng* rng, urEllipsoid* a, urEllipsoid* b)
    c + rho - L, the normal the face normal; from cold and from warm starts up to 0.5 rad off,
    separated and penetrating up to the sphere's radius; likewise on the plane; and a sphere
    deep inside a thin plate */
-static void test_super_face(void** state)
-{
+static void test_super_face(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 17);
   double maxerr = 0, maxn = 0;
@@ -662,21 +650,21 @@ static void test_super_face(void** state)
     urEllipsoid a, b;
     randell(rng, &a, 0.05, 0.3);
     randell(rng, &b, 0.02, 0.1);
-    a.p = t < 150 ? 10 : 2 + 18*gsl_rng_uniform(rng);
+    a.p = t < 150 ? 10 : 2 + 18 * gsl_rng_uniform(rng);
     b.r[1] = b.r[2] = b.r[0];
     int k = t % 3, sg = t % 2 ? 1 : -1;
-    double nrm[3] = {sg*a.R[k], sg*a.R[3 + k], sg*a.R[6 + k]};
-    double L = a.r[k] + b.r[0] - b.r[0]*(2.2*gsl_rng_uniform(rng) - 1.2);
+    double nrm[3] = {sg * a.R[k], sg * a.R[3 + k], sg * a.R[6 + k]};
+    double L = a.r[k] + b.r[0] - b.r[0] * (2.2 * gsl_rng_uniform(rng) - 1.2);
     for (int i = 0; i < 3; i++) {
       a.c[i] = gsl_rng_uniform(rng) - 0.5;
-      b.c[i] = a.c[i] + L*nrm[i];
+      b.c[i] = a.c[i] + L * nrm[i];
     }
     double gref = a.r[k] + b.r[0] - L;
     double u[3] = {0, 0, 0};
     if (t % 4) {
       double p[3];
       randunit(rng, p);
-      for (int i = 0; i < 3; i++) u[i] = nrm[i] + 0.5*gsl_rng_uniform(rng)*p[i];
+      for (int i = 0; i < 3; i++) u[i] = nrm[i] + 0.5 * gsl_rng_uniform(rng) * p[i];
     }
     urGeomContact c;
     int hit = ur_collide_ellipsoids(&a, &b, u, &c);
@@ -687,19 +675,20 @@ static void test_super_face(void** state)
     // the contact point: on the sphere's axis along the face normal, half the depth from its
     // deepest point (not the face's support point, which may sit anywhere on the face)
     for (int i = 0; i < 3; i++) {
-      assert_near(c.p[i], b.c[i] - (b.r[0] - 0.5*c.g)*nrm[i], 1e-9);
+      assert_near(c.p[i], b.c[i] - (b.r[0] - 0.5 * c.g) * nrm[i], 1e-9);
     }
     if (c.iters > maxit) maxit = c.iters;
 
     // the plane: the face lying on it, depth d - n.c + c exactly
-    double d = nrm[0]*a.c[0] + nrm[1]*a.c[1] + nrm[2]*a.c[2] + 0.1*gsl_rng_uniform(rng) - 0.05;
+    double d =
+        nrm[0] * a.c[0] + nrm[1] * a.c[1] + nrm[2] * a.c[2] + 0.1 * gsl_rng_uniform(rng) - 0.05;
     urGeomContact cp;
     ur_collide_ellipsoid_plane(&a, nrm, d, &cp);
     // (the deepest point itself is ill-conditioned there: a direction 1e-17 off the normal
     // moves it by |w_l|^(1/(p-1)) ~ 1 % of the face for p = 10; its height is not)
-    double nc = nrm[0]*a.c[0] + nrm[1]*a.c[1] + nrm[2]*a.c[2];
+    double nc = nrm[0] * a.c[0] + nrm[1] * a.c[1] + nrm[2] * a.c[2];
     assert_near(cp.g, d - nc + a.r[k], 1e-15);
-    assert_near(nrm[0]*cp.pa[0] + nrm[1]*cp.pa[1] + nrm[2]*cp.pa[2], nc - a.r[k], 1e-15);
+    assert_near(nrm[0] * cp.pa[0] + nrm[1] * cp.pa[1] + nrm[2] * cp.pa[2], nc - a.r[k], 1e-15);
     assert_near(level(&a, cp.pa), 1, 1e-12);
   }
   // deep: a sphere inside a thin plate (p 16..20), off the centre along the plate: the centre
@@ -711,17 +700,19 @@ static void test_super_face(void** state)
     randell(rng, &a, 0.3, 0.3);
     randell(rng, &b, 0.05, 0.05);
     a.r[2] = 0.02;
-    a.p = 16 + 4*gsl_rng_uniform(rng);
-    double x = 0.02 + 0.04*gsl_rng_uniform(rng);
-    for (int i = 0; i < 3; i++) b.c[i] = a.c[i] + x*a.R[3*i];
+    a.p = 16 + 4 * gsl_rng_uniform(rng);
+    double x = 0.02 + 0.04 * gsl_rng_uniform(rng);
+    for (int i = 0; i < 3; i++) b.c[i] = a.c[i] + x * a.R[3 * i];
     double u[3] = {0, 0, 0};
     urGeomContact c;
     ur_collide_ellipsoids(&a, &b, u, &c);
     maxerr = fmax(maxerr, fabs(c.g - 0.07));
-    maxn = fmax(maxn, 1 - fabs(c.n[0]*a.R[2] + c.n[1]*a.R[5] + c.n[2]*a.R[8]));
+    maxn = fmax(maxn, 1 - fabs(c.n[0] * a.R[2] + c.n[1] * a.R[5] + c.n[2] * a.R[8]));
   }
-  printf("sphere on a flat face: max |g - g_exact| = %.3g m, max |n - n_face| = %.3g, max "
-         "iterations %d\n", maxerr, maxn, maxit);
+  printf(
+      "sphere on a flat face: max |g - g_exact| = %.3g m, max |n - n_face| = %.3g, max "
+      "iterations %d\n",
+      maxerr, maxn, maxit);
   assert_true(maxerr < 1e-12);
   assert_true(maxn < 1e-6);
   gsl_rng_free(rng);
@@ -735,37 +726,34 @@ typedef struct {
   const double* n;
 } supplane;
 
-static void suppoint(const urEllipsoid* e, double th, double ph, double x[3])
-{
-  double v[3] = {sin(th)*cos(ph), sin(th)*sin(ph), cos(th)}, l[3];
-  for (int k = 0; k < 3; k++) l[k] = e->r[k]*copysign(pow(fabs(v[k]), 2 / e->p), v[k]);
+static void suppoint(const urEllipsoid* e, double th, double ph, double x[3]) {
+  double v[3] = {sin(th) * cos(ph), sin(th) * sin(ph), cos(th)}, l[3];
+  for (int k = 0; k < 3; k++) l[k] = e->r[k] * copysign(pow(fabs(v[k]), 2 / e->p), v[k]);
   for (int i = 0; i < 3; i++) {
     x[i] = e->c[i];
-    for (int k = 0; k < 3; k++) x[i] += e->R[3*i + k]*l[k];
+    for (int k = 0; k < 3; k++) x[i] += e->R[3 * i + k] * l[k];
   }
 }
 
-static double supplaneobj(const gsl_vector* xv, void* par)
-{
+static double supplaneobj(const gsl_vector* xv, void* par) {
   const supplane* sp = par;
   double x[3];
   suppoint(sp->e, gsl_vector_get(xv, 0), gsl_vector_get(xv, 1), x);
-  return sp->n[0]*x[0] + sp->n[1]*x[1] + sp->n[2]*x[2];
+  return sp->n[0] * x[0] + sp->n[1] * x[1] + sp->n[2] * x[2];
 }
 
-static void test_super_plane(void** state)
-{
+static void test_super_plane(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 23);
   double maxerr = 0, maxlev = 0;
   for (int t = 0; t < 100; t++) {
     urEllipsoid e;
     randell(rng, &e, 0.02, 0.3);
-    e.p = 2 + 8*gsl_rng_uniform(rng);
+    e.p = 2 + 8 * gsl_rng_uniform(rng);
     for (int i = 0; i < 3; i++) e.c[i] = gsl_rng_uniform(rng) - 0.5;
     double n[3];
     randunit(rng, n);
-    double d = n[0]*e.c[0] + n[1]*e.c[1] + n[2]*e.c[2] + 0.4*gsl_rng_uniform(rng) - 0.3;
+    double d = n[0] * e.c[0] + n[1] * e.c[1] + n[2] * e.c[2] + 0.4 * gsl_rng_uniform(rng) - 0.3;
 
     // grid, then Nelder-Mead in (theta, phi)
     supplane sp = {&e, n};
@@ -777,11 +765,13 @@ static void test_super_plane(void** state)
     assert_int_equal(hit, d - bv > 0);
     maxerr = fmax(maxerr, fabs(c.g - (d - bv)));
     maxlev = fmax(maxlev, fabs(level(&e, c.pa) - 1));
-    assert_near(n[0]*c.pb[0] + n[1]*c.pb[1] + n[2]*c.pb[2], d, 1e-14);
-    assert_near(n[0]*c.pa[0] + n[1]*c.pa[1] + n[2]*c.pa[2], bv, 1e-12);
+    assert_near(n[0] * c.pb[0] + n[1] * c.pb[1] + n[2] * c.pb[2], d, 1e-14);
+    assert_near(n[0] * c.pa[0] + n[1] * c.pa[1] + n[2] * c.pa[2], bv, 1e-12);
   }
-  printf("superellipsoid-plane: max |g - g_ref| = %.3g m, deepest point max |level - 1| = "
-         "%.3g (100 cases)\n", maxerr, maxlev);
+  printf(
+      "superellipsoid-plane: max |g - g_ref| = %.3g m, deepest point max |level - 1| = "
+      "%.3g (100 cases)\n",
+      maxerr, maxlev);
   assert_true(maxerr < 1e-12);
   assert_true(maxlev < 1e-12);
   gsl_rng_free(rng);
@@ -790,8 +780,7 @@ static void test_super_plane(void** state)
 /* 400 random pairs (superellipsoid-ellipsoid, -superellipsoid) against the brute-force
    minimum of the support function: within 1e-9 m, and never below it by more than its own
    error (1e-12); the record consistent (g = f(n), pa and pb on the surfaces, g = n.(pa - pb)) */
-static void test_super_pairs_bruteforce(void** state)
-{
+static void test_super_pairs_bruteforce(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 4242);
   double maxerr = 0, maxlev = 0, maxang = 0;
@@ -813,7 +802,7 @@ static void test_super_pairs_bruteforce(void** state)
     // the record
     double gd = 0;
     for (int i = 0; i < 3; i++) {
-      gd += c.n[i]*(c.pa[i] - c.pb[i]);
+      gd += c.n[i] * (c.pa[i] - c.pb[i]);
       assert_near(u[i], c.n[i], 0);
     }
     assert_near(gd, c.g, 1e-14);
@@ -828,12 +817,14 @@ static void test_super_pairs_bruteforce(void** state)
     assert_true(fabs(err) <= 1e-9);
     assert_true(err >= -1e-12);
     maxerr = fmax(maxerr, fabs(err));
-    double dt = c.n[0]*uref[0] + c.n[1]*uref[1] + c.n[2]*uref[2];
+    double dt = c.n[0] * uref[0] + c.n[1] * uref[1] + c.n[2] * uref[2];
     maxang = fmax(maxang, acos(fmin(1.0, dt)));
   }
-  printf("superellipsoid pairs: %d separated, %d overlapping (%d deeper than the smallest "
-         "semi-axis), max |g - g_ref| = %.3g m, max normal angle %.3g rad, max |level - 1| = "
-         "%.3g, max iterations %d\n", nsep, nover, ndeep, maxerr, maxang, maxlev, maxit);
+  printf(
+      "superellipsoid pairs: %d separated, %d overlapping (%d deeper than the smallest "
+      "semi-axis), max |g - g_ref| = %.3g m, max normal angle %.3g rad, max |level - 1| = "
+      "%.3g, max iterations %d\n",
+      nsep, nover, ndeep, maxerr, maxang, maxlev, maxit);
   assert_true(nsep > 100 && nover > 100);
   assert_true(maxlev < 1e-9);
   gsl_rng_free(rng);
@@ -842,8 +833,7 @@ static void test_super_pairs_bruteforce(void** state)
 /* warm starts equal the cold start: perturbed minimisers, and trajectories of a sphere or an
    ellipsoid sliding over a superellipsoid's flat face, across its symmetry planes, over an
    edge and a corner (each step warm from the last) */
-static void test_super_warm(void** state)
-{
+static void test_super_warm(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 99);
   double maxdg = 0;
@@ -857,7 +847,7 @@ static void test_super_warm(void** state)
     for (int k = 0; k < 3; k++) {
       double amp = k == 0 ? 1e-4 : k == 1 ? 1e-2 : 0.3;
       randunit(rng, p);
-      for (int i = 0; i < 3; i++) w[i] = cold.n[i] + amp*p[i];
+      for (int i = 0; i < 3; i++) w[i] = cold.n[i] + amp * p[i];
       ur_collide_ellipsoids(&a, &b, w, &warm);
       maxdg = fmax(maxdg, fabs(warm.g - cold.g));
     }
@@ -865,19 +855,20 @@ static void test_super_warm(void** state)
   for (int t = 0; t < 60; t++) {
     // box-like A (p 4..12) at the origin, axis-aligned; B passes over the top face along a
     // straight line from one edge region to the other through a random point of the face
-    urEllipsoid a = {{0, 0, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}, {0.3, 0.2, 0.1}, 4 + 8*(t % 5)/4.0};
+    urEllipsoid a = {
+        {0, 0, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}, {0.3, 0.2, 0.1}, 4 + 8 * (t % 5) / 4.0};
     urEllipsoid b;
     randell(rng, &b, 0.03, 0.08);
     if (t % 2) b.r[1] = b.r[2] = b.r[0];
-    double x0 = (t % 3 == 0) ? 0 : 0.3*(2*gsl_rng_uniform(rng) - 1);
-    double y0 = (t % 3 == 1) ? 0 : 0.2*(2*gsl_rng_uniform(rng) - 1);
-    double dir = 2*M_PI*gsl_rng_uniform(rng), dz = 0.02*gsl_rng_uniform(rng) - 0.01;
+    double x0 = (t % 3 == 0) ? 0 : 0.3 * (2 * gsl_rng_uniform(rng) - 1);
+    double y0 = (t % 3 == 1) ? 0 : 0.2 * (2 * gsl_rng_uniform(rng) - 1);
+    double dir = 2 * M_PI * gsl_rng_uniform(rng), dz = 0.02 * gsl_rng_uniform(rng) - 0.01;
     double uw[3] = {0, 0, 0};
     urGeomContact warm, cold;
     for (int s = 0; s <= 400; s++) {
-      double l = 0.5*(s / 200.0 - 1);
-      b.c[0] = x0 + l*cos(dir);
-      b.c[1] = y0 + l*sin(dir);
+      double l = 0.5 * (s / 200.0 - 1);
+      b.c[0] = x0 + l * cos(dir);
+      b.c[1] = y0 + l * sin(dir);
       b.c[2] = 0.1 + hsup(&b, (double[3]){0, 0, 1}) - dz;
       double uc[3] = {0, 0, 0};
       ur_collide_ellipsoids(&a, &b, uw, &warm);
@@ -890,8 +881,10 @@ static void test_super_warm(void** state)
       itwarm += warm.iters;
     }
   }
-  printf("superellipsoid warm vs cold: max |dg| = %.3g m; trajectories: %.2f iterations per "
-         "warm call\n", maxdg, (double)itwarm / nwarm);
+  printf(
+      "superellipsoid warm vs cold: max |dg| = %.3g m; trajectories: %.2f iterations per "
+      "warm call\n",
+      maxdg, (double)itwarm / nwarm);
   assert_true(maxdg < 1e-12);
   gsl_rng_free(rng);
 }
@@ -899,24 +892,35 @@ static void test_super_warm(void** state)
 /* p = 2 (and 0, the zeroed struct, and below 2) is the ellipsoid code bit for bit: results
    recorded from that code before superellipsoids existed; p slightly above 2 takes the
    superellipsoid code and lands within 1e-9 m of them */
-static void test_super_p2_bits(void** state)
-{
+static void test_super_p2_bits(void** state) {
   static const struct {
     double g, n[3], gwarm;
     int iters;
   } rec[6] = {
-    {0x1.b32128305c198p-4, {0x1.2b21cf9812a27p-1, 0x1.43e389d2c928p-2, -0x1.7eac1515e5508p-1},
-     0x1.b32128305c19ap-4, 5},
-    {0x1.1c0ba3d2303bfp-3, {-0x1.d5b2a73a9ef51p-2, -0x1.c3f42a82e4403p-1, -0x1.a1d2f98a79614p-4},
-     0x1.1c0ba3d2303bfp-3, 5},
-    {-0x1.02853e78f4c01p-4, {0x1.8b655a251a20ep-2, -0x1.7d955e32600f9p-2, -0x1.b00a1560225dbp-1},
-     -0x1.02853e78f4c02p-4, 4},
-    {-0x1.8818002703397p-4, {0x1.960a18b542c9p-2, -0x1.ecce9efc0474p-3, -0x1.c5984a0ef5b8fp-1},
-     -0x1.881800270339ap-4, 5},
-    {0x1.60710aefcd9a8p-8, {-0x1.3d8718bc884ddp-4, -0x1.adbacd023f1b6p-3, -0x1.f306a4dc61083p-1},
-     0x1.60710aefcd99p-8, 6},
-    {0x1.ff9034bc81183p-4, {0x1.0742b8d939afap-5, -0x1.e8f7820eeb6b5p-1, 0x1.2de4623ec71c1p-2},
-     0x1.ff9034bc81182p-4, 6},
+      {0x1.b32128305c198p-4,
+       {0x1.2b21cf9812a27p-1, 0x1.43e389d2c928p-2, -0x1.7eac1515e5508p-1},
+       0x1.b32128305c19ap-4,
+       5},
+      {0x1.1c0ba3d2303bfp-3,
+       {-0x1.d5b2a73a9ef51p-2, -0x1.c3f42a82e4403p-1, -0x1.a1d2f98a79614p-4},
+       0x1.1c0ba3d2303bfp-3,
+       5},
+      {-0x1.02853e78f4c01p-4,
+       {0x1.8b655a251a20ep-2, -0x1.7d955e32600f9p-2, -0x1.b00a1560225dbp-1},
+       -0x1.02853e78f4c02p-4,
+       4},
+      {-0x1.8818002703397p-4,
+       {0x1.960a18b542c9p-2, -0x1.ecce9efc0474p-3, -0x1.c5984a0ef5b8fp-1},
+       -0x1.881800270339ap-4,
+       5},
+      {0x1.60710aefcd9a8p-8,
+       {-0x1.3d8718bc884ddp-4, -0x1.adbacd023f1b6p-3, -0x1.f306a4dc61083p-1},
+       0x1.60710aefcd99p-8,
+       6},
+      {0x1.ff9034bc81183p-4,
+       {0x1.0742b8d939afap-5, -0x1.e8f7820eeb6b5p-1, 0x1.2de4623ec71c1p-2},
+       0x1.ff9034bc81182p-4,
+       6},
   };
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 808);
@@ -926,10 +930,10 @@ static void test_super_p2_bits(void** state)
     randell(rng, &b, 0.02, 0.22);
     double d[3];
     gsl_ran_dir_3d(rng, d, d + 1, d + 2);
-    double s = (0.4 + 0.75*gsl_rng_uniform(rng)) * 0.3;
+    double s = (0.4 + 0.75 * gsl_rng_uniform(rng)) * 0.3;
     for (int i = 0; i < 3; i++) {
-      a.c[i] = 0.3*gsl_rng_uniform(rng) - 0.15;
-      b.c[i] = a.c[i] + s*d[i];
+      a.c[i] = 0.3 * gsl_rng_uniform(rng) - 0.15;
+      b.c[i] = a.c[i] + s * d[i];
     }
     static const double ps[4][2] = {{0, 0}, {2, 2}, {2, 0}, {1.5, 2}};
     for (int k = 0; k < 4; k++) {
@@ -957,43 +961,43 @@ static void test_super_p2_bits(void** state)
    maximum (exact); the largest semi-axis at p = 2; below the two simple bounds |r| and
    rmax 3^(1/2 - 1/p); the half-width ur_halfwidth_local against the definition; section area
    and cap volume refuse superellipsoids */
-static void test_super_bound(void** state)
-{
+static void test_super_bound(void** state) {
   gsl_rng* rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 31);
   double worst = 0;
   for (int t = 0; t < 40; t++) {
     urEllipsoid e;
     randell(rng, &e, 0.02, 0.3);
-    e.p = t < 4 ? 2 + 1e-3*t : 2 + 18*gsl_rng_uniform(rng);
+    e.p = t < 4 ? 2 + 1e-3 * t : 2 + 18 * gsl_rng_uniform(rng);
     double rb = ur_bound_radius(e.r, e.p), far = 0;
     double ga = M_PI * (3 - sqrt(5.0));
     const int N = 200000;
     for (int k = 0; k < N; k++) {
-      double z = 1 - (2*k + 1.0) / N, r = sqrt(1 - z*z), v[3] = {r*cos(ga*k), r*sin(ga*k), z};
+      double z = 1 - (2 * k + 1.0) / N, r = sqrt(1 - z * z),
+             v[3] = {r * cos(ga * k), r * sin(ga * k), z};
       double x = 0;
       for (int l = 0; l < 3; l++) {
-        double xl = e.r[l]*pow(fabs(v[l]), 2 / e.p);
-        x += xl*xl;
+        double xl = e.r[l] * pow(fabs(v[l]), 2 / e.p);
+        x += xl * xl;
       }
       far = fmax(far, sqrt(x));
     }
     // the corner itself, from the closed form of the maximiser
-    double kk = 2*e.p / (e.p - 2), sum = 0, x2 = 0;
+    double kk = 2 * e.p / (e.p - 2), sum = 0, x2 = 0;
     for (int l = 0; l < 3; l++) sum += pow(e.r[l], kk);
-    for (int l = 0; l < 3; l++) x2 += e.r[l]*e.r[l]*pow(pow(e.r[l], kk) / sum, 2 / e.p);
+    for (int l = 0; l < 3; l++) x2 += e.r[l] * e.r[l] * pow(pow(e.r[l], kk) / sum, 2 / e.p);
     far = fmax(far, sqrt(x2));
     double rmax = fmax(e.r[0], fmax(e.r[1], e.r[2]));
     assert_true(rb >= far);
-    assert_true(rb <= far*(1 + 1e-3));
-    assert_true(rb <= sqrt(e.r[0]*e.r[0] + e.r[1]*e.r[1] + e.r[2]*e.r[2])*(1 + 1e-14));
-    assert_true(rb <= rmax*pow(3, 0.5 - 1 / e.p)*(1 + 1e-14));
+    assert_true(rb <= far * (1 + 1e-3));
+    assert_true(rb <= sqrt(e.r[0] * e.r[0] + e.r[1] * e.r[1] + e.r[2] * e.r[2]) * (1 + 1e-14));
+    assert_true(rb <= rmax * pow(3, 0.5 - 1 / e.p) * (1 + 1e-14));
     worst = fmax(worst, rb / far - 1);
 
     double u[3], w[3];
     randunit(rng, u);
     for (int l = 0; l < 3; l++) {
-      w[l] = e.r[l]*(e.R[l]*u[0] + e.R[3 + l]*u[1] + e.R[6 + l]*u[2]);
+      w[l] = e.r[l] * (e.R[l] * u[0] + e.R[3 + l] * u[1] + e.R[6 + l] * u[2]);
     }
     assert_near(ur_halfwidth_local(w, e.p), hsup(&e, u), 1e-15);
     assert_true(isnan(ur_section_area(&e, u, 0.01)) == (e.p > 2));
@@ -1005,20 +1009,14 @@ static void test_super_bound(void** state)
   gsl_rng_free(rng);
 }
 
-int main(void)
-{
+int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_plane_bruteforce),
-    cmocka_unit_test(test_sphere_sphere),
-    cmocka_unit_test(test_pairs_bruteforce),
-    cmocka_unit_test(test_warm_equals_cold),
-    cmocka_unit_test(test_section_cap),
-    cmocka_unit_test(test_super_face),
-    cmocka_unit_test(test_super_plane),
-    cmocka_unit_test(test_super_pairs_bruteforce),
-    cmocka_unit_test(test_super_warm),
-    cmocka_unit_test(test_super_p2_bits),
-    cmocka_unit_test(test_super_bound),
+      cmocka_unit_test(test_plane_bruteforce), cmocka_unit_test(test_sphere_sphere),
+      cmocka_unit_test(test_pairs_bruteforce), cmocka_unit_test(test_warm_equals_cold),
+      cmocka_unit_test(test_section_cap),      cmocka_unit_test(test_super_face),
+      cmocka_unit_test(test_super_plane),      cmocka_unit_test(test_super_pairs_bruteforce),
+      cmocka_unit_test(test_super_warm),       cmocka_unit_test(test_super_p2_bits),
+      cmocka_unit_test(test_super_bound),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -105,9 +105,9 @@ static void invalid_parameters(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(vertical_closed_form), cmocka_unit_test(terminal_velocity),
-    cmocka_unit_test(table2_case_b),        cmocka_unit_test(table2_case_c),
-    cmocka_unit_test(wind_drift),           cmocka_unit_test(invalid_parameters),
+      cmocka_unit_test(vertical_closed_form), cmocka_unit_test(terminal_velocity),
+      cmocka_unit_test(table2_case_b),        cmocka_unit_test(table2_case_c),
+      cmocka_unit_test(wind_drift),           cmocka_unit_test(invalid_parameters),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -33,7 +33,7 @@ static urModel* bagmodel(double kappa, double thick, int free) {
   strcpy(bag.name, "bottom");
   bag.geom = gb;
   bag.gas.v0 = 0.02;
-  bag.gas.p0 = 1.1*ATM;
+  bag.gas.p0 = 1.1 * ATM;
   bag.gas.patm = ATM;
   bag.gas.gamma = 1.4;
   bag.kappa = kappa;
@@ -42,7 +42,7 @@ static urModel* bagmodel(double kappa, double thick, int free) {
   bag.target[0] = gh;
   int ib = ur_model_add_airbag(m, &bag);
   ur_model_add_sensor(m, "gas", urSENS_AIRBAG, ib, 0, NULL, NULL);
-  ur_model_add_sensor(m, "hold", urSENS_JOINTLOAD, b, 0, NULL, NULL);  /* reaction on the bag body */
+  ur_model_add_sensor(m, "hold", urSENS_JOINTLOAD, b, 0, NULL, NULL); /* reaction on the bag body */
   m->opt.gravity[2] = 0;
   assert_int_equal(ur_model_compile(m), 0);
   return m;
@@ -53,41 +53,43 @@ static void test_airbag_gas_law(void** state) {
   double kappa = 1.5, thick = 0.06;
   urModel* m = bagmodel(kappa, thick, 0);
   urData* d = ur_data_new(m);
-  double pv0 = 1.1*ATM*pow(0.02, 1.4), worst = 0, worstv = 0, worstf = 0;
+  double pv0 = 1.1 * ATM * pow(0.02, 1.4), worst = 0, worstv = 0, worstf = 0;
   int ib = ur_name_airbag(m, "bottom");
   assert_int_equal(ib, 0);
 
   // prescribed indentation 0..80 mm (beyond the 60 mm thickness: bottoming)
   for (int i = 0; i <= 80; i++) {
-    double q = 1e-3*i;
+    double q = 1e-3 * i;
     d->qpos[0] = q;
     ur_forward(m, d);
     double P = d->sensordata[0], V = d->sensordata[1];
 
     // independent: spherical cap of the used depth, section area of the sphere
     double dd = fmin(q, thick);
-    double vexp = 0.02 - kappa*M_PI*dd*dd*(3*R - dd)/3;
-    double fexp = (P - ATM)*M_PI*(2*R*dd - dd*dd);
-    worst = fmax(worst, fabs(P*pow(V, 1.4) - pv0)/pv0);
-    worstv = fmax(worstv, fabs(V - vexp)/0.02);
+    double vexp = 0.02 - kappa * M_PI * dd * dd * (3 * R - dd) / 3;
+    double fexp = (P - ATM) * M_PI * (2 * R * dd - dd * dd);
+    worst = fmax(worst, fabs(P * pow(V, 1.4) - pv0) / pv0);
+    worstv = fmax(worstv, fabs(V - vexp) / 0.02);
     if (q > 0) {
       // reaction: the world holds the bag body with +F along z
-      worstf = fmax(worstf, fabs(d->freact[5] - fexp)/fexp);
-      worstf = fmax(worstf, fabs(d->bag[ib].ftgt[0] - fexp)/fexp);
+      worstf = fmax(worstf, fabs(d->freact[5] - fexp) / fexp);
+      worstf = fmax(worstf, fabs(d->bag[ib].ftgt[0] - fexp) / fexp);
     }
     if (i == 40 || i == 80) {
-      print_message("airbag q=%2.0f mm: P %.1f Pa, V %.6f m^3, F %.2f N\n", 1e3*q, P, V,
+      print_message("airbag q=%2.0f mm: P %.1f Pa, V %.6f m^3, F %.2f N\n", 1e3 * q, P, V,
                     d->bag[ib].force);
     }
   }
-  print_message("airbag: max |PV^g - P0V0^g|/P0V0^g %.1e, max |V - Vcap|/V0 %.1e, "
-                "max force/reaction rel err %.1e\n", worst, worstv, worstf);
+  print_message(
+      "airbag: max |PV^g - P0V0^g|/P0V0^g %.1e, max |V - Vcap|/V0 %.1e, "
+      "max force/reaction rel err %.1e\n",
+      worst, worstv, worstf);
   assert_true(worst < 1e-12);
   assert_true(worstv < 1e-9);
   assert_true(worstf < 1e-9);
 
   // the pressure rose (not a test that passes on a constant)
-  assert_true(d->sensordata[0] > 1.05*1.1*ATM);
+  assert_true(d->sensordata[0] > 1.05 * 1.1 * ATM);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -104,12 +106,14 @@ static void test_airbag_energy(void** state) {
   assert_int_equal(ur_run_impact(m, d, h, pos, NULL, vel), urSTAT_SEPARATED);
   double vr = d->qvel[m->body[h].vadr + 2];
   double Vmin = d->peakmin[1];
-  urGas gas = {0.02, 1.1*ATM, ATM, 1.4};
-  double w = ur_gas_work(&gas, 0.02 - Vmin) - ATM*(0.02 - Vmin);
-  print_message("airbag bounce: rebound %.5f m/s (impact %.1f), Vmin %.6f, W(dV) %.3f J vs KE0 "
-                "%.3f J\n", vr, v, Vmin, w, 0.5*4.5*v*v);
-  assert_true(fabs(vr - v)/v < 1e-3);
-  assert_true(fabs(w - 0.5*4.5*v*v)/(0.5*4.5*v*v) < 1e-2);
+  urGas gas = {0.02, 1.1 * ATM, ATM, 1.4};
+  double w = ur_gas_work(&gas, 0.02 - Vmin) - ATM * (0.02 - Vmin);
+  print_message(
+      "airbag bounce: rebound %.5f m/s (impact %.1f), Vmin %.6f, W(dV) %.3f J vs KE0 "
+      "%.3f J\n",
+      vr, v, Vmin, w, 0.5 * 4.5 * v * v);
+  assert_true(fabs(vr - v) / v < 1e-3);
+  assert_true(fabs(w - 0.5 * 4.5 * v * v) / (0.5 * 4.5 * v * v) < 1e-2);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -117,8 +121,8 @@ static void test_airbag_energy(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_airbag_gas_law),
-    cmocka_unit_test(test_airbag_energy),
+      cmocka_unit_test(test_airbag_gas_law),
+      cmocka_unit_test(test_airbag_energy),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

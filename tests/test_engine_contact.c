@@ -20,7 +20,7 @@ static const double E1 = 2.23e7, NU1 = 0.29, E2 = 5.48e10, NU2 = 0.34, R = 0.087
 
 static void hertz_sphere_plane(urIntegrator integ) {
   urModel* m = ur_model_new();
-  double mass = 4.5, v = 3.0, Ic = 0.4*mass*R*R;
+  double mass = 4.5, v = 3.0, Ic = 0.4 * mass * R * R;
   double I[6] = {Ic, Ic, Ic, 0, 0, 0}, ax[3] = {R, R, R};
   int b = ur_model_add_body(m, "head", -1, urJNT_FREE, NULL, NULL);
   ur_model_set_inertia(m, b, mass, NULL, I);
@@ -43,26 +43,28 @@ static void hertz_sphere_plane(urIntegrator integ) {
   int st = ur_run_impact(m, d, b, pos, NULL, vel);
   assert_int_equal(st, urSTAT_SEPARATED);
   print_message("hertz: jumped %.6f s (exact %.6f s), %ld steps\n", d->t_jump,
-                (1.0 - R - m->opt.jump_margin)/v, d->nstep);
-  assert_true(fabs(d->t_jump - (1.0 - R - m->opt.jump_margin)/v) < 1e-12);
+                (1.0 - R - m->opt.jump_margin) / v, d->nstep);
+  assert_true(fabs(d->t_jump - (1.0 - R - m->opt.jump_margin) / v) < 1e-12);
 
   // independent answer
-  double es = 1/((1 - NU1*NU1)/E1 + (1 - NU2*NU2)/E2);
-  double K = 4.0/3.0*es*sqrt(R);
-  double dmax = pow(5*mass*v*v/(4*K), 0.4), tc = 2.94*dmax/v;
+  double es = 1 / ((1 - NU1 * NU1) / E1 + (1 - NU2 * NU2) / E2);
+  double K = 4.0 / 3.0 * es * sqrt(R);
+  double dmax = pow(5 * mass * v * v / (4 * K), 0.4), tc = 2.94 * dmax / v;
 
   // measured: peak depth, contact duration from the 1e5 Hz history, rebound speed
   int n = 0;
   for (int i = 0; i < d->nhist; i++) {
-    n += d->hist[i*(1 + m->nsensordata) + 1] > 0;
+    n += d->hist[i * (1 + m->nsensordata) + 1] > 0;
   }
-  double tcm = n*m->opt.dt, dm = d->peakmax[1], vr = d->qvel[2];
-  print_message("hertz (%s): dmax %.5f mm (exact %.5f, err %.2e), tc %.4f ms (2.94 dmax/v %.4f, "
-                "err %.2e), rebound %.4f m/s\n", integ == urINT_RK4 ? "RK4" : "Euler", 1e3*dm, 1e3*dmax, fabs(dm - dmax)/dmax,
-                1e3*tcm, 1e3*tc, fabs(tcm - tc)/tc, vr);
-  assert_true(fabs(dm - dmax)/dmax < 0.01);
-  assert_true(fabs(tcm - tc)/tc < 0.02);
-  assert_true(fabs(vr - v)/v < 0.01);
+  double tcm = n * m->opt.dt, dm = d->peakmax[1], vr = d->qvel[2];
+  print_message(
+      "hertz (%s): dmax %.5f mm (exact %.5f, err %.2e), tc %.4f ms (2.94 dmax/v %.4f, "
+      "err %.2e), rebound %.4f m/s\n",
+      integ == urINT_RK4 ? "RK4" : "Euler", 1e3 * dm, 1e3 * dmax, fabs(dm - dmax) / dmax, 1e3 * tcm,
+      1e3 * tc, fabs(tcm - tc) / tc, vr);
+  assert_true(fabs(dm - dmax) / dmax < 0.01);
+  assert_true(fabs(tcm - tc) / tc < 0.02);
+  assert_true(fabs(vr - v) / v < 0.01);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -110,16 +112,17 @@ static void test_two_body_momentum(void** state) {
   ur_momentum(m, d, p1, L1);
   double dp = 0, np = 0, dl = 0, nl = 0;
   for (int k = 0; k < 3; k++) {
-    dp += (p1[k] - p0[k])*(p1[k] - p0[k]);
-    np += p0[k]*p0[k];
-    dl += (L1[k] - L0[k])*(L1[k] - L0[k]);
-    nl += L0[k]*L0[k];
+    dp += (p1[k] - p0[k]) * (p1[k] - p0[k]);
+    np += p0[k] * p0[k];
+    dl += (L1[k] - L0[k]) * (L1[k] - L0[k]);
+    nl += L0[k] * L0[k];
   }
-  dp = sqrt(dp/np);
-  dl = sqrt(dl/nl);
-  print_message("two bodies: status %s, contact %.3f ms, B vx %.3f -> %.3f m/s, |dp|/|p| = "
-                "%.2e, |dL|/|L| = %.2e\n", ur_status_str(st),
-                1e3*(d->t_last - d->t_first), vb0, d->qvel[6], dp, dl);
+  dp = sqrt(dp / np);
+  dl = sqrt(dl / nl);
+  print_message(
+      "two bodies: status %s, contact %.3f ms, B vx %.3f -> %.3f m/s, |dp|/|p| = "
+      "%.2e, |dL|/|L| = %.2e\n",
+      ur_status_str(st), 1e3 * (d->t_last - d->t_first), vb0, d->qvel[6], dp, dl);
   assert_int_equal(st, urSTAT_SEPARATED);
   assert_true(fabs(d->qvel[6] - vb0) > 0.5);
   assert_true(dp < 1e-9);
@@ -135,7 +138,7 @@ static void test_two_body_momentum(void** state) {
 // unless the engine's stability floor acts
 static void slide_to_roll(double v_eps) {
   urModel* m = ur_model_new();
-  double mass = 1.0, r = 0.05, Ic = 0.4*mass*r*r, v0 = 2.0, mu = 0.4;
+  double mass = 1.0, r = 0.05, Ic = 0.4 * mass * r * r, v0 = 2.0, mu = 0.4;
   double I[6] = {Ic, Ic, Ic, 0, 0, 0};
   int b = ur_model_add_body(m, "ball", -1, urJNT_FREE, NULL, NULL);
   ur_model_set_inertia(m, b, mass, NULL, I);
@@ -150,18 +153,20 @@ static void slide_to_roll(double v_eps) {
   urData* d = ur_data_new(m);
 
   // start at the static penetration, sliding without spin
-  double K = 4.0/3.0/((1 - 0.09)/1e8 + (1 - 0.09)/2e11)*sqrt(r);
-  double ds = pow(mass*9.81/K, 2.0/3.0);
+  double K = 4.0 / 3.0 / ((1 - 0.09) / 1e8 + (1 - 0.09) / 2e11) * sqrt(r);
+  double ds = pow(mass * 9.81 / K, 2.0 / 3.0);
   ur_set_free(m, d, b, (double[3]){0, 0, r - ds}, NULL, (double[3]){v0, 0, 0}, NULL);
-  double ts = 2*v0/(7*mu*9.81);
-  for (int i = 0; i < (int)(1.5*ts/m->opt.dt); i++) {
+  double ts = 2 * v0 / (7 * mu * 9.81);
+  for (int i = 0; i < (int)(1.5 * ts / m->opt.dt); i++) {
     assert_int_equal(ur_step(m, d), urSTAT_OK);
   }
   double vx = d->qvel[0], wy = d->qvel[4];
-  print_message("slide-to-roll (v_eps %.0e): v %.5f m/s (exact 5/7 v0 = %.5f), omega r %.5f, "
-                "z %.6f m\n", v_eps, vx, 5*v0/7, wy*r, d->qpos[2]);
-  assert_true(fabs(vx - 5*v0/7)/(5*v0/7) < 0.01);
-  assert_true(fabs(wy*r - vx)/vx < 0.01);
+  print_message(
+      "slide-to-roll (v_eps %.0e): v %.5f m/s (exact 5/7 v0 = %.5f), omega r %.5f, "
+      "z %.6f m\n",
+      v_eps, vx, 5 * v0 / 7, wy * r, d->qpos[2]);
+  assert_true(fabs(vx - 5 * v0 / 7) / (5 * v0 / 7) < 0.01);
+  assert_true(fabs(wy * r - vx) / vx < 0.01);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -186,7 +191,7 @@ static void test_superellipsoid_bounds(void** state) {
   int b = ur_model_add_body(m, "b", -1, urJNT_FREE, NULL, NULL);
   ur_model_set_inertia(m, a, 1, NULL, I);
   ur_model_set_inertia(m, b, 1, NULL, I);
-  double q0[4] = {cos(0.3), sin(0.3)*0.6, 0, sin(0.3)*0.8};
+  double q0[4] = {cos(0.3), sin(0.3) * 0.6, 0, sin(0.3) * 0.8};
   int ga = ur_model_add_ellipsoid(m, "frame", a, NULL, q0, ra);
   int gb = ur_model_add_ellipsoid(m, "head", b, NULL, NULL, rb);
   assert_int_equal(ur_model_set_degree(m, ga, 6), 0);
@@ -208,11 +213,11 @@ static void test_superellipsoid_bounds(void** state) {
   srand(7);
   for (int t = 0; t < 200; t++) {
     for (int k = 0; k < 2; k++) {
-      double* q = d->qpos + 7*k, n = 0;
-      for (int i = 0; i < 3; i++) q[i] = 0.6*rand()/RAND_MAX - 0.3;
+      double *q = d->qpos + 7 * k, n = 0;
+      for (int i = 0; i < 3; i++) q[i] = 0.6 * rand() / RAND_MAX - 0.3;
       for (int i = 3; i < 7; i++) {
-        q[i] = 2.0*rand()/RAND_MAX - 1;
-        n += q[i]*q[i];
+        q[i] = 2.0 * rand() / RAND_MAX - 1;
+        n += q[i] * q[i];
       }
       for (int i = 3; i < 7; i++) q[i] /= sqrt(n);
     }
@@ -223,16 +228,17 @@ static void test_superellipsoid_bounds(void** state) {
     assert_true(ea.p == 6 && eb.p == 2);
 
     // half-widths from the definition
-    double u[3] = {2.0*rand()/RAND_MAX - 1, 2.0*rand()/RAND_MAX - 1, 2.0*rand()/RAND_MAX - 1};
-    double un = sqrt(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]), sa = 0, sb = 0;
+    double u[3] = {2.0 * rand() / RAND_MAX - 1, 2.0 * rand() / RAND_MAX - 1,
+                   2.0 * rand() / RAND_MAX - 1};
+    double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), sa = 0, sb = 0;
     for (int i = 0; i < 3; i++) u[i] /= un;
     for (int k = 0; k < 3; k++) {
-      double va = ea.R[k]*u[0] + ea.R[3 + k]*u[1] + ea.R[6 + k]*u[2];
-      double vb = eb.R[k]*u[0] + eb.R[3 + k]*u[1] + eb.R[6 + k]*u[2];
-      sa += pow(fabs(ra[k]*va), 1.2);
-      sb += rb[k]*rb[k]*vb*vb;
+      double va = ea.R[k] * u[0] + ea.R[3 + k] * u[1] + ea.R[6 + k] * u[2];
+      double vb = eb.R[k] * u[0] + eb.R[3 + k] * u[1] + eb.R[6 + k] * u[2];
+      sa += pow(fabs(ra[k] * va), 1.2);
+      sb += rb[k] * rb[k] * vb * vb;
     }
-    assert_true(fabs(ur_geom_halfwidth(m, d, ga, u) - pow(sa, 1/1.2)) < 1e-15);
+    assert_true(fabs(ur_geom_halfwidth(m, d, ga, u) - pow(sa, 1 / 1.2)) < 1e-15);
     assert_true(fabs(ur_geom_halfwidth(m, d, gb, u) - sqrt(sb)) < 1e-15);
 
     // the depth bound
@@ -244,12 +250,12 @@ static void test_superellipsoid_bounds(void** state) {
     double dc[3], L = 0;
     for (int i = 0; i < 3; i++) {
       dc[i] = eb.c[i] - ea.c[i];
-      L += dc[i]*dc[i];
+      L += dc[i] * dc[i];
     }
     L = sqrt(L);
     for (int i = 0; i < 3; i++) dc[i] /= L;
-    assert_true(fabs(fb - (-L + ur_geom_halfwidth(m, d, ga, dc) + ur_geom_halfwidth(m, d, gb, dc)))
-                < 1e-15);
+    assert_true(fabs(fb - (-L + ur_geom_halfwidth(m, d, ga, dc) +
+                           ur_geom_halfwidth(m, d, gb, dc))) < 1e-15);
   }
   ur_data_free(d);
   ur_model_free(m);
@@ -274,7 +280,7 @@ static void test_commit_list_once(void** state) {
   urData* d = ur_data_new(m);
   for (int i = 0; i < 8 && ur_step(m, d) >= 0; i++) {
     ur_kinematics(m, d);
-    ur_contacts(m, d);                                /* a pass at the step's end, checked */
+    ur_contacts(m, d); /* a pass at the step's end, checked */
     assert_true(d->npcommit <= m->npair);
     for (int a = 0; a < d->npcommit; a++) {
       for (int b = 0; b < a; b++) assert_int_not_equal(d->plist[a], d->plist[b]);
@@ -317,8 +323,10 @@ static void test_candidates(void** state) {
   }
   assert_int_equal(ur_model_compile(m), 0);
 
-  const int want[][5] = {{ga, gb, -1, 0, 0}, {ga, -1, -1, 1, 1},
-                         {ga, gc, 0, 0, 2}, {ga, gc, 1, 0, 2 + urMAXBAGTGT},
+  const int want[][5] = {{ga, gb, -1, 0, 0},
+                         {ga, -1, -1, 1, 1},
+                         {ga, gc, 0, 0, 2},
+                         {ga, gc, 1, 0, 2 + urMAXBAGTGT},
                          {ga, gb, 1, 1, 3 + urMAXBAGTGT}};
   assert_int_equal(ur_cand_count(m), 5);
   urCand c;
@@ -339,12 +347,12 @@ static void test_candidates(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_candidates),
-    cmocka_unit_test(test_hertz_sphere_plane),
-    cmocka_unit_test(test_two_body_momentum),
-    cmocka_unit_test(test_slide_to_roll),
-    cmocka_unit_test(test_superellipsoid_bounds),
-    cmocka_unit_test(test_commit_list_once),
+      cmocka_unit_test(test_candidates),
+      cmocka_unit_test(test_hertz_sphere_plane),
+      cmocka_unit_test(test_two_body_momentum),
+      cmocka_unit_test(test_slide_to_roll),
+      cmocka_unit_test(test_superellipsoid_bounds),
+      cmocka_unit_test(test_commit_list_once),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -51,42 +51,42 @@ static void assert_same(const urModel* m, urData* a, urData* b, long step) {
     const void *x, *y;
     size_t n;
   } f[] = {
-    {"qpos", a->qpos, b->qpos, m->nq*sizeof(double)},
-    {"qvel", a->qvel, b->qvel, m->nv*sizeof(double)},
-    {"qacc", a->qacc, b->qacc, m->nv*sizeof(double)},
-    {"qfrc", a->qfrc, b->qfrc, m->nv*sizeof(double)},
-    {"rst", a->rst, b->rst, 2*m->nv*sizeof(double)},
-    {"xpos", a->xpos, b->xpos, 3*nb*sizeof(double)},
-    {"xmat", a->xmat, b->xmat, 9*nb*sizeof(double)},
-    {"xcom", a->xcom, b->xcom, 3*nb*sizeof(double)},
-    {"gxpos", a->gxpos, b->gxpos, 3*ng*sizeof(double)},
-    {"gxmat", a->gxmat, b->gxmat, 9*ng*sizeof(double)},
-    {"rkin", a->rkin, b->rkin, 12*nb*sizeof(double)},
-    {"cvel", a->cvel, b->cvel, 6*nb*sizeof(double)},
-    {"fext", a->fext, b->fext, 6*nb*sizeof(double)},
-    {"pair", a->pair, b->pair, m->npair*sizeof(urPairData)},
-    {"pdepth", a->pdepth, b->pdepth, m->npair*sizeof(double)},
-    {"bag", a->bag, b->bag, m->nbag*sizeof(urBagData)},
-    {"sensordata", a->sensordata, b->sensordata, ns*sizeof(double)},
-    {"peakmax", a->peakmax, b->peakmax, ns*sizeof(double)},
-    {"peakmin", a->peakmin, b->peakmin, ns*sizeof(double)},
-    {"tpeak", a->tpeak, b->tpeak, ns*sizeof(double)},
-    {"time", &a->time, &b->time, sizeof(double)},
-    {"energy", &a->energy, &b->energy, sizeof(double)},
-    {"t_first", &a->t_first, &b->t_first, sizeof(double)},
-    {"t_last", &a->t_last, &b->t_last, sizeof(double)},
-    {"t_calm", &a->t_calm, &b->t_calm, sizeof(double)},
-    {"status", &a->status, &b->status, sizeof(int)},
-    {"nstep", &a->nstep, &b->nstep, sizeof(a->nstep)},
-    {"nhist", &a->nhist, &b->nhist, sizeof(int)},
-    {"msg", a->msg, b->msg, sizeof(a->msg)},
+      {"qpos", a->qpos, b->qpos, m->nq * sizeof(double)},
+      {"qvel", a->qvel, b->qvel, m->nv * sizeof(double)},
+      {"qacc", a->qacc, b->qacc, m->nv * sizeof(double)},
+      {"qfrc", a->qfrc, b->qfrc, m->nv * sizeof(double)},
+      {"rst", a->rst, b->rst, 2 * m->nv * sizeof(double)},
+      {"xpos", a->xpos, b->xpos, 3 * nb * sizeof(double)},
+      {"xmat", a->xmat, b->xmat, 9 * nb * sizeof(double)},
+      {"xcom", a->xcom, b->xcom, 3 * nb * sizeof(double)},
+      {"gxpos", a->gxpos, b->gxpos, 3 * ng * sizeof(double)},
+      {"gxmat", a->gxmat, b->gxmat, 9 * ng * sizeof(double)},
+      {"rkin", a->rkin, b->rkin, 12 * nb * sizeof(double)},
+      {"cvel", a->cvel, b->cvel, 6 * nb * sizeof(double)},
+      {"fext", a->fext, b->fext, 6 * nb * sizeof(double)},
+      {"pair", a->pair, b->pair, m->npair * sizeof(urPairData)},
+      {"pdepth", a->pdepth, b->pdepth, m->npair * sizeof(double)},
+      {"bag", a->bag, b->bag, m->nbag * sizeof(urBagData)},
+      {"sensordata", a->sensordata, b->sensordata, ns * sizeof(double)},
+      {"peakmax", a->peakmax, b->peakmax, ns * sizeof(double)},
+      {"peakmin", a->peakmin, b->peakmin, ns * sizeof(double)},
+      {"tpeak", a->tpeak, b->tpeak, ns * sizeof(double)},
+      {"time", &a->time, &b->time, sizeof(double)},
+      {"energy", &a->energy, &b->energy, sizeof(double)},
+      {"t_first", &a->t_first, &b->t_first, sizeof(double)},
+      {"t_last", &a->t_last, &b->t_last, sizeof(double)},
+      {"t_calm", &a->t_calm, &b->t_calm, sizeof(double)},
+      {"status", &a->status, &b->status, sizeof(int)},
+      {"nstep", &a->nstep, &b->nstep, sizeof(a->nstep)},
+      {"nhist", &a->nhist, &b->nhist, sizeof(int)},
+      {"msg", a->msg, b->msg, sizeof(a->msg)},
   };
-  for (size_t k = 0; k < sizeof(f)/sizeof(f[0]); k++) {
+  for (size_t k = 0; k < sizeof(f) / sizeof(f[0]); k++) {
     if (memcmp(f[k].x, f[k].y, f[k].n)) {
       fail_msg("step %ld: %s differs between the lane run and the run alone", step, f[k].name);
     }
   }
-  if (a->hist && memcmp(a->hist, b->hist, (size_t)a->nhist*(1 + ns)*sizeof(double))) {
+  if (a->hist && memcmp(a->hist, b->hist, (size_t)a->nhist * (1 + ns) * sizeof(double))) {
     fail_msg("step %ld: the recorded rows differ", step);
   }
 
@@ -96,10 +96,10 @@ static void assert_same(const urModel* m, urData* a, urData* b, long step) {
     if (!read_dyn(m, i)) {
       continue;
     }
-    if (memcmp(a->Xe + 9*i, b->Xe + 9*i, 9*sizeof(double)) ||
-        memcmp(a->Xr + 3*i, b->Xr + 3*i, 3*sizeof(double)) ||
-        memcmp(a->cacc + 6*i, b->cacc + 6*i, 6*sizeof(double)) ||
-        memcmp(a->freact + 6*i, b->freact + 6*i, 6*sizeof(double))) {
+    if (memcmp(a->Xe + 9 * i, b->Xe + 9 * i, 9 * sizeof(double)) ||
+        memcmp(a->Xr + 3 * i, b->Xr + 3 * i, 3 * sizeof(double)) ||
+        memcmp(a->cacc + 6 * i, b->cacc + 6 * i, 6 * sizeof(double)) ||
+        memcmp(a->freact + 6 * i, b->freact + 6 * i, 6 * sizeof(double))) {
       fail_msg("step %ld: Xe, Xr, cacc or freact of body %d differ", step, i);
     }
   }
@@ -151,16 +151,16 @@ static long lockstep(const urModel* m, int n, const double (*pos)[3], const doub
 static void test_scene_lanes(void** state) {
   urModel* m = scene_build(1);
   assert_non_null(m);
-  static const double pos[4][3] = {{0.05, 0.015, 2.2}, {0.12, 0.036, 2.2}, {-0.3, 0.2, 2.2},
-                                   {0.0, 0.0, 2.2}};
+  static const double pos[4][3] = {
+      {0.05, 0.015, 2.2}, {0.12, 0.036, 2.2}, {-0.3, 0.2, 2.2}, {0.0, 0.0, 2.2}};
   static const double vel[4][3] = {{0, 0, -7.5}, {0, 0, -12.5}, {1.0, 0, -9.0}, {0, 0, -20}};
   for (int n = 2; n <= 4; n++) {
     long steps[4];
     long it = lockstep(m, n, pos, vel, steps);
-    print_message("%d lanes: %ld lock-steps; runs of %ld, %ld, %ld, %ld steps\n", n, it,
-                  steps[0], steps[1], n > 2 ? steps[2] : 0, n > 3 ? steps[3] : 0);
+    print_message("%d lanes: %ld lock-steps; runs of %ld, %ld, %ld, %ld steps\n", n, it, steps[0],
+                  steps[1], n > 2 ? steps[2] : 0, n > 3 ? steps[3] : 0);
     assert_true(it > 100);
-    assert_true(steps[0] != steps[1]);     /* the lanes really ended at different times */
+    assert_true(steps[0] != steps[1]); /* the lanes really ended at different times */
   }
   ur_model_free(m);
 }
@@ -206,10 +206,10 @@ static void test_chain_lanes(void** state) {
   urData* lane[4];
   for (int i = 0; i < 4; i++) {
     lane[i] = ur_data_new(m);
-    for (int k = 0; k < m->nv; k++) lane[i]->qvel[k] = 8.0*sin(1.7*k + 0.3 + i);
+    for (int k = 0; k < m->nv; k++) lane[i]->qvel[k] = 8.0 * sin(1.7 * k + 0.3 + i);
   }
   lanes_vs_alone(m, lane, 3000);
-  assert_true(memcmp(lane[0]->qpos, lane[1]->qpos, m->nq*sizeof(double)) != 0);
+  assert_true(memcmp(lane[0]->qpos, lane[1]->qpos, m->nq * sizeof(double)) != 0);
   for (int i = 0; i < 4; i++) {
     assert_int_equal(lane[i]->status, urSTAT_OK);
     ur_data_free(lane[i]);
@@ -235,7 +235,7 @@ static void test_singular_lane(void** state) {
   urData* lane[4];
   for (int i = 0; i < 4; i++) {
     lane[i] = ur_data_new(m);
-    lane[i]->qpos[1] = 0.2*i;
+    lane[i]->qpos[1] = 0.2 * i;
     lane[i]->qvel[0] = 1.0;
   }
   lanes_vs_alone(m, lane, 50);
@@ -255,7 +255,7 @@ static void test_more_than_lanes(void** state) {
   urData *lane[6], *alone[6];
   for (int i = 0; i < 6; i++) {
     lane[i] = ur_data_new(m);
-    for (int k = 0; k < m->nv; k++) lane[i]->qvel[k] = 5.0*cos(0.9*k + i);
+    for (int k = 0; k < m->nv; k++) lane[i]->qvel[k] = 5.0 * cos(0.9 * k + i);
     alone[i] = ur_data_new(m);
     ur_data_copy(m, alone[i], lane[i]);
   }
@@ -287,7 +287,7 @@ static void test_stop_lanes(void** state) {
   int root = ur_name_body(m, "drone");
   for (int i = 0; i < 3; i++) {
     d[i] = ur_data_new(m);
-    double pos[3] = {0.05*i, 0, 2.2}, vel[3] = {0, 0, -8};
+    double pos[3] = {0.05 * i, 0, 2.2}, vel[3] = {0, 0, -8};
     ur_run_start(m, d[i], root, pos, NULL, vel);
   }
   for (int it = 0; it < 20; it++) ur_step_lanes(m, d, 3, &L);
@@ -304,12 +304,9 @@ static void test_stop_lanes(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_scene_lanes),
-    cmocka_unit_test(test_scene_rk4),
-    cmocka_unit_test(test_chain_lanes),
-    cmocka_unit_test(test_singular_lane),
-    cmocka_unit_test(test_more_than_lanes),
-    cmocka_unit_test(test_stop_lanes),
+      cmocka_unit_test(test_scene_lanes),     cmocka_unit_test(test_scene_rk4),
+      cmocka_unit_test(test_chain_lanes),     cmocka_unit_test(test_singular_lane),
+      cmocka_unit_test(test_more_than_lanes), cmocka_unit_test(test_stop_lanes),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -33,7 +33,8 @@ static int drop(double v0, const char* last, char* msg) {
            "law f type=table load=floor\n"
            "body ball parent=world joint=free pos=0,0,0.1 mass=1 inertia=1,1,1\n"
            "ellipsoid b body=ball pos=0,0,0 size=0.1,0.1,0.1\n"
-           "pair bf a=b b=ground law=f\n", last, 1e5 * atof(last));
+           "pair bf a=b b=ground law=f\n",
+           last, 1e5 * atof(last));
   urModel* m = parse(text);
   urData* d = ur_data_new(m);
   double v[3] = {0, 0, -v0};
@@ -61,10 +62,11 @@ static void test_pair(void** state) {
 /* a hinge with a curve to 0.3 rad, started at 0.5 rad (a curve with no negative abscissae
    covers -0.3..0.3); without the curve's data exceeded nothing is reported */
 static void test_restraint(void** state) {
-  urModel* m = parse("option dt=1e-4 gravity=0,0,0\n"
-                     "curve c x=0,0.3 y=0,30\n"
-                     "body arm parent=world joint=revolute pos=0,0,0 mass=1 inertia=1,1,1\n"
-                     "restraint arm dof=0 load=c c=5\n");
+  urModel* m = parse(
+      "option dt=1e-4 gravity=0,0,0\n"
+      "curve c x=0,0.3 y=0,30\n"
+      "body arm parent=world joint=revolute pos=0,0,0 mass=1 inertia=1,1,1\n"
+      "restraint arm dof=0 load=c c=5\n");
   urData* d = ur_data_new(m);
   char msg[160];
   d->qpos[0] = 0.2;
@@ -82,8 +84,8 @@ static void test_restraint(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_pair),
-    cmocka_unit_test(test_restraint),
+      cmocka_unit_test(test_pair),
+      cmocka_unit_test(test_restraint),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

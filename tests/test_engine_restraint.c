@@ -14,10 +14,10 @@
 // independent piecewise-linear interpolation (linear extrapolation)
 static double interp(const double* x, const double* y, int n, double v) {
   int i = 0;
-  while (i < n - 2 && v > x[i+1]) {
+  while (i < n - 2 && v > x[i + 1]) {
     i++;
   }
-  return y[i] + (y[i+1] - y[i])*(v - x[i])/(x[i+1] - x[i]);
+  return y[i] + (y[i + 1] - y[i]) * (v - x[i]) / (x[i + 1] - x[i]);
 }
 
 
@@ -73,11 +73,11 @@ static void test_curve_stops(void** state) {
   double qs[7] = {0.05, 0.2, 0.35, 0.45, -0.15, -0.55, 0.7}, qd = 0.8, e = 0;
   for (int i = 0; i < 7; i++) {
     double q = qs[i];
-    double f = 7*q + (q >= 0 ? interp(LX, LY, 4, q) : -interp(LX, LY, 4, -q)) + 0.5*qd;
+    double f = 7 * q + (q >= 0 ? interp(LX, LY, 4, q) : -interp(LX, LY, 4, -q)) + 0.5 * qd;
     if (q > 0.4) {
-      f += 1000*(q - 0.4) + 3*qd;
+      f += 1000 * (q - 0.4) + 3 * qd;
     } else if (q < -0.5) {
-      f += 1000*(q + 0.5) + 3*qd;
+      f += 1000 * (q + 0.5) + 3 * qd;
     }
     double g = moment(m, d, q, qd);
     e = fmax(e, fabs(g - f));
@@ -99,15 +99,15 @@ static void test_saturation(void** state) {
   urData* d = ur_data_new(m);
   double qs[5] = {0.001, 0.05, 0.1, 0.5, -0.3}, e = 0;
   for (int i = 0; i < 5; i++) {
-    double f = 600*tanh(10*qs[i]);
+    double f = 600 * tanh(10 * qs[i]);
     e = fmax(e, fabs(moment(m, d, qs[i], 0) - f));
   }
   assert_true(e < 1e-9);
-  assert_true(fabs(moment(m, d, 0.001, 0) - 6) < 1e-3);       /* initial slope k */
-  assert_true(fabs(moment(m, d, 2, 0) - 600) < 1e-9);         /* saturated */
+  assert_true(fabs(moment(m, d, 0.001, 0) - 6) < 1e-3); /* initial slope k */
+  assert_true(fabs(moment(m, d, 2, 0) - 600) < 1e-9);   /* saturated */
   d->qpos[0] = 0.2;
   ur_kinematics(m, d);
-  assert_true(fabs(ur_energy_potential(m, d) - 600.0*600/6000*log(cosh(2))) < 1e-9);
+  assert_true(fabs(ur_energy_potential(m, d) - 600.0 * 600 / 6000 * log(cosh(2))) < 1e-9);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -121,12 +121,14 @@ static void test_hysteresis(void** state) {
   d->qpos[0] = 0.3;
   ur_step(m, d);
   double lm = interp(LX, LY, 4, 0.3), um = interp(UX, UY, 3, 0.3);
-  double f1 = moment(m, d, 0.2, 0) - 7*0.2, f2 = moment(m, d, 0.1, 0) - 7*0.1;
-  double e1 = lm*interp(UX, UY, 3, 0.2)/um, e2 = lm*interp(UX, UY, 3, 0.1)/um;
-  double f3 = moment(m, d, 0.35, 0) - 7*0.35, e3 = interp(LX, LY, 4, 0.35);
-  double f4 = moment(m, d, -0.2, 0) + 7*0.2, e4 = -interp(LX, LY, 4, 0.2);
-  print_message("hysteresis: unload 0.2 %.4f (exact %.4f), 0.1 %.4f (%.4f), reload 0.35 %.3f "
-                "(%.3f), other side %.3f (%.3f)\n", f1, e1, f2, e2, f3, e3, f4, e4);
+  double f1 = moment(m, d, 0.2, 0) - 7 * 0.2, f2 = moment(m, d, 0.1, 0) - 7 * 0.1;
+  double e1 = lm * interp(UX, UY, 3, 0.2) / um, e2 = lm * interp(UX, UY, 3, 0.1) / um;
+  double f3 = moment(m, d, 0.35, 0) - 7 * 0.35, e3 = interp(LX, LY, 4, 0.35);
+  double f4 = moment(m, d, -0.2, 0) + 7 * 0.2, e4 = -interp(LX, LY, 4, 0.2);
+  print_message(
+      "hysteresis: unload 0.2 %.4f (exact %.4f), 0.1 %.4f (%.4f), reload 0.35 %.3f "
+      "(%.3f), other side %.3f (%.3f)\n",
+      f1, e1, f2, e2, f3, e3, f4, e4);
   assert_true(fabs(f1 - e1) < 1e-12 && fabs(f2 - e2) < 1e-12);
   assert_true(fabs(f3 - e3) < 1e-12 && fabs(f4 - e4) < 1e-12);
   assert_true(f1 < interp(LX, LY, 4, 0.2) - 10);
@@ -142,7 +144,7 @@ static void test_spherical_energy(void** state) {
   int b = ur_model_add_body(m, "head", -1, urJNT_SPHERICAL, NULL, NULL);
   ur_model_set_inertia(m, b, 4.5, (double[3]){0.02, 0.01, 0.06}, I);
   urRestraint r = {0};
-  double ks[3] = {2, 3, 1.5};                             // anisotropic: the torque map matters
+  double ks[3] = {2, 3, 1.5}; // anisotropic: the torque map matters
   for (int k = 0; k < 3; k++) {
     r.k = ks[k];
     ur_model_set_restraint(m, b, k, &r);
@@ -159,15 +161,15 @@ static void test_spherical_energy(void** state) {
   double e0 = ur_energy_kinetic(m, d) + ur_energy_potential(m, d), thmax = 0;
   for (int i = 0; i < 10000; i++) {
     ur_step(m, d);
-    double v = 2*acos(fmin(1, fabs(d->qpos[0])));
+    double v = 2 * acos(fmin(1, fabs(d->qpos[0])));
     thmax = fmax(thmax, v);
   }
   ur_forward(m, d);
   double e1 = ur_energy_kinetic(m, d) + ur_energy_potential(m, d);
   print_message("spherical restraint: max angle %.2f rad, |dE|/E %.1e over 1 s\n", thmax,
-                fabs(e1 - e0)/e0);
+                fabs(e1 - e0) / e0);
   assert_true(thmax > 1.0);
-  assert_true(fabs(e1 - e0)/e0 < 1e-8);
+  assert_true(fabs(e1 - e0) / e0 < 1e-8);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -189,10 +191,10 @@ static void test_implicit_damping(void** state) {
     assert_int_equal(ur_model_compile(m), 0);
     urData* d = ur_data_new(m);
     d->qvel[0] = 2;
-    for (int n = 1; n <= (impl ? 10 : 5); n++) {     // 2 4^5 < vmax
+    for (int n = 1; n <= (impl ? 10 : 5); n++) { // 2 4^5 < vmax
       ur_step(m, d);
-      double want = impl ? 2/pow(6, n) : 2*pow(-4, n);
-      assert_true(fabs(d->qvel[0] - want) <= 1e-12*fabs(want));
+      double want = impl ? 2 / pow(6, n) : 2 * pow(-4, n);
+      assert_true(fabs(d->qvel[0] - want) <= 1e-12 * fabs(want));
     }
     ur_data_free(d);
     ur_model_free(m);
@@ -202,11 +204,9 @@ static void test_implicit_damping(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_curve_stops),
-    cmocka_unit_test(test_hysteresis),
-    cmocka_unit_test(test_saturation),
-    cmocka_unit_test(test_spherical_energy),
-    cmocka_unit_test(test_implicit_damping),
+      cmocka_unit_test(test_curve_stops),      cmocka_unit_test(test_hysteresis),
+      cmocka_unit_test(test_saturation),       cmocka_unit_test(test_spherical_energy),
+      cmocka_unit_test(test_implicit_damping),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

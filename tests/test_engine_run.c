@@ -19,15 +19,15 @@
 typedef struct {
   const urModel* m;
   urData* d;
-  double offset;                   /* horizontal offset of the drone, m */
-  double speed;                    /* descent speed, m/s */
+  double offset; /* horizontal offset of the drone, m */
+  double speed;  /* descent speed, m/s */
   int status;
 } job;
 
 
 static void* runjob(void* arg) {
   job* j = arg;
-  double pos[3] = {j->offset, 0.3*j->offset, 2.2}, vel[3] = {0, 0, -j->speed};
+  double pos[3] = {j->offset, 0.3 * j->offset, 2.2}, vel[3] = {0, 0, -j->speed};
   ur_data_reset(j->m, j->d);
   j->status = ur_run_impact(j->m, j->d, ur_name_body(j->m, "drone"), pos, NULL, vel);
   return NULL;
@@ -39,14 +39,16 @@ static void test_threads_bitwise(void** state) {
   urModel* m = scene_build(1);
   assert_non_null(m);
   urData* d[4];
-  static double buf[4][ROWS*64];
+  static double buf[4][ROWS * 64];
   assert_true(1 + m->nsensordata <= 64);
   for (int i = 0; i < 4; i++) {
     d[i] = ur_data_new(m);
     assert_int_equal(ur_data_history(m, d[i], buf[i], ROWS), 0);
   }
-  job jobs[4] = {{m, d[0], 0.05, 7.5, 0}, {m, d[1], 0.12, 12.5, 0},
-                 {m, d[2], 0.05, 7.5, 0}, {m, d[3], 0.12, 12.5, 0}};
+  job jobs[4] = {{m, d[0], 0.05, 7.5, 0},
+                 {m, d[1], 0.12, 12.5, 0},
+                 {m, d[2], 0.05, 7.5, 0},
+                 {m, d[3], 0.12, 12.5, 0}};
 
   // sequential, then concurrent
   runjob(jobs + 0);
@@ -60,20 +62,21 @@ static void test_threads_bitwise(void** state) {
   // compare
   int ns = m->nsensordata;
   for (int i = 0; i < 2; i++) {
-    print_message("run %d: %s, %d rows, %ld steps, peak head acc z %.1f m/s^2, neck Fz %.0f N\n",
-                  i, ur_status_str(jobs[i].status), d[i]->nhist, d[i]->nstep, d[i]->peakmax[2],
+    print_message("run %d: %s, %d rows, %ld steps, peak head acc z %.1f m/s^2, neck Fz %.0f N\n", i,
+                  ur_status_str(jobs[i].status), d[i]->nhist, d[i]->nstep, d[i]->peakmax[2],
                   d[i]->peakmin[5]);
     assert_true(jobs[i].status > 0);
-    assert_int_equal(jobs[i].status, jobs[i+2].status);
-    assert_int_equal(d[i]->nhist, d[i+2]->nhist);
+    assert_int_equal(jobs[i].status, jobs[i + 2].status);
+    assert_int_equal(d[i]->nhist, d[i + 2]->nhist);
     assert_true(d[i]->nhist > 10);
-    assert_int_equal(memcmp(buf[i], buf[i+2], (size_t)d[i]->nhist*(1 + ns)*sizeof(double)), 0);
-    assert_int_equal(memcmp(d[i]->qpos, d[i+2]->qpos, (size_t)m->nq*sizeof(double)), 0);
-    assert_int_equal(memcmp(d[i]->peakmax, d[i+2]->peakmax, (size_t)ns*sizeof(double)), 0);
+    assert_int_equal(memcmp(buf[i], buf[i + 2], (size_t)d[i]->nhist * (1 + ns) * sizeof(double)),
+                     0);
+    assert_int_equal(memcmp(d[i]->qpos, d[i + 2]->qpos, (size_t)m->nq * sizeof(double)), 0);
+    assert_int_equal(memcmp(d[i]->peakmax, d[i + 2]->peakmax, (size_t)ns * sizeof(double)), 0);
   }
 
   // the two runs differ (so the comparison is not vacuous)
-  assert_true(memcmp(d[0]->qpos, d[1]->qpos, (size_t)m->nq*sizeof(double)) != 0);
+  assert_true(memcmp(d[0]->qpos, d[1]->qpos, (size_t)m->nq * sizeof(double)) != 0);
   assert_true(d[0]->peakmax[2] != d[1]->peakmax[2]);
   for (int i = 0; i < 4; i++) {
     ur_data_free(d[i]);
@@ -96,7 +99,7 @@ static void test_symmetric_impact(void** state) {
                 ax, ay, az);
   assert_true(st > 0);
   assert_true(az > 100);
-  assert_true(ay < 1e-6*az);
+  assert_true(ay < 1e-6 * az);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -143,8 +146,8 @@ static void test_explosion_fails(void** state) {
   urData* d = ur_data_new(m);
   d->qpos[0] = 0.01;
   int st = ur_run(m, d);
-  print_message("explosion: status %d (%s) after %ld steps: %s\n", st, ur_status_str(st),
-                d->nstep, d->msg);
+  print_message("explosion: status %d (%s) after %ld steps: %s\n", st, ur_status_str(st), d->nstep,
+                d->msg);
   assert_true(st < 0);
   assert_true(d->nstep < 1000);
   ur_data_free(d);
@@ -193,27 +196,29 @@ static void test_jump(void** state) {
     }
     double dx[3];
     for (int k = 0; k < 3; k++) {
-      dx[k] = d->gxpos[3*a + k] - d->gxpos[3*b + k];
+      dx[k] = d->gxpos[3 * a + k] - d->gxpos[3 * b + k];
     }
-    double gap = sqrt(dx[0]*dx[0] + dx[1]*dx[1] + dx[2]*dx[2]) - m->geom[a].rbound
-                 - m->geom[b].rbound;
+    double gap =
+        sqrt(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]) - m->geom[a].rbound - m->geom[b].rbound;
     gsphere = fmin(gsphere, gap);
     urEllipsoid ea, eb;
     urGeomContact gc;
     double u[3] = {0, 0, 0};
-    memcpy(ea.c, d->gxpos + 3*a, sizeof ea.c);
-    memcpy(ea.R, d->gxmat + 9*a, sizeof ea.R);
+    memcpy(ea.c, d->gxpos + 3 * a, sizeof ea.c);
+    memcpy(ea.R, d->gxmat + 9 * a, sizeof ea.R);
     memcpy(ea.r, m->geom[a].size, sizeof ea.r);
-    memcpy(eb.c, d->gxpos + 3*b, sizeof eb.c);
-    memcpy(eb.R, d->gxmat + 9*b, sizeof eb.R);
+    memcpy(eb.c, d->gxpos + 3 * b, sizeof eb.c);
+    memcpy(eb.R, d->gxmat + 9 * b, sizeof eb.R);
     memcpy(eb.r, m->geom[b].size, sizeof eb.r);
     ur_collide_ellipsoids(&ea, &eb, u, &gc);
     gexact = fmin(gexact, -gc.g);
   }
-  print_message("jump: %.6f s, smallest gaps after it: spheres %.3e m, exact %.3e m (margin "
-                "%.0e)\n", d->t_jump, gsphere, gexact, m->opt.jump_margin);
+  print_message(
+      "jump: %.6f s, smallest gaps after it: spheres %.3e m, exact %.3e m (margin "
+      "%.0e)\n",
+      d->t_jump, gsphere, gexact, m->opt.jump_margin);
   assert_true(gexact >= m->opt.jump_margin - 1e-12);
-  assert_true(gexact <= 2*m->opt.jump_margin);
+  assert_true(gexact <= 2 * m->opt.jump_margin);
   assert_true(gsphere <= m->opt.jump_margin + 1e-9);
   assert_true(fabs(d->qpos[m->body[dr].qadr] - (0.01 + d->t_jump)) < 1e-12);
   assert_true(d->time == d->t_jump);
@@ -233,7 +238,7 @@ static void test_history_and_names(void** state) {
   int w = 1 + m->nsensordata;
   assert_int_equal(d->nhist, 100);
   assert_true(fabs(d->hist[w] - 1e-4) < 1e-12);
-  assert_true(fabs(d->hist[99*w] - 99e-4) < 1e-12);
+  assert_true(fabs(d->hist[99 * w] - 99e-4) < 1e-12);
 
   // names
   assert_int_equal(ur_name_body(m, "head"), 4);
@@ -280,7 +285,7 @@ static urModel* balls(double xb, double zb, double t_clear, double a_clear) {
   for (int k = 0; k < 2; k++) {
     char name[8];
     snprintf(name, sizeof name, "t%d", k);
-    int b = ur_model_add_body(m, name, -1, urJNT_FIXED, (double[3]){k*xb, 0, k*zb}, NULL);
+    int b = ur_model_add_body(m, name, -1, urJNT_FIXED, (double[3]){k * xb, 0, k * zb}, NULL);
     ur_model_set_inertia(m, b, 1, NULL, I);
     int g = ur_model_add_ellipsoid(m, name, b, NULL, NULL, (double[3]){0.1, 0.1, 0.1});
     ur_model_add_pair(m, name, gp, g, &law);
@@ -323,8 +328,10 @@ static void test_clear_ends_early(void** state) {
     ballRun b = {5, 0, k ? 0.005 : INFINITY, 0, 0, 0, {0, 0, 0.3}, {0, 0, -2}};
     run_balls(&b, tlast + k, tend + k);
   }
-  print_message("ball rebound: run ends %.4f s after the contact (t_quiet alone), %.4f s "
-                "(t_clear 0.005)\n", tend[0] - tlast[0], tend[1] - tlast[1]);
+  print_message(
+      "ball rebound: run ends %.4f s after the contact (t_quiet alone), %.4f s "
+      "(t_clear 0.005)\n",
+      tend[0] - tlast[0], tend[1] - tlast[1]);
   assert_true(fabs(tend[0] - tlast[0] - 0.05) < 2e-4);
   assert_true(tend[1] - tlast[1] > 0.005 && tend[1] - tlast[1] < 0.0053);
 }
@@ -339,9 +346,11 @@ static void test_clear_keeps_recontact(void** state) {
     ballRun b = {0.4, 0.35, k ? 0.005 : INFINITY, 100, 0.3, 2, {-0.4, 0, 0.14}, {2, 0, 0}};
     run_balls(&b, tlast + k, tend + k);
   }
-  print_message("glancing ball: last contact %.4f / %.4f s after the first, end %.4f / %.4f s "
-                "(without / with t_clear)\n", tlast[0], tlast[1], tend[0], tend[1]);
-  assert_true(tlast[0] > 0.1);                 /* the second target was reached */
+  print_message(
+      "glancing ball: last contact %.4f / %.4f s after the first, end %.4f / %.4f s "
+      "(without / with t_clear)\n",
+      tlast[0], tlast[1], tend[0], tend[1]);
+  assert_true(tlast[0] > 0.1); /* the second target was reached */
   assert_true(tlast[1] == tlast[0]);
 }
 
@@ -356,8 +365,10 @@ static void test_clear_sliding_past(void** state) {
     ballRun b = {5, 0, k ? 0.01 : INFINITY, 100, 0.02, 0, {-0.4, 0, 0.14}, {2, 0, 0}};
     run_balls(&b, tlast + k, tend + k);
   }
-  print_message("ball sliding past: run ends %.4f s after the contact (t_quiet alone), %.4f s "
-                "(t_clear 0.01)\n", tend[0] - tlast[0], tend[1] - tlast[1]);
+  print_message(
+      "ball sliding past: run ends %.4f s after the contact (t_quiet alone), %.4f s "
+      "(t_clear 0.01)\n",
+      tend[0] - tlast[0], tend[1] - tlast[1]);
   assert_true(fabs(tend[0] - tlast[0] - 0.02) < 2e-4);
   assert_true(tend[1] - tlast[1] > 0.01 && tend[1] - tlast[1] < 0.0103);
 }
@@ -365,16 +376,11 @@ static void test_clear_sliding_past(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_threads_bitwise),
-    cmocka_unit_test(test_symmetric_impact),
-    cmocka_unit_test(test_nonfinite_fails),
-    cmocka_unit_test(test_explosion_fails),
-    cmocka_unit_test(test_stop_request),
-    cmocka_unit_test(test_jump),
-    cmocka_unit_test(test_history_and_names),
-    cmocka_unit_test(test_clear_ends_early),
-    cmocka_unit_test(test_clear_keeps_recontact),
-    cmocka_unit_test(test_clear_sliding_past),
+      cmocka_unit_test(test_threads_bitwise),       cmocka_unit_test(test_symmetric_impact),
+      cmocka_unit_test(test_nonfinite_fails),       cmocka_unit_test(test_explosion_fails),
+      cmocka_unit_test(test_stop_request),          cmocka_unit_test(test_jump),
+      cmocka_unit_test(test_history_and_names),     cmocka_unit_test(test_clear_ends_early),
+      cmocka_unit_test(test_clear_keeps_recontact), cmocka_unit_test(test_clear_sliding_past),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,20 +12,20 @@
 #include "uasrisk/modellang.h"
 
 static const char* TEXT =
-  "param M 3.5 kg\n"
-  "param S 1\n"
-  "body torso parent=world joint=free pos=0,0,1 mass=40 inertia=1,1,1\n"
-  "ellipsoid chest body=torso pos=0,0,0.2 size=0.2,0.15,0.3\n"
-  "body hub parent=world joint=free pos=0,0,3 mass=2.5 com=0,0,0.01 inertia=0.02,0.03,0.04\n"
-  "body arm parent=hub joint=revolute pos=0.2,0,0 axis=0,1,0 mass=1 com=0.1,0,0 "
-  "inertia=0.001,0.002,0.003\n"
-  "ellipsoid shell body=hub pos=0,0,-0.05 size=0.3,0.3,0.08\n"
-  "ellipsoid tube body=arm pos=0.1,0,0 size=0.1,0.02,0.02\n"
-  "ellipsoid bag body=hub pos=0,0,-0.1 size=0.2,0.2,0.1\n"
-  "airbag b geom=bag p0=101325 patm=101325 v0=0.01 gamma=1.4 kappa=2 thickness=0.1 "
-  "targets=chest\n"
-  "sensor tip type=bodypos obj=arm pos=0.2,0,0\n"
-  "role drone=hub mass=$M size=$S\n";
+    "param M 3.5 kg\n"
+    "param S 1\n"
+    "body torso parent=world joint=free pos=0,0,1 mass=40 inertia=1,1,1\n"
+    "ellipsoid chest body=torso pos=0,0,0.2 size=0.2,0.15,0.3\n"
+    "body hub parent=world joint=free pos=0,0,3 mass=2.5 com=0,0,0.01 inertia=0.02,0.03,0.04\n"
+    "body arm parent=hub joint=revolute pos=0.2,0,0 axis=0,1,0 mass=1 com=0.1,0,0 "
+    "inertia=0.001,0.002,0.003\n"
+    "ellipsoid shell body=hub pos=0,0,-0.05 size=0.3,0.3,0.08\n"
+    "ellipsoid tube body=arm pos=0.1,0,0 size=0.1,0.02,0.02\n"
+    "ellipsoid bag body=hub pos=0,0,-0.1 size=0.2,0.2,0.1\n"
+    "airbag b geom=bag p0=101325 patm=101325 v0=0.01 gamma=1.4 kappa=2 thickness=0.1 "
+    "targets=chest\n"
+    "sensor tip type=bodypos obj=arm pos=0.2,0,0\n"
+    "role drone=hub mass=$M size=$S\n";
 
 static urModel* parse(double M, double S) {
   urOverride ov[2] = {{"M", M}, {"S", S}};
@@ -39,13 +39,13 @@ static urModel* parse(double M, double S) {
 
 /* the written total leaves the model as written; mass scales masses and inertias */
 static void mass_scale(void** state) {
-  urModel* a = parse(3.5, 1), *b = parse(7, 1);
+  urModel *a = parse(3.5, 1), *b = parse(7, 1);
   assert_true(a->roles.mass0 == 3.5 && a->roles.mass_scale == 1);
   assert_true(b->roles.mass0 == 3.5 && b->roles.mass_scale == 2);
   assert_true(ur_model_tree_mass(b, b->roles.drone) == 7);
   for (int i = 0; i < a->nbody; i++) {
     const urBody *x = a->body + i, *y = b->body + i;
-    double f = strcmp(x->name, "torso") ? 2 : 1;           /* the person is not the drone */
+    double f = strcmp(x->name, "torso") ? 2 : 1; /* the person is not the drone */
     assert_true(y->mass == f * x->mass);
     for (int k = 0; k < 9; k++) assert_true(y->inertia[k] == f * x->inertia[k]);
     for (int k = 0; k < 3; k++) assert_true(y->pos[k] == x->pos[k] && y->com[k] == x->com[k]);
@@ -53,7 +53,7 @@ static void mass_scale(void** state) {
   for (int g = 0; g < a->ngeom; g++) {
     for (int k = 0; k < 3; k++) assert_true(a->geom[g].size[k] == b->geom[g].size[k]);
   }
-  assert_true(a->body[1].mass == 2.5 && a->body[1].inertia[4] == 0.03);   /* as written */
+  assert_true(a->body[1].mass == 2.5 && a->body[1].inertia[4] == 0.03); /* as written */
   ur_model_free(a);
   ur_model_free(b);
 }
@@ -61,7 +61,7 @@ static void mass_scale(void** state) {
 /* size scales the geometry (not the root's placement), airbag volumes by its cube, inertias by
    its square; masses stay */
 static void size_scale(void** state) {
-  urModel* a = parse(3.5, 1), *b = parse(3.5, 1.5);
+  urModel *a = parse(3.5, 1), *b = parse(3.5, 1.5);
   int hub = b->roles.drone, arm = ur_name_body(b, "arm"), torso = ur_name_body(b, "torso");
   assert_true(b->roles.size_scale == 1.5);
   assert_true(b->body[hub].mass == 2.5 && b->body[arm].mass == 1);
@@ -105,9 +105,9 @@ static void refused(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(mass_scale),
-    cmocka_unit_test(size_scale),
-    cmocka_unit_test(refused),
+      cmocka_unit_test(mass_scale),
+      cmocka_unit_test(size_scale),
+      cmocka_unit_test(refused),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -13,76 +13,202 @@ typedef struct {
   const char* name;
   const char* parent;
   urJointType jt;
-  double anchor[3];                /* joint anchor, world, standing reference */
+  double anchor[3]; /* joint anchor, world, standing reference */
   double mass;
-  double com[3];                   /* world */
+  double com[3]; /* world */
   double I[3];
-  double k, c;                     /* restraint per dof */
+  double k, c; /* restraint per dof */
 } sceneSeg;
 
 typedef struct {
   const char* name;
   const char* body;
-  double c[3];                     /* world centre */
+  double c[3]; /* world centre */
   double r[3];
 } sceneEll;
 
 static const sceneSeg scene_human[] = {
-  {"pelvis", NULL, urJNT_FREE, {-0.03, 0, 0.967}, 8.601, {-0.03, 0, 0.967},
-   {0.0698, 0.0560, 0.0636}, 0, 0},
-  {"abdomen", "pelvis", urJNT_SPHERICAL, {-0.05, 0, 1.057}, 12.574, {-0.02, 0, 1.167},
-   {0.1371, 0.0866, 0.1292}, 300, 8},
-  {"thorax", "abdomen", urJNT_SPHERICAL, {-0.05, 0, 1.257}, 12.289, {-0.03, 0, 1.377},
-   {0.1855, 0.0746, 0.1571}, 300, 8},
-  {"neck", "thorax", urJNT_SPHERICAL, {-0.04, 0, 1.485}, 0.844, {-0.033, 0, 1.537},
-   {0.0015, 0.0015, 0.0015}, 160, 1.5},
-  {"head", "neck", urJNT_SPHERICAL, {-0.026, 0, 1.588}, 4.5, {0, 0, 1.65},
-   {0.0214, 0.0232, 0.0154}, 160, 1.5},
-  {"sternum", "thorax", urJNT_PRISMATIC, {0.10, 0, 1.30}, 0.45, {0.10, 0, 1.30},
-   {1e-4, 1e-4, 1e-4}, 26e3, 520},
-  {"uarm_l", "thorax", urJNT_SPHERICAL, {-0.03, 0.175, 1.395}, 2.087, {-0.03, 0.185, 1.224},
-   {0.0136, 0.0121, 0.0042}, 10, 2},
-  {"uarm_r", "thorax", urJNT_SPHERICAL, {-0.03, -0.175, 1.395}, 2.087, {-0.03, -0.185, 1.224},
-   {0.0136, 0.0121, 0.0042}, 10, 2},
-  {"farm_l", "uarm_l", urJNT_REVOLUTE, {-0.03, 0.19, 1.098}, 1.247, {-0.025, 0.195, 0.978},
-   {0.0069, 0.0064, 0.0013}, 5, 1},
-  {"farm_r", "uarm_r", urJNT_REVOLUTE, {-0.03, -0.19, 1.098}, 1.247, {-0.025, -0.195, 0.978},
-   {0.0069, 0.0064, 0.0013}, 5, 1},
-  {"hand_l", "farm_l", urJNT_UNIVERSAL, {-0.02, 0.2, 0.835}, 0.47, {-0.02, 0.2, 0.767},
-   {0.0014, 0.0009, 0.0006}, 5, 0.5},
-  {"hand_r", "farm_r", urJNT_UNIVERSAL, {-0.02, -0.2, 0.835}, 0.47, {-0.02, -0.2, 0.767},
-   {0.0014, 0.0009, 0.0006}, 5, 0.5},
-  {"thigh_l", "pelvis", urJNT_SPHERICAL, {-0.02, 0.085, 0.91}, 10.903, {-0.016, 0.087, 0.738},
-   {0.2126, 0.2126, 0.0436}, 250, 10},
-  {"thigh_r", "pelvis", urJNT_SPHERICAL, {-0.02, -0.085, 0.91}, 10.903, {-0.016, -0.087, 0.738},
-   {0.2126, 0.2126, 0.0436}, 250, 10},
-  {"shank_l", "thigh_l", urJNT_REVOLUTE, {-0.01, 0.09, 0.489}, 3.334, {-0.024, 0.09, 0.303},
-   {0.0413, 0.0393, 0.0067}, 200, 10},
-  {"shank_r", "thigh_r", urJNT_REVOLUTE, {-0.01, -0.09, 0.489}, 3.334, {-0.024, -0.09, 0.303},
-   {0.0413, 0.0393, 0.0067}, 200, 10},
-  {"foot_l", "shank_l", urJNT_UNIVERSAL, {-0.04, 0.09, 0.072}, 1.055, {0.06, 0.09, 0.035},
-   {0.0011, 0.0047, 0.0043}, 400, 10},
-  {"foot_r", "shank_r", urJNT_UNIVERSAL, {-0.04, -0.09, 0.072}, 1.055, {0.06, -0.09, 0.035},
-   {0.0011, 0.0047, 0.0043}, 400, 10},
+    {"pelvis",
+     NULL,
+     urJNT_FREE,
+     {-0.03, 0, 0.967},
+     8.601,
+     {-0.03, 0, 0.967},
+     {0.0698, 0.0560, 0.0636},
+     0,
+     0},
+    {"abdomen",
+     "pelvis",
+     urJNT_SPHERICAL,
+     {-0.05, 0, 1.057},
+     12.574,
+     {-0.02, 0, 1.167},
+     {0.1371, 0.0866, 0.1292},
+     300,
+     8},
+    {"thorax",
+     "abdomen",
+     urJNT_SPHERICAL,
+     {-0.05, 0, 1.257},
+     12.289,
+     {-0.03, 0, 1.377},
+     {0.1855, 0.0746, 0.1571},
+     300,
+     8},
+    {"neck",
+     "thorax",
+     urJNT_SPHERICAL,
+     {-0.04, 0, 1.485},
+     0.844,
+     {-0.033, 0, 1.537},
+     {0.0015, 0.0015, 0.0015},
+     160,
+     1.5},
+    {"head",
+     "neck",
+     urJNT_SPHERICAL,
+     {-0.026, 0, 1.588},
+     4.5,
+     {0, 0, 1.65},
+     {0.0214, 0.0232, 0.0154},
+     160,
+     1.5},
+    {"sternum",
+     "thorax",
+     urJNT_PRISMATIC,
+     {0.10, 0, 1.30},
+     0.45,
+     {0.10, 0, 1.30},
+     {1e-4, 1e-4, 1e-4},
+     26e3,
+     520},
+    {"uarm_l",
+     "thorax",
+     urJNT_SPHERICAL,
+     {-0.03, 0.175, 1.395},
+     2.087,
+     {-0.03, 0.185, 1.224},
+     {0.0136, 0.0121, 0.0042},
+     10,
+     2},
+    {"uarm_r",
+     "thorax",
+     urJNT_SPHERICAL,
+     {-0.03, -0.175, 1.395},
+     2.087,
+     {-0.03, -0.185, 1.224},
+     {0.0136, 0.0121, 0.0042},
+     10,
+     2},
+    {"farm_l",
+     "uarm_l",
+     urJNT_REVOLUTE,
+     {-0.03, 0.19, 1.098},
+     1.247,
+     {-0.025, 0.195, 0.978},
+     {0.0069, 0.0064, 0.0013},
+     5,
+     1},
+    {"farm_r",
+     "uarm_r",
+     urJNT_REVOLUTE,
+     {-0.03, -0.19, 1.098},
+     1.247,
+     {-0.025, -0.195, 0.978},
+     {0.0069, 0.0064, 0.0013},
+     5,
+     1},
+    {"hand_l",
+     "farm_l",
+     urJNT_UNIVERSAL,
+     {-0.02, 0.2, 0.835},
+     0.47,
+     {-0.02, 0.2, 0.767},
+     {0.0014, 0.0009, 0.0006},
+     5,
+     0.5},
+    {"hand_r",
+     "farm_r",
+     urJNT_UNIVERSAL,
+     {-0.02, -0.2, 0.835},
+     0.47,
+     {-0.02, -0.2, 0.767},
+     {0.0014, 0.0009, 0.0006},
+     5,
+     0.5},
+    {"thigh_l",
+     "pelvis",
+     urJNT_SPHERICAL,
+     {-0.02, 0.085, 0.91},
+     10.903,
+     {-0.016, 0.087, 0.738},
+     {0.2126, 0.2126, 0.0436},
+     250,
+     10},
+    {"thigh_r",
+     "pelvis",
+     urJNT_SPHERICAL,
+     {-0.02, -0.085, 0.91},
+     10.903,
+     {-0.016, -0.087, 0.738},
+     {0.2126, 0.2126, 0.0436},
+     250,
+     10},
+    {"shank_l",
+     "thigh_l",
+     urJNT_REVOLUTE,
+     {-0.01, 0.09, 0.489},
+     3.334,
+     {-0.024, 0.09, 0.303},
+     {0.0413, 0.0393, 0.0067},
+     200,
+     10},
+    {"shank_r",
+     "thigh_r",
+     urJNT_REVOLUTE,
+     {-0.01, -0.09, 0.489},
+     3.334,
+     {-0.024, -0.09, 0.303},
+     {0.0413, 0.0393, 0.0067},
+     200,
+     10},
+    {"foot_l",
+     "shank_l",
+     urJNT_UNIVERSAL,
+     {-0.04, 0.09, 0.072},
+     1.055,
+     {0.06, 0.09, 0.035},
+     {0.0011, 0.0047, 0.0043},
+     400,
+     10},
+    {"foot_r",
+     "shank_r",
+     urJNT_UNIVERSAL,
+     {-0.04, -0.09, 0.072},
+     1.055,
+     {0.06, -0.09, 0.035},
+     {0.0011, 0.0047, 0.0043},
+     400,
+     10},
 };
 
 static const sceneEll scene_hell[] = {
-  {"head", "head", {0, 0, 1.65}, {0.100, 0.077, 0.100}},
-  {"neck", "neck", {-0.033, 0, 1.537}, {0.057, 0.065, 0.060}},
-  {"thorax", "thorax", {-0.02, 0, 1.31}, {0.12, 0.145, 0.14}},
-  {"shoulder_l", "thorax", {-0.03, 0.188, 1.40}, {0.06, 0.06, 0.055}},
-  {"shoulder_r", "thorax", {-0.03, -0.188, 1.40}, {0.06, 0.06, 0.055}},
-  {"sternum", "sternum", {0.10, 0, 1.30}, {0.03, 0.08, 0.08}},
-  {"abdomen", "abdomen", {-0.01, 0, 1.12}, {0.11, 0.155, 0.10}},
-  {"uarm_l", "uarm_l", {-0.03, 0.19, 1.247}, {0.045, 0.045, 0.16}},
-  {"uarm_r", "uarm_r", {-0.03, -0.19, 1.247}, {0.045, 0.045, 0.16}},
-  {"foot_l", "foot_l", {0.045, 0.09, 0.036}, {0.135, 0.05, 0.036}},
-  {"foot_r", "foot_r", {0.045, -0.09, 0.036}, {0.135, 0.05, 0.036}},
+    {"head", "head", {0, 0, 1.65}, {0.100, 0.077, 0.100}},
+    {"neck", "neck", {-0.033, 0, 1.537}, {0.057, 0.065, 0.060}},
+    {"thorax", "thorax", {-0.02, 0, 1.31}, {0.12, 0.145, 0.14}},
+    {"shoulder_l", "thorax", {-0.03, 0.188, 1.40}, {0.06, 0.06, 0.055}},
+    {"shoulder_r", "thorax", {-0.03, -0.188, 1.40}, {0.06, 0.06, 0.055}},
+    {"sternum", "sternum", {0.10, 0, 1.30}, {0.03, 0.08, 0.08}},
+    {"abdomen", "abdomen", {-0.01, 0, 1.12}, {0.11, 0.155, 0.10}},
+    {"uarm_l", "uarm_l", {-0.03, 0.19, 1.247}, {0.045, 0.045, 0.16}},
+    {"uarm_r", "uarm_r", {-0.03, -0.19, 1.247}, {0.045, 0.045, 0.16}},
+    {"foot_l", "foot_l", {0.045, 0.09, 0.036}, {0.135, 0.05, 0.036}},
+    {"foot_r", "foot_r", {0.045, -0.09, 0.036}, {0.135, 0.05, 0.036}},
 };
 
 // add the human; returns the root body
 static int scene_add_human(urModel* m) {
-  int n = (int)(sizeof(scene_human)/sizeof(scene_human[0]));
+  int n = (int)(sizeof(scene_human) / sizeof(scene_human[0]));
   for (int i = 0; i < n; i++) {
     const sceneSeg* s = scene_human + i;
     int p = s->parent ? ur_name_body(m, s->parent) : -1;
@@ -108,7 +234,7 @@ static int scene_add_human(urModel* m) {
       ur_model_set_restraint(m, b, k, &r);
     }
   }
-  int ne = (int)(sizeof(scene_hell)/sizeof(scene_hell[0]));
+  int ne = (int)(sizeof(scene_hell) / sizeof(scene_hell[0]));
   for (int i = 0; i < ne; i++) {
     const sceneEll* e = scene_hell + i;
     int b = ur_name_body(m, e->body);
@@ -131,10 +257,10 @@ static int scene_add_drone(urModel* m, int airbag) {
   ur_model_add_ellipsoid(m, "frame", d0, NULL, NULL, (double[3]){0.25, 0.25, 0.08});
   for (int i = 0; i < 6; i++) {
     char name[16];
-    double a = i*M_PI/3, c = cos(a), s = sin(a);
+    double a = i * M_PI / 3, c = cos(a), s = sin(a);
     snprintf(name, sizeof(name), "arm%d", i + 1);
-    int b = ur_model_add_body(m, name, d0, urJNT_UNIVERSAL, (double[3]){0.2*c, 0.2*s, 0}, NULL);
-    ur_model_set_inertia(m, b, 0.51, (double[3]){0.2*c, 0.2*s, 0}, Ia);
+    int b = ur_model_add_body(m, name, d0, urJNT_UNIVERSAL, (double[3]){0.2 * c, 0.2 * s, 0}, NULL);
+    ur_model_set_inertia(m, b, 0.51, (double[3]){0.2 * c, 0.2 * s, 0}, Ia);
     ur_model_set_joint(m, b, NULL, (double[3]){-s, c, 0}, (double[3]){0, 0, 1});
     m->body[b].gravity = 0;
     urRestraint r = {0};
@@ -146,7 +272,7 @@ static int scene_add_drone(urModel* m, int airbag) {
     ur_model_set_restraint(m, b, 0, &r);
     ur_model_set_restraint(m, b, 1, &r);
     snprintf(name, sizeof(name), "motor%d", i + 1);
-    ur_model_add_ellipsoid(m, name, b, (double[3]){0.25*c, 0.25*s, 0}, NULL,
+    ur_model_add_ellipsoid(m, name, b, (double[3]){0.25 * c, 0.25 * s, 0}, NULL,
                            (double[3]){0.03, 0.03, 0.03});
   }
   if (airbag) {
@@ -156,7 +282,7 @@ static int scene_add_drone(urModel* m, int airbag) {
     strcpy(bag.name, "bag");
     bag.geom = g;
     bag.gas.v0 = 0.02;
-    bag.gas.p0 = 1.1*101325;
+    bag.gas.p0 = 1.1 * 101325;
     bag.gas.patm = 101325;
     bag.gas.gamma = 1.4;
     bag.kappa = 2;
@@ -194,8 +320,8 @@ static void scene_add_pairs(urModel* m) {
   floor.load.y[1] = 2000;
   floor.damping = 1500;
   floor.mu = 0.6;
-  const char* upper[] = {"neck", "thorax", "shoulder_l", "shoulder_r", "sternum", "abdomen",
-                         "uarm_l", "uarm_r"};
+  const char* upper[] = {"neck",    "thorax",  "shoulder_l", "shoulder_r",
+                         "sternum", "abdomen", "uarm_l",     "uarm_r"};
   int fr = ur_name_geom(m, "frame");
   char name[urNAMELEN];
   ur_model_add_pair(m, "frame_head", ur_name_geom(m, "head"), fr, &flat);
@@ -209,8 +335,7 @@ static void scene_add_pairs(urModel* m) {
     snprintf(mot, sizeof(mot), "motor%d", a + 1);
     for (int t = 0; t < 3; t++) {
       snprintf(name, sizeof(name), "%s_%s", mot, tgt[t]);
-      ur_model_add_pair(m, name, ur_name_geom(m, tgt[t]), ur_name_geom(m, mot),
-                        t ? &soft : &arm);
+      ur_model_add_pair(m, name, ur_name_geom(m, tgt[t]), ur_name_geom(m, mot), t ? &soft : &arm);
     }
   }
   ur_model_add_pair(m, "foot_l_ground", ur_name_geom(m, "foot_l"), -1, &floor);

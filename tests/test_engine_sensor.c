@@ -38,20 +38,20 @@ static void test_pendulum_loads(void** state) {
   ur_forward(m, d);
 
   // independent: angular acceleration, CoM acceleration, force = m a - m g (world)
-  double ip = ic + mass*l*l, al = -mass*g*l*sin(th)/ip;
-  double r[3] = {-l*sin(th), 0, -l*cos(th)};            // CoM relative to the pivot, world
-  double t[3] = {-cos(th), 0, sin(th)};                   // d r / d th
+  double ip = ic + mass * l * l, al = -mass * g * l * sin(th) / ip;
+  double r[3] = {-l * sin(th), 0, -l * cos(th)}; // CoM relative to the pivot, world
+  double t[3] = {-cos(th), 0, sin(th)};          // d r / d th
   double a[3], f[3];
   for (int k = 0; k < 3; k++) {
-    a[k] = al*l*t[k] - w*w*r[k];
+    a[k] = al * l * t[k] - w * w * r[k];
   }
   for (int k = 0; k < 3; k++) {
-    f[k] = mass*a[k] - mass*(k == 2 ? -g : 0);
+    f[k] = mass * a[k] - mass * (k == 2 ? -g : 0);
   }
 
   // the load cell reports the force in the child frame: rotate the world force into it
   double c = cos(th), s = sin(th);
-  double fl[3] = {c*f[0] - s*f[2], f[1], s*f[0] + c*f[2]};
+  double fl[3] = {c * f[0] - s * f[2], f[1], s * f[0] + c * f[2]};
   const double* cell = d->sensordata;
   const double* acc = d->sensordata + 6;
   double ef = 0, ea = 0;
@@ -61,11 +61,12 @@ static void test_pendulum_loads(void** state) {
   }
 
   // moment about the pivot axis must be zero (free hinge); qacc the exact one
-  print_message("pendulum loads: |F - F_exact| %.1e N (|F| %.2f), |a - a_exact| %.1e m/s^2, "
-                "My %.1e, qacc err %.1e\n", ef, sqrt(f[0]*f[0] + f[2]*f[2]), ea, cell[4],
-                fabs(d->qacc[0] - al));
-  assert_true(ef < 1e-12*mass*g*10);
-  assert_true(ea < 1e-12*g*10);
+  print_message(
+      "pendulum loads: |F - F_exact| %.1e N (|F| %.2f), |a - a_exact| %.1e m/s^2, "
+      "My %.1e, qacc err %.1e\n",
+      ef, sqrt(f[0] * f[0] + f[2] * f[2]), ea, cell[4], fabs(d->qacc[0] - al));
+  assert_true(ef < 1e-12 * mass * g * 10);
+  assert_true(ea < 1e-12 * g * 10);
   assert_true(fabs(cell[4]) < 1e-12);
   assert_true(fabs(d->qacc[0] - al) < 1e-12);
 
@@ -73,8 +74,8 @@ static void test_pendulum_loads(void** state) {
   assert_true(d->sensordata[9] == th);
   assert_true(d->sensordata[10] == w);
   assert_true(fabs(d->sensordata[11] - r[0]) < 1e-15 && fabs(d->sensordata[13] - r[2]) < 1e-15);
-  assert_true(fabs(d->sensordata[14] - w*l*t[0]) < 1e-14);
-  assert_true(fabs(d->sensordata[16] - w*l*t[2]) < 1e-14);
+  assert_true(fabs(d->sensordata[14] - w * l * t[0]) < 1e-14);
+  assert_true(fabs(d->sensordata[16] - w * l * t[2]) < 1e-14);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -84,10 +85,10 @@ static void test_pendulum_loads(void** state) {
 static void test_static_cell(void** state) {
   urModel* m = ur_model_new();
   double I[6] = {0.02, 0.02, 0.02, 0, 0, 0}, c[3] = {0.026, 0, 0.062}, mass = 4.5;
-  double q[4] = {cos(0.15), 0, sin(0.15), 0};             // 0.3 rad about y
+  double q[4] = {cos(0.15), 0, sin(0.15), 0}; // 0.3 rad about y
   int b = ur_model_add_body(m, "head", -1, urJNT_FIXED, (double[3]){0, 0, 1.588}, q);
   ur_model_set_inertia(m, b, mass, c, I);
-  double qs[4] = {cos(0.1), 0, 0, sin(0.1)};              // sensor frame: 0.2 rad about z
+  double qs[4] = {cos(0.1), 0, 0, sin(0.1)}; // sensor frame: 0.2 rad about z
   ur_model_add_sensor(m, "cell", urSENS_JOINTLOAD, b, 0, NULL, qs);
   assert_int_equal(ur_model_compile(m), 0);
   urData* d = ur_data_new(m);
@@ -95,27 +96,28 @@ static void test_static_cell(void** state) {
 
   // independent: world force (0, 0, m g), moment c_world x F, then into the sensor frame
   double g = 9.81, a = 0.3, z = 0.2;
-  double cw[3] = {cos(a)*c[0] + sin(a)*c[2], c[1], -sin(a)*c[0] + cos(a)*c[2]};
-  double F[3] = {0, 0, mass*g};
-  double M[3] = {cw[1]*F[2] - cw[2]*F[1], cw[2]*F[0] - cw[0]*F[2], cw[0]*F[1] - cw[1]*F[0]};
+  double cw[3] = {cos(a) * c[0] + sin(a) * c[2], c[1], -sin(a) * c[0] + cos(a) * c[2]};
+  double F[3] = {0, 0, mass * g};
+  double M[3] = {cw[1] * F[2] - cw[2] * F[1], cw[2] * F[0] - cw[0] * F[2],
+                 cw[0] * F[1] - cw[1] * F[0]};
   // world -> body: R_y(a)^T, body -> sensor: R_z(z)^T
   double Fb[3], Mb[3], Fs[3], Ms[3];
-  Fb[0] = cos(a)*F[0] - sin(a)*F[2];
+  Fb[0] = cos(a) * F[0] - sin(a) * F[2];
   Fb[1] = F[1];
-  Fb[2] = sin(a)*F[0] + cos(a)*F[2];
-  Mb[0] = cos(a)*M[0] - sin(a)*M[2];
+  Fb[2] = sin(a) * F[0] + cos(a) * F[2];
+  Mb[0] = cos(a) * M[0] - sin(a) * M[2];
   Mb[1] = M[1];
-  Mb[2] = sin(a)*M[0] + cos(a)*M[2];
-  Fs[0] = cos(z)*Fb[0] + sin(z)*Fb[1];
-  Fs[1] = -sin(z)*Fb[0] + cos(z)*Fb[1];
+  Mb[2] = sin(a) * M[0] + cos(a) * M[2];
+  Fs[0] = cos(z) * Fb[0] + sin(z) * Fb[1];
+  Fs[1] = -sin(z) * Fb[0] + cos(z) * Fb[1];
   Fs[2] = Fb[2];
-  Ms[0] = cos(z)*Mb[0] + sin(z)*Mb[1];
-  Ms[1] = -sin(z)*Mb[0] + cos(z)*Mb[1];
+  Ms[0] = cos(z) * Mb[0] + sin(z) * Mb[1];
+  Ms[1] = -sin(z) * Mb[0] + cos(z) * Mb[1];
   Ms[2] = Mb[2];
   double e = 0;
   for (int k = 0; k < 3; k++) {
     e = fmax(e, fabs(d->sensordata[k] - Fs[k]));
-    e = fmax(e, fabs(d->sensordata[3+k] - Ms[k]));
+    e = fmax(e, fabs(d->sensordata[3 + k] - Ms[k]));
   }
   print_message("static cell: F (%.3f %.3f %.3f) M (%.4f %.4f %.4f), max err %.1e\n",
                 d->sensordata[0], d->sensordata[1], d->sensordata[2], d->sensordata[3],
@@ -138,12 +140,12 @@ static void test_peaks(void** state) {
     ur_step(m, d);
   }
   // angle range [-th0, th0]; peak angular rate from energy: Ip w^2 / 2 = m g l (1 - cos th0)
-  double wmax = sqrt(2*mass*9.81*l*(1 - cos(th0))/(ic + mass*l*l));
-  print_message("peaks: angle [%.5f, %.5f], rate max %.5f (exact %.5f) at t %.4f\n",
-                d->peakmin[9], d->peakmax[9], d->peakmax[10], wmax, d->tpeak[10]);
+  double wmax = sqrt(2 * mass * 9.81 * l * (1 - cos(th0)) / (ic + mass * l * l));
+  print_message("peaks: angle [%.5f, %.5f], rate max %.5f (exact %.5f) at t %.4f\n", d->peakmin[9],
+                d->peakmax[9], d->peakmax[10], wmax, d->tpeak[10]);
   assert_true(fabs(d->peakmax[9] - th0) < 1e-6);
   assert_true(fabs(d->peakmin[9] + th0) < 1e-3);
-  assert_true(fabs(d->peakmax[10] - wmax)/wmax < 1e-3);
+  assert_true(fabs(d->peakmax[10] - wmax) / wmax < 1e-3);
   ur_data_free(d);
   ur_model_free(m);
 }
@@ -151,9 +153,9 @@ static void test_peaks(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_pendulum_loads),
-    cmocka_unit_test(test_static_cell),
-    cmocka_unit_test(test_peaks),
+      cmocka_unit_test(test_pendulum_loads),
+      cmocka_unit_test(test_static_cell),
+      cmocka_unit_test(test_peaks),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

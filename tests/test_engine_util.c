@@ -11,24 +11,24 @@
 #include "../src/core/engine_internal.h"
 
 static double urand(unsigned* s) {
-  *s = *s*1103515245u + 12345u;
-  return ((*s >> 8) & 0xffffff)/(double)0x1000000*2 - 1;
+  *s = *s * 1103515245u + 12345u;
+  return ((*s >> 8) & 0xffffff) / (double)0x1000000 * 2 - 1;
 }
 
 
 // X = [E 0; -E px E] as a plain 6 x 6 matrix
 static void xmatrix(double X[36], const double E[9], const double p[3]) {
   double P[9] = {0, -p[2], p[1], p[2], 0, -p[0], -p[1], p[0], 0};
-  memset(X, 0, 36*sizeof(double));
+  memset(X, 0, 36 * sizeof(double));
   for (int i = 0; i < 3; i++) {
     for (int j = 0; j < 3; j++) {
-      X[6*i + j] = E[3*i + j];
-      X[6*(3+i) + 3 + j] = E[3*i + j];
+      X[6 * i + j] = E[3 * i + j];
+      X[6 * (3 + i) + 3 + j] = E[3 * i + j];
       double s = 0;
       for (int k = 0; k < 3; k++) {
-        s += E[3*i + k]*P[3*k + j];
+        s += E[3 * i + k] * P[3 * k + j];
       }
-      X[6*(3+i) + j] = -s;
+      X[6 * (3 + i) + j] = -s;
     }
   }
 }
@@ -41,18 +41,18 @@ static void reference(double r[36], const double X[36], const double I[36]) {
     for (int j = 0; j < 6; j++) {
       double s = 0;
       for (int k = 0; k < 6; k++) {
-        s += I[6*i + k]*X[6*k + j];
+        s += I[6 * i + k] * X[6 * k + j];
       }
-      T[6*i + j] = s;
+      T[6 * i + j] = s;
     }
   }
   for (int i = 0; i < 6; i++) {
     for (int j = 0; j < 6; j++) {
       double s = 0;
       for (int k = 0; k < 6; k++) {
-        s += X[6*k + i]*T[6*k + j];
+        s += X[6 * k + i] * T[6 * k + j];
       }
-      r[6*i + j] += s;
+      r[6 * i + j] += s;
     }
   }
 }
@@ -70,15 +70,15 @@ static void test_xinertia_t_add(void** state) {
     uru_normalizequat(q);
     uru_quat2mat(E, q);
     for (int k = 0; k < 3; k++) {
-      p[k] = 0.5*urand(&seed);
+      p[k] = 0.5 * urand(&seed);
     }
     for (int i = 0; i < 6; i++) {
       for (int j = i; j < 6; j++) {
-        I[6*i + j] = I[6*j + i] = urand(&seed) + (i == j)*3;
+        I[6 * i + j] = I[6 * j + i] = urand(&seed) + (i == j) * 3;
       }
     }
     for (int k = 0; k < 36; k++) {
-      r[k] = ref[k] = (k/6 <= k%6) ? 0.25*(k%7) : 0.25*((k%6*6 + k/6)%7);
+      r[k] = ref[k] = (k / 6 <= k % 6) ? 0.25 * (k % 7) : 0.25 * ((k % 6 * 6 + k / 6) % 7);
     }
     double X[36];
     xmatrix(X, E, p);
@@ -86,7 +86,7 @@ static void test_xinertia_t_add(void** state) {
     uru_xinertia_t_add(r, E, p, I);
     for (int k = 0; k < 36; k++) {
       worst = fmax(worst, fabs(r[k] - ref[k]));
-      assert_true(r[k] == r[6*(k%6) + k/6]);      /* exactly symmetric */
+      assert_true(r[k] == r[6 * (k % 6) + k / 6]); /* exactly symmetric */
     }
   }
   print_message("xinertia_t_add: largest deviation from X^T I X %.2e\n", worst);
@@ -96,7 +96,7 @@ static void test_xinertia_t_add(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_xinertia_t_add),
+      cmocka_unit_test(test_xinertia_t_add),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

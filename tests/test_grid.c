@@ -13,8 +13,8 @@
 /* a synthetic impact: p = 1 inside a disc of radius 0.3 m, a smooth field outside */
 typedef struct {
   double r;
-  int fail_row;                    /* cells with this dpar (x100) fail */
-  _Atomic int* stop_after;         /* set *stop after this many cells */
+  int fail_row;            /* cells with this dpar (x100) fail */
+  _Atomic int* stop_after; /* set *stop after this many cells */
   _Atomic int stop;
   long calls;
 } synth;
@@ -157,8 +157,8 @@ static void failures(void** state) {
 typedef struct {
   int parity;
   long ntodo, next;
-  urCell* kept;                    /* by position: the cells of this process (kept for the other) */
-  const urCell* other;             /* the other process's kept cells (NULL: placeholders) */
+  urCell* kept;        /* by position: the cells of this process (kept for the other) */
+  const urCell* other; /* the other process's kept cells (NULL: placeholders) */
   int fail_begin, fail_end;
   long handed;
 } half;
@@ -190,7 +190,7 @@ static int h_end(void* ctx, urGrid* g, const long* todo, long ntodo) {
       c->dpar = dpar;
       c->dperp = dperp;
     } else {
-      c->status = urCELL_DONE;   /* a placeholder, as a shard leaves it */
+      c->status = urCELL_DONE; /* a placeholder, as a shard leaves it */
     }
   }
   return h->fail_end ? -1 : 0;
@@ -218,7 +218,7 @@ static void distributed(void** state) {
   assert_int_equal(b.calls + c.calls, a.calls);
   assert_memory_equal(ga->cell, gc->cell, sizeof(urCell) * n);
   assert_true(ga->q == gc->q);
-  assert_true(gb->complete && gb->q < ga->q);      /* placeholders: no contact, no Q */
+  assert_true(gb->complete && gb->q < ga->q); /* placeholders: no contact, no Q */
 
   hb.fail_begin = 1;
   assert_int_equal(ur_grid_run(gb, &sb), -2);
@@ -234,9 +234,9 @@ static void distributed(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(lattice),  cmocka_unit_test(q_sum),       cmocka_unit_test(mirror),
-    cmocka_unit_test(threads),  cmocka_unit_test(interrupted), cmocka_unit_test(failures),
-    cmocka_unit_test(distributed),
+      cmocka_unit_test(lattice),     cmocka_unit_test(q_sum),       cmocka_unit_test(mirror),
+      cmocka_unit_test(threads),     cmocka_unit_test(interrupted), cmocka_unit_test(failures),
+      cmocka_unit_test(distributed),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -63,7 +63,9 @@ static const char* put_text(fixture* f, const char* name, const char* text) {
   return put_file(f, name, text, strlen(text));
 }
 
-static urCell* at(urGrid* g, int i, int j) { return &g->cell[(size_t)i * g->ncol + j]; }
+static urCell* at(urGrid* g, int i, int j) {
+  return &g->cell[(size_t)i * g->ncol + j];
+}
 
 /* the cell at an offset, found by its stored offsets (not by index arithmetic) */
 static urCell* find(urGrid* g, double dpar, double dperp) {
@@ -81,19 +83,19 @@ typedef struct {
   const char* file;
   const char* casename;
   double wind;
-  int nrow, ncol;                  /* full plane */
-  double q;                        /* README Q_full, m^2 */
+  int nrow, ncol; /* full plane */
+  double q;       /* README Q_full, m^2 */
 } table;
 
 static const table tables[] = {
-  {"table04_caseA_wind0.csv", "A", 0, 29, 31, 0.0581},
-  {"table05_caseB_wind0.csv", "B", 0, 29, 31, 0.2861},
-  {"table06_caseC_wind0.csv", "C", 0, 29, 31, 0.8469},
-  {"table08_caseA_wind10.csv", "A", 10, 48, 33, 0.6766},
-  {"table09_caseB_wind10.csv", "B", 10, 48, 33, 0.8582},
-  {"table10_caseC_wind10.csv", "C", 10, 29, 31, 0.8588},
-  {"table15_caseA1_wind10.csv", "A1", 10, 48, 33, 0.6378},
-  {"table16_caseA2_wind10.csv", "A2", 10, 48, 33, 0.4515},
+    {"table04_caseA_wind0.csv", "A", 0, 29, 31, 0.0581},
+    {"table05_caseB_wind0.csv", "B", 0, 29, 31, 0.2861},
+    {"table06_caseC_wind0.csv", "C", 0, 29, 31, 0.8469},
+    {"table08_caseA_wind10.csv", "A", 10, 48, 33, 0.6766},
+    {"table09_caseB_wind10.csv", "B", 10, 48, 33, 0.8582},
+    {"table10_caseC_wind10.csv", "C", 10, 29, 31, 0.8588},
+    {"table15_caseA1_wind10.csv", "A1", 10, 48, 33, 0.6378},
+    {"table16_caseA2_wind10.csv", "A2", 10, 48, 33, 0.4515},
 };
 
 static void paper_tables(void** state) {
@@ -156,7 +158,7 @@ static void paper_cells(void** state) {
   assert_int_equal(z->status, urCELL_NOCONTACT);
   assert_int_equal(z->contact, 0);
   assert_true(z->p == 0);
-  assert_true(isnan(a->val[urVAL_HIC15]));          /* the paper gives no criteria */
+  assert_true(isnan(a->val[urVAL_HIC15])); /* the paper gives no criteria */
   assert_string_equal(f->c.last.casename, "C");
   assert_true(fabs(f->c.last.speed - 40.6) < 1e-12);
   assert_true(fabs(f->c.last.angle - 90) < 1e-12);
@@ -165,12 +167,12 @@ static void paper_cells(void** state) {
 /* ---- a small table of our own, independent of the paper's files ---- */
 
 static const char* small =
-  "# case B; horizontal wind 2 m/s\n"
-  "along,0.00,0.05,0.10\n"
-  "0.10,0,2,0\n"
-  "0.05,50,100,10\n"
-  "0.00,100,95,0\n"
-  "-0.05,0,4,0\n";
+    "# case B; horizontal wind 2 m/s\n"
+    "along,0.00,0.05,0.10\n"
+    "0.10,0,2,0\n"
+    "0.05,50,100,10\n"
+    "0.00,100,95,0\n"
+    "-0.05,0,4,0\n";
 
 static void small_table(void** state) {
   fixture* f = *state;
@@ -190,8 +192,10 @@ static void small_table(void** state) {
 /* no comments: case ? and unknown wind */
 static void no_comments(void** state) {
   fixture* f = *state;
-  assert_int_equal(ura_grid_load(&f->c, put_text(f, "n.csv", "along,0.00,0.05\n0.05,1,2\n"
-                                                  "0.00,3,4\n")), 0);
+  assert_int_equal(ura_grid_load(&f->c, put_text(f, "n.csv",
+                                                 "along,0.00,0.05\n0.05,1,2\n"
+                                                 "0.00,3,4\n")),
+                   0);
   assert_string_equal(f->c.last.casename, "?");
   assert_true(isnan(f->c.last.wind));
   assert_true(fabs(f->c.last.g->q - 0.0025 * (1 + 3 + 2 * (2 + 4)) / 100) < 1e-12);
@@ -202,7 +206,7 @@ static void no_comments(void** state) {
 typedef struct {
   const char* name;
   const char* text;
-  size_t n;                        /* 0: strlen */
+  size_t n; /* 0: strlen */
   int line;
   const char* says;
 } badfile;
@@ -210,31 +214,31 @@ typedef struct {
 #define NUL_TEXT "along,0.00,0.05\n0.05,1,\0002\n"
 
 static const badfile bads[] = {
-  {"badnum.csv", "# c\nalong,0.00,0.05\n0.05,1,abc\n0.00,1,2\n", 0, 3, "'abc' is not a number"},
-  {"hexnum.csv", "along,0.00,0.05\n0.05,1,0x10\n", 0, 2, "is not a number"},
-  {"nan.csv", "along,0.00,0.05\n0.05,1,nan\n", 0, 2, "is not a number"},
-  {"ragged.csv", "along,0.00,0.05\n0.05,1,2\n0.00,1\n", 0, 3, "row has 1 values"},
-  {"long.csv", "along,0.00,0.05\n0.05,1,2,3\n", 0, 2, "row has 3 values"},
-  {"nohead.csv", "# a comment\n0.05,1,2\n0.00,1,2\n", 0, 2, "missing header"},
-  {"empty.csv", "", 0, 1, "empty file"},
-  {"comments.csv", "# only\n# comments\n", 0, 2, "no data"},
-  {"norows.csv", "along,0.00,0.05\n", 0, 1, "no data rows"},
-  {"range.csv", "along,0.00,0.05\n0.05,1,101\n", 0, 2, "outside [0, 100]"},
-  {"negative.csv", "along,0.00,0.05\n0.05,-1,1\n", 0, 2, "outside [0, 100]"},
-  {"order.csv", "along,0.00,0.05\n0.05,1,2\n0.10,1,2\n", 0, 3, "breaks the descending"},
-  {"gap.csv", "along,0.00,0.05\n0.10,1,2\n0.00,1,2\n", 0, 3, "breaks the descending"},
-  {"header0.csv", "along,0.05,0.10\n0.05,1,2\n", 0, 1, "expected 0"},
-  {"header.csv", "along,0.00,0.05,0.12\n0.05,1,2,3\n", 0, 1, "off the 0.05 m step"},
-  {"headnum.csv", "along,0.00,x\n0.05,1,2\n", 0, 1, "cross offset 'x'"},
-  {"nul.csv", NUL_TEXT, sizeof NUL_TEXT - 1, 2, "NUL byte"},
-  {"x_req.csv", "dpar,dperp,contact\n0,0,1\n", 0, 1, "dpar, dperp and p are required"},
-  {"x_p.csv", "dpar,dperp,p\n0,0,1.5\n0,0.05,0\n", 0, 2, "outside [0, 1]"},
-  {"x_dup.csv", "dpar,dperp,p\n0,0,0.5\n0,0.05,0\n0,0,0.1\n", 0, 4,
-   "given twice (first at line 2)"},
-  {"x_off.csv", "dpar,dperp,p\n0,0,0.5\n0,0.05,0\n0,-0.05,0\n0,0.07,0\n", 0, 5,
-   "off the 0.05 m lattice"},
-  {"x_contact.csv", "dpar,dperp,contact,p\n0,0,0,0.5\n0,0.05,0,0\n", 0, 2, "without contact"},
-  {"x_ragged.csv", "dpar,dperp,p\n0,0,0.5\n0,0.05\n", 0, 3, "row has 2 fields"},
+    {"badnum.csv", "# c\nalong,0.00,0.05\n0.05,1,abc\n0.00,1,2\n", 0, 3, "'abc' is not a number"},
+    {"hexnum.csv", "along,0.00,0.05\n0.05,1,0x10\n", 0, 2, "is not a number"},
+    {"nan.csv", "along,0.00,0.05\n0.05,1,nan\n", 0, 2, "is not a number"},
+    {"ragged.csv", "along,0.00,0.05\n0.05,1,2\n0.00,1\n", 0, 3, "row has 1 values"},
+    {"long.csv", "along,0.00,0.05\n0.05,1,2,3\n", 0, 2, "row has 3 values"},
+    {"nohead.csv", "# a comment\n0.05,1,2\n0.00,1,2\n", 0, 2, "missing header"},
+    {"empty.csv", "", 0, 1, "empty file"},
+    {"comments.csv", "# only\n# comments\n", 0, 2, "no data"},
+    {"norows.csv", "along,0.00,0.05\n", 0, 1, "no data rows"},
+    {"range.csv", "along,0.00,0.05\n0.05,1,101\n", 0, 2, "outside [0, 100]"},
+    {"negative.csv", "along,0.00,0.05\n0.05,-1,1\n", 0, 2, "outside [0, 100]"},
+    {"order.csv", "along,0.00,0.05\n0.05,1,2\n0.10,1,2\n", 0, 3, "breaks the descending"},
+    {"gap.csv", "along,0.00,0.05\n0.10,1,2\n0.00,1,2\n", 0, 3, "breaks the descending"},
+    {"header0.csv", "along,0.05,0.10\n0.05,1,2\n", 0, 1, "expected 0"},
+    {"header.csv", "along,0.00,0.05,0.12\n0.05,1,2,3\n", 0, 1, "off the 0.05 m step"},
+    {"headnum.csv", "along,0.00,x\n0.05,1,2\n", 0, 1, "cross offset 'x'"},
+    {"nul.csv", NUL_TEXT, sizeof NUL_TEXT - 1, 2, "NUL byte"},
+    {"x_req.csv", "dpar,dperp,contact\n0,0,1\n", 0, 1, "dpar, dperp and p are required"},
+    {"x_p.csv", "dpar,dperp,p\n0,0,1.5\n0,0.05,0\n", 0, 2, "outside [0, 1]"},
+    {"x_dup.csv", "dpar,dperp,p\n0,0,0.5\n0,0.05,0\n0,0,0.1\n", 0, 4,
+     "given twice (first at line 2)"},
+    {"x_off.csv", "dpar,dperp,p\n0,0,0.5\n0,0.05,0\n0,-0.05,0\n0,0.07,0\n", 0, 5,
+     "off the 0.05 m lattice"},
+    {"x_contact.csv", "dpar,dperp,contact,p\n0,0,0,0.5\n0,0.05,0,0\n", 0, 2, "without contact"},
+    {"x_ragged.csv", "dpar,dperp,p\n0,0,0.5\n0,0.05\n", 0, 3, "row has 2 fields"},
 };
 
 static void malformed(void** state) {
@@ -255,7 +259,7 @@ static void malformed(void** state) {
     if (strncmp(f->c.err, want, strlen(want)) || !strstr(f->c.err, b->says)) {
       fail_msg("%s: message '%s', expected '%s... %s'", b->name, f->c.err, want, b->says);
     }
-    assert_int_equal(f->c.err_located, 0);   /* a script's FILE:LINE comes first */
+    assert_int_equal(f->c.err_located, 0); /* a script's FILE:LINE comes first */
     assert_null(strchr(f->c.err, '\n'));
     /* the last grid is the one loaded before */
     assert_ptr_equal(f->c.last.g, keep);
@@ -275,14 +279,14 @@ static void malformed(void** state) {
 static void export_format(void** state) {
   fixture* f = *state;
   const char* text =
-    "# grid of case C, wind 4 m/s, face 30 deg (computed); status: complete\n"
-    "dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p\n"
-    "0.050,-0.050,0,0,0,0,0,0\n"
-    "0.050,0.000,1,1200.5,0.8,0.1,0.2,0.75\n"
-    "0.050,0.050,1,10,0.1,0,0,0\n"
-    "0.000,-0.050,1,nan,nan,nan,nan,0.25\n"
-    "0.000,0.050,1,5,0.1,0,0,0.125\n"
-    "-0.050,0.000,1,5,0.1,0,0,1\n";
+      "# grid of case C, wind 4 m/s, face 30 deg (computed); status: complete\n"
+      "dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p\n"
+      "0.050,-0.050,0,0,0,0,0,0\n"
+      "0.050,0.000,1,1200.5,0.8,0.1,0.2,0.75\n"
+      "0.050,0.050,1,10,0.1,0,0,0\n"
+      "0.000,-0.050,1,nan,nan,nan,nan,0.25\n"
+      "0.000,0.050,1,5,0.1,0,0,0.125\n"
+      "-0.050,0.000,1,5,0.1,0,0,1\n";
   assert_int_equal(ura_grid_load(&f->c, put_text(f, "export.csv", text)), 0);
   urGrid* g = f->c.last.g;
   assert_int_equal(g->nrow, 3);
@@ -339,13 +343,13 @@ static void export_round_trip(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test_setup_teardown(paper_tables, setup, teardown),
-    cmocka_unit_test_setup_teardown(paper_cells, setup, teardown),
-    cmocka_unit_test_setup_teardown(small_table, setup, teardown),
-    cmocka_unit_test_setup_teardown(no_comments, setup, teardown),
-    cmocka_unit_test_setup_teardown(malformed, setup, teardown),
-    cmocka_unit_test_setup_teardown(export_format, setup, teardown),
-    cmocka_unit_test_setup_teardown(export_round_trip, setup, teardown),
+      cmocka_unit_test_setup_teardown(paper_tables, setup, teardown),
+      cmocka_unit_test_setup_teardown(paper_cells, setup, teardown),
+      cmocka_unit_test_setup_teardown(small_table, setup, teardown),
+      cmocka_unit_test_setup_teardown(no_comments, setup, teardown),
+      cmocka_unit_test_setup_teardown(malformed, setup, teardown),
+      cmocka_unit_test_setup_teardown(export_format, setup, teardown),
+      cmocka_unit_test_setup_teardown(export_round_trip, setup, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -2,7 +2,7 @@
  * escape sequences), ANSI colours by band on a terminal (a pseudo-terminal here) unless
  * NO_COLOR is set, the legend with the thresholds and the line with case, wind, face and Q;
  * and the colour roles: band thresholds, SGR sequences */
-#define _XOPEN_SOURCE 700         /* posix_openpt, grantpt, unlockpt, ptsname */
+#define _XOPEN_SOURCE 700 /* posix_openpt, grantpt, unlockpt, ptsname */
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -27,12 +27,12 @@ typedef struct {
 
 /* a grid in the paper's format, mirror-symmetric: Q = 0.0025 x 572 / 100 m^2 = 0.0143 */
 static const char* small =
-  "# case B; horizontal wind 2 m/s; face direction phi = 0 deg\n"
-  "along,0.00,0.05,0.10\n"
-  "0.10,0,2,0\n"
-  "0.05,50,100,10\n"
-  "0.00,100,95,0\n"
-  "-0.05,0,4,0\n";
+    "# case B; horizontal wind 2 m/s; face direction phi = 0 deg\n"
+    "along,0.00,0.05,0.10\n"
+    "0.10,0,2,0\n"
+    "0.05,50,100,10\n"
+    "0.00,100,95,0\n"
+    "-0.05,0,4,0\n";
 
 static int setup(void** state) {
   fixture* f = calloc(1, sizeof *f);
@@ -88,16 +88,20 @@ static void plain_layout(void** state) {
   assert_null(strchr(out, '\033'));
   /* title lines (conditions, orientation, the half plane), the header, 4 rows, legend, Q */
   assert_int_equal(count_lines(out), 3 + 1 + 4 + 2);
-  assert_non_null(strstr(out, "rows: dpar m (+ ahead); columns: dperp m (+ left of course); the "
-                              "paper's layout\n"));
+  assert_non_null(strstr(out,
+                         "rows: dpar m (+ ahead); columns: dperp m (+ left of course); the "
+                         "paper's layout\n"));
   assert_non_null(strstr(out, " dpar   0.00  0.05  0.10\n"));
-  assert_non_null(strstr(out, "\n  0.10   0.0   2.0   0.0\n  0.05  50.0 100.0  10.0\n"
-                              "  0.00 100.0  95.0   0.0\n -0.05   0.0   4.0   0.0\n"));
+  assert_non_null(strstr(out,
+                         "\n  0.10   0.0   2.0   0.0\n  0.05  50.0 100.0  10.0\n"
+                         "  0.00 100.0  95.0   0.0\n -0.05   0.0   4.0   0.0\n"));
   assert_non_null(strstr(out, "dperp >= 0 shown (mirror-symmetric)"));
-  assert_non_null(strstr(out, "legend: none 0 / no contact; low 0-5 %; medium 5-30 %; "
-                              "high 30-90 %; severe >=90 %\n"));
-  assert_non_null(strstr(out, "case B, wind 2 m/s, face 0 deg: Q = 0.0143 m^2 over the full "
-                              "plane (4 x 5 cells of 0.05 m)"));
+  assert_non_null(strstr(out,
+                         "legend: none 0 / no contact; low 0-5 %; medium 5-30 %; "
+                         "high 30-90 %; severe >=90 %\n"));
+  assert_non_null(strstr(out,
+                         "case B, wind 2 m/s, face 0 deg: Q = 0.0143 m^2 over the full "
+                         "plane (4 x 5 cells of 0.05 m)"));
   assert_null(strstr(out, "partial"));
 }
 
@@ -110,17 +114,18 @@ static void paper_table6(void** state) {
   assert_null(strchr(out, '\033'));
   assert_int_equal(count_lines(out), 3 + 1 + 29 + 2);
   assert_non_null(strstr(out, "  0.65   0.0   0.0   0.0   0.0   0.0  12.7 100.0 100.0   0.0"));
-  assert_non_null(strstr(out, "case C, wind 0 m/s, face 0 deg, speed 40.6 m/s, angle 90 deg: "
-                              "Q = 0.8469 m^2"));
+  assert_non_null(strstr(out,
+                         "case C, wind 0 m/s, face 0 deg, speed 40.6 m/s, angle 90 deg: "
+                         "Q = 0.8469 m^2"));
 }
 
 /* an asymmetric grid prints the full plane; missing cells make it partial */
 static void full_plane_partial(void** state) {
   fixture* f = *state;
   const char* text =
-    "dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p\n"
-    "0.05,-0.05,1,1,1,1,1,0.5\n0.05,0,1,1,1,1,1,0.9\n0.05,0.05,0,0,0,0,0,0\n"
-    "0,-0.05,1,1,1,1,1,0.01\n0,0.05,1,1,1,1,1,0.3\n";
+      "dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p\n"
+      "0.05,-0.05,1,1,1,1,1,0.5\n0.05,0,1,1,1,1,1,0.9\n0.05,0.05,0,0,0,0,0,0\n"
+      "0,-0.05,1,1,1,1,1,0.01\n0,0.05,1,1,1,1,1,0.3\n";
   FILE* o = fopen(f->path, "w");
   fputs(text, o);
   fclose(o);
@@ -130,8 +135,9 @@ static void full_plane_partial(void** state) {
   assert_non_null(strstr(out, "  0.05  50.0  90.0   0.0\n"));
   assert_non_null(strstr(out, "  0.00   1.0     ?  30.0\n"));
   assert_null(strstr(out, "mirror-symmetric"));
-  assert_non_null(strstr(out, "Q >= 0.0043 m^2, partial grid (0 failed, 1 pending cells not "
-                              "counted)"));
+  assert_non_null(strstr(out,
+                         "Q >= 0.0043 m^2, partial grid (0 failed, 1 pending cells not "
+                         "counted)"));
   assert_non_null(strstr(out, "; pending ?"));
   assert_non_null(strstr(out, "case ?, wind ? m/s, face ? deg"));
 }
@@ -156,9 +162,12 @@ static const char* show_on_pty(fixture* f, char* got, size_t n) {
   fcntl(m, F_SETFL, O_NONBLOCK);
   for (int tries = 0; tries < 200 && k < n - 1; tries++) {
     ssize_t r = read(m, got + k, n - 1 - k);
-    if (r > 0) k += (size_t)r;
-    else if (r < 0 && errno == EAGAIN && k > 0 && tries > 20) break;
-    else usleep(2000);
+    if (r > 0)
+      k += (size_t)r;
+    else if (r < 0 && errno == EAGAIN && k > 0 && tries > 20)
+      break;
+    else
+      usleep(2000);
   }
   got[k] = 0;
   fclose(out);
@@ -198,10 +207,14 @@ static void colour_on_terminal(void** state) {
 
 /* band thresholds: 0 none, (0, 5) low, [5, 30) medium, [30, 90) high, [90, 100] severe */
 static void bands(void** state) {
-  struct { double p; uraRole r; } t[] = {
-    {0, uraROLE_NONE}, {1e-6, uraROLE_LOW}, {0.0499, uraROLE_LOW}, {5.0 / 100, uraROLE_MEDIUM},
-    {0.2999, uraROLE_MEDIUM}, {30.0 / 100, uraROLE_HIGH}, {0.8999, uraROLE_HIGH},
-    {90.0 / 100, uraROLE_SEVERE}, {1, uraROLE_SEVERE}, {NAN, uraROLE_NONE},
+  struct {
+    double p;
+    uraRole r;
+  } t[] = {
+      {0, uraROLE_NONE},           {1e-6, uraROLE_LOW},          {0.0499, uraROLE_LOW},
+      {5.0 / 100, uraROLE_MEDIUM}, {0.2999, uraROLE_MEDIUM},     {30.0 / 100, uraROLE_HIGH},
+      {0.8999, uraROLE_HIGH},      {90.0 / 100, uraROLE_SEVERE}, {1, uraROLE_SEVERE},
+      {NAN, uraROLE_NONE},
   };
   for (size_t k = 0; k < sizeof t / sizeof t[0]; k++) {
     if (ura_band_role(t[k].p) != t[k].r) fail_msg("p %g: role %d", t[k].p, ura_band_role(t[k].p));
@@ -221,8 +234,8 @@ static void bands(void** state) {
 /* SGR sequences per scheme; MONO has attributes and no colours; PLAIN nothing */
 static void sgr(void** state) {
   char b[64];
-  assert_int_equal(ura_style_sgr(uraSCHEME_PLAIN, ura_style(uraSCHEME_PLAIN, uraROLE_SEVERE), b,
-                                 sizeof b), 0);
+  assert_int_equal(
+      ura_style_sgr(uraSCHEME_PLAIN, ura_style(uraSCHEME_PLAIN, uraROLE_SEVERE), b, sizeof b), 0);
   assert_string_equal(b, "");
   ura_style_sgr(uraSCHEME_XTERM, ura_style(uraSCHEME_XTERM, uraROLE_SEVERE), b, sizeof b);
   assert_string_equal(b, "\033[0;1;38;5;231;48;5;160m");
@@ -240,13 +253,13 @@ static void sgr(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test_setup_teardown(no_grid, setup, teardown),
-    cmocka_unit_test_setup_teardown(plain_layout, setup, teardown),
-    cmocka_unit_test_setup_teardown(paper_table6, setup, teardown),
-    cmocka_unit_test_setup_teardown(full_plane_partial, setup, teardown),
-    cmocka_unit_test_setup_teardown(colour_on_terminal, setup, teardown),
-    cmocka_unit_test(bands),
-    cmocka_unit_test(sgr),
+      cmocka_unit_test_setup_teardown(no_grid, setup, teardown),
+      cmocka_unit_test_setup_teardown(plain_layout, setup, teardown),
+      cmocka_unit_test_setup_teardown(paper_table6, setup, teardown),
+      cmocka_unit_test_setup_teardown(full_plane_partial, setup, teardown),
+      cmocka_unit_test_setup_teardown(colour_on_terminal, setup, teardown),
+      cmocka_unit_test(bands),
+      cmocka_unit_test(sgr),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

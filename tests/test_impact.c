@@ -280,9 +280,12 @@ static void aim_eccentricity(void** state) {
   assert_non_null(s);
   const urModel* m = s->m;
   const double* h = s->rest->gxpos + 3 * s->head_geom;
-  static const double cases[][4] = {      /* angle, face (deg), up, side (m) */
-    {0, 0, 0.05, -0.08}, {0, 90, -0.1, 0.2}, {30, 45, 0.12, 0.03}, {90, 0, 0.07, -0.04},
-    {60, -120, 0, 0.15}};
+  static const double cases[][4] = {/* angle, face (deg), up, side (m) */
+                                    {0, 0, 0.05, -0.08},
+                                    {0, 90, -0.1, 0.2},
+                                    {30, 45, 0.12, 0.03},
+                                    {90, 0, 0.07, -0.04},
+                                    {60, -120, 0, 0.15}};
   urImpactWork w;
   assert_int_equal(ur_impact_work_init(s, &w), 0);
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -290,20 +293,20 @@ static void aim_eccentricity(void** state) {
     double up = cases[i][2], side = cases[i][3], pos[3], quat[4], vel[3];
     ur_impact_start(s, &cond, up, side, pos, quat, vel);
     double f = cond.face * M_PI / 180, psi = cond.angle * M_PI / 180;
-    double l[3] = {-sin(f), -cos(f), 0};                  /* left of the course (-cos f, sin f) */
+    double l[3] = {-sin(f), -cos(f), 0}; /* left of the course (-cos f, sin f) */
     double v[3] = {-cos(f) * cos(psi), sin(f) * cos(psi), -sin(psi)};
     double u[3] = {v[1] * l[2] - v[2] * l[1], v[2] * l[0] - v[0] * l[2], v[0] * l[1] - v[1] * l[0]};
     for (int k = 0; k < 3; k++) assert_true(fabs(vel[k] - 8 * v[k]) < 1e-12);
     if (cond.angle == 0) assert_true(fabs(u[2] - 1) < 1e-12);
     for (int pass = 0; pass < 2; pass++) {
       const double* p = pos;
-      if (pass) {                          /* after the jump to the first possible contact */
+      if (pass) { /* after the jump to the first possible contact */
         urImpactResult r;
         double texit;
         ur_impact_begin(s, &w, &cond, up, side, &r, &texit);
         p = w.d->xcom + 3 * s->drone;
         double moved = (p[0] - pos[0]) * v[0] + (p[1] - pos[1]) * v[1] + (p[2] - pos[2]) * v[2];
-        assert_true(moved > 0);             /* it jumped forward along the line */
+        assert_true(moved > 0); /* it jumped forward along the line */
       }
       double d[3] = {p[0] - h[0], p[1] - h[1], p[2] - h[2]}, a = 0, e[3];
       for (int k = 0; k < 3; k++) a += d[k] * v[k];
@@ -329,7 +332,7 @@ static void aim_eccentricity(void** state) {
   c->st.angle = 0;
   c->st.angle_set = 1;
   urImpactCond cond;
-  assert_int_equal(ura_impact_cond(c, &cond), -1);      /* an offset needs a descent */
+  assert_int_equal(ura_impact_cond(c, &cond), -1); /* an offset needs a descent */
   cond.aim = 1;
   urImpactResult r;
   if (!c->have_work) {
@@ -350,11 +353,11 @@ static void aim_eccentricity(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(stance),          cmocka_unit_test(centre_values),
-    cmocka_unit_test(no_contact),      cmocka_unit_test(mirror_symmetry),
-    cmocka_unit_test(dt_convergence),  cmocka_unit_test(window_convergence),
-    cmocka_unit_test(contacts),        cmocka_unit_test(tau_top_shift),
-    cmocka_unit_test(aim_eccentricity),
+      cmocka_unit_test(stance),           cmocka_unit_test(centre_values),
+      cmocka_unit_test(no_contact),       cmocka_unit_test(mirror_symmetry),
+      cmocka_unit_test(dt_convergence),   cmocka_unit_test(window_convergence),
+      cmocka_unit_test(contacts),         cmocka_unit_test(tau_top_shift),
+      cmocka_unit_test(aim_eccentricity),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

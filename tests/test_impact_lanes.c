@@ -92,7 +92,7 @@ static void compare(uraCtx* c, const char* setup, double step, double par_lo, do
   print_message("%s: %d offsets, %d with contact, the same bytes in lanes\n", setup, f.n,
                 f.contact);
   assert_true(f.contact > 0);
-  assert_true(f.n < 10 || f.contact < f.n);       /* lattices: both kinds of cell */
+  assert_true(f.n < 10 || f.contact < f.n); /* lattices: both kinds of cell */
 
   /* none left to run: done is never called */
   f.ndone = 0;
@@ -122,10 +122,10 @@ static void lanes_few(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test_setup_teardown(lanes_case_a, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(lanes_case_c, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(lanes_case_b_wind, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(lanes_few, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(lanes_case_a, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(lanes_case_c, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(lanes_case_b_wind, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(lanes_few, ctx_setup, ctx_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

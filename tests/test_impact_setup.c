@@ -27,7 +27,7 @@ extern const urBuiltinModel ur_builtin_models[];
 
 /* short settlings for the core cases: what is compared does not depend on their length */
 #define T_SETTLE 0.2
-#define ITERS 1
+#define ITERS    1
 
 /* ---- everything a set-up gives, as bytes ---- */
 
@@ -44,8 +44,8 @@ static void snapshot(const urImpactSetup* s, FILE* f) {
   for (int b = 0; b < m->nbody; b++) {
     for (int k = 0; k < 3; k++) fwrite(&m->body[b].rst[k].x0, sizeof(double), 1, f);
   }
-  double v[] = {s->head_cg[0], s->head_cg[1], s->head_cg[2], s->head_top, s->neck_preload,
-                s->rmax, s->window};
+  double v[] = {s->head_cg[0],   s->head_cg[1], s->head_cg[2], s->head_top,
+                s->neck_preload, s->rmax,       s->window};
   fwrite(v, sizeof v, 1, f);
   fwrite(s->cand, sizeof *s->cand, s->ncand, f);
 
@@ -147,7 +147,7 @@ typedef void (*mutation)(urModel* m);
 
 static int person_pair(const urModel* m) {
   for (int i = 0; i < m->npair; i++) {
-    if (m->pair[i].geom2 < 0) return i;      /* the soles on the ground */
+    if (m->pair[i].geom2 < 0) return i; /* the soles on the ground */
   }
   fail_msg("no ground pair");
   return -1;
@@ -159,61 +159,109 @@ static urBody* body(urModel* m, const char* name) {
   return m->body + b;
 }
 
-static void m_mass(urModel* m) { body(m, "thorax")->mass *= 1 + 1e-12; }
-static void m_com(urModel* m) { body(m, "head")->com[0] += 1e-9; }
-static void m_stiff(urModel* m) { body(m, "neck")->rst[0].k += 1; }
-static void m_curve(urModel* m) { body(m, "oc")->rst[0].load.y[1] *= 1.01; }
-static void m_x0(urModel* m) { body(m, "thigh_l")->rst[0].x0 = 1e-3; }
-static void m_stop(urModel* m) { body(m, "forearm_r")->rst[0].kstop += 1; }
-static void m_gravity_flag(urModel* m) { body(m, "shank_l")->gravity = 0.5; }
-static void m_qpos0(urModel* m) { m->qpos0[body(m, "forearm_l")->qadr] = -0.01; }
-static void m_geom(urModel* m) { m->geom[ur_name_geom(m, "heel_l")].size[2] *= 1.001; }
-static void m_law(urModel* m) { m->pair[person_pair(m)].law.mu = 0.61; }
-static void m_gravity(urModel* m) { m->opt.gravity[2] = -9.80665; }
-static void m_vmax(urModel* m) { m->opt.vmax = 9e3; }
-static void m_integrator(urModel* m) { m->opt.integrator = urINT_RK4; }
-static void m_damping(urModel* m) { m->opt.implicit_damping = 0; }
-static void m_settle_dt(urModel* m) { ur_model_set_param(m, "settle_dt", 1e-4); }
-static void m_dt(urModel* m) { m->opt.dt = 3e-4; }          /* above settle_dt: its step */
-static void m_bag_on_person(urModel* m) { m->bag[0].geom = ur_name_geom(m, "heel_l"); }
-static void m_bag_on_drone(urModel* m) { m->bag[0].target[0] = ur_name_geom(m, "cargo"); }
+static void m_mass(urModel* m) {
+  body(m, "thorax")->mass *= 1 + 1e-12;
+}
+static void m_com(urModel* m) {
+  body(m, "head")->com[0] += 1e-9;
+}
+static void m_stiff(urModel* m) {
+  body(m, "neck")->rst[0].k += 1;
+}
+static void m_curve(urModel* m) {
+  body(m, "oc")->rst[0].load.y[1] *= 1.01;
+}
+static void m_x0(urModel* m) {
+  body(m, "thigh_l")->rst[0].x0 = 1e-3;
+}
+static void m_stop(urModel* m) {
+  body(m, "forearm_r")->rst[0].kstop += 1;
+}
+static void m_gravity_flag(urModel* m) {
+  body(m, "shank_l")->gravity = 0.5;
+}
+static void m_qpos0(urModel* m) {
+  m->qpos0[body(m, "forearm_l")->qadr] = -0.01;
+}
+static void m_geom(urModel* m) {
+  m->geom[ur_name_geom(m, "heel_l")].size[2] *= 1.001;
+}
+static void m_law(urModel* m) {
+  m->pair[person_pair(m)].law.mu = 0.61;
+}
+static void m_gravity(urModel* m) {
+  m->opt.gravity[2] = -9.80665;
+}
+static void m_vmax(urModel* m) {
+  m->opt.vmax = 9e3;
+}
+static void m_integrator(urModel* m) {
+  m->opt.integrator = urINT_RK4;
+}
+static void m_damping(urModel* m) {
+  m->opt.implicit_damping = 0;
+}
+static void m_settle_dt(urModel* m) {
+  ur_model_set_param(m, "settle_dt", 1e-4);
+}
+static void m_dt(urModel* m) {
+  m->opt.dt = 3e-4;
+} /* above settle_dt: its step */
+static void m_bag_on_person(urModel* m) {
+  m->bag[0].geom = ur_name_geom(m, "heel_l");
+}
+static void m_bag_on_drone(urModel* m) {
+  m->bag[0].target[0] = ur_name_geom(m, "cargo");
+}
 
-static void m_arm_mass(urModel* m) { body(m, "arm1")->mass *= 1.1; }
-static void m_arm_stiff(urModel* m) { body(m, "arm3")->rst[1].k *= 2; }
-static void m_drone_law(urModel* m) { m->pair[m->npair - 1].law.mu = 0.9; }
-static void m_fine_dt(urModel* m) { m->opt.dt = 5e-5; }    /* below settle_dt: not its step */
-static void m_tmax(urModel* m) { m->opt.tmax = 0.2; }
-static void m_bag_gas(urModel* m) { m->bag[0].gas.p0 *= 1.1; }
+static void m_arm_mass(urModel* m) {
+  body(m, "arm1")->mass *= 1.1;
+}
+static void m_arm_stiff(urModel* m) {
+  body(m, "arm3")->rst[1].k *= 2;
+}
+static void m_drone_law(urModel* m) {
+  m->pair[m->npair - 1].law.mu = 0.9;
+}
+static void m_fine_dt(urModel* m) {
+  m->opt.dt = 5e-5;
+} /* below settle_dt: not its step */
+static void m_tmax(urModel* m) {
+  m->opt.tmax = 0.2;
+}
+static void m_bag_gas(urModel* m) {
+  m->bag[0].gas.p0 *= 1.1;
+}
 
 static const struct {
   const char* what;
   mutation f;
   int shared;
 } mutations[] = {
-  {"person mass", m_mass, 0},
-  {"person centre of mass", m_com, 0},
-  {"person restraint stiffness", m_stiff, 0},
-  {"person restraint curve", m_curve, 0},
-  {"person neutral position before balancing", m_x0, 0},
-  {"person end stop", m_stop, 0},
-  {"person gravity flag", m_gravity_flag, 0},
-  {"person reference coordinate", m_qpos0, 0},
-  {"person ellipsoid", m_geom, 0},
-  {"person ground pair law", m_law, 0},
-  {"gravity", m_gravity, 0},
-  {"vmax", m_vmax, 0},
-  {"integrator", m_integrator, 0},
-  {"implicit damping", m_damping, 0},
-  {"settle_dt", m_settle_dt, 0},
-  {"time step above settle_dt", m_dt, 0},
-  {"airbag on the person", m_bag_on_person, 0},
-  {"airbag target on the drone", m_bag_on_drone, 0},
-  {"drone arm mass", m_arm_mass, 1},
-  {"drone arm stiffness", m_arm_stiff, 1},
-  {"drone-person pair law", m_drone_law, 1},
-  {"time step below settle_dt", m_fine_dt, 1},
-  {"maximum impact time", m_tmax, 1},
-  {"airbag pressure", m_bag_gas, 1},
+    {"person mass", m_mass, 0},
+    {"person centre of mass", m_com, 0},
+    {"person restraint stiffness", m_stiff, 0},
+    {"person restraint curve", m_curve, 0},
+    {"person neutral position before balancing", m_x0, 0},
+    {"person end stop", m_stop, 0},
+    {"person gravity flag", m_gravity_flag, 0},
+    {"person reference coordinate", m_qpos0, 0},
+    {"person ellipsoid", m_geom, 0},
+    {"person ground pair law", m_law, 0},
+    {"gravity", m_gravity, 0},
+    {"vmax", m_vmax, 0},
+    {"integrator", m_integrator, 0},
+    {"implicit damping", m_damping, 0},
+    {"settle_dt", m_settle_dt, 0},
+    {"time step above settle_dt", m_dt, 0},
+    {"airbag on the person", m_bag_on_person, 0},
+    {"airbag target on the drone", m_bag_on_drone, 0},
+    {"drone arm mass", m_arm_mass, 1},
+    {"drone arm stiffness", m_arm_stiff, 1},
+    {"drone-person pair law", m_drone_law, 1},
+    {"time step below settle_dt", m_fine_dt, 1},
+    {"maximum impact time", m_tmax, 1},
+    {"airbag pressure", m_bag_gas, 1},
 };
 
 /* every change of the person refuses the donor; changes of the drone take it, and the result is
@@ -226,7 +274,7 @@ static void donor_by_change(void** state) {
     mutations[i].f(m);
     const urImpactSetup* donors[1] = {&donor};
     int rc = ur_impact_prepare(&s, m, T_SETTLE, ITERS, donors, 1);
-    int shared = !rc && s.shared;            /* settling may fail: the donor was not taken */
+    int shared = !rc && s.shared; /* settling may fail: the donor was not taken */
     if (shared != mutations[i].shared) {
       fail_msg("%s: shared %d (%d %s), expected %d", mutations[i].what, shared, rc, s.err,
                mutations[i].shared);
@@ -254,13 +302,13 @@ static void donor_chain(void** state) {
 
   urImpactSetup* donors[1] = {&b};
   urModel* m = base();
-  assert_int_equal(ur_impact_prepare(&c, m, T_SETTLE * 2, ITERS, (const urImpactSetup**)donors,
-                                     1), 0);
+  assert_int_equal(ur_impact_prepare(&c, m, T_SETTLE * 2, ITERS, (const urImpactSetup**)donors, 1),
+                   0);
   assert_false(c.shared);
   release(&c);
   m = base();
-  assert_int_equal(ur_impact_prepare(&c, m, T_SETTLE, ITERS + 1, (const urImpactSetup**)donors,
-                                     1), 0);
+  assert_int_equal(ur_impact_prepare(&c, m, T_SETTLE, ITERS + 1, (const urImpactSetup**)donors, 1),
+                   0);
   assert_false(c.shared);
   release(&c);
 
@@ -270,7 +318,7 @@ static void donor_chain(void** state) {
   assert_int_equal(ur_impact_setup(&a, m, T_SETTLE), 0);
   assert_null(a.stance);
   assert_int_equal(prepare(&c, base(), &a), 0);
-  assert_same_setup(&a, &c);               /* the same settling as ur_impact_prepare's */
+  assert_same_setup(&a, &c); /* the same settling as ur_impact_prepare's */
   release(&a);
   release(&c);
   release(&b);
@@ -278,22 +326,22 @@ static void donor_chain(void** state) {
 
 /* a small drone of its own part, placed before or after the person */
 static const char DRONE[] =
-  "# a drone of one body and one arm, whose root is not called main: its role says so\n"
-  "body hub parent=world joint=free pos=0,0,0 mass=10 inertia=0.5,0.4,0.7\n"
-  "body arm parent=hub joint=revolute pos=0.2,0,0 axis=0,1,0 mass=0.5 com=0.2,0,0 "
-  "inertia=0.001,0.002,0.003\n"
-  "restraint arm dof=0 k=$arm_k c=1\n"
-  "role drone=hub\n"
-  "ellipsoid frame body=hub pos=0,0,0 size=0.3,0.3,0.1\n"
-  "ellipsoid arm_tube body=arm pos=0.2,0,0 size=0.2,0.03,0.03\n";
+    "# a drone of one body and one arm, whose root is not called main: its role says so\n"
+    "body hub parent=world joint=free pos=0,0,0 mass=10 inertia=0.5,0.4,0.7\n"
+    "body arm parent=hub joint=revolute pos=0.2,0,0 axis=0,1,0 mass=0.5 com=0.2,0,0 "
+    "inertia=0.001,0.002,0.003\n"
+    "restraint arm dof=0 k=$arm_k c=1\n"
+    "role drone=hub\n"
+    "ellipsoid frame body=hub pos=0,0,0 size=0.3,0.3,0.1\n"
+    "ellipsoid arm_tube body=arm pos=0.2,0,0 size=0.2,0.03,0.03\n";
 static const char DRONE_PARAM[] = "# the arm stiffness\nparam arm_k 840\n";
 static const char DRONE_HUGE[] =
-  "# a drone whose bounding sphere reaches down to the person\n"
-  "ellipsoid far body=hub pos=0,0,0 size=9999,0.1,0.1\n";
+    "# a drone whose bounding sphere reaches down to the person\n"
+    "ellipsoid far body=hub pos=0,0,0 size=9999,0.1,0.1\n";
 static const char DRONE_SELF[] =
-  "# a drone touching itself\n"
-  "law self type=table load=tissue_load damping=10 mu=0 v_eps=0.01\n"
-  "pairs self a=frame b=arm_tube law=self\n";
+    "# a drone touching itself\n"
+    "law self type=table load=tissue_load damping=10 mu=0 v_eps=0.01\n"
+    "pairs self a=frame b=arm_tube law=self\n";
 
 /* the person at other indices (the drone's bodies first) refuses the donor, at the same indices
    it is taken, and equals settling */
@@ -416,13 +464,13 @@ static void workbench_person(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(donor_by_change),
-    cmocka_unit_test(donor_chain),
-    cmocka_unit_test(layout),
-    cmocka_unit_test(apart),
-    cmocka_unit_test_setup_teardown(workbench_bag_p0, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(workbench_cases, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(workbench_person, ctx_setup, ctx_teardown),
+      cmocka_unit_test(donor_by_change),
+      cmocka_unit_test(donor_chain),
+      cmocka_unit_test(layout),
+      cmocka_unit_test(apart),
+      cmocka_unit_test_setup_teardown(workbench_bag_p0, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(workbench_cases, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(workbench_person, ctx_setup, ctx_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -9,17 +9,15 @@
 
 #include "uasrisk/injury.h"
 
-#define FS 50000.0                 /* sampling rate, Hz (J211 asks >= 10 kHz for CFC 1000) */
-#define NS 50001                   /* 1 s of samples */
+#define FS 50000.0 /* sampling rate, Hz (J211 asks >= 10 kHz for CFC 1000) */
+#define NS 50001   /* 1 s of samples */
 
-static double db(double g)
-{
+static double db(double g) {
   return 20.0 * log10(g);
 }
 
 /* measured gain and phase of the filter at f: least squares of sin/cos on the middle half */
-static void measure(double f, double* gain, double* phase)
-{
+static void measure(double f, double* gain, double* phase) {
   static double x[NS], y[NS];
   double dt = 1.0 / FS;
   for (int i = 0; i < NS; i++) {
@@ -49,8 +47,7 @@ static void measure(double f, double* gain, double* phase)
   *phase = atan2(B, A);
 }
 
-static void test_gain_corridor(void** state)
-{
+static void test_gain_corridor(void** state) {
   // J211-1 CFC 1000: FH = 1000 Hz, FN = 1650 Hz. Corridor as read from J211 [tolerances]:
   // 0.1 Hz..FH within +0.5/-1 dB; at FN within +0.5/-4 dB; beyond FN falling at least 9 dB/oct.
   const double f[] = {10, 100, 300, 500, 800, 1000, 1650, 3300};
@@ -72,8 +69,7 @@ static void test_gain_corridor(void** state)
   }
 }
 
-static void test_minus3db(void** state)
-{
+static void test_minus3db(void** state) {
   // -3 dB point of the double pass: 5/3 CFC analogue (1667 Hz); J211 nominal FN = 1650 Hz.
   // tolerance: 1600..1750 Hz at 50 kHz sampling
   double lo = 500, hi = 5000;
@@ -92,8 +88,7 @@ static void test_minus3db(void** state)
   assert_true(fabs(db(ur_cfc_gain(180.0, 1.0 / FS, 300.0)) + 3.0) < 0.3);
 }
 
-static void test_zero_phase_pulse(void** state)
-{
+static void test_zero_phase_pulse(void** state) {
   // symmetric triangle of 1 ms base centred on sample c stays centred and symmetric
   static double x[4001], y[4001];
   int n = 4001, c = 2000, hw = 25;
@@ -124,8 +119,7 @@ static void test_zero_phase_pulse(void** state)
   assert_true(y[c] < 100.0 && y[c] > 50.0);
 }
 
-static void test_dc_inplace_errors(void** state)
-{
+static void test_dc_inplace_errors(void** state) {
   // constant signal passes unchanged (steady-state start), in place
   double x[200];
   for (int i = 0; i < 200; i++) {
@@ -143,13 +137,12 @@ static void test_dc_inplace_errors(void** state)
   assert_true(ur_cfc_gain(1000.0, 1e-3, 10.0) < 0);
 }
 
-int main(void)
-{
+int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_gain_corridor),
-    cmocka_unit_test(test_minus3db),
-    cmocka_unit_test(test_zero_phase_pulse),
-    cmocka_unit_test(test_dc_inplace_errors),
+      cmocka_unit_test(test_gain_corridor),
+      cmocka_unit_test(test_minus3db),
+      cmocka_unit_test(test_zero_phase_pulse),
+      cmocka_unit_test(test_dc_inplace_errors),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

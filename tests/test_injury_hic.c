@@ -9,12 +9,11 @@
 
 #include "uasrisk/injury.h"
 
-#define DT 1e-5                    /* sample step, s */
+#define DT   1e-5 /* sample step, s */
 #define NMAX 8001
 
 /* rectangular pulse of amp g from t0 to t0 + T (sample-aligned), zero elsewhere */
-static int rect(double* t, double* a, double amp, double t0, double T, double tend)
-{
+static int rect(double* t, double* a, double amp, double t0, double T, double tend) {
   int n = (int)lround(tend / DT) + 1;
   int k0 = (int)lround(t0 / DT), k1 = (int)lround((t0 + T) / DT);
   for (int k = 0; k < n; k++) {
@@ -25,15 +24,13 @@ static int rect(double* t, double* a, double amp, double t0, double T, double te
 }
 
 /* half-sine amp sin(pi (t - t0) / T) on [t0, t0 + T] */
-static double halfsine(double tt, double amp, double t0, double T)
-{
+static double halfsine(double tt, double amp, double t0, double T) {
   double s = tt - t0;
   return (s >= 0 && s <= T) ? amp * sin(M_PI * s / T) : 0.0;
 }
 
 /* closed-form half-sine HIC: x = pi D / (2 T), optimum tan x = 5x/3 unless the window binds */
-static double halfsine_hic(double amp, double T, double window, double* width)
-{
+static double halfsine_hic(double amp, double T, double window, double* width) {
   // bisection for tan x = 5x/3 on (0.5, 1.5)
   double lo = 0.5, hi = 1.5;
   for (int it = 0; it < 200; it++) {
@@ -54,8 +51,7 @@ static double halfsine_hic(double amp, double T, double window, double* width)
   return pow(amp, 2.5) * (2.0 * T / M_PI) * pow(sin(x), 2.5) / pow(x, 1.5);
 }
 
-static void test_rect_10ms(void** state)
-{
+static void test_rect_10ms(void** state) {
   static double t[NMAX], a[NMAX];
   int n = rect(t, a, 100.0, 0.005, 0.010, 0.030);
   urHic h15, h36;
@@ -67,8 +63,7 @@ static void test_rect_10ms(void** state)
   assert_true(fabs(h15.t2 - 0.015) < 0.5 * DT);
 }
 
-static void test_rect_long_window_limit(void** state)
-{
+static void test_rect_long_window_limit(void** state) {
   // 100 g for 30 ms: HIC15 = 100^2.5 * 0.015, HIC36 = 100^2.5 * 0.030
   static double t[NMAX], a[NMAX];
   int n = rect(t, a, 100.0, 0.005, 0.030, 0.045);
@@ -82,8 +77,7 @@ static void test_rect_long_window_limit(void** state)
   assert_true(h15.t1 >= 0.005 - 0.5 * DT && h15.t2 <= 0.035 + 0.5 * DT);
 }
 
-static void test_halfsine_10ms(void** state)
-{
+static void test_halfsine_10ms(void** state) {
   static double t[NMAX], a[NMAX];
   int n = 2001;
   for (int k = 0; k < n; k++) {
@@ -106,8 +100,7 @@ static void test_halfsine_10ms(void** state)
   assert_true(fabs(a[h.i2] - 0.6 * mean) / mean < 0.01);
 }
 
-static void test_halfsine_30ms(void** state)
-{
+static void test_halfsine_30ms(void** state) {
   static double t[NMAX], a[NMAX];
   int n = 4001;
   for (int k = 0; k < n; k++) {
@@ -134,8 +127,7 @@ static void test_halfsine_30ms(void** state)
   assert_true(fabs(h36.t2 - (0.015 + 0.5 * w36)) < 0.05e-3);
 }
 
-static void test_nonuniform(void** state)
-{
+static void test_nonuniform(void** state) {
   // alternating steps of 5 and 15 us, plus a 7 us step, with the pulse edges on samples
   static double t[NMAX], a[NMAX];
   int n = 0;
@@ -166,8 +158,7 @@ static void test_nonuniform(void** state)
   assert_true(fabs(h.hic - 414.646) / 414.646 < 1e-3);
 }
 
-static void test_workspace_and_errors(void** state)
-{
+static void test_workspace_and_errors(void** state) {
   static double t[NMAX], a[NMAX], work[6 * NMAX];
   assert_true(ur_hic_work_size(NMAX) <= 6 * NMAX);
   int n = rect(t, a, 80.0, 0.002, 0.004, 0.010);
@@ -195,8 +186,7 @@ static void test_workspace_and_errors(void** state)
    (HIC^2 = dv^5 / dt^3, ties to the smallest (i, j)) and reports the value from the best pair
    as it does */
 static double brute(const double* t, const double* a, int n, double w, int squared, int* i1,
-                    int* i2)
-{
+                    int* i2) {
   static double v[NMAX];
   double best = 0;
   v[0] = 0;
@@ -207,8 +197,8 @@ static double brute(const double* t, const double* a, int n, double w, int squar
   for (int i = 0; i < n - 1; i++) {
     for (int j = i + 1; j < n && t[j] - t[i] <= w * (1 + 1e-9); j++) {
       double dv = v[j] - v[i], dt = t[j] - t[i];
-      double h = squared ? dv * dv * dv * dv * dv / (dt * dt * dt)
-                         : dv * dv * sqrt(dv) / (dt * sqrt(dt));
+      double h =
+          squared ? dv * dv * dv * dv * dv / (dt * dt * dt) : dv * dv * sqrt(dv) / (dt * sqrt(dt));
       if (dv > 0 && h > best) {
         best = h;
         *i1 = i;
@@ -228,8 +218,7 @@ static double brute(const double* t, const double* a, int n, double w, int squar
    scan of every pair under the same comparison, and the brute-force HIC (compared as HIC
    values, which can order near-ties differently: bitwise on peaked traces, to 1e-12 on
    plateaus) */
-static void test_pruned_equals_brute_force(void** state)
-{
+static void test_pruned_equals_brute_force(void** state) {
   static double t[2000], a[2000];
   srand(12345);
   for (int trial = 0; trial < 200; trial++) {
@@ -278,16 +267,15 @@ static void test_pruned_equals_brute_force(void** state)
   }
 }
 
-int main(void)
-{
+int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_rect_10ms),
-    cmocka_unit_test(test_rect_long_window_limit),
-    cmocka_unit_test(test_halfsine_10ms),
-    cmocka_unit_test(test_halfsine_30ms),
-    cmocka_unit_test(test_nonuniform),
-    cmocka_unit_test(test_workspace_and_errors),
-    cmocka_unit_test(test_pruned_equals_brute_force),
+      cmocka_unit_test(test_rect_10ms),
+      cmocka_unit_test(test_rect_long_window_limit),
+      cmocka_unit_test(test_halfsine_10ms),
+      cmocka_unit_test(test_halfsine_30ms),
+      cmocka_unit_test(test_nonuniform),
+      cmocka_unit_test(test_workspace_and_errors),
+      cmocka_unit_test(test_pruned_equals_brute_force),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -8,8 +8,7 @@
 
 #include "uasrisk/injury.h"
 
-static void test_mode_by_sign(void** state)
-{
+static void test_mode_by_sign(void** state) {
   assert_int_equal(ur_nij_mode(100, 10), urNIJ_NTF);
   assert_int_equal(ur_nij_mode(100, -10), urNIJ_NTE);
   assert_int_equal(ur_nij_mode(-100, 10), urNIJ_NCF);
@@ -25,8 +24,7 @@ static void test_mode_by_sign(void** state)
   assert_true(fabs(ur_nij_sample(-3080, -67.5, &p) - 1.0) < 1e-12);
 }
 
-static void test_per_mode_maxima(void** state)
-{
+static void test_per_mode_maxima(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
 
@@ -63,8 +61,7 @@ static void test_per_mode_maxima(void** state)
   assert_int_equal(r.imax, 8);
 }
 
-static void test_absent_mode_and_intercepts(void** state)
-{
+static void test_absent_mode_and_intercepts(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
 
@@ -86,8 +83,7 @@ static void test_absent_mode_and_intercepts(void** state)
   assert_int_equal(ur_injury_param_set(&p, "nij_fzc_tension", -1), -2);
 }
 
-static void test_condyle_offset(void** state)
-{
+static void test_condyle_offset(void** state) {
   // M_OC = My - D Fx: a shear force turns zero My into extension
   urInjuryParams p;
   ur_injury_defaults(&p);
@@ -103,8 +99,7 @@ static void test_condyle_offset(void** state)
   assert_int_equal(r.which, urNIJ_NTF);
 }
 
-static void test_errors(void** state)
-{
+static void test_errors(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
   const double fz[] = {1}, my[] = {1};
@@ -115,14 +110,13 @@ static void test_errors(void** state)
   assert_int_equal(ur_nij(fz, my, NULL, 1, &p, &r), -1);
 }
 
-int main(void)
-{
+int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_mode_by_sign),
-    cmocka_unit_test(test_per_mode_maxima),
-    cmocka_unit_test(test_absent_mode_and_intercepts),
-    cmocka_unit_test(test_condyle_offset),
-    cmocka_unit_test(test_errors),
+      cmocka_unit_test(test_mode_by_sign),
+      cmocka_unit_test(test_per_mode_maxima),
+      cmocka_unit_test(test_absent_mode_and_intercepts),
+      cmocka_unit_test(test_condyle_offset),
+      cmocka_unit_test(test_errors),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

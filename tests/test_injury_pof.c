@@ -10,8 +10,7 @@
 
 #include "uasrisk/injury.h"
 
-static void test_hic_curve(void** state)
-{
+static void test_hic_curve(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
 
@@ -26,8 +25,7 @@ static void test_hic_curve(void** state)
 
 /* the reference sheet's choices, against which its tables are computed: rescale, raise, the
    upper ends of Gennarelli & Wodzin (the defaults are the calibration's: lower, midpoints) */
-static void sheet_params(urInjuryParams* p)
-{
+static void sheet_params(urInjuryParams* p) {
   ur_injury_defaults(p);
   p->nij_rescale = 1;
   p->nij_order = urORDER_RAISE;
@@ -36,8 +34,7 @@ static void sheet_params(urInjuryParams* p)
   p->pof_ais4 = 0.50;
 }
 
-static void test_nij_composite_table(void** state)
-{
+static void test_nij_composite_table(void** state) {
   urInjuryParams p;
   sheet_params(&p);
 
@@ -59,8 +56,7 @@ static void test_nij_composite_table(void** state)
   assert_true(ur_pof_nij(0, &p) == 0.0);
 }
 
-static void test_nij_variants(void** state)
-{
+static void test_nij_variants(void** state) {
   // sheet sensitivity: "lower" ordering 29.5 % at 2, 57.1 % at 3
   urInjuryParams p;
   sheet_params(&p);
@@ -84,8 +80,7 @@ static void test_nij_variants(void** state)
   assert_true(fabs(ur_pof_nij(3.0, &p) - 0.523) < 0.001);
 }
 
-static void test_vc_curve(void** state)
-{
+static void test_vc_curve(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
 
@@ -101,8 +96,7 @@ static void test_vc_curve(void** state)
   assert_true(fabs(ur_pof_vc(10, urABDOMEN, &p) - 1.0) < 1e-9);
 }
 
-static void test_curves_monotone(void** state)
-{
+static void test_curves_monotone(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
   double x[64], pr[64];
@@ -130,8 +124,7 @@ static void test_curves_monotone(void** state)
   }
 }
 
-static void test_fusion(void** state)
-{
+static void test_fusion(void** state) {
   // (3.1) and the thorax/abdomen combination
   assert_true(fabs(ur_pof_fuse(0.1, 0.2, 0.3) - (1 - 0.9 * 0.8 * 0.7)) < 1e-15);
   assert_true(ur_pof_fuse(0, 0, 0) == 0.0 && ur_pof_fuse(1, 0, 0) == 1.0);
@@ -142,8 +135,7 @@ static void test_fusion(void** state)
   assert_true(ur_pof_vc_fuse(0.2, 0.5, &p) == 0.5);
 }
 
-static void test_params(void** state)
-{
+static void test_params(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
   int n = ur_injury_param_count();
@@ -183,8 +175,7 @@ static void test_params(void** state)
 
 #define NE 4001
 
-static void test_eval_all(void** state)
-{
+static void test_eval_all(void** state) {
   // 40 ms at 10 us: half-sine head pulse split over x and y, neck loads, thorax sine
   static double t[NE], ax[NE], ay[NE], fz[NE], my[NE], dth[NE];
   for (int i = 0; i < NE; i++) {
@@ -250,17 +241,12 @@ static void test_eval_all(void** state)
   assert_int_equal(ur_injury_eval(&in, &p, NULL, &rf), 0);
 }
 
-int main(void)
-{
+int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_hic_curve),
-    cmocka_unit_test(test_nij_composite_table),
-    cmocka_unit_test(test_nij_variants),
-    cmocka_unit_test(test_vc_curve),
-    cmocka_unit_test(test_curves_monotone),
-    cmocka_unit_test(test_fusion),
-    cmocka_unit_test(test_params),
-    cmocka_unit_test(test_eval_all),
+      cmocka_unit_test(test_hic_curve),       cmocka_unit_test(test_nij_composite_table),
+      cmocka_unit_test(test_nij_variants),    cmocka_unit_test(test_vc_curve),
+      cmocka_unit_test(test_curves_monotone), cmocka_unit_test(test_fusion),
+      cmocka_unit_test(test_params),          cmocka_unit_test(test_eval_all),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -8,13 +8,12 @@
 
 #include "uasrisk/injury.h"
 
-#define AMP 0.05                   /* deflection amplitude, m */
-#define OMEGA (2 * M_PI * 25.0)    /* rad/s: 40 ms period */
-#define NV 201                     /* samples over the first 20 ms, dt = 0.1 ms */
+#define AMP   0.05              /* deflection amplitude, m */
+#define OMEGA (2 * M_PI * 25.0) /* rad/s: 40 ms period */
+#define NV    201               /* samples over the first 20 ms, dt = 0.1 ms */
 
 /* VC(t) = SF A^2 w sin cos / D0, max A^2 w / (2 D0) at w t = pi/4 */
-static void test_closed_form(void** state)
-{
+static void test_closed_form(void** state) {
   static double t[NV], d[NV], vct[NV];
   double dt = 1e-4, d0 = 0.229;
   for (int i = 0; i < NV; i++) {
@@ -42,8 +41,7 @@ static void test_closed_form(void** state)
   assert_true(fabs(r2.vc - 0.5 * r.vc) < 1e-12);
 }
 
-static void test_nonuniform(void** state)
-{
+static void test_nonuniform(void** state) {
   // steps alternating 0.06 and 0.14 ms: three-point derivative, second order
   static double t[400], d[400];
   int n = 0;
@@ -61,8 +59,7 @@ static void test_nonuniform(void** state)
   assert_true(fabs(r.vc - want) / want < 1e-3);
 }
 
-static void test_defaults_and_errors(void** state)
-{
+static void test_defaults_and_errors(void** state) {
   urInjuryParams p;
   ur_injury_defaults(&p);
   assert_true(p.vc_d0_thorax == 0.229 && p.vc_d0_abdomen == 0.2185 && p.vc_sf == 1.0);
@@ -79,12 +76,11 @@ static void test_defaults_and_errors(void** state)
   assert_int_equal(ur_vc(t, d, 5, 0.0, 1.0, NULL, &r), -1);
 }
 
-int main(void)
-{
+int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_closed_form),
-    cmocka_unit_test(test_nonuniform),
-    cmocka_unit_test(test_defaults_and_errors),
+      cmocka_unit_test(test_closed_form),
+      cmocka_unit_test(test_nonuniform),
+      cmocka_unit_test(test_defaults_and_errors),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

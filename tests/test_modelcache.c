@@ -26,15 +26,15 @@ static void switch_back(void** state) {
 
   run_rc(c, "case B", 0);
   assert_ptr_not_equal(c->model, a);
-  assert_false(c->have_setup);          /* B compiled, not settled yet */
-  assert_false(c->have_impact);         /* A's impact went with A's model */
+  assert_false(c->have_setup);  /* B compiled, not settled yet */
+  assert_false(c->have_impact); /* A's impact went with A's model */
   run_rc(c, "history", -1);
   run_rc(c, "impact 0 0", 0);
   assert_true(c->last_impact.p != ra.p);
 
   run_rc(c, "case A", 0);
   assert_ptr_equal(c->model, a);
-  assert_true(c->have_setup);           /* settled already: nothing to settle */
+  assert_true(c->have_setup); /* settled already: nothing to settle */
   assert_ptr_equal(c->setup.m, a);
   assert_false(c->have_impact || c->have_work);
   assert_true(c->model->param[ura_model_param_find(c, "bag_bottom")].value == 1);
@@ -60,9 +60,9 @@ static void lru(void** state) {
     run_rc(c, line, 0);
     assert_non_null(ura_setup(c));
   }
-  run_rc(c, "set vmax 10000", 0);            /* kept: 1..8 parked, 0 live */
+  run_rc(c, "set vmax 10000", 0); /* kept: 1..8 parked, 0 live */
   assert_true(c->have_setup);
-  run_rc(c, "set vmax 10009", 0);            /* parks 0: 1, the least recently used, is freed */
+  run_rc(c, "set vmax 10009", 0); /* parks 0: 1, the least recently used, is freed */
   assert_false(c->have_setup);
   run_rc(c, "set vmax 10001", 0);
   assert_false(c->have_setup);
@@ -93,9 +93,9 @@ static void parts_flush(void** state) {
   run_rc(c, "case B", 0);
   run_rc(c, line, 0);
   run_rc(c, "case A", 0);
-  assert_false(c->have_setup);          /* no model of the old parts */
+  assert_false(c->have_setup); /* no model of the old parts */
   assert_non_null(ura_setup(c));
-  assert_true(c->setup.shared);         /* a stance of them, for the same person */
+  assert_true(c->setup.shared); /* a stance of them, for the same person */
   run_rc(c, "impact 0.1 0.1", 0);
   assert_memory_equal(&c->last_impact.p, &ra.p, sizeof ra.p);
   assert_memory_equal(&c->last_impact.inj.hic15.hic, &ra.inj.hic15.hic, sizeof(double));
@@ -126,7 +126,7 @@ static void parts_flush(void** state) {
   assert_string_equal(c->st.casename, "A");
   assert_false(c->have_setup);
   assert_non_null(ura_setup(c));
-  assert_false(c->setup.shared);        /* reset kept no stance */
+  assert_false(c->setup.shared); /* reset kept no stance */
   unlink(path);
   unlink(human);
 }
@@ -162,10 +162,10 @@ static void keys(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test_setup_teardown(keys, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(switch_back, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(lru, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(parts_flush, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(keys, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(switch_back, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(lru, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(parts_flush, ctx_setup, ctx_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -72,9 +72,9 @@ static void table3_pof(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(table3_zero_wind), cmocka_unit_test(gliding_closed_form),
-    cmocka_unit_test(rcc_curves),       cmocka_unit_test(blunt_criterion),
-    cmocka_unit_test(table3_pof),
+      cmocka_unit_test(table3_zero_wind), cmocka_unit_test(gliding_closed_form),
+      cmocka_unit_test(rcc_curves),       cmocka_unit_test(blunt_criterion),
+      cmocka_unit_test(table3_pof),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

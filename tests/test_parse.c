@@ -20,9 +20,9 @@ static void good_numbers(void** state) {
 }
 
 static void bad_numbers(void** state) {
-  static const char* const bad[] = {"", " ", "abc", "1.5abc", "1e400", "-1e400", "nan", "NaN",
-                                    "inf", "-inf", "infinity", "0x", "0x10", "1,5", "1 2",
-                                    "--1", "e5", ".", "1e", "\t", NULL};
+  static const char* const bad[] = {"",    " ",   "abc",  "1.5abc",   "1e400", "-1e400", "nan",
+                                    "NaN", "inf", "-inf", "infinity", "0x",    "0x10",   "1,5",
+                                    "1 2", "--1", "e5",   ".",        "1e",    "\t",     NULL};
   double v = 42;
   for (int i = 0; bad[i]; i++) {
     assert_int_equal(ura_parse_number(bad[i], &v), -1);
@@ -45,7 +45,9 @@ static void lists(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(good_numbers), cmocka_unit_test(bad_numbers), cmocka_unit_test(lists),
+      cmocka_unit_test(good_numbers),
+      cmocka_unit_test(bad_numbers),
+      cmocka_unit_test(lists),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -20,7 +20,7 @@ typedef struct {
   uraCtx c;
   char dir[64];
   char script[128];
-  char* text;                      /* the script gnuplot received */
+  char* text; /* the script gnuplot received */
   double t[N], v[2 * N];
   uraTrace tr;
 } fixture;
@@ -104,7 +104,7 @@ static void trace_all(void** state) {
   assert_int_equal(ura_plot_trace(&f->c, &f->tr, 0, NULL), 0);
   const char* s = sent(f);
   assert_int_equal(block_rows(s, "T"), N);
-  assert_non_null(strstr(s, "\n10 152.957"));            /* 10 ms, 1500 m/s^2 = 152.96 g */
+  assert_non_null(strstr(s, "\n10 152.957")); /* 10 ms, 1500 m/s^2 = 152.96 g */
   assert_non_null(strstr(s, "set multiplot layout 2,1"));
   assert_non_null(strstr(s, "set ylabel 'head_acc (g)'"));
   assert_non_null(strstr(s, "set ylabel 'neck_fz (N)'"));
@@ -129,8 +129,9 @@ static void trace_title(void** state) {
   f->tr.title = "case B, wind 0 m/s\nimpact at dpar 0.00 m";
   assert_int_equal(ura_plot_trace(&f->c, &f->tr, 1, h), 0);
   const char* s = sent(f);
-  assert_non_null(strstr(s, "set title 'case B, wind 0 m/s'.\"\\n\".'impact at dpar 0.00 m' noenhanced"));
-  assert_non_null(strstr(s, "set terminal png\n"));         /* one panel: the default canvas */
+  assert_non_null(
+      strstr(s, "set title 'case B, wind 0 m/s'.\"\\n\".'impact at dpar 0.00 m' noenhanced"));
+  assert_non_null(strstr(s, "set terminal png\n")); /* one panel: the default canvas */
   assert_int_equal(ura_plot_trace(&f->c, &f->tr, 0, NULL), 0);
   assert_non_null(strstr(sent(f), "set multiplot layout 2,1 title 'case B, wind 0 m/s'.\"\\n\".'"));
 }
@@ -143,7 +144,7 @@ static void trace_select(void** state) {
   const char* s = sent(f);
   assert_null(strstr(s, "multiplot"));
   assert_null(strstr(s, "head_acc"));
-  assert_non_null(strstr(s, "\n10 -249.376"));            /* row 100: -1000 x 100 / 401 */
+  assert_non_null(strstr(s, "\n10 -249.376")); /* row 100: -1000 x 100 / 401 */
 
   const char* h[] = {"head_acc"};
   assert_int_equal(ura_plot_trace_hic(&f->c, &f->tr, 1, h, 0.006, 0.0135), 0);
@@ -151,7 +152,8 @@ static void trace_select(void** state) {
 
   const char* bad[] = {"head_acc", "nosuch"};
   assert_int_equal(ura_plot_trace(&f->c, &f->tr, 2, bad), -1);
-  assert_string_equal(f->c.err, "plot history: no signal 'nosuch'; signals: head_acc, neck_fz (or all)");
+  assert_string_equal(f->c.err,
+                      "plot history: no signal 'nosuch'; signals: head_acc, neck_fz (or all)");
   assert_int_equal(ura_plot_trace(&f->c, NULL, 0, NULL), -1);
   assert_string_equal(f->c.err, "plot history: no impact yet");
 }
@@ -161,8 +163,8 @@ static void xy(void** state) {
   fixture* f = *state;
   double x[3] = {0, 2, 4}, y1[3] = {0.1, 0.2, NAN}, y2[3] = {1, 2, 3};
   uraSeries s[2] = {{"case \"B\"", x, y1, 3}, {NULL, x, y2, 3}};
-  assert_int_equal(ura_plot_xy(&f->c, "plot sweep", "Q against wind", "wind (m/s)", "Q (m^2)", 2,
-                               s), 0);
+  assert_int_equal(
+      ura_plot_xy(&f->c, "plot sweep", "Q against wind", "wind (m/s)", "Q (m^2)", 2, s), 0);
   const char* t = sent(f);
   assert_int_equal(block_rows(t, "S0"), 3);
   assert_int_equal(block_rows(t, "S1"), 3);
@@ -200,11 +202,11 @@ int main(void) {
   const char* p = getenv("PATH");
   snprintf(real_path, sizeof real_path, "%s", p ? p : "/usr/bin:/bin");
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test_setup_teardown(trace_all, setup, teardown),
-    cmocka_unit_test_setup_teardown(trace_select, setup, teardown),
-    cmocka_unit_test_setup_teardown(trace_title, setup, teardown),
-    cmocka_unit_test_setup_teardown(xy, setup, teardown),
-    cmocka_unit_test_setup_teardown(real_gnuplot, setup, teardown),
+      cmocka_unit_test_setup_teardown(trace_all, setup, teardown),
+      cmocka_unit_test_setup_teardown(trace_select, setup, teardown),
+      cmocka_unit_test_setup_teardown(trace_title, setup, teardown),
+      cmocka_unit_test_setup_teardown(xy, setup, teardown),
+      cmocka_unit_test_setup_teardown(real_gnuplot, setup, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -36,8 +36,10 @@ static void injury_settings(void** state) {
     int open_lo, isint;
     ur_injury_param_get(&c->st.injury, name, &v);
     ur_injury_param_range(i, &lo, &hi, &open_lo, &isint);
-    if (isint) w = v < hi ? v + 1 : v - 1;
-    else w = v < hi ? v + 0.01 * (hi - v) : v - 0.01 * (v - lo);
+    if (isint)
+      w = v < hi ? v + 1 : v - 1;
+    else
+      w = v < hi ? v + 0.01 * (hi - v) : v - 0.01 * (v - lo);
     assert_int_equal(ur_injury_param_set(&c->st.injury, name, w), 0);
     if (grid(c)) fail_msg("recalled although %s changed from %g to %g", name, v, w);
     assert_int_equal(ur_injury_param_set(&c->st.injury, name, v), 0);
@@ -115,10 +117,10 @@ static void bound(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test_setup_teardown(injury_settings, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(copies, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(inspect, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(bound, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(injury_settings, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(copies, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(inspect, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(bound, ctx_setup, ctx_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

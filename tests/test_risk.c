@@ -12,9 +12,12 @@
 #include "uasrisk/risk.h"
 #include "uasrisk/rng.h"
 
-#define NEAR(a, b, tol) do { double a_ = (a), b_ = (b); \
-  if (!(fabs(a_ - b_) <= (tol))) fail_msg("%s = %.12g, want %.12g (tol %g)", #a, a_, b_, \
-                                          (double)(tol)); } while (0)
+#define NEAR(a, b, tol)                                                                            \
+  do {                                                                                             \
+    double a_ = (a), b_ = (b);                                                                     \
+    if (!(fabs(a_ - b_) <= (tol)))                                                                 \
+      fail_msg("%s = %.12g, want %.12g (tol %g)", #a, a_, b_, (double)(tol));                      \
+  } while (0)
 
 /* case A: p_chute (p_bag Q(A) + (1 - p_bag) Q(B)) + (1 - p_chute) Q(C) */
 static void branches(void** state) {
@@ -113,11 +116,15 @@ static void quantiles(void** state) {
   /* refusals, each with a message */
   char err[200];
   urDist bad[] = {
-    {urDIST_NORMAL, 5, 0, 0, 60}, {urDIST_NORMAL, 100, 1, 0, 60}, {urDIST_UNIFORM, 3, 3, 0, 60},
-    {urDIST_UNIFORM, -1, 3, 0, 60}, {urDIST_WEIBULL, 0, 2, 0, 60}, {urDIST_WEIBULL, 5, -1, 0, 60},
-    {urDIST_DISCRETE, 0, 0, 0, 60, 2, {1, 2}, {0.5, 0.6}},
-    {urDIST_DISCRETE, 0, 0, 0, 60, 2, {1, 1}, {0.5, 0.5}},
-    {urDIST_DISCRETE, 0, 0, 0, 60, 2, {1, 70}, {0.5, 0.5}},
+      {urDIST_NORMAL, 5, 0, 0, 60},
+      {urDIST_NORMAL, 100, 1, 0, 60},
+      {urDIST_UNIFORM, 3, 3, 0, 60},
+      {urDIST_UNIFORM, -1, 3, 0, 60},
+      {urDIST_WEIBULL, 0, 2, 0, 60},
+      {urDIST_WEIBULL, 5, -1, 0, 60},
+      {urDIST_DISCRETE, 0, 0, 0, 60, 2, {1, 2}, {0.5, 0.6}},
+      {urDIST_DISCRETE, 0, 0, 0, 60, 2, {1, 1}, {0.5, 0.5}},
+      {urDIST_DISCRETE, 0, 0, 0, 60, 2, {1, 70}, {0.5, 0.5}},
   };
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
     err[0] = 0;
@@ -168,7 +175,7 @@ static void narrows(void** state) {
   urDist d[2] = {{urDIST_WEIBULL, 5, 2, 0, 60}, {urDIST_UNIFORM, -180, 180, -360, 360}};
   const char* names[2] = {"wind", "face"};
   int n = 16000;
-  double* y = malloc(n * sizeof *y), *work = malloc(n * sizeof *work), x[2], u[3];
+  double *y = malloc(n * sizeof *y), *work = malloc(n * sizeof *work), x[2], u[3];
   double width[2];
   for (int i = 0; i < n; i++) {
     ur_mc_inputs(3, (uint64_t)i, 2, names, d, x, u);
@@ -191,9 +198,9 @@ static void narrows(void** state) {
    equally likely and e ~ N(0, 1): S3 = 2.25 / 3.25; a constant input: 0 */
 static void first_order(void** state) {
   int n = 20000;
-  double* x1 = malloc(n * sizeof(double)), *x2 = malloc(n * sizeof(double));
-  double* x3 = malloc(n * sizeof(double)), *y = malloc(n * sizeof(double));
-  double* y3 = malloc(n * sizeof(double)), *k = malloc(n * sizeof(double));
+  double *x1 = malloc(n * sizeof(double)), *x2 = malloc(n * sizeof(double));
+  double *x3 = malloc(n * sizeof(double)), *y = malloc(n * sizeof(double));
+  double *y3 = malloc(n * sizeof(double)), *k = malloc(n * sizeof(double));
   urDist u = {urDIST_UNIFORM, 0, 1, 0, 1}, b = {urDIST_DISCRETE, 0, 0, 0, 1, 2, {0, 1}, {0.5, 0.5}};
   urDist e = {urDIST_NORMAL, 0, 1, -INFINITY, INFINITY};
   for (int i = 0; i < n; i++) {
@@ -257,15 +264,9 @@ static void lattice(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(branches),
-    cmocka_unit_test(outcomes),
-    cmocka_unit_test(quantiles),
-    cmocka_unit_test(inputs),
-    cmocka_unit_test(stats),
-    cmocka_unit_test(narrows),
-    cmocka_unit_test(first_order),
-    cmocka_unit_test(ratio),
-    cmocka_unit_test(lattice),
+      cmocka_unit_test(branches),    cmocka_unit_test(outcomes), cmocka_unit_test(quantiles),
+      cmocka_unit_test(inputs),      cmocka_unit_test(stats),    cmocka_unit_test(narrows),
+      cmocka_unit_test(first_order), cmocka_unit_test(ratio),    cmocka_unit_test(lattice),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -13,8 +13,8 @@ static void known_answers(void** state) {
   static const uint32_t ctr[3][4] = {{0, 0, 0, 0},
                                      {0xffffffffu, 0xffffffffu, 0xffffffffu, 0xffffffffu},
                                      {0x243f6a88u, 0x85a308d3u, 0x13198a2eu, 0x03707344u}};
-  static const uint32_t key[3][2] = {{0, 0}, {0xffffffffu, 0xffffffffu},
-                                     {0xa4093822u, 0x299f31d0u}};
+  static const uint32_t key[3][2] = {
+      {0, 0}, {0xffffffffu, 0xffffffffu}, {0xa4093822u, 0x299f31d0u}};
   static const uint32_t want[3][4] = {{0x6627e8d5u, 0xe169c58du, 0xbc57ac4cu, 0x9b00dbd8u},
                                       {0x408f276du, 0x41c83b0eu, 0xa20bc7c6u, 0x6d5451fdu},
                                       {0xd16cfe09u, 0x94fdccebu, 0x5001e420u, 0x24126ea1u}};
@@ -50,8 +50,8 @@ static void uniforms(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(known_answers),
-    cmocka_unit_test(uniforms),
+      cmocka_unit_test(known_answers),
+      cmocka_unit_test(uniforms),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

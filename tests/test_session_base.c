@@ -16,8 +16,10 @@ static void shortest(void** state) {
   (void)state;
   char b[64];
   static const double v[] = {0.05, 0.1 + 0.2, 111457.5, 1.0 / 3, 27000, 1e-5, 6, -0.35, 1e300};
-  static const char* const want[] = {"0.05", "0.30000000000000004", "111457.5",
-                                     "0.3333333333333333", "27000", "1e-05", "6", "-0.35",
+  static const char* const want[] = {"0.05",     "0.30000000000000004",
+                                     "111457.5", "0.3333333333333333",
+                                     "27000",    "1e-05",
+                                     "6",        "-0.35",
                                      "1e+300"};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) {
     ura_num_shortest(b, sizeof b, v[i]);
@@ -29,15 +31,15 @@ static void shortest(void** state) {
 static void units(void** state) {
   uraCtx* c = *state;
   char b[64];
-  ura_model_value_text(c, "bag_p0", 1.1 * 101325, b, sizeof b);   /* 111457.50000000001 Pa */
+  ura_model_value_text(c, "bag_p0", 1.1 * 101325, b, sizeof b); /* 111457.50000000001 Pa */
   assert_string_equal(b, "1.1 atm");
   ura_model_value_text(c, "bag_p0", 120000, b, sizeof b);
-  assert_string_equal(b, "120 kPa");                                /* shortest; first on a tie */
-  ura_model_value_text(c, "thorax_k", 27000, b, sizeof b);          /* N/m: no shorter unit */
+  assert_string_equal(b, "120 kPa");                       /* shortest; first on a tie */
+  ura_model_value_text(c, "thorax_k", 27000, b, sizeof b); /* N/m: no shorter unit */
   assert_string_equal(b, "27000 N/m");
   ura_model_value_text(c, "foam_t", 0.035, b, sizeof b);
   assert_string_equal(b, "35 mm");
-  ura_model_value_text(c, "bag_kappa", 2.5, b, sizeof b);           /* no unit */
+  ura_model_value_text(c, "bag_kappa", 2.5, b, sizeof b); /* no unit */
   assert_string_equal(b, "2.5");
 }
 
@@ -65,16 +67,20 @@ static void minimal(void** state) {
   uraCtx* c = *state;
   /* the defaults: nothing but reset and the case */
   char* s = session(c);
-  assert_string_equal(s, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n"
-                         "reset\ncase A\n");
+  assert_string_equal(s,
+                      "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n"
+                      "reset\ncase A\n");
   free(s);
   /* A1's own bag_p0 (1.1 atm) is the case's: not written; threads and output never */
-  run_rc(c, "case A1; set wind 6; set threads 2; set output x.png; set terminal png; "
-            "set thorax_k 27 kN/m; set hic_window 0.036; set step 0.1", 0);
+  run_rc(c,
+         "case A1; set wind 6; set threads 2; set output x.png; set terminal png; "
+         "set thorax_k 27 kN/m; set hic_window 0.036; set step 0.1",
+         0);
   s = session(c);
-  assert_string_equal(s, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n"
-                         "reset\ncase A1\nset wind 6\nset step 0.1\nset terminal \"png\"\n"
-                         "set hic_window 0.036\nset thorax_k 27000 N/m\n");
+  assert_string_equal(s,
+                      "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n"
+                      "reset\ncase A1\nset wind 6\nset step 0.1\nset terminal \"png\"\n"
+                      "set hic_window 0.036\nset thorax_k 27000 N/m\n");
   free(s);
   /* a user value that differs from the case's */
   run_rc(c, "set bag_p0 1.2 atm", 0);
@@ -86,8 +92,10 @@ static void minimal(void** state) {
 /* the replay recreates what show prints (threads and output aside: they are not state) */
 static void replays(void** state) {
   uraCtx* c = *state;
-  run_rc(c, "case B; set wind 4; set face 30; set bag_p0 1.15 atm; set speed 9.5; "
-            "set winds 0,5; set tau top; set format csv; set pager off", 0);
+  run_rc(c,
+         "case B; set wind 4; set face 30; set bag_p0 1.15 atm; set speed 9.5; "
+         "set winds 0,5; set tau top; set format csv; set pager off",
+         0);
   char* s = session(c);
   char* before = shown(c);
   char path[] = "/tmp/uasrisk-test-session-XXXXXX";
@@ -110,10 +118,10 @@ static void replays(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(shortest),
-    cmocka_unit_test_setup_teardown(units, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(minimal, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(replays, ctx_setup, ctx_teardown),
+      cmocka_unit_test(shortest),
+      cmocka_unit_test_setup_teardown(units, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(minimal, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(replays, ctx_setup, ctx_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,9 +12,9 @@
 static void distance(void** state) {
   (void)state;
   assert_int_equal(ura_edit_distance("wind", "wind"), 0);
-  assert_int_equal(ura_edit_distance("wnd", "wind"), 1);        /* a letter left out */
-  assert_int_equal(ura_edit_distance("wimd", "wind"), 1);       /* one wrong */
-  assert_int_equal(ura_edit_distance("iwnd", "wind"), 1);       /* two swapped */
+  assert_int_equal(ura_edit_distance("wnd", "wind"), 1);  /* a letter left out */
+  assert_int_equal(ura_edit_distance("wimd", "wind"), 1); /* one wrong */
+  assert_int_equal(ura_edit_distance("iwnd", "wind"), 1); /* two swapped */
   assert_int_equal(ura_edit_distance("", "abc"), 3);
   assert_int_equal(ura_edit_distance("kitten", "sitting"), 3);
 }
@@ -48,7 +48,7 @@ static void keywords(void** state) {
   ura_suggest_init(&s, "grdi");
   ura_suggest_keywords(&s, "pof|grid|history [SIGNAL...|all]|sweep [wind|face]");
   assert_string_equal(s.best, "grid");
-  ura_suggest_init(&s, "al");                  /* inside brackets: not a keyword */
+  ura_suggest_init(&s, "al"); /* inside brackets: not a keyword */
   ura_suggest_keywords(&s, "pof|grid|history [SIGNAL...|all]");
   assert_string_equal(s.best, "");
 }
@@ -57,12 +57,13 @@ static void keywords(void** state) {
 static void messages(void** state) {
   uraCtx* c = *state;
   run_rc(c, "set wnd 5", -1);
-  assert_string_equal(c->err, "set: unknown parameter 'wnd' (did you mean 'wind'?); 'show' lists "
+  assert_string_equal(c->err,
+                      "set: unknown parameter 'wnd' (did you mean 'wind'?); 'show' lists "
                       "the parameters");
   run_rc(c, "show bag_p1", -1);
-  assert_non_null(strstr(c->err, "(did you mean 'bag_p0'?)"));   /* a model parameter */
+  assert_non_null(strstr(c->err, "(did you mean 'bag_p0'?)")); /* a model parameter */
   run_rc(c, "set hic_windw 0.036", -1);
-  assert_non_null(strstr(c->err, "(did you mean 'hic_window'?)"));   /* an injury setting */
+  assert_non_null(strstr(c->err, "(did you mean 'hic_window'?)")); /* an injury setting */
   run_rc(c, "imapct 0 0", -1);
   assert_non_null(strstr(c->err, "unknown command 'imapct' (did you mean 'impact'?)"));
   run_rc(c, "help shw", -1);
@@ -93,11 +94,11 @@ static void channels(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(distance),
-    cmocka_unit_test(nearest),
-    cmocka_unit_test(keywords),
-    cmocka_unit_test_setup_teardown(messages, ctx_setup, ctx_teardown),
-    cmocka_unit_test_setup_teardown(channels, ctx_setup, ctx_teardown),
+      cmocka_unit_test(distance),
+      cmocka_unit_test(nearest),
+      cmocka_unit_test(keywords),
+      cmocka_unit_test_setup_teardown(messages, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(channels, ctx_setup, ctx_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -86,9 +86,13 @@ static void printable(void** state) {
   char buf[64];
   ura_printable("set \033[2J\a\x7f", buf, sizeof buf);
   assert_string_equal(buf, "set \\x1b[2J\\x07\\x7f");
-  ura_printable("\xc2\x9b" "31m \xc3\xa9t\xc3\xa9 \xe2\x82\xac", buf, sizeof buf);
+  ura_printable(
+      "\xc2\x9b"
+      "31m \xc3\xa9t\xc3\xa9 \xe2\x82\xac",
+      buf, sizeof buf);
   assert_string_equal(buf, "\\xc2\\x9b31m \xc3\xa9t\xc3\xa9 \xe2\x82\xac");
-  ura_printable("\xff\xc3(\xed\xa0\x80\xc0\xaf", buf, sizeof buf);   /* invalid, surrogate, overlong */
+  ura_printable("\xff\xc3(\xed\xa0\x80\xc0\xaf", buf,
+                sizeof buf); /* invalid, surrogate, overlong */
   assert_string_equal(buf, "\\xff\\xc3(\\xed\\xa0\\x80\\xc0\\xaf");
   assert_int_equal(ura_printable("ab\ncd", buf, 7), 6);
   assert_string_equal(buf, "ab\\x0a");
@@ -104,7 +108,9 @@ static void printable(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(lines), cmocka_unit_test(refused), cmocka_unit_test(printable),
+      cmocka_unit_test(lines),
+      cmocka_unit_test(refused),
+      cmocka_unit_test(printable),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -44,8 +44,10 @@ static void lists(void** state) {
   assert_string_equal(s, "dist [A|bb|\n    ccc|\n    dddd]\n");
   free(s);
   /* no line longer than the width when there are places to break */
-  s = wrapped("  ", "     ", "case,wind,speed,angle,planform,mtow,gliding,pof_rcc,pof_bc,pof_awke "
-              "and more words after it", 30);
+  s = wrapped("  ", "     ",
+              "case,wind,speed,angle,planform,mtow,gliding,pof_rcc,pof_bc,pof_awke "
+              "and more words after it",
+              30);
   for (char* l = s; *l; l = strchr(l, '\n') + 1) assert_true(strcspn(l, "\n") <= 30);
   free(s);
 }
@@ -69,9 +71,9 @@ static void fields(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(words),
-    cmocka_unit_test(lists),
-    cmocka_unit_test(fields),
+      cmocka_unit_test(words),
+      cmocka_unit_test(lists),
+      cmocka_unit_test(fields),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -13,28 +13,28 @@
 extern "C" {
 #endif
 
-#define urMAXCURVE 48              /* points in a tabulated curve */
-#define urMAXDEGREE 20             /* largest superellipsoid degree */
+#define urMAXCURVE  48 /* points in a tabulated curve */
+#define urMAXDEGREE 20 /* largest superellipsoid degree */
 
 /* ---- geometry ---- */
 
 typedef struct {
-  double c[3];                     /* centre, world */
-  double R[9];                     /* orientation, row-major, local -> world */
-  double r[3];                     /* semi-axes along the local axes */
-  double p;                        /* degree: |x/a|^p + |y/b|^p + |z/c|^p <= 1 in the local
+  double c[3]; /* centre, world */
+  double R[9]; /* orientation, row-major, local -> world */
+  double r[3]; /* semi-axes along the local axes */
+  double p;    /* degree: |x/a|^p + |y/b|^p + |z/c|^p <= 1 in the local
                                       frame; 0 or 2: the ellipsoid (a zeroed struct is one),
                                       else in (2, urMAXDEGREE]: a superellipsoid, flat-faced
                                       with rounded edges (the box as p grows) */
 } urEllipsoid;
 
 typedef struct {
-  double g;                        /* signed depth: > 0 overlap, < 0 -(separation distance) */
-  double n[3];                     /* unit normal from A towards B (plane: the plane normal) */
-  double pa[3];                    /* deepest point of A (support point of A along n) */
-  double pb[3];                    /* deepest point of B (support point of B along -n) */
-  double p[3];                     /* contact point: midpoint of pa and pb */
-  int iters;                       /* iterations used (ellipsoid pairs) */
+  double g;     /* signed depth: > 0 overlap, < 0 -(separation distance) */
+  double n[3];  /* unit normal from A towards B (plane: the plane normal) */
+  double pa[3]; /* deepest point of A (support point of A along n) */
+  double pb[3]; /* deepest point of B (support point of B along -n) */
+  double p[3];  /* contact point: midpoint of pa and pb */
+  int iters;    /* iterations used (ellipsoid pairs) */
 } urGeomContact;
 
 /* Ellipsoid (or superellipsoid) against the half-space {x : n.x <= d} (n unit, pointing out
@@ -72,8 +72,8 @@ double ur_cap_volume(const urEllipsoid* e, const double n[3], double d);
 /* ---- force laws ---- */
 
 typedef struct {
-  int n;                           /* number of points; 0 = absent */
-  double x[urMAXCURVE];            /* ascending */
+  int n;                /* number of points; 0 = absent */
+  double x[urMAXCURVE]; /* ascending */
   double y[urMAXCURVE];
 } urCurve;
 
@@ -81,44 +81,44 @@ typedef struct {
 double ur_curve_eval(const urCurve* c, double x);
 
 typedef enum {
-  urLAW_HERTZ = 0,                 /* Hertz, optional Jackson-Green plastic loading + Brake unloading */
-  urLAW_TABLE,                     /* tabulated force-penetration loading/unloading with hysteresis */
-  urLAW_FOAM                       /* section area(penetration) x stress(strain), load/unload */
+  urLAW_HERTZ = 0, /* Hertz, optional Jackson-Green plastic loading + Brake unloading */
+  urLAW_TABLE,     /* tabulated force-penetration loading/unloading with hysteresis */
+  urLAW_FOAM       /* section area(penetration) x stress(strain), load/unload */
 } urLawType;
 
 typedef struct {
   urLawType type;
   /* Hertz / Brake */
-  double estar;                    /* effective modulus E*, Pa */
-  double radius;                   /* effective radius, m */
-  double sy;                       /* yield strength of the softer body, Pa */
-  double nu;                       /* Poisson ratio of the yielding body */
-  int plastic;                     /* 1: JG loading beyond yield and Brake elastic unloading */
+  double estar;  /* effective modulus E*, Pa */
+  double radius; /* effective radius, m */
+  double sy;     /* yield strength of the softer body, Pa */
+  double nu;     /* Poisson ratio of the yielding body */
+  int plastic;   /* 1: JG loading beyond yield and Brake elastic unloading */
   /* tabulated (urLAW_TABLE): force (N) against penetration (m) */
   urCurve load;
-  urCurve unload;                  /* empty: unload along the loading curve (elastic) */
+  urCurve unload; /* empty: unload along the loading curve (elastic) */
   /* foam (urLAW_FOAM) */
-  urCurve stress;                  /* loading stress (Pa) against strain */
-  double thickness;                /* foam thickness, m: strain = depth / thickness */
-  double unload_r;                 /* residual strain as a fraction of the maximum strain */
-  double unload_p;                 /* exponent of the unloading curve */
-  double lock;                     /* strain at which the foam is solid (densified), (0, 1); 0:
+  urCurve stress;   /* loading stress (Pa) against strain */
+  double thickness; /* foam thickness, m: strain = depth / thickness */
+  double unload_r;  /* residual strain as a fraction of the maximum strain */
+  double unload_p;  /* exponent of the unloading curve */
+  double lock;      /* strain at which the foam is solid (densified), (0, 1); 0:
                                       none (the stress curve alone, extrapolated beyond its end) */
-  double backing_k;                /* Hertz constant K (N/m^1.5) of the rigid backing the solid
+  double backing_k; /* Hertz constant K (N/m^1.5) of the rigid backing the solid
                                       foam rests on: F += K (d - lock thickness)^1.5 beyond lock */
   /* all laws */
-  double damping;                  /* linear viscous term, N s/m, acts while in contact */
-  double chi;                      /* Hunt-Crossley-type factor, s/m: F *= 1 + chi*rate */
-  double mu;                       /* Coulomb friction coefficient */
-  double v_eps;                    /* friction regularisation speed, m/s */
+  double damping; /* linear viscous term, N s/m, acts while in contact */
+  double chi;     /* Hunt-Crossley-type factor, s/m: F *= 1 + chi*rate */
+  double mu;      /* Coulomb friction coefficient */
+  double v_eps;   /* friction regularisation speed, m/s */
 } urLaw;
 
 /* per-run, per-pair history (lives in the run data, never in the model) */
 typedef struct {
-  int touching;                    /* the law gave an elastic force at the last commit */
-  double dmax;                     /* largest depth reached */
-  double fmax;                     /* elastic (rate-free) force at dmax */
-  double dres;                     /* residual depth after unloading (permanent set) */
+  int touching; /* the law gave an elastic force at the last commit */
+  double dmax;  /* largest depth reached */
+  double fmax;  /* elastic (rate-free) force at dmax */
+  double dres;  /* residual depth after unloading (permanent set) */
 } urLawState;
 
 /* the Hertz radius of ellipsoids a and b (NULL: the ground plane) from their curvature at the
@@ -127,7 +127,7 @@ typedef struct {
    (contact_curv.c). A Hertz law whose radius is urHERTZ_CURVATURE takes it so at every contact
    (engine_contact.c). */
 #define urHERTZ_CURVATURE (-1.0)
-#define urHERTZ_RMAX 10.0
+#define urHERTZ_RMAX      10.0
 double ur_contact_radius(const urEllipsoid* a, const urEllipsoid* b, const urGeomContact* gc);
 
 /* fill a Hertz law from the two materials (R2 = 0 means a flat) */
@@ -164,10 +164,10 @@ void ur_friction(const urLaw* law, double fn, const double vt[3], double out[3])
 /* ---- uniform-pressure airbag gas law ---- */
 
 typedef struct {
-  double v0;                       /* inflated volume, m^3 */
-  double p0;                       /* initial absolute pressure, Pa */
-  double patm;                     /* ambient pressure, Pa */
-  double gamma;                    /* ratio of specific heats */
+  double v0;    /* inflated volume, m^3 */
+  double p0;    /* initial absolute pressure, Pa */
+  double patm;  /* ambient pressure, Pa */
+  double gamma; /* ratio of specific heats */
 } urGas;
 
 /* absolute pressure after the volume has dropped by dv (adiabatic, closed: P V^gamma = const) */

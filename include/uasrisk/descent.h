@@ -10,24 +10,24 @@ extern "C" {
 #endif
 
 typedef struct {
-  double altitude;                 /* start height above ground, m */
-  double mass;                     /* system mass, kg */
-  double area_drone;               /* drone reference area A_S^d, m^2 */
-  double cd_drone;                 /* drone drag coefficient C_D^d */
-  double area_chute;               /* parachute reference area A_S^p, m^2 (0: no parachute) */
-  double cd_chute;                 /* parachute drag coefficient C_D^p */
-  double rho;                      /* air density, kg/m^3 */
-  double g;                        /* gravitational acceleration, m/s^2 */
-  double wind;                     /* horizontal wind speed, m/s (constant) */
+  double altitude;   /* start height above ground, m */
+  double mass;       /* system mass, kg */
+  double area_drone; /* drone reference area A_S^d, m^2 */
+  double cd_drone;   /* drone drag coefficient C_D^d */
+  double area_chute; /* parachute reference area A_S^p, m^2 (0: no parachute) */
+  double cd_chute;   /* parachute drag coefficient C_D^p */
+  double rho;        /* air density, kg/m^3 */
+  double g;          /* gravitational acceleration, m/s^2 */
+  double wind;       /* horizontal wind speed, m/s (constant) */
 } urDescentParams;
 
 typedef struct {
-  double speed;                    /* impact speed |v|, m/s */
-  double angle;                    /* descent angle psi from the horizontal, deg */
-  double vh;                       /* horizontal ground speed at impact, m/s */
-  double vz;                       /* vertical speed at impact (positive down), m/s */
-  double time;                     /* time of fall, s */
-  double drift;                    /* horizontal distance travelled, m */
+  double speed; /* impact speed |v|, m/s */
+  double angle; /* descent angle psi from the horizontal, deg */
+  double vh;    /* horizontal ground speed at impact, m/s */
+  double vz;    /* vertical speed at impact (positive down), m/s */
+  double time;  /* time of fall, s */
+  double drift; /* horizontal distance travelled, m */
 } urDescentResult;
 
 /* Table 1 values of the paper with the parachute deployed (case B) */

@@ -34,56 +34,56 @@
 extern "C" {
 #endif
 
-#define urNAMELEN     32           /* bytes in a name, including the terminating 0 */
-#define urMAXBAGTGT   32           /* target ellipsoids per airbag */
-#define urMSGLEN      160          /* bytes in error / status messages */
+#define urNAMELEN   32  /* bytes in a name, including the terminating 0 */
+#define urMAXBAGTGT 32  /* target ellipsoids per airbag */
+#define urMSGLEN    160 /* bytes in error / status messages */
 
 //---------------------------------- enums ---------------------------------------------------------
 
 typedef enum {
-  urJNT_FREE = 0,                  /* 6 dof: qpos = CoM position in parent (3) + quat (4);
+  urJNT_FREE = 0,  /* 6 dof: qpos = CoM position in parent (3) + quat (4);
                                       qvel = CoM velocity in parent frame (3) + omega in body (3) */
-  urJNT_FIXED,                     /* 0 dof */
-  urJNT_REVOLUTE,                  /* 1 dof: angle about axis[0] (body frame), rad */
-  urJNT_UNIVERSAL,                 /* 2 dof: R = Rot(axis[0], q0) Rot(axis[1], q1) (Cardan) */
-  urJNT_SPHERICAL,                 /* 3 dof: qpos = quat (4), qvel = relative omega in body (3) */
-  urJNT_PRISMATIC                  /* 1 dof: translation along axis[0] (body frame), m */
+  urJNT_FIXED,     /* 0 dof */
+  urJNT_REVOLUTE,  /* 1 dof: angle about axis[0] (body frame), rad */
+  urJNT_UNIVERSAL, /* 2 dof: R = Rot(axis[0], q0) Rot(axis[1], q1) (Cardan) */
+  urJNT_SPHERICAL, /* 3 dof: qpos = quat (4), qvel = relative omega in body (3) */
+  urJNT_PRISMATIC  /* 1 dof: translation along axis[0] (body frame), m */
 } urJointType;
 
 typedef enum {
-  urINT_EULER = 0,                 /* semi-implicit (symplectic) Euler: v += dt a; q += dt v */
-  urINT_RK4                        /* classical Runge-Kutta 4 (accuracy cross-check) */
+  urINT_EULER = 0, /* semi-implicit (symplectic) Euler: v += dt a; q += dt v */
+  urINT_RK4        /* classical Runge-Kutta 4 (accuracy cross-check) */
 } urIntegrator;
 
 typedef enum {
-  urSENS_ACCEL = 0,                /* 3: kinematic acceleration of a body point (gravity not
+  urSENS_ACCEL = 0, /* 3: kinematic acceleration of a body point (gravity not
                                       included: 0 at rest), world frame, m/s^2 */
-  urSENS_JOINTLOAD,                /* 6: force (3) and moment (3) that the parent exerts on the
+  urSENS_JOINTLOAD, /* 6: force (3) and moment (3) that the parent exerts on the
                                       child through the joint, at the joint anchor, in the child
                                       frame rotated by quat, N, N m (all loads: restraint, contact
                                       transmitted, inertial); a head resting on its neck reads
                                       Fz = +m g, i.e. SAE J211 tension-positive Fz is -Fz here */
-  urSENS_JOINTPOS,                 /* 1: joint coordinate qpos[qadr + dof] (rad or m) */
-  urSENS_JOINTVEL,                 /* 1: joint velocity dof (rad/s or m/s) */
-  urSENS_CONTACT,                  /* 3: normal force N, penetration m, friction force N */
-  urSENS_AIRBAG,                   /* 2: absolute pressure Pa, gas volume m^3 */
-  urSENS_BODYPOS,                  /* 3: world position of a body point, m */
-  urSENS_BODYVEL                   /* 3: world velocity of a body point, m/s */
+  urSENS_JOINTPOS,  /* 1: joint coordinate qpos[qadr + dof] (rad or m) */
+  urSENS_JOINTVEL,  /* 1: joint velocity dof (rad/s or m/s) */
+  urSENS_CONTACT,   /* 3: normal force N, penetration m, friction force N */
+  urSENS_AIRBAG,    /* 2: absolute pressure Pa, gas volume m^3 */
+  urSENS_BODYPOS,   /* 3: world position of a body point, m */
+  urSENS_BODYVEL    /* 3: world velocity of a body point, m/s */
 } urSensorType;
 
 typedef enum {
-  urSTAT_OK = 0,                   /* running (or not started) */
-  urSTAT_SEPARATED = 1,            /* ended: contact over for opt.t_quiet */
-  urSTAT_SETTLED = 2,              /* ended: kinetic energy below opt.ke_settle for opt.t_quiet */
-  urSTAT_TMAX = 3,                 /* ended: opt.tmax reached */
-  urSTAT_NONFINITE = -1,           /* failed: NaN or Inf in the state */
-  urSTAT_EXPLODE = -2,             /* failed: a velocity beyond opt.vmax */
-  urSTAT_BADARG = -3,              /* failed: bad call (message says which) */
-  urSTAT_STOPPED = -4              /* failed: stopped on request (opt.stop, e.g. Ctrl-C) */
+  urSTAT_OK = 0,         /* running (or not started) */
+  urSTAT_SEPARATED = 1,  /* ended: contact over for opt.t_quiet */
+  urSTAT_SETTLED = 2,    /* ended: kinetic energy below opt.ke_settle for opt.t_quiet */
+  urSTAT_TMAX = 3,       /* ended: opt.tmax reached */
+  urSTAT_NONFINITE = -1, /* failed: NaN or Inf in the state */
+  urSTAT_EXPLODE = -2,   /* failed: a velocity beyond opt.vmax */
+  urSTAT_BADARG = -3,    /* failed: bad call (message says which) */
+  urSTAT_STOPPED = -4    /* failed: stopped on request (opt.stop, e.g. Ctrl-C) */
 } urStatus;
 
 typedef enum {
-  urBAG_UNIFORM = 0                /* analytic uniform-pressure bag (contact sheet 4.2); a membrane
+  urBAG_UNIFORM = 0 /* analytic uniform-pressure bag (contact sheet 4.2); a membrane
                                       model may be added behind the same interface */
 } urAirbagType;
 
@@ -97,103 +97,103 @@ typedef enum {
    the linear part is conservative; damping acts on the relative angular velocity, stop damping
    is not applied. Free joints take no restraint. */
 typedef struct {
-  int active;                      /* 0: no restraint on this dof */
-  double k;                        /* linear stiffness, N m/rad or N/m */
-  double sat;                      /* > 0: k x saturates at this force, as sat tanh(k x / sat) */
-  urCurve load;                    /* loading curve (x -> generalised force); if all x >= 0 it is
+  int active;          /* 0: no restraint on this dof */
+  double k;            /* linear stiffness, N m/rad or N/m */
+  double sat;          /* > 0: k x saturates at this force, as sat tanh(k x / sat) */
+  urCurve load;        /* loading curve (x -> generalised force); if all x >= 0 it is
                                       extended odd-symmetrically to x < 0 */
-  urCurve unload;                  /* optional unloading curve: scaled through (xmax, load(xmax)) */
-  double c;                        /* viscous damping, N m s/rad or N s/m */
-  double lo, hi;                   /* end stops (lo < hi; lo == hi: none), rad or m */
-  double kstop, cstop;             /* stop stiffness and damping beyond lo/hi */
-  double x0;                       /* neutral position (deflection = q - x0) */
+  urCurve unload;      /* optional unloading curve: scaled through (xmax, load(xmax)) */
+  double c;            /* viscous damping, N m s/rad or N s/m */
+  double lo, hi;       /* end stops (lo < hi; lo == hi: none), rad or m */
+  double kstop, cstop; /* stop stiffness and damping beyond lo/hi */
+  double x0;           /* neutral position (deflection = q - x0) */
 } urRestraint;
 
 typedef struct {
-  char name[urNAMELEN];            /* body name */
-  char jname[urNAMELEN];           /* joint name (defaults to the body name) */
-  int parent;                      /* parent body, -1 = world */
-  int tree;                        /* root body of this body's tree */
-  int react;                       /* 1: its net force reaches a joint-load sensor (the sensed
+  char name[urNAMELEN];  /* body name */
+  char jname[urNAMELEN]; /* joint name (defaults to the body name) */
+  int parent;            /* parent body, -1 = world */
+  int tree;              /* root body of this body's tree */
+  int react;             /* 1: its net force reaches a joint-load sensor (the sensed
                                       body or one below it): ur_reactions computes it (compiled) */
-  double pos[3];                   /* body frame origin (= joint anchor) in the parent frame, m */
-  double quat[4];                  /* body frame orientation in the parent frame at q = 0 */
-  double mass;                     /* kg */
-  double com[3];                   /* centre of mass in the body frame, m */
-  double inertia[9];               /* inertia about the CoM in body axes, kg m^2 (3x3) */
-  double gravity;                  /* 1: gravity acts, 0: compensated (e.g. parachute-borne) */
-  urJointType jtype;               /* joint to the parent */
-  double axis[2][3];               /* joint axes in the body frame (unit) */
-  int qadr, nq;                    /* first index and count in qpos */
-  int vadr, nv;                    /* first index and count in qvel */
-  urRestraint rst[3];              /* restraint per rotational/translational dof (not free) */
+  double pos[3];         /* body frame origin (= joint anchor) in the parent frame, m */
+  double quat[4];        /* body frame orientation in the parent frame at q = 0 */
+  double mass;           /* kg */
+  double com[3];         /* centre of mass in the body frame, m */
+  double inertia[9];     /* inertia about the CoM in body axes, kg m^2 (3x3) */
+  double gravity;        /* 1: gravity acts, 0: compensated (e.g. parachute-borne) */
+  urJointType jtype;     /* joint to the parent */
+  double axis[2][3];     /* joint axes in the body frame (unit) */
+  int qadr, nq;          /* first index and count in qpos */
+  int vadr, nv;          /* first index and count in qvel */
+  urRestraint rst[3];    /* restraint per rotational/translational dof (not free) */
   // compiled
-  double sinert[36];               /* spatial inertia at the body origin, body frame (6x6) */
-  double iinv[9];                  /* inverse of the inertia about the CoM (3x3) */
-  double bmat[9];                  /* rotation matrix of quat */
+  double sinert[36]; /* spatial inertia at the body origin, body frame (6x6) */
+  double iinv[9];    /* inverse of the inertia about the CoM (3x3) */
+  double bmat[9];    /* rotation matrix of quat */
 } urBody;
 
 typedef struct {
   char name[urNAMELEN];
-  int body;                        /* body it is attached to */
-  double pos[3];                   /* centre in the body frame, m */
-  double quat[4];                  /* orientation in the body frame */
-  double size[3];                  /* semi-axes, m */
-  double degree;                   /* 2: ellipsoid; > 2: superellipsoid (contact.h urEllipsoid.p) */
-  double rbound;                   /* bounding-sphere radius (max semi-axis for an ellipsoid), m */
-  double gmat[9];                  /* rotation matrix of quat (compiled) */
+  int body;       /* body it is attached to */
+  double pos[3];  /* centre in the body frame, m */
+  double quat[4]; /* orientation in the body frame */
+  double size[3]; /* semi-axes, m */
+  double degree;  /* 2: ellipsoid; > 2: superellipsoid (contact.h urEllipsoid.p) */
+  double rbound;  /* bounding-sphere radius (max semi-axis for an ellipsoid), m */
+  double gmat[9]; /* rotation matrix of quat (compiled) */
 } urGeom;
 
 typedef struct {
   char name[urNAMELEN];
-  int geom1;                       /* ellipsoid A */
-  int geom2;                       /* ellipsoid B, or -1 for the ground plane z = 0 */
-  urLaw law;                       /* force law (contact.h); foam uses the section area of A */
+  int geom1; /* ellipsoid A */
+  int geom2; /* ellipsoid B, or -1 for the ground plane z = 0 */
+  urLaw law; /* force law (contact.h); foam uses the section area of A */
 } urPair;
 
 typedef struct {
   char name[urNAMELEN];
   urAirbagType type;
-  int geom;                        /* bag ellipsoid (attached to the carrying body) */
-  urGas gas;                       /* gas law (contact.h) */
-  double kappa;                    /* volume-loss factor: dV = kappa * sum of cap volumes */
-  double thickness;                /* bag thickness: depth beyond it is ignored (bottoming), m */
-  double fabric_k;                 /* optional penalty/fabric stiffness on depth, N/m */
-  double fabric_c;                 /* optional damping on depth rate, N s/m */
-  double mu, v_eps;                /* friction on the targets (regularised Coulomb) */
+  int geom;         /* bag ellipsoid (attached to the carrying body) */
+  urGas gas;        /* gas law (contact.h) */
+  double kappa;     /* volume-loss factor: dV = kappa * sum of cap volumes */
+  double thickness; /* bag thickness: depth beyond it is ignored (bottoming), m */
+  double fabric_k;  /* optional penalty/fabric stiffness on depth, N/m */
+  double fabric_c;  /* optional damping on depth rate, N s/m */
+  double mu, v_eps; /* friction on the targets (regularised Coulomb) */
   int ntarget;
-  int target[urMAXBAGTGT];         /* ellipsoids that can indent the bag */
+  int target[urMAXBAGTGT]; /* ellipsoids that can indent the bag */
 } urAirbag;
 
 typedef struct {
   char name[urNAMELEN];
   urSensorType type;
-  int obj;                         /* body, joint (= body), pair or airbag id */
-  int dof;                         /* joint dof for JOINTPOS / JOINTVEL */
-  double pos[3];                   /* point in the body frame (ACCEL, BODYPOS, BODYVEL) */
-  double quat[4];                  /* output frame relative to the child frame (JOINTLOAD) */
-  int dim;                         /* number of values */
-  int adr;                         /* first index in sensordata */
+  int obj;        /* body, joint (= body), pair or airbag id */
+  int dof;        /* joint dof for JOINTPOS / JOINTVEL */
+  double pos[3];  /* point in the body frame (ACCEL, BODYPOS, BODYVEL) */
+  double quat[4]; /* output frame relative to the child frame (JOINTLOAD) */
+  int dim;        /* number of values */
+  int adr;        /* first index in sensordata */
 } urSensor;
 
 typedef struct {
   char name[urNAMELEN];
   double value;
-  char unit[urNAMELEN];            /* SI unit from its param line (N/m, Pa; "": none given) */
+  char unit[urNAMELEN]; /* SI unit from its param line (N/m, Pa; "": none given) */
 } urParam;
 
 /* the roles an impact needs, declared by the model's role statements (uasrisk-model(5)), and
    the drone's design handles; -1: not declared */
 typedef struct {
-  int drone;                       /* root body of the drone (free joint) */
-  int head;                        /* head ellipsoid: its top sets the start height, its centre
+  int drone;                     /* root body of the drone (free joint) */
+  int head;                      /* head ellipsoid: its top sets the start height, its centre
                                       is the aim point */
-  int head_acc, neck, head_pos;    /* sensors: head CG acceleration, upper-neck load, head CG */
-  int chest, abdomen;              /* sensors: thorax and abdomen deflections (optional) */
-  int mass_param, size_param;      /* parameters the drone tree is scaled by (role mass=$P,
+  int head_acc, neck, head_pos;  /* sensors: head CG acceleration, upper-neck load, head CG */
+  int chest, abdomen;            /* sensors: thorax and abdomen deflections (optional) */
+  int mass_param, size_param;    /* parameters the drone tree is scaled by (role mass=$P,
                                       size=$P) */
-  double mass0;                    /* the drone tree's total mass as written, kg (0: no drone) */
-  double mass_scale, size_scale;   /* the factors applied (1: as written) */
+  double mass0;                  /* the drone tree's total mass as written, kg (0: no drone) */
+  double mass_scale, size_scale; /* the factors applied (1: as written) */
 } urRoles;
 
 /* a case preset (preset statement): values for model parameters (SI) and workbench settings */
@@ -203,54 +203,54 @@ typedef struct {
   int n;
   char key[urMAXPRESET][urNAMELEN];
   double value[urMAXPRESET];
-  int param[urMAXPRESET];          /* index of a model parameter, or -1: a workbench setting */
+  int param[urMAXPRESET]; /* index of a model parameter, or -1: a workbench setting */
 } urPreset;
 
 typedef struct {
-  double dt;                       /* time step, s (default 1e-5) */
-  double gravity[3];               /* m/s^2 (default 0, 0, -9.81) */
-  urIntegrator integrator;         /* default urINT_EULER */
-  int implicit_damping;            /* Euler: linear joint-restraint damping taken at the new
+  double dt;               /* time step, s (default 1e-5) */
+  double gravity[3];       /* m/s^2 (default 0, 0, -9.81) */
+  urIntegrator integrator; /* default urINT_EULER */
+  int implicit_damping;    /* Euler: linear joint-restraint damping taken at the new
                                       velocity, (M + dt C) qacc = f (as MuJoCo); default 1 */
-  double sample_dt;                /* longest history sampling interval, s (default 1e-4: 10 kHz);
+  double sample_dt;        /* longest history sampling interval, s (default 1e-4: 10 kHz);
                                       rows every floor(sample_dt / dt) steps */
-  double tmax;                     /* maximum simulated time after the jump, s (default 0.2) */
-  double t_quiet;                  /* end when contact has been over this long, s (default 0.02) */
-  double t_clear;                  /* or over this long (<= t_quiet) with the projectile provably
+  double tmax;             /* maximum simulated time after the jump, s (default 0.2) */
+  double t_quiet;          /* end when contact has been over this long, s (default 0.02) */
+  double t_clear;          /* or over this long (<= t_quiet) with the projectile provably
                                       clear of the rest until t_quiet (default: t_quiet, off) */
-  double a_clear;                  /* relative acceleration bound of that proof, m/s^2 (100) */
-  double ke_settle;                /* or kinetic energy below this for t_quiet, J (default 1e-3) */
-  double vmax;                     /* failure beyond this joint speed, m/s or rad/s (default 1e4) */
-  double jump_margin;              /* free-flight jump stops this far from contact, m (1e-3) */
-  const _Atomic int* stop;         /* optional (not part of the model text): a step fails with
+  double a_clear;          /* relative acceleration bound of that proof, m/s^2 (100) */
+  double ke_settle;        /* or kinetic energy below this for t_quiet, J (default 1e-3) */
+  double vmax;             /* failure beyond this joint speed, m/s or rad/s (default 1e4) */
+  double jump_margin;      /* free-flight jump stops this far from contact, m (1e-3) */
+  const _Atomic int* stop; /* optional (not part of the model text): a step fails with
                                       urSTAT_STOPPED while *stop != 0 (an interrupt flag) */
 } urOption;
 
 typedef struct {
   // sizes
   int nbody, ngeom, npair, nbag, nsensor, nparam;
-  int nq, nv;                      /* generalised coordinates and velocities */
-  int nsensordata;                 /* sum of sensor dims */
-  int compiled;                    /* 1 after ur_model_compile succeeded */
-  int cap[6];                      /* builder capacities (internal) */
+  int nq, nv;      /* generalised coordinates and velocities */
+  int nsensordata; /* sum of sensor dims */
+  int compiled;    /* 1 after ur_model_compile succeeded */
+  int cap[6];      /* builder capacities (internal) */
   urOption opt;
   // elements
-  urBody* body;                    /* nbody */
-  urGeom* geom;                    /* ngeom */
-  urPair* pair;                    /* npair */
-  urAirbag* bag;                   /* nbag */
-  urSensor* sensor;                /* nsensor */
-  urParam* param;                  /* nparam */
-  urRoles roles;                   /* role statements */
-  urPreset* preset;                /* npreset, in the order of the text */
+  urBody* body;     /* nbody */
+  urGeom* geom;     /* ngeom */
+  urPair* pair;     /* npair */
+  urAirbag* bag;    /* nbag */
+  urSensor* sensor; /* nsensor */
+  urParam* param;   /* nparam */
+  urRoles roles;    /* role statements */
+  urPreset* preset; /* npreset, in the order of the text */
   int npreset;
-  double* qpos0;                   /* nq: reference configuration */
+  double* qpos0; /* nq: reference configuration */
   // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
   // an active restraint, with a load curve (its extremes are tracked), whose reaction is needed
   // (react)
   int *grav, *rstb, *hyst, *reactb;
   int ngrav, nrstb, nhyst, nreactb;
-  char err[urMSGLEN];              /* last builder / compile error */
+  char err[urMSGLEN]; /* last builder / compile error */
 } urModel;
 
 //---------------------------------- data ----------------------------------------------------------
@@ -259,101 +259,101 @@ typedef struct {
    first member's C11 alignment aligns the whole struct to 64 bytes); a pair culled by its
    bounding spheres is not touched (its depth is in urData.pdepth) */
 typedef struct {
-  _Alignas(64) double rate;        /* penetration rate, m/s */
-  double fn;                       /* normal force, N */
-  double ft;                       /* friction force magnitude, N */
-  double area;                     /* section area used (foam), m^2 */
-  int active;                      /* 1 if a force acts */
-  urLawState ls;                   /* law history (committed on accepted steps) */
-  double u[3];                     /* warm-start direction */
-  double n[3];                     /* normal A -> B, world */
-  double p[3];                     /* contact point, world, m */
-  double radius;                   /* Hertz radius from the shapes' curvature at the contact, m
+  _Alignas(64) double rate; /* penetration rate, m/s */
+  double fn;                /* normal force, N */
+  double ft;                /* friction force magnitude, N */
+  double area;              /* section area used (foam), m^2 */
+  int active;               /* 1 if a force acts */
+  urLawState ls;            /* law history (committed on accepted steps) */
+  double u[3];              /* warm-start direction */
+  double n[3];              /* normal A -> B, world */
+  double p[3];              /* contact point, world, m */
+  double radius;            /* Hertz radius from the shapes' curvature at the contact, m
                                       (a law with urHERTZ_CURVATURE; else unused) */
 } urPairData;
 
 typedef struct {
-  double pressure;                 /* absolute pressure, Pa */
-  double volume;                   /* gas volume, m^3 */
-  double dv;                       /* volume loss, m^3 */
-  double force;                    /* sum of normal forces on the targets, N */
-  double depth[urMAXBAGTGT];       /* depth of each target, m (< 0 separated) */
-  double rate[urMAXBAGTGT];        /* depth rate of each target, m/s */
-  double ftgt[urMAXBAGTGT];        /* normal force on each target, N */
-  double u[urMAXBAGTGT][3];        /* warm-start directions */
-  int active;                      /* 1 if some target indents the bag */
+  double pressure;           /* absolute pressure, Pa */
+  double volume;             /* gas volume, m^3 */
+  double dv;                 /* volume loss, m^3 */
+  double force;              /* sum of normal forces on the targets, N */
+  double depth[urMAXBAGTGT]; /* depth of each target, m (< 0 separated) */
+  double rate[urMAXBAGTGT];  /* depth rate of each target, m/s */
+  double ftgt[urMAXBAGTGT];  /* normal force on each target, N */
+  double u[urMAXBAGTGT][3];  /* warm-start directions */
+  int active;                /* 1 if some target indents the bag */
 } urBagData;
 
 typedef struct {
   // state
-  double time;                     /* simulated time, s */
-  double* qpos;                    /* nq */
-  double* qvel;                    /* nv */
-  double* qacc;                    /* nv: accelerations from the last ur_forward */
-  double* qfrc;                    /* nv: passive generalised forces (restraints) */
-  double* rst;                     /* nv x 2: restraint hysteresis (max +, max - deflection) */
-  double* rkin;                    /* nbody x 12: spherical restraints' deflection (rotation
+  double time;  /* simulated time, s */
+  double* qpos; /* nq */
+  double* qvel; /* nv */
+  double* qacc; /* nv: accelerations from the last ur_forward */
+  double* qfrc; /* nv: passive generalised forces (restraints) */
+  double* rst;  /* nv x 2: restraint hysteresis (max +, max - deflection) */
+  double* rkin; /* nbody x 12: spherical restraints' deflection (rotation
                                       vector minus x0) and its inverse right Jacobian (3x3) */
   // kinematics (per body)
-  double* xpos;                    /* nbody x 3: body origin, world */
-  double* xmat;                    /* nbody x 9: body orientation, world */
-  double* xcom;                    /* nbody x 3: centre of mass, world */
-  double* gxpos;                   /* ngeom x 3: ellipsoid centre, world */
-  double* gxmat;                   /* ngeom x 9: ellipsoid orientation, world (where gmat_ok) */
+  double* xpos;  /* nbody x 3: body origin, world */
+  double* xmat;  /* nbody x 9: body orientation, world */
+  double* xcom;  /* nbody x 3: centre of mass, world */
+  double* gxpos; /* ngeom x 3: ellipsoid centre, world */
+  double* gxmat; /* ngeom x 9: ellipsoid orientation, world (where gmat_ok) */
   // dynamics scratch (per body, body coordinates)
-  double* Xe;                      /* nbody x 9: rotation parent -> child */
-  double* Xr;                      /* nbody x 3: child origin in the parent frame */
-  double* S;                       /* nbody x 36: motion subspace (the first 6 x nv) */
-  double* cvel;                    /* nbody x 6: spatial velocity */
-  double* cbias;                   /* nbody x 6: velocity-product acceleration */
-  double* cacc;                    /* nbody x 6: spatial acceleration (incl. -gravity) */
-  double* IA;                      /* nbody x 36: ABA scratch (articulated inertia, then the
+  double* Xe;     /* nbody x 9: rotation parent -> child */
+  double* Xr;     /* nbody x 3: child origin in the parent frame */
+  double* S;      /* nbody x 36: motion subspace (the first 6 x nv) */
+  double* cvel;   /* nbody x 6: spatial velocity */
+  double* cbias;  /* nbody x 6: velocity-product acceleration */
+  double* cacc;   /* nbody x 6: spatial acceleration (incl. -gravity) */
+  double* IA;     /* nbody x 36: ABA scratch (articulated inertia, then the
                                       part passed on to the parent) */
-  double* pA;                      /* nbody x 6: ABA scratch (articulated bias force, then the
+  double* pA;     /* nbody x 6: ABA scratch (articulated bias force, then the
                                       part passed on) */
-  double* U;                       /* nbody x 36 */
-  double* Dinv;                    /* nbody x 36 */
-  double* uu;                      /* nbody x 6 */
-  double* fext;                    /* nbody x 6: external force at the origin, body coords */
-  double* freact;                  /* nbody x 6: joint reaction on the child, body coords (only
+  double* U;      /* nbody x 36 */
+  double* Dinv;   /* nbody x 36 */
+  double* uu;     /* nbody x 6 */
+  double* fext;   /* nbody x 6: external force at the origin, body coords */
+  double* freact; /* nbody x 6: joint reaction on the child, body coords (only
                                       at joint-load sensors and below them) */
   // contacts and airbags
-  urPairData* pair;                /* npair */
-  double* pdepth;                  /* npair: penetration, m (< 0 separated: minus a lower bound
+  urPairData* pair;       /* npair */
+  double* pdepth;         /* npair: penetration, m (< 0 separated: minus a lower bound
                                       of the distance; -inf before any contact pass) */
-  urBagData* bag;                  /* nbag */
-  int* plist;                      /* 2 npair: of the last contact pass, the pairs to commit
+  urBagData* bag;         /* nbag */
+  int* plist;             /* 2 npair: of the last contact pass, the pairs to commit
                                       (penetrating or touching; only they can carry a force or
                                       a touching history), then the active ones (supersets once
                                       pairs are reset) */
-  int npcommit, npactive;          /* lengths of the two lists */
-  unsigned char* gmat_ok;          /* ngeom: gxmat is current (lane runs compute an ellipsoid's
+  int npcommit, npactive; /* lengths of the two lists */
+  unsigned char* gmat_ok; /* ngeom: gxmat is current (lane runs compute an ellipsoid's
                                       orientation on first use: ur_geom_xmat) */
   // sensors and outputs
-  double* sensordata;              /* nsensordata: values at the last ur_forward */
-  double* peakmax;                 /* nsensordata: largest value since the run start */
-  double* peakmin;                 /* nsensordata: smallest value since the run start */
-  double* tpeak;                   /* nsensordata: time of the largest |value| */
-  double* hist;                    /* nhist_cap x (1 + nsensordata) rows (time, values), or NULL */
-  int nhist;                       /* rows written */
-  int nhist_cap;                   /* rows available */
-  int hist_own;                    /* 1 if the engine allocated hist */
+  double* sensordata; /* nsensordata: values at the last ur_forward */
+  double* peakmax;    /* nsensordata: largest value since the run start */
+  double* peakmin;    /* nsensordata: smallest value since the run start */
+  double* tpeak;      /* nsensordata: time of the largest |value| */
+  double* hist;       /* nhist_cap x (1 + nsensordata) rows (time, values), or NULL */
+  int nhist;          /* rows written */
+  int nhist_cap;      /* rows available */
+  int hist_own;       /* 1 if the engine allocated hist */
   // run control
-  int status;                      /* urStatus */
-  char msg[urMSGLEN];              /* reason for the status */
-  long nstep;                      /* steps taken since the run start */
-  int proj;                        /* projectile tree root (ur_run_start), -1 none */
-  double t_jump;                   /* free-flight time skipped analytically, s */
-  double t_first;                  /* time of first projectile contact, s (-1 none) */
-  double t_last;                   /* last time a projectile contact was active, s */
-  double t_calm;                   /* time since kinetic energy fell below ke_settle, s */
-  int clear_hint;                  /* the pair or airbag target that last kept the projectile
+  int status;         /* urStatus */
+  char msg[urMSGLEN]; /* reason for the status */
+  long nstep;         /* steps taken since the run start */
+  int proj;           /* projectile tree root (ur_run_start), -1 none */
+  double t_jump;      /* free-flight time skipped analytically, s */
+  double t_first;     /* time of first projectile contact, s (-1 none) */
+  double t_last;      /* last time a projectile contact was active, s */
+  double t_calm;      /* time since kinetic energy fell below ke_settle, s */
+  int clear_hint;     /* the pair or airbag target that last kept the projectile
                                       from being proved clear (tried first) */
-  double energy;                   /* kinetic energy at the last ur_forward, J */
+  double energy;      /* kinetic energy at the last ur_forward, J */
   // integrator scratch
-  double* scratch;                 /* 2 nq + 8 nv */
+  double* scratch; /* 2 nq + 8 nv */
   // memory
-  void* buffer;                    /* one allocation holding the arrays above (64-byte aligned) */
+  void* buffer; /* one allocation holding the arrays above (64-byte aligned) */
 } urData;
 
 //---------------------------------- model builder -------------------------------------------------
@@ -468,16 +468,16 @@ int ur_step(const urModel* m, urData* d);
    analytically along the straight line to just before the first possible contact (swept bounding
    spheres against every pair and airbag target involving the tree). Other trees are assumed to
    be at rest during the jump. Returns d->status. */
-int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
-                 const double quat[4], const double vel[3]);
+int ur_run_start(const urModel* m, urData* d, int root, const double pos[3], const double quat[4],
+                 const double vel[3]);
 
 /* Step until the run ends (separated / settled / tmax) or fails. Returns d->status (> 0 ended,
    < 0 failed). */
 int ur_run(const urModel* m, urData* d);
 
 /* ur_run_start then ur_run. */
-int ur_run_impact(const urModel* m, urData* d, int root, const double pos[3],
-                  const double quat[4], const double vel[3]);
+int ur_run_impact(const urModel* m, urData* d, int root, const double pos[3], const double quat[4],
+                  const double vel[3]);
 
 /* Kinetic energy of the system at the last ur_forward (velocities of that call), J. */
 double ur_energy_kinetic(const urModel* m, const urData* d);

@@ -19,36 +19,36 @@ extern "C" {
 #endif
 
 typedef enum {
-  urCELL_PENDING = 0,              /* not computed (yet, or the run was interrupted) */
-  urCELL_NOCONTACT,                /* decided geometrically: the drone cannot touch the person */
-  urCELL_DONE,                     /* simulated */
-  urCELL_FAILED                    /* the simulation failed (reason in `reason`) */
+  urCELL_PENDING = 0, /* not computed (yet, or the run was interrupted) */
+  urCELL_NOCONTACT,   /* decided geometrically: the drone cannot touch the person */
+  urCELL_DONE,        /* simulated */
+  urCELL_FAILED       /* the simulation failed (reason in `reason`) */
 } urCellStatus;
 
 typedef struct {
-  double dpar, dperp;              /* offset, m */
-  int status;                      /* urCellStatus */
-  int contact;                     /* the drone touched the person */
-  int mirrored;                    /* copied from the mirror cell (-dperp) */
-  double val[urNVAL];              /* the criteria's values (urValueId; NAN: not known) */
-  double pof[urNCRIT];             /* injury-specific PoF (urCritId; NAN: not known) */
-  double p;                        /* fused PoF (eq. 3.1) */
-  int extrap;                      /* laws or curves used beyond their data (urImpactResult) */
-  char reason[64];                 /* why a cell failed */
+  double dpar, dperp;  /* offset, m */
+  int status;          /* urCellStatus */
+  int contact;         /* the drone touched the person */
+  int mirrored;        /* copied from the mirror cell (-dperp) */
+  double val[urNVAL];  /* the criteria's values (urValueId; NAN: not known) */
+  double pof[urNCRIT]; /* injury-specific PoF (urCritId; NAN: not known) */
+  double p;            /* fused PoF (eq. 3.1) */
+  int extrap;          /* laws or curves used beyond their data (urImpactResult) */
+  char reason[64];     /* why a cell failed */
 } urCell;
 
 typedef struct {
-  int nrow, ncol;                  /* rows along, columns across (full plane) */
-  double step;                     /* lattice pitch, m */
-  double par_max;                  /* dpar of row 0, m */
-  double perp_min;                 /* dperp of column 0, m */
-  urCell* cell;                    /* nrow*ncol, row-major */
+  int nrow, ncol;  /* rows along, columns across (full plane) */
+  double step;     /* lattice pitch, m */
+  double par_max;  /* dpar of row 0, m */
+  double perp_min; /* dperp of column 0, m */
+  urCell* cell;    /* nrow*ncol, row-major */
   /* summary */
-  double q;                        /* sum of p*step^2 over finished cells, m^2 */
+  double q; /* sum of p*step^2 over finished cells, m^2 */
   int ndone, ncontact, nfailed, npending, nsimulated;
-  int nextrap;                     /* finished cells whose impact used a law beyond its data */
-  int complete;                    /* every cell finished and none failed */
-  double seconds;                  /* wall time of the run */
+  int nextrap;    /* finished cells whose impact used a law beyond its data */
+  int complete;   /* every cell finished and none failed */
+  double seconds; /* wall time of the run */
 } urGrid;
 
 /* decide a cell: return 1 if contact is geometrically possible (then it is simulated) */
@@ -79,19 +79,19 @@ typedef struct {
 } urGridDist;
 
 typedef struct {
-  double step;                     /* pitch, m */
-  double par_min, par_max;         /* along extent, m (rounded outwards to the lattice) */
-  double perp_max;                 /* across extent |dperp| <= perp_max, m */
-  int mirror;                      /* the set-up is symmetric in dperp: simulate dperp >= 0 only */
-  int threads;                     /* worker threads (>= 1) */
+  double step;             /* pitch, m */
+  double par_min, par_max; /* along extent, m (rounded outwards to the lattice) */
+  double perp_max;         /* across extent |dperp| <= perp_max, m */
+  int mirror;              /* the set-up is symmetric in dperp: simulate dperp >= 0 only */
+  int threads;             /* worker threads (>= 1) */
   urMayContactFn may_contact;
   urImpactFn impact;
-  urProgressFn progress;           /* optional; called from worker threads, serialised */
+  urProgressFn progress; /* optional; called from worker threads, serialised */
   void* ctx;
-  const _Atomic int* stop;         /* optional; workers stop starting cells when *stop != 0 */
-  urImpactStreamFn impact_stream;  /* optional; when set, each worker hands it its cells instead
+  const _Atomic int* stop;        /* optional; workers stop starting cells when *stop != 0 */
+  urImpactStreamFn impact_stream; /* optional; when set, each worker hands it its cells instead
                                       of calling impact per cell */
-  const urGridDist* dist;          /* optional; NULL: this process simulates every cell */
+  const urGridDist* dist;         /* optional; NULL: this process simulates every cell */
 } urGridSpec;
 
 /* allocate the lattice of a spec (cells pending); NULL on bad extents or no memory */

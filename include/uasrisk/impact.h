@@ -39,76 +39,76 @@ typedef struct urStance urStance;
 /* the roles the impact needs, as the model declares them (urModel.roles) */
 typedef struct {
   const urModel* m;
-  int drone;                       /* root body of the drone (free joint) */
-  int head_geom;                   /* head ellipsoid whose top defines the start height */
-  int s_head_acc;                  /* sensor: head CG acceleration (3) */
-  int s_neck;                      /* sensor: upper-neck joint load (6) */
-  int s_chest, s_abd;              /* sensors: plate joint positions (deflections), or -1 */
-  int ncand;                       /* ellipsoid pairs the drone can act through (contact pairs
+  int drone;           /* root body of the drone (free joint) */
+  int head_geom;       /* head ellipsoid whose top defines the start height */
+  int s_head_acc;      /* sensor: head CG acceleration (3) */
+  int s_neck;          /* sensor: upper-neck joint load (6) */
+  int s_chest, s_abd;  /* sensors: plate joint positions (deflections), or -1 */
+  int ncand;           /* ellipsoid pairs the drone can act through (contact pairs
                                       and airbag targets, the ground excluded): */
-  int (*cand)[2];                  /* ncand x (drone ellipsoid, person ellipsoid) */
-  int* cand_src;                   /* ncand: where the force of each is: a contact pair (< npair),
+  int (*cand)[2];      /* ncand x (drone ellipsoid, person ellipsoid) */
+  int* cand_src;       /* ncand: where the force of each is: a contact pair (< npair),
                                       or npair + airbag * urMAXBAGTGT + target */
-  int* cand_of;                    /* the inverse: npair + nbag * urMAXBAGTGT, -1 where none */
-  double rmax;                     /* R_max, m */
-  double head_cg[3];               /* settled head CG, world, m */
-  double head_top;                 /* settled height of the head top, m */
-  double neck_preload;             /* settled upper-neck axial force, N (tension > 0) */
-  double window;                   /* a run ends this long after its first contact, s (model
+  int* cand_of;        /* the inverse: npair + nbag * urMAXBAGTGT, -1 where none */
+  double rmax;         /* R_max, m */
+  double head_cg[3];   /* settled head CG, world, m */
+  double head_top;     /* settled height of the head top, m */
+  double neck_preload; /* settled upper-neck axial force, N (tension > 0) */
+  double window;       /* a run ends this long after its first contact, s (model
                                       parameter "window"; none: until the engine ends it) */
-  urData* rest;                    /* the settled stance (drone parked far away) */
-  urStance* stance;                /* what another model with the same person can take (owned;
+  urData* rest;        /* the settled stance (drone parked far away) */
+  urStance* stance;    /* what another model with the same person can take (owned;
                                       NULL: none, e.g. after ur_impact_setup) */
-  int shared;                      /* 1: balance and stance were taken from another model */
+  int shared;          /* 1: balance and stance were taken from another model */
   char err[160];
 } urImpactSetup;
 
 /* the moment tau at which Delta is taken (see the top of this file) */
 typedef enum {
-  urTAU_RMAX = 0,                  /* the drone's centre R_max above the head top (paper 4.2) */
-  urTAU_TOP = 1                    /* the drone's centre at the level of the head top */
+  urTAU_RMAX = 0, /* the drone's centre R_max above the head top (paper 4.2) */
+  urTAU_TOP = 1   /* the drone's centre at the level of the head top */
 } urTau;
 
 /* the conditions of an impact */
 typedef struct {
-  double speed;                    /* impact speed, m/s */
-  double angle;                    /* descent angle psi from the horizontal, deg */
-  double face;                     /* face direction phi, deg */
-  double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
-  int tau;                         /* urTau: the moment Delta is taken (0: the paper's text) */
-  int aim;                         /* 1: (dpar, dperp) are not an offset at tau but the
+  double speed;            /* impact speed, m/s */
+  double angle;            /* descent angle psi from the horizontal, deg */
+  double face;             /* face direction phi, deg */
+  double pitch, roll, yaw; /* drone attitude relative to upright on its course, deg */
+  int tau;                 /* urTau: the moment Delta is taken (0: the paper's text) */
+  int aim;                 /* 1: (dpar, dperp) are not an offset at tau but the
                                       eccentricity (up, side) of the drone's line of travel from
                                       the head's centre (aim mode, below); any angle 0-90 deg */
 } urImpactCond;
 
 /* what one of the pairs through which the drone acts (urImpactSetup.cand) did during an impact */
 typedef struct {
-  double t_first, t_last;          /* first and last time with a normal force, s from tau (-1:
+  double t_first, t_last; /* first and last time with a normal force, s from tau (-1:
                                       never) */
-  double fmax;                     /* largest normal force, N */
-  double t_fmax;                   /* its time, s */
+  double fmax;            /* largest normal force, N */
+  double t_fmax;          /* its time, s */
 } urContactRec;
 
 /* per-thread work space */
 typedef struct {
   urData* d;
-  int rows;                        /* history rows */
-  double* chan;                    /* channel buffers */
-  double* work;                    /* injury work space */
-  urContactRec* crec;              /* ncand: the contacts of the last ur_impact_run (not of lane
+  int rows;           /* history rows */
+  double* chan;       /* channel buffers */
+  double* work;       /* injury work space */
+  urContactRec* crec; /* ncand: the contacts of the last ur_impact_run (not of lane
                                       runs) */
 } urImpactWork;
 
 typedef struct {
-  int status;                      /* engine status (< 0: failed) */
+  int status; /* engine status (< 0: failed) */
   char reason[urMSGLEN];
-  int contact;                     /* the drone touched the person */
-  double t_first;                  /* time of first contact from tau, s (-1: none) */
-  urInjuryResult inj;              /* criteria and PoFs */
-  double p;                        /* P{F | Delta} */
-  int nextrap;                     /* laws and restraint curves used beyond their data
+  int contact;           /* the drone touched the person */
+  double t_first;        /* time of first contact from tau, s (-1: none) */
+  urInjuryResult inj;    /* criteria and PoFs */
+  double p;              /* P{F | Delta} */
+  int nextrap;           /* laws and restraint curves used beyond their data
                                       (ur_extrapolated): the result rests partly on extrapolation */
-  char extrap[urMSGLEN];           /* the one furthest beyond, as a phrase */
+  char extrap[urMSGLEN]; /* the one furthest beyond, as a phrase */
 } urImpactResult;
 
 /* Balance the standing posture: a passive stance under gravity is an inverted-pendulum chain
@@ -172,8 +172,7 @@ void ur_impact_start(const urImpactSetup* s, const urImpactCond* c, double dpar,
                      double pos[3], double quat[4], double vel[3]);
 
 /* 1 if the straight path of the drone's bounding spheres can reach the person's (conservative) */
-int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double dpar,
-                          double dperp);
+int ur_impact_may_contact(const urImpactSetup* s, const urImpactCond* c, double dpar, double dperp);
 
 /* run one impact; the run's histories stay in w->d and what each pair through which the drone
    acts did in w->crec; 0, or -1 if the simulation failed */
@@ -192,7 +191,7 @@ typedef struct urImpactLanes urImpactLanes;
 typedef int (*urImpactNextFn)(void* ctx, double* dpar, double* dperp, void** tag);
 typedef void (*urImpactDoneFn)(void* ctx, void* tag, int rc, const urImpactResult* r,
                                const urImpactWork* w);
-urImpactLanes* ur_impact_lanes_new(const urImpactSetup* s);   /* NULL: no memory */
+urImpactLanes* ur_impact_lanes_new(const urImpactSetup* s); /* NULL: no memory */
 void ur_impact_lanes_free(urImpactLanes* L);
 void ur_impact_run_many(const urImpactSetup* s, urImpactLanes* L, const urImpactCond* c,
                         const urInjuryParams* ip, urImpactNextFn next, urImpactDoneFn done,

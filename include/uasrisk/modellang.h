@@ -30,10 +30,10 @@ typedef struct {
 
 /* one part of a text: bytes [text, text + len) of the text given to ur_model_split */
 typedef struct {
-  char name[urNAMELEN];            /* part name; "" for the text before the first part line */
-  const char* text;                /* first byte (start of the line holding 'part NAME') */
-  size_t len;                      /* bytes, up to the start of the next part line */
-  int line;                        /* line number of the first byte (1-based) */
+  char name[urNAMELEN]; /* part name; "" for the text before the first part line */
+  const char* text;     /* first byte (start of the line holding 'part NAME') */
+  size_t len;           /* bytes, up to the start of the next part line */
+  int line;             /* line number of the first byte (1-based) */
 } urModelPart;
 
 /* Parse the sources in order (parameters, curves, laws, bodies... are shared by all sources:
@@ -58,8 +58,8 @@ urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverrid
    NULL with maxpart 0) and returns the total number of parts, or -1 with a message in err
    ("FILE:LINE: ...", FILE from file, may be NULL) for a malformed part line, more than 256 part lines, a duplicate part
    name or a continuation at the end of the text. */
-int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart,
-                   char* err, int errlen);
+int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart, char* err,
+                   int errlen);
 
 /* factor from a unit of the language (m, mm, atm, deg, ...; several joined by '*' and '/':
    N*m/rad, kN/m) to SI; 0, or -1 if unknown. ur_unit_parse also gives the SI unit (kN/m: N/m,

@@ -16,16 +16,16 @@ extern "C" {
 
 /* ---- deployment reliability ---- */
 
-#define urMAXBAGS 2                /* airbags a drone may carry (bottom, front) */
+#define urMAXBAGS   2 /* airbags a drone may carry (bottom, front) */
 #define urMAXBRANCH (1 << (urMAXBAGS + 1))
 
 typedef struct {
-  int chute;                       /* the drone carries a parachute */
-  int nbag;                        /* the airbags it carries, 0..urMAXBAGS */
-  double p_chute;                  /* probability that the parachute deploys in time */
-  double p_bag;                    /* probability that each airbag deploys (independently) */
-  double altitude;                 /* height of the failure, m */
-  double h_chute_min;              /* below this height the parachute cannot help, m */
+  int chute;          /* the drone carries a parachute */
+  int nbag;           /* the airbags it carries, 0..urMAXBAGS */
+  double p_chute;     /* probability that the parachute deploys in time */
+  double p_bag;       /* probability that each airbag deploys (independently) */
+  double altitude;    /* height of the failure, m */
+  double h_chute_min; /* below this height the parachute cannot help, m */
 } urDeploy;
 
 /* a branch: which devices deployed. bit 0 the parachute, bit 1+k airbag k. Without the parachute
@@ -33,7 +33,7 @@ typedef struct {
    the parachute descent), so every branch without bit 0 is branch 0. */
 typedef struct {
   int mask;
-  double weight;                   /* its probability */
+  double weight; /* its probability */
 } urBranch;
 
 /* the probability that the parachute deploys and helps: p_chute when the drone carries one and
@@ -48,15 +48,20 @@ int ur_deploy_outcome(const urDeploy* d, double u_chute, const double* u_bag);
 
 /* ---- distributions ---- */
 
-typedef enum { urDIST_NORMAL = 0, urDIST_UNIFORM, urDIST_WEIBULL, urDIST_DISCRETE } urDistKind;
-#define urDISTMAXVAL 32            /* values of a discrete distribution */
+typedef enum {
+  urDIST_NORMAL = 0,
+  urDIST_UNIFORM,
+  urDIST_WEIBULL,
+  urDIST_DISCRETE
+} urDistKind;
+#define urDISTMAXVAL 32 /* values of a discrete distribution */
 
 typedef struct {
-  int kind;                        /* urDistKind */
-  double a, b;                     /* normal: mean, sd; uniform: lo, hi; weibull: scale, shape */
-  double lo, hi;                   /* truncation: the accepted range of the input (may be
+  int kind;      /* urDistKind */
+  double a, b;   /* normal: mean, sd; uniform: lo, hi; weibull: scale, shape */
+  double lo, hi; /* truncation: the accepted range of the input (may be
                                       infinite); normal and weibull are truncated to it */
-  int nval;                        /* discrete: values and their probabilities */
+  int nval;      /* discrete: values and their probabilities */
   double val[urDISTMAXVAL], prob[urDISTMAXVAL];
 } urDist;
 
@@ -76,10 +81,10 @@ void ur_mc_inputs(uint64_t seed, uint64_t i, int n, const char* const* name, con
 
 typedef struct {
   int n;
-  double mean, sd;                 /* sample mean and standard deviation (n - 1) */
-  double lo95, hi95;               /* 95 % confidence interval of the mean: mean -+ t sd/sqrt(n),
+  double mean, sd;   /* sample mean and standard deviation (n - 1) */
+  double lo95, hi95; /* 95 % confidence interval of the mean: mean -+ t sd/sqrt(n),
                                       t the 0.975 quantile of Student's t with n - 1 degrees */
-  double p025, p975;               /* the sample's 2.5 % and 97.5 % quantiles */
+  double p025, p975; /* the sample's 2.5 % and 97.5 % quantiles */
   double min, max;
 } urMcStats;
 
@@ -104,8 +109,8 @@ double ur_mc_first_order(const double* x, const double* y, int n);
 /* multilinear interpolation on a rectangular lattice: ndim axes, axis d with nnode[d] increasing
    nodes node[d][0..], values in row-major order (the last axis fastest); x outside an axis is
    taken at its nearest end. An axis of one node is constant. */
-double ur_lattice_interp(int ndim, const int* nnode, const double* const* node,
-                         const double* value, const double* x);
+double ur_lattice_interp(int ndim, const int* nnode, const double* const* node, const double* value,
+                         const double* x);
 
 #ifdef __cplusplus
 }

@@ -13,26 +13,26 @@ extern "C" {
 #endif
 
 typedef struct {
-  double mass;                     /* kg */
-  double width;                    /* characteristic dimension w, m */
-  double speed;                    /* impact speed along the path, m/s */
-  double angle;                    /* impact angle from the horizontal, deg */
-  double mu;                       /* friction coefficient (Annex F: 0.65) */
-  double cor;                      /* coefficient of restitution; NAN: ur_annexf_cor(angle) */
-  double ke_lethal;                /* lethal kinetic energy, J; negative: |value| with the Annex F
+  double mass;          /* kg */
+  double width;         /* characteristic dimension w, m */
+  double speed;         /* impact speed along the path, m/s */
+  double angle;         /* impact angle from the horizontal, deg */
+  double mu;            /* friction coefficient (Annex F: 0.65) */
+  double cor;           /* coefficient of restitution; NAN: ur_annexf_cor(angle) */
+  double ke_lethal;     /* lethal kinetic energy, J; negative: |value| with the Annex F
                                       rule (doubled when w <= 1 m); -1: 290 J with the rule */
-  int obstacles;                   /* apply the obstacle factor 0.6 when 1 < w < 40 m */
-  double person_radius;            /* r_p, m (Annex F: 0.3) */
-  double person_height;            /* h_p, m (Annex F: 1.8) */
-  double g;                        /* m/s^2 (casex: 9.81) */
+  int obstacles;        /* apply the obstacle factor 0.6 when 1 < w < 40 m */
+  double person_radius; /* r_p, m (Annex F: 0.3) */
+  double person_height; /* h_p, m (Annex F: 1.8) */
+  double g;             /* m/s^2 (casex: 9.81) */
 } urAnnexFIn;
 
 typedef struct {
-  double ca;                       /* critical area, m^2 */
-  double a_glide, a_slide;         /* its glide and slide parts (obstacle factor applied) */
-  double d_glide, d_slide;         /* glide distance (factor applied, as casex returns it) and
+  double ca;               /* critical area, m^2 */
+  double a_glide, a_slide; /* its glide and slide parts (obstacle factor applied) */
+  double d_glide, d_slide; /* glide distance (factor applied, as casex returns it) and
                                       slide distance, m */
-  double v_min, t_safe;            /* speed of lethal energy, m/s; time to slow to it, s */
+  double v_min, t_safe;    /* speed of lethal energy, m/s; time to slow to it, s */
 } urAnnexFOut;
 
 /* the Annex F settings for an aircraft of mass m, width w at speed v and angle theta: mu 0.65,
@@ -49,8 +49,8 @@ void ur_annexf_ca(const urAnnexFIn* in, urAnnexFOut* out);
    (ties to even, as Python's round); igrc = ceil(raw1) (casex's AnnexFParms.iGRC); igrc_table =
    raw1 - 0.1 rounded to the nearest integer, ties to even (casex's integer tables, SORA 2.5
    Table 2's convention). 0; -1 when density, ca or tlos is not positive */
-int ur_igrc(double density, double ca, double tlos, double compensation, double* raw,
-            double* raw1, int* igrc, int* igrc_table);
+int ur_igrc(double density, double ca, double tlos, double compensation, double* raw, double* raw1,
+            int* igrc, int* igrc_table);
 
 #ifdef __cplusplus
 }

@@ -16,61 +16,68 @@
 #include "uasrisk/parametric.h"
 #include "app_risk.h"
 
-#define uraMAXLIST 64              /* values in a list parameter */
-#define uraMAXOV 64                /* model parameters set by the case or the user */
-#define uraMAXPARTS 32             /* model parts */
-#define uraERRLEN 1024
-#define uraMODELCACHE 8            /* compiled, settled models kept besides the live one */
+#define uraMAXLIST     64 /* values in a list parameter */
+#define uraMAXOV       64 /* model parameters set by the case or the user */
+#define uraMAXPARTS    32 /* model parts */
+#define uraERRLEN      1024
+#define uraMODELCACHE  8           /* compiled, settled models kept besides the live one */
 #define uraRECALLGRIDS 64          /* complete grids kept for recall */
 #define uraRECALLBYTES (64L << 20) /* their cells, bytes at most */
 
 /* ---- live case state ---- */
 
 /* table: rows fit 80 columns at a terminal, every column elsewhere; wide: every column always */
-typedef enum { uraFMT_TABLE = 0, uraFMT_CSV, uraFMT_WIDE } uraFormat;
+typedef enum {
+  uraFMT_TABLE = 0,
+  uraFMT_CSV,
+  uraFMT_WIDE
+} uraFormat;
 /* where a derived impact speed and descent angle come from (set descent) */
-typedef enum { uraDESC_MODEL = 0, uraDESC_PAPER } uraDescentSrc;
+typedef enum {
+  uraDESC_MODEL = 0,
+  uraDESC_PAPER
+} uraDescentSrc;
 
 typedef struct {
-  char casename[8];                /* A, B, C, A1, A2 */
-  urDescentParams descent;         /* descent model parameters (wind is the live wind) */
-  urParametricParams para;         /* Appendix D parameters */
-  double winds[uraMAXLIST];        /* wind list for descent/parametric/sweeps, m/s */
+  char casename[8];         /* A, B, C, A1, A2 */
+  urDescentParams descent;  /* descent model parameters (wind is the live wind) */
+  urParametricParams para;  /* Appendix D parameters */
+  double winds[uraMAXLIST]; /* wind list for descent/parametric/sweeps, m/s */
   int nwinds;
-  double speed, angle;             /* impact speed (m/s) and descent angle (deg) when set */
-  int speed_set, angle_set;        /* 0: derived (descent_src says from what) */
-  int descent_src;                 /* uraDescentSrc: the descent model, or the paper's Table 2 */
-  int tau;                         /* urTau: the moment at which Delta is taken */
-  double face;                     /* face direction phi, deg */
-  int format;                      /* uraFormat */
-  int pager;                       /* 1: long output at the prompt through $PAGER (pager.c) */
-  urInjuryParams injury;           /* injury criteria and PoF curve settings */
-  double pitch, roll, yaw;         /* drone attitude relative to upright on its course, deg */
-  double step;                     /* grid pitch, m */
+  double speed, angle;               /* impact speed (m/s) and descent angle (deg) when set */
+  int speed_set, angle_set;          /* 0: derived (descent_src says from what) */
+  int descent_src;                   /* uraDescentSrc: the descent model, or the paper's Table 2 */
+  int tau;                           /* urTau: the moment at which Delta is taken */
+  double face;                       /* face direction phi, deg */
+  int format;                        /* uraFormat */
+  int pager;                         /* 1: long output at the prompt through $PAGER (pager.c) */
+  urInjuryParams injury;             /* injury criteria and PoF curve settings */
+  double pitch, roll, yaw;           /* drone attitude relative to upright on its course, deg */
+  double step;                       /* grid pitch, m */
   double par_min, par_max, perp_max; /* grid extents along_min, along_max, cross_max when set, m */
   int par_min_set, par_max_set, perp_max_set; /* 0: sized automatically (derived) */
-  double threads;                  /* grid worker threads (a whole number) */
-  int recall;                      /* 1: a grid identical to an earlier one reuses its cells */
+  double threads;                             /* grid worker threads (a whole number) */
+  int recall;                        /* 1: a grid identical to an earlier one reuses its cells */
   char ov_name[uraMAXOV][urNAMELEN]; /* model parameters overridden (SI values) */
   double ov_val[uraMAXOV];
-  int ov_user[uraMAXOV];           /* 1: set by the user, 0: by the case preset */
+  int ov_user[uraMAXOV]; /* 1: set by the user, 0: by the case preset */
   int nov;
-  char terminal[64];               /* gnuplot terminal; empty: gnuplot's default */
-  char output[512];                /* gnuplot output file; empty: a window */
-  uraRiskSet risk;                 /* deployment reliability, distributions, SORA (app_risk.h) */
+  char terminal[64]; /* gnuplot terminal; empty: gnuplot's default */
+  char output[512];  /* gnuplot output file; empty: a window */
+  uraRiskSet risk;   /* deployment reliability, distributions, SORA (app_risk.h) */
 } uraState;
 
 /* one part of the model set (human, ra3, airbags, sim, or loaded from a file) */
 typedef struct {
   char name[urNAMELEN];
-  char* text;                      /* owned */
-  char origin[256];                /* "built-in" or the file it came from */
-  int line;                        /* line of the origin where the part starts */
+  char* text;       /* owned */
+  char origin[256]; /* "built-in" or the file it came from */
+  int line;         /* line of the origin where the part starts */
 } uraPart;
 
 /* the last grid with the conditions it was computed (or loaded) for */
 typedef struct {
-  urGrid* g;                       /* NULL: none yet */
+  urGrid* g; /* NULL: none yet */
   char casename[8];
   double wind, face, speed, angle; /* m/s, deg, m/s, deg */
   int paper_speed;                 /* speed or angle came from the paper's Table 2 */
@@ -91,28 +98,28 @@ typedef struct {
   double ov_val[uraMAXOV];
 } uraModelKey;
 
-typedef struct uraModelCache uraModelCache;   /* modelcache.c */
-typedef struct uraRecall uraRecall;           /* recall.c */
+typedef struct uraModelCache uraModelCache; /* modelcache.c */
+typedef struct uraRecall uraRecall;         /* recall.c */
 
 /* time histories of one impact, for inspection and plotting */
 typedef struct {
-  int n, nsig;                     /* samples, signals */
-  double* t;                       /* n times, s */
-  double* v;                       /* nsig*n values, signal-major */
-  const char* const* names;        /* nsig signal names (e.g. head_acc, neck_fz) */
-  const char* const* units;        /* nsig units */
-  const char* title;               /* the impact's conditions and results (NULL: none) */
+  int n, nsig;              /* samples, signals */
+  double* t;                /* n times, s */
+  double* v;                /* nsig*n values, signal-major */
+  const char* const* names; /* nsig signal names (e.g. head_acc, neck_fz) */
+  const char* const* units; /* nsig units */
+  const char* title;        /* the impact's conditions and results (NULL: none) */
 } uraTrace;
 
 /* one sweep kept for plot sweep and export sweep (cmd_sweep.c): Q per wind or face value */
 #define uraMAXSWEEPS 32
 typedef struct {
   char casename[8];
-  int over_face;                   /* 0: over wind (face fixed), 1: over face (wind fixed) */
-  double fixed;                    /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
-  double step;                     /* grid pitch, m */
-  char changes[200];               /* settings that differ from the case preset, or "none" */
-  int n;                           /* values, in increasing order */
+  int over_face;     /* 0: over wind (face fixed), 1: over face (wind fixed) */
+  double fixed;      /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
+  double step;       /* grid pitch, m */
+  char changes[200]; /* settings that differ from the case preset, or "none" */
+  int n;             /* values, in increasing order */
   double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
 } uraSweep;
 
@@ -120,57 +127,57 @@ typedef struct {
 
 typedef struct uraCtx {
   uraState st;
-  FILE* out;                       /* results */
-  FILE* msg;                       /* errors and notes */
-  char err[uraERRLEN];             /* message of the last failure */
-  int err_located;                 /* err already starts with FILE:LINE: */
-  int interactive;                 /* a person is typing: errors do not stop anything */
-  int depth;                       /* nesting of source */
-  int quit;                        /* set by quit */
-  int dry;                         /* fuzzing (tests/fuzz): commands parse their arguments but
+  FILE* out;           /* results */
+  FILE* msg;           /* errors and notes */
+  char err[uraERRLEN]; /* message of the last failure */
+  int err_located;     /* err already starts with FILE:LINE: */
+  int interactive;     /* a person is typing: errors do not stop anything */
+  int depth;           /* nesting of source */
+  int quit;            /* set by quit */
+  int dry;             /* fuzzing (tests/fuzz): commands parse their arguments but
                                       refuse to simulate, plot, open the viewer or touch files
                                       (ura_dry) */
-  uraGridResult last;              /* the last grid */
-  uraSweep* sweep;                 /* the kept sweeps, oldest first (sweep clear frees them) */
+  uraGridResult last;  /* the last grid */
+  uraSweep* sweep;     /* the kept sweeps, oldest first (sweep clear frees them) */
   int nsweep;
-  struct uraPSweep* psweep;        /* the kept sweeps over other parameters (sweep_param.c) */
+  struct uraPSweep* psweep; /* the kept sweeps over other parameters (sweep_param.c) */
   int npsweep;
-  struct uraDesign* design;        /* the saved designs (design_cmd.c) */
+  struct uraDesign* design; /* the saved designs (design_cmd.c) */
   int ndesign;
-  uraPart part[uraMAXPARTS];       /* the model set, in order */
+  uraPart part[uraMAXPARTS]; /* the model set, in order */
   int npart;
-  unsigned long parts_gen;         /* generation of the model parts */
-  urModel* model;                  /* compiled with the overrides; NULL: stale */
-  urImpactSetup setup;             /* settled stance of the model; valid if have_setup */
+  unsigned long parts_gen; /* generation of the model parts */
+  urModel* model;          /* compiled with the overrides; NULL: stale */
+  urImpactSetup setup;     /* settled stance of the model; valid if have_setup */
   int have_setup;
-  urImpactWork work;               /* the single-impact work space (histories of the last impact) */
+  urImpactWork work; /* the single-impact work space (histories of the last impact) */
   int have_work;
-  int have_impact;                 /* the work holds a finished impact */
+  int have_impact; /* the work holds a finished impact */
   urImpactResult last_impact;
   double last_dpar, last_dperp;
-  int last_aim;                    /* the last impact was aimed (impact aim): the two are the
+  int last_aim;          /* the last impact was aimed (impact aim): the two are the
                                       eccentricity up, side */
-  uraModelCache* mcache;           /* other models with their stances (NULL until one is kept) */
-  uraRecall* recall;               /* complete grids for recall (NULL until one is kept) */
-  unsigned long tick;              /* use counter of both, for least-recently-used eviction */
+  uraModelCache* mcache; /* other models with their stances (NULL until one is kept) */
+  uraRecall* recall;     /* complete grids for recall (NULL until one is kept) */
+  unsigned long tick;    /* use counter of both, for least-recently-used eviction */
   /* run (or recall) the impact of one grid cell and its histories; NULL until impacts exist */
   int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
-  struct uraMc* mc;                /* the last montecarlo's samples (NULL: none; app_risk.h) */
-  char impact_title[400];          /* the last impact's conditions and results (plot titles) */
-  struct {                         /* the last trace's signals (ura_last_trace; ura_trace_free) */
+  struct uraMc* mc;       /* the last montecarlo's samples (NULL: none; app_risk.h) */
+  char impact_title[400]; /* the last impact's conditions and results (plot titles) */
+  struct {                /* the last trace's signals (ura_last_trace; ura_trace_free) */
     double* t;
     double* v;
     char** names;
     const char** units;
     int nsig;
   } trace;
-  int canvas_w, canvas_h;          /* canvas (pixels) a plot of several panels asks for; 0: the
+  int canvas_w, canvas_h; /* canvas (pixels) a plot of several panels asks for; 0: the
                                       terminal's default (ura_plot_canvas) */
   /* optional: asked before each command runs (the executing fuzz target bounds the work and the
      files of its inputs); nonzero refuses the command with c->err set */
   int (*guard)(struct uraCtx* c, int argc, char** argv);
-  struct uraScale* scale;          /* the work split over processes (scale.h; NULL: serial) */
-  int mute;                        /* results, notes, files and plots go nowhere (scale.h) */
+  struct uraScale* scale; /* the work split over processes (scale.h; NULL: serial) */
+  int mute;               /* results, notes, files and plots go nowhere (scale.h) */
 } uraCtx;
 
 /* record a failure message; always returns -1 */
@@ -188,17 +195,24 @@ int ura_parse_list(const char* s, double* v, int max);
 
 /* ---- parameters (one table drives set, show, save and completion) ---- */
 
-typedef enum { uraP_NUM = 0, uraP_LIST, uraP_ENUM, uraP_CASE, uraP_STR, uraP_INT } uraPKind;
+typedef enum {
+  uraP_NUM = 0,
+  uraP_LIST,
+  uraP_ENUM,
+  uraP_CASE,
+  uraP_STR,
+  uraP_INT
+} uraPKind;
 
 typedef struct {
   const char* name;
   uraPKind kind;
-  size_t off;                      /* offset of the value in uraState */
-  size_t setoff;                   /* offset of the int "set" flag of a derivable value, or 0 */
+  size_t off;    /* offset of the value in uraState */
+  size_t setoff; /* offset of the int "set" flag of a derivable value, or 0 */
   const char* unit;
-  double min, max;                 /* accepted closed range (numbers, list items); STR: size */
+  double min, max; /* accepted closed range (numbers, list items); STR: size */
   const char* help;
-  const char* const* choices;      /* uraP_ENUM: NULL-terminated names */
+  const char* const* choices; /* uraP_ENUM: NULL-terminated names */
   /* uraP_STR: checks a value and writes what is kept into norm (n bytes); 0, or -1 with the
      failure recorded (NULL: any text of the size) */
   int (*check)(struct uraCtx* c, const char* value, char* norm, size_t n);
@@ -225,8 +239,7 @@ int ura_paper_speed(const uraCtx* c);
 /* the paper's Table 2 (cmd_paper.c): speed (m/s) and descent angle (deg) of a case at a wind:
    case C's column for C, case B's for A, A1, A2 and B; only the printed winds 0, 2, ..., 10
    m/s. 0, or -1 with a message naming the wind and the accepted ones */
-int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed,
-                      double* angle);
+int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed, double* angle);
 /* the column of Table 2 a case takes: "B" or "C" */
 const char* ura_paper_descent_column(const char* casename);
 
@@ -259,14 +272,20 @@ void ura_table_print(uraCtx* c, uraTable* t);
 
 typedef int (*uraCmdFn)(uraCtx* c, int argc, char** argv);
 
-typedef enum { uraC_NONE = 0, uraC_PARAM, uraC_CASE, uraC_COMMAND, uraC_FILE, uraC_POF }
-  uraCompl;
+typedef enum {
+  uraC_NONE = 0,
+  uraC_PARAM,
+  uraC_CASE,
+  uraC_COMMAND,
+  uraC_FILE,
+  uraC_POF
+} uraCompl;
 
 typedef struct {
   const char* name;
   uraCmdFn fn;
-  int minargs, maxargs;            /* argument count range (maxargs -1: any) */
-  uraCompl compl;                  /* what the first argument completes to */
+  int minargs, maxargs; /* argument count range (maxargs -1: any) */
+  uraCompl compl ;      /* what the first argument completes to */
   const char* usage;
   const char* help;
 } uraCmd;
@@ -322,11 +341,11 @@ void ura_last_free(uraCtx* c);
 typedef struct {
   FILE* f;
   int fd;
-  int inplace;                     /* written in place (no temporary file, no rename) */
-  int err;                         /* errno of the first failed write */
-  char path[1024];                 /* as given (messages) */
-  char real[4096];                 /* the file replaced */
-  char tmp[4200];                  /* the temporary file beside it */
+  int inplace;     /* written in place (no temporary file, no rename) */
+  int err;         /* errno of the first failed write */
+  char path[1024]; /* as given (messages) */
+  char real[4096]; /* the file replaced */
+  char tmp[4200];  /* the temporary file beside it */
 } uraAtomic;
 int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);
 int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
@@ -334,13 +353,12 @@ int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
 /* models (model.c) */
 int ura_models_init(uraCtx* c);
 void ura_models_free(uraCtx* c);
-void ura_trace_free(uraCtx* c);                 /* the signals of the last trace */
-const urModel* ura_model(uraCtx* c);          /* compiled model, or NULL with c->err */
-const urImpactSetup* ura_setup(uraCtx* c);    /* settled stance, or NULL with c->err */
+void ura_trace_free(uraCtx* c);            /* the signals of the last trace */
+const urModel* ura_model(uraCtx* c);       /* compiled model, or NULL with c->err */
+const urImpactSetup* ura_setup(uraCtx* c); /* settled stance, or NULL with c->err */
 void ura_model_stale(uraCtx* c);
-int ura_model_param_find(uraCtx* c, const char* name);   /* index in the model, or -1 */
-int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit,
-                        int user);
+int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or -1 */
+int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
 /* the live state becomes ns if the model compiles with its parameter overrides (unchanged
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
 int ura_model_state(uraCtx* c, const uraState* ns, const char* who);
@@ -357,7 +375,7 @@ int ura_model_key_same(const uraModelKey* a, const uraModelKey* b);
 void ura_mcache_park(uraCtx* c);
 /* a kept model for ns's overrides becomes the live one (the live one is parked): 1, else 0 */
 int ura_mcache_take(uraCtx* c, const uraState* ns);
-void ura_mcache_flush(uraCtx* c);              /* free every kept model */
+void ura_mcache_flush(uraCtx* c); /* free every kept model */
 /* the settled stances of the kept models into out (at most max): donors of the person's stance
    for a new model (ur_impact_prepare); their count */
 int ura_mcache_setups(const uraCtx* c, const urImpactSetup** out, int max);
@@ -378,7 +396,7 @@ int ura_session_base(uraCtx* c, uraState* base);
 void ura_num_shortest(char* buf, size_t n, double v);
 void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
-int ura_cmd_design(uraCtx* c, int argc, char** argv);   /* designs.c */
+int ura_cmd_design(uraCtx* c, int argc, char** argv); /* designs.c */
 /* the saved designs as commands, for save session (designs.c) */
 void ura_designs_write(uraCtx* c, FILE* f, void (*write_state)(uraCtx*, FILE*));
 /* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
@@ -397,12 +415,12 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv);
    criterion counts; where the grid g's P is largest (nothing when r->p > 0) */
 void ura_explain_centre(uraTable* t, const urImpactResult* r, const urGrid* g);
 int ura_cmd_impact(uraCtx* c, int argc, char** argv);
-int ura_cmd_history(uraCtx* c, int argc, char** argv);         /* cmd_history.c */
+int ura_cmd_history(uraCtx* c, int argc, char** argv); /* cmd_history.c */
 /* every sensor channel's samples of the last impact from from to to (s from tau) */
 int ura_history_samples(uraCtx* c, double from, double to);
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
-int ura_impact_cond(uraCtx* c, urImpactCond* cond);   /* refuses angles below uraANGLE_DELTA */
-#define uraANGLE_DELTA 1.0         /* deg: the least descent angle of an offset Delta (grids) */
+int ura_impact_cond(uraCtx* c, urImpactCond* cond); /* refuses angles below uraANGLE_DELTA */
+#define uraANGLE_DELTA 1.0 /* deg: the least descent angle of an offset Delta (grids) */
 /* impact aim head UP SIDE (cmd_aim.c): one impact whose line of travel passes the head's centre
    at an eccentricity, at any angle 0-90 deg */
 int ura_impact_aim(uraCtx* c, int argc, char** argv);
@@ -419,7 +437,7 @@ void ura_impact_compact_row(uraTable* t, double dpar, double dperp, const urImpa
    Table 2 (paper), and the moment tau when it is not the paper's text (shift: the tau shift, m) */
 void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,
                     double shift);
-int ura_last_trace(uraCtx* c, uraTrace* tr);     /* histories of the last impact; -1: none */
+int ura_last_trace(uraCtx* c, uraTrace* tr); /* histories of the last impact; -1: none */
 /* keep a finished impact (its work space holds the histories) as the last impact, with the case
    and wind it ran for */
 void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
@@ -451,9 +469,14 @@ void ura_temp_disarm(void);
 
 /* text files (textin.c): the next line of f without its line end into *buf (realloc'ed, *cap
    its size), at most max bytes; its length, or one of these */
-enum { uraLINE_EOF = -1, uraLINE_ERROR = -2 /* errno */, uraLINE_LONG = -3, uraLINE_NUL = -4 };
+enum {
+  uraLINE_EOF = -1,
+  uraLINE_ERROR = -2 /* errno */,
+  uraLINE_LONG = -3,
+  uraLINE_NUL = -4
+};
 long ura_read_line(FILE* f, char** buf, size_t* cap, size_t max);
-#define uraMAXLINE (1L << 20)      /* longest line of a script or grid file, bytes */
+#define uraMAXLINE (1L << 20) /* longest line of a script or grid file, bytes */
 /* s as printable text into buf (n bytes, cut to fit): control bytes, DEL, C1 controls and bytes
    that are not UTF-8 as \xNN, printable ASCII and UTF-8 kept; its length. Every message goes
    through it (ura_fail), so that no input echoed in an error can drive the terminal. */

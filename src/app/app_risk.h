@@ -8,9 +8,12 @@
 #include "uasrisk/engine.h"
 #include "uasrisk/risk.h"
 
-#define uraMAXDIST 16              /* declared input distributions */
+#define uraMAXDIST 16 /* declared input distributions */
 
-typedef enum { uraMC_SURFACE = 0, uraMC_EXACT } uraMcMethod;
+typedef enum {
+  uraMC_SURFACE = 0,
+  uraMC_EXACT
+} uraMcMethod;
 
 /* one declared input distribution ('dist NAME KIND ...') */
 typedef struct {
@@ -19,23 +22,23 @@ typedef struct {
 } uraDistDecl;
 
 typedef struct {
-  double p_chute;                  /* the parachute deploys in time */
-  double p_bag;                    /* each airbag deploys */
-  double h_chute_min;              /* m: below this failure height the parachute cannot help */
-  double seed;                     /* Monte Carlo key (a whole number) */
-  int mc_method;                   /* uraMcMethod */
-  double surface_nodes;            /* nodes per continuous axis of the response surface */
-  double surface_check;            /* samples computed exactly to check the surface */
-  double pop_density;              /* people/km^2 for the iGRC */
-  double tlos;                     /* target level of safety, fatalities per flight hour */
-  double igrc_comp;                /* compensation subtracted from the raw iGRC */
-  int annexf_obstacles;            /* 1: the Annex F obstacle factor (1 < w < 40 m) */
+  double p_chute;       /* the parachute deploys in time */
+  double p_bag;         /* each airbag deploys */
+  double h_chute_min;   /* m: below this failure height the parachute cannot help */
+  double seed;          /* Monte Carlo key (a whole number) */
+  int mc_method;        /* uraMcMethod */
+  double surface_nodes; /* nodes per continuous axis of the response surface */
+  double surface_check; /* samples computed exactly to check the surface */
+  double pop_density;   /* people/km^2 for the iGRC */
+  double tlos;          /* target level of safety, fatalities per flight hour */
+  double igrc_comp;     /* compensation subtracted from the raw iGRC */
+  int annexf_obstacles; /* 1: the Annex F obstacle factor (1 < w < 40 m) */
   int ndist;
   uraDistDecl dist[uraMAXDIST];
 } uraRiskSet;
 
 struct uraCtx;
-struct uraMc;                      /* the kept result of the last montecarlo (cmd_montecarlo.c) */
+struct uraMc; /* the kept result of the last montecarlo (cmd_montecarlo.c) */
 
 void ura_risk_defaults(uraRiskSet* r);
 /* show and save session: the declared distributions, as '# ...' lines or as dist commands */

@@ -10,7 +10,7 @@
  * "No space left on device"), and Ctrl-C stops a write that waits (a FIFO without a reader, a
  * pipe that is full) within 0.1 s.
  */
-#define _GNU_SOURCE                /* fopencookie */
+#define _GNU_SOURCE /* fopencookie */
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -90,8 +90,10 @@ static int follow(const char* path, char* out, size_t n) {
 }
 
 static const char* kind_of(mode_t m) {
-  return S_ISDIR(m) ? "a directory" : S_ISBLK(m) ? "a block device" : S_ISSOCK(m) ? "a socket" :
-         "not a regular file";
+  return S_ISDIR(m)    ? "a directory"
+         : S_ISBLK(m)  ? "a block device"
+         : S_ISSOCK(m) ? "a socket"
+                       : "not a regular file";
 }
 
 /* open a FIFO or device for writing in place; a FIFO without a reader is waited for (Ctrl-C
@@ -124,10 +126,10 @@ int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) 
   memset(a, 0, sizeof *a);
   a->fd = -1;
   if (ura_dry(c, who)) return -1;
-  if (c->mute) path = "/dev/null";  /* a shard or an MPI rank but 0: its files go nowhere */
+  if (c->mute) path = "/dev/null"; /* a shard or an MPI rank but 0: its files go nowhere */
   if (!*path || strlen(path) >= sizeof a->path - 16) {
-    return ura_fail(c, "%s: cannot write '%.200s': %s; accepted: a file name of 1 to %d bytes",
-                    who, path, *path ? "name too long" : "empty name", (int)sizeof a->path - 17);
+    return ura_fail(c, "%s: cannot write '%.200s': %s; accepted: a file name of 1 to %d bytes", who,
+                    path, *path ? "name too long" : "empty name", (int)sizeof a->path - 17);
   }
   snprintf(a->path, sizeof a->path, "%s", path);
 
@@ -138,9 +140,11 @@ int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) 
   if (dupfd >= 0 && !exists) return fail_open(c, who, path, errno);
   if (!exists && errno != ENOENT) return fail_open(c, who, path, errno);
   if (exists && !S_ISREG(sb.st_mode) && !S_ISFIFO(sb.st_mode) && !S_ISCHR(sb.st_mode)) {
-    return ura_fail(c, "%s: cannot write '%s': it is %s; accepted: a regular file (replaced "
+    return ura_fail(c,
+                    "%s: cannot write '%s': it is %s; accepted: a regular file (replaced "
                     "whole), a FIFO or a character device such as /dev/stdout (written in place); "
-                    "the file is unchanged", who, path, kind_of(sb.st_mode));
+                    "the file is unchanged",
+                    who, path, kind_of(sb.st_mode));
   }
 
   if (dupfd >= 0 || (exists && !S_ISREG(sb.st_mode))) {
@@ -158,7 +162,7 @@ int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) 
     if (e) return fail_open(c, who, path, e);
     a->fd = mkstemp(a->tmp);
     if (a->fd < 0) return fail_open(c, who, path, errno);
-    ura_temp_arm(a->tmp);          /* SIGTERM, SIGHUP or a fatal Ctrl-C remove it */
+    ura_temp_arm(a->tmp); /* SIGTERM, SIGHUP or a fatal Ctrl-C remove it */
 
     /* the mode of the file replaced, or what a plain fopen would give */
     mode_t um = umask(0);

@@ -7,12 +7,13 @@
 
 #include "app.h"
 
-#define AIM_MAX 2.0                /* m: largest |UP|, |SIDE| */
+#define AIM_MAX 2.0 /* m: largest |UP|, |SIDE| */
 
 int ura_impact_aim(uraCtx* c, int argc, char** argv) {
   double up, side;
   if (argc != 5 || strcmp(argv[2], "head")) {
-    return ura_fail(c, "impact aim: usage: impact aim head UP SIDE (the eccentricity in m of "
+    return ura_fail(c,
+                    "impact aim: usage: impact aim head UP SIDE (the eccentricity in m of "
                     "the drone's line of travel from the head's centre, up and to the drone's "
                     "left)");
   }
@@ -52,16 +53,20 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
   /* the row of 'impact', its offset columns holding the eccentricity */
   int compact = ura_impact_compact(c);
   uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table(&c->st.injury);
-  ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; aim head: dpar, "
+  ura_table_note(t,
+                 "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; aim head: dpar, "
                  "dperp are the eccentricity (up, side) of the line of travel from the head's "
-                 "centre; HIC15 window %.2f-%.2f ms", c->st.casename, cond.speed, cond.angle,
-                 cond.face, 1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
+                 "centre; HIC15 window %.2f-%.2f ms",
+                 c->st.casename, cond.speed, cond.angle, cond.face, 1e3 * r.inj.hic15.t1,
+                 1e3 * r.inj.hic15.t2);
   if (r.nextrap) {
     ura_table_note(t, "extrapolated: %d law(s) used beyond their data; furthest: %s", r.nextrap,
                    r.extrap);
   }
-  if (compact) ura_impact_compact_row(t, up, side, &r);
-  else ura_impact_cells(t, &c->st.injury, up, side, &r);
+  if (compact)
+    ura_impact_compact_row(t, up, side, &r);
+  else
+    ura_impact_cells(t, &c->st.injury, up, side, &r);
   ura_table_print(c, t);
   return 0;
 }

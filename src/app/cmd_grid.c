@@ -9,17 +9,18 @@
 #include "app.h"
 #include "scale.h"
 
-#define MAXCELLS 4000000L          /* largest grid (and region scanned for its extents), cells */
-#define STOPPED "interrupted"      /* reason of a cell whose impact Ctrl-C stopped */
-#define RECALLED "recalled: the cells of an identical grid computed earlier in this session " \
-                 "(same model, conditions, step, extents and injury settings); nothing was " \
-                 "simulated now ('set recall off' recomputes)"
+#define MAXCELLS 4000000L      /* largest grid (and region scanned for its extents), cells */
+#define STOPPED  "interrupted" /* reason of a cell whose impact Ctrl-C stopped */
+#define RECALLED                                                                                   \
+  "recalled: the cells of an identical grid computed earlier in this session "                     \
+  "(same model, conditions, step, extents and injury settings); nothing was "                      \
+  "simulated now ('set recall off' recomputes)"
 
 typedef struct {
   const urImpactSetup* s;
   urImpactCond cond;
   const urInjuryParams* ip;
-  urImpactLanes** lanes;           /* per worker */
+  urImpactLanes** lanes; /* per worker */
   int tty;
 } gridRun;
 
@@ -97,7 +98,7 @@ static int auto_extents(const urImpactSetup* s, const urImpactCond* cond, double
   if (!(*scan <= MAXCELLS)) return -1;
   long ilo = (long)flo, ihi = (long)fhi, jmax = (long)fj;
   long lo = 0, hi = 0, kp = 0;
-  int found = 0;                   /* the rows found so far are lo..hi */
+  int found = 0; /* the rows found so far are lo..hi */
   for (long i = ilo; i <= ihi && !ura_interrupted(); i++) {
     for (long j = -jmax; j <= jmax; j++) {
       if (ur_impact_may_contact(s, cond, i * step, j * step)) {
@@ -172,8 +173,10 @@ static int extents(uraCtx* c, const urImpactSetup* s, const urImpactCond* cond, 
   if (st->par_max_set) *par_max = st->par_max;
   if (st->perp_max_set) *perp_max = st->perp_max;
   if (*par_min > *par_max) {
-    return ura_fail(c, "grid: along_min %g m is above along_max %g m; accepted: along_min <= "
-                    "along_max (or 'auto' for either)", *par_min, *par_max);
+    return ura_fail(c,
+                    "grid: along_min %g m is above along_max %g m; accepted: along_min <= "
+                    "along_max (or 'auto' for either)",
+                    *par_min, *par_max);
   }
   return 0;
 }
@@ -186,7 +189,8 @@ int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_m
   if (!s) return -1;
   if (extents(c, s, &cond, par_min, par_max, perp_max, &nscan)) {
     if (nscan == 0) return -1;
-    return ura_fail(c, "grid: the region to scan for the extents is too large; accepted: a "
+    return ura_fail(c,
+                    "grid: the region to scan for the extents is too large; accepted: a "
                     "larger 'step', or set along_min, along_max and cross_max");
   }
   return 0;
@@ -209,8 +213,8 @@ int ura_grid_run(uraCtx* c, int quiet) {
   if (!s) return -1;
 
   /* extents, lattice, refusing what memory cannot hold */
-  urGridSpec spec = {c->st.step, 0, 0, 0, mirrored(c), (int)c->st.threads, cb_may, NULL,
-                     cb_progress, NULL, ura_interrupt_flag()};
+  urGridSpec spec = {c->st.step, 0,    0,           0,    mirrored(c),         (int)c->st.threads,
+                     cb_may,     NULL, cb_progress, NULL, ura_interrupt_flag()};
   long ncell;
   double mb = 0, avail = 0;
   const char* what = "";
@@ -223,12 +227,15 @@ int ura_grid_run(uraCtx* c, int quiet) {
   int fits = fits_memory(ncell < 0 ? 0 : ncell, &mb, &avail);
   if (ncell < 0 || ncell > MAXCELLS || !fits) {
     char size[64];
-    if (ncell < 0) snprintf(size, sizeof size, "more than %ld", MAXCELLS);
-    else snprintf(size, sizeof size, "%ld", ncell);
-    return ura_fail(c, "grid: %s cells of %g m%s (%.0f MB; %.0f MB of memory available) is too "
+    if (ncell < 0)
+      snprintf(size, sizeof size, "more than %ld", MAXCELLS);
+    else
+      snprintf(size, sizeof size, "%ld", ncell);
+    return ura_fail(c,
+                    "grid: %s cells of %g m%s (%.0f MB; %.0f MB of memory available) is too "
                     "large; accepted: at most %ld cells in half the available memory (raise "
-                    "'step' or narrow along_min, along_max, cross_max)", size, spec.step, what, mb,
-                    avail, MAXCELLS);
+                    "'step' or narrow along_min, along_max, cross_max)",
+                    size, spec.step, what, mb, avail, MAXCELLS);
   }
   urGrid* g = ur_grid_new(&spec);
   int nw = spec.threads;
@@ -254,14 +261,14 @@ int ura_grid_run(uraCtx* c, int quiet) {
   spec.impact_stream = cb_stream;
   if (run.tty) ura_progress_start();
   urGridDist dist;
-  if (c->scale) ura_scale_grid(c, &spec, &dist);   /* cells split over processes (scale.h) */
+  if (c->scale) ura_scale_grid(c, &spec, &dist); /* cells split over processes (scale.h) */
   int rc = ur_grid_run(g, &spec);
   for (int i = 0; i < nw; i++) ur_impact_lanes_free(w[i]);
   free(w);
   if (run.tty) fputs("\r\033[K", stderr);
   if (rc) {
     ur_grid_free(g);
-    if (rc == -2) return -1;       /* the distributor said why */
+    if (rc == -2) return -1; /* the distributor said why */
     return ura_fail(c, "grid: out of memory for %ld cells", ncell);
   }
 
@@ -282,35 +289,41 @@ int ura_grid_run(uraCtx* c, int quiet) {
   keep_last(c, g, &cond, 0, s);
   ura_recall_keep(c, &cond, g);
   if (g->npending) {
-    return ura_fail(c, "grid: interrupted (Ctrl-C); %d of %d cells finished, kept as a partial "
-                    "grid (no Q)", g->ndone + g->nfailed, g->nrow * g->ncol);
+    return ura_fail(c,
+                    "grid: interrupted (Ctrl-C); %d of %d cells finished, kept as a partial "
+                    "grid (no Q)",
+                    g->ndone + g->nfailed, g->nrow * g->ncol);
   }
   return 0;
 }
 
 /* the summary row of the last grid */
 static int grid_summary(uraCtx* c) {
-  static const char* const cols[] = {"case", "wind", "speed", "angle", "face", "step", "cells",
-                                     "contact_cells", "q", "seconds"};
+  static const char* const cols[] = {"case", "wind",  "speed",         "angle", "face",
+                                     "step", "cells", "contact_cells", "q",     "seconds"};
   urGrid* g = c->last.g;
   uraTable* t = ura_table_new(10, cols);
   if (!g->complete) {
-    ura_table_note(t, "PARTIAL grid: %d cells failed, %d not computed; q is not given",
-                   g->nfailed, g->npending);
+    ura_table_note(t, "PARTIAL grid: %d cells failed, %d not computed; q is not given", g->nfailed,
+                   g->npending);
   }
-  ura_table_note(t, "Q = sum of P{F|Delta} x %g m x %g m over the %s (eq. 4.5); "
-                 "%d impacts simulated%s, %d cells decided geometrically", g->step, g->step,
-                 c->last.extents_set ? "grid's cells" : "full plane",
+  ura_table_note(t,
+                 "Q = sum of P{F|Delta} x %g m x %g m over the %s (eq. 4.5); "
+                 "%d impacts simulated%s, %d cells decided geometrically",
+                 g->step, g->step, c->last.extents_set ? "grid's cells" : "full plane",
                  g->nsimulated, c->last.recalled ? " when it was computed" : "",
                  g->nrow * g->ncol - g->nsimulated - g->npending - g->nfailed);
   if (c->last.extents_set) {
-    ura_table_note(t, "extents set: Q covers only along %g .. %g m, |cross| <= %g m (cells where "
+    ura_table_note(t,
+                   "extents set: Q covers only along %g .. %g m, |cross| <= %g m (cells where "
                    "contact is possible outside them are not counted)",
                    g->par_max - (g->nrow - 1) * g->step, g->par_max, -g->perp_min);
   }
   if (g->nextrap) {
-    ura_table_note(t, "%d of the impacts used a law beyond its data (extrapolated: 'grid cells' "
-                   "lists them, 'impact' names the law)", g->nextrap);
+    ura_table_note(t,
+                   "%d of the impacts used a law beyond its data (extrapolated: 'grid cells' "
+                   "lists them, 'impact' names the law)",
+                   g->nextrap);
   }
   if (c->last.recalled) ura_table_note(t, "%s", RECALLED);
   if (!strcmp(c->last.source, "computed")) {
@@ -325,8 +338,10 @@ static int grid_summary(uraCtx* c) {
   ura_table_cell(t, "%g", g->step);
   ura_table_cell(t, "%d", g->nrow * g->ncol);
   ura_table_cell(t, "%d", g->ncontact);
-  if (g->complete) ura_table_cell(t, "%.4f", g->q);
-  else ura_table_cell(t, "%s", "partial");
+  if (g->complete)
+    ura_table_cell(t, "%.4f", g->q);
+  else
+    ura_table_cell(t, "%s", "partial");
   ura_table_cell(t, "%.2f", g->seconds);
   ura_table_print(c, t);
   for (int k = 0; k < g->nrow * g->ncol; k++) {
@@ -399,8 +414,10 @@ int ura_cmd_grid(uraCtx* c, int argc, char** argv) {
       snprintf(c->err, sizeof c->err, "%s", keep);
     }
     if (rc == 0 && !c->last.g->complete) {
-      return ura_fail(c, "grid: %d cells failed (their simulations are listed above); Q is not "
-                      "complete", c->last.g->nfailed);
+      return ura_fail(c,
+                      "grid: %d cells failed (their simulations are listed above); Q is not "
+                      "complete",
+                      c->last.g->nfailed);
     }
     return rc;
   }

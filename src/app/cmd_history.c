@@ -21,8 +21,10 @@ static int parse_range(uraCtx* c, const char* word, double* from, double* to) {
   double x = -INFINITY, y = INFINITY;
   if ((*a && ura_parse_number(a, &x)) || (*b && ura_parse_number(b, &y)) || y < x ||
       strlen(word) > 60) {
-    return ura_fail(c, "history: '%s' is not a time range; accepted: FROM:TO in ms from tau "
-                    "(FROM <= TO; 50:80, :20, 60:)", word);
+    return ura_fail(c,
+                    "history: '%s' is not a time range; accepted: FROM:TO in ms from tau "
+                    "(FROM <= TO; 50:80, :20, 60:)",
+                    word);
   }
   *from = x * 1e-3;
   *to = y * 1e-3;
@@ -32,8 +34,8 @@ static int parse_range(uraCtx* c, const char* word, double* from, double* to) {
 /* the peak of each derived signal, then the criteria; how to see the samples */
 static int summary(uraCtx* c, const uraTrace* tr) {
   static const char* const cols[] = {"signal", "peak", "unit", "t_ms"};
-  static const char* const derived[] = {"head_acc", "neck_fz", "neck_my", "neck_fx",
-                                        "chest_defl", "abd_defl"};
+  static const char* const derived[] = {"head_acc", "neck_fz",    "neck_my",
+                                        "neck_fx",  "chest_defl", "abd_defl"};
   uraTable* t = ura_table_new(4, cols);
   ura_table_note(t, "impact %s (%g, %g) m: peaks (largest |value|) at t_ms from tau",
                  c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar,
@@ -101,8 +103,7 @@ static int summary(uraCtx* c, const uraTrace* tr) {
 }
 
 /* some signals' samples in [from, to] s */
-static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double from,
-                   double to) {
+static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double from, double to) {
   int* sel = malloc(sizeof(int) * (size_t)nsel);
   const char** cols = malloc(sizeof(char*) * (size_t)(nsel + 1));
   if (!sel || !cols) {
@@ -121,7 +122,7 @@ static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double
       ura_suggest_init(&sg, names[s]);
       list[0] = 0;
       for (int j = 0; j < tr->nsig; j++) {
-        if (ura_trace_find(tr, tr->names[j]) != j) continue;   /* each name once */
+        if (ura_trace_find(tr, tr->names[j]) != j) continue; /* each name once */
         ura_suggest_add(&sg, tr->names[j]);
         if (m < sizeof list) {
           m += (size_t)snprintf(list + m, sizeof list - m, "%s%s", m ? ", " : "", tr->names[j]);
@@ -129,13 +130,15 @@ static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double
       }
       free(sel);
       free(cols);
-      return ura_fail(c, "history: no channel '%s'%s; accepted: all, a range FROM:TO in ms, or "
-                      "%s", names[s], ura_suggest_text(&sg, dym, sizeof dym), list);
+      return ura_fail(c,
+                      "history: no channel '%s'%s; accepted: all, a range FROM:TO in ms, or "
+                      "%s",
+                      names[s], ura_suggest_text(&sg, dym, sizeof dym), list);
     }
   }
   uraTable* t = ura_table_new(nsel + 1, cols);
-  ura_table_note(t, "impact %s (%g, %g) m; t in s from tau; units: %s", c->last_aim ?
-                 "aimed at the head, up and side" : "at", c->last_dpar, c->last_dperp,
+  ura_table_note(t, "impact %s (%g, %g) m; t in s from tau; units: %s",
+                 c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar, c->last_dperp,
                  "head_acc m/s^2, neck forces N, moments N m, deflections m, sensor channels SI");
   for (int i = 0; i < tr->n; i++) {
     if (tr->t[i] < from || tr->t[i] > to) continue;
@@ -159,11 +162,14 @@ int ura_cmd_history(uraCtx* c, int argc, char** argv) {
     if (rg && ranged) return ura_fail(c, "history: two time ranges; accepted: one FROM:TO");
     ranged |= rg;
     if (rg) continue;
-    if (!strcmp(argv[i], "all")) all = 1;
-    else if (nsel < 64) names[nsel++] = argv[i];
+    if (!strcmp(argv[i], "all"))
+      all = 1;
+    else if (nsel < 64)
+      names[nsel++] = argv[i];
   }
   if (all && nsel) {
-    return ura_fail(c, "history: 'all' and channels named; accepted: history all, or history "
+    return ura_fail(c,
+                    "history: 'all' and channels named; accepted: history all, or history "
                     "CHANNEL...");
   }
   if (all || (ranged && !nsel)) return ura_history_samples(c, from, to);

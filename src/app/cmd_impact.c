@@ -16,10 +16,11 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond) {
   cond->yaw = c->st.yaw;
   cond->tau = c->st.tau;
   if (cond->angle < uraANGLE_DELTA) {
-    return ura_fail(c, "angle %g deg: an offset Delta needs a descent (at angles below %g deg "
+    return ura_fail(c,
+                    "angle %g deg: an offset Delta needs a descent (at angles below %g deg "
                     "the path stays R_max above the head top); accepted: angle >= %g deg, "
-                    "'set angle auto' (the descent's), or 'impact aim head UP SIDE' for a flight", cond->angle, uraANGLE_DELTA,
-                    uraANGLE_DELTA);
+                    "'set angle auto' (the descent's), or 'impact aim head UP SIDE' for a flight",
+                    cond->angle, uraANGLE_DELTA, uraANGLE_DELTA);
   }
   return 0;
 }
@@ -27,14 +28,17 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond) {
 void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,
                     double shift) {
   if (paper) {
-    ura_table_note(t, "speed and angle: the paper's Table 2, case %s's column, at wind %g m/s "
+    ura_table_note(t,
+                   "speed and angle: the paper's Table 2, case %s's column, at wind %g m/s "
                    "('set descent paper'), not the descent model",
                    ura_paper_descent_column(casename), wind);
   }
   if (tau == urTAU_TOP) {
-    ura_table_note(t, "tau top: Delta is taken when the drone centre reaches head-top level, "
+    ura_table_note(t,
+                   "tau top: Delta is taken when the drone centre reaches head-top level, "
                    "%.3f m further along the course than the paper's text (R_max above the "
-                   "head top; 'set tau rmax')", shift);
+                   "head top; 'set tau rmax')",
+                   shift);
   }
 }
 
@@ -89,10 +93,12 @@ int ura_impact_fresh(uraCtx* c, const urImpactSetup* s, const urImpactCond* cond
 
 int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   double dpar, dperp;
-  if (!strcmp(argv[1], "aim")) return ura_impact_aim(c, argc, argv);   /* cmd_aim.c */
+  if (!strcmp(argv[1], "aim")) return ura_impact_aim(c, argc, argv); /* cmd_aim.c */
   if (argc != 3) {
-    return ura_fail(c, "impact: %d arguments; accepted: impact DPAR DPERP, or impact aim head "
-                    "UP SIDE", argc - 1);
+    return ura_fail(c,
+                    "impact: %d arguments; accepted: impact DPAR DPERP, or impact aim head "
+                    "UP SIDE",
+                    argc - 1);
   }
   if (ura_parse_number(argv[1], &dpar)) {
     return ura_fail(c, "impact: DPAR '%s' is not a number; accepted: the along offset in m",
@@ -125,17 +131,21 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   /* one row */
   int compact = ura_impact_compact(c);
   uraTable* t = compact ? ura_impact_compact_table() : ura_impact_table(&c->st.injury);
-  ura_table_note(t, "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
-                 "%.2f-%.2f ms", c->st.casename, cond.speed, cond.angle, cond.face,
-                 1e3 * r.inj.hic15.t1, 1e3 * r.inj.hic15.t2);
+  ura_table_note(t,
+                 "case %s, speed %.4g m/s, angle %.4g deg, face %g deg; HIC15 window "
+                 "%.2f-%.2f ms",
+                 c->st.casename, cond.speed, cond.angle, cond.face, 1e3 * r.inj.hic15.t1,
+                 1e3 * r.inj.hic15.t2);
   if (r.nextrap) {
     ura_table_note(t, "extrapolated: %d law(s) used beyond their data; furthest: %s", r.nextrap,
                    r.extrap);
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, ura_paper_speed(c), cond.tau,
                  ur_impact_tau_shift(s, &cond));
-  if (compact) ura_impact_compact_row(t, dpar, dperp, &r);
-  else ura_impact_cells(t, &c->st.injury, dpar, dperp, &r);
+  if (compact)
+    ura_impact_compact_row(t, dpar, dperp, &r);
+  else
+    ura_impact_cells(t, &c->st.injury, dpar, dperp, &r);
   ura_table_print(c, t);
   return 0;
 }
@@ -151,10 +161,14 @@ static void channel_name(const urModel* m, int j, char* buf, size_t n) {
     const urSensor* sn = m->sensor + i;
     int k = j - sn->adr;
     if (k < 0 || k >= sn->dim) continue;
-    const char* suffix = sn->dim == 3 ? comp3[k] : sn->dim == 6 ? comp6[k] :
-                         sn->dim == 2 ? comp2[k] : NULL;
-    if (suffix) snprintf(buf, n, "%s_%s", sn->name, suffix);
-    else snprintf(buf, n, "%s", sn->name);
+    const char* suffix = sn->dim == 3   ? comp3[k]
+                         : sn->dim == 6 ? comp6[k]
+                         : sn->dim == 2 ? comp2[k]
+                                        : NULL;
+    if (suffix)
+      snprintf(buf, n, "%s_%s", sn->name, suffix);
+    else
+      snprintf(buf, n, "%s", sn->name);
   }
 }
 
@@ -174,9 +188,11 @@ int ura_history_samples(uraCtx* c, double from, double to) {
     names[1 + j] = strdup(buf);
   }
   uraTable* t = ura_table_new(ncol, (const char* const*)names);
-  ura_table_note(t, "impact %s (%g, %g) m; t in s from tau; SI units; engine frames "
-                 "(uasrisk-model(5))", c->last_aim ? "aimed at the head, up and side" : "at",
-                 c->last_dpar, c->last_dperp);
+  ura_table_note(t,
+                 "impact %s (%g, %g) m; t in s from tau; SI units; engine frames "
+                 "(uasrisk-model(5))",
+                 c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar,
+                 c->last_dperp);
   for (int r = 0; r < d->nhist; r++) {
     double tr = d->hist[(size_t)r * ncol];
     if (tr < from || tr > to) continue;
@@ -210,16 +226,15 @@ int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
     idx[j] = k;
   }
 
-  static const char* const cols[] = {"drone", "person", "first", "last", "peak_force",
-                                     "peak_time"};
+  static const char* const cols[] = {"drone", "person", "first", "last", "peak_force", "peak_time"};
   uraTable* t = ura_table_new(6, cols);
   ura_table_note(t, "impact %s (%g, %g) m: %d pair%s touched; t in s from tau, force in N",
-                 c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar,
-                 c->last_dperp, n, n == 1 ? "" : "s");
+                 c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar, c->last_dperp,
+                 n, n == 1 ? "" : "s");
   for (int i = 0; i < n; i++) {
     int k = idx[i], src = s->cand_src[k];
-    const char* drone = src < m->npair ? m->geom[s->cand[k][0]].name
-                                       : m->bag[(src - m->npair) / urMAXBAGTGT].name;
+    const char* drone =
+        src < m->npair ? m->geom[s->cand[k][0]].name : m->bag[(src - m->npair) / urMAXBAGTGT].name;
     ura_table_cell(t, "%s", drone);
     ura_table_cell(t, "%s", m->geom[s->cand[k][1]].name);
     ura_table_cell(t, "%.4f", rec[k].t_first);
@@ -242,9 +257,12 @@ void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpac
   c->last_dperp = dperp;
   c->last_aim = cond->aim;
   char w[32];
-  if (isfinite(wind)) snprintf(w, sizeof w, "%g m/s", wind);
-  else snprintf(w, sizeof w, "?");
-  snprintf(c->impact_title, sizeof c->impact_title, "case %s, wind %s, face %g deg, %.3g m/s at "
+  if (isfinite(wind))
+    snprintf(w, sizeof w, "%g m/s", wind);
+  else
+    snprintf(w, sizeof w, "?");
+  snprintf(c->impact_title, sizeof c->impact_title,
+           "case %s, wind %s, face %g deg, %.3g m/s at "
            "%.3g deg\nimpact %s %.2f m, %s %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
            casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle,
            cond->aim ? "aimed at the head, up" : "at dpar", dpar, cond->aim ? "side" : "dperp",
@@ -252,8 +270,8 @@ void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpac
 }
 
 /* derived signals first (what the injury criteria read), then every sensor channel */
-static const char* const trace_names[] = {"head_acc", "neck_fz", "neck_my", "neck_fx",
-                                          "chest_defl", "abd_defl"};
+static const char* const trace_names[] = {"head_acc", "neck_fz",    "neck_my",
+                                          "neck_fx",  "chest_defl", "abd_defl"};
 static const char* const trace_units[] = {"m/s^2", "N", "N m", "N", "m", "m"};
 #define NDERIVED 6
 
@@ -297,8 +315,8 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
   int a = m->sensor[s->s_head_acc].adr, nk = m->sensor[s->s_neck].adr;
   for (int i = 0; i < n; i++) {
     const double* row = d->hist + (size_t)i * stride + 1;
-    c->trace.v[0 * (size_t)n + i] = sqrt(row[a] * row[a] + row[a + 1] * row[a + 1] +
-                                         row[a + 2] * row[a + 2]);
+    c->trace.v[0 * (size_t)n + i] =
+        sqrt(row[a] * row[a] + row[a + 1] * row[a + 1] + row[a + 2] * row[a + 2]);
     c->trace.v[1 * (size_t)n + i] = -row[nk + 2];
     c->trace.v[2 * (size_t)n + i] = -row[nk + 4];
     c->trace.v[3 * (size_t)n + i] = row[nk + 0];
@@ -318,8 +336,10 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
 /* the viewer's Enter: run the cell's impact for the grid's conditions and give its trace */
 int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr) {
   if (c->last.diff) {
-    return ura_fail(c, "a difference grid has no impact of its own; 'design compare' names the "
-                    "two designs: load one and run 'impact %g %g'", cell->dpar, cell->dperp);
+    return ura_fail(c,
+                    "a difference grid has no impact of its own; 'design compare' names the "
+                    "two designs: load one and run 'impact %g %g'",
+                    cell->dpar, cell->dperp);
   }
   const urImpactSetup* s = ura_setup(c);
   urImpactCond cond;

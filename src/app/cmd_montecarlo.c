@@ -15,27 +15,27 @@
 
 #include "risk_internal.h"
 
-#define MAXIN (uraMAXDIST + 1 + urMAXBAGS)
-#define MAXGRIDS 10000             /* grids of a response surface, at most */
+#define MAXIN      (uraMAXDIST + 1 + urMAXBAGS)
+#define MAXGRIDS   10000 /* grids of a response surface, at most */
 #define MAXSAMPLES 1000000
 
 struct uraMc {
-  int n, nin, ndecl;               /* samples; input columns; declared inputs (the first ones) */
-  int face_col;                    /* the column of face = face_dir - wind_dir, or -1 */
-  int chute_col;                   /* the first deployment column (chute, then bags), or -1 */
+  int n, nin, ndecl; /* samples; input columns; declared inputs (the first ones) */
+  int face_col;      /* the column of face = face_dir - wind_dir, or -1 */
+  int chute_col;     /* the first deployment column (chute, then bags), or -1 */
   char name[MAXIN][urNAMELEN];
-  double* x;                       /* n x nin inputs, sample-major */
-  int* mask;                       /* each sample's branch */
-  double *q, *q_c;                 /* Q of the sample's branch, and without any device, m^2 */
-  double *ca, *ca_c;               /* their Annex F critical areas, m^2 */
-  double share[MAXIN];             /* first-order variance shares (NAN: a derived column) */
+  double* x;           /* n x nin inputs, sample-major */
+  int* mask;           /* each sample's branch */
+  double *q, *q_c;     /* Q of the sample's branch, and without any device, m^2 */
+  double *ca, *ca_c;   /* their Annex F critical areas, m^2 */
+  double share[MAXIN]; /* first-order variance shares (NAN: a derived column) */
   urMcStats st;
   urDeploy dep;
   int bag[urMAXBAGS];
   char casename[8];
   double seed;
-  char note[4][1000];               /* inputs, method, surface check, timing */
-  char* settings;                  /* the session text it ran under (sora mc checks it) */
+  char note[4][1000]; /* inputs, method, surface check, timing */
+  char* settings;     /* the session text it ran under (sora mc checks it) */
 };
 
 void ura_mc_free(uraCtx* c) {
@@ -51,9 +51,10 @@ void ura_mc_free(uraCtx* c) {
 
 /* the session text without the settings that change no sample */
 static char* settings_text(uraCtx* c) {
-  static const char* const skip[] = {"set format ", "set terminal ", "set output ",
-                                     "set threads ", "set recall ", "set pop_density ",
-                                     "set tlos ", "set igrc_compensation ", NULL};
+  static const char* const skip[] = {
+      "set format ", "set terminal ",    "set output ", "set threads ",
+      "set recall ", "set pop_density ", "set tlos ",   "set igrc_compensation ",
+      NULL};
   char* s = NULL;
   size_t n = 0;
   FILE* f = open_memstream(&s, &n);
@@ -118,18 +119,18 @@ static int cmp_double(const void* a, const void* b) {
 /* ---- the response surface ---- */
 
 typedef struct {
-  int col;                         /* the input column of its coordinate */
-  int n;                           /* nodes */
+  int col; /* the input column of its coordinate */
+  int n;   /* nodes */
   double node[uraMAXLIST + 1];
-  int discrete;                    /* the nodes are the drawn values themselves */
+  int discrete; /* the nodes are the drawn values themselves */
 } axis;
 
 typedef struct {
   int nax;
   axis ax[MAXIN];
-  long total;                      /* lattice points */
-  int nmask, masks[urMAXBRANCH];   /* branches needed (the drawn ones and none) */
-  double* value;                   /* nmask x total Q values */
+  long total;                    /* lattice points */
+  int nmask, masks[urMAXBRANCH]; /* branches needed (the drawn ones and none) */
+  double* value;                 /* nmask x total Q values */
 } surface;
 
 /* the axes: one per drawn input of the grids, nodes spanning what was drawn */
@@ -199,8 +200,8 @@ static void progress(int tty, const char* what, long k, long n) {
 }
 
 /* Q of every sample from the surface; a few samples again by their own grids */
-static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp,
-                      uraState* ns, int tty) {
+static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp, uraState* ns,
+                      int tty) {
   surface s;
   memset(&s, 0, sizeof s);
   surface_axes(m, base, &s);
@@ -212,8 +213,10 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   }
   long ngrid = s.total * s.nmask;
   if (ngrid > MAXGRIDS) {
-    return ura_fail(c, "montecarlo: the response surface needs %ld grids; accepted: at most %d "
-                    "(lower surface_nodes, or 'set mc_method exact')", ngrid, MAXGRIDS);
+    return ura_fail(c,
+                    "montecarlo: the response surface needs %ld grids; accepted: at most %d "
+                    "(lower surface_nodes, or 'set mc_method exact')",
+                    ngrid, MAXGRIDS);
   }
   s.value = malloc((size_t)ngrid * sizeof *s.value);
   if (!s.value) return ura_fail(c, "montecarlo: out of memory");
@@ -236,13 +239,14 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   }
   int exact = 1;
   for (int d = 0; d < s.nax; d++) exact &= s.ax[d].discrete || s.ax[d].n == 1;
-  snprintf(m->note[1], sizeof m->note[1], "method: response surface: Q on a lattice of real "
+  snprintf(m->note[1], sizeof m->note[1],
+           "method: response surface: Q on a lattice of real "
            "grids (step %g m), %ld point%s x %d deployment branch%s = %ld grids%s%s%s; %s; %s",
-           base->step, s.total, s.total == 1 ? "" : "s", s.nmask, s.nmask == 1 ? "" : "es",
-           ngrid, recalled ? " (" : "", recalled ? "some recalled" : "", recalled ? ")" : "",
+           base->step, s.total, s.total == 1 ? "" : "s", s.nmask, s.nmask == 1 ? "" : "es", ngrid,
+           recalled ? " (" : "", recalled ? "some recalled" : "", recalled ? ")" : "",
            s.nax ? axes : "no drawn input acts on the grids",
-           exact ? "every sample is on a lattice point: exact" :
-           "multilinear interpolation between the nodes");
+           exact ? "every sample is on a lattice point: exact"
+                 : "multilinear interpolation between the nodes");
 
   /* each sample's Q; the check against its own grids */
   for (int i = 0; i < m->n && rc == 0; i++) {
@@ -266,11 +270,14 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   if (exact) {
     snprintf(m->note[2], sizeof m->note[2], "surface check: not needed (exact)");
   } else if (nchk) {
-    snprintf(m->note[2], sizeof m->note[2], "surface check: samples 0..%d computed by their own "
+    snprintf(m->note[2], sizeof m->note[2],
+             "surface check: samples 0..%d computed by their own "
              "grids: |Q_surface - Q_grid| at most %.3g m^2 (%.2g %%), mean %.3g m^2 "
-             "(surface_check)", nchk - 1, emax, 100 * rmax, esum / nchk);
+             "(surface_check)",
+             nchk - 1, emax, 100 * rmax, esum / nchk);
   } else {
-    snprintf(m->note[2], sizeof m->note[2], "surface check: none (surface_check 0): the "
+    snprintf(m->note[2], sizeof m->note[2],
+             "surface check: none (surface_check 0): the "
              "interpolation error is not measured");
   }
   free(s.value);
@@ -278,8 +285,8 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
 }
 
 /* Q of every sample from its own grids */
-static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp,
-                    uraState* ns, int tty) {
+static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp, uraState* ns,
+                    int tty) {
   int rc = 0, ngrid = 0, recalled = 0;
   for (int i = 0; i < m->n && rc == 0; i++) {
     progress(tty, "sample", i + 1, m->n);
@@ -296,9 +303,10 @@ static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* 
       recalled += rc == 0 && c->last.recalled;
     }
   }
-  snprintf(m->note[1], sizeof m->note[1], "method: exact: every sample's own grids (step %g m), "
-           "%d grids (%d recalled: samples with identical conditions)", base->step, ngrid,
-           recalled);
+  snprintf(m->note[1], sizeof m->note[1],
+           "method: exact: every sample's own grids (step %g m), "
+           "%d grids (%d recalled: samples with identical conditions)",
+           base->step, ngrid, recalled);
   snprintf(m->note[2], sizeof m->note[2], "surface check: not needed (exact)");
   return rc;
 }
@@ -322,8 +330,8 @@ static int draw(uraCtx* c, struct uraMc* m, const uraState* base, uraState* ns) 
     snprintf(m->name[k], urNAMELEN, "%s", r->dist[k].name);
     names[k] = m->name[k];
     dist[k] = r->dist[k].d;
-    bearings |= !grid_input(names[k]) && strncmp(names[k], "p_", 2) && strcmp(names[k],
-                                                                              "h_chute_min");
+    bearings |=
+        !grid_input(names[k]) && strncmp(names[k], "p_", 2) && strcmp(names[k], "h_chute_min");
   }
   m->nin = m->ndecl;
   m->face_col = bearings ? m->nin++ : -1;
@@ -339,15 +347,15 @@ static int draw(uraCtx* c, struct uraMc* m, const uraState* base, uraState* ns) 
   m->x = malloc(n * m->nin * sizeof *m->x);
   m->mask = malloc(n * sizeof *m->mask);
   m->q = malloc(4 * n * sizeof *m->q);
-  if (!m->x || !m->mask || !m->q) return ura_fail(c, "montecarlo: out of memory for %d samples",
-                                                   m->n);
+  if (!m->x || !m->mask || !m->q)
+    return ura_fail(c, "montecarlo: out of memory for %d samples", m->n);
   m->q_c = m->q + n;
   m->ca = m->q + 2 * n;
   m->ca_c = m->q + 3 * n;
 
   uint64_t seed = (uint64_t)r->seed;
   for (int i = 0; i < m->n; i++) {
-    double* x = m->x + (size_t)i * m->nin, u[1 + urMAXBAGS];
+    double *x = m->x + (size_t)i * m->nin, u[1 + urMAXBAGS];
     ur_mc_inputs(seed, (uint64_t)i, m->ndecl, names, dist, x, u);
     if (bearings) {
       /* the course runs downwind; face is the person's bearing from the one the wind comes
@@ -378,15 +386,17 @@ int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv) {
   if (!strcmp(argv[1], "samples")) return mc_samples(c);
   double nd;
   if (ura_parse_number(argv[1], &nd) || nd != floor(nd) || nd < 2 || nd > MAXSAMPLES) {
-    return ura_fail(c, "montecarlo: '%s' is not accepted; accepted: a whole number of samples "
-                    "in [2, %d], shares or samples", argv[1], MAXSAMPLES);
+    return ura_fail(c,
+                    "montecarlo: '%s' is not accepted; accepted: a whole number of samples "
+                    "in [2, %d], shares or samples",
+                    argv[1], MAXSAMPLES);
   }
   if (ura_dry(c, "simulation")) return -1;
   struct timespec t0;
   clock_gettime(CLOCK_MONOTONIC, &t0);
 
   struct uraMc* m = calloc(1, sizeof *m);
-  uraState* st = malloc(3 * sizeof *st);       /* the live state, and two to work in */
+  uraState* st = malloc(3 * sizeof *st); /* the live state, and two to work in */
   if (!m || !st) {
     free(m);
     free(st);
@@ -404,15 +414,16 @@ int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv) {
   int tty = isatty(STDERR_FILENO);
   ura_progress_start();
   if (rc == 0) {
-    rc = st->risk.mc_method == uraMC_EXACT ? by_grids(c, m, st, tmp, ns, tty) :
-                                             by_surface(c, m, st, tmp, ns, tty);
+    rc = st->risk.mc_method == uraMC_EXACT ? by_grids(c, m, st, tmp, ns, tty)
+                                           : by_surface(c, m, st, tmp, ns, tty);
   }
   for (int i = 0; i < m->n && rc == 0; i++) {
     double sp, an;
     sample_state(m, st, i, tmp);
     ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
     rc = ura_risk_annexf(c, ns, &m->ca[i], &sp, &an);
-    if (rc == 0 && m->mask[i] == 0) m->ca_c[i] = m->ca[i];
+    if (rc == 0 && m->mask[i] == 0)
+      m->ca_c[i] = m->ca[i];
     else if (rc == 0) {
       ura_risk_branch_state(tmp, 0, &m->dep, m->bag, ns);
       rc = ura_risk_annexf(c, ns, &m->ca_c[i], &sp, &an);
@@ -423,8 +434,10 @@ int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv) {
   /* the live state back (the last grid stays the last one computed) */
   char err[uraERRLEN];
   snprintf(err, sizeof err, "%s", c->err);
-  if (ura_model_state(c, st, "montecarlo") && rc == 0) rc = -1;
-  else snprintf(c->err, sizeof c->err, "%s", err);
+  if (ura_model_state(c, st, "montecarlo") && rc == 0)
+    rc = -1;
+  else
+    snprintf(c->err, sizeof c->err, "%s", err);
   if (rc && strncmp(c->err, "montecarlo", 10)) {
     snprintf(err, sizeof err, "%s", c->err);
     ura_fail(c, "montecarlo: %.900s", err);
@@ -471,14 +484,17 @@ static void inputs_note(uraCtx* c, struct uraMc* m, char* buf, size_t n) {
   }
   if (!c->st.risk.ndist && k < n) k += (size_t)snprintf(buf + k, n - k, "none declared");
   if (m->face_col >= 0 && k < n) {
-    k += (size_t)snprintf(buf + k, n - k, "; face = face_dir - wind_dir (the course runs "
+    k += (size_t)snprintf(buf + k, n - k,
+                          "; face = face_dir - wind_dir (the course runs "
                           "downwind)");
   }
   if (k < n) {
     if (m->dep.chute) {
-      snprintf(buf + k, n - k, "; deployment drawn per sample: p_chute %g, p_bag %g (%d "
-               "airbag%s), h_chute_min %g m", c->st.risk.p_chute, c->st.risk.p_bag, m->dep.nbag,
-               m->dep.nbag == 1 ? "" : "s", c->st.risk.h_chute_min);
+      snprintf(buf + k, n - k,
+               "; deployment drawn per sample: p_chute %g, p_bag %g (%d "
+               "airbag%s), h_chute_min %g m",
+               c->st.risk.p_chute, c->st.risk.p_bag, m->dep.nbag, m->dep.nbag == 1 ? "" : "s",
+               c->st.risk.h_chute_min);
     } else {
       snprintf(buf + k, n - k, "; no parachute: nothing deploys");
     }
@@ -496,15 +512,20 @@ static void mc_summary(uraCtx* c) {
   struct uraMc* m = c->mc;
   char buf[1000];
   uraTable* t = ura_table_new(5, cols);
-  ura_table_note(t, "Q of case %s over %d samples (seed %.0f; sample i depends on (seed, i) "
+  ura_table_note(t,
+                 "Q of case %s over %d samples (seed %.0f; sample i depends on (seed, i) "
                  "only): mean and sd of the samples, lo95..hi95 the 95 %% confidence interval of "
-                 "the mean (Student's t)", m->casename, m->n, m->seed);
+                 "the mean (Student's t)",
+                 m->casename, m->n, m->seed);
   inputs_note(c, m, buf, sizeof buf);
   snprintf(m->note[0], sizeof m->note[0], "%s", buf);
   for (int i = 0; i < 3; i++) ura_table_note(t, "%s", m->note[i]);
-  ura_table_note(t, "the samples' spread: 2.5 %% and 97.5 %% quantiles %.6g and %.6g m^2, min "
-                 "%.6g, max %.6g", m->st.p025, m->st.p975, m->st.min, m->st.max);
-  size_t k = (size_t)snprintf(buf, sizeof buf, "variance shares (first-order, 'montecarlo "
+  ura_table_note(t,
+                 "the samples' spread: 2.5 %% and 97.5 %% quantiles %.6g and %.6g m^2, min "
+                 "%.6g, max %.6g",
+                 m->st.p025, m->st.p975, m->st.min, m->st.max);
+  size_t k = (size_t)snprintf(buf, sizeof buf,
+                              "variance shares (first-order, 'montecarlo "
                               "shares'): ");
   for (int i = 0; i < m->nin && k < sizeof buf; i++) {
     if (i == m->face_col) continue;
@@ -516,7 +537,8 @@ static void mc_summary(uraCtx* c) {
   if (m->dep.chute) {
     double r, lo, hi;
     if (ur_mc_ratio(m->q_c, m->q, m->n, &r, &lo, &hi) == 0) {
-      ura_table_note(t, "unmitigated (no parachute, no airbag) at the same samples: mean Q %.6g "
+      ura_table_note(t,
+                     "unmitigated (no parachute, no airbag) at the same samples: mean Q %.6g "
                      "m^2, reduction factor %.4g (95 %% interval %.4g..%.4g; 'sora mc')",
                      mean_of(m->q_c, m->n), r, lo, hi);
     }
@@ -535,9 +557,11 @@ static int mc_shares(uraCtx* c) {
   struct uraMc* m = c->mc;
   if (!m) return ura_fail(c, "montecarlo shares: no montecarlo yet; run 'montecarlo N'");
   uraTable* t = ura_table_new(2, cols);
-  ura_table_note(t, "first-order variance shares of Q over the %d samples of the last "
+  ura_table_note(t,
+                 "first-order variance shares of Q over the %d samples of the last "
                  "montecarlo: S = Var(E[Q | input]) / Var(Q), by the means of Q over about "
-                 "sqrt(N) bins of the input (bias-corrected); nan when Q does not vary", m->n);
+                 "sqrt(N) bins of the input (bias-corrected); nan when Q does not vary",
+                 m->n);
   for (int k = 0; k < m->nin; k++) {
     if (k == m->face_col) continue;
     ura_table_cell(t, "%s", m->name[k]);
@@ -560,9 +584,11 @@ static int mc_samples(uraCtx* c) {
   cols[nc++] = "ca_annexf";
   cols[nc++] = "ca_annexf_unmitigated";
   uraTable* t = ura_table_new(nc, cols);
-  ura_table_note(t, "the %d samples of the last montecarlo of case %s (seed %.0f): drawn inputs, "
+  ura_table_note(t,
+                 "the %d samples of the last montecarlo of case %s (seed %.0f): drawn inputs, "
                  "deployment outcomes (1 deployed), the branch, Q (m^2), Q without any device, "
-                 "and both Annex F critical areas (m^2)", m->n, m->casename, m->seed);
+                 "and both Annex F critical areas (m^2)",
+                 m->n, m->casename, m->seed);
   char name[64];
   for (int i = 0; i < m->n; i++) {
     ura_table_cell(t, "%d", i);
@@ -586,8 +612,8 @@ static void figure(const double* ca, const double* ref, int n, uraSoraFig* f, do
   f->ca = s.mean;
   f->lo = s.lo95;
   f->hi = s.hi95;
-  if (ur_mc_ratio(ref, ca, n, &f->red, &f->red_lo, &f->red_hi)) f->red = f->red_lo =
-                                                                  f->red_hi = NAN;
+  if (ur_mc_ratio(ref, ca, n, &f->red, &f->red_lo, &f->red_hi))
+    f->red = f->red_lo = f->red_hi = NAN;
 }
 
 int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t n) {
@@ -597,7 +623,8 @@ int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t
   int same = now && !strcmp(now, m->settings);
   free(now);
   if (!same) {
-    return ura_fail(c, "sora mc: the settings changed since the last montecarlo (case, "
+    return ura_fail(c,
+                    "sora mc: the settings changed since the last montecarlo (case, "
                     "parameters or distributions); accepted: run 'montecarlo N' again");
   }
   double* work = malloc((size_t)m->n * sizeof *work);
@@ -608,9 +635,11 @@ int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t
   figure(m->ca, m->ca_c, m->n, &fig[3], work);
   free(work);
   *mitigated = m->dep.chute;
-  snprintf(note, n, "from the last montecarlo: %d samples (seed %.0f); ca is the mean, lo95..hi95 "
+  snprintf(note, n,
+           "from the last montecarlo: %d samples (seed %.0f); ca is the mean, lo95..hi95 "
            "its 95 %% confidence interval; reduction the ratio of the paired means with its "
-           "interval (delta method); the iGRC of the mean", m->n, m->seed);
+           "interval (delta method); the iGRC of the mean",
+           m->n, m->seed);
   return 0;
 }
 

@@ -8,16 +8,15 @@
 /* the paper's Table 2 as printed: wind (m/s), then impact speed |v| (m/s) and descent angle psi
    (deg) of case B (parachute) and case C (no parachute) */
 static const double table2[6][5] = {
-  {0, 7.5, 90.0, 40.6, 90.0},  {2, 7.8, 75.1, 40.6, 89.0},  {4, 8.5, 62.0, 40.6, 88.0},
-  {6, 9.6, 51.5, 40.5, 86.9},  {8, 11.0, 43.3, 40.5, 85.8}, {10, 12.5, 37.0, 40.4, 84.7},
+    {0, 7.5, 90.0, 40.6, 90.0}, {2, 7.8, 75.1, 40.6, 89.0},  {4, 8.5, 62.0, 40.6, 88.0},
+    {6, 9.6, 51.5, 40.5, 86.9}, {8, 11.0, 43.3, 40.5, 85.8}, {10, 12.5, 37.0, 40.4, 84.7},
 };
 
 const char* ura_paper_descent_column(const char* casename) {
   return !strcmp(casename, "C") ? "C" : "B";
 }
 
-int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed,
-                      double* angle) {
+int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed, double* angle) {
   int col = !strcmp(ura_paper_descent_column(casename), "C") ? 3 : 1;
   for (int i = 0; i < 6; i++) {
     if (table2[i][0] == wind) {
@@ -26,9 +25,11 @@ int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* spee
       return 0;
     }
   }
-  return ura_fail(c, "descent paper: wind %g m/s is not printed in the paper's Table 2; accepted: "
+  return ura_fail(c,
+                  "descent paper: wind %g m/s is not printed in the paper's Table 2; accepted: "
                   "wind 0, 2, 4, 6, 8 or 10 m/s, or 'set descent model' (or set speed and "
-                  "angle)", wind);
+                  "angle)",
+                  wind);
 }
 
 int ura_cmd_descent(uraCtx* c, int argc, char** argv) {
@@ -37,7 +38,8 @@ int ura_cmd_descent(uraCtx* c, int argc, char** argv) {
   urDescentParams p = c->st.descent;
   char err[256];
   if (c->st.descent_src == uraDESC_PAPER) {
-    ura_table_note(t, "the descent model (eq. 2.2); impacts and grids take the paper's Table 2 "
+    ura_table_note(t,
+                   "the descent model (eq. 2.2); impacts and grids take the paper's Table 2 "
                    "instead ('set descent paper')");
   }
 
@@ -59,23 +61,26 @@ int ura_cmd_descent(uraCtx* c, int argc, char** argv) {
 }
 
 int ura_cmd_parametric(uraCtx* c, int argc, char** argv) {
-  static const char* const cols[] = {"case", "wind", "speed", "angle", "planform", "mtow",
-                                     "gliding", "pof_rcc", "pof_bc", "pof_awke"};
+  static const char* const cols[] = {"case", "wind",    "speed",   "angle",  "planform",
+                                     "mtow", "gliding", "pof_rcc", "pof_bc", "pof_awke"};
   uraTable* t = ura_table_new(10, cols);
   const urParametricParams* pp = &c->st.para;
   urDescentParams p = c->st.descent;
   char err[256];
 
   if (c->st.descent_src == uraDESC_PAPER) {
-    ura_table_note(t, "speed and angle from the descent model (eq. 2.2); impacts and grids take "
+    ura_table_note(t,
+                   "speed and angle from the descent model (eq. 2.2); impacts and grids take "
                    "the paper's Table 2 instead ('set descent paper')");
   }
 
   /* the choices the paper leaves open, stated with the numbers */
-  ura_table_note(t, "gliding area D.1 with W=%g m across, L=%g m along, H_P=%g m, 2R_P=%g m, "
-                 "D_slide=%g m (D_slide from the paper's 2.55 m^2 at 90 deg)", pp->width,
-                 pp->length, pp->person_height, pp->person_diameter, pp->slide);
-  ura_table_note(t, "pof_rcc: eq. D.3 head curve (a=74.8 J, b=0.2802); pof_bc: head, "
+  ura_table_note(t,
+                 "gliding area D.1 with W=%g m across, L=%g m along, H_P=%g m, 2R_P=%g m, "
+                 "D_slide=%g m (D_slide from the paper's 2.55 m^2 at 90 deg)",
+                 pp->width, pp->length, pp->person_height, pp->person_diameter, pp->slide);
+  ura_table_note(t,
+                 "pof_rcc: eq. D.3 head curve (a=74.8 J, b=0.2802); pof_bc: head, "
                  "D_imp=%g m (not in the paper), body mass %g kg; pof_awke: stand-in, "
                  "weighted mean of the three D.3 curves (the AWKE equation is not public)",
                  pp->bc_diameter, pp->body_mass);

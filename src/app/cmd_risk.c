@@ -68,9 +68,10 @@ void ura_risk_branch_state(const uraState* base, int mask, const urDeploy* dep, 
 int ura_risk_grid(uraCtx* c, const uraState* ns, const char* who, int quiet, double* q) {
   if (ura_model_state(c, ns, who) || ura_grid_run(c, quiet)) return -1;
   if (!c->last.g->complete) {
-    return ura_fail(c, "%s: %d cells failed in the grid of case %s at wind %g m/s, face %g deg; "
-                    "Q is not complete ('grid cells' lists the grid)", who, c->last.g->nfailed,
-                    ns->casename, ns->descent.wind, ns->face);
+    return ura_fail(c,
+                    "%s: %d cells failed in the grid of case %s at wind %g m/s, face %g deg; "
+                    "Q is not complete ('grid cells' lists the grid)",
+                    who, c->last.g->nfailed, ns->casename, ns->descent.wind, ns->face);
   }
   *q = c->last.g->q;
   return 0;
@@ -107,12 +108,12 @@ typedef struct {
   int bag[urMAXBAGS];
   urBranch br[urMAXBRANCH];
   int nbr;
-  double q[urMAXBRANCH];           /* each branch's Q, m^2 */
-  double mixed;                    /* sum of weight q */
-  double q_none;                   /* Q without any device (the last branch) */
-  double speed[2], angle[2];       /* impact conditions without and with the parachute */
-  double ca[2];                    /* their Annex F critical areas */
-  double recalled;                 /* branches whose grids were recalled */
+  double q[urMAXBRANCH];     /* each branch's Q, m^2 */
+  double mixed;              /* sum of weight q */
+  double q_none;             /* Q without any device (the last branch) */
+  double speed[2], angle[2]; /* impact conditions without and with the parachute */
+  double ca[2];              /* their Annex F critical areas */
+  double recalled;           /* branches whose grids were recalled */
 } branches;
 
 /* every branch's grid (and the Annex F areas without and with the parachute); the live state is
@@ -146,8 +147,10 @@ static int run_branches(uraCtx* c, const char* who, branches* b) {
   }
   char err[uraERRLEN];
   snprintf(err, sizeof err, "%s", c->err);
-  if (ura_model_state(c, orig, who) && rc == 0) rc = -1;
-  else snprintf(c->err, sizeof c->err, "%s", err);
+  if (ura_model_state(c, orig, who) && rc == 0)
+    rc = -1;
+  else
+    snprintf(c->err, sizeof c->err, "%s", err);
   free(orig);
   return rc;
 }
@@ -156,18 +159,23 @@ static int run_branches(uraCtx* c, const char* who, branches* b) {
 static void deploy_notes(uraCtx* c, uraTable* t, const branches* b) {
   const uraRiskSet* r = &c->st.risk;
   if (!b->dep.chute) {
-    ura_table_note(t, "case %s carries no parachute (area_chute 0): one branch, nothing to "
-                   "deploy", c->st.casename);
+    ura_table_note(t,
+                   "case %s carries no parachute (area_chute 0): one branch, nothing to "
+                   "deploy",
+                   c->st.casename);
     return;
   }
-  ura_table_note(t, "deployment: p_chute %g (the parachute deploys in time), p_bag %g (each of "
-                 "%d airbag%s); failure at altitude %g m %s h_chute_min %g m%s", r->p_chute,
-                 r->p_bag, b->dep.nbag, b->dep.nbag == 1 ? "" : "s", c->st.descent.altitude,
-                 c->st.descent.altitude >= r->h_chute_min ? ">=" : "<", r->h_chute_min,
+  ura_table_note(t,
+                 "deployment: p_chute %g (the parachute deploys in time), p_bag %g (each of "
+                 "%d airbag%s); failure at altitude %g m %s h_chute_min %g m%s",
+                 r->p_chute, r->p_bag, b->dep.nbag, b->dep.nbag == 1 ? "" : "s",
+                 c->st.descent.altitude, c->st.descent.altitude >= r->h_chute_min ? ">=" : "<",
+                 r->h_chute_min,
                  c->st.descent.altitude < r->h_chute_min ? ": the parachute cannot help" : "");
-  ura_table_note(t, "branch none: no parachute, and no airbag credited (the drone falls as case "
-                 "C at %.3f m/s, %.2f deg); with the parachute %.3f m/s, %.2f deg", b->speed[0],
-                 b->angle[0], b->speed[1], b->angle[1]);
+  ura_table_note(t,
+                 "branch none: no parachute, and no airbag credited (the drone falls as case "
+                 "C at %.3f m/s, %.2f deg); with the parachute %.3f m/s, %.2f deg",
+                 b->speed[0], b->angle[0], b->speed[1], b->angle[1]);
 }
 
 int ura_cmd_risk(uraCtx* c, int argc, char** argv) {
@@ -175,13 +183,16 @@ int ura_cmd_risk(uraCtx* c, int argc, char** argv) {
   branches b;
   if (run_branches(c, "risk", &b)) return -1;
   uraTable* t = ura_table_new(3, cols);
-  ura_table_note(t, "Q of case %s at wind %g m/s, face %g deg mixed over the deployment "
+  ura_table_note(t,
+                 "Q of case %s at wind %g m/s, face %g deg mixed over the deployment "
                  "outcomes: mixed = sum of weight x q (one grid per branch, step %g m)",
                  c->st.casename, c->st.descent.wind, c->st.face, c->st.step);
   deploy_notes(c, t, &b);
   if (b.recalled) {
-    ura_table_note(t, "recalled: %g of the %d grids are identical to grids computed earlier in "
-                   "this session ('set recall off' recomputes)", b.recalled, b.nbr);
+    ura_table_note(t,
+                   "recalled: %g of the %d grids are identical to grids computed earlier in "
+                   "this session ('set recall off' recomputes)",
+                   b.recalled, b.nbr);
   }
   double wsum = 0;
   char name[64];
@@ -230,8 +241,9 @@ static uraSoraFig fixed(double ca, double red) {
 }
 
 int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
-  static const char* const cols[] = {"case", "model", "ca", "lo95", "hi95", "reduction",
-                                     "red_lo95", "red_hi95", "igrc_raw", "igrc", "igrc_table"};
+  static const char* const cols[] = {"case",     "model",     "ca",        "lo95",
+                                     "hi95",     "reduction", "red_lo95",  "red_hi95",
+                                     "igrc_raw", "igrc",      "igrc_table"};
   if (argc == 2 && strcmp(argv[1], "mc")) {
     return ura_fail(c, "sora: unknown '%s'; accepted: sora, sora mc", argv[1]);
   }
@@ -249,24 +261,28 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
     fig[2] = fixed(b.mixed, b.q_none / b.mixed);
     fig[3] = fixed(ca_mix, b.ca[0] / ca_mix);
     mitigated = b.dep.chute;
-    snprintf(note, sizeof note, "deterministic: at the live wind %g m/s and face %g deg (lo95 = "
-             "hi95; 'sora mc' gives the last montecarlo's intervals)", c->st.descent.wind,
-             c->st.face);
+    snprintf(note, sizeof note,
+             "deterministic: at the live wind %g m/s and face %g deg (lo95 = "
+             "hi95; 'sora mc' gives the last montecarlo's intervals)",
+             c->st.descent.wind, c->st.face);
   }
 
   const uraRiskSet* r = &c->st.risk;
   uraTable* t = ura_table_new(11, cols);
-  ura_table_note(t, "SORA 2.5 at %g ppl/km^2, TLOS %g /h, compensation %g: raw = 1 - "
+  ura_table_note(t,
+                 "SORA 2.5 at %g ppl/km^2, TLOS %g /h, compensation %g: raw = 1 - "
                  "log10(TLOS / (density 1e-6 CA)) - compensation; igrc_raw = raw to 0.1 (ties to "
                  "even), igrc = its ceiling (casex AnnexFParms.iGRC), igrc_table = igrc_raw - 0.1 "
-                 "to the nearest (SORA 2.5 Table 2's convention)", r->pop_density, r->tlos,
-                 r->igrc_comp);
-  ura_table_note(t, "q: Q of the grids (expected fatalities per fall = density x Q); annex_f: the "
+                 "to the nearest (SORA 2.5 Table 2's convention)",
+                 r->pop_density, r->tlos, r->igrc_comp);
+  ura_table_note(t,
+                 "q: Q of the grids (expected fatalities per fall = density x Q); annex_f: the "
                  "Annex F critical area of a %g kg, %g m drone at the impact speed and angle (mu "
                  "0.65, CoR(angle), 290 J, obstacle factor %s; casex "
-                 "CriticalAreaModels.critical_area)", c->st.descent.mass, c->st.para.width,
-                 r->annexf_obstacles ? "on" : "off");
-  ura_table_note(t, "reduction: the unmitigated drone's CA (no parachute, no airbag: case C) over "
+                 "CriticalAreaModels.critical_area)",
+                 c->st.descent.mass, c->st.para.width, r->annexf_obstacles ? "on" : "off");
+  ura_table_note(t,
+                 "reduction: the unmitigated drone's CA (no parachute, no airbag: case C) over "
                  "the row's, per model; each factor 10 lowers raw by 1");
   if (argc == 1) deploy_notes(c, t, &b);
   ura_table_note(t, "%s", note);

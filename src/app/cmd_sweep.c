@@ -11,9 +11,9 @@
    wind or face swept, the step and the threads excepted; descent=paper and tau=top, which 'case'
    keeps, included), or "none" */
 void ura_sweep_changes(uraCtx* c, char* buf, size_t n) {
-  static const char* const names[] = {"speed", "angle", "pitch", "roll", "yaw", "altitude",
-                                      "mass", "area_drone", "cd_drone", "area_chute",
-                                      "cd_chute", "rho", "g", NULL};
+  static const char* const names[] = {"speed",    "angle", "pitch",      "roll",     "yaw",
+                                      "altitude", "mass",  "area_drone", "cd_drone", "area_chute",
+                                      "cd_chute", "rho",   "g",          NULL};
   uraState ref;
   urInjuryParams inj;
   char val[64];
@@ -24,7 +24,7 @@ void ura_sweep_changes(uraCtx* c, char* buf, size_t n) {
   const urPreset* pr = ura_preset_find(c, c->st.casename);
   if (!pr || ura_preset_state(c, pr, c->model, &ref)) ura_state_defaults(&ref);
   c->err[0] = 0;
-  ref.descent_src = uraDESC_MODEL;      /* 'case' keeps these: the changes name them */
+  ref.descent_src = uraDESC_MODEL; /* 'case' keeps these: the changes name them */
   ref.tau = urTAU_RMAX;
   for (int i = 0; names[i] && k < n; i++) {
     const uraParam* p = ura_param_find(names[i]);
@@ -66,8 +66,8 @@ void ura_sweep_changes(uraCtx* c, char* buf, size_t n) {
 static int sweep_keep(uraCtx* c, const uraSweep* s) {
   for (int i = 0; i < c->nsweep; i++) {
     uraSweep* o = &c->sweep[i];
-    if (!strcmp(o->casename, s->casename) && o->over_face == s->over_face &&
-        o->fixed == s->fixed && !strcmp(o->changes, s->changes)) {
+    if (!strcmp(o->casename, s->casename) && o->over_face == s->over_face && o->fixed == s->fixed &&
+        !strcmp(o->changes, s->changes)) {
       *o = *s;
       return 0;
     }
@@ -101,16 +101,18 @@ static void sweep_add(uraSweep* s, double x, double speed, double angle, double 
 /* sweep show: every kept value; columns case,sweep,wind,face,speed,angle,step,q,changes,value,
    unit (value: the swept value in unit) */
 static int sweep_show(uraCtx* c) {
-  static const char* const cols[] = {"case", "sweep", "wind", "face", "speed", "angle", "step",
-                                     "q", "changes", "value", "unit"};
+  static const char* const cols[] = {"case", "sweep", "wind",    "face",  "speed", "angle",
+                                     "step", "q",     "changes", "value", "unit"};
   if (!c->nsweep && !c->npsweep) {
-    return ura_fail(c, "sweep show: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
+    return ura_fail(c,
+                    "sweep show: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
                     "(or 'sweep NAME LIST [UNIT]')");
   }
   uraTable* t = ura_table_new(11, cols);
-  ura_table_note(t, "%d sweep%s kept (plot sweep draws them; sweep clear forgets them); "
-                 "changes: settings that differ from the case preset", c->nsweep + c->npsweep,
-                 c->nsweep + c->npsweep == 1 ? "" : "s");
+  ura_table_note(t,
+                 "%d sweep%s kept (plot sweep draws them; sweep clear forgets them); "
+                 "changes: settings that differ from the case preset",
+                 c->nsweep + c->npsweep, c->nsweep + c->npsweep == 1 ? "" : "s");
   for (int i = 0; i < c->nsweep; i++) {
     const uraSweep* s = &c->sweep[i];
     for (int k = 0; k < s->n; k++) {
@@ -143,7 +145,7 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     return 0;
   }
   if (argc >= 3 && strcmp(argv[1], "wind") && strcmp(argv[1], "face")) {
-    return ura_sweep_param(c, argc, argv);   /* sweep NAME LIST [UNIT] (sweep_param.c) */
+    return ura_sweep_param(c, argc, argv); /* sweep NAME LIST [UNIT] (sweep_param.c) */
   }
   int is_wind = !strcmp(argv[1], "wind"), is_face = !strcmp(argv[1], "face");
   double v[uraMAXLIST];
@@ -152,8 +154,10 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
                     is_wind ? "0,4,10" : "0,90,180");
   }
   if ((!is_wind && !is_face) || argc != 3) {
-    return ura_fail(c, "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face "
-                    "LIST, sweep show, sweep clear", argv[1]);
+    return ura_fail(c,
+                    "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face "
+                    "LIST, sweep show, sweep clear",
+                    argv[1]);
   }
   int n = ura_parse_list(argv[2], v, uraMAXLIST);
   const uraParam* p = ura_param_find(is_wind ? "wind" : "face");
@@ -161,8 +165,10 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     if (v[i] < p->min || v[i] > p->max) n = -1;
   }
   if (n < 0) {
-    return ura_fail(c, "sweep %s: '%s' is not accepted; accepted: comma-separated numbers in "
-                    "[%g, %g] %s", argv[1], argv[2], p->min, p->max, p->unit);
+    return ura_fail(c,
+                    "sweep %s: '%s' is not accepted; accepted: comma-separated numbers in "
+                    "[%g, %g] %s",
+                    argv[1], argv[2], p->min, p->max, p->unit);
   }
   /* with the paper's Table 2, every wind must be one it prints (refused before any grid runs) */
   if (ura_paper_speed(c)) {
@@ -190,27 +196,29 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   double keep = is_wind ? c->st.descent.wind : c->st.face;
   uraTable* t = ura_table_new(6, cols);
   int paper = ura_paper_speed(c);
-  double shift = 0;                /* the tau shift at each value (it depends on the angle) */
+  double shift = 0; /* the tau shift at each value (it depends on the angle) */
   int shifts_differ = 0;
   int rc = 0;
-  char recalled[200] = "";         /* the values whose grids were recalled (recall.c) */
+  char recalled[200] = ""; /* the values whose grids were recalled (recall.c) */
   size_t nr = 0;
   for (int i = 0; i < n && rc == 0; i++) {
-    if (is_wind) c->st.descent.wind = v[i];
-    else c->st.face = v[i];
-    ura_progress_label("sweep %s %g %s (%d of %d): ", argv[1], v[i], is_wind ? "m/s" : "deg",
-                       i + 1, n);
+    if (is_wind)
+      c->st.descent.wind = v[i];
+    else
+      c->st.face = v[i];
+    ura_progress_label("sweep %s %g %s (%d of %d): ", argv[1], v[i], is_wind ? "m/s" : "deg", i + 1,
+                       n);
     rc = ura_grid_run(c, 0);
     ura_progress_label(NULL);
     if (rc && ura_interrupted()) {
       char why[uraERRLEN];
       snprintf(why, sizeof why, "%s", c->err);
-      ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)",
-               argv[1], v[i], i, n, why);
+      ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", argv[1],
+               v[i], i, n, why);
     }
     if (rc == 0 && !c->last.g->complete) {
-      rc = ura_fail(c, "sweep: %d cells failed at %s %g; Q is not complete",
-                    c->last.g->nfailed, argv[1], v[i]);
+      rc = ura_fail(c, "sweep: %d cells failed at %s %g; Q is not complete", c->last.g->nfailed,
+                    argv[1], v[i]);
     }
     if (rc == 0) {
       ura_table_cell(t, "%s", c->st.casename);
@@ -223,31 +231,37 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
       if (i > 0 && c->last.tau_shift != shift) shifts_differ = 1;
       shift = c->last.tau_shift;
       if (c->last.recalled && nr < sizeof recalled) {
-        nr += (size_t)snprintf(recalled + nr, sizeof recalled - nr, "%s%g", nr ? ", " : "",
-                               v[i]);
+        nr += (size_t)snprintf(recalled + nr, sizeof recalled - nr, "%s%g", nr ? ", " : "", v[i]);
       }
     }
   }
-  if (is_wind) c->st.descent.wind = keep;
-  else c->st.face = keep;
+  if (is_wind)
+    c->st.descent.wind = keep;
+  else
+    c->st.face = keep;
   if (paper) {
-    ura_table_note(t, "speed and angle: the paper's Table 2, case %s's column, at each wind "
+    ura_table_note(t,
+                   "speed and angle: the paper's Table 2, case %s's column, at each wind "
                    "('set descent paper'), not the descent model",
                    ura_paper_descent_column(c->st.casename));
   }
   if (c->st.tau == urTAU_TOP) {
     if (shifts_differ || s->n == 0) {
-      ura_table_note(t, "tau top: Delta is taken when the drone centre reaches head-top level, "
+      ura_table_note(t,
+                     "tau top: Delta is taken when the drone centre reaches head-top level, "
                      "R_max/tan(psi) further along the course than the paper's text (R_max "
                      "above the head top; 'set tau rmax')");
     } else {
-      ura_table_note(t, "tau top: Delta is taken when the drone centre reaches head-top level, "
+      ura_table_note(t,
+                     "tau top: Delta is taken when the drone centre reaches head-top level, "
                      "%.3f m further along the course than the paper's text (R_max above the "
-                     "head top; 'set tau rmax')", shift);
+                     "head top; 'set tau rmax')",
+                     shift);
     }
   }
   if (nr) {
-    ura_table_note(t, "recalled: the grids of %s %s are identical to grids computed earlier in "
+    ura_table_note(t,
+                   "recalled: the grids of %s %s are identical to grids computed earlier in "
                    "this session and were not simulated again ('set recall off' recomputes)",
                    argv[1], recalled);
   }
@@ -257,17 +271,18 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   if (s->n > 0) {
     char err[uraERRLEN];
     snprintf(err, sizeof err, "%s", c->err);
-    if (sweep_keep(c, s)) rc = -1;
-    else if (rc) snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err,
-                          s->n);
+    if (sweep_keep(c, s))
+      rc = -1;
+    else if (rc)
+      snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err, s->n);
   }
   free(s);
   return rc;
 }
 
 int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
-  static const char* const cols[] = {"case", "wind", "p_centre", "gliding", "q_parametric", "q",
-                                     "factor"};
+  static const char* const cols[] = {"case",         "wind", "p_centre", "gliding",
+                                     "q_parametric", "q",    "factor"};
   urImpactCond cond;
   const urImpactSetup* s = ura_setup(c);
   if (!s || ura_impact_cond(c, &cond)) return -1;
@@ -288,10 +303,12 @@ int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
   }
 
   uraTable* t = ura_table_new(7, cols);
-  ura_table_note(t, "paper Tables 11-13: P{F|Delta=(0,0)} x gliding area (eq. D.1) against the "
+  ura_table_note(t,
+                 "paper Tables 11-13: P{F|Delta=(0,0)} x gliding area (eq. D.1) against the "
                  "dynamical Q, and the reduction factor between them");
   if (c->last.recalled) {
-    ura_table_note(t, "recalled: the grid is identical to one computed earlier in this session "
+    ura_table_note(t,
+                   "recalled: the grid is identical to one computed earlier in this session "
                    "and was not simulated again ('set recall off' recomputes)");
   }
   ura_cond_notes(t, c->st.casename, c->st.descent.wind, c->last.paper_speed, c->last.tau,

@@ -11,42 +11,47 @@
 #include "uasrisk/grid.h"
 
 /* band thresholds, percent: low < MED <= medium < HIGH <= high < SEVERE <= severe */
-#define uraBAND_MED 5.0
-#define uraBAND_HIGH 30.0
+#define uraBAND_MED    5.0
+#define uraBAND_HIGH   30.0
 #define uraBAND_SEVERE 90.0
 
 typedef enum {
-  uraROLE_NONE = 0,                /* no contact, or P = 0: white / blank */
-  uraROLE_LOW,                     /* 0 < P < 5 % */
-  uraROLE_MEDIUM,                  /* 5 <= P < 30 % (yellow) */
-  uraROLE_HIGH,                    /* 30 <= P < 90 % (orange) */
-  uraROLE_SEVERE,                  /* P >= 90 % (red) */
-  uraROLE_FAILED,                  /* the cell's simulation failed */
-  uraROLE_PENDING,                 /* the cell is not computed */
-  uraROLE_AXIS,                    /* axis labels */
-  uraROLE_TITLE,                   /* title and status lines */
+  uraROLE_NONE = 0, /* no contact, or P = 0: white / blank */
+  uraROLE_LOW,      /* 0 < P < 5 % */
+  uraROLE_MEDIUM,   /* 5 <= P < 30 % (yellow) */
+  uraROLE_HIGH,     /* 30 <= P < 90 % (orange) */
+  uraROLE_SEVERE,   /* P >= 90 % (red) */
+  uraROLE_FAILED,   /* the cell's simulation failed */
+  uraROLE_PENDING,  /* the cell is not computed */
+  uraROLE_AXIS,     /* axis labels */
+  uraROLE_TITLE,    /* title and status lines */
   /* a difference grid P_b - P_a (design compare), a diverging scale: */
-  uraROLE_SAFER2,                  /* P_b - P_a <= -30 % (deep blue) */
-  uraROLE_SAFER,                   /* -30 % < P_b - P_a < 0 (light blue) */
-  uraROLE_RISKIER,                 /* 0 < P_b - P_a < 30 % (light red) */
-  uraROLE_RISKIER2,                /* P_b - P_a >= 30 % (deep red) */
+  uraROLE_SAFER2,   /* P_b - P_a <= -30 % (deep blue) */
+  uraROLE_SAFER,    /* -30 % < P_b - P_a < 0 (light blue) */
+  uraROLE_RISKIER,  /* 0 < P_b - P_a < 30 % (light red) */
+  uraROLE_RISKIER2, /* P_b - P_a >= 30 % (deep red) */
   uraROLE_N
 } uraRole;
 
 typedef enum {
-  uraSCHEME_PLAIN = 0,             /* no escapes at all (not a terminal, or NO_COLOR for text) */
-  uraSCHEME_MONO,                  /* attributes and glyphs only (ncurses without colour) */
-  uraSCHEME_BASIC,                 /* the 8 ANSI colours */
-  uraSCHEME_XTERM,                 /* 256 colours: white, pale yellow, yellow, orange, red */
+  uraSCHEME_PLAIN = 0, /* no escapes at all (not a terminal, or NO_COLOR for text) */
+  uraSCHEME_MONO,      /* attributes and glyphs only (ncurses without colour) */
+  uraSCHEME_BASIC,     /* the 8 ANSI colours */
+  uraSCHEME_XTERM,     /* 256 colours: white, pale yellow, yellow, orange, red */
   uraSCHEME_N
 } uraScheme;
 
-enum { uraATTR_BOLD = 1, uraATTR_REVERSE = 2, uraATTR_DIM = 4, uraATTR_UNDERLINE = 8 };
+enum {
+  uraATTR_BOLD = 1,
+  uraATTR_REVERSE = 2,
+  uraATTR_DIM = 4,
+  uraATTR_UNDERLINE = 8
+};
 
 typedef struct {
-  short fg, bg;                    /* colour numbers (0-7 ANSI, 8-255 xterm), -1 default */
-  int attr;                        /* uraATTR_* bits */
-  char glyph;                      /* marker of the band where colour is absent */
+  short fg, bg; /* colour numbers (0-7 ANSI, 8-255 xterm), -1 default */
+  int attr;     /* uraATTR_* bits */
+  char glyph;   /* marker of the band where colour is absent */
 } uraStyle;
 
 /* role of a probability 0..1 (band), and of a grid cell (band, failed or pending) */

@@ -7,34 +7,42 @@
 
 #include "app.h"
 
-#define DESCENT "the descent model (speed and angle, when derived)"
+#define DESCENT    "the descent model (speed and angle, when derived)"
 #define PARAMETRIC "the parametric model only (Appendix D; not the multibody model)"
 
 /* the models each workbench setting reaches; the model parameters reach the multibody model */
 static const struct {
   const char* name;
-  int multibody;                   /* 1: the multibody model uses it (impact, grid) */
+  int multibody; /* 1: the multibody model uses it (impact, grid) */
   const char* reach;
 } reach[] = {
-  {"mass", 1, "the descent and parametric models and the multibody drone (its masses and "
-   "inertias scaled to this total, its geometry kept)"},
-  {"width", 0, "the parametric model only (the multibody drone keeps its size: set drone_size)"},
-  {"length", 0, "the parametric model only (the multibody drone keeps its size: set "
-   "drone_size)"},
-  {"altitude", 0, DESCENT}, {"area_drone", 0, DESCENT}, {"cd_drone", 0, DESCENT},
-  {"area_chute", 0, DESCENT}, {"cd_chute", 0, DESCENT}, {"rho", 0, DESCENT},
-  {"g", 0, "the descent model (the multibody model's gravity is its option)"},
-  {"cfit", 0, PARAMETRIC}, {"person_height", 0, PARAMETRIC},
-  {"person_diameter", 0, PARAMETRIC}, {"slide", 0, PARAMETRIC}, {"body_mass", 0, PARAMETRIC},
-  {"bc_diameter", 0, PARAMETRIC},
-  {"speed", 1, "the impact conditions of the multibody model (impact, grid)"},
-  {"angle", 1, "the impact conditions of the multibody model (impact, grid)"},
-  {"pitch", 1, "the drone's attitude at impact (impact, grid)"},
-  {"roll", 1, "the drone's attitude at impact (impact, grid)"},
-  {"yaw", 1, "the drone's attitude at impact (impact, grid)"},
-  {"velocity", 1, "the impact speed and angle (both set; impact, grid)"},
-  {NULL, 0, NULL}
-};
+    {"mass", 1,
+     "the descent and parametric models and the multibody drone (its masses and "
+     "inertias scaled to this total, its geometry kept)"},
+    {"width", 0, "the parametric model only (the multibody drone keeps its size: set drone_size)"},
+    {"length", 0,
+     "the parametric model only (the multibody drone keeps its size: set "
+     "drone_size)"},
+    {"altitude", 0, DESCENT},
+    {"area_drone", 0, DESCENT},
+    {"cd_drone", 0, DESCENT},
+    {"area_chute", 0, DESCENT},
+    {"cd_chute", 0, DESCENT},
+    {"rho", 0, DESCENT},
+    {"g", 0, "the descent model (the multibody model's gravity is its option)"},
+    {"cfit", 0, PARAMETRIC},
+    {"person_height", 0, PARAMETRIC},
+    {"person_diameter", 0, PARAMETRIC},
+    {"slide", 0, PARAMETRIC},
+    {"body_mass", 0, PARAMETRIC},
+    {"bc_diameter", 0, PARAMETRIC},
+    {"speed", 1, "the impact conditions of the multibody model (impact, grid)"},
+    {"angle", 1, "the impact conditions of the multibody model (impact, grid)"},
+    {"pitch", 1, "the drone's attitude at impact (impact, grid)"},
+    {"roll", 1, "the drone's attitude at impact (impact, grid)"},
+    {"yaw", 1, "the drone's attitude at impact (impact, grid)"},
+    {"velocity", 1, "the impact speed and angle (both set; impact, grid)"},
+    {NULL, 0, NULL}};
 
 int ura_design_mass(const urModel* m, uraState* ns, double mass, int user) {
   if (!m || m->roles.mass_param < 0) return -1;
@@ -95,9 +103,11 @@ static int set_velocity(uraCtx* c, const char* value, const char* unit) {
   double v[3];
   int n = ura_parse_list(value, v, 3);
   if (unit || n != 2 || !(v[0] >= 0) || !(v[1] >= 0)) {
-    return ura_fail(c, "set velocity: '%s%s%s' is not accepted; accepted: VH,VD in m/s (the "
+    return ura_fail(c,
+                    "set velocity: '%s%s%s' is not accepted; accepted: VH,VD in m/s (the "
                     "horizontal speed along the course and the downward speed, each >= 0; no "
-                    "unit)", value, unit ? " " : "", unit ? unit : "");
+                    "unit)",
+                    value, unit ? " " : "", unit ? unit : "");
   }
   char sp[64], an[64];
   snprintf(sp, sizeof sp, "%.17g", hypot(v[0], v[1]));
@@ -124,7 +134,8 @@ int ura_design_set(uraCtx* c, const char* name, const char* value, const char* u
   if (ura_param_set(c, p, value)) return -1;
   uraState ns = c->st;
   c->st = keep;
-  if (ns.descent.mass == keep.descent.mass) return 0;   /* unchanged: nothing changes (a saved
+  if (ns.descent.mass == keep.descent.mass)
+    return 0; /* unchanged: nothing changes (a saved
                                                             session replays its defaults so) */
   const urModel* m = ura_model(c);
   if (!m) return -1;

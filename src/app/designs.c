@@ -34,15 +34,18 @@ static int valid_name(const char* s) {
 
 static int design_save(uraCtx* c, const char* name) {
   if (!valid_name(name)) {
-    return ura_fail(c, "design save: '%s' is not a name; accepted: letters, digits, '_', '.' or "
-                    "'-', starting with a letter or '_', at most %d characters", name,
-                    urNAMELEN - 1);
+    return ura_fail(c,
+                    "design save: '%s' is not a name; accepted: letters, digits, '_', '.' or "
+                    "'-', starting with a letter or '_', at most %d characters",
+                    name, urNAMELEN - 1);
   }
   uraDesign* d = find(c, name);
   if (!d) {
     if (c->ndesign == MAXDESIGNS) {
-      return ura_fail(c, "design save: %d designs are kept already; 'design delete NAME' "
-                      "forgets one", MAXDESIGNS);
+      return ura_fail(c,
+                      "design save: %d designs are kept already; 'design delete NAME' "
+                      "forgets one",
+                      MAXDESIGNS);
     }
     uraDesign* m = realloc(c->design, (size_t)(c->ndesign + 1) * sizeof *m);
     if (!m) return ura_fail(c, "design save: out of memory");
@@ -86,8 +89,10 @@ static urGrid* design_grid(uraCtx* c, const uraDesign* d) {
   if (ura_model_state(c, &d->st, "design compare")) return NULL;
   if (ura_grid_run(c, 1)) return NULL;
   if (!c->last.g->complete) {
-    ura_fail(c, "design compare: the grid of '%s' has %d failed and %d pending cells; Q is not "
-             "complete", d->name, c->last.g->nfailed, c->last.g->npending);
+    ura_fail(c,
+             "design compare: the grid of '%s' has %d failed and %d pending cells; Q is not "
+             "complete",
+             d->name, c->last.g->nfailed, c->last.g->npending);
     return NULL;
   }
   urGrid* g = c->last.g;
@@ -97,8 +102,8 @@ static urGrid* design_grid(uraCtx* c, const uraDesign* d) {
 
 /* the cell of g at an offset, or NULL (outside its lattice: no contact there, P = 0) */
 static const urCell* at(const urGrid* g, double dpar, double dperp) {
-  int r = (int)lround((g->par_max - dpar) / g->step), k = (int)lround((dperp - g->perp_min) /
-                                                                        g->step);
+  int r = (int)lround((g->par_max - dpar) / g->step),
+      k = (int)lround((dperp - g->perp_min) / g->step);
   if (r < 0 || r >= g->nrow || k < 0 || k >= g->ncol) return NULL;
   const urCell* cell = g->cell + (size_t)r * g->ncol + k;
   return fabs(cell->dpar - dpar) < 1e-9 && fabs(cell->dperp - dperp) < 1e-9 ? cell : NULL;
@@ -121,7 +126,7 @@ static urGrid* difference(const urGrid* a, const urGrid* b) {
     cell->contact = (ca && ca->contact) || (cb && cb->contact);
     cell->p = (cb ? cb->p : 0) - (ca ? ca->p : 0);
     for (int v = 0; v < urNVAL; v++) {
-      if (v != urVAL_HIC15 && v != urVAL_NIJ) continue;   /* the two the difference has kept */
+      if (v != urVAL_HIC15 && v != urVAL_NIJ) continue; /* the two the difference has kept */
       cell->val[v] = (cb ? cb->val[v] : 0) - (ca ? ca->val[v] : 0);
     }
   }
@@ -130,18 +135,22 @@ static urGrid* difference(const urGrid* a, const urGrid* b) {
 }
 
 static int design_compare(uraCtx* c, const char* na, const char* nb) {
-  static const char* const cols[] = {"design_a", "case_a", "q_a", "design_b", "case_b", "q_b",
-                                     "ratio"};
+  static const char* const cols[] = {"design_a", "case_a", "q_a",  "design_b",
+                                     "case_b",   "q_b",    "ratio"};
   const uraDesign* d[2] = {find(c, na), find(c, nb)};
   for (int i = 0; i < 2; i++) {
     if (!d[i]) {
-      return ura_fail(c, "design compare: no design '%s'; 'design save NAME' keeps the live "
-                      "case, 'design list' lists them", i ? nb : na);
+      return ura_fail(c,
+                      "design compare: no design '%s'; 'design save NAME' keeps the live "
+                      "case, 'design list' lists them",
+                      i ? nb : na);
     }
   }
   if (d[0]->st.step != d[1]->st.step) {
-    return ura_fail(c, "design compare: the designs' grid steps differ (%g and %g m); accepted: "
-                    "designs saved with the same step", d[0]->st.step, d[1]->st.step);
+    return ura_fail(c,
+                    "design compare: the designs' grid steps differ (%g and %g m); accepted: "
+                    "designs saved with the same step",
+                    d[0]->st.step, d[1]->st.step);
   }
   if (ura_dry(c, "design compare")) return -1;
 
@@ -163,8 +172,10 @@ static int design_compare(uraCtx* c, const char* na, const char* nb) {
   }
 
   uraTable* t = ura_table_new(7, cols);
-  ura_table_note(t, "ratio: q_b / q_a (the risk a change from %s to %s leaves); the last grid "
-                 "is now the difference P_b - P_a ('view', 'grid show', 'export grid')", na, nb);
+  ura_table_note(t,
+                 "ratio: q_b / q_a (the risk a change from %s to %s leaves); the last grid "
+                 "is now the difference P_b - P_a ('view', 'grid show', 'export grid')",
+                 na, nb);
   ura_table_cell(t, "%s", na);
   ura_table_cell(t, "%s", d[0]->st.casename);
   ura_table_cell(t, "%.4f", g[0]->q);
@@ -186,8 +197,8 @@ static int design_compare(uraCtx* c, const char* na, const char* nb) {
   c->last.wind = d[1]->st.descent.wind;
   c->last.face = d[1]->st.face;
   c->last.speed = c->last.angle = NAN;
-  snprintf(c->last.source, sizeof c->last.source, "difference P_b - P_a: design %s - design %s",
-           nb, na);
+  snprintf(c->last.source, sizeof c->last.source, "difference P_b - P_a: design %s - design %s", nb,
+           na);
   return 0;
 }
 
@@ -205,7 +216,8 @@ int ura_cmd_design(uraCtx* c, int argc, char** argv) {
     *d = c->design[--c->ndesign];
     return 0;
   }
-  return ura_fail(c, "design: usage: design save NAME, design load NAME, design delete NAME, "
+  return ura_fail(c,
+                  "design: usage: design save NAME, design load NAME, design delete NAME, "
                   "design list, design compare NAME_A NAME_B");
 }
 

@@ -19,11 +19,13 @@ void ura_explain_centre(uraTable* t, const urImpactResult* r, const urGrid* g) {
     }
   }
   const char* why = r->contact ? "the impact at (0, 0) touches the person but no criterion "
-                                 "reaches a fatality probability" :
-                                 "the impact at (0, 0) does not touch the person";
+                                 "reaches a fatality probability"
+                               : "the impact at (0, 0) does not touch the person";
   if (best && best->p > 0) {
-    ura_table_note(t, "p_centre 0: %s; the footprint is off the centre (peak P %.3f at (%g, %g) "
-                   "m), so factor is 0", why, best->p, best->dpar, best->dperp);
+    ura_table_note(t,
+                   "p_centre 0: %s; the footprint is off the centre (peak P %.3f at (%g, %g) "
+                   "m), so factor is 0",
+                   why, best->p, best->dpar, best->dperp);
   } else {
     ura_table_note(t, "p_centre 0: %s", why);
   }

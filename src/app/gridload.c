@@ -14,8 +14,8 @@
 
 #include "app.h"
 
-#define MAXCELLS 4000000L          /* refuse grids larger than this */
-#define LATTICE_TOL 1e-6           /* m: offsets must sit on the lattice within this */
+#define MAXCELLS    4000000L /* refuse grids larger than this */
+#define LATTICE_TOL 1e-6     /* m: offsets must sit on the lattice within this */
 
 /* what the comments before the header say about the conditions */
 typedef struct {
@@ -37,8 +37,16 @@ typedef struct {
 
 /* export columns we know (others are ignored): the offsets, contact, status and p, then every
    criterion value grid load reads (urIN_LOAD) and every criterion's PoF, by the registry */
-enum { X_DPAR, X_DPERP, X_CONTACT, X_STATUS, X_P, X_VAL, X_POF = X_VAL + urNVAL,
-       X_N = X_POF + urNCRIT };
+enum {
+  X_DPAR,
+  X_DPERP,
+  X_CONTACT,
+  X_STATUS,
+  X_P,
+  X_VAL,
+  X_POF = X_VAL + urNVAL,
+  X_N = X_POF + urNCRIT
+};
 
 /* the name of known column k, NULL for a value grid load does not read */
 static const char* xname(int k) {
@@ -59,7 +67,7 @@ static int bad(reader* r, int line, const char* fmt, ...) {
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  ura_fail(r->c, "%s:%d: %s", r->path, line, msg);   /* a script adds its own FILE:LINE */
+  ura_fail(r->c, "%s:%d: %s", r->path, line, msg); /* a script adds its own FILE:LINE */
   return -1;
 }
 
@@ -68,8 +76,9 @@ static int next_line(reader* r) {
   long n = ura_read_line(r->f, &r->buf, &r->cap, uraMAXLINE);
   if (n == uraLINE_EOF) return 0;
   if (n == uraLINE_ERROR) {
-    return bad(r, r->line + 1, ura_interrupted() ? "interrupted (Ctrl-C) while reading" :
-               "read error: %s", strerror(errno));
+    return bad(r, r->line + 1,
+               ura_interrupted() ? "interrupted (Ctrl-C) while reading" : "read error: %s",
+               strerror(errno));
   }
   r->line++;
   if (n == uraLINE_NUL) return bad(r, r->line, "NUL byte: not a text file");
@@ -245,8 +254,10 @@ static int load_paper(reader* r, int hline, urGrid** out) {
     }
   }
   if (fabs(cross[0]) > LATTICE_TOL) {
-    bad(r, hline, "header: the first cross offset is %g, expected 0 (the paper prints "
-        "dperp >= 0)", cross[0]);
+    bad(r, hline,
+        "header: the first cross offset is %g, expected 0 (the paper prints "
+        "dperp >= 0)",
+        cross[0]);
     goto done;
   }
   double step = m > 1 ? cross[1] - cross[0] : NAN;
@@ -256,8 +267,8 @@ static int load_paper(reader* r, int hline, urGrid** out) {
   }
   for (int k = 2; k < m; k++) {
     if (fabs(cross[k] - k * step) > LATTICE_TOL) {
-      bad(r, hline, "header: cross offset %g is off the %g m step (expected %g)", cross[k],
-          step, k * step);
+      bad(r, hline, "header: cross offset %g is off the %g m step (expected %g)", cross[k], step,
+          k * step);
       goto done;
     }
   }
@@ -422,7 +433,10 @@ static int bad_code(reader* r, const urValueDef* d, double v) {
   size_t len = 0;
   for (int i = 0; i < d->nnames && len < sizeof list; i++) {
     int w = snprintf(list + len, sizeof list - len, "%s%d (%s)",
-                     i == 0 ? "" : i == d->nnames - 1 ? " or " : ", ", i, d->names[i]);
+                     i == 0               ? ""
+                     : i == d->nnames - 1 ? " or "
+                                          : ", ",
+                     i, d->names[i]);
     if (w < 0) break;
     len += (size_t)w;
   }
@@ -571,8 +585,8 @@ static int load_export(reader* r, int hline, urGrid** out) {
     }
     size_t at = (size_t)i * ncol + j;
     if (from[at]) {
-      bad(r, rows[k].line, "cell (%g, %g) is given twice (first at line %d)", x->dpar,
-          x->dperp, from[at]);
+      bad(r, rows[k].line, "cell (%g, %g) is given twice (first at line %d)", x->dpar, x->dperp,
+          from[at]);
       free(from);
       goto done;
     }
@@ -610,13 +624,17 @@ int ura_grid_load(uraCtx* c, const char* path) {
   /* comments (conditions), then the header that tells the format */
   int got;
   while ((got = next_line(&r)) > 0) {
-    if (r.buf[0] == '#') meta_parse(&m, r.buf + 1);
-    else if (!blank(r.buf)) break;
+    if (r.buf[0] == '#')
+      meta_parse(&m, r.buf + 1);
+    else if (!blank(r.buf))
+      break;
   }
   if (got < 0) goto done;
   if (got == 0) {
-    bad(&r, r.line ? r.line : 1, "%s: expected a header 'along,0.00,0.05,...' (paper table) "
-        "or 'dpar,dperp,...,p' (uasrisk export)", r.line ? "no data" : "empty file");
+    bad(&r, r.line ? r.line : 1,
+        "%s: expected a header 'along,0.00,0.05,...' (paper table) "
+        "or 'dpar,dperp,...,p' (uasrisk export)",
+        r.line ? "no data" : "empty file");
     goto done;
   }
   int hline = r.line;
@@ -626,8 +644,10 @@ int ura_grid_load(uraCtx* c, const char* path) {
   } else if (!strcmp(r.fld[0], "dpar")) {
     if (load_export(&r, hline, &g)) goto done;
   } else {
-    bad(&r, hline, "missing header: expected 'along,0.00,0.05,...' (paper table) or "
-        "'dpar,dperp,...,p' (uasrisk export), found '%.40s'", r.fld[0]);
+    bad(&r, hline,
+        "missing header: expected 'along,0.00,0.05,...' (paper table) or "
+        "'dpar,dperp,...,p' (uasrisk export), found '%.40s'",
+        r.fld[0]);
     goto done;
   }
 
@@ -641,7 +661,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
   c->last.face = m.face;
   c->last.speed = m.speed;
   c->last.angle = m.angle;
-  ura_printable(path, c->last.source, sizeof c->last.source);   /* shown by grid show, view */
+  ura_printable(path, c->last.source, sizeof c->last.source); /* shown by grid show, view */
   g = NULL;
   rc = 0;
 done:

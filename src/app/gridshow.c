@@ -10,15 +10,20 @@
 #include "colors.h"
 
 void ura_cell_text(const urCell* cell, char buf[8]) {
-  if (cell->status == urCELL_FAILED) snprintf(buf, 8, " fail");
-  else if (cell->status == urCELL_PENDING) snprintf(buf, 8, "    ?");
-  else snprintf(buf, 8, "%5.1f", cell->p * 100.0);
+  if (cell->status == urCELL_FAILED)
+    snprintf(buf, 8, " fail");
+  else if (cell->status == urCELL_PENDING)
+    snprintf(buf, 8, "    ?");
+  else
+    snprintf(buf, 8, "%5.1f", cell->p * 100.0);
 }
 
 /* a number or ? when unknown */
 static void num_or_q(char* buf, size_t n, double v) {
-  if (isfinite(v)) snprintf(buf, n, "%g", v);
-  else snprintf(buf, n, "?");
+  if (isfinite(v))
+    snprintf(buf, n, "%g", v);
+  else
+    snprintf(buf, n, "?");
 }
 
 void ura_grid_conditions(const struct uraCtx* c, char* buf, size_t n) {
@@ -42,8 +47,8 @@ void ura_grid_qtext(const urGrid* g, char* buf, size_t n) {
     snprintf(buf, n, "Q = %.4f m^2", g->q);
   } else {
     /* not a Q: a lower bound, since the cells not counted have p >= 0 */
-    snprintf(buf, n, "Q >= %.4f m^2, partial grid (%d failed, %d pending cells not counted)",
-             g->q, g->nfailed, g->npending);
+    snprintf(buf, n, "Q >= %.4f m^2, partial grid (%d failed, %d pending cells not counted)", g->q,
+             g->nfailed, g->npending);
   }
 }
 
@@ -87,8 +92,10 @@ int ura_grid_show(uraCtx* c) {
   ura_grid_conditions(c, buf, sizeof buf);
   int diff = c->last.diff;
   fprintf(f, "%s in %%: %s\n", diff ? "P_b - P_a" : "P{F|Delta}", buf);
-  fprintf(f, "rows: dpar m (+ ahead); columns: dperp m (+ left of course); the paper's layout\n"
-          "%s", half ? "dperp >= 0 shown (mirror-symmetric)\n" : "");
+  fprintf(f,
+          "rows: dpar m (+ ahead); columns: dperp m (+ left of course); the paper's layout\n"
+          "%s",
+          half ? "dperp >= 0 shown (mirror-symmetric)\n" : "");
   span(f, s, uraROLE_AXIS, " dpar ");
   for (int j = j0; j < g->ncol; j++) {
     double x = g->perp_min + j * g->step;
@@ -116,7 +123,8 @@ int ura_grid_show(uraCtx* c) {
   fprintf(f, "legend:");
   for (uraRole r = uraROLE_NONE; r <= (diff ? uraROLE_RISKIER2 : uraROLE_PENDING); r++) {
     if (r >= uraROLE_FAILED && r <= uraROLE_PENDING &&
-        !(r == uraROLE_FAILED ? g->nfailed : g->npending)) continue;
+        !(r == uraROLE_FAILED ? g->nfailed : g->npending))
+      continue;
     if (diff ? r > uraROLE_NONE && r < uraROLE_SAFER2 : r > uraROLE_PENDING) continue;
     if (s == uraSCHEME_PLAIN) {
       fprintf(f, "%s %s %s", r ? ";" : "", ura_role_name(r), ura_role_label(r));

@@ -6,8 +6,8 @@
 
 #include "app.h"
 
-static const char* const compact_cols[] = {"dpar", "dperp", "hic15", "nij", "vc_th", "vc_ab",
-                                           "p_hic", "p_nij", "p_vc", "p"};
+static const char* const compact_cols[] = {"dpar",  "dperp", "hic15", "nij",  "vc_th",
+                                           "vc_ab", "p_hic", "p_nij", "p_vc", "p"};
 
 int ura_impact_compact(const uraCtx* c) {
   return ura_text_width(c) > 0;
@@ -24,12 +24,14 @@ void ura_impact_compact_row(uraTable* t, double dpar, double dperp, const urImpa
     if (r->inj.nij.mode[k] > r->inj.nij.mode[m]) m = k;
   }
   if (!r->contact) {
-    ura_table_note(t, "no contact: the drone passes the person at this offset; every criterion "
+    ura_table_note(t,
+                   "no contact: the drone passes the person at this offset; every criterion "
                    "and P are 0");
   } else {
-    ura_table_note(t, "Nij %s (NTF %.3g, NTE %.3g, NCF %.3g, NCE %.3g); vc_th, vc_ab: VC "
-                   "in m/s", modes[m],
-                   r->inj.nij.mode[0], r->inj.nij.mode[1], r->inj.nij.mode[2],
+    ura_table_note(t,
+                   "Nij %s (NTF %.3g, NTE %.3g, NCF %.3g, NCE %.3g); vc_th, vc_ab: VC "
+                   "in m/s",
+                   modes[m], r->inj.nij.mode[0], r->inj.nij.mode[1], r->inj.nij.mode[2],
                    r->inj.nij.mode[3]);
   }
   ura_table_cell(t, "%g", dpar);

@@ -20,7 +20,7 @@
 
 _Static_assert(ATOMIC_INT_LOCK_FREE == 2, "the stop flag is written by a signal handler");
 static _Atomic int flag;
-static volatile sig_atomic_t patient;   /* interactive: Ctrl-C never ends the program */
+static volatile sig_atomic_t patient; /* interactive: Ctrl-C never ends the program */
 
 /* the temporary file of the write under way: its name is complete before armed is set */
 static char temp_path[1200];
@@ -43,7 +43,7 @@ static void die(int sig) {
   if (armed) unlink(temp_path);
   armed = 0;
   signal(sig, SIG_DFL);
-  raise(sig);                      /* delivered on return from the handler */
+  raise(sig); /* delivered on return from the handler */
 }
 
 static void on_sigint(int sig) {
@@ -63,7 +63,7 @@ void ura_interrupt_install(int interactive) {
   memset(&sa, 0, sizeof sa);
   sa.sa_handler = on_sigint;
   sigemptyset(&sa.sa_mask);
-  sa.sa_flags = 0;                 /* no SA_RESTART: a blocked read returns and can be stopped */
+  sa.sa_flags = 0; /* no SA_RESTART: a blocked read returns and can be stopped */
   patient = interactive;
   sigaction(SIGINT, &sa, NULL);
   sa.sa_handler = on_term;

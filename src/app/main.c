@@ -26,7 +26,7 @@ static void usage(FILE* f) {
 static uraCtx ctx;
 
 static int done(int rc) {
-  rc = ura_scale_end(&ctx, rc);    /* a shard's part written; MPI finished */
+  rc = ura_scale_end(&ctx, rc); /* a shard's part written; MPI finished */
   errno = 0;
   int bad = fflush(ctx.out) || ferror(ctx.out);
   int e = ura_out_errno() ? ura_out_errno() : errno;

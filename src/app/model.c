@@ -7,9 +7,9 @@
 
 #include "app.h"
 
-#define SETTLE_SECONDS 1.0          /* settling of the stance, s (it is still within 0.1 mm) */
-#define BALANCE_ITERS 2             /* muscle-tone balancing of the upright posture */
-#define MAXMODELFILE (16L << 20)    /* largest model file, bytes */
+#define SETTLE_SECONDS 1.0         /* settling of the stance, s (it is still within 0.1 mm) */
+#define BALANCE_ITERS  2           /* muscle-tone balancing of the upright posture */
+#define MAXMODELFILE   (16L << 20) /* largest model file, bytes */
 
 typedef struct {
   const char* name;
@@ -71,7 +71,7 @@ static urModel* compile(const uraPart* part, int n, const uraState* st, char* er
     ov[i].value = st->ov_val[i];
   }
   urModel* m = ur_model_parse_stop(src, n, ov, st->nov, ura_interrupt_flag(), err, errlen);
-  if (m) m->opt.stop = ura_interrupt_flag();   /* Ctrl-C stops its runs at the next step */
+  if (m) m->opt.stop = ura_interrupt_flag(); /* Ctrl-C stops its runs at the next step */
   return m;
 }
 
@@ -102,7 +102,8 @@ static int fits(uraCtx* c, const uraPart* part, int n, const uraState* st, const
     for (int i = 0; i < st->nov; i++) {
       if (!st->ov_user[i]) continue;
       int at = -1;
-      for (int j = 0; j < ns.nov; j++) if (!strcmp(ns.ov_name[j], st->ov_name[i])) at = j;
+      for (int j = 0; j < ns.nov; j++)
+        if (!strcmp(ns.ov_name[j], st->ov_name[i])) at = j;
       if (at < 0 && ns.nov == uraMAXOV) continue;
       if (at < 0) at = ns.nov++;
       memcpy(ns.ov_name[at], st->ov_name[i], urNAMELEN);
@@ -113,8 +114,10 @@ static int fits(uraCtx* c, const uraPart* part, int n, const uraState* st, const
     int bad = !mk || ur_impact_check(mk, e, sizeof e);
     ur_model_free(mk);
     if (bad) {
-      if (k) snprintf(err, errlen, "in case %s: %s", order[k]->name, e);
-      else snprintf(err, errlen, "%s", e);
+      if (k)
+        snprintf(err, errlen, "in case %s: %s", order[k]->name, e);
+      else
+        snprintf(err, errlen, "%s", e);
       return -1;
     }
   }
@@ -172,15 +175,18 @@ static int parts_commit(uraCtx* c, uraPart* np, int nn, const char* file) {
   if (bad) {
     ur_model_free(m);
     int first = -1;
-    for (int i = 0; file && i < nn && first < 0; i++) if (!strcmp(np[i].origin, file)) first = i;
+    for (int i = 0; file && i < nn && first < 0; i++)
+      if (!strcmp(np[i].origin, file)) first = i;
     if (ura_interrupted()) {
       ura_fail(c, "model load: interrupted (Ctrl-C) while compiling '%s'; the model is unchanged",
                file ? file : "model");
     } else if (in_file || first < 0) {
       ura_fail(c, "%s", why);
     } else {
-      ura_fail(c, "model load: %s:%d: part '%s' does not fit the model: %s; the model is "
-               "unchanged", file, np[first].line, np[first].name, why);
+      ura_fail(c,
+               "model load: %s:%d: part '%s' does not fit the model: %s; the model is "
+               "unchanged",
+               file, np[first].line, np[first].name, why);
     }
     parts_free(np, nn);
     return -1;
@@ -218,8 +224,8 @@ int ura_models_init(uraCtx* c) {
   int nn = 0;
   for (int i = 0; builtin_order[i]; i++) {
     for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
-      if (!strcmp(b->name, builtin_order[i]) && parts_add(c, np, &nn, b->text, b->name,
-                                                          "built-in")) {
+      if (!strcmp(b->name, builtin_order[i]) &&
+          parts_add(c, np, &nn, b->text, b->name, "built-in")) {
         parts_free(np, nn);
         return -1;
       }
@@ -249,8 +255,10 @@ const urImpactSetup* ura_setup(uraCtx* c) {
     ura_fail(c, ura_interrupted() ? "interrupted (Ctrl-C) while settling the standing posture"
                                   : "model: the standing posture cannot be balanced (it falls)");
   } else if (rc) {
-    if (ura_interrupted()) ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
-    else ura_fail(c, "model: %s", c->setup.err);
+    if (ura_interrupted())
+      ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
+    else
+      ura_fail(c, "model: %s", c->setup.err);
   }
   if (rc) {
     /* the balancing shifts neutral positions in the model: compile afresh next time */
@@ -297,20 +305,26 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
                         int user) {
   double v, f = 1;
   if (ura_parse_number(value, &v)) {
-    return ura_fail(c, "set %s: '%s' is not a number; accepted: a number, optionally with a "
-                    "unit (uasrisk-model(5))", name, value);
+    return ura_fail(c,
+                    "set %s: '%s' is not a number; accepted: a number, optionally with a "
+                    "unit (uasrisk-model(5))",
+                    name, value);
   }
   char si[urNAMELEN];
   if (unit && ur_unit_parse(unit, &f, si, sizeof si)) {
-    return ura_fail(c, "set %s: unknown unit '%s'; accepted: the units of uasrisk-model(5) "
+    return ura_fail(c,
+                    "set %s: unknown unit '%s'; accepted: the units of uasrisk-model(5) "
                     "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L), or several "
-                    "joined by * and / (N*m/rad)", name, unit);
+                    "joined by * and / (N*m/rad)",
+                    name, unit);
   }
   int k = unit ? ura_model_param_find(c, name) : -1;
   const char* want = k >= 0 ? c->model->param[k].unit : "";
   if (unit && *want && strcmp(si, want)) {
-    return ura_fail(c, "set %s: the unit '%s' is in %s, not %s; accepted: a unit of %s (as in "
-                    "its param line)", name, unit, *si ? si : "no unit", want, want);
+    return ura_fail(c,
+                    "set %s: the unit '%s' is in %s, not %s; accepted: a unit of %s (as in "
+                    "its param line)",
+                    name, unit, *si ? si : "no unit", want, want);
   }
   v *= f;
 
@@ -363,7 +377,8 @@ static int model_save(uraCtx* c, const char* path) {
 static int model_load(uraCtx* c, const char* path) {
   if (ura_dry(c, "model load")) return -1;
   if (ura_word_ok(path)) {
-    return ura_fail(c, "model load: cannot use '%s': the name holds a control character or both "
+    return ura_fail(c,
+                    "model load: cannot use '%s': the name holds a control character or both "
                     "quote characters; accepted: a file name that save session can write back",
                     path);
   }
@@ -396,15 +411,21 @@ static int model_load(uraCtx* c, const char* path) {
   fclose(mem);
   if (ura_interrupted()) {
     free(text);
-    return ura_fail(c, "model load: interrupted (Ctrl-C) while reading '%s'; the model is "
-                    "unchanged", path);
+    return ura_fail(c,
+                    "model load: interrupted (Ctrl-C) while reading '%s'; the model is "
+                    "unchanged",
+                    path);
   }
-  const char* why = nul ? "it contains NUL bytes" : rerr ? strerror(e) :
-                    total > MAXMODELFILE ? "larger than 16 MiB" : NULL;
+  const char* why = nul                    ? "it contains NUL bytes"
+                    : rerr                 ? strerror(e)
+                    : total > MAXMODELFILE ? "larger than 16 MiB"
+                                           : NULL;
   if (why) {
     free(text);
-    return ura_fail(c, "model load: cannot use '%s': %s; accepted: a model text file "
-                    "(uasrisk-model(5))", path, why);
+    return ura_fail(c,
+                    "model load: cannot use '%s': %s; accepted: a model text file "
+                    "(uasrisk-model(5))",
+                    path, why);
   }
   int rc = parts_merge(c, text, path, path);
   free(text);
@@ -461,11 +482,10 @@ static int model_drop(uraCtx* c, const char* name) {
 void ura_model_write_parts(uraCtx* c, FILE* f) {
   int nb = 0;
   while (builtin_order[nb]) nb++;
-  for (int b = nb - 1; b >= 0; b--) {      /* later parts may use earlier ones: last first */
+  for (int b = nb - 1; b >= 0; b--) { /* later parts may use earlier ones: last first */
     int have = 0;
     for (int i = 0; i < c->npart; i++) {
-      have |= !strcmp(c->part[i].name, builtin_order[b]) && !strcmp(c->part[i].origin,
-                                                                      "built-in");
+      have |= !strcmp(c->part[i].name, builtin_order[b]) && !strcmp(c->part[i].origin, "built-in");
     }
     if (!have) fprintf(f, "model drop %s\n", builtin_order[b]);
   }
@@ -496,8 +516,10 @@ static int model_params(uraCtx* c, const char* prefix) {
             u, who);
   }
   if (!found) {
-    return ura_fail(c, "model params: no model parameter starts with '%s'; accepted: a prefix of "
-                    "the names 'model params' lists", prefix);
+    return ura_fail(c,
+                    "model params: no model parameter starts with '%s'; accepted: a prefix of "
+                    "the names 'model params' lists",
+                    prefix);
   }
   return 0;
 }
@@ -517,6 +539,7 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
     }
     return 0;
   }
-  return ura_fail(c, "model: usage: model show|params [PREFIX]|parts|save FILE|load FILE|drop "
+  return ura_fail(c,
+                  "model: usage: model show|params [PREFIX]|parts|save FILE|load FILE|drop "
                   "PART");
 }

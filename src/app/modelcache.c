@@ -20,7 +20,7 @@ typedef struct {
   uraModelKey key;
   urModel* model;
   urImpactSetup setup;
-  unsigned long used;              /* c->tick when parked */
+  unsigned long used; /* c->tick when parked */
 } entry;
 
 struct uraModelCache {

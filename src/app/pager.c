@@ -12,7 +12,7 @@
 
 #include "app.h"
 
-static FILE* gather;               /* the buffer of the command under way, or NULL */
+static FILE* gather; /* the buffer of the command under way, or NULL */
 static char* gathered;
 static size_t ngathered;
 static FILE* real_out;
@@ -34,8 +34,8 @@ void ura_term_size(int* rows, int* cols) {
   struct winsize ws;
   *rows = 24;
   *cols = 80;
-  if ((ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 || ioctl(STDIN_FILENO, TIOCGWINSZ, &ws) == 0)
-      && ws.ws_row > 0 && ws.ws_col > 0) {
+  if ((ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 || ioctl(STDIN_FILENO, TIOCGWINSZ, &ws) == 0) &&
+      ws.ws_row > 0 && ws.ws_col > 0) {
     *rows = ws.ws_row;
     *cols = ws.ws_col;
     return;

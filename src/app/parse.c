@@ -17,8 +17,10 @@ int ura_parse_number(const char* s, double* v) {
   int digits = 0;
   for (size_t i = 0; i < n; i++) {
     char ch = s[i];
-    if (isdigit((unsigned char)ch)) digits++;
-    else if (!strchr("+-.eE", ch)) return -1;
+    if (isdigit((unsigned char)ch))
+      digits++;
+    else if (!strchr("+-.eE", ch))
+      return -1;
   }
   if (!digits) return -1;
 

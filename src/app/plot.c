@@ -24,8 +24,8 @@
 #include "colors.h"
 #include "plot.h"
 
-#define GP_TIMEOUT 60.0            /* s: gnuplot taking longer than this is stopped */
-#define NPOF 241                   /* points per PoF curve */
+#define GP_TIMEOUT 60.0 /* s: gnuplot taking longer than this is stopped */
+#define NPOF       241  /* points per PoF curve */
 
 /* gnuplot on PATH */
 static int have_gnuplot(void) {
@@ -55,9 +55,12 @@ void ura_plot_quote(FILE* f, const char* s) {
   fputc('\'', f);
   for (; s && *s; s++) {
     unsigned char ch = (unsigned char)*s;
-    if (ch == '\n') fputs("'.\"\\n\".'", f);
-    else if (ch == '\'') fputs("''", f);
-    else fputc(ch < 32 || ch == 127 ? ' ' : ch, f);
+    if (ch == '\n')
+      fputs("'.\"\\n\".'", f);
+    else if (ch == '\'')
+      fputs("''", f);
+    else
+      fputc(ch < 32 || ch == 127 ? ' ' : ch, f);
   }
   fputc('\'', f);
 }
@@ -71,8 +74,10 @@ static void set_text(FILE* f, const char* name, const char* text) {
 
 /* a value for a datablock */
 static void num(FILE* f, double v) {
-  if (isfinite(v)) fprintf(f, "%.9g", v);
-  else fputs("NaN", f);
+  if (isfinite(v))
+    fprintf(f, "%.9g", v);
+  else
+    fputs("NaN", f);
 }
 
 /* seconds on a monotonic clock */
@@ -98,7 +103,7 @@ static int write_all(int fd, const char* p, size_t n, double deadline) {
     double left = deadline - now();
     if (left <= 0) return ETIMEDOUT;
     struct pollfd pf = {fd, POLLOUT, 0};
-    poll(&pf, 1, left > 0.05 ? 50 : (int)(left * 1000) + 1);   /* Ctrl-C seen within 0.05 s */
+    poll(&pf, 1, left > 0.05 ? 50 : (int)(left * 1000) + 1); /* Ctrl-C seen within 0.05 s */
   }
   return 0;
 }
@@ -147,8 +152,10 @@ static void put_terminal(const uraCtx* c, FILE* f, const char* term) {
   static const char* const px[] = {"png", "pngcairo", "svg", "jpeg", "gif", NULL};
   static const char* const in[] = {"pdfcairo", "epscairo", NULL};
   int bare = !strpbrk(term, " \t"), kind = 0;
-  for (int i = 0; px[i]; i++) if (!strcmp(term, px[i])) kind = 1;
-  for (int i = 0; in[i]; i++) if (!strcmp(term, in[i])) kind = 2;
+  for (int i = 0; px[i]; i++)
+    if (!strcmp(term, px[i])) kind = 1;
+  for (int i = 0; in[i]; i++)
+    if (!strcmp(term, in[i])) kind = 2;
   fprintf(f, "set terminal %s", term);
   if (bare && kind == 1 && c->canvas_w > 0) fprintf(f, " size %d,%d", c->canvas_w, c->canvas_h);
   if (bare && kind == 2 && c->canvas_w > 0) {
@@ -173,8 +180,10 @@ static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
   if (*out && !*term) {
     const char* t = ura_term_for_ext(out);
     if (!t) {
-      return ura_fail(c, "%s: no terminal for output '%s'; use 'set terminal png' (or svg, "
-                      "pdfcairo, ...)", who, out);
+      return ura_fail(c,
+                      "%s: no terminal for output '%s'; use 'set terminal png' (or svg, "
+                      "pdfcairo, ...)",
+                      who, out);
     }
     snprintf(term, sizeof term, "%s", t);
   }
@@ -194,7 +203,7 @@ static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
 
 int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) {
   if (ura_dry(c, who)) return -1;
-  if (c->mute) return 0;           /* a shard or an MPI rank but 0 draws nothing */
+  if (c->mute) return 0; /* a shard or an MPI rank but 0 draws nothing */
   /* the settings, then gnuplot and a display */
   char* pre = NULL;
   size_t npre = 0;
@@ -238,8 +247,10 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
     close(fd[0]);
     close(fd[1]);
     /* a script file (not interactive input) stops at its first error */
-    if (window) execlp("gnuplot", "gnuplot", "-persist", "/dev/stdin", (char*)NULL);
-    else execlp("gnuplot", "gnuplot", "/dev/stdin", (char*)NULL);
+    if (window)
+      execlp("gnuplot", "gnuplot", "-persist", "/dev/stdin", (char*)NULL);
+    else
+      execlp("gnuplot", "gnuplot", "/dev/stdin", (char*)NULL);
     _exit(127);
   }
   close(fd[0]);
@@ -281,7 +292,8 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
   }
   if (!waited) {
     kill(pid, SIGKILL);
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
   }
 
   /* text terminals' drawings to the output stream, then the verdict */
@@ -311,14 +323,13 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
   } else if (!waited) {
     rc = ura_fail(c, "%s: gnuplot did not finish within %g s and was stopped", who, GP_TIMEOUT);
   } else if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
-    rc = ura_fail(c, "%s: gnuplot not found; install it (Debian: gnuplot-nox) or use export",
-                  who);
+    rc = ura_fail(c, "%s: gnuplot not found; install it (Debian: gnuplot-nox) or use export", who);
   } else if (WIFSIGNALED(status)) {
     rc = ura_fail(c, "%s: gnuplot was killed by signal %d%s%s", who, WTERMSIG(status),
                   errtext && *errtext ? ": " : "", errtext && *errtext ? full : "");
   } else if (WEXITSTATUS(status) != 0 || werr) {
-    rc = ura_fail(c, "%s: gnuplot failed%s: %s", who, werr == EPIPE ? " (it stopped reading)" :
-                  "", full);
+    rc = ura_fail(c, "%s: gnuplot failed%s: %s", who, werr == EPIPE ? " (it stopped reading)" : "",
+                  full);
   } else if (*c->st.output) {
     struct stat sb;
     if (stat(c->st.output, &sb) || sb.st_size == 0) {
@@ -408,11 +419,12 @@ int ura_plot_xy(uraCtx* c, const char* who, const char* title, const char* xlabe
 
 /* the band colours as a stepped palette over 0..100 % */
 static void band_palette(FILE* f) {
-  fprintf(f, "set palette defined (0 '#ffffff', 0.001 '#fff3b0', %g '#fff3b0', %g '#ffe000', "
+  fprintf(f,
+          "set palette defined (0 '#ffffff', 0.001 '#fff3b0', %g '#fff3b0', %g '#ffe000', "
           "%g '#ffe000', %g '#ff9000', %g '#ff9000', %g '#d7191c', 100 '#d7191c')\n",
           uraBAND_MED, uraBAND_MED, uraBAND_HIGH, uraBAND_HIGH, uraBAND_SEVERE, uraBAND_SEVERE);
-  fprintf(f, "set cbrange [0:100]\nset cbtics (0, %g, %g, %g, 100)\n", uraBAND_MED,
-          uraBAND_HIGH, uraBAND_SEVERE);
+  fprintf(f, "set cbrange [0:100]\nset cbtics (0, %g, %g, %g, 100)\n", uraBAND_MED, uraBAND_HIGH,
+          uraBAND_SEVERE);
 }
 
 static int write_grid(uraCtx* c, FILE* f, const void* arg) {
@@ -448,13 +460,14 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   quote(f, title);
   fprintf(f, " noenhanced\n");
   fprintf(f, "set xtics %g\n", width > 1.2 ? 0.4 : 0.2);
-  fprintf(f, "set xlabel \"cross offset dperp (m), + left of the course (the paper's layout)\" "
+  fprintf(f,
+          "set xlabel \"cross offset dperp (m), + left of the course (the paper's layout)\" "
           "noenhanced\n");
   fprintf(f, "set ylabel \"along offset dpar (m), + ahead\" noenhanced\n");
   fprintf(f, "set cblabel \"P{F|Delta} (%%)\" noenhanced\n");
-  fprintf(f, "set size ratio -1\nset xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n",
-          g->perp_min - h, g->perp_min + (g->ncol - 1) * g->step + h,
-          g->par_max - (g->nrow - 1) * g->step - h, g->par_max + h);
+  fprintf(f, "set size ratio -1\nset xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", g->perp_min - h,
+          g->perp_min + (g->ncol - 1) * g->step + h, g->par_max - (g->nrow - 1) * g->step - h,
+          g->par_max + h);
   fprintf(f, "set tics out\nset grid front lc rgb '#999999'\n");
   band_palette(f);
   fprintf(f, "plot $D using 1:2:3 with image notitle\n");
@@ -497,22 +510,29 @@ static int write_pof(uraCtx* c, FILE* f, const void* arg) {
 
   /* four panels on a canvas sized for them (ura_plot_pof): HIC, Nij, the AIS curves of Nij,
      VC; keys outside the data, right of their panel */
-  fprintf(f, "set grid\nset yrange [0:100]\nset ylabel \"P (%%)\"\n"
+  fprintf(f,
+          "set grid\nset yrange [0:100]\nset ylabel \"P (%%)\"\n"
           "set key outside right top vertical Left reverse samplen 2 noenhanced\n");
-  fprintf(f, "set multiplot layout 2,2 title \"probability of fatality curves "
+  fprintf(f,
+          "set multiplot layout 2,2 title \"probability of fatality curves "
           "(uasrisk-injury(7))\" noenhanced\n");
-  fprintf(f, "set title \"HIC15 -> P_HIC\" noenhanced\nset xlabel \"HIC15\"\n"
+  fprintf(f,
+          "set title \"HIC15 -> P_HIC\" noenhanced\nset xlabel \"HIC15\"\n"
           "set xtics 1000\nplot $HIC using 1:2 with lines lw 2 notitle\n");
-  fprintf(f, "set title \"Nij -> P_NI (C.3)\" noenhanced\nset xlabel \"Nij\"\n"
+  fprintf(f,
+          "set title \"Nij -> P_NI (C.3)\" noenhanced\nset xlabel \"Nij\"\n"
           "set xtics autofreq\nplot $NIJ using 1:2 with lines lw 2 notitle\n");
-  fprintf(f, "set title \"Nij -> P(AIS >= k)\" noenhanced\n"
+  fprintf(f,
+          "set title \"Nij -> P(AIS >= k)\" noenhanced\n"
           "plot for [k=2:5] $NIJ using 1:(column(k+1)) with lines lw 2 "
           "title sprintf(\"AIS%%d+\", k)\n");
-  fprintf(f, "set title \"VC -> P_VC\" noenhanced\nset xlabel \"VC (m/s)\"\n"
+  fprintf(f,
+          "set title \"VC -> P_VC\" noenhanced\nset xlabel \"VC (m/s)\"\n"
           "set xrange [0:%.9g]\n"
           "plot $VCT using 1:2 with lines lw 2 title \"thorax\", "
           "$VCA using 1:2 with lines lw 2 title \"abdomen\", "
-          "$VC using 1:2 with lines lw 2 dt 2 title \"fused\"\n", vcmax);
+          "$VC using 1:2 with lines lw 2 dt 2 title \"fused\"\n",
+          vcmax);
   fprintf(f, "unset multiplot\n");
   return 0;
 }
@@ -574,11 +594,15 @@ static double tic_step(double lo, double hi) {
 
 /* what a derived signal is, for the legend (sensor channels are named by the model) */
 static const char* describe(const char* name) {
-  static const char* const d[][2] = {
-    {"head_acc", "head CG acceleration, resultant"}, {"neck_fz", "upper neck axial force, tension +"},
-    {"neck_my", "upper neck moment, flexion +"}, {"neck_fx", "upper neck shear force"},
-    {"chest_defl", "chest deflection"}, {"abd_defl", "abdomen deflection"}, {NULL, NULL}};
-  for (int i = 0; d[i][0]; i++) if (!strcmp(d[i][0], name)) return d[i][1];
+  static const char* const d[][2] = {{"head_acc", "head CG acceleration, resultant"},
+                                     {"neck_fz", "upper neck axial force, tension +"},
+                                     {"neck_my", "upper neck moment, flexion +"},
+                                     {"neck_fx", "upper neck shear force"},
+                                     {"chest_defl", "chest deflection"},
+                                     {"abd_defl", "abdomen deflection"},
+                                     {NULL, NULL}};
+  for (int i = 0; d[i][0]; i++)
+    if (!strcmp(d[i][0], name)) return d[i][1];
   return name;
 }
 
@@ -603,8 +627,10 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
   /* the impact's conditions as the title; one panel per signal with a legend, the time axis
      labelled under the bottom panels; the HIC window shaded on head_acc */
   /* the legend in a band left free above the curves */
-  fprintf(f, "set grid\nset key top right box opaque noenhanced samplen 2\n"
-          "set offsets 0, 0, graph %g, 0\n", a->nsel > 1 ? 0.45 : 0.2);
+  fprintf(f,
+          "set grid\nset key top right box opaque noenhanced samplen 2\n"
+          "set offsets 0, 0, graph %g, 0\n",
+          a->nsel > 1 ? 0.45 : 0.2);
   if (a->nsel > 1) {
     fprintf(f, "set multiplot layout %d,%d", rows, cols);
     if (tr->title) {
@@ -624,8 +650,10 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
     snprintf(label, sizeof label, "%s%s%s%s", tr->names[k], *unit ? " (" : "", unit,
              *unit ? ")" : "");
     set_text(f, "ylabel", label);
-    if (a->nsel == 1 || s >= a->nsel - cols) fprintf(f, "set xlabel \"t (ms from tau)\"\n");
-    else fprintf(f, "unset xlabel\n");
+    if (a->nsel == 1 || s >= a->nsel - cols)
+      fprintf(f, "set xlabel \"t (ms from tau)\"\n");
+    else
+      fprintf(f, "unset xlabel\n");
 
     /* in small panels, about four tic intervals */
     for (int i = 0; i < tr->n; i++) {
@@ -636,14 +664,18 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
       }
     }
     double dy = a->nsel > 1 ? tic_step(lo, hi) : 0;
-    if (dy > 0) fprintf(f, "set ytics %.9g\n", dy);
-    else fprintf(f, "set ytics autofreq\n");
+    if (dy > 0)
+      fprintf(f, "set ytics %.9g\n", dy);
+    else
+      fprintf(f, "set ytics autofreq\n");
 
     fprintf(f, "unset object\n");
     int hic = !strcmp(tr->names[k], "head_acc") && isfinite(a->t1) && a->t2 > a->t1;
     if (hic) {
-      fprintf(f, "set object 1 rect from %.9g, graph 0 to %.9g, graph 1 behind "
-              "fc rgb '#ffd580' fs solid 0.6 noborder\n", a->t1 * 1e3, a->t2 * 1e3);
+      fprintf(f,
+              "set object 1 rect from %.9g, graph 0 to %.9g, graph 1 behind "
+              "fc rgb '#ffd580' fs solid 0.6 noborder\n",
+              a->t1 * 1e3, a->t2 * 1e3);
     }
     fprintf(f, "plot $T using 1:%d with lines lw 2 title ", s + 2);
     quote(f, describe(tr->names[k]));
@@ -678,8 +710,8 @@ static int noise(const uraTrace* tr, int k) {
   return peak < 1e-9 || peak < 1e-9 * ref;
 }
 
-int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names,
-                       double t1, double t2) {
+int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names, double t1,
+                       double t2) {
   const char* who = "plot history";
   if (!tr || tr->n < 2 || tr->nsig < 1 || !tr->t || !tr->v || !tr->names) {
     return ura_fail(c, "%s: no impact yet", who);
@@ -702,8 +734,10 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
     for (int k = 0; k < tr->nsig && nsel == 0; k++) sel[n++] = k;
     int left = 0;
     for (int k = 0; k < tr->nsig && every; k++) {
-      if (noise(tr, k)) left++;
-      else sel[n++] = k;
+      if (noise(tr, k))
+        left++;
+      else
+        sel[n++] = k;
     }
     if (left && c->interactive) {
       fprintf(c->msg, "%s all: %d channel%s that stay at noise level (|value| < 1e-9) left out\n",
@@ -712,7 +746,8 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
   }
   for (int s = 0; s < nsel && !every; s++) {
     int k;
-    for (k = 0; k < tr->nsig && strcmp(tr->names[k], names[s]); k++) {}
+    for (k = 0; k < tr->nsig && strcmp(tr->names[k], names[s]); k++) {
+    }
     if (k == tr->nsig) {
       char list[512], dym[120];
       size_t m = 0;
@@ -720,7 +755,7 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
       ura_suggest_init(&sg, names[s]);
       list[0] = 0;
       for (int j = 0; j < tr->nsig && m < sizeof list; j++) {
-        if (ura_trace_find(tr, tr->names[j]) != j) continue;   /* each name once */
+        if (ura_trace_find(tr, tr->names[j]) != j) continue; /* each name once */
         ura_suggest_add(&sg, tr->names[j]);
         m += (size_t)snprintf(list + m, sizeof list - m, "%s%s", m ? ", " : "", tr->names[j]);
       }
@@ -784,6 +819,8 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
   char dym[120];
   ura_suggest_init(&sg, what);
   ura_suggest_keywords(&sg, ura_cmd_find("plot")->usage + strlen("plot "));
-  return ura_fail(c, "plot: unknown plot '%s'%s; accepted: pof, grid, history SIGNAL..., sweep "
-                  "[wind|face], montecarlo, tornado", what, ura_suggest_text(&sg, dym, sizeof dym));
+  return ura_fail(c,
+                  "plot: unknown plot '%s'%s; accepted: pof, grid, history SIGNAL..., sweep "
+                  "[wind|face], montecarlo, tornado",
+                  what, ura_suggest_text(&sg, dym, sizeof dym));
 }

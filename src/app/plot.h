@@ -18,9 +18,9 @@
 
 /* one x-y curve */
 typedef struct {
-  const char* title;               /* legend entry (NULL: none) */
-  const double* x;                 /* n abscissae */
-  const double* y;                 /* n ordinates; non-finite values leave a gap */
+  const char* title; /* legend entry (NULL: none) */
+  const double* x;   /* n abscissae */
+  const double* y;   /* n ordinates; non-finite values leave a gap */
   int n;
 } uraSeries;
 
@@ -50,8 +50,8 @@ int ura_plot_pof(uraCtx* c, const urInjuryParams* p);
 int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names);
 
 /* the same, with the HIC window t1-t2 (s) given (NAN: computed from the signal) */
-int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names,
-                       double t1, double t2);
+int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names, double t1,
+                       double t2);
 
 /* Q of the kept sweeps (c->sweep) against wind or face, one curve per sweep; kind "wind" or
    "face" for one panel, NULL for every kind kept (plot_sweep.c) */
@@ -62,7 +62,11 @@ int ura_plot_sweep(uraCtx* c, const char* kind);
 void ura_plot_quote(FILE* f, const char* s);
 
 /* what a gnuplot terminal draws on (plot_term.c) */
-enum { uraTERM_WINDOW = 0, uraTERM_TEXT, uraTERM_FILE };
+enum {
+  uraTERM_WINDOW = 0,
+  uraTERM_TEXT,
+  uraTERM_FILE
+};
 
 /* the kind of a terminal setting (its first word; empty: gnuplot's default window) */
 int ura_term_kind(const char* term);

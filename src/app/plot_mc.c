@@ -39,21 +39,27 @@ static int write_hist(uraCtx* c, FILE* f) {
   fprintf(f, "EOD\n");
   double ymax = gsl_histogram_max_val(h) / n;
   gsl_histogram_free(h);
-  fprintf(f, "set title \"Q over %d samples of case %s (seed %.0f): mean %.4g m^2, 95 %% "
-          "interval of the mean %.4g..%.4g\" noenhanced\n", n, casename, seed, st->mean,
-          st->lo95, st->hi95);
-  fprintf(f, "set xlabel \"Q (m^2)\" noenhanced\nset ylabel \"fraction of the samples\" "
+  fprintf(f,
+          "set title \"Q over %d samples of case %s (seed %.0f): mean %.4g m^2, 95 %% "
+          "interval of the mean %.4g..%.4g\" noenhanced\n",
+          n, casename, seed, st->mean, st->lo95, st->hi95);
+  fprintf(f,
+          "set xlabel \"Q (m^2)\" noenhanced\nset ylabel \"fraction of the samples\" "
           "noenhanced\nset grid\nset key top right noenhanced\nset yrange [0:%.9g]\n"
-          "set style fill solid 0.5 border -1\n", 1.15 * ymax);
+          "set style fill solid 0.5 border -1\n",
+          1.15 * ymax);
   fprintf(f, "set arrow 1 from %.9g, graph 0 to %.9g, graph 1 nohead lc rgb '#d55e00' lw 2\n",
           st->mean, st->mean);
-  fprintf(f, "set object 1 rect from %.9g, graph 0 to %.9g, graph 1 behind fc rgb '#d55e00' "
-          "fs transparent solid 0.2 noborder\n", st->lo95, st->hi95 > st->lo95 ? st->hi95 :
-          st->lo95 + 1e-12);
-  fprintf(f, "set arrow 2 from %.9g, graph 0 to %.9g, graph 1 nohead lc rgb '#0072b2' dt 2\n"
+  fprintf(f,
+          "set object 1 rect from %.9g, graph 0 to %.9g, graph 1 behind fc rgb '#d55e00' "
+          "fs transparent solid 0.2 noborder\n",
+          st->lo95, st->hi95 > st->lo95 ? st->hi95 : st->lo95 + 1e-12);
+  fprintf(f,
+          "set arrow 2 from %.9g, graph 0 to %.9g, graph 1 nohead lc rgb '#0072b2' dt 2\n"
           "set arrow 3 from %.9g, graph 0 to %.9g, graph 1 nohead lc rgb '#0072b2' dt 2\n",
           st->p025, st->p025, st->p975, st->p975);
-  fprintf(f, "plot $H using 1:2:3 with boxes lc rgb '#56b4e9' title \"samples\", "
+  fprintf(f,
+          "plot $H using 1:2:3 with boxes lc rgb '#56b4e9' title \"samples\", "
           "NaN with lines lc rgb '#d55e00' lw 2 title \"mean (band: 95 %% interval of the mean)\", "
           "NaN with lines lc rgb '#0072b2' dt 2 title \"2.5 %% and 97.5 %% of the samples\"\n");
   return 0;
@@ -65,7 +71,8 @@ static int write_tornado(uraCtx* c, FILE* f) {
   double share[uraMAXDIST + 1 + urMAXBAGS];
   int k = ura_mc_shares(c, name, share), ord[uraMAXDIST + 1 + urMAXBAGS];
   if (k == 0) {
-    return ura_fail(c, "plot tornado: the last montecarlo drew no input; declare one with "
+    return ura_fail(c,
+                    "plot tornado: the last montecarlo drew no input; declare one with "
                     "'dist' or set p_chute or p_bag below 1");
   }
   for (int i = 0; i < k; i++) ord[i] = i;
@@ -93,10 +100,14 @@ static int write_tornado(uraCtx* c, FILE* f) {
     fprintf(f, "%d %.9g\n", i, s);
   }
   fprintf(f, "EOD\n");
-  fprintf(f, "set title \"Variance shares of Q (first-order), case %s, %d samples; sum %.3g\" "
-          "noenhanced\n", casename, n, sum);
-  fprintf(f, "set xlabel \"share of the variance of Q\" noenhanced\nset xrange [0:1]\n"
-          "set yrange [%d.5:-0.5]\nset grid xtics\nunset key\nset ytics (", k - 1);
+  fprintf(f,
+          "set title \"Variance shares of Q (first-order), case %s, %d samples; sum %.3g\" "
+          "noenhanced\n",
+          casename, n, sum);
+  fprintf(f,
+          "set xlabel \"share of the variance of Q\" noenhanced\nset xrange [0:1]\n"
+          "set yrange [%d.5:-0.5]\nset grid xtics\nunset key\nset ytics (",
+          k - 1);
   for (int i = 0; i < k; i++) {
     fprintf(f, "%s\"", i ? ", " : "");
     for (const char* p = name[ord[i]]; *p; p++) {
@@ -105,7 +116,8 @@ static int write_tornado(uraCtx* c, FILE* f) {
     }
     fprintf(f, "\" %d", i);
   }
-  fprintf(f, ") noenhanced\nset style fill solid 0.7 border -1\n"
+  fprintf(f,
+          ") noenhanced\nset style fill solid 0.7 border -1\n"
           "plot $S using ($2/2):1:($2/2):(0.35) with boxxyerror lc rgb '#0072b2', "
           "$S using 2:1:(sprintf(\"%%.3f\", $2)) with labels left offset 0.5,0\n");
   return 0;

@@ -11,8 +11,8 @@
 
 /* do all sweeps of a kind share the fixed value, the step, the changes? */
 typedef struct {
-  int n;                           /* sweeps of the kind */
-  int fixed, step, changes;        /* 1: the same in all of them */
+  int n;                    /* sweeps of the kind */
+  int fixed, step, changes; /* 1: the same in all of them */
 } shared;
 
 static shared common(const uraCtx* c, int over_face) {
@@ -36,8 +36,8 @@ static shared common(const uraCtx* c, int over_face) {
 /* write the datablock and the plot command of one panel; a sweep keeps its colour and point
    type in both panels (colour-blind safe, no yellow on white) */
 static void panel(uraCtx* c, FILE* f, int over_face) {
-  static const char* const colours[8] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00", "#0072b2",
-                                         "#d55e00", "#cc79a7", "#000000"};
+  static const char* const colours[8] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00",
+                                         "#0072b2", "#d55e00", "#cc79a7", "#000000"};
   shared sh = common(c, over_face);
   const uraSweep* first = NULL;
   char title[800], cases[64] = "";
@@ -62,8 +62,8 @@ static void panel(uraCtx* c, FILE* f, int over_face) {
                        over_face ? "face direction" : "horizontal wind",
                        strchr(cases, ',') ? "s" : "", cases);
   if (sh.fixed) {
-    k += (size_t)snprintf(title + k, sizeof title - k, over_face ? ", wind %g m/s" :
-                          ", face %g deg", first->fixed);
+    k += (size_t)snprintf(title + k, sizeof title - k,
+                          over_face ? ", wind %g m/s" : ", face %g deg", first->fixed);
   }
   if (sh.step) k += (size_t)snprintf(title + k, sizeof title - k, ", grid step %g m", first->step);
   if (sh.changes && strcmp(first->changes, "none") && k < sizeof title) {
@@ -73,12 +73,14 @@ static void panel(uraCtx* c, FILE* f, int over_face) {
   ura_plot_quote(f, title);
   fprintf(f, " noenhanced\n");
   if (over_face) {
-    fprintf(f, "set xlabel \"face direction phi (deg; 0 faces the incoming drone)\" noenhanced\n"
+    fprintf(f,
+            "set xlabel \"face direction phi (deg; 0 faces the incoming drone)\" noenhanced\n"
             "set xtics 45\n");
   } else {
     fprintf(f, "set xlabel \"horizontal wind speed (m/s)\" noenhanced\nset xtics autofreq\n");
   }
-  fprintf(f, "set ylabel \"Q (m^2)\" noenhanced\nset yrange [0:*]\nset autoscale xfix\n"
+  fprintf(f,
+          "set ylabel \"Q (m^2)\" noenhanced\nset yrange [0:*]\nset autoscale xfix\n"
           "set offsets graph 0.04, graph 0.04, graph 0.1, 0\n");
 
   /* one curve per sweep; the legend says what differs */
@@ -91,8 +93,8 @@ static void panel(uraCtx* c, FILE* f, int over_face) {
     if (w->over_face != over_face) continue;
     m = (size_t)snprintf(label, sizeof label, "case %s", w->casename);
     if (!sh.fixed) {
-      m += (size_t)snprintf(label + m, sizeof label - m, over_face ? ", wind %g m/s" :
-                            ", face %g deg", w->fixed);
+      m += (size_t)snprintf(label + m, sizeof label - m,
+                            over_face ? ", wind %g m/s" : ", face %g deg", w->fixed);
     }
     if (!sh.step) m += (size_t)snprintf(label + m, sizeof label - m, ", step %g m", w->step);
     if (!sh.changes && strcmp(w->changes, "none") && m < sizeof label) {
@@ -108,7 +110,8 @@ static void panel(uraCtx* c, FILE* f, int over_face) {
 
 static int write_sweep(uraCtx* c, FILE* f, int want_wind, int want_face) {
   int two = want_wind && want_face;
-  fprintf(f, "set grid\nset key below left Left reverse noenhanced samplen 3 maxrows 3\n"
+  fprintf(f,
+          "set grid\nset key below left Left reverse noenhanced samplen 3 maxrows 3\n"
           "set tics out\n");
   if (two) {
     /* the same bottom margin in both panels: the taller legend decides */
@@ -126,7 +129,7 @@ int ura_plot_sweep(uraCtx* c, const char* kind) {
   int nw = common(c, 0).n, nf = common(c, 1).n;
   int want_wind = nw > 0, want_face = nf > 0;
   if (kind && strcmp(kind, "wind") && strcmp(kind, "face")) {
-    return ura_plot_psweep(c, kind);        /* a sweep over another parameter (sweep_param.c) */
+    return ura_plot_psweep(c, kind); /* a sweep over another parameter (sweep_param.c) */
   }
   if (!kind && !nw && !nf && c->npsweep) return ura_plot_psweep(c, NULL);
   if (kind) {

@@ -19,23 +19,28 @@ void ura_preset_names(uraCtx* c, char* buf, size_t n) {
   size_t k = 0;
   buf[0] = 0;
   for (int i = 0; m && i < m->npreset && k < n; i++) {
-    k += (size_t)snprintf(buf + k, n - k, "%s%s", i == 0 ? "" : i + 1 == m->npreset ? " or " :
-                          ", ", m->preset[i].name);
+    k += (size_t)snprintf(buf + k, n - k, "%s%s",
+                          i == 0                ? ""
+                          : i + 1 == m->npreset ? " or "
+                                                : ", ",
+                          m->preset[i].name);
   }
   if (!buf[0]) snprintf(buf, n, "none (the model declares no preset)");
 }
 
 /* a workbench setting of the preset into ns (through the parameter tables, as 'set' would) */
-static int preset_setting(uraCtx* c, uraState* ns, const char* preset, const char* key,
-                          double v) {
+static int preset_setting(uraCtx* c, uraState* ns, const char* preset, const char* key, double v) {
   char val[64];
   snprintf(val, sizeof val, "%.17g", v);
   const uraParam* p = ura_param_find(key);
   int inj = p ? -1 : ura_injury_find(key);
   if ((!p || p->kind == uraP_CASE || p->kind == uraP_LIST || p->kind == uraP_STR ||
-       p->kind == uraP_ENUM) && inj < 0) {
-    return ura_fail(c, "case %s: the preset sets '%s', which is neither a model parameter nor a "
-                    "numeric workbench setting; accepted: the names 'show' lists", preset, key);
+       p->kind == uraP_ENUM) &&
+      inj < 0) {
+    return ura_fail(c,
+                    "case %s: the preset sets '%s', which is neither a model parameter nor a "
+                    "numeric workbench setting; accepted: the names 'show' lists",
+                    preset, key);
   }
   uraState keep = c->st;
   c->st = *ns;

@@ -27,9 +27,12 @@ void ura_progress_start(void) {
 
 /* a duration as 7 s, 2 min 05 s, 1 h 04 min */
 static void duration(char* buf, size_t n, double s) {
-  if (s < 60) snprintf(buf, n, "%.0f s", s);
-  else if (s < 3600) snprintf(buf, n, "%d min %02d s", (int)(s / 60), (int)s % 60);
-  else snprintf(buf, n, "%d h %02d min", (int)(s / 3600), (int)(s / 60) % 60);
+  if (s < 60)
+    snprintf(buf, n, "%.0f s", s);
+  else if (s < 3600)
+    snprintf(buf, n, "%d min %02d s", (int)(s / 60), (int)s % 60);
+  else
+    snprintf(buf, n, "%d h %02d min", (int)(s / 3600), (int)(s / 60) % 60);
 }
 
 void ura_progress_line(const char* what, long done, long total, const char* noun) {

@@ -14,8 +14,8 @@ typedef struct {
   uraModelKey model;
   urImpactCond cond;
   double step;
-  int set[3];                          /* along_min, along_max, cross_max set */
-  double par_min, par_max, perp_max;   /* when set (0 when derived) */
+  int set[3];                        /* along_min, along_max, cross_max set */
+  double par_min, par_max, perp_max; /* when set (0 when derived) */
   urInjuryParams injury;
 } gridKey;
 
@@ -55,10 +55,9 @@ static int key_same(const gridKey* a, const gridKey* b) {
   const urImpactCond *x = &a->cond, *y = &b->cond;
   if (!same(x->speed, y->speed) || !same(x->angle, y->angle) || !same(x->face, y->face) ||
       !same(x->pitch, y->pitch) || !same(x->roll, y->roll) || !same(x->yaw, y->yaw) ||
-      x->tau != y->tau || x->aim != y->aim ||
-      !same(a->step, b->step) || memcmp(a->set, b->set, sizeof a->set) ||
-      !same(a->par_min, b->par_min) || !same(a->par_max, b->par_max) ||
-      !same(a->perp_max, b->perp_max)) {
+      x->tau != y->tau || x->aim != y->aim || !same(a->step, b->step) ||
+      memcmp(a->set, b->set, sizeof a->set) || !same(a->par_min, b->par_min) ||
+      !same(a->par_max, b->par_max) || !same(a->perp_max, b->perp_max)) {
     return 0;
   }
   /* every injury setting, through the named table (which covers the whole struct) */

@@ -16,7 +16,7 @@
 #define MAXCAND 512
 static char cand[MAXCAND][64];
 static int ncand;
-static uraCtx* repl_ctx;           /* for the model's parameter names */
+static uraCtx* repl_ctx; /* for the model's parameter names */
 
 static void add(const char* name) {
   if (ncand < MAXCAND && name && strlen(name) < sizeof cand[0]) strcpy(cand[ncand++], name);
@@ -75,7 +75,7 @@ static void keywords(const char* u, const char* after) {
       }
       p += k - 1;
     }
-    if (pass == 0 && !strcmp(text, u)) return;   /* after is not a keyword here */
+    if (pass == 0 && !strcmp(text, u)) return; /* after is not a keyword here */
   }
 }
 
@@ -116,15 +116,19 @@ static char** complete(const char* text, int start, int end) {
   } else if (!cmd) {
     return NULL;
   } else if (nw == 1) {
-    switch (cmd->compl) {
-    case uraC_COMMAND: for (int i = 0; ura_cmds[i].name; i++) add(ura_cmds[i].name); break;
+    switch (cmd->compl ) {
+    case uraC_COMMAND:
+      for (int i = 0; ura_cmds[i].name; i++) add(ura_cmds[i].name);
+      break;
     case uraC_PARAM: add_params(); break;
-    case uraC_CASE: {              /* the model's presets */
+    case uraC_CASE: { /* the model's presets */
       const urModel* m = repl_ctx ? ura_model(repl_ctx) : NULL;
       for (int i = 0; m && i < m->npreset; i++) add(m->preset[i].name);
       break;
     }
-    case uraC_POF: for (int i = 0; ura_pof_names[i]; i++) add(ura_pof_names[i]); break;
+    case uraC_POF:
+      for (int i = 0; ura_pof_names[i]; i++) add(ura_pof_names[i]);
+      break;
     case uraC_FILE: break;
     case uraC_NONE: keywords(args, NULL); break;
     }
@@ -172,8 +176,7 @@ static void prompt_text(uraCtx* c, char* buf, size_t n) {
   size_t k = (size_t)snprintf(buf, n, "uasrisk[%s", c->st.casename);
   for (int i = 0; i < c->npart && k < n; i++) {
     if (strcmp(c->part[i].origin, "built-in")) {
-      k += (size_t)snprintf(buf + k, n - k, "%s%s", strchr(buf, '|') ? "," : "|",
-                            c->part[i].name);
+      k += (size_t)snprintf(buf + k, n - k, "%s%s", strchr(buf, '|') ? "," : "|", c->part[i].name);
     }
   }
   int modified = 0;

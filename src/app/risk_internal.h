@@ -24,8 +24,7 @@ void ura_risk_override(uraState* ns, const char* name, double v, int user);
 /* Q of the grid of state ns (it becomes the live state; the caller restores its own) */
 int ura_risk_grid(uraCtx* c, const uraState* ns, const char* who, int quiet, double* q);
 /* the Annex F critical area of state ns (mass, width, its impact speed and angle), m^2 */
-int ura_risk_annexf(uraCtx* c, const uraState* ns, double* ca, double* speed,
-                    double* angle);
+int ura_risk_annexf(uraCtx* c, const uraState* ns, double* ca, double* speed, double* angle);
 /* a critical area (m^2) with its 95 % interval, and the reduction factor of the unmitigated
    drone's against it with its interval */
 typedef struct {
@@ -38,8 +37,8 @@ typedef struct {
 int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t n);
 /* the last montecarlo for the plots: its samples' Q and statistics (-1: none); the shares of its
    independent inputs (names, values; their count, at most uraMAXDIST + 1 + urMAXBAGS) */
-int ura_mc_data(uraCtx* c, const double** q, int* n, const urMcStats** st,
-                const char** casename, double* seed);
+int ura_mc_data(uraCtx* c, const double** q, int* n, const urMcStats** st, const char** casename,
+                double* seed);
 int ura_mc_shares(uraCtx* c, const char** name, double* share);
 /* the iGRC columns of a critical area: raw1, igrc, igrc_table (0, or -1 without a class) */
 int ura_risk_igrc(const uraState* st, double ca, double* raw1, int* igrc, int* table);

@@ -9,7 +9,10 @@
 
 #include "scale.h"
 
-typedef struct { const char* name; const char* text; } urBuiltinModel;
+typedef struct {
+  const char* name;
+  const char* text;
+} urBuiltinModel;
 extern const urBuiltinModel ur_builtin_models[];
 
 unsigned long long ura_fnv(unsigned long long h, const void* p, size_t n) {
@@ -30,7 +33,7 @@ void ura_scale_script_hash(int argc, char** argv, char out[17]) {
     char buf[65536];
     size_t r;
     h = ura_fnv(h, argv[i], strlen(argv[i]) + 1);
-    if (!f) continue;              /* the run itself will say it cannot read it */
+    if (!f) continue; /* the run itself will say it cannot read it */
     while ((r = fread(buf, 1, sizeof buf, f)) > 0) h = ura_fnv(h, buf, r);
     fclose(f);
   }
@@ -76,7 +79,8 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   int ac = *argc;
   if (ac >= 2 && !strcmp(av[1], "merge")) {
     if (ac < 3) {
-      fprintf(stderr, "uasrisk merge: no part files; usage: uasrisk merge PART... (the files of "
+      fprintf(stderr,
+              "uasrisk merge: no part files; usage: uasrisk merge PART... (the files of "
               "'uasrisk --shard I/N --part PART', one per shard)\n");
       return 2;
     }
@@ -104,8 +108,10 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
       if (av[i][2] == 'p') {
         part = av[++i];
       } else if (shard_arg(av[++i], &shard, &nshard)) {
-        fprintf(stderr, "uasrisk: --shard '%s' is not a shard; accepted: I/N with whole numbers "
-                "0 <= I < N <= 1000000 (e.g. --shard 0/4)\n", av[i]);
+        fprintf(stderr,
+                "uasrisk: --shard '%s' is not a shard; accepted: I/N with whole numbers "
+                "0 <= I < N <= 1000000 (e.g. --shard 0/4)\n",
+                av[i]);
         return 2;
       }
     } else {
@@ -116,7 +122,8 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   *argc = w;
   if (!part && shard < 0) return 0;
   if (!part || shard < 0) {
-    fprintf(stderr, "uasrisk: --shard and --part go together; usage: uasrisk --shard I/N --part "
+    fprintf(stderr,
+            "uasrisk: --shard and --part go together; usage: uasrisk --shard I/N --part "
             "OUT FILE.ses\n");
     return 2;
   }
@@ -129,7 +136,8 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
     work = 1;
   }
   if (!work) {
-    fprintf(stderr, "uasrisk: --shard needs the script as FILE or -c COMMANDS; standard input is "
+    fprintf(stderr,
+            "uasrisk: --shard needs the script as FILE or -c COMMANDS; standard input is "
             "not accepted (merge could not replay it)\n");
     return 2;
   }
@@ -171,8 +179,8 @@ static int d_end(void* ctx, urGrid* g, const long* todo, long ntodo) {
 
 /* the settings text that decides the cells: the session without what changes none */
 static unsigned long long settings_hash(uraCtx* c) {
-  static const char* const skip[] = {"set format ", "set terminal ", "set output ",
-                                     "set threads ", "set recall ", NULL};
+  static const char* const skip[] = {"set format ",  "set terminal ", "set output ",
+                                     "set threads ", "set recall ",   NULL};
   char* text = NULL;
   size_t n = 0;
   unsigned long long h = uraFNV0;

@@ -16,23 +16,23 @@
 #include "app.h"
 
 #define uraPART_VERSION 1
-#define uraPART_MAGIC "uasrisk-part"
+#define uraPART_MAGIC   "uasrisk-part"
 
 typedef struct uraScale uraScale;
 
 typedef struct {
   const char* name;
-  int (*begin)(uraScale* s, long ntodo);    /* grid s->grid with key s->key is about to run */
-  long (*next)(uraScale* s);                /* any worker thread: next position, -1 none */
+  int (*begin)(uraScale* s, long ntodo); /* grid s->grid with key s->key is about to run */
+  long (*next)(uraScale* s);             /* any worker thread: next position, -1 none */
   int (*end)(uraScale* s, urGrid* g, const long* todo, long ntodo);
-  int (*finish)(uraScale* s, int rc);       /* end of the run: the exit status */
+  int (*finish)(uraScale* s, int rc); /* end of the run: the exit status */
 } uraScaleOps;
 
 struct uraScale {
   const uraScaleOps* ops;
   uraCtx* c;
-  long grid;                       /* number of the running grid (-1 before the first) */
-  char key[17];                    /* its key: settings, model and extents, hashed */
+  long grid;    /* number of the running grid (-1 before the first) */
+  char key[17]; /* its key: settings, model and extents, hashed */
   void* impl;
 };
 
@@ -79,17 +79,17 @@ typedef struct {
   int shard, nshard;
   char script[17], model[17];
   int argc;
-  char** argv;                     /* the command line without --shard and --part */
-  int status;                      /* the exit status of the shard's run */
+  char** argv; /* the command line without --shard and --part */
+  int status;  /* the exit status of the shard's run */
   long ngrid;
-  struct uraPartGrid* grid;        /* ngrid */
-  char* text;                      /* the whole file, owned (lines point into it) */
+  struct uraPartGrid* grid; /* ngrid */
+  char* text;               /* the whole file, owned (lines point into it) */
 } uraPartFile;
 typedef struct uraPartGrid {
   char key[17];
   long ntodo, ncell;
-  long* pos;                       /* positions, increasing */
-  char** cell;                     /* their cell lines (ura_cell_read) */
+  long* pos;   /* positions, increasing */
+  char** cell; /* their cell lines (ura_cell_read) */
 } uraPartGrid;
 /* write the header of a part */
 void ura_part_header(FILE* f, int shard, int nshard, int argc, char** argv);

@@ -10,8 +10,8 @@
 
 typedef struct {
   int n;
-  uraPartFile* part;               /* n, by shard */
-  char** name;                     /* their file names */
+  uraPartFile* part; /* n, by shard */
+  char** name;       /* their file names */
 } merge;
 
 static int refuse(const char* fmt, const char* a, const char* b) {
@@ -26,26 +26,33 @@ static int m_begin(uraScale* s, long ntodo) {
   for (int i = 0; i < m->n; i++) {
     const uraPartFile* p = &m->part[i];
     if (s->grid >= p->ngrid) {
-      return ura_fail(s->c, "merge: part '%s' has no grid %ld: its shard ran %ld grids and ended "
+      return ura_fail(s->c,
+                      "merge: part '%s' has no grid %ld: its shard ran %ld grids and ended "
                       "with status %d; accepted: parts of runs that reached every grid the merged "
-                      "run reaches", m->name[i], s->grid, p->ngrid, p->status);
+                      "run reaches",
+                      m->name[i], s->grid, p->ngrid, p->status);
     }
     const uraPartGrid* g = &p->grid[s->grid];
     long first = ((i - s->grid) % m->n + m->n) % m->n;
     long mine = first < ntodo ? (ntodo - first + m->n - 1) / m->n : 0;
     if (strcmp(g->key, s->key) || g->ntodo != ntodo) {
-      return ura_fail(s->c, "merge: grid %ld is not the one the shards ran (part '%s'): the "
+      return ura_fail(s->c,
+                      "merge: grid %ld is not the one the shards ran (part '%s'): the "
                       "script, a file it reads or the model changed since; run the shards again",
                       s->grid, m->name[i]);
     }
     if (g->ncell != mine) {
-      return ura_fail(s->c, "merge: part '%s' is damaged: grid %ld holds %ld cells, shard %d of "
-                      "%d has %ld", m->name[i], s->grid, g->ncell, i, m->n, mine);
+      return ura_fail(s->c,
+                      "merge: part '%s' is damaged: grid %ld holds %ld cells, shard %d of "
+                      "%d has %ld",
+                      m->name[i], s->grid, g->ncell, i, m->n, mine);
     }
     for (long k = 0; k < mine; k++) {
       if (g->pos[k] != first + k * m->n) {
-        return ura_fail(s->c, "merge: part '%s' is damaged: grid %ld holds cell %ld, which is "
-                        "not its shard's", m->name[i], s->grid, g->pos[k]);
+        return ura_fail(s->c,
+                        "merge: part '%s' is damaged: grid %ld holds cell %ld, which is "
+                        "not its shard's",
+                        m->name[i], s->grid, g->pos[k]);
       }
     }
   }
@@ -54,7 +61,7 @@ static int m_begin(uraScale* s, long ntodo) {
 
 static long m_next(uraScale* s) {
   (void)s;
-  return -1;                       /* every cell comes from the parts */
+  return -1; /* every cell comes from the parts */
 }
 
 static int m_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
@@ -64,8 +71,7 @@ static int m_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
     const uraPartGrid* pg = &m->part[i].grid[s->grid];
     long first = ((i - s->grid) % m->n + m->n) % m->n;
     if (ura_cell_read(pg->cell[(k - first) / m->n], &g->cell[todo[k]])) {
-      return ura_fail(s->c, "merge: part '%s' is damaged: a cell of grid %ld", m->name[i],
-                      s->grid);
+      return ura_fail(s->c, "merge: part '%s' is damaged: a cell of grid %ld", m->name[i], s->grid);
     }
   }
   return 0;
@@ -105,22 +111,30 @@ static int load(merge* m, int nfile, char** file) {
     }
     int rc = 0;
     if (p.nshard != m->n) {
-      rc = refuse("'%s' and '%s' come from runs split into different numbers of shards; "
-                  "accepted: the parts of one run", qname, file[f]);
+      rc = refuse(
+          "'%s' and '%s' come from runs split into different numbers of shards; "
+          "accepted: the parts of one run",
+          qname, file[f]);
     } else if (m->name[p.shard]) {
-      rc = refuse("'%s' and '%s' are the same shard; accepted: each shard once",
-                  m->name[p.shard], file[f]);
+      rc = refuse("'%s' and '%s' are the same shard; accepted: each shard once", m->name[p.shard],
+                  file[f]);
     } else if (q && (strcmp(p.script, q->script) || p.argc != q->argc)) {
-      rc = refuse("'%s' and '%s' come from different scripts or command lines; accepted: the "
-                  "parts of one run", qname, file[f]);
+      rc = refuse(
+          "'%s' and '%s' come from different scripts or command lines; accepted: the "
+          "parts of one run",
+          qname, file[f]);
     } else if (q && strcmp(p.model, q->model)) {
-      rc = refuse("'%s' and '%s' come from different uasrisk builds (built-in models); accepted: "
-                  "the parts of one run", qname, file[f]);
+      rc = refuse(
+          "'%s' and '%s' come from different uasrisk builds (built-in models); accepted: "
+          "the parts of one run",
+          qname, file[f]);
     }
     for (int a = 0; q && !rc && a < p.argc; a++) {
       if (strcmp(p.argv[a], q->argv[a])) {
-        rc = refuse("'%s' and '%s' come from different command lines; accepted: the parts of one "
-                    "run", qname, file[f]);
+        rc = refuse(
+            "'%s' and '%s' come from different command lines; accepted: the parts of one "
+            "run",
+            qname, file[f]);
       }
     }
     if (rc) {
@@ -135,8 +149,10 @@ static int load(merge* m, int nfile, char** file) {
   for (int i = 0; i < m->n; i++) {
     if (m->name[i]) continue;
     size_t len = strlen(missing);
-    if (nmiss < 20) snprintf(missing + len, sizeof missing - len, "%s%d", nmiss ? ", " : "", i);
-    else if (nmiss == 20) snprintf(missing + len, sizeof missing - len, ", ...");
+    if (nmiss < 20)
+      snprintf(missing + len, sizeof missing - len, "%s%d", nmiss ? ", " : "", i);
+    else if (nmiss == 20)
+      snprintf(missing + len, sizeof missing - len, ", ...");
     nmiss++;
   }
   if (nmiss) {
@@ -150,12 +166,16 @@ static int load(merge* m, int nfile, char** file) {
   ura_scale_script_hash(p0->argc, p0->argv, sh);
   ura_scale_model_hash(mh);
   if (strcmp(sh, p0->script)) {
-    return refuse("a script file of the parts' command line changed since the shards ran%s%s; "
-                  "accepted: the script as it was (or run the shards again)", "", "");
+    return refuse(
+        "a script file of the parts' command line changed since the shards ran%s%s; "
+        "accepted: the script as it was (or run the shards again)",
+        "", "");
   }
   if (strcmp(mh, p0->model)) {
-    return refuse("the parts were written by a uasrisk with other built-in models%s%s; "
-                  "accepted: parts of this build", "", "");
+    return refuse(
+        "the parts were written by a uasrisk with other built-in models%s%s; "
+        "accepted: parts of this build",
+        "", "");
   }
   return 0;
 }
@@ -182,7 +202,7 @@ int ura_merge_new(uraCtx* c, int nfile, char** file, int* argc, char*** argv) {
   av[0] = (*argv)[0];
   for (int i = 0; i < p0->argc; i++) av[i + 1] = p0->argv[i];
   *argc = p0->argc + 1;
-  *argv = av;                      /* lives as long as the run */
+  *argv = av; /* lives as long as the run */
   c->scale = s;
   return 0;
 }

@@ -24,20 +24,24 @@ uraScale* ura_mpi_new(uraCtx* c, int* argc, char*** argv) {
 #include <time.h>
 #include <unistd.h>
 
-enum { TAG_REQ = 11, TAG_CHUNK, TAG_CELLS };
+enum {
+  TAG_REQ = 11,
+  TAG_CHUNK,
+  TAG_CELLS
+};
 
 typedef struct {
   int rank, size;
-  pthread_mutex_t lock;            /* the chunk state below; MPI calls of worker threads */
+  pthread_mutex_t lock; /* the chunk state below; MPI calls of worker threads */
   long ntodo;
-  long lo, hi;                     /* this rank's chunk: positions lo..hi-1 */
-  int exhausted;                   /* no chunk is left for this rank (this grid) */
-  long pool;                       /* rank 0: the first position not handed out */
-  int told;                        /* rank 0: ranks told that nothing is left */
+  long lo, hi;   /* this rank's chunk: positions lo..hi-1 */
+  int exhausted; /* no chunk is left for this rank (this grid) */
+  long pool;     /* rank 0: the first position not handed out */
+  int told;      /* rank 0: ranks told that nothing is left */
   pthread_t server;
   int serving;
-  long *mine, nmine, cap;          /* positions this rank simulated (this grid) */
-  int err_fd;                      /* ranks but 0: their standard error, kept for a lone failure */
+  long *mine, nmine, cap; /* positions this rank simulated (this grid) */
+  int err_fd;             /* ranks but 0: their standard error, kept for a lone failure */
 } mpiDist;
 
 static void pause_us(long us) {
@@ -82,11 +86,12 @@ static void* serve(void* arg) {
       pause_us(50);
       continue;
     }
-    long req[3], chunk[2];         /* grid number, list length, key: the same on every rank */
+    long req[3], chunk[2]; /* grid number, list length, key: the same on every rank */
     MPI_Recv(req, 3, MPI_LONG, st.MPI_SOURCE, TAG_REQ, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (req[0] != s->grid || req[1] != d->ntodo || req[2] != (long)strtoull(s->key, NULL, 16)) {
-      abort_all("ranks out of step: another grid on another rank (do all nodes see the same "
-                "script and model files?)");
+      abort_all(
+          "ranks out of step: another grid on another rank (do all nodes see the same "
+          "script and model files?)");
     }
     pthread_mutex_lock(&d->lock);
     carve(d, &chunk[0], &chunk[1]);
@@ -190,7 +195,7 @@ static int p_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
     if (d->serving) pthread_join(d->server, NULL);
     d->serving = 0;
     if (ura_interrupted()) abort_all("interrupted (Ctrl-C) on rank 0");
-    for (int r = 1; r < d->size; r++) {        /* the cells of each rank */
+    for (int r = 1; r < d->size; r++) { /* the cells of each rank */
       int flag = 0;
       MPI_Status st;
       for (;;) {
@@ -274,7 +279,8 @@ uraScale* ura_mpi_new(uraCtx* c, int* argc, char*** argv) {
     exit(2);
   }
   if (have < MPI_THREAD_SERIALIZED) {
-    fprintf(stderr, "uasrisk-mpi: this MPI cannot be called from threads (MPI_THREAD_SERIALIZED "
+    fprintf(stderr,
+            "uasrisk-mpi: this MPI cannot be called from threads (MPI_THREAD_SERIALIZED "
             "is needed)\n");
     MPI_Abort(MPI_COMM_WORLD, 2);
   }
@@ -297,14 +303,15 @@ uraScale* ura_mpi_new(uraCtx* c, int* argc, char*** argv) {
   }
   if (work <= 0) {
     if (d->rank == 0) {
-      fprintf(stderr, "uasrisk-mpi: runs scripts, not sessions; accepted: mpirun -n N "
+      fprintf(stderr,
+              "uasrisk-mpi: runs scripts, not sessions; accepted: mpirun -n N "
               "uasrisk-mpi [-c COMMANDS] [FILE]... (no -i)\n");
     }
     MPI_Finalize();
     exit(2);
   }
   d->err_fd = -1;
-  if (d->rank != 0) {                /* rank 0 speaks for all */
+  if (d->rank != 0) { /* rank 0 speaks for all */
     ura_scale_mute(c);
     d->err_fd = dup(STDERR_FILENO);
     int fd = open("/dev/null", O_WRONLY);

@@ -15,15 +15,18 @@
 
 #include "scale.h"
 
-#define MAXPART (1L << 34)         /* largest part read, bytes */
+#define MAXPART (1L << 34) /* largest part read, bytes */
 
 static void put_arg(FILE* f, const char* s) {
   fputs("arg ", f);
   for (; *s; s++) {
     unsigned char ch = (unsigned char)*s;
-    if (ch == '\\') fputs("\\\\", f);
-    else if (ch < 32 || ch == 127) fprintf(f, "\\x%02x", ch);
-    else fputc(ch, f);
+    if (ch == '\\')
+      fputs("\\\\", f);
+    else if (ch < 32 || ch == 127)
+      fprintf(f, "\\x%02x", ch);
+    else
+      fputc(ch, f);
   }
   fputc('\n', f);
 }
@@ -55,8 +58,8 @@ void ura_part_header(FILE* f, int shard, int nshard, int argc, char** argv) {
   char sh[17], mh[17];
   ura_scale_script_hash(argc, argv, sh);
   ura_scale_model_hash(mh);
-  fprintf(f, "%s %d\nshard %d %d\nscript %s\nmodel %s\nargc %d\n", uraPART_MAGIC,
-          uraPART_VERSION, shard, nshard, sh, mh, argc);
+  fprintf(f, "%s %d\nshard %d %d\nscript %s\nmodel %s\nargc %d\n", uraPART_MAGIC, uraPART_VERSION,
+          shard, nshard, sh, mh, argc);
   for (int i = 0; i < argc; i++) put_arg(f, argv[i]);
 }
 
@@ -155,16 +158,20 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
   p->text = text;
   size_t ml = strlen(uraPART_MAGIC);
   if (n < ml + 1 || memcmp(text, uraPART_MAGIC " ", ml + 1)) {
-    snprintf(err, nerr, "'%s' is not a part file; accepted: files written by 'uasrisk --shard "
-             "I/N --part FILE'", path);
+    snprintf(err, nerr,
+             "'%s' is not a part file; accepted: files written by 'uasrisk --shard "
+             "I/N --part FILE'",
+             path);
     return -1;
   }
   long ver;
   char vbuf[16];
   snprintf(vbuf, sizeof vbuf, "%.*s", (int)strcspn(text + ml + 1, "\n"), text + ml + 1);
   if (num(vbuf, 0, 1000000, &ver) || ver != uraPART_VERSION) {
-    snprintf(err, nerr, "'%s' is a part file of format version %s; accepted: version %d (write "
-             "the parts again with this uasrisk)", path, vbuf, uraPART_VERSION);
+    snprintf(err, nerr,
+             "'%s' is a part file of format version %s; accepted: version %d (write "
+             "the parts again with this uasrisk)",
+             path, vbuf, uraPART_VERSION);
     return -1;
   }
 
@@ -172,15 +179,19 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
   char* last = n >= 2 ? text + n - 2 : text;
   while (last > text && *last != '\n') last--;
   if (n == 0 || text[n - 1] != '\n' || last == text || strncmp(last + 1, "sum ", 4)) {
-    snprintf(err, nerr, "'%s' is truncated (no checksum line at its end); its shard did not "
-             "finish: run it again", path);
+    snprintf(err, nerr,
+             "'%s' is truncated (no checksum line at its end); its shard did not "
+             "finish: run it again",
+             path);
     return -1;
   }
   char want[17];
   snprintf(want, sizeof want, "%016llx", ura_fnv(uraFNV0, text, (size_t)(last + 1 - text)));
   if (strlen(last + 5) != 17 || strncmp(last + 5, want, 16)) {
-    snprintf(err, nerr, "'%s' is damaged (its checksum does not match its contents); run its "
-             "shard again", path);
+    snprintf(err, nerr,
+             "'%s' is damaged (its checksum does not match its contents); run its "
+             "shard again",
+             path);
     return -1;
   }
 
@@ -188,10 +199,10 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
   char *at = text, *end = last + 1, *w[8];
   long v, a, b;
   int nw;
-#define BAD(what)                                                                              \
-  do {                                                                                         \
-    snprintf(err, nerr, "'%s' is damaged (%s)", path, what);                                   \
-    return -1;                                                                                 \
+#define BAD(what)                                                                                  \
+  do {                                                                                             \
+    snprintf(err, nerr, "'%s' is damaged (%s)", path, what);                                       \
+    return -1;                                                                                     \
   } while (0)
   words(&at, end, w, 2);
   nw = words(&at, end, w, 3);
@@ -213,7 +224,7 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
   if (!p->argv) BAD("out of memory");
   for (int i = 0; i < p->argc; i++) {
     nw = words(&at, end, w, 2);
-    if (nw == 1 && !strcmp(w[0], "arg")) w[1] = w[0] + 3, nw = 2;   /* an empty word */
+    if (nw == 1 && !strcmp(w[0], "arg")) w[1] = w[0] + 3, nw = 2; /* an empty word */
     if (nw != 2 || strcmp(w[0], "arg") || get_arg(w[1])) BAD("bad arg line");
     p->argv[i] = w[1];
   }

@@ -11,10 +11,10 @@
 typedef struct {
   int i, n;
   char path[1024];
-  char* text;                      /* the part so far (a memory stream) */
+  char* text; /* the part so far (a memory stream) */
   size_t len;
   FILE* f;
-  long first, taken;               /* this grid: the first own position; how many handed out */
+  long first, taken; /* this grid: the first own position; how many handed out */
   long ntodo;
 } shard;
 
@@ -50,7 +50,7 @@ static int s_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
       memset(c, 0, sizeof *c);
       c->dpar = dpar;
       c->dperp = dperp;
-      c->status = urCELL_DONE;     /* a placeholder: the merge brings the real result */
+      c->status = urCELL_DONE; /* a placeholder: the merge brings the real result */
     }
   }
   return 0;
@@ -95,8 +95,8 @@ uraScale* ura_shard_new(uraCtx* c, int i, int n, const char* path, int argc, cha
   if (!s || !d || strlen(path) >= sizeof d->path || !*path) {
     free(s);
     free(d);
-    ura_fail(c, "cannot write a part named '%.200s'; accepted: a file name of 1 to %d bytes",
-             path, (int)sizeof d->path - 1);
+    ura_fail(c, "cannot write a part named '%.200s'; accepted: a file name of 1 to %d bytes", path,
+             (int)sizeof d->path - 1);
     return NULL;
   }
   d->i = i;

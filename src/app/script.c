@@ -8,7 +8,7 @@
 
 #include "app.h"
 
-#define MAXARGS 64
+#define MAXARGS  64
 #define MAXDEPTH 16
 
 #define printable ura_printable
@@ -16,8 +16,10 @@
 void ura_locate(uraCtx* c, const char* name, int lineno) {
   if (c->err_located) return;
   char tmp[uraERRLEN + 300];
-  if (lineno > 0) snprintf(tmp, sizeof tmp, "%.200s:%d: %s", name, lineno, c->err);
-  else snprintf(tmp, sizeof tmp, "%.200s: %s", name, c->err);
+  if (lineno > 0)
+    snprintf(tmp, sizeof tmp, "%.200s:%d: %s", name, lineno, c->err);
+  else
+    snprintf(tmp, sizeof tmp, "%.200s: %s", name, c->err);
   size_t n = strlen(tmp);
   if (n >= sizeof c->err) n = sizeof c->err - 1;
   memcpy(c->err, tmp, n);
@@ -92,12 +94,14 @@ int ura_run_line(uraCtx* c, const char* line) {
 
   /* cut the comment and split at ';' (both outside quotes), running each piece */
   int rc = 0;
-  char inq = 0;                    /* the open quote character, or 0 */
+  char inq = 0; /* the open quote character, or 0 */
   char* start = buf;
   for (char* p = buf;; p++) {
     int end = (*p == 0) || (!inq && *p == '#');
-    if (!inq && (*p == '"' || *p == '\'')) inq = *p;
-    else if (inq && *p == inq) inq = 0;
+    if (!inq && (*p == '"' || *p == '\''))
+      inq = *p;
+    else if (inq && *p == inq)
+      inq = 0;
     if (end || (!inq && *p == ';')) {
       char save = *p;
       *p = 0;

@@ -41,8 +41,10 @@ void ura_session_write(uraCtx* c, FILE* f) {
     ura_param_format(&bc, p, was, sizeof was);
     if (!strcmp(val, was)) continue;
     fprintf(f, "set %s ", p->name);
-    if (p->kind == uraP_STR) ura_put_word(f, val);
-    else fputs(val, f);
+    if (p->kind == uraP_STR)
+      ura_put_word(f, val);
+    else
+      fputs(val, f);
     fputc('\n', f);
   }
   for (int i = 0; i < ur_injury_param_count(); i++) {
@@ -71,7 +73,7 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   }
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "save session")) return -1;
-  ura_designs_write(c, a.f, ura_session_write);   /* each saved design, then the live state */
+  ura_designs_write(c, a.f, ura_session_write); /* each saved design, then the live state */
   ura_session_write(c, a.f);
   return ura_atomic_close(c, &a, 1, "save session");
 }
@@ -83,12 +85,15 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   int sweep = !strcmp(argv[1], "sweep"), cont = !strcmp(argv[1], "contacts");
   int mc = !strcmp(argv[1], "montecarlo");
   if (!grid && !hist && !sweep && !cont && !mc) {
-    return ura_fail(c, "export: unknown '%s'; accepted: export grid FILE, export history FILE, "
-                    "export sweep FILE, export contacts FILE, export montecarlo FILE", argv[1]);
+    return ura_fail(c,
+                    "export: unknown '%s'; accepted: export grid FILE, export history FILE, "
+                    "export sweep FILE, export contacts FILE, export montecarlo FILE",
+                    argv[1]);
   }
   if (mc && !c->mc) return ura_fail(c, "export montecarlo: no montecarlo yet; run 'montecarlo N'");
   if (sweep && !c->nsweep && !c->npsweep) {
-    return ura_fail(c, "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
+    return ura_fail(c,
+                    "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
                     "(or 'sweep NAME LIST [UNIT]')");
   }
   uraAtomic a;
@@ -100,9 +105,11 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   c->out = a.f;
   c->st.format = uraFMT_CSV;
   char* av[2] = {argv[1], grid ? "cells" : mc ? "samples" : "show"};
-  int rc = grid ? ura_cmd_grid(c, 2, av) : sweep ? ura_cmd_sweep(c, 2, av) :
-           mc ? ura_cmd_montecarlo(c, 2, av) :
-           cont ? ura_cmd_contacts(c, 1, av) : ura_history_samples(c, -INFINITY, INFINITY);
+  int rc = grid    ? ura_cmd_grid(c, 2, av)
+           : sweep ? ura_cmd_sweep(c, 2, av)
+           : mc    ? ura_cmd_montecarlo(c, 2, av)
+           : cont  ? ura_cmd_contacts(c, 1, av)
+                   : ura_history_samples(c, -INFINITY, INFINITY);
   c->out = out;
   c->st.format = fmt;
   return ura_atomic_close(c, &a, rc == 0, "export");

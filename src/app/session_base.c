@@ -44,8 +44,9 @@ void ura_num_shortest(char* buf, size_t n, double v) {
 
 /* the units a value in SI unit si may be written in (those of the model language that convert
    to it by a factor) */
-static const char* const units[] = {"m", "mm", "cm", "kg", "g", "s", "ms", "N", "kN", "Pa", "kPa",
-                                    "MPa", "GPa", "atm", "bar", "rad", "deg", "J", "L", NULL};
+static const char* const units[] = {"m",   "mm",  "cm",  "kg",  "g",   "s",   "ms",
+                                    "N",   "kN",  "Pa",  "kPa", "MPa", "GPa", "atm",
+                                    "bar", "rad", "deg", "J",   "L",   NULL};
 
 void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n) {
   int k = c->model ? ur_name_param(c->model, name) : -1;
@@ -59,7 +60,7 @@ void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size
     char usi[urNAMELEN], num[40], t[64];
     if (ur_unit_parse(units[i], &f, usi, sizeof usi) || strcmp(usi, si) || f == 1) continue;
     ura_num_shortest(num, sizeof num, v / f);
-    if (strtod(num, NULL) * f != v) continue;   /* not exact in this unit */
+    if (strtod(num, NULL) * f != v) continue; /* not exact in this unit */
     snprintf(t, sizeof t, "%s %s", num, units[i]);
     if (strlen(t) < strlen(best)) snprintf(best, sizeof best, "%s", t);
   }

@@ -21,7 +21,8 @@ int ura_edit_distance(const char* a, const char* b) {
       int v = d[i - 1][j] + 1;
       if (d[i][j - 1] + 1 < v) v = d[i][j - 1] + 1;
       if (d[i - 1][j - 1] + cost < v) v = d[i - 1][j - 1] + cost;
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < v) {
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+          d[i - 2][j - 2] + 1 < v) {
         v = d[i - 2][j - 2] + 1;
       }
       d[i][j] = v;
@@ -49,8 +50,10 @@ void ura_suggest_add(uraSuggest* s, const char* name) {
 }
 
 const char* ura_suggest_text(const uraSuggest* s, char* buf, size_t n) {
-  if (!s->best[0]) snprintf(buf, n, "%s", "");
-  else snprintf(buf, n, " (did you mean '%s'?)", s->best);
+  if (!s->best[0])
+    snprintf(buf, n, "%s", "");
+  else
+    snprintf(buf, n, " (did you mean '%s'?)", s->best);
   return buf;
 }
 

@@ -11,7 +11,7 @@
 typedef struct uraPSweep {
   char casename[8];
   char param[urNAMELEN];
-  char unit[16];                   /* the unit of the values as given ("" : the setting's own) */
+  char unit[16]; /* the unit of the values as given ("" : the setting's own) */
   double wind, face, step;
   char changes[200];
   int n;
@@ -63,15 +63,19 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   const char* own;
   if (!sweepable(c, name, &own)) {
     c->err[0] = 0;
-    return ura_fail(c, "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face LIST, "
+    return ura_fail(c,
+                    "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face LIST, "
                     "sweep NAME LIST [UNIT] with NAME a numeric setting, injury setting or model "
-                    "parameter ('show' lists them), sweep show, sweep clear", name);
+                    "parameter ('show' lists them), sweep show, sweep clear",
+                    name);
   }
   double v[uraMAXLIST];
   int n = ura_parse_list(argv[2], v, uraMAXLIST);
   if (n <= 0) {
-    return ura_fail(c, "sweep %s: '%s' is not a list of numbers; accepted: comma-separated "
-                    "numbers (at most %d)", name, argv[2], uraMAXLIST);
+    return ura_fail(c,
+                    "sweep %s: '%s' is not a list of numbers; accepted: comma-separated "
+                    "numbers (at most %d)",
+                    name, argv[2], uraMAXLIST);
   }
   const char* unit = argc == 4 ? argv[3] : NULL;
 
@@ -142,9 +146,10 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   snprintf(c->err, sizeof c->err, "%s", err);
   ura_table_print(c, t);
   if (s->n > 0) {
-    if (keep(c, s)) rc = -1;
-    else if (rc) snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err,
-                          s->n);
+    if (keep(c, s))
+      rc = -1;
+    else if (rc)
+      snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err, s->n);
   }
   free(s);
   return rc;
@@ -180,8 +185,8 @@ static void quoted(FILE* f, const char* s) {
 }
 
 int ura_plot_psweep(uraCtx* c, const char* name) {
-  static const char* const colours[8] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00", "#0072b2",
-                                         "#d55e00", "#cc79a7", "#000000"};
+  static const char* const colours[8] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00",
+                                         "#0072b2", "#d55e00", "#cc79a7", "#000000"};
   const char* who = "plot sweep";
   if (!name && c->npsweep) name = c->psweep[c->npsweep - 1].param;
   int n = 0;
@@ -192,15 +197,17 @@ int ura_plot_psweep(uraCtx* c, const char* name) {
     n++;
   }
   if (!n) {
-    return ura_fail(c, "%s: unknown '%s'; accepted: plot sweep, plot sweep wind, plot sweep "
-                    "face, or plot sweep NAME after 'sweep NAME LIST' (none over '%s' yet)", who,
-                    name, name);
+    return ura_fail(c,
+                    "%s: unknown '%s'; accepted: plot sweep, plot sweep wind, plot sweep "
+                    "face, or plot sweep NAME after 'sweep NAME LIST' (none over '%s' yet)",
+                    who, name, name);
   }
   char* s = NULL;
   size_t len = 0;
   FILE* f = open_memstream(&s, &len);
   if (!f) return ura_fail(c, "%s: out of memory", who);
-  fprintf(f, "set grid\nset key below left Left reverse noenhanced samplen 3 maxrows 3\n"
+  fprintf(f,
+          "set grid\nset key below left Left reverse noenhanced samplen 3 maxrows 3\n"
           "set tics out\n");
   for (int i = 0; i < c->npsweep; i++) {
     const uraPSweep* w = c->psweep + i;
@@ -217,15 +224,16 @@ int ura_plot_psweep(uraCtx* c, const char* name) {
   quoted(f, title);
   fprintf(f, " noenhanced\nset xlabel ");
   quoted(f, xl);
-  fprintf(f, " noenhanced\nset ylabel \"Q (m^2)\" noenhanced\nset yrange [0:*]\n"
+  fprintf(f,
+          " noenhanced\nset ylabel \"Q (m^2)\" noenhanced\nset yrange [0:*]\n"
           "set autoscale xfix\nset offsets graph 0.04, graph 0.04, graph 0.1, 0\nplot ");
   int k = 0;
   for (int i = 0; i < c->npsweep; i++) {
     const uraPSweep* w = c->psweep + i;
     if (strcmp(w->param, name)) continue;
     char label[400];
-    snprintf(label, sizeof label, "case %s, wind %g m/s, face %g deg%s%s%s%s", w->casename,
-             w->wind, w->face, strcmp(w->unit, first->unit) ? ", in " : "",
+    snprintf(label, sizeof label, "case %s, wind %g m/s, face %g deg%s%s%s%s", w->casename, w->wind,
+             w->face, strcmp(w->unit, first->unit) ? ", in " : "",
              strcmp(w->unit, first->unit) ? w->unit : "", strcmp(w->changes, "none") ? ", " : "",
              strcmp(w->changes, "none") ? w->changes : "");
     fprintf(f, "%s$P%d using 1:2 with linespoints lc rgb '%s' lw 2 pt %d ps 1.2 title ",

@@ -9,9 +9,9 @@
 struct uraTable {
   int ncol;
   char** names;
-  char** cells;                    /* row-major, ncell used of cap */
+  char** cells; /* row-major, ncell used of cap */
   int ncell, cap;
-  char** notes;                    /* '# ...' lines printed before the header */
+  char** notes; /* '# ...' lines printed before the header */
   int nnote;
 };
 

@@ -2,7 +2,7 @@
  * a file without line breaks cannot exhaust memory), NUL bytes and read errors told apart from
  * the end of the file; untrusted text made printable before it is echoed in a message; and a
  * standard output stream that keeps the reason of a failed write (a full disk) for the message */
-#define _GNU_SOURCE                /* fopencookie */
+#define _GNU_SOURCE /* fopencookie */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -45,8 +45,10 @@ long ura_read_line(FILE* f, char** buf, size_t* cap, size_t max) {
 /* the length of a valid UTF-8 sequence at s for a printable code point (U+00A0 and above, no
    surrogates or overlong forms), or 0 */
 static int utf8_printable(const unsigned char* s) {
-  int n = s[0] >= 0xC2 && s[0] <= 0xDF ? 2 : s[0] >= 0xE0 && s[0] <= 0xEF ? 3 :
-          s[0] >= 0xF0 && s[0] <= 0xF4 ? 4 : 0;
+  int n = s[0] >= 0xC2 && s[0] <= 0xDF   ? 2
+          : s[0] >= 0xE0 && s[0] <= 0xEF ? 3
+          : s[0] >= 0xF0 && s[0] <= 0xF4 ? 4
+                                         : 0;
   unsigned cp = n == 2 ? s[0] & 0x1F : n == 3 ? s[0] & 0x0F : s[0] & 0x07;
   for (int i = 1; i < n; i++) {
     if ((s[i] & 0xC0) != 0x80) return 0;
@@ -85,7 +87,7 @@ size_t ura_printable(const char* s, char* buf, size_t n) {
 /* ---- standard output that remembers why a write failed ---- */
 
 static int out_fd = -1;
-static int out_err;                /* errno of the first failed write since ura_out_clear */
+static int out_err; /* errno of the first failed write since ura_out_clear */
 
 static ssize_t out_write(void* ck, const char* buf, size_t n) {
   size_t done = 0;

@@ -8,7 +8,7 @@
 
 const char* ura_version(void) {
   static char buf[128];
-  snprintf(buf, sizeof buf, "uasrisk %s (commit %s)", uraVERSION, *uraCOMMIT ? uraCOMMIT :
-           "unknown: not built from a git checkout or archive");
+  snprintf(buf, sizeof buf, "uasrisk %s (commit %s)", uraVERSION,
+           *uraCOMMIT ? uraCOMMIT : "unknown: not built from a git checkout or archive");
   return buf;
 }

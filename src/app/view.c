@@ -22,31 +22,32 @@
 #include "colors.h"
 #include "plot.h"
 
-#define LABEL_W 7                  /* along offset labels */
-#define CELL_W 6                   /* one cell: a glyph or blank, then %5.1f */
-#define MIN_W 60                   /* smallest usable terminal */
-#define MIN_H 12
+#define LABEL_W 7  /* along offset labels */
+#define CELL_W  6  /* one cell: a glyph or blank, then %5.1f */
+#define MIN_W   60 /* smallest usable terminal */
+#define MIN_H   12
 /* the rows above the grid (title, axis caption, cross offset labels) and below it (legend,
    cursor values, keys): more when the title, the values or the keys need two lines to fit */
 static int head_rows = 3, foot_rows = 3;
-#define HEAD_ROWS head_rows
-#define FOOT_ROWS foot_rows
-#define STATUS_ONE_LINE 104        /* narrower: the cursor values take two lines */
-#define KEYS "arrows/hjkl move  PgUp/PgDn page  Home/End first/last row  0/$ first/last column" \
+#define HEAD_ROWS       head_rows
+#define FOOT_ROWS       foot_rows
+#define STATUS_ONE_LINE 104 /* narrower: the cursor values take two lines */
+#define KEYS                                                                                       \
+  "arrows/hjkl move  PgUp/PgDn page  Home/End first/last row  0/$ first/last column"               \
   "  c centre  Enter inspect  p plot  q back"
 
 typedef struct {
   uraCtx* c;
   urGrid* g;
-  int fd;                          /* the terminal, for its size */
-  int row, col;                    /* cursor cell */
-  int top, left;                   /* first visible row and column */
+  int fd;        /* the terminal, for its size */
+  int row, col;  /* cursor cell */
+  int top, left; /* first visible row and column */
   uraScheme scheme;
-  chtype role_attr[uraROLE_N];     /* colour pair and attributes of each role */
-  char note[uraERRLEN + 600];      /* last message (errors of Enter and p) */
-  int panel;                       /* the inspect panel is open */
-  int gone;                        /* the grid went away: leave */
-  int have_trace;                  /* trace holds the histories of cell (trow, tcol) */
+  chtype role_attr[uraROLE_N]; /* colour pair and attributes of each role */
+  char note[uraERRLEN + 600];  /* last message (errors of Enter and p) */
+  int panel;                   /* the inspect panel is open */
+  int gone;                    /* the grid went away: leave */
+  int have_trace;              /* trace holds the histories of cell (trow, tcol) */
   int trow, tcol;
   uraTrace trace;
 } viewer;
@@ -85,8 +86,12 @@ static void setup_colors(viewer* v) {
 
 /* ---- layout ---- */
 
-static int vis_rows(void) { return LINES - HEAD_ROWS - FOOT_ROWS; }
-static int vis_cols(void) { return (COLS - LABEL_W) / CELL_W; }
+static int vis_rows(void) {
+  return LINES - HEAD_ROWS - FOOT_ROWS;
+}
+static int vis_cols(void) {
+  return (COLS - LABEL_W) / CELL_W;
+}
 
 static urCell* cell_at(viewer* v, int i, int j) {
   return &v->g->cell[(size_t)i * v->g->ncol + j];
@@ -113,8 +118,10 @@ static void clamp(viewer* v) {
 
 /* a number, or - when unknown */
 static void fmt_num(char* buf, size_t n, const char* fmt, double x) {
-  if (isfinite(x)) snprintf(buf, n, fmt, x);
-  else snprintf(buf, n, "-");
+  if (isfinite(x))
+    snprintf(buf, n, fmt, x);
+  else
+    snprintf(buf, n, "-");
 }
 
 /* text at (y, x) in a role, cut at the right edge */
@@ -151,8 +158,10 @@ static void draw_cursor_line(viewer* v, int y) {
   const urCell* cl = cell_at(v, v->row, v->col);
   char p[32], vals[160], buf[512], more[512] = "";
   fmt_num(p, sizeof p, "%.1f %%", cl->p * 100.0);
-  const char* st = cl->status == urCELL_DONE ? "" : cl->status == urCELL_NOCONTACT ?
-                   "  no contact" : cl->status == urCELL_FAILED ? "  FAILED: " : "  pending";
+  const char* st = cl->status == urCELL_DONE        ? ""
+                   : cl->status == urCELL_NOCONTACT ? "  no contact"
+                   : cl->status == urCELL_FAILED    ? "  FAILED: "
+                                                    : "  pending";
   /* the criteria in use from the registry; at a narrow screen those after the first two (HIC
      and Nij) and the status go on a second line */
   int two = COLS < STATUS_ONE_LINE, shown = 0;
@@ -164,8 +173,7 @@ static void draw_cursor_line(viewer* v, int y) {
       size_t m = strlen(more);
       snprintf(more + m, sizeof more - m, "%s%s %s", m ? "  " : "", ur_criterion(k)->label, vals);
     } else {
-      len += snprintf(buf + len, sizeof buf - (size_t)len, "  %s %s", ur_criterion(k)->label,
-                      vals);
+      len += snprintf(buf + len, sizeof buf - (size_t)len, "  %s %s", ur_criterion(k)->label, vals);
     }
   }
   char* tail = two ? more : buf;
@@ -184,8 +192,8 @@ static void layout(viewer* v) {
   ura_grid_qtext(v->g, q, sizeof q);
   snprintf(title, sizeof title, "%s  %s  [%s]", cond, q, v->c->last.source);
   head_rows = 2 + ura_split_fields(title, COLS, lines, 2);
-  foot_rows = 1 + (COLS >= STATUS_ONE_LINE ? 1 : 2) + (v->note[0] ? 1 :
-                                                       ura_split_fields(KEYS, COLS, lines, 3));
+  foot_rows = 1 + (COLS >= STATUS_ONE_LINE ? 1 : 2) +
+              (v->note[0] ? 1 : ura_split_fields(KEYS, COLS, lines, 3));
 }
 
 static void draw_legend(viewer* v, int y) {
@@ -223,10 +231,12 @@ static void draw_grid(viewer* v) {
 
   /* axis caption with the orientation (the paper's layout: uasrisk(1), ORIENTATION), cross
      offset labels; along offset labels at the left */
-  const char* what = v->c->last.diff ? "P_b - P_a in % (blue: B safer, red: B riskier)" :
-                     "P{F|Delta} in %";
-  snprintf(buf, sizeof buf, "%s; columns: dperp (m, + left of the course), rows: dpar (m, + "
-           "ahead); the paper's layout", what);
+  const char* what =
+      v->c->last.diff ? "P_b - P_a in % (blue: B safer, red: B riskier)" : "P{F|Delta} in %";
+  snprintf(buf, sizeof buf,
+           "%s; columns: dperp (m, + left of the course), rows: dpar (m, + "
+           "ahead); the paper's layout",
+           what);
   if ((int)strlen(buf) > COLS - LABEL_W) {
     snprintf(buf, sizeof buf, "%s; cols dperp m (+ left of course), rows dpar m (+ ahead)", what);
   }
@@ -283,8 +293,7 @@ static void draw_grid(viewer* v) {
 }
 
 /* the head acceleration of the trace as a column chart, HIC window shaded */
-static void draw_trace(viewer* v, WINDOW* w, int y0, int x0, int h, int wd, double t1,
-                       double t2) {
+static void draw_trace(viewer* v, WINDOW* w, int y0, int x0, int h, int wd, double t1, double t2) {
   const uraTrace* tr = &v->trace;
   int k = ura_trace_find(tr, "head_acc");
   if (k < 0 || tr->n < 2) {
@@ -320,8 +329,10 @@ static void draw_trace(viewer* v, WINDOW* w, int y0, int x0, int h, int wd, doub
     chtype sh = v->scheme == uraSCHEME_MONO ? A_DIM : v->role_attr[uraROLE_MEDIUM];
     int top = isfinite(m) ? (int)lround((hi - m) / (hi - lo) * (h - 1)) : h;
     for (int ry = 0; ry < h; ry++) {
-      chtype ch = ry == top ? '*' : ry > top ? '|' : shaded && v->scheme == uraSCHEME_MONO ?
-                  ':' : ' ';
+      chtype ch = ry == top                               ? '*'
+                  : ry > top                              ? '|'
+                  : shaded && v->scheme == uraSCHEME_MONO ? ':'
+                                                          : ' ';
       mvwaddch(w, y0 + ry, x0 + 8 + cx, ch | (shaded ? sh : A_NORMAL));
     }
   }
@@ -365,8 +376,7 @@ static void draw_panel(viewer* v) {
   } else if (v->have_trace) {
     put(w, y, 2, A_NORMAL, "head acceleration vs time, HIC15 window shaded:");
     if (ph - y - 4 >= 3) {
-      draw_trace(v, w, y + 1, 2, ph - y - 4, pw - 4, cl->val[urVAL_HIC_T1],
-                 cl->val[urVAL_HIC_T2]);
+      draw_trace(v, w, y + 1, 2, ph - y - 4, pw - 4, cl->val[urVAL_HIC_T1], cl->val[urVAL_HIC_T2]);
     } else {
       put(w, y + 1, 2, A_DIM, "(enlarge the window to see the trace)");
     }
@@ -399,8 +409,10 @@ static void draw(viewer* v) {
   layout(v);
   clamp(v);
   draw_grid(v);
-  if (v->panel) draw_panel(v);
-  else refresh();
+  if (v->panel)
+    draw_panel(v);
+  else
+    refresh();
 }
 
 /* ---- actions ---- */
@@ -428,8 +440,8 @@ static void quiet_end(uraCtx* c, quiet* q, char* note, size_t n) {
   if (c->msg != q->msg) fclose(c->msg);
   c->out = q->out;
   c->msg = q->msg;
-  if (note && q->mbuf && q->mbuf[0]) snprintf(note, n, "%.*s", (int)strcspn(q->mbuf, "\n"),
-                                              q->mbuf);
+  if (note && q->mbuf && q->mbuf[0])
+    snprintf(note, n, "%.*s", (int)strcspn(q->mbuf, "\n"), q->mbuf);
   free(q->obuf);
   free(q->mbuf);
 }
@@ -449,11 +461,11 @@ static void inspect(viewer* v, int open) {
     int rc = v->c->inspect(v->c, cl, &v->trace);
     quiet_end(v->c, &q, v->note, sizeof v->note);
     if (!v->c->last.g) {
-      v->gone = 1;                 /* the callback dropped the grid: nothing left to show */
+      v->gone = 1; /* the callback dropped the grid: nothing left to show */
       return;
     }
     if (v->c->last.g != v->g) {
-      v->g = v->c->last.g;         /* the callback replaced the grid */
+      v->g = v->c->last.g; /* the callback replaced the grid */
       clamp(v);
     }
     ur_grid_summarise(v->g);
@@ -481,13 +493,15 @@ static void plot(viewer* v) {
   const urCell* cl = cell_at(v, v->row, v->col);
   quiet q;
   quiet_begin(v->c, &q);
-  int rc = ura_plot_trace_hic(v->c, &v->trace, 0, NULL, cl->val[urVAL_HIC_T1],
-                              cl->val[urVAL_HIC_T2]);
+  int rc =
+      ura_plot_trace_hic(v->c, &v->trace, 0, NULL, cl->val[urVAL_HIC_T1], cl->val[urVAL_HIC_T2]);
   quiet_end(v->c, &q, NULL, 0);
-  if (rc) snprintf(v->note, sizeof v->note, "%s", v->c->err);
-  else if (v->c->st.output[0]) snprintf(v->note, sizeof v->note, "plot: wrote %s",
-                                         v->c->st.output);
-  else snprintf(v->note, sizeof v->note, "plot: histories sent to gnuplot");
+  if (rc)
+    snprintf(v->note, sizeof v->note, "%s", v->c->err);
+  else if (v->c->st.output[0])
+    snprintf(v->note, sizeof v->note, "plot: wrote %s", v->c->st.output);
+  else
+    snprintf(v->note, sizeof v->note, "plot: histories sent to gnuplot");
 }
 
 /* follow the terminal's size; 1 when it changed */
@@ -527,22 +541,33 @@ static void run(viewer* v) {
       continue;
     }
     switch (ch) {
-    case 'q': case 27: return;
-    case KEY_UP: case 'k': v->row--; break;
-    case KEY_DOWN: case 'j': v->row++; break;
-    case KEY_LEFT: case 'h': v->col--; break;
-    case KEY_RIGHT: case 'l': v->col++; break;
+    case 'q':
+    case 27: return;
+    case KEY_UP:
+    case 'k': v->row--; break;
+    case KEY_DOWN:
+    case 'j': v->row++; break;
+    case KEY_LEFT:
+    case 'h': v->col--; break;
+    case KEY_RIGHT:
+    case 'l': v->col++; break;
     case KEY_PPAGE: v->row -= page; break;
-    case KEY_NPAGE: case ' ': v->row += page; break;
-    case KEY_HOME: case 'g': v->row = 0; break;
-    case KEY_END: case 'G': v->row = v->g->nrow - 1; break;
-    case '0': case '^': v->col = 0; break;
+    case KEY_NPAGE:
+    case ' ': v->row += page; break;
+    case KEY_HOME:
+    case 'g': v->row = 0; break;
+    case KEY_END:
+    case 'G': v->row = v->g->nrow - 1; break;
+    case '0':
+    case '^': v->col = 0; break;
     case '$': v->col = v->g->ncol - 1; break;
     case 'c':
       v->row = (int)lround(v->g->par_max / v->g->step);
       v->col = (int)lround(-v->g->perp_min / v->g->step);
       break;
-    case '\n': case '\r': case KEY_ENTER: inspect(v, 1); break;
+    case '\n':
+    case '\r':
+    case KEY_ENTER: inspect(v, 1); break;
     case 'p': plot(v); break;
     case 3:
       snprintf(v->note, sizeof v->note, "Ctrl-C does not stop the viewer; q returns to the prompt");
@@ -582,8 +607,10 @@ int ura_cmd_view(uraCtx* c, int argc, char** argv) {
     for (int i = 0; i < 4; i++) sigaction(sigs[i], &saved[i], NULL);
     fflush(c->out);
     const char* t = getenv("TERM");
-    return ura_fail(c, "view: the terminal (TERM=%s) cannot place the cursor; accepted: a "
-                    "terminal such as xterm, screen or tmux; use 'grid show' here", t ? t : "");
+    return ura_fail(c,
+                    "view: the terminal (TERM=%s) cannot place the cursor; accepted: a "
+                    "terminal such as xterm, screen or tmux; use 'grid show' here",
+                    t ? t : "");
   }
   raw();
   noecho();

@@ -12,7 +12,7 @@ void ura_wrap(FILE* f, const char* lead, const char* cont, const char* text, int
     return;
   }
   const char* s = text;
-  int first = 1;                   /* no word on this line yet */
+  int first = 1; /* no word on this line yet */
   while (*s) {
     while (*s == ' ') s++;
     if (!*s) break;

@@ -13,7 +13,7 @@ static void curvature(const urEllipsoid* e, const double x[3], const double t1[3
   for (int i = 0; i < 3; i++) {
     double s = 0, u = 0, v = 0;
     for (int j = 0; j < 3; j++) {
-      s += e->R[3 * j + i] * (x[j] - e->c[j]);     /* R^T (x - c) */
+      s += e->R[3 * j + i] * (x[j] - e->c[j]); /* R^T (x - c) */
       u += e->R[3 * j + i] * t1[j];
       v += e->R[3 * j + i] * t2[j];
     }
@@ -22,8 +22,8 @@ static void curvature(const urEllipsoid* e, const double x[3], const double t1[3
     b[i] = v;
     D[i] = 1 / (e->r[i] * e->r[i]);
   }
-  double g = sqrt(D[0] * D[0] * y[0] * y[0] + D[1] * D[1] * y[1] * y[1] +
-                  D[2] * D[2] * y[2] * y[2]);
+  double g =
+      sqrt(D[0] * D[0] * y[0] * y[0] + D[1] * D[1] * y[1] * y[1] + D[2] * D[2] * y[2] * y[2]);
   k[0] = k[1] = k[2] = 0;
   if (!(g > 0)) return;
   for (int i = 0; i < 3; i++) {

@@ -8,25 +8,25 @@
 
 #include "uasrisk/contact.h"
 
-#define JG_LO 1.9                  /* JG law used beyond JG_LO * dy (sheet §1.4) */
-#define JG_HI 2.2                  /* end of the smoothstep blend Hertz -> JG */
+#define JG_LO 1.9 /* JG law used beyond JG_LO * dy (sheet §1.4) */
+#define JG_HI 2.2 /* end of the smoothstep blend Hertz -> JG */
 
 /* ---- tabulated curves ---- */
 
 /* index i of the segment [x_i, x_i+1] used for x (clamped to the end segments) */
-static int segment(const urCurve* c, double x)
-{
+static int segment(const urCurve* c, double x) {
   int lo = 0, hi = c->n - 1;
   while (hi - lo > 1) {
     int mid = (lo + hi) / 2;
-    if (x < c->x[mid]) hi = mid;
-    else lo = mid;
+    if (x < c->x[mid])
+      hi = mid;
+    else
+      lo = mid;
   }
   return lo;
 }
 
-double ur_curve_eval(const urCurve* c, double x)
-{
+double ur_curve_eval(const urCurve* c, double x) {
   // empty and single-point curves
   if (c->n <= 0) return 0;
   if (c->n == 1) return c->y[0];
@@ -40,8 +40,7 @@ double ur_curve_eval(const urCurve* c, double x)
 
 /* smallest x where the curve rises through level y (y_i <= y < y_i+1), else linear
    extrapolation of the first or last segment; for the unloading-curve shift */
-static double curve_inverse(const urCurve* c, double y)
-{
+static double curve_inverse(const urCurve* c, double y) {
   int n = c->n;
   if (n <= 0) return 0;
   if (n == 1) return c->x[0];
@@ -63,41 +62,36 @@ static double curve_inverse(const urCurve* c, double y)
 /* ---- Hertz, Jackson-Green, Brake ---- */
 
 void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, double nu2, double R2,
-                  double sy, double nu_yield, int plastic)
-{
+                  double sy, double nu_yield, int plastic) {
   // effective modulus and radius, R = 0 meaning a flat (sheet §1.1)
   law->type = urLAW_HERTZ;
-  law->estar = 1.0 / ((1 - nu1*nu1)/E1 + (1 - nu2*nu2)/E2);
-  double k = (R1 > 0 ? 1/R1 : 0) + (R2 > 0 ? 1/R2 : 0);
-  law->radius = k > 0 ? 1/k : 0;
+  law->estar = 1.0 / ((1 - nu1 * nu1) / E1 + (1 - nu2 * nu2) / E2);
+  double k = (R1 > 0 ? 1 / R1 : 0) + (R2 > 0 ? 1 / R2 : 0);
+  law->radius = k > 0 ? 1 / k : 0;
   law->sy = sy;
   law->nu = nu_yield;
   law->plastic = plastic;
 }
 
-double ur_law_range(const urLaw* law)
-{
+double ur_law_range(const urLaw* law) {
   switch (law->type) {
-  case urLAW_TABLE:
-    return law->load.n > 0 ? law->load.x[law->load.n - 1] : HUGE_VAL;
+  case urLAW_TABLE: return law->load.n > 0 ? law->load.x[law->load.n - 1] : HUGE_VAL;
   case urLAW_FOAM:
     if (law->lock > 0 || law->stress.n <= 0) return HUGE_VAL;
     return law->thickness * law->stress.x[law->stress.n - 1];
-  default:
-    return HUGE_VAL;
+  default: return HUGE_VAL;
   }
 }
 
-void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy)
-{
+void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy) {
   // K = 4/3 E* sqrt(R) (sheet §1.2); JG yield onset dy = R (pi C Sy / (2 E*))^2,
   // C = 1.295 exp(0.736 nu) (sheet §1.4 step 2; Jackson & Green 2005)
-  double k = 4.0/3.0 * law->estar * sqrt(law->radius);
+  double k = 4.0 / 3.0 * law->estar * sqrt(law->radius);
   *K = k;
   if (law->sy > 0 && law->estar > 0) {
     double C = 1.295 * exp(0.736 * law->nu);
     double t = M_PI * C * law->sy / (2 * law->estar);
-    *dy = law->radius * t*t;
+    *dy = law->radius * t * t;
     *fy = k * (*dy) * sqrt(*dy);
   } else {
     *dy = HUGE_VAL;
@@ -106,8 +100,7 @@ void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy)
 }
 
 /* Jackson-Green elastic-plastic loading force at w = d/dy (sheet §1.4; JG 2005) */
-static double jackson_green(const urLaw* law, double d, double dy, double fy)
-{
+static double jackson_green(const urLaw* law, double d, double dy, double fy) {
   double R = law->radius, sy = law->sy;
   double w = d / dy;
 
@@ -119,13 +112,12 @@ static double jackson_green(const urLaw* law, double d, double dy, double fy)
   // hardness H/Sy = 2.84 (1 - exp(-0.82 (a/R)^-0.7)) (JG 2005 form)
   double hs = 2.84 * (1 - exp(-0.82 * pow(a / R, -0.7)));
   double C = 1.295 * exp(0.736 * law->nu);
-  return fy * (exp(-0.25 * pow(w, 5.0/12.0)) * w * sqrt(w)
-               + 4 * hs / C * (1 - exp(-pow(w, 5.0/9.0) / 25)) * w);
+  return fy * (exp(-0.25 * pow(w, 5.0 / 12.0)) * w * sqrt(w) +
+               4 * hs / C * (1 - exp(-pow(w, 5.0 / 9.0) / 25)) * w);
 }
 
 /* Hertz loading curve, with the JG branch blended in over [1.9, 2.2] dy when plastic */
-static double hertz_load(const urLaw* law, double d, double K, double dy, double fy)
-{
+static double hertz_load(const urLaw* law, double d, double K, double dy, double fy) {
   double fh = K * d * sqrt(d);
   if (!law->plastic || d <= JG_LO * dy) return fh;
 
@@ -134,21 +126,19 @@ static double hertz_load(const urLaw* law, double d, double K, double dy, double
   double w = d / dy;
   if (w >= JG_HI) return fj;
   double s = (w - JG_LO) / (JG_HI - JG_LO);
-  s = s*s*(3 - 2*s);
-  return (1 - s)*fh + s*fj;
+  s = s * s * (3 - 2 * s);
+  return (1 - s) * fh + s * fj;
 }
 
 /* ---- elastic (rate-free) force of each law ---- */
 
 /* the depth at which the unloading curve, shifted to pass through (dmax, fmax), reaches
    zero: dres = dmax - U^-1(fmax) + U^-1(0) */
-static double table_shift(const urLaw* law, double fmax)
-{
+static double table_shift(const urLaw* law, double fmax) {
   return curve_inverse(&law->unload, fmax);
 }
 
-static double elastic_force(const urLaw* law, const urLawState* s, double d, double area)
-{
+static double elastic_force(const urLaw* law, const urLawState* s, double d, double area) {
   switch (law->type) {
   case urLAW_HERTZ: {
     double K, dy, fy;
@@ -200,8 +190,7 @@ static double elastic_force(const urLaw* law, const urLawState* s, double d, dou
   return 0;
 }
 
-double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate, double area)
-{
+double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate, double area) {
   // no force without overlap, none while clear of the permanently deformed surface
   if (!(d > 0)) return 0;
   double fe = elastic_force(law, s, d, area);
@@ -212,8 +201,7 @@ double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate
   return f > 0 ? f : 0;
 }
 
-void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, double area)
-{
+void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, double area) {
   // out of contact: keep the history (permanent set)
   if (!(d > 0)) {
     s->touching = 0;
@@ -256,10 +244,9 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
 
 /* ---- friction ---- */
 
-void ur_friction(const urLaw* law, double fn, const double vt[3], double out[3])
-{
+void ur_friction(const urLaw* law, double fn, const double vt[3], double out[3]) {
   // regularised Coulomb: Ft = -mu Fn vt / max(|vt|, v_eps) (sheet §2.6)
-  double v = sqrt(vt[0]*vt[0] + vt[1]*vt[1] + vt[2]*vt[2]);
+  double v = sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]);
   double den = v > law->v_eps ? v : law->v_eps;
   double k = den > 0 && fn > 0 ? -law->mu * fn / den : 0;
   out[0] = k * vt[0];

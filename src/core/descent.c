@@ -10,7 +10,7 @@
 #define EPS_REL 1e-11
 
 typedef struct {
-  double k;                        /* 0.5 rho sum(C_D A) / m, 1/m */
+  double k; /* 0.5 rho sum(C_D A) / m, 1/m */
   double g, wind;
 } descentSys;
 
@@ -49,16 +49,26 @@ static int rhs(double t, const double y[], double f[], void* params) {
 /* check that every parameter is finite and in its physical range */
 static int check(const urDescentParams* p, char* err, int errlen) {
   const char* bad = NULL;
-  if (!(isfinite(p->altitude) && p->altitude > 0)) bad = "altitude must be > 0";
-  else if (!(isfinite(p->mass) && p->mass > 0)) bad = "mass must be > 0";
-  else if (!(isfinite(p->area_drone) && p->area_drone >= 0)) bad = "drone area must be >= 0";
-  else if (!(isfinite(p->cd_drone) && p->cd_drone >= 0)) bad = "drone C_D must be >= 0";
-  else if (!(isfinite(p->area_chute) && p->area_chute >= 0)) bad = "parachute area must be >= 0";
-  else if (!(isfinite(p->cd_chute) && p->cd_chute >= 0)) bad = "parachute C_D must be >= 0";
-  else if (!(isfinite(p->rho) && p->rho > 0)) bad = "air density must be > 0";
-  else if (!(isfinite(p->g) && p->g > 0)) bad = "g must be > 0";
-  else if (!(isfinite(p->wind) && p->wind >= 0)) bad = "wind must be >= 0";
-  else if (!(drag_area(p) > 0)) bad = "total drag area C_D*A must be > 0";
+  if (!(isfinite(p->altitude) && p->altitude > 0))
+    bad = "altitude must be > 0";
+  else if (!(isfinite(p->mass) && p->mass > 0))
+    bad = "mass must be > 0";
+  else if (!(isfinite(p->area_drone) && p->area_drone >= 0))
+    bad = "drone area must be >= 0";
+  else if (!(isfinite(p->cd_drone) && p->cd_drone >= 0))
+    bad = "drone C_D must be >= 0";
+  else if (!(isfinite(p->area_chute) && p->area_chute >= 0))
+    bad = "parachute area must be >= 0";
+  else if (!(isfinite(p->cd_chute) && p->cd_chute >= 0))
+    bad = "parachute C_D must be >= 0";
+  else if (!(isfinite(p->rho) && p->rho > 0))
+    bad = "air density must be > 0";
+  else if (!(isfinite(p->g) && p->g > 0))
+    bad = "g must be > 0";
+  else if (!(isfinite(p->wind) && p->wind >= 0))
+    bad = "wind must be >= 0";
+  else if (!(drag_area(p) > 0))
+    bad = "total drag area C_D*A must be > 0";
   if (bad && err) snprintf(err, errlen, "descent: %s", bad);
   return bad ? -1 : 0;
 }

@@ -24,8 +24,8 @@ static void bag_uniform(const urModel* m, urData* d, int ib) {
   // depths and volume loss
   for (int t = 0; t < bag->ntarget; t++) {
     int g = bag->target[t];
-    const double* cb = d->gxpos + 3*bag->geom;
-    const double* ct = d->gxpos + 3*g;
+    const double* cb = d->gxpos + 3 * bag->geom;
+    const double* ct = d->gxpos + 3 * g;
     double dx[3] = {ct[0] - cb[0], ct[1] - cb[1], ct[2] - cb[2]};
     double gap = uru_norm3(dx) - gb->rbound - m->geom[g].rbound;
     bd->ftgt[t] = 0;
@@ -44,13 +44,13 @@ static void bag_uniform(const urModel* m, urData* d, int ib) {
     bd->depth[t] = gc[t].g;
     if (gc[t].g > 0) {
       double mn[3] = {-gc[t].n[0], -gc[t].n[1], -gc[t].n[2]};
-      dv += bag->kappa*ur_cap_volume(et + t, mn, fmin(gc[t].g, bag->thickness));
+      dv += bag->kappa * ur_cap_volume(et + t, mn, fmin(gc[t].g, bag->thickness));
     }
   }
 
   // gas state (the volume may not vanish)
-  if (dv > 0.999*bag->gas.v0) {
-    dv = 0.999*bag->gas.v0;
+  if (dv > 0.999 * bag->gas.v0) {
+    dv = 0.999 * bag->gas.v0;
   }
   bd->dv = dv;
   bd->volume = bag->gas.v0 - dv;
@@ -66,16 +66,16 @@ static void bag_uniform(const urModel* m, urData* d, int ib) {
     double dep = fmin(gc[t].g, bag->thickness), v[3];
     ur_relvel(m, d, gb->body, m->geom[g].body, gc[t].p, v);
     bd->rate[t] = uru_dot3(v, gc[t].n);
-    double f = (bd->pressure - bag->gas.patm)*ur_section_area(et + t, mn, dep)
-               + bag->fabric_k*dep + bag->fabric_c*bd->rate[t];
+    double f = (bd->pressure - bag->gas.patm) * ur_section_area(et + t, mn, dep) +
+               bag->fabric_k * dep + bag->fabric_c * bd->rate[t];
     if (!(f > 0)) {
       continue;
     }
     bd->ftgt[t] = f;
     bd->force += f;
     bd->active = 1;
-    ur_contact_apply(m, d, gb->body, m->geom[g].body, gc[t].n, gc[t].p, v, f, bd->rate[t],
-                     NULL, bag->mu, bag->v_eps);
+    ur_contact_apply(m, d, gb->body, m->geom[g].body, gc[t].n, gc[t].p, v, f, bd->rate[t], NULL,
+                     bag->mu, bag->v_eps);
   }
 }
 
@@ -85,9 +85,7 @@ void ur_airbags(const urModel* m, urData* d) {
   for (int i = 0; i < m->nbag; i++) {
     switch (m->bag[i].type) {
     case urBAG_UNIFORM:
-    default:
-      bag_uniform(m, d, i);
-      break;
+    default: bag_uniform(m, d, i); break;
     }
   }
 }

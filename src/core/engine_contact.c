@@ -39,9 +39,9 @@ int ur_cand_at(const urModel* m, int k, urCand* c) {
 
 // ellipsoid g in world coordinates
 void ur_geom_ellipsoid(const urModel* m, urData* d, int g, urEllipsoid* e) {
-  memcpy(e->c, d->gxpos + 3*g, 3*sizeof(double));
-  memcpy(e->R, ur_geom_xmat(m, d, g), 9*sizeof(double));
-  memcpy(e->r, m->geom[g].size, 3*sizeof(double));
+  memcpy(e->c, d->gxpos + 3 * g, 3 * sizeof(double));
+  memcpy(e->R, ur_geom_xmat(m, d, g), 9 * sizeof(double));
+  memcpy(e->r, m->geom[g].size, 3 * sizeof(double));
   e->p = m->geom[g].degree;
 }
 
@@ -67,19 +67,18 @@ double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]) 
 // f(u) = (cA - cB).u + hA(u) + hB(u) >= min f = depth, at the centre line and at the warm
 // start u (if set); a negative bound proves separation without the narrow phase
 double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]) {
-  const double* ca = d->gxpos + 3*ga;
-  const double* cb = d->gxpos + 3*gb;
+  const double* ca = d->gxpos + 3 * ga;
+  const double* cb = d->gxpos + 3 * gb;
   double dc[3] = {ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]}, c[3];
   double L = uru_norm3(dc), f = INFINITY;
   if (L > 0) {
-    c[0] = -dc[0]/L;
-    c[1] = -dc[1]/L;
-    c[2] = -dc[2]/L;
+    c[0] = -dc[0] / L;
+    c[1] = -dc[1] / L;
+    c[2] = -dc[2] / L;
     f = -L + ur_geom_halfwidth(m, d, ga, c) + ur_geom_halfwidth(m, d, gb, c);
   }
   if (u[0] != 0 || u[1] != 0 || u[2] != 0) {
-    f = fmin(f, uru_dot3(dc, u) + ur_geom_halfwidth(m, d, ga, u)
-                    + ur_geom_halfwidth(m, d, gb, u));
+    f = fmin(f, uru_dot3(dc, u) + ur_geom_halfwidth(m, d, ga, u) + ur_geom_halfwidth(m, d, gb, u));
   }
   return f;
 }
@@ -90,16 +89,16 @@ void ur_relvel(const urModel* m, const urData* d, int a, int b, const double p[3
   double pl[3], r[3], va[3] = {0, 0, 0}, vb[3] = {0, 0, 0};
   if (a >= 0) {
     for (int k = 0; k < 3; k++) {
-      r[k] = p[k] - d->xpos[3*a + k];
+      r[k] = p[k] - d->xpos[3 * a + k];
     }
-    uru_mulmat3tvec(pl, d->xmat + 9*a, r);
+    uru_mulmat3tvec(pl, d->xmat + 9 * a, r);
     ur_point_vel(m, d, a, pl, va);
   }
   if (b >= 0) {
     for (int k = 0; k < 3; k++) {
-      r[k] = p[k] - d->xpos[3*b + k];
+      r[k] = p[k] - d->xpos[3 * b + k];
     }
-    uru_mulmat3tvec(pl, d->xmat + 9*b, r);
+    uru_mulmat3tvec(pl, d->xmat + 9 * b, r);
     ur_point_vel(m, d, b, pl, vb);
   }
   for (int k = 0; k < 3; k++) {
@@ -117,12 +116,12 @@ static double mobility(const urModel* m, const urData* d, int body, const double
   const urBody* b = m->body + body;
   double r[3], c[3], cb[3], ic[3];
   for (int k = 0; k < 3; k++) {
-    r[k] = p[k] - d->xcom[3*body + k];
+    r[k] = p[k] - d->xcom[3 * body + k];
   }
   uru_cross3(c, r, t);
-  uru_mulmat3tvec(cb, d->xmat + 9*body, c);
+  uru_mulmat3tvec(cb, d->xmat + 9 * body, c);
   uru_mulmat3vec(ic, b->iinv, cb);
-  return 1/b->mass + uru_dot3(cb, ic);
+  return 1 / b->mass + uru_dot3(cb, ic);
 }
 
 
@@ -142,19 +141,19 @@ double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double 
 
   // tangential relative velocity and regularised Coulomb friction on A
   for (int k = 0; k < 3; k++) {
-    vt[k] = v[k] - rate*n[k];
+    vt[k] = v[k] - rate * n[k];
   }
   double s = uru_norm3(vt);
   if (mu > 0 && s > 0) {
-    double t[3] = {vt[0]/s, vt[1]/s, vt[2]/s};
+    double t[3] = {vt[0] / s, vt[1] / s, vt[2] / s};
     double w = mobility(m, d, a, p, t) + mobility(m, d, b, p, t);
-    double vs = fmax(fmax(s, v_eps), mu*fn*m->opt.dt*w);
+    double vs = fmax(fmax(s, v_eps), mu * fn * m->opt.dt * w);
     for (int k = 0; k < 3; k++) {
-      fr[k] = -mu*fn*vt[k]/vs;
+      fr[k] = -mu * fn * vt[k] / vs;
     }
   }
   for (int k = 0; k < 3; k++) {
-    f[k] = -fn*n[k] + fr[k];
+    f[k] = -fn * n[k] + fr[k];
   }
   double ft = uru_norm3(fr);
 
@@ -178,13 +177,13 @@ double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double 
 void ur_contacts_broad(const urModel* m, urData* d) {
   for (int i = 0; i < m->npair; i++) {
     const urPair* pr = m->pair + i;
-    const double* ca = d->gxpos + 3*pr->geom1;
+    const double* ca = d->gxpos + 3 * pr->geom1;
     double ra = m->geom[pr->geom1].rbound;
     double gap;
     if (pr->geom2 < 0) {
       gap = ca[2] - ra;
     } else {
-      const double* cb = d->gxpos + 3*pr->geom2;
+      const double* cb = d->gxpos + 3 * pr->geom2;
       double dx[3] = {cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
       gap = uru_norm3(dx) - ra - m->geom[pr->geom2].rbound;
     }
@@ -270,7 +269,7 @@ void ur_contacts_narrow(const urModel* m, urData* d) {
     urPairData* pd = d->pair + commit[k];
     pd->active = 0;
     pd->fn = pd->ft = pd->rate = pd->area = 0;
-    if (pd->ls.touching && -d->pdepth[commit[k]] > 0) {   // culled now: listed to unload
+    if (pd->ls.touching && -d->pdepth[commit[k]] > 0) { // culled now: listed to unload
       touch[nt++] = commit[k];
     }
   }
@@ -289,7 +288,7 @@ void ur_contacts_narrow(const urModel* m, urData* d) {
     }
   }
   for (int k = 0; k < nt; k++) {
-    commit[d->npcommit++] = touch[k];   // (decided before narrow1 also made depths < 0)
+    commit[d->npcommit++] = touch[k]; // (decided before narrow1 also made depths < 0)
   }
 }
 

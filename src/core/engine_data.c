@@ -11,8 +11,8 @@
 static size_t ndoubles(const urModel* m) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, nq = (size_t)m->nq, nv = (size_t)m->nv;
   size_t ns = (size_t)m->nsensordata;
-  return nq + 5*nv + nb*(12 + 3 + 9 + 3 + 9 + 3 + 36 + 6*3 + 36 + 6 + 36 + 36 + 6 + 6 + 6)
-         + ng*12 + 4*ns + 2*nq + 8*nv + (size_t)m->npair;
+  return nq + 5 * nv + nb * (12 + 3 + 9 + 3 + 9 + 3 + 36 + 6 * 3 + 36 + 6 + 36 + 36 + 6 + 6 + 6) +
+         ng * 12 + 4 * ns + 2 * nq + 8 * nv + (size_t)m->npair;
 }
 
 
@@ -20,52 +20,54 @@ static size_t ndoubles(const urModel* m) {
 static void carve(const urModel* m, urData* d) {
   double* p = d->buffer;
   int nb = m->nbody, ng = m->ngeom, nq = m->nq, nv = m->nv, ns = m->nsensordata;
-#define TAKE(field, n) d->field = p; p += (n);
+#define TAKE(field, n)                                                                             \
+  d->field = p;                                                                                    \
+  p += (n);
   TAKE(qpos, nq)
   TAKE(qvel, nv)
   TAKE(qacc, nv)
   TAKE(qfrc, nv)
-  TAKE(rst, 2*nv)
-  TAKE(rkin, 12*nb)
-  TAKE(xpos, 3*nb)
-  TAKE(xmat, 9*nb)
-  TAKE(xcom, 3*nb)
-  TAKE(gxpos, 3*ng)
-  TAKE(gxmat, 9*ng)
-  TAKE(Xe, 9*nb)
-  TAKE(Xr, 3*nb)
-  TAKE(S, 36*nb)
-  TAKE(cvel, 6*nb)
-  TAKE(cbias, 6*nb)
-  TAKE(cacc, 6*nb)
-  TAKE(IA, 36*nb)
-  TAKE(pA, 6*nb)
-  TAKE(U, 36*nb)
-  TAKE(Dinv, 36*nb)
-  TAKE(uu, 6*nb)
-  TAKE(fext, 6*nb)
-  TAKE(freact, 6*nb)
+  TAKE(rst, 2 * nv)
+  TAKE(rkin, 12 * nb)
+  TAKE(xpos, 3 * nb)
+  TAKE(xmat, 9 * nb)
+  TAKE(xcom, 3 * nb)
+  TAKE(gxpos, 3 * ng)
+  TAKE(gxmat, 9 * ng)
+  TAKE(Xe, 9 * nb)
+  TAKE(Xr, 3 * nb)
+  TAKE(S, 36 * nb)
+  TAKE(cvel, 6 * nb)
+  TAKE(cbias, 6 * nb)
+  TAKE(cacc, 6 * nb)
+  TAKE(IA, 36 * nb)
+  TAKE(pA, 6 * nb)
+  TAKE(U, 36 * nb)
+  TAKE(Dinv, 36 * nb)
+  TAKE(uu, 6 * nb)
+  TAKE(fext, 6 * nb)
+  TAKE(freact, 6 * nb)
   TAKE(sensordata, ns)
   TAKE(peakmax, ns)
   TAKE(peakmin, ns)
   TAKE(tpeak, ns)
-  TAKE(scratch, 2*nq + 8*nv)
+  TAKE(scratch, 2 * nq + 8 * nv)
   TAKE(pdepth, m->npair)
 #undef TAKE
   // pairs on cache lines (the buffer is aligned, so the offset is the same in every copy)
   uintptr_t a = (uintptr_t)p, al = _Alignof(urPairData);
-  d->pair = (urPairData*)((a + al - 1)/al*al);
+  d->pair = (urPairData*)((a + al - 1) / al * al);
   d->bag = (urBagData*)(d->pair + m->npair);
   d->plist = (int*)(d->bag + m->nbag);
-  d->gmat_ok = (unsigned char*)(d->plist + 2*m->npair);
+  d->gmat_ok = (unsigned char*)(d->plist + 2 * m->npair);
 }
 
 
 static size_t buffersize(const urModel* m) {
-  size_t n = ndoubles(m)*sizeof(double) + _Alignof(urPairData)
-             + (size_t)m->npair*sizeof(urPairData) + (size_t)m->nbag*sizeof(urBagData)
-             + 2*(size_t)m->npair*sizeof(int) + (size_t)m->ngeom + sizeof(double);
-  return (n + _Alignof(urPairData) - 1)/_Alignof(urPairData)*_Alignof(urPairData);
+  size_t n = ndoubles(m) * sizeof(double) + _Alignof(urPairData) +
+             (size_t)m->npair * sizeof(urPairData) + (size_t)m->nbag * sizeof(urBagData) +
+             2 * (size_t)m->npair * sizeof(int) + (size_t)m->ngeom + sizeof(double);
+  return (n + _Alignof(urPairData) - 1) / _Alignof(urPairData) * _Alignof(urPairData);
 }
 
 //---------------------------------- public --------------------------------------------------------
@@ -107,7 +109,7 @@ void ur_data_reset(const urModel* m, urData* d) {
   // clear the buffer, set the reference configuration
   memset(d->buffer, 0, buffersize(m));
   if (m->nq) {
-    memcpy(d->qpos, m->qpos0, (size_t)m->nq*sizeof(double));
+    memcpy(d->qpos, m->qpos0, (size_t)m->nq * sizeof(double));
   }
 
   // outputs and run control
@@ -168,7 +170,7 @@ int ur_data_history(const urModel* m, urData* d, double* buf, int rows) {
   if (buf) {
     d->hist = buf;
   } else {
-    d->hist = malloc((size_t)rows*(size_t)(1 + m->nsensordata)*sizeof(double));
+    d->hist = malloc((size_t)rows * (size_t)(1 + m->nsensordata) * sizeof(double));
     if (!d->hist) {
       return -1;
     }

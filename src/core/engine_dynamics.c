@@ -8,16 +8,16 @@
 //---------------------------------- articulated-body algorithm ------------------------------------
 
 // ur_aba for doubles, from its template
-#define urT double
-#define urBC(x) (x)
-#define urK(name) uru_##name
-#define urFN(name) ur_##name
-#define urD urData
+#define urT                double
+#define urBC(x)            (x)
+#define urK(name)          uru_##name
+#define urFN(name)         ur_##name
+#define urD                urData
 #define urSETENERGY(d, ke) ((d)->energy = (ke))
-#define urINVSYM(d, Dinv, D, nv)                                           \
-  if (uru_invsym(Dinv, D, nv)) {                                           \
-    ur_set_status(d, urSTAT_NONFINITE, "singular joint-space inertia");    \
-    memset(Dinv, 0, 36*sizeof(double));                                    \
+#define urINVSYM(d, Dinv, D, nv)                                                                   \
+  if (uru_invsym(Dinv, D, nv)) {                                                                   \
+    ur_set_status(d, urSTAT_NONFINITE, "singular joint-space inertia");                            \
+    memset(Dinv, 0, 36 * sizeof(double));                                                          \
   }
 #include "engine_aba.h"
 #undef urT
@@ -40,8 +40,8 @@ void ur_reactions(const urModel* m, urData* d) {
   for (int j = 0; j < m->nreactb; j++) {
     int i = m->reactb[j];
     double Ia[6];
-    double* f = d->freact + 6*i;
-    uru_mul6(Ia, m->body[i].sinert, d->cacc + 6*i);
+    double* f = d->freact + 6 * i;
+    uru_mul6(Ia, m->body[i].sinert, d->cacc + 6 * i);
     for (int k = 0; k < 6; k++) {
       f[k] += Ia[k];
     }
@@ -53,9 +53,9 @@ void ur_reactions(const urModel* m, urData* d) {
     int p = m->body[i].parent;
     if (p >= 0 && m->body[p].react) {
       double t[6];
-      uru_xforce_t(t, d->Xe + 9*i, d->Xr + 3*i, d->freact + 6*i);
+      uru_xforce_t(t, d->Xe + 9 * i, d->Xr + 3 * i, d->freact + 6 * i);
       for (int k = 0; k < 6; k++) {
-        d->freact[6*p + k] += t[k];
+        d->freact[6 * p + k] += t[k];
       }
     }
   }
@@ -65,8 +65,8 @@ void ur_reactions(const urModel* m, urData* d) {
 
 // add a world force f acting at the world point p on body
 void ur_apply_force(const urModel* m, urData* d, int body, const double f[3], const double p[3]) {
-  const double* R = d->xmat + 9*body;
-  const double* x = d->xpos + 3*body;
+  const double* R = d->xmat + 9 * body;
+  const double* x = d->xpos + 3 * body;
   double fb[3], r[3], rb[3], n[3];
   uru_mulmat3tvec(fb, R, f);
   for (int k = 0; k < 3; k++) {
@@ -75,8 +75,8 @@ void ur_apply_force(const urModel* m, urData* d, int body, const double f[3], co
   uru_mulmat3tvec(rb, R, r);
   uru_cross3(n, rb, fb);
   for (int k = 0; k < 3; k++) {
-    d->fext[6*body + k] += n[k];
-    d->fext[6*body + 3 + k] += fb[k];
+    d->fext[6 * body + k] += n[k];
+    d->fext[6 * body + 3 + k] += fb[k];
   }
 }
 
@@ -86,10 +86,10 @@ double ur_energy_kinetic(const urModel* m, const urData* d) {
   double e = 0;
   for (int i = 0; i < m->nbody; i++) {
     double Iv[6];
-    const double* v = d->cvel + 6*i;
+    const double* v = d->cvel + 6 * i;
     uru_mul6(Iv, m->body[i].sinert, v);
     for (int k = 0; k < 6; k++) {
-      e += 0.5*v[k]*Iv[k];
+      e += 0.5 * v[k] * Iv[k];
     }
   }
   return e;
@@ -100,9 +100,9 @@ double ur_energy_potential(const urModel* m, const urData* d) {
   double e = 0;
   for (int i = 0; i < m->nbody; i++) {
     const urBody* b = m->body + i;
-    e -= b->gravity*b->mass*uru_dot3(m->opt.gravity, d->xcom + 3*i);
-    if (b->jtype == urJNT_REVOLUTE || b->jtype == urJNT_UNIVERSAL ||
-        b->jtype == urJNT_PRISMATIC || b->jtype == urJNT_SPHERICAL) {
+    e -= b->gravity * b->mass * uru_dot3(m->opt.gravity, d->xcom + 3 * i);
+    if (b->jtype == urJNT_REVOLUTE || b->jtype == urJNT_UNIVERSAL || b->jtype == urJNT_PRISMATIC ||
+        b->jtype == urJNT_SPHERICAL) {
       // linear springs on the joint coordinates (rotation vector for spherical joints)
       double x[3];
       if (b->jtype == urJNT_SPHERICAL) {
@@ -116,9 +116,9 @@ double ur_energy_potential(const urModel* m, const urData* d) {
         const urRestraint* r = b->rst + k;
         double xk = x[k] - r->x0;
         if (r->active && r->sat > 0 && r->k > 0) {
-          e += r->sat*r->sat/r->k*log(cosh(r->k*xk/r->sat));
+          e += r->sat * r->sat / r->k * log(cosh(r->k * xk / r->sat));
         } else if (r->active) {
-          e += 0.5*r->k*xk*xk;
+          e += 0.5 * r->k * xk * xk;
         }
       }
     }
@@ -128,18 +128,18 @@ double ur_energy_potential(const urModel* m, const urData* d) {
 
 
 void ur_momentum(const urModel* m, const urData* d, double p[3], double L[3]) {
-  memset(p, 0, 3*sizeof(double));
-  memset(L, 0, 3*sizeof(double));
+  memset(p, 0, 3 * sizeof(double));
+  memset(L, 0, 3 * sizeof(double));
   for (int i = 0; i < m->nbody; i++) {
     const urBody* b = m->body + i;
-    const double* R = d->xmat + 9*i;
-    const double* v = d->cvel + 6*i;
+    const double* R = d->xmat + 9 * i;
+    const double* v = d->cvel + 6 * i;
     double vc[3], vw[3], w[3], Iw[3], t[3], h[3];
 
     // CoM velocity and angular velocity, world
     uru_cross3(vc, v, b->com);
     for (int k = 0; k < 3; k++) {
-      vc[k] += v[3+k];
+      vc[k] += v[3 + k];
     }
     uru_mulmat3vec(vw, R, vc);
     uru_mulmat3vec(Iw, b->inertia, v);
@@ -147,10 +147,10 @@ void ur_momentum(const urModel* m, const urData* d, double p[3], double L[3]) {
 
     // sum
     for (int k = 0; k < 3; k++) {
-      h[k] = b->mass*vw[k];
+      h[k] = b->mass * vw[k];
       p[k] += h[k];
     }
-    uru_cross3(t, d->xcom + 3*i, h);
+    uru_cross3(t, d->xcom + 3 * i, h);
     for (int k = 0; k < 3; k++) {
       L[k] += t[k] + w[k];
     }

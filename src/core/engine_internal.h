@@ -80,15 +80,15 @@ static inline int ur_geom_intree(const urModel* m, int g, int root) {
 // src names its force's slot: k for a pair, npair + airbag * urMAXBAGTGT + target for an airbag
 // target (the encoding of urImpactSetup.cand_src; slots below ur_cand_slots).
 typedef struct {
-  int g1, g2;                      // ellipsoids (g2 -1: the ground; for a target: bag, target)
-  int bag;                         // the airbag, -1 for a contact pair
-  int idx;                         // the pair's index, or the target's index in its airbag
-  int src;                         // the slot
+  int g1, g2; // ellipsoids (g2 -1: the ground; for a target: bag, target)
+  int bag;    // the airbag, -1 for a contact pair
+  int idx;    // the pair's index, or the target's index in its airbag
+  int src;    // the slot
 } urCand;
 int ur_cand_count(const urModel* m);
-int ur_cand_at(const urModel* m, int k, urCand* c);   // 0, or -1 when k is out of range
+int ur_cand_at(const urModel* m, int k, urCand* c); // 0, or -1 when k is out of range
 static inline int ur_cand_bag_slot(const urModel* m, int bag, int target) {
-  return m->npair + bag*urMAXBAGTGT + target;
+  return m->npair + bag * urMAXBAGTGT + target;
 }
 static inline int ur_cand_slots(const urModel* m) {
   return ur_cand_bag_slot(m, m->nbag, 0);
@@ -104,20 +104,20 @@ static inline int ur_cand_slots(const urModel* m) {
 // most ellipsoids are culled by their bounding spheres in most steps.
 
 #define urNLANE 4
-typedef double urV4 __attribute__((vector_size(4*sizeof(double))));
-typedef long long urV4I __attribute__((vector_size(4*sizeof(long long))));
+typedef double urV4 __attribute__((vector_size(4 * sizeof(double))));
+typedef long long urV4I __attribute__((vector_size(4 * sizeof(long long))));
 
 typedef struct {
   urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
   urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxpos;
-  urV4* gxmat;                     // unused (NULL): each lane computes the orientations it needs
-  urV4* gap;                       // npair: bounding-sphere gaps, then depths (broad phase)
-  urV4* rkin;                      // nbody x 12: as urData.rkin
-  urV4* energy;                    // kinetic energy of each lane ([0])
-  int fail;                        // lanes whose joint-space inertia was singular (bits)
-  double* spare;                   // max(nq, nv): where a lane that does not step scatters
-  int* outb;                       // the bodies whose Xe, Xr, cacc, freact a run reads (joint
-  int nout;                        // loads: urBody.react; acceleration sensors)
+  urV4* gxmat;   // unused (NULL): each lane computes the orientations it needs
+  urV4* gap;     // npair: bounding-sphere gaps, then depths (broad phase)
+  urV4* rkin;    // nbody x 12: as urData.rkin
+  urV4* energy;  // kinetic energy of each lane ([0])
+  int fail;      // lanes whose joint-space inertia was singular (bits)
+  double* spare; // max(nq, nv): where a lane that does not step scatters
+  int* outb;     // the bodies whose Xe, Xr, cacc, freact a run reads (joint
+  int nout;      // loads: urBody.react; acceleration sensors)
   void* mem;
 } urLanes;
 

@@ -13,67 +13,68 @@ urSTORAGE int urK(invsym)(urT* Ainv, const urT* A, int n) {
     if (!urALL(A[0] != 0)) {
       return -1;
     }
-    Ainv[0] = 1/A[0];
+    Ainv[0] = 1 / A[0];
     return 0;
   }
   if (n == 2) {
-    urT det = A[0]*A[3] - A[1]*A[2];
+    urT det = A[0] * A[3] - A[1] * A[2];
     if (!urALL(det != 0)) {
       return -1;
     }
-    Ainv[0] = A[3]/det;
-    Ainv[1] = -A[1]/det;
-    Ainv[2] = -A[2]/det;
-    Ainv[3] = A[0]/det;
+    Ainv[0] = A[3] / det;
+    Ainv[1] = -A[1] / det;
+    Ainv[2] = -A[2] / det;
+    Ainv[3] = A[0] / det;
     return 0;
   }
   if (n == 3) {
-    urT c0 = A[4]*A[8] - A[5]*A[7], c1 = A[5]*A[6] - A[3]*A[8], c2 = A[3]*A[7] - A[4]*A[6];
-    urT det = A[0]*c0 + A[1]*c1 + A[2]*c2;
+    urT c0 = A[4] * A[8] - A[5] * A[7], c1 = A[5] * A[6] - A[3] * A[8],
+        c2 = A[3] * A[7] - A[4] * A[6];
+    urT det = A[0] * c0 + A[1] * c1 + A[2] * c2;
     if (!urALL(det != 0)) {
       return -1;
     }
-    urT id = 1/det;
-    Ainv[0] = c0*id;
-    Ainv[1] = (A[2]*A[7] - A[1]*A[8])*id;
-    Ainv[2] = (A[1]*A[5] - A[2]*A[4])*id;
-    Ainv[3] = c1*id;
-    Ainv[4] = (A[0]*A[8] - A[2]*A[6])*id;
-    Ainv[5] = (A[2]*A[3] - A[0]*A[5])*id;
-    Ainv[6] = c2*id;
-    Ainv[7] = (A[1]*A[6] - A[0]*A[7])*id;
-    Ainv[8] = (A[0]*A[4] - A[1]*A[3])*id;
+    urT id = 1 / det;
+    Ainv[0] = c0 * id;
+    Ainv[1] = (A[2] * A[7] - A[1] * A[8]) * id;
+    Ainv[2] = (A[1] * A[5] - A[2] * A[4]) * id;
+    Ainv[3] = c1 * id;
+    Ainv[4] = (A[0] * A[8] - A[2] * A[6]) * id;
+    Ainv[5] = (A[2] * A[3] - A[0] * A[5]) * id;
+    Ainv[6] = c2 * id;
+    Ainv[7] = (A[1] * A[6] - A[0] * A[7]) * id;
+    Ainv[8] = (A[0] * A[4] - A[1] * A[3]) * id;
     return 0;
   }
   // Cholesky A = L L^T, then A^-1 = L^-T L^-1 (A symmetric positive definite)
   urT L[36] = {0}, Li[36] = {0};
   for (int j = 0; j < n; j++) {
-    urT s = A[n*j + j];
+    urT s = A[n * j + j];
     for (int k = 0; k < j; k++) {
-      s -= L[6*j + k]*L[6*j + k];
+      s -= L[6 * j + k] * L[6 * j + k];
     }
     if (!urALL(s > 0)) {
       return -1;
     }
-    L[6*j + j] = urSQRT(s);
+    L[6 * j + j] = urSQRT(s);
     for (int i = j + 1; i < n; i++) {
-      urT t = A[n*i + j];
+      urT t = A[n * i + j];
       for (int k = 0; k < j; k++) {
-        t -= L[6*i + k]*L[6*j + k];
+        t -= L[6 * i + k] * L[6 * j + k];
       }
-      L[6*i + j] = t/L[6*j + j];
+      L[6 * i + j] = t / L[6 * j + j];
     }
   }
 
   // invert the triangle
   for (int j = 0; j < n; j++) {
-    Li[6*j + j] = 1/L[6*j + j];
+    Li[6 * j + j] = 1 / L[6 * j + j];
     for (int i = j + 1; i < n; i++) {
       urT t = urBC(0);
       for (int k = j; k < i; k++) {
-        t -= L[6*i + k]*Li[6*k + j];
+        t -= L[6 * i + k] * Li[6 * k + j];
       }
-      Li[6*i + j] = t/L[6*i + i];
+      Li[6 * i + j] = t / L[6 * i + i];
     }
   }
 
@@ -82,10 +83,10 @@ urSTORAGE int urK(invsym)(urT* Ainv, const urT* A, int n) {
     for (int j = i; j < n; j++) {
       urT t = urBC(0);
       for (int k = j; k < n; k++) {
-        t += Li[6*k + i]*Li[6*k + j];
+        t += Li[6 * k + i] * Li[6 * k + j];
       }
-      Ainv[n*i + j] = t;
-      Ainv[n*j + i] = t;
+      Ainv[n * i + j] = t;
+      Ainv[n * j + i] = t;
     }
   }
   return 0;

@@ -9,18 +9,18 @@
 // rotation matrix about a unit axis (the model's joint axes are unit): from its quaternion
 static void axisrot(double R[9], const double a[3], double ang) {
   double s, c;
-  uru_sincos(0.5*ang, &s, &c);
-  double q[4] = {c, s*a[0], s*a[1], s*a[2]};
+  uru_sincos(0.5 * ang, &s, &c);
+  double q[4] = {c, s * a[0], s * a[1], s * a[2]};
   uru_quat2mat(R, q);
 }
 
 
 // jcalc, body and ellipsoid poses, velocities for doubles, from their template
-#define urT double
-#define urBC(x) (x)
-#define urK(name) uru_##name
-#define urFN(name) ur_##name
-#define urD urData
+#define urT                       double
+#define urBC(x)                   (x)
+#define urK(name)                 uru_##name
+#define urFN(name)                ur_##name
+#define urD                       urData
 #define urAXISROT(R, axis, angle) axisrot(R, axis, angle)
 #include "engine_kin.h"
 #undef urT
@@ -57,46 +57,46 @@ const double* ur_geom_xmat(const urModel* m, urData* d, int g) {
     ur_geom_mat(m, d, g);
     d->gmat_ok[g] = 1;
   }
-  return d->gxmat + 9*g;
+  return d->gxmat + 9 * g;
 }
 
 //---------------------------------- points --------------------------------------------------------
 
 void ur_point_pos(const urModel* m, const urData* d, int body, const double p[3], double out[3]) {
   double t[3];
-  uru_mulmat3vec(t, d->xmat + 9*body, p);
+  uru_mulmat3vec(t, d->xmat + 9 * body, p);
   for (int k = 0; k < 3; k++) {
-    out[k] = d->xpos[3*body + k] + t[k];
+    out[k] = d->xpos[3 * body + k] + t[k];
   }
 }
 
 
 void ur_point_vel(const urModel* m, const urData* d, int body, const double p[3], double out[3]) {
-  const double* v = d->cvel + 6*body;
+  const double* v = d->cvel + 6 * body;
   double t[3];
   uru_cross3(t, v, p);
   for (int k = 0; k < 3; k++) {
-    t[k] += v[3+k];
+    t[k] += v[3 + k];
   }
-  uru_mulmat3vec(out, d->xmat + 9*body, t);
+  uru_mulmat3vec(out, d->xmat + 9 * body, t);
 }
 
 
 // kinematic acceleration of a body point, world (cacc holds the -gravity base acceleration)
 void ur_point_acc(const urModel* m, const urData* d, int body, const double p[3], double out[3]) {
-  const double* v = d->cvel + 6*body;
-  const double* a = d->cacc + 6*body;
+  const double* v = d->cvel + 6 * body;
+  const double* a = d->cacc + 6 * body;
   double t[3], u[3], w[3];
   uru_cross3(t, a, p);
   uru_cross3(u, v, p);
   for (int k = 0; k < 3; k++) {
-    u[k] += v[3+k];
+    u[k] += v[3 + k];
   }
   uru_cross3(w, v, u);
   for (int k = 0; k < 3; k++) {
-    t[k] += a[3+k] + w[k];
+    t[k] += a[3 + k] + w[k];
   }
-  uru_mulmat3vec(out, d->xmat + 9*body, t);
+  uru_mulmat3vec(out, d->xmat + 9 * body, t);
   for (int k = 0; k < 3; k++) {
     out[k] += m->opt.gravity[k];
   }

@@ -35,7 +35,7 @@
 // check-san builds it to test that path)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(urNO_CLONES)
 #define urCLONES __attribute__((target_clones("avx2", "default")))
-#define urAVX2 1
+#define urAVX2   1
 #else
 #define urCLONES
 #define urAVX2 0
@@ -54,11 +54,11 @@ static inline __attribute__((always_inline)) urV4 bc4(double x) {
 // the lane instances of the templates (src/README, "Templates"): the parameters every instance
 // here shares are defined once, those of one template around its include; all are undefined at
 // the end of the block (engine_template_check.h)
-#define urT urV4
-#define urK(name) urv_##name
+#define urT        urV4
+#define urK(name)  urv_##name
 #define urFN(name) urv_##name
-#define urD urLanes
-#define urBC(x) bc4(x)
+#define urD        urLanes
+#define urBC(x)    bc4(x)
 #include "engine_spatial.h"
 #define urSTORAGE static inline __attribute__((always_inline))
 #include "engine_spatial_inertia.h"
@@ -71,8 +71,13 @@ static inline __attribute__((always_inline)) int all4(urV4I c) {
 }
 
 #define urSTORAGE static inline __attribute__((always_inline))
-#define urALL(c) all4(c)
-#define urSQRT(x) ({ urV4 r_ = (x); for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]); r_; })
+#define urALL(c)  all4(c)
+#define urSQRT(x)                                                                                  \
+  ({                                                                                               \
+    urV4 r_ = (x);                                                                                 \
+    for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]);                                    \
+    r_;                                                                                            \
+  })
 #include "engine_invsym.h"
 #undef urSTORAGE
 #undef urALL
@@ -81,43 +86,43 @@ static inline __attribute__((always_inline)) int all4(urV4I c) {
 
 // inverse of a joint-space inertia per lane; if some lane's matrix is singular, every lane goes
 // through uru_invsym on its own (a failed lane gets a zero inverse and its bit in L->fail)
-static inline __attribute__((always_inline))
-void invsym4(urLanes* L, urV4* Ainv, const urV4* A, int n) {
+static inline __attribute__((always_inline)) void invsym4(urLanes* L, urV4* Ainv, const urV4* A,
+                                                          int n) {
   if (urv_invsym(Ainv, A, n) == 0) {
     return;
   }
   for (int l = 0; l < urNLANE; l++) {
     double a[36], ai[36];
-    for (int k = 0; k < n*n; k++) {
+    for (int k = 0; k < n * n; k++) {
       a[k] = A[k][l];
     }
     if (uru_invsym(ai, a, n)) {
       memset(ai, 0, sizeof(ai));
       L->fail |= 1 << l;
     }
-    for (int k = 0; k < n*n; k++) {
+    for (int k = 0; k < n * n; k++) {
       Ainv[k][l] = ai[k];
     }
   }
 }
 
-#define urSETENERGY(d, ke) ((d)->energy[0] = (ke))
+#define urSETENERGY(d, ke)       ((d)->energy[0] = (ke))
 #define urINVSYM(d, Dinv, D, nv) invsym4(d, Dinv, D, nv)
-#define urABA_ATTR urCLONES
+#define urABA_ATTR               urCLONES
 #include "engine_aba.h"
 #undef urSETENERGY
 #undef urINVSYM
 
 // sincos and the first-quadrant atan2 over the vectors (engine_trig.h)
-typedef unsigned long long urV4U __attribute__((vector_size(4*sizeof(long long))));
-#define urM urV4I
-#define urU urV4U
+typedef unsigned long long urV4U __attribute__((vector_size(4 * sizeof(long long))));
+#define urM            urV4I
+#define urU            urV4U
 #define urSEL(m, a, b) ((urV4)(((urV4I)(a) & (m)) | ((urV4I)(b) & ~(m))))
-#define urANY(m) ((m)[0] | (m)[1] | (m)[2] | (m)[3])
-#define urNEL urNLANE
-#define urEL(x, l) ((x)[l])
-#define urASI(x) ((urV4U)(x))
-#define urAST(i) ((urV4)(i))
+#define urANY(m)       ((m)[0] | (m)[1] | (m)[2] | (m)[3])
+#define urNEL          urNLANE
+#define urEL(x, l)     ((x)[l])
+#define urASI(x)       ((urV4U)(x))
+#define urAST(i)       ((urV4)(i))
 #include "engine_trig.h"
 #undef urM
 #undef urU
@@ -143,19 +148,24 @@ void ur_lanes_trig(const double x[urNLANE], double s[urNLANE], double c[urNLANE]
 }
 
 // rotation about a unit axis over the vectors: the scalar axisrot's quaternion and matrix
-static inline __attribute__((always_inline))
-void axisrot4(urV4 R[9], const urV4 a[3], const urV4* ang) {
+static inline __attribute__((always_inline)) void axisrot4(urV4 R[9], const urV4 a[3],
+                                                           const urV4* ang) {
   urV4 s, c;
-  urv_sincos(bc4(0.5)*(*ang), &s, &c);
-  urV4 q[4] = {c, s*a[0], s*a[1], s*a[2]};
+  urv_sincos(bc4(0.5) * (*ang), &s, &c);
+  urV4 q[4] = {c, s * a[0], s * a[1], s * a[2]};
   urv_quat2mat(R, q);
 }
 
 // quatintegrate, quat2rotvec and rotvec_jrinv over the vectors (engine_quat.h)
-#define urM urV4I
-#define urSTORAGE static inline __attribute__((always_inline))
+#define urM            urV4I
+#define urSTORAGE      static inline __attribute__((always_inline))
 #define urSEL(m, a, b) ((urV4)(((urV4I)(a) & (m)) | ((urV4I)(b) & ~(m))))
-#define urSQRT(x) ({ urV4 r_ = (x); for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]); r_; })
+#define urSQRT(x)                                                                                  \
+  ({                                                                                               \
+    urV4 r_ = (x);                                                                                 \
+    for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]);                                    \
+    r_;                                                                                            \
+  })
 #include "engine_quat.h"
 #undef urM
 #undef urSTORAGE
@@ -163,7 +173,7 @@ void axisrot4(urV4 R[9], const urV4 a[3], const urV4* ang) {
 #undef urSQRT
 
 #define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
-#define urKIN_ATTR urCLONES
+#define urKIN_ATTR                urCLONES
 #include "engine_kin.h"
 #undef urAXISROT
 #undef urT
@@ -199,18 +209,17 @@ __attribute__((target("avx2"))) static void sqrt_pairs_avx2(const urModel* m, ur
 // the broad phase of ur_contacts_broad over the vectors: the same expressions (IEEE square
 // roots are exact, so one instruction for four lanes gives each lane's bits); L->gap ends as
 // the pairs' depths (minus the gaps)
-urCLONES
-static void broad4(const urModel* m, urLanes* L) {
+urCLONES static void broad4(const urModel* m, urLanes* L) {
   // squared centre distances; ground pairs: the gap
   for (int i = 0; i < m->npair; i++) {
     const urPair* pr = m->pair + i;
-    const urV4* ca = L->gxpos + 3*pr->geom1;
+    const urV4* ca = L->gxpos + 3 * pr->geom1;
     if (pr->geom2 < 0) {
       L->gap[i] = ca[2] - bc4(m->geom[pr->geom1].rbound);
     } else {
-      const urV4* cb = L->gxpos + 3*pr->geom2;
+      const urV4* cb = L->gxpos + 3 * pr->geom2;
       urV4 dx0 = cb[0] - ca[0], dx1 = cb[1] - ca[1], dx2 = cb[2] - ca[2];
-      L->gap[i] = dx0*dx0 + dx1*dx1 + dx2*dx2;
+      L->gap[i] = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
     }
   }
 
@@ -240,18 +249,16 @@ static void broad4(const urModel* m, urLanes* L) {
 }
 
 // ur_restraints_kin over the vectors
-urCLONES
-static void restraints_kin4(const urModel* m, urLanes* L) {
+urCLONES static void restraints_kin4(const urModel* m, urLanes* L) {
   urv_restraints_kin(m, L->qpos, L->rkin);
 }
 
 
 // the update of ur_step_euler over the vectors: velocities, then positions with them (addpos)
-urCLONES
-static void euler4(const urModel* m, urLanes* L) {
+urCLONES static void euler4(const urModel* m, urLanes* L) {
   urV4 h = bc4(m->opt.dt);
   for (int k = 0; k < m->nv; k++) {
-    L->qvel[k] += h*L->qacc[k];
+    L->qvel[k] += h * L->qacc[k];
   }
   urv_addpos(m, L->qpos, L->qvel, m->opt.dt);
 }
@@ -263,10 +270,10 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
   size_t nq = (size_t)m->nq;
   size_t ng = (size_t)m->ngeom, np = (size_t)m->npair;
-  size_t n = nb*(36*4 + 6*7 + 9 + 3 + 9 + 3 + 3 + 12) + 2*nv + 1 + nq + nv + 3*ng + np;
-  L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1)*sizeof(urV4));
-  L->spare = malloc((nq > nv ? nq : nv)*sizeof(double) + 1);
-  L->outb = malloc(nb*sizeof(int) + 1);
+  size_t n = nb * (36 * 4 + 6 * 7 + 9 + 3 + 9 + 3 + 3 + 12) + 2 * nv + 1 + nq + nv + 3 * ng + np;
+  L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1) * sizeof(urV4));
+  L->spare = malloc((nq > nv ? nq : nv) * sizeof(double) + 1);
+  L->outb = malloc(nb * sizeof(int) + 1);
   if (!L->mem || !L->spare || !L->outb) {
     ur_lanes_free(L);
     return -1;
@@ -280,15 +287,16 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
       L->outb[L->nout++] = i;
     }
   }
-  memset(L->mem, 0, n*sizeof(urV4));
+  memset(L->mem, 0, n * sizeof(urV4));
   urV4* p = L->mem;
-  urV4** f[] = {&L->S, &L->IA, &L->U, &L->Dinv, &L->pA, &L->uu, &L->cbias, &L->cvel, &L->cacc,
-                &L->fext, &L->freact, &L->Xe, &L->Xr, &L->qfrc, &L->qacc, &L->energy,
-                &L->qpos, &L->qvel, &L->xmat, &L->xpos, &L->xcom, &L->gxpos,
-                &L->gap, &L->rkin};
-  size_t len[] = {36*nb, 36*nb, 36*nb, 36*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 6*nb, 9*nb,
-                  3*nb, nv, nv, 1, nq, nv, 9*nb, 3*nb, 3*nb, 3*ng, np, 12*nb};
-  for (size_t k = 0; k < sizeof(len)/sizeof(len[0]); k++) {
+  urV4** f[] = {&L->S,     &L->IA,   &L->U,    &L->Dinv,   &L->pA,     &L->uu,
+                &L->cbias, &L->cvel, &L->cacc, &L->fext,   &L->freact, &L->Xe,
+                &L->Xr,    &L->qfrc, &L->qacc, &L->energy, &L->qpos,   &L->qvel,
+                &L->xmat,  &L->xpos, &L->xcom, &L->gxpos,  &L->gap,    &L->rkin};
+  size_t len[] = {36 * nb, 36 * nb, 36 * nb, 36 * nb, 6 * nb, 6 * nb, 6 * nb, 6 * nb,
+                  6 * nb,  6 * nb,  6 * nb,  9 * nb,  3 * nb, nv,     nv,     1,
+                  nq,      nv,      9 * nb,  3 * nb,  3 * nb, 3 * ng, np,     12 * nb};
+  for (size_t k = 0; k < sizeof(len) / sizeof(len[0]); k++) {
     *f[k] = p;
     p += len[k];
   }
@@ -310,21 +318,25 @@ void ur_lanes_free(urLanes* L) {
 #else
 #define SHUF(a, b, i, j, k, l) __builtin_shuffle(a, b, (urV4I){i, j, k, l})
 #endif
-#define transpose4(r, a_, b_, c_, e_)                                             \
-  do {                                                                             \
-    urV4 a = (a_), b = (b_), c = (c_), e = (e_);                                   \
-    urV4 t0 = SHUF(a, b, 0, 4, 2, 6), t1 = SHUF(a, b, 1, 5, 3, 7);               \
-    urV4 t2 = SHUF(c, e, 0, 4, 2, 6), t3 = SHUF(c, e, 1, 5, 3, 7);               \
-    (r)[0] = SHUF(t0, t2, 0, 1, 4, 5);                                             \
-    (r)[1] = SHUF(t1, t3, 0, 1, 4, 5);                                             \
-    (r)[2] = SHUF(t0, t2, 2, 3, 6, 7);                                             \
-    (r)[3] = SHUF(t1, t3, 2, 3, 6, 7);                                             \
+#define transpose4(r, a_, b_, c_, e_)                                                              \
+  do {                                                                                             \
+    urV4 a = (a_), b = (b_), c = (c_), e = (e_);                                                   \
+    urV4 t0 = SHUF(a, b, 0, 4, 2, 6), t1 = SHUF(a, b, 1, 5, 3, 7);                                 \
+    urV4 t2 = SHUF(c, e, 0, 4, 2, 6), t3 = SHUF(c, e, 1, 5, 3, 7);                                 \
+    (r)[0] = SHUF(t0, t2, 0, 1, 4, 5);                                                             \
+    (r)[1] = SHUF(t1, t3, 0, 1, 4, 5);                                                             \
+    (r)[2] = SHUF(t0, t2, 2, 3, 6, 7);                                                             \
+    (r)[3] = SHUF(t1, t3, 2, 3, 6, 7);                                                             \
   } while (0)
-#define load4(p) ({ urV4 v_; memcpy(&v_, (p), sizeof(v_)); v_; })
+#define load4(p)                                                                                   \
+  ({                                                                                               \
+    urV4 v_;                                                                                       \
+    memcpy(&v_, (p), sizeof(v_));                                                                  \
+    v_;                                                                                            \
+  })
 
 // x[0..n-1] of each lane (lanes beyond nl repeating lane 0) into the vectors v
-urCLONES
-static void gather(urV4* v, const double* const* x, size_t n) {
+urCLONES static void gather(urV4* v, const double* const* x, size_t n) {
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {
     transpose4(v + k, load4(x[0] + k), load4(x[1] + k), load4(x[2] + k), load4(x[3] + k));
@@ -335,8 +347,7 @@ static void gather(urV4* v, const double* const* x, size_t n) {
 }
 
 // the vectors v back into x[0..n-1] of lanes 0..nl-1
-urCLONES
-static void scatter(double* const* x, int nl, const urV4* v, size_t n) {
+urCLONES static void scatter(double* const* x, int nl, const urV4* v, size_t n) {
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {
     urV4 r[4];
@@ -354,24 +365,24 @@ static void scatter(double* const* x, int nl, const urV4* v, size_t n) {
 
 // one array of the lanes' data to or from the vectors: lane l is d[l], lanes beyond n repeat
 // lane 0 when gathering
-#define GATHER(field, len)                                                         \
-  do {                                                                             \
-    const double* x_[urNLANE];                                                     \
-    for (int l_ = 0; l_ < urNLANE; l_++) x_[l_] = d[l_ < n ? l_ : 0]->field;       \
-    gather(L->field, x_, (size_t)(len));                                           \
+#define GATHER(field, len)                                                                         \
+  do {                                                                                             \
+    const double* x_[urNLANE];                                                                     \
+    for (int l_ = 0; l_ < urNLANE; l_++) x_[l_] = d[l_ < n ? l_ : 0]->field;                       \
+    gather(L->field, x_, (size_t)(len));                                                           \
   } while (0)
-#define SCATTER(field, len)                                                        \
-  do {                                                                             \
-    double* x_[urNLANE];                                                           \
-    for (int l_ = 0; l_ < n; l_++) x_[l_] = d[l_]->field;                          \
-    scatter(x_, n, L->field, (size_t)(len));                                       \
+#define SCATTER(field, len)                                                                        \
+  do {                                                                                             \
+    double* x_[urNLANE];                                                                           \
+    for (int l_ = 0; l_ < n; l_++) x_[l_] = d[l_]->field;                                          \
+    scatter(x_, n, L->field, (size_t)(len));                                                       \
   } while (0)
 // the same into the lanes whose bit is set in ok; the others into L->spare
-#define SCATTER_OK(field, len, ok)                                                 \
-  do {                                                                             \
-    double* x_[urNLANE];                                                           \
-    for (int l_ = 0; l_ < n; l_++) x_[l_] = (ok) & (1 << l_) ? d[l_]->field : L->spare; \
-    scatter(x_, n, L->field, (size_t)(len));                                       \
+#define SCATTER_OK(field, len, ok)                                                                 \
+  do {                                                                                             \
+    double* x_[urNLANE];                                                                           \
+    for (int l_ = 0; l_ < n; l_++) x_[l_] = (ok) & (1 << l_) ? d[l_]->field : L->spare;            \
+    scatter(x_, n, L->field, (size_t)(len));                                                       \
   } while (0)
 
 // the state, for the poses and velocities
@@ -384,18 +395,18 @@ static void gather_state(const urModel* m, urLanes* L, urData* const* d, int n) 
 // the poses, velocities and broad phase back to each lane's data
 static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, int n) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom;
-  SCATTER(xmat, 9*nb);
-  SCATTER(xpos, 3*nb);
-  SCATTER(xcom, 3*nb);
-  SCATTER(cvel, 6*nb);
+  SCATTER(xmat, 9 * nb);
+  SCATTER(xpos, 3 * nb);
+  SCATTER(xcom, 3 * nb);
+  SCATTER(cvel, 6 * nb);
   for (int j = 0; j < L->nout; j++) {
     int i = L->outb[j];
-    SCATTER(Xe + 9*i, 9);
-    SCATTER(Xr + 3*i, 3);
+    SCATTER(Xe + 9 * i, 9);
+    SCATTER(Xr + 3 * i, 3);
   }
-  SCATTER(gxpos, 3*ng);
+  SCATTER(gxpos, 3 * ng);
   for (int l = 0; l < n; l++) {
-    memset(d[l]->gmat_ok, 0, ng);     // orientations on first use (ur_geom_xmat)
+    memset(d[l]->gmat_ok, 0, ng); // orientations on first use (ur_geom_xmat)
   }
   double* dep[urNLANE];
   for (int l = 0; l < n; l++) {
@@ -405,7 +416,7 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
   for (int j = 0; j < m->nrstb; j++) {
     int i = m->rstb[j];
     if (m->body[i].jtype == urJNT_SPHERICAL) {
-      SCATTER(rkin + 12*i, 12);
+      SCATTER(rkin + 12 * i, 12);
     }
   }
 }
@@ -413,7 +424,7 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
 
 // the applied forces, for the ABA
 static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n) {
-  GATHER(fext, 6*(size_t)m->nbody);
+  GATHER(fext, 6 * (size_t)m->nbody);
   GATHER(qfrc, m->nv);
   L->fail = 0;
 }
@@ -424,8 +435,8 @@ static void scatter_acc(const urModel* m, const urLanes* L, urData* const* d, in
   SCATTER(qacc, m->nv);
   for (int j = 0; j < L->nout; j++) {
     int i = L->outb[j];
-    SCATTER(cacc + 6*i, 6);
-    SCATTER(freact + 6*i, 6);
+    SCATTER(cacc + 6 * i, 6);
+    SCATTER(freact + 6 * i, 6);
   }
   for (int l = 0; l < n; l++) {
     d[l]->energy = L->energy[0][l];

@@ -30,12 +30,12 @@ static int grow(void** arr, int* cap, int n, size_t size) {
   if (n < *cap) {
     return 0;
   }
-  int nc = *cap ? 2*(*cap) : 16;
-  void* p = realloc(*arr, (size_t)nc*size);
+  int nc = *cap ? 2 * (*cap) : 16;
+  void* p = realloc(*arr, (size_t)nc * size);
   if (!p) {
     return -1;
   }
-  memset((char*)p + (size_t)(*cap)*size, 0, (size_t)(nc - *cap)*size);
+  memset((char*)p + (size_t)(*cap) * size, 0, (size_t)(nc - *cap) * size);
   *arr = p;
   *cap = nc;
   return 0;
@@ -56,7 +56,7 @@ static int editable(urModel* m) {
 
 static void setquat(double dst[4], const double q[4]) {
   if (q) {
-    memcpy(dst, q, 4*sizeof(double));
+    memcpy(dst, q, 4 * sizeof(double));
     uru_normalizequat(dst);
   } else {
     dst[0] = 1;
@@ -138,7 +138,7 @@ int ur_model_add_body(urModel* m, const char* name, int parent, urJointType type
   b->jtype = type;
   b->gravity = 1;
   if (pos) {
-    memcpy(b->pos, pos, 3*sizeof(double));
+    memcpy(b->pos, pos, 3 * sizeof(double));
   }
   setquat(b->quat, quat);
   b->axis[0][2] = 1;
@@ -159,12 +159,11 @@ int ur_model_set_inertia(urModel* m, int body, double mass, const double com[3],
   urBody* b = m->body + body;
   b->mass = mass;
   if (com) {
-    memcpy(b->com, com, 3*sizeof(double));
+    memcpy(b->com, com, 3 * sizeof(double));
   }
   if (inertia) {
-    double I[9] = {inertia[0], inertia[3], inertia[4],
-                   inertia[3], inertia[1], inertia[5],
-                   inertia[4], inertia[5], inertia[2]};
+    double I[9] = {inertia[0], inertia[3], inertia[4], inertia[3], inertia[1],
+                   inertia[5], inertia[4], inertia[5], inertia[2]};
     memcpy(b->inertia, I, sizeof(I));
   }
   return 0;
@@ -186,7 +185,7 @@ int ur_model_set_joint(urModel* m, int body, const char* jname, const double a1[
   const double* a[2] = {a1, a2};
   for (int k = 0; k < 2; k++) {
     if (a[k]) {
-      memcpy(b->axis[k], a[k], 3*sizeof(double));
+      memcpy(b->axis[k], a[k], 3 * sizeof(double));
       if (uru_normalize3(b->axis[k])) {
         return fail(m, "zero joint axis", b->jname);
       }
@@ -232,10 +231,10 @@ int ur_model_add_ellipsoid(urModel* m, const char* name, int body, const double 
   }
   g->body = body;
   if (pos) {
-    memcpy(g->pos, pos, 3*sizeof(double));
+    memcpy(g->pos, pos, 3 * sizeof(double));
   }
   setquat(g->quat, quat);
-  memcpy(g->size, semiaxes, 3*sizeof(double));
+  memcpy(g->size, semiaxes, 3 * sizeof(double));
   g->degree = 2;
   g->rbound = fmax(semiaxes[0], fmax(semiaxes[1], semiaxes[2]));
   return m->ngeom++;
@@ -395,9 +394,7 @@ int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj
     ok = obj >= 0 && obj < m->nbag;
     dim = 2;
     break;
-  default:
-    ok = 0;
-    dim = 0;
+  default: ok = 0; dim = 0;
   }
   if (!ok) {
     return fail(m, "bad sensor object", name);
@@ -420,7 +417,7 @@ int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj
   s->dof = dof;
   s->dim = dim;
   if (pos) {
-    memcpy(s->pos, pos, 3*sizeof(double));
+    memcpy(s->pos, pos, 3 * sizeof(double));
   }
   setquat(s->quat, quat);
   return m->nsensor++;
@@ -506,7 +503,7 @@ int ur_model_compile(urModel* m) {
       for (int k = 0; k < 3; k++) {
         q[k] = b->pos[k] + c[k];
       }
-      memcpy(q+3, b->quat, 4*sizeof(double));
+      memcpy(q + 3, b->quat, 4 * sizeof(double));
     } else if (b->jtype == urJNT_SPHERICAL) {
       q[0] = 1;
     }
@@ -543,7 +540,7 @@ int ur_model_compile(urModel* m) {
 
   // the body lists of the per-step loops (one block: grav, then rstb, hyst, reactb)
   free(m->grav);
-  m->grav = malloc(4*(size_t)(m->nbody ? m->nbody : 1)*sizeof(int));
+  m->grav = malloc(4 * (size_t)(m->nbody ? m->nbody : 1) * sizeof(int));
   if (!m->grav) {
     return fail(m, "out of memory", NULL);
   }
@@ -584,15 +581,15 @@ static int samename(const char* a, const char* b) {
   return *a == *b;
 }
 
-#define FINDNAME(arr, n, field)                                     \
-  if (!m || !name) {                                                \
-    return -1;                                                      \
-  }                                                                 \
-  for (int i = 0; i < (n); i++) {                                   \
-    if (samename(m->arr[i].field, name)) {                          \
-      return i;                                                     \
-    }                                                               \
-  }                                                                 \
+#define FINDNAME(arr, n, field)                                                                    \
+  if (!m || !name) {                                                                               \
+    return -1;                                                                                     \
+  }                                                                                                \
+  for (int i = 0; i < (n); i++) {                                                                  \
+    if (samename(m->arr[i].field, name)) {                                                         \
+      return i;                                                                                    \
+    }                                                                                              \
+  }                                                                                                \
   return -1;
 
 int ur_name_body(const urModel* m, const char* name) {

@@ -44,7 +44,7 @@ int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len) {
       if (!r->active || r->load.n < 2) {
         continue;
       }
-      const double* st = d->rst + 2*(b->vadr + k);
+      const double* st = d->rst + 2 * (b->vadr + k);
       double lo, hi;
       curve_range(&r->load, &lo, &hi);
       double span = hi - lo, out = fmax(st[0] - hi, lo - st[1]);
@@ -55,8 +55,10 @@ int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len) {
       if (1 + out / span > worst) {
         worst = 1 + out / span;
         if (len > 0) {
-          snprintf(msg, (size_t)len, "restraint %s dof %d at %.4g, its curve's data span "
-                   "%.4g..%.4g", b->name, k, st[0] - hi > 0 ? st[0] : st[1], lo, hi);
+          snprintf(msg, (size_t)len,
+                   "restraint %s dof %d at %.4g, its curve's data span "
+                   "%.4g..%.4g",
+                   b->name, k, st[0] - hi > 0 ? st[0] : st[1], lo, hi);
         }
       }
     }

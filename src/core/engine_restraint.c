@@ -22,7 +22,7 @@ static double curve(const urCurve* c, double x) {
 
 // elastic generalised force at deflection x with extremes st = (max, min) reached so far
 static double elastic(const urRestraint* r, double x, const double st[2]) {
-  double f = r->sat > 0 ? r->sat*tanh(r->k*x/r->sat) : r->k*x;
+  double f = r->sat > 0 ? r->sat * tanh(r->k * x / r->sat) : r->k * x;
   if (r->load.n <= 0) {
     return f;
   }
@@ -38,18 +38,18 @@ static double elastic(const urRestraint* r, double x, const double st[2]) {
   if (um == 0) {
     return f + curve(&r->load, x);
   }
-  return f + curve(&r->load, xm)*curve(&r->unload, x)/um;
+  return f + curve(&r->load, xm) * curve(&r->unload, x) / um;
 }
 
 
 // total restraint force on one dof at deflection x, rate xd
 static double rforce(const urRestraint* r, double x, double xd, const double st[2]) {
-  double f = elastic(r, x, st) + r->c*xd;
+  double f = elastic(r, x, st) + r->c * xd;
   if (r->hi > r->lo) {
     if (x > r->hi) {
-      f += r->kstop*(x - r->hi) + r->cstop*xd;
+      f += r->kstop * (x - r->hi) + r->cstop * xd;
     } else if (x < r->lo) {
-      f += r->kstop*(x - r->lo) + r->cstop*xd;
+      f += r->kstop * (x - r->lo) + r->cstop * xd;
     }
   }
   return f;
@@ -74,8 +74,7 @@ static int deflection(const urModel* m, const urData* d, int i, double x[3]) {
       x[k] -= b->rst[k].x0;
     }
     return 3;
-  default:
-    return 0;
+  default: return 0;
   }
 }
 
@@ -96,7 +95,7 @@ void ur_restraints(const urModel* m, urData* d) {
     const urBody* b = m->body + i;
     double x[3], f[3] = {0, 0, 0};
     int n = b->jtype == urJNT_SPHERICAL ? 3 : deflection(m, d, i, x);
-    const double* xs = b->jtype == urJNT_SPHERICAL ? d->rkin + 12*i : x;
+    const double* xs = b->jtype == urJNT_SPHERICAL ? d->rkin + 12 * i : x;
     if (!n) {
       continue;
     }
@@ -105,7 +104,7 @@ void ur_restraints(const urModel* m, urData* d) {
     // elastic and viscous force per dof
     for (int k = 0; k < n; k++) {
       if (b->rst[k].active) {
-        const double* st = d->rst + 2*(b->vadr + k);
+        const double* st = d->rst + 2 * (b->vadr + k);
         if (b->jtype == urJNT_SPHERICAL) {
           f[k] = rforce(b->rst + k, xs[k], 0, st);
         } else {
@@ -119,7 +118,7 @@ void ur_restraints(const urModel* m, urData* d) {
       double t[3];
       uru_mulmat3tvec(t, xs + 3, f);
       for (int k = 0; k < 3; k++) {
-        f[k] = t[k] + (b->rst[k].active ? b->rst[k].c*qd[k] : 0);
+        f[k] = t[k] + (b->rst[k].active ? b->rst[k].c * qd[k] : 0);
       }
     }
     for (int k = 0; k < n; k++) {
@@ -138,7 +137,7 @@ void ur_restraints_commit(const urModel* m, urData* d) {
     double x[3];
     int n = deflection(m, d, i, x);
     for (int k = 0; k < n; k++) {
-      double* st = d->rst + 2*(b->vadr + k);
+      double* st = d->rst + 2 * (b->vadr + k);
       if (b->rst[k].active && b->rst[k].load.n > 0) {
         if (x[k] > st[0]) {
           st[0] = x[k];

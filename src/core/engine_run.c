@@ -19,24 +19,15 @@ void ur_set_status(urData* d, int status, const char* msg) {
 
 const char* ur_status_str(int status) {
   switch (status) {
-  case urSTAT_OK:
-    return "ok";
-  case urSTAT_SEPARATED:
-    return "ended: contact over";
-  case urSTAT_SETTLED:
-    return "ended: motion settled";
-  case urSTAT_TMAX:
-    return "ended: maximum time";
-  case urSTAT_NONFINITE:
-    return "failed: non-finite state";
-  case urSTAT_EXPLODE:
-    return "failed: exploding state";
-  case urSTAT_BADARG:
-    return "failed: bad argument";
-  case urSTAT_STOPPED:
-    return "failed: stopped on request";
-  default:
-    return "unknown";
+  case urSTAT_OK: return "ok";
+  case urSTAT_SEPARATED: return "ended: contact over";
+  case urSTAT_SETTLED: return "ended: motion settled";
+  case urSTAT_TMAX: return "ended: maximum time";
+  case urSTAT_NONFINITE: return "failed: non-finite state";
+  case urSTAT_EXPLODE: return "failed: exploding state";
+  case urSTAT_BADARG: return "failed: bad argument";
+  case urSTAT_STOPPED: return "failed: stopped on request";
+  default: return "unknown";
   }
 }
 
@@ -57,16 +48,16 @@ void ur_forward_pre(const urModel* m, urData* d) {
 // the applied forces of the forward pipeline, from the poses, velocities, restraint kinematics
 // (rkin) and pair depths of the broad phase
 void ur_forward_loads(const urModel* m, urData* d) {
-  memset(d->fext, 0, 6*(size_t)m->nbody*sizeof(double));
-  memset(d->qfrc, 0, (size_t)m->nv*sizeof(double));
+  memset(d->fext, 0, 6 * (size_t)m->nbody * sizeof(double));
+  memset(d->qfrc, 0, (size_t)m->nv * sizeof(double));
   for (int j = 0; j < m->ngrav; j++) {
     int i = m->grav[j];
     const urBody* b = m->body + i;
     double f[3];
     for (int k = 0; k < 3; k++) {
-      f[k] = -(1 - b->gravity)*b->mass*m->opt.gravity[k];
+      f[k] = -(1 - b->gravity) * b->mass * m->opt.gravity[k];
     }
-    ur_apply_force(m, d, i, f, d->xcom + 3*i);
+    ur_apply_force(m, d, i, f, d->xcom + 3 * i);
   }
   ur_restraints(m, d);
   ur_contacts_narrow(m, d);
@@ -105,7 +96,7 @@ int ur_forward(const urModel* m, urData* d) {
 // qout = q0 "+" h * dq (dq in tangent coordinates: nv values; exact exponential for quaternions)
 static void addpos(const urModel* m, double* qout, const double* q0, const double* dq, double h) {
   if (qout != q0) {
-    memcpy(qout, q0, (size_t)m->nq*sizeof(double));
+    memcpy(qout, q0, (size_t)m->nq * sizeof(double));
   }
   uru_addpos(m, qout, dq, h);
 }
@@ -113,7 +104,7 @@ static void addpos(const urModel* m, double* qout, const double* q0, const doubl
 
 // tangent-coordinate derivative at offset th (h * previous stage) with velocity v
 static void tangent(const urModel* m, double* dq, const double* th, const double* v) {
-  memcpy(dq, v, (size_t)m->nv*sizeof(double));
+  memcpy(dq, v, (size_t)m->nv * sizeof(double));
   for (int i = 0; i < m->nbody; i++) {
     const urBody* b = m->body + i;
     int off = b->jtype == urJNT_FREE ? 3 : (b->jtype == urJNT_SPHERICAL ? 0 : -1);
@@ -143,8 +134,8 @@ static void checkstate(const urModel* m, urData* d) {
       return;
     }
     if (fabs(d->qvel[k]) > m->opt.vmax) {
-      snprintf(msg, sizeof(msg), "velocity %.3g beyond vmax (qvel %d) at t = %.6g s",
-               d->qvel[k], k, d->time);
+      snprintf(msg, sizeof(msg), "velocity %.3g beyond vmax (qvel %d) at t = %.6g s", d->qvel[k], k,
+               d->time);
       ur_set_status(d, urSTAT_EXPLODE, msg);
       return;
     }
@@ -157,13 +148,13 @@ static void checkstate(const urModel* m, urData* d) {
 static void geomspeed(const urModel* m, const urData* d, int g, double v[3], double* w) {
   const urGeom* ge = m->geom + g;
   ur_point_vel(m, d, ge->body, ge->pos, v);
-  *w = uru_norm3(d->cvel + 6*ge->body)*ge->rbound;
+  *w = uru_norm3(d->cvel + 6 * ge->body) * ge->rbound;
 }
 
 
 // does a gap s > 0 that closes at most at rate c (plus a_clear t^2/2) stay open for T
 static int gap_holds(const urModel* m, double s, double c, double T) {
-  return s > 0 && s > c*T + 0.5*m->opt.a_clear*T*T;
+  return s > 0 && s > c * T + 0.5 * m->opt.a_clear * T * T;
 }
 
 
@@ -174,11 +165,11 @@ static int gap_holds(const urModel* m, double s, double c, double T) {
 // from below and shrinks at most at rate (v1 - v2).e + w1 + w2; tried along the centre line
 // with the bounding spheres (h = rbound, unchanged by spin) and with the ellipsoids, and along
 // u. Each closing rate comes with a_clear T^2/2 for the relative acceleration.
-static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep,
-                       const double u[3], double T) {
+static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, const double u[3],
+                       double T) {
   double v1[3], v2[3], w1, w2, e[3];
-  const double* c1 = d->gxpos + 3*g1;
-  const double* c2 = d->gxpos + 3*g2;
+  const double* c1 = d->gxpos + 3 * g1;
+  const double* c2 = d->gxpos + 3 * g2;
   double dc[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]};
   double L = uru_norm3(dc);
   geomspeed(m, d, g1, v1, &w1);
@@ -188,9 +179,9 @@ static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep,
     return 1;
   }
   if (L > 0) {
-    e[0] = dc[0]/L;
-    e[1] = dc[1]/L;
-    e[2] = dc[2]/L;
+    e[0] = dc[0] / L;
+    e[1] = dc[1] / L;
+    e[2] = dc[2] / L;
     double ce = uru_dot3(dv, e);
     if (gap_holds(m, L - m->geom[g1].rbound - m->geom[g2].rbound, ce, T) ||
         gap_holds(m, L - ur_geom_halfwidth(m, d, g1, e) - ur_geom_halfwidth(m, d, g2, e),
@@ -247,13 +238,13 @@ static int proj_clear(const urModel* m, urData* d, double T) {
 // projectile provably clear until t_quiet), motion settled, or maximum time
 static void checkend(const urModel* m, urData* d) {
   double over = d->t_first >= 0 ? d->time - d->t_last : -1;
-  if (d->t_first >= 0 && (over >= m->opt.t_quiet ||
-                          (over >= m->opt.t_clear &&
-                           proj_clear(m, d, m->opt.t_quiet - over + m->opt.dt)))) {
+  if (d->t_first >= 0 &&
+      (over >= m->opt.t_quiet ||
+       (over >= m->opt.t_clear && proj_clear(m, d, m->opt.t_quiet - over + m->opt.dt)))) {
     ur_set_status(d, urSTAT_SEPARATED, "contact over");
   } else if (d->t_first >= 0 && d->t_calm >= m->opt.t_quiet) {
     ur_set_status(d, urSTAT_SETTLED, "motion settled");
-  } else if (d->time - d->t_jump >= m->opt.tmax - 0.5*m->opt.dt) {
+  } else if (d->time - d->t_jump >= m->opt.tmax - 0.5 * m->opt.dt) {
     ur_set_status(d, urSTAT_TMAX, d->t_first >= 0 ? "maximum time" : "maximum time, no contact");
   }
 }
@@ -304,7 +295,7 @@ int ur_step_euler(const urModel* m, urData* d) {
   double h = m->opt.dt;
   ur_step_accept(m, d);
   for (int k = 0; k < m->nv; k++) {
-    d->qvel[k] += h*d->qacc[k];
+    d->qvel[k] += h * d->qacc[k];
   }
   addpos(m, d->qpos, d->qpos, d->qvel, h);
   return ur_step_end(m, d);
@@ -335,11 +326,11 @@ int ur_step(const urModel* m, urData* d) {
     double* as = dqs + nv;
     double* dqk = as + nv;
     double* th = dqk + nv;
-    memcpy(q0, d->qpos, (size_t)nq*sizeof(double));
-    memcpy(v0, d->qvel, (size_t)nv*sizeof(double));
+    memcpy(q0, d->qpos, (size_t)nq * sizeof(double));
+    memcpy(v0, d->qvel, (size_t)nv * sizeof(double));
 
     // stage 1
-    memcpy(dqk, v0, (size_t)nv*sizeof(double));
+    memcpy(dqk, v0, (size_t)nv * sizeof(double));
     for (int k = 0; k < nv; k++) {
       dqs[k] = dqk[k];
       as[k] = d->qacc[k];
@@ -349,24 +340,24 @@ int ur_step(const urModel* m, urData* d) {
     static const double c[3] = {0.5, 0.5, 1.0}, w[3] = {2, 2, 1};
     for (int s = 0; s < 3; s++) {
       for (int k = 0; k < nv; k++) {
-        th[k] = c[s]*h*dqk[k];
-        d->qvel[k] = v0[k] + c[s]*h*d->qacc[k];
+        th[k] = c[s] * h * dqk[k];
+        d->qvel[k] = v0[k] + c[s] * h * d->qacc[k];
       }
-      addpos(m, d->qpos, q0, dqk, c[s]*h);
+      addpos(m, d->qpos, q0, dqk, c[s] * h);
       if (ur_forward(m, d) < 0) {
         return d->status;
       }
       tangent(m, dqk, th, d->qvel);
       for (int k = 0; k < nv; k++) {
-        dqs[k] += w[s]*dqk[k];
-        as[k] += w[s]*d->qacc[k];
+        dqs[k] += w[s] * dqk[k];
+        as[k] += w[s] * d->qacc[k];
       }
     }
 
     // combine
-    addpos(m, d->qpos, q0, dqs, h/6);
+    addpos(m, d->qpos, q0, dqs, h / 6);
     for (int k = 0; k < nv; k++) {
-      d->qvel[k] = v0[k] + h/6*as[k];
+      d->qvel[k] = v0[k] + h / 6 * as[k];
     }
   }
   return ur_step_end(m, d);
@@ -379,7 +370,8 @@ int ur_tree_active(const urModel* m, const urData* d, int tree) {
   for (int k = 0; k < d->npactive; k++) {
     int i = d->plist[m->npair + k];
     const urPair* p = m->pair + i;
-    if (d->pair[i].active && ur_geom_intree(m, p->geom1, tree) != ur_geom_intree(m, p->geom2, tree)) {
+    if (d->pair[i].active &&
+        ur_geom_intree(m, p->geom1, tree) != ur_geom_intree(m, p->geom2, tree)) {
       return 1;
     }
   }
@@ -389,7 +381,8 @@ int ur_tree_active(const urModel* m, const urData* d, int tree) {
       continue;
     }
     for (int t = 0; t < b->ntarget; t++) {
-      if (d->bag[i].ftgt[t] > 0 && ur_geom_intree(m, b->geom, tree) != ur_geom_intree(m, b->target[t], tree)) {
+      if (d->bag[i].ftgt[t] > 0 &&
+          ur_geom_intree(m, b->geom, tree) != ur_geom_intree(m, b->target[t], tree)) {
         return 1;
       }
     }
@@ -399,19 +392,18 @@ int ur_tree_active(const urModel* m, const urData* d, int tree) {
 
 
 // earliest time at which sphere (c, r) moving with v touches sphere (cs, rs); INFINITY if never
-static double sweep(const double c[3], double r, const double v[3], const double cs[3],
-                    double rs) {
+static double sweep(const double c[3], double r, const double v[3], const double cs[3], double rs) {
   double D[3] = {c[0] - cs[0], c[1] - cs[1], c[2] - cs[2]};
   double R = r + rs;
-  double a = uru_dot3(v, v), b = 2*uru_dot3(D, v), cc = uru_dot3(D, D) - R*R;
+  double a = uru_dot3(v, v), b = 2 * uru_dot3(D, v), cc = uru_dot3(D, D) - R * R;
   if (cc <= 0) {
     return 0;
   }
-  double disc = b*b - 4*a*cc;
+  double disc = b * b - 4 * a * cc;
   if (a <= 0 || disc < 0) {
     return INFINITY;
   }
-  double t = (-b - sqrt(disc))/(2*a);
+  double t = (-b - sqrt(disc)) / (2 * a);
   return t >= 0 ? t : INFINITY;
 }
 
@@ -419,15 +411,15 @@ static double sweep(const double c[3], double r, const double v[3], const double
 // earliest possible contact of the moving geom gm with geom gs (-1: ground) given margin
 static double firsthit(const urModel* m, const urData* d, int gm, int gs, const double v[3]) {
   double r = m->geom[gm].rbound + m->opt.jump_margin;
-  const double* c = d->gxpos + 3*gm;
+  const double* c = d->gxpos + 3 * gm;
   if (gs < 0) {
     double gap = c[2] - r;
     if (gap <= 0) {
       return 0;
     }
-    return v[2] < 0 ? gap/(-v[2]) : INFINITY;
+    return v[2] < 0 ? gap / (-v[2]) : INFINITY;
   }
-  return sweep(c, r, v, d->gxpos + 3*gs, m->geom[gs].rbound);
+  return sweep(c, r, v, d->gxpos + 3 * gs, m->geom[gs].rbound);
 }
 
 
@@ -447,8 +439,8 @@ static double separation(const urModel* m, urData* d, int root) {
     if (g2 < 0 || ur_geom_intree(m, g1, root) == ur_geom_intree(m, g2, root)) {
       continue;
     }
-    const double* c1 = d->gxpos + 3*g1;
-    const double* c2 = d->gxpos + 3*g2;
+    const double* c1 = d->gxpos + 3 * g1;
+    const double* c2 = d->gxpos + 3 * g2;
     double dx[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]};
     double gap = uru_norm3(dx) - m->geom[g1].rbound - m->geom[g2].rbound;
     g1s[k] = g1;
@@ -484,8 +476,8 @@ static double separation(const urModel* m, urData* d, int root) {
 }
 
 
-int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
-                 const double quat[4], const double vel[3]) {
+int ur_run_start(const urModel* m, urData* d, int root, const double pos[3], const double quat[4],
+                 const double vel[3]) {
   // check
   if (root < 0 || root >= m->nbody || m->body[root].parent >= 0 ||
       m->body[root].jtype != urJNT_FREE || !pos || !vel) {
@@ -496,17 +488,17 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
 
   // place the tree: CoM at pos, velocity vel, joints of the tree at rest
   const urBody* rb = m->body + root;
-  memcpy(d->qpos + rb->qadr, pos, 3*sizeof(double));
+  memcpy(d->qpos + rb->qadr, pos, 3 * sizeof(double));
   if (quat) {
-    memcpy(d->qpos + rb->qadr + 3, quat, 4*sizeof(double));
+    memcpy(d->qpos + rb->qadr + 3, quat, 4 * sizeof(double));
     uru_normalizequat(d->qpos + rb->qadr + 3);
   }
   for (int i = 0; i < m->nbody; i++) {
     if (m->body[i].tree == root) {
-      memset(d->qvel + m->body[i].vadr, 0, (size_t)m->body[i].nv*sizeof(double));
+      memset(d->qvel + m->body[i].vadr, 0, (size_t)m->body[i].nv * sizeof(double));
     }
   }
-  memcpy(d->qvel + rb->vadr, vel, 3*sizeof(double));
+  memcpy(d->qvel + rb->vadr, vel, 3 * sizeof(double));
 
   // reset run outputs and the contact histories of the tree
   for (int k = 0; k < m->nsensordata; k++) {
@@ -549,7 +541,7 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
   // jump along the straight line
   if (isfinite(tmin) && tmin > 0) {
     for (int k = 0; k < 3; k++) {
-      d->qpos[rb->qadr + k] += vel[k]*tmin;
+      d->qpos[rb->qadr + k] += vel[k] * tmin;
     }
     d->time = tmin;
     ur_kinematics(m, d);
@@ -559,12 +551,12 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3],
   double speed = uru_norm3(vel), t = d->time, tend = d->time + m->opt.tmax;
   for (int it = 0; isfinite(tmin) && speed > 0 && it < 64 && t < tend; it++) {
     double sep = separation(m, d, root);
-    if (!(sep > 2*m->opt.jump_margin) || !isfinite(sep)) {
+    if (!(sep > 2 * m->opt.jump_margin) || !isfinite(sep)) {
       break;
     }
-    double dt = fmin((sep - m->opt.jump_margin)/speed, tend - t);
+    double dt = fmin((sep - m->opt.jump_margin) / speed, tend - t);
     for (int k = 0; k < 3; k++) {
-      d->qpos[rb->qadr + k] += vel[k]*dt;
+      d->qpos[rb->qadr + k] += vel[k] * dt;
     }
     t += dt;
     ur_kinematics(m, d);
@@ -583,8 +575,8 @@ int ur_run(const urModel* m, urData* d) {
 }
 
 
-int ur_run_impact(const urModel* m, urData* d, int root, const double pos[3],
-                  const double quat[4], const double vel[3]) {
+int ur_run_impact(const urModel* m, urData* d, int root, const double pos[3], const double quat[4],
+                  const double vel[3]) {
   if (ur_run_start(m, d, root, pos, quat, vel) != urSTAT_OK) {
     return d->status;
   }
@@ -601,14 +593,14 @@ void ur_set_free(const urModel* m, urData* d, int body, const double pos[3], con
   double* q = d->qpos + b->qadr;
   double* v = d->qvel + b->vadr;
   if (pos) {
-    memcpy(q, pos, 3*sizeof(double));
+    memcpy(q, pos, 3 * sizeof(double));
   }
   if (quat) {
-    memcpy(q + 3, quat, 4*sizeof(double));
+    memcpy(q + 3, quat, 4 * sizeof(double));
     uru_normalizequat(q + 3);
   }
   if (vel) {
-    memcpy(v, vel, 3*sizeof(double));
+    memcpy(v, vel, 3 * sizeof(double));
   }
   if (omega) {
     double R[9];

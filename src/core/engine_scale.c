@@ -45,8 +45,9 @@ int ur_model_scale_tree(urModel* m, int root, double fmass, double fsize) {
   }
   for (int i = 0; i < m->nsensor; i++) {
     urSensor* se = m->sensor + i;
-    int body = se->type == urSENS_ACCEL || se->type == urSENS_BODYPOS ||
-               se->type == urSENS_BODYVEL ? se->obj : -1;
+    int body = se->type == urSENS_ACCEL || se->type == urSENS_BODYPOS || se->type == urSENS_BODYVEL
+                   ? se->obj
+                   : -1;
     if (body >= 0 && below(m, body, root)) {
       for (int k = 0; k < 3; k++) se->pos[k] *= fsize;
     }

@@ -13,30 +13,20 @@ void ur_sensors(const urModel* m, urData* d) {
     const urBody* b = m->body + (s->obj < m->nbody ? s->obj : 0);
 
     switch (s->type) {
-    case urSENS_ACCEL:
-      ur_point_acc(m, d, s->obj, s->pos, out);
-      break;
-    case urSENS_BODYPOS:
-      ur_point_pos(m, d, s->obj, s->pos, out);
-      break;
-    case urSENS_BODYVEL:
-      ur_point_vel(m, d, s->obj, s->pos, out);
-      break;
+    case urSENS_ACCEL: ur_point_acc(m, d, s->obj, s->pos, out); break;
+    case urSENS_BODYPOS: ur_point_pos(m, d, s->obj, s->pos, out); break;
+    case urSENS_BODYVEL: ur_point_vel(m, d, s->obj, s->pos, out); break;
     case urSENS_JOINTLOAD: {
       // reaction on the child at the anchor, rotated into the sensor frame
       double R[9];
-      const double* f = d->freact + 6*s->obj;
+      const double* f = d->freact + 6 * s->obj;
       uru_quat2mat(R, s->quat);
       uru_mulmat3tvec(out, R, f + 3);
       uru_mulmat3tvec(out + 3, R, f);
       break;
     }
-    case urSENS_JOINTPOS:
-      out[0] = d->qpos[b->qadr + s->dof];
-      break;
-    case urSENS_JOINTVEL:
-      out[0] = d->qvel[b->vadr + s->dof];
-      break;
+    case urSENS_JOINTPOS: out[0] = d->qpos[b->qadr + s->dof]; break;
+    case urSENS_JOINTVEL: out[0] = d->qvel[b->vadr + s->dof]; break;
     case urSENS_CONTACT: {
       const urPairData* pd = d->pair + s->obj;
       out[0] = pd->fn;
@@ -76,14 +66,14 @@ void ur_outputs(const urModel* m, urData* d) {
   if (!d->hist || d->nhist >= d->nhist_cap) {
     return;
   }
-  long every = (long)floor(m->opt.sample_dt/m->opt.dt + 1e-9);
+  long every = (long)floor(m->opt.sample_dt / m->opt.dt + 1e-9);
   if (every < 1) {
     every = 1;
   }
   if (d->nstep % every == 0) {
-    double* row = d->hist + (size_t)d->nhist*(size_t)(1 + ns);
+    double* row = d->hist + (size_t)d->nhist * (size_t)(1 + ns);
     row[0] = d->time;
-    memcpy(row + 1, d->sensordata, (size_t)ns*sizeof(double));
+    memcpy(row + 1, d->sensordata, (size_t)ns * sizeof(double));
     d->nhist++;
   }
 }

@@ -6,27 +6,27 @@
  * defines and undefines the parameters, the bit-exactness rules): src/README. */
 
 static inline void urK(cross3)(urT r[3], const urT a[3], const urT b[3]) {
-  urT t0 = a[1]*b[2] - a[2]*b[1];
-  urT t1 = a[2]*b[0] - a[0]*b[2];
-  urT t2 = a[0]*b[1] - a[1]*b[0];
+  urT t0 = a[1] * b[2] - a[2] * b[1];
+  urT t1 = a[2] * b[0] - a[0] * b[2];
+  urT t2 = a[0] * b[1] - a[1] * b[0];
   r[0] = t0;
   r[1] = t1;
   r[2] = t2;
 }
 
 static inline void urK(mulmat3vec)(urT r[3], const urT M[9], const urT v[3]) {
-  urT t0 = M[0]*v[0] + M[1]*v[1] + M[2]*v[2];
-  urT t1 = M[3]*v[0] + M[4]*v[1] + M[5]*v[2];
-  urT t2 = M[6]*v[0] + M[7]*v[1] + M[8]*v[2];
+  urT t0 = M[0] * v[0] + M[1] * v[1] + M[2] * v[2];
+  urT t1 = M[3] * v[0] + M[4] * v[1] + M[5] * v[2];
+  urT t2 = M[6] * v[0] + M[7] * v[1] + M[8] * v[2];
   r[0] = t0;
   r[1] = t1;
   r[2] = t2;
 }
 
 static inline void urK(mulmat3tvec)(urT r[3], const urT M[9], const urT v[3]) {
-  urT t0 = M[0]*v[0] + M[3]*v[1] + M[6]*v[2];
-  urT t1 = M[1]*v[0] + M[4]*v[1] + M[7]*v[2];
-  urT t2 = M[2]*v[0] + M[5]*v[1] + M[8]*v[2];
+  urT t0 = M[0] * v[0] + M[3] * v[1] + M[6] * v[2];
+  urT t1 = M[1] * v[0] + M[4] * v[1] + M[7] * v[2];
+  urT t2 = M[2] * v[0] + M[5] * v[1] + M[8] * v[2];
   r[0] = t0;
   r[1] = t1;
   r[2] = t2;
@@ -34,11 +34,9 @@ static inline void urK(mulmat3tvec)(urT r[3], const urT M[9], const urT v[3]) {
 
 static inline void urK(mulmat3)(urT r[9], const urT A[9], const urT B[9]) {
   urT t[9];
-  urUNROLL
-  for (int i = 0; i < 3; i++) {
-    urUNROLL
-    for (int j = 0; j < 3; j++) {
-      t[3*i+j] = A[3*i]*B[j] + A[3*i+1]*B[3+j] + A[3*i+2]*B[6+j];
+  urUNROLL for (int i = 0; i < 3; i++) {
+    urUNROLL for (int j = 0; j < 3; j++) {
+      t[3 * i + j] = A[3 * i] * B[j] + A[3 * i + 1] * B[3 + j] + A[3 * i + 2] * B[6 + j];
     }
   }
   memcpy(r, t, sizeof(t));
@@ -46,10 +44,10 @@ static inline void urK(mulmat3)(urT r[9], const urT A[9], const urT B[9]) {
 
 // quaternion product r = a b (w, x, y, z)
 static inline void urK(mulquat)(urT r[4], const urT a[4], const urT b[4]) {
-  urT t0 = a[0]*b[0] - a[1]*b[1] - a[2]*b[2] - a[3]*b[3];
-  urT t1 = a[0]*b[1] + a[1]*b[0] + a[2]*b[3] - a[3]*b[2];
-  urT t2 = a[0]*b[2] - a[1]*b[3] + a[2]*b[0] + a[3]*b[1];
-  urT t3 = a[0]*b[3] + a[1]*b[2] - a[2]*b[1] + a[3]*b[0];
+  urT t0 = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+  urT t1 = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+  urT t2 = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+  urT t3 = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
   r[0] = t0;
   r[1] = t1;
   r[2] = t2;
@@ -58,15 +56,15 @@ static inline void urK(mulquat)(urT r[4], const urT a[4], const urT b[4]) {
 
 static inline void urK(quat2mat)(urT R[9], const urT q[4]) {
   urT w = q[0], x = q[1], y = q[2], z = q[3];
-  R[0] = 1 - 2*(y*y + z*z);
-  R[1] = 2*(x*y - w*z);
-  R[2] = 2*(x*z + w*y);
-  R[3] = 2*(x*y + w*z);
-  R[4] = 1 - 2*(x*x + z*z);
-  R[5] = 2*(y*z - w*x);
-  R[6] = 2*(x*z - w*y);
-  R[7] = 2*(y*z + w*x);
-  R[8] = 1 - 2*(x*x + y*y);
+  R[0] = 1 - 2 * (y * y + z * z);
+  R[1] = 2 * (x * y - w * z);
+  R[2] = 2 * (x * z + w * y);
+  R[3] = 2 * (x * y + w * z);
+  R[4] = 1 - 2 * (x * x + z * z);
+  R[5] = 2 * (y * z - w * x);
+  R[6] = 2 * (x * z - w * y);
+  R[7] = 2 * (y * z + w * x);
+  R[8] = 1 - 2 * (x * x + y * y);
 }
 
 // motion vector parent -> child: w' = E w, v' = E (v - p x w)
@@ -77,14 +75,14 @@ static inline void urK(xmotion)(urT r[6], const urT E[9], const urT p[3], const 
   t[1] = v[4] - t[1];
   t[2] = v[5] - t[2];
   urK(mulmat3vec)(r, E, v);
-  urK(mulmat3vec)(r+3, E, t);
+  urK(mulmat3vec)(r + 3, E, t);
 }
 
 // force vector child -> parent (X^T f): f = E^T f', n = E^T n' + p x f
 static inline void urK(xforce_t)(urT r[6], const urT E[9], const urT p[3], const urT f[6]) {
   urT n[3], l[3], t[3];
   urK(mulmat3tvec)(n, E, f);
-  urK(mulmat3tvec)(l, E, f+3);
+  urK(mulmat3tvec)(l, E, f + 3);
   urK(cross3)(t, p, l);
   r[0] = n[0] + t[0];
   r[1] = n[1] + t[1];
@@ -98,8 +96,8 @@ static inline void urK(xforce_t)(urT r[6], const urT E[9], const urT p[3], const
 static inline void urK(crossmotion)(urT r[6], const urT v[6], const urT m[6]) {
   urT a[3], b[3], c[3];
   urK(cross3)(a, v, m);
-  urK(cross3)(b, v, m+3);
-  urK(cross3)(c, v+3, m);
+  urK(cross3)(b, v, m + 3);
+  urK(cross3)(c, v + 3, m);
   r[0] = a[0];
   r[1] = a[1];
   r[2] = a[2];
@@ -112,8 +110,8 @@ static inline void urK(crossmotion)(urT r[6], const urT v[6], const urT m[6]) {
 static inline void urK(crossforce)(urT r[6], const urT v[6], const urT f[6]) {
   urT a[3], b[3], c[3];
   urK(cross3)(a, v, f);
-  urK(cross3)(b, v+3, f+3);
-  urK(cross3)(c, v, f+3);
+  urK(cross3)(b, v + 3, f + 3);
+  urK(cross3)(c, v, f + 3);
   r[0] = a[0] + b[0];
   r[1] = a[1] + b[1];
   r[2] = a[2] + b[2];
@@ -124,10 +122,10 @@ static inline void urK(crossforce)(urT r[6], const urT v[6], const urT f[6]) {
 
 static inline void urK(mul6)(urT r[6], const urT I[36], const urT v[6]) {
   urT t[6];
-  urUNROLL
-  for (int i = 0; i < 6; i++) {
-    const urT* row = I + 6*i;
-    t[i] = row[0]*v[0] + row[1]*v[1] + row[2]*v[2] + row[3]*v[3] + row[4]*v[4] + row[5]*v[5];
+  urUNROLL for (int i = 0; i < 6; i++) {
+    const urT* row = I + 6 * i;
+    t[i] = row[0] * v[0] + row[1] * v[1] + row[2] * v[2] + row[3] * v[3] + row[4] * v[4] +
+           row[5] * v[5];
   }
   memcpy(r, t, sizeof(t));
 }

@@ -7,7 +7,7 @@
 
 #include "uasrisk/grid.h"
 
-#define SNAP 1e-9                  /* tolerance when rounding extents to the lattice */
+#define SNAP 1e-9 /* tolerance when rounding extents to the lattice */
 
 /* lattice indices of a spec: rows from kpar_hi down to kpar_lo, columns -kperp..kperp */
 static int lattice(const urGridSpec* s, long* kpar_hi, long* kpar_lo, long* kperp) {
@@ -52,7 +52,7 @@ urGrid* ur_grid_new(const urGridSpec* s) {
       urCell* c = &g->cell[(size_t)i * g->ncol + j];
       c->dpar = (hi - i) * s->step;
       c->dperp = (j - kp) * s->step;
-      if (c->dpar == 0) c->dpar = 0;     /* no negative zero */
+      if (c->dpar == 0) c->dpar = 0; /* no negative zero */
       if (c->dperp == 0) c->dperp = 0;
     }
   }
@@ -105,11 +105,11 @@ void ur_grid_summarise(urGrid* g) {
 typedef struct {
   urGrid* g;
   const urGridSpec* s;
-  long* todo;                      /* indices of the cells to simulate */
+  long* todo; /* indices of the cells to simulate */
   long ntodo;
-  long next;                       /* next index of todo to take (atomic) */
+  long next; /* next index of todo to take (atomic) */
   long finished;
-  pthread_mutex_t lock;            /* serialises progress callbacks */
+  pthread_mutex_t lock; /* serialises progress callbacks */
 } runShared;
 
 typedef struct {
@@ -175,7 +175,7 @@ int ur_grid_run(urGrid* g, const urGridSpec* s) {
     urCell* c = &g->cell[k];
     long j = k % g->ncol;
     c->mirrored = 0;
-    if (s->mirror && j < kp) continue;       /* filled from its mirror cell afterwards */
+    if (s->mirror && j < kp) continue; /* filled from its mirror cell afterwards */
     if (s->may_contact && !s->may_contact(s->ctx, c->dpar, c->dperp)) {
       double dpar = c->dpar, dperp = c->dperp;
       memset(c, 0, sizeof *c);
@@ -205,8 +205,10 @@ int ur_grid_run(urGrid* g, const urGridSpec* s) {
     w[i].sh = &sh;
     w[i].id = i;
     if (i == 0) continue;
-    if (pthread_create(&th[i], NULL, worker, &w[i]) == 0) started = i;
-    else break;
+    if (pthread_create(&th[i], NULL, worker, &w[i]) == 0)
+      started = i;
+    else
+      break;
   }
   worker(&w[0]);
   for (int i = 1; i <= started; i++) pthread_join(th[i], NULL);

@@ -9,9 +9,9 @@
 #include "engine_internal.h"
 #include "impact_internal.h"
 
-#define DEG (M_PI / 180.0)
-#define HIST_SECONDS_MARGIN 1.2    /* history rows for tmax with this margin */
-#define NCHAN 9                    /* channel buffers of one run: t, a(3), fz, my, fx, chest, abd */
+#define DEG                 (M_PI / 180.0)
+#define HIST_SECONDS_MARGIN 1.2 /* history rows for tmax with this margin */
+#define NCHAN               9   /* channel buffers of one run: t, a(3), fz, my, fx, chest, abd */
 
 /* the drone's course and its left normal for a face direction */
 static void course(double face_deg, double c[3], double l[3]) {
@@ -288,16 +288,16 @@ int ur_impact_finish(const urImpactSetup* s, urImpactWork* w, const urInjuryPara
   ur_impact_channel(s, w, s->s_neck, 4, my);
   ur_impact_channel(s, w, s->s_neck, 0, fx);
   for (int i = 0; i < n; i++) {
-    fz[i] = -fz[i];                /* tension: the neck pulls the head down */
-    my[i] = -my[i];                /* flexion: the neck resists chin-down rotation */
+    fz[i] = -fz[i]; /* tension: the neck pulls the head down */
+    my[i] = -my[i]; /* flexion: the neck resists chin-down rotation */
   }
 
-  urInjuryInput in = {n, t, {ax, ay, az}, fz, my, fx, NULL, NULL, 1};   /* HIC36 unused */
+  urInjuryInput in = {n, t, {ax, ay, az}, fz, my, fx, NULL, NULL, 1}; /* HIC36 unused */
   double* de = dc + n;
   double* da = NULL;
   if (s->s_chest >= 0) {
     ur_impact_channel(s, w, s->s_chest, 0, dc);
-    for (int i = 0; i < n; i++) dc[i] = -dc[i];   /* plate pushed back: compression > 0 */
+    for (int i = 0; i < n; i++) dc[i] = -dc[i]; /* plate pushed back: compression > 0 */
     in.thorax_d = dc;
   }
   if (s->s_abd >= 0) {

@@ -31,16 +31,15 @@ static int deflections(const urModel* m, const urData* d, int b, double x[3]) {
     uru_quat2rotvec(x, q);
     return 3;
   }
-  if (bd->jtype == urJNT_REVOLUTE || bd->jtype == urJNT_PRISMATIC ||
-      bd->jtype == urJNT_UNIVERSAL) {
+  if (bd->jtype == urJNT_REVOLUTE || bd->jtype == urJNT_PRISMATIC || bd->jtype == urJNT_UNIVERSAL) {
     for (int k = 0; k < bd->nq; k++) x[k] = q[k];
     return bd->nq;
   }
   return 0;
 }
 
-#define SETTLE_DT 2e-4            /* default step of the settling, s (model parameter settle_dt) */
-#define BALANCE_GAIN 0.5          /* fixed-point gain of the balancing */
+#define SETTLE_DT    2e-4 /* default step of the settling, s (model parameter settle_dt) */
+#define BALANCE_GAIN 0.5  /* fixed-point gain of the balancing */
 /* where the drone waits while the person settles */
 static const double PARK[3] = {0, 0, 1e4}, QID[4] = {1, 0, 0, 0}, ZERO3[3] = {0, 0, 0};
 
@@ -165,22 +164,22 @@ int ur_impact_balance(urModel* m, double settle_time, int iters, double* residua
 struct urStance {
   unsigned char* key;
   size_t nkey, capkey;
-  uint64_t hash;                   /* FNV-1a of key: a quick rejection before the full compare */
-  int ok;                          /* the key is complete (no allocation failed) */
-  int shareable;                   /* settled, with no airbag on the person, clear of the drone */
-  double top;                      /* highest point of the person's bounding spheres while
+  uint64_t hash; /* FNV-1a of key: a quick rejection before the full compare */
+  int ok;        /* the key is complete (no allocation failed) */
+  int shareable; /* settled, with no airbag on the person, clear of the drone */
+  double top;    /* highest point of the person's bounding spheres while
                                       settling (balancing included), m */
   int nx0, nq, nrst, npair;
-  double* x0;                      /* 3 per person body, body order */
-  double* qpos;                    /* the person's coordinates, body order */
-  double* rst;                     /* restraint extremes, 2 per person dof */
-  urPairData* pair;                /* the person's pairs, pair order */
+  double* x0;       /* 3 per person body, body order */
+  double* qpos;     /* the person's coordinates, body order */
+  double* rst;      /* restraint extremes, 2 per person dof */
+  urPairData* pair; /* the person's pairs, pair order */
 };
 
 /* the key names the fields one by one: a field added to one of these structs must be added to
    its put_ function below too (urOption: stance_new); sizes of LP64 targets (amd64, arm64) */
-#define urLP64_SIZE(T, n) _Static_assert(sizeof(void*) != 8 || sizeof(T) == (n), \
-                                         #T " changed: update its put_ function")
+#define urLP64_SIZE(T, n)                                                                          \
+  _Static_assert(sizeof(void*) != 8 || sizeof(T) == (n), #T " changed: update its put_ function")
 urLP64_SIZE(urRestraint, 1624);
 urLP64_SIZE(urLaw, 2448);
 urLP64_SIZE(urBody, 5624);
@@ -392,8 +391,10 @@ static void stance_x0(urStance* st, urModel* m, int drone, int save) {
   for (int b = 0; b < m->nbody; b++) {
     if (ur_body_intree(m, b, drone)) continue;
     for (int k = 0; k < 3; k++, ix++) {
-      if (save) st->x0[ix] = m->body[b].rst[k].x0;
-      else m->body[b].rst[k].x0 = st->x0[ix];
+      if (save)
+        st->x0[ix] = m->body[b].rst[k].x0;
+      else
+        m->body[b].rst[k].x0 = st->x0[ix];
     }
   }
 }
@@ -454,14 +455,19 @@ static void rest(const urModel* m, urData* d, int drone) {
 static int roles_check(const urModel* m, char* err, size_t n) {
   const urRoles* ro = &m->roles;
   if (ro->drone < 0 || m->body[ro->drone].jtype != urJNT_FREE) {
-    snprintf(err, n, "the model declares no drone: add 'role drone=BODY' (its root body, free "
+    snprintf(err, n,
+             "the model declares no drone: add 'role drone=BODY' (its root body, free "
              "joint)");
     return -1;
   }
   if (ro->head < 0 || ro->head_acc < 0 || ro->neck < 0 || ro->head_pos < 0) {
-    snprintf(err, n, "the model declares no %s: add 'role head=ELLIPSOID head_acc=SENSOR "
-             "neck=SENSOR head_pos=SENSOR'", ro->head < 0 ? "head" : ro->head_acc < 0 ?
-             "head_acc" : ro->neck < 0 ? "neck" : "head_pos");
+    snprintf(err, n,
+             "the model declares no %s: add 'role head=ELLIPSOID head_acc=SENSOR "
+             "neck=SENSOR head_pos=SENSOR'",
+             ro->head < 0       ? "head"
+             : ro->head_acc < 0 ? "head_acc"
+             : ro->neck < 0     ? "neck"
+                                : "head_pos");
     return -1;
   }
   return 0;
@@ -473,21 +479,31 @@ int ur_impact_check(const urModel* m, char* err, size_t n) {
   if (roles_check(m, err, n)) {
     return -1;
   } else if (!(dt > 0 && dt <= 1e-3)) {
-    snprintf(err, n, "dt %g s is out of range; accepted: (0, 1e-3] s (a contact pulse lasts "
-             "about 1 ms: a coarser step cannot follow it)", dt);
+    snprintf(err, n,
+             "dt %g s is out of range; accepted: (0, 1e-3] s (a contact pulse lasts "
+             "about 1 ms: a coarser step cannot follow it)",
+             dt);
   } else if (!(tmax > 0 && tmax <= 1)) {
-    snprintf(err, n, "tmax %g s is out of range; accepted: (0, 1] s (an impact is over within "
-             "0.15 s; a longer run only fills memory with its histories)", tmax);
+    snprintf(err, n,
+             "tmax %g s is out of range; accepted: (0, 1] s (an impact is over within "
+             "0.15 s; a longer run only fills memory with its histories)",
+             tmax);
   } else if (!(tmax / dt <= 1e5)) {
-    snprintf(err, n, "tmax/dt = %.3g steps; accepted: at most 1e5 steps of one impact (each "
-             "impact keeps its histories in memory, about 30 MB at 1e5 steps)", tmax / dt);
+    snprintf(err, n,
+             "tmax/dt = %.3g steps; accepted: at most 1e5 steps of one impact (each "
+             "impact keeps its histories in memory, about 30 MB at 1e5 steps)",
+             tmax / dt);
   } else if (!isnan(settle_dt) && !(settle_dt >= dt && settle_dt <= 0.01)) {
-    snprintf(err, n, "settle_dt %g s is out of range; accepted: [dt, 0.01] s = [%g, 0.01] s "
+    snprintf(err, n,
+             "settle_dt %g s is out of range; accepted: [dt, 0.01] s = [%g, 0.01] s "
              "(the stance never settles with a finer step than the impact's, and 1 s of settling "
-             "needs at least 100 steps)", settle_dt, dt);
+             "needs at least 100 steps)",
+             settle_dt, dt);
   } else if (!(window > 0)) {
-    snprintf(err, n, "window %g s is out of range; accepted: > 0 s (an impact ends this long "
-             "after its first contact)", window);
+    snprintf(err, n,
+             "window %g s is out of range; accepted: > 0 s (an impact ends this long "
+             "after its first contact)",
+             window);
   } else {
     if (n) err[0] = 0;
     return 0;
@@ -606,7 +622,8 @@ int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iter
   s->m = m;
   int drone = m->roles.drone;
   if (drone < 0 || m->body[drone].jtype != urJNT_FREE || m->body[drone].parent >= 0) {
-    snprintf(s->err, sizeof s->err, "the model declares no drone: add 'role drone=BODY' (its "
+    snprintf(s->err, sizeof s->err,
+             "the model declares no drone: add 'role drone=BODY' (its "
              "root body, free joint)");
     return -2;
   }
@@ -615,7 +632,7 @@ int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iter
     snprintf(s->err, sizeof s->err, "out of memory");
     return -2;
   }
-  urStance* st = stance_new(m, drone, settle_time, iters);   /* before balancing */
+  urStance* st = stance_new(m, drone, settle_time, iters); /* before balancing */
   park(m, d, drone);
   double low = drone_low(m, d, drone);
   int apart = trees_apart(m, drone);

@@ -6,17 +6,16 @@
 
 #include "uasrisk/injury.h"
 
-#define NBUF 10                    /* work buffers of n doubles: 8 conditioned channels, then the
+#define NBUF                                                                                       \
+  10 /* work buffers of n doubles: 8 conditioned channels, then the
                                       criteria's work space (n doubles and the HIC work) */
 
-int ur_injury_work_size(int n)
-{
+int ur_injury_work_size(int n) {
   return n > 0 ? (NBUF - 1) * n + ur_hic_work_size(n) : 0;
 }
 
 /* 1 if t is uniformly spaced (relative 1e-6), step in *dt */
-static int uniform_step(const double* t, int n, double* dt)
-{
+static int uniform_step(const double* t, int n, double* dt) {
   *dt = n > 1 ? (t[n - 1] - t[0]) / (n - 1) : 0;
   if (!(*dt > 0)) {
     return 0;
@@ -30,9 +29,8 @@ static int uniform_step(const double* t, int n, double* dt)
 }
 
 /* copy a channel, filtered if asked; NULL stays NULL */
-static const double* condition(const double* x, int n, int filt, double dt, double cfc,
-                               double* buf, int* err)
-{
+static const double* condition(const double* x, int n, int filt, double dt, double cfc, double* buf,
+                               int* err) {
   if (!x || !filt) {
     return x;
   }
@@ -43,8 +41,7 @@ static const double* condition(const double* x, int n, int filt, double dt, doub
 }
 
 int ur_injury_eval(const urInjuryInput* in, const urInjuryParams* p, double* work,
-                   urInjuryResult* out)
-{
+                   urInjuryResult* out) {
   if (!in || !p || !out || !in->t || in->n < 1) {
     return -1;
   }

@@ -9,8 +9,7 @@ typedef struct {
   double a0, a1, a2, b1, b2;
 } urCfcCoef;
 
-static int cfc_coef(double cfc, double dt, urCfcCoef* c)
-{
+static int cfc_coef(double cfc, double dt, urCfcCoef* c) {
   // the analogue cut-off of one pass is 2.0775 CFC; prewarp with the step
   double wd = 2.0 * M_PI * cfc * 2.0775;
   double arg = wd * dt / 2.0;
@@ -29,8 +28,7 @@ static int cfc_coef(double cfc, double dt, urCfcCoef* c)
   return 0;
 }
 
-int ur_cfc_filter(const double* x, int n, double dt, double cfc, double* y)
-{
+int ur_cfc_filter(const double* x, int n, double dt, double cfc, double* y) {
   urCfcCoef c;
   if (!x || !y || n < 1 || cfc_coef(cfc, dt, &c)) {
     return -1;
@@ -62,8 +60,7 @@ int ur_cfc_filter(const double* x, int n, double dt, double cfc, double* y)
   return 0;
 }
 
-double ur_cfc_gain(double cfc, double dt, double f)
-{
+double ur_cfc_gain(double cfc, double dt, double f) {
   urCfcCoef c;
   if (cfc_coef(cfc, dt, &c) || f < 0 || !(f * dt < 0.5)) {
     return -1;

@@ -14,16 +14,17 @@
 
 #include "uasrisk/injury.h"
 
-typedef struct { double bound, am, vm; int i; } hicStart;
+typedef struct {
+  double bound, am, vm;
+  int i;
+} hicStart;
 
 /* max-heap of starts by bound (ties: smaller i first) */
-static int above(const hicStart* a, const hicStart* b)
-{
+static int above(const hicStart* a, const hicStart* b) {
   return a->bound > b->bound || (a->bound == b->bound && a->i < b->i);
 }
 
-static void sift_down(hicStart* h, int n, int k)
-{
+static void sift_down(hicStart* h, int n, int k) {
   for (;;) {
     int c = 2 * k + 1;
     if (c >= n) {
@@ -42,8 +43,7 @@ static void sift_down(hicStart* h, int n, int k)
   }
 }
 
-int ur_hic(const double* t, const double* a, int n, double window, double* work, urHic* out)
-{
+int ur_hic(const double* t, const double* a, int n, double window, double* work, urHic* out) {
   if (!t || !a || !out || n < 1 || !(window > 0)) {
     return -1;
   }
@@ -164,8 +164,7 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
   return 0;
 }
 
-int ur_hic_work_size(int n)
-{
+int ur_hic_work_size(int n) {
   // n doubles, n starts {3 doubles, int} (4 doubles each), 2 n ints (1 double each, rounded up)
   return n > 0 ? 6 * n : 0;
 }

@@ -3,8 +3,7 @@
 
 #include "uasrisk/injury.h"
 
-urNijMode ur_nij_mode(double fz, double moc)
-{
+urNijMode ur_nij_mode(double fz, double moc) {
   // tension/compression by Fz, flexion/extension by the moment at the condyle
   if (fz >= 0) {
     return moc >= 0 ? urNIJ_NTF : urNIJ_NTE;
@@ -12,22 +11,20 @@ urNijMode ur_nij_mode(double fz, double moc)
   return moc >= 0 ? urNIJ_NCF : urNIJ_NCE;
 }
 
-double ur_nij_sample(double fz, double moc, const urInjuryParams* p)
-{
+double ur_nij_sample(double fz, double moc, const urInjuryParams* p) {
   // intercepts chosen by the signs
   double fzc = fz >= 0 ? p->nij_fzc_tension : p->nij_fzc_compression;
   double myc = moc >= 0 ? p->nij_myc_flexion : p->nij_myc_extension;
   return fabs(fz) / fzc + fabs(moc) / myc;
 }
 
-int ur_nij(const double* fz, const double* my, const double* fx, int n,
-           const urInjuryParams* p, urNij* out)
-{
+int ur_nij(const double* fz, const double* my, const double* fx, int n, const urInjuryParams* p,
+           urNij* out) {
   if (!fz || !my || !p || !out || n < 1) {
     return -1;
   }
-  if (!(p->nij_fzc_tension > 0) || !(p->nij_fzc_compression > 0) ||
-      !(p->nij_myc_flexion > 0) || !(p->nij_myc_extension > 0)) {
+  if (!(p->nij_fzc_tension > 0) || !(p->nij_fzc_compression > 0) || !(p->nij_myc_flexion > 0) ||
+      !(p->nij_myc_extension > 0)) {
     return -1;
   }
 

@@ -7,13 +7,11 @@
 #include "uasrisk/injury.h"
 
 /* logistic 1 / (1 + exp(alpha - beta x)) */
-static double logistic(double alpha, double beta, double x)
-{
+static double logistic(double alpha, double beta, double x) {
   return gsl_cdf_logistic_P(beta * x - alpha, 1.0);
 }
 
-double ur_pof_hic(double hic, const urInjuryParams* p)
-{
+double ur_pof_hic(double hic, const urInjuryParams* p) {
   // P(AIS4+) = 1 / (1 + exp(alpha + 200/HIC - beta HIC)), zero limit at HIC -> 0
   if (!(hic > 0)) {
     return 0;
@@ -21,8 +19,7 @@ double ur_pof_hic(double hic, const urInjuryParams* p)
   return gsl_cdf_logistic_P(p->hic_beta * hic - p->hic_alpha - 200.0 / hic, 1.0);
 }
 
-void ur_nij_ais(double nij, const urInjuryParams* p, double q[4])
-{
+void ur_nij_ais(double nij, const urInjuryParams* p, double q[4]) {
   // raw Eppinger curves, optionally rescaled to 0 at Nij = 0
   for (int k = 0; k < 4; k++) {
     double a = p->nij_alpha[k], b = p->nij_beta[k];
@@ -46,8 +43,7 @@ void ur_nij_ais(double nij, const urInjuryParams* p, double q[4])
   }
 }
 
-double ur_pof_nij(double nij, const urInjuryParams* p)
-{
+double ur_pof_nij(double nij, const urInjuryParams* p) {
   // P{F|0} = 0 by the paper's condition (i)
   if (!(nij > 0)) {
     return 0;
@@ -56,12 +52,11 @@ double ur_pof_nij(double nij, const urInjuryParams* p)
   // (C.3): sum of P{F|AIS=k} P{AIS=k|N} plus P{F|AIS=6} P{AIS>=5|N}
   double q[4];
   ur_nij_ais(nij, p, q);
-  return p->pof_ais2 * (q[0] - q[1]) + p->pof_ais3 * (q[1] - q[2]) +
-         p->pof_ais4 * (q[2] - q[3]) + p->pof_ais6 * q[3];
+  return p->pof_ais2 * (q[0] - q[1]) + p->pof_ais3 * (q[1] - q[2]) + p->pof_ais4 * (q[2] - q[3]) +
+         p->pof_ais6 * q[3];
 }
 
-double ur_pof_vc(double vc, urRegion region, const urInjuryParams* p)
-{
+double ur_pof_vc(double vc, urRegion region, const urInjuryParams* p) {
   if (!(vc > 0)) {
     return 0;
   }
@@ -81,16 +76,14 @@ double ur_pof_vc(double vc, urRegion region, const urInjuryParams* p)
   return f * q;
 }
 
-double ur_pof_vc_fuse(double p_thorax, double p_abdomen, const urInjuryParams* p)
-{
+double ur_pof_vc_fuse(double p_thorax, double p_abdomen, const urInjuryParams* p) {
   if (p->vc_fuse == urVCFUSE_MAX) {
     return fmax(p_thorax, p_abdomen);
   }
   return 1.0 - (1.0 - p_thorax) * (1.0 - p_abdomen);
 }
 
-double ur_pof_defl(double d, const urInjuryParams* p)
-{
+double ur_pof_defl(double d, const urInjuryParams* p) {
   if (!(d > 0)) {
     return 0;
   }
@@ -101,34 +94,25 @@ double ur_pof_defl(double d, const urInjuryParams* p)
   return p->defl_pof * (q - q0) / (1.0 - q0);
 }
 
-double ur_pof_fuse(double p_hic, double p_nij, double p_vc)
-{
+double ur_pof_fuse(double p_hic, double p_nij, double p_vc) {
   // (3.1), independent criteria
   return 1.0 - (1.0 - p_hic) * (1.0 - p_nij) * (1.0 - p_vc);
 }
 
 /* one point of a curve */
-static double curve_eval(urPofKind kind, const urInjuryParams* p, double x)
-{
+static double curve_eval(urPofKind kind, const urInjuryParams* p, double x) {
   switch (kind) {
-  case urPOF_HIC:
-    return ur_pof_hic(x, p);
-  case urPOF_NIJ:
-    return ur_pof_nij(x, p);
-  case urPOF_VC:
-    return ur_pof_vc_fuse(ur_pof_vc(x, urTHORAX, p), ur_pof_vc(x, urABDOMEN, p), p);
-  case urPOF_VC_THORAX:
-    return ur_pof_vc(x, urTHORAX, p);
-  case urPOF_VC_ABDOMEN:
-    return ur_pof_vc(x, urABDOMEN, p);
-  case urPOF_DEFL:
-    return ur_pof_defl(x, p);
+  case urPOF_HIC: return ur_pof_hic(x, p);
+  case urPOF_NIJ: return ur_pof_nij(x, p);
+  case urPOF_VC: return ur_pof_vc_fuse(ur_pof_vc(x, urTHORAX, p), ur_pof_vc(x, urABDOMEN, p), p);
+  case urPOF_VC_THORAX: return ur_pof_vc(x, urTHORAX, p);
+  case urPOF_VC_ABDOMEN: return ur_pof_vc(x, urABDOMEN, p);
+  case urPOF_DEFL: return ur_pof_defl(x, p);
   }
   return 0;
 }
 
-int ur_pof_curve(urPofKind kind, const urInjuryParams* p, int n, double* x, double* prob)
-{
+int ur_pof_curve(urPofKind kind, const urInjuryParams* p, int n, double* x, double* prob) {
   if (!p || !x || !prob || n < 2 || (int)kind < 0 || (int)kind > (int)urPOF_DEFL) {
     return -1;
   }

@@ -4,8 +4,7 @@
 #include "uasrisk/injury.h"
 
 /* derivative at i by the three-point formula on possibly non-uniform samples */
-static double deriv3(const double* t, const double* d, int n, int i)
-{
+static double deriv3(const double* t, const double* d, int n, int i) {
   // one-sided at the ends (second order), central otherwise
   int k = i == 0 ? 1 : (i == n - 1 ? n - 2 : i);
   double h1 = t[k] - t[k - 1], h2 = t[k + 1] - t[k];
@@ -22,9 +21,7 @@ static double deriv3(const double* t, const double* d, int n, int i)
          ((2 * h2 + h1) / (h2 * (h1 + h2))) * d2;
 }
 
-int ur_vc(const double* t, const double* d, int n, double d0, double sf, double* vct,
-          urVc* out)
-{
+int ur_vc(const double* t, const double* d, int n, double d0, double sf, double* vct, urVc* out) {
   if (!t || !d || !out || n < 3 || !(d0 > 0)) {
     return -1;
   }

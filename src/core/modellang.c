@@ -10,44 +10,48 @@
 #include "uasrisk/modellang.h"
 #include "modellang_internal.h"
 
-#define MAXKEY   20                /* keys of one statement kind */
-#define MSGLEN   512               /* internal message buffer */
-#define MAXLIST  64                /* names in one list of 'pairs' */
-#define NUMLEN   400               /* longest number accepted, characters */
+#define MAXKEY  20  /* keys of one statement kind */
+#define MSGLEN  512 /* internal message buffer */
+#define MAXLIST 64  /* names in one list of 'pairs' */
+#define NUMLEN  400 /* longest number accepted, characters */
 
 static const char* const keywords =
-  "param, option, curve, body, restraint, ellipsoid, law, pair, pairs, airbag, sensor, part, "
-  "role, preset";
+    "param, option, curve, body, restraint, ellipsoid, law, pair, pairs, airbag, sensor, part, "
+    "role, preset";
 static const char* const expect_num =
-  "expected a decimal number such as 12, -0.5 or 2.5e-3, or $param";
+    "expected a decimal number such as 12, -0.5 or 2.5e-3, or $param";
 static const char* const expect_name =
-  "expected letters, digits, '_' or '.', starting with a letter or '_', at most 31 characters";
+    "expected letters, digits, '_' or '.', starting with a letter or '_', at most 31 characters";
 
 //---------------------------------- tables --------------------------------------------------------
 
 /* kinds of names */
 enum {
-  SYM_PARAM = 0, SYM_CURVE, SYM_LAW, SYM_BODY, SYM_JOINT, SYM_ELLIPSOID, SYM_PAIR, SYM_AIRBAG,
-  SYM_SENSOR, SYM_PART, SYM_PRESET
+  SYM_PARAM = 0,
+  SYM_CURVE,
+  SYM_LAW,
+  SYM_BODY,
+  SYM_JOINT,
+  SYM_ELLIPSOID,
+  SYM_PAIR,
+  SYM_AIRBAG,
+  SYM_SENSOR,
+  SYM_PART,
+  SYM_PRESET
 };
-static const char* const symkind[] = {
-  "parameter", "curve", "law", "body", "joint", "ellipsoid", "pair", "airbag", "sensor", "part",
-  "preset"
-};
-static const char* const symkinds[] = {
-  "parameters", "curves", "laws", "bodies", "joints", "ellipsoids", "pairs", "airbags", "sensors",
-  "parts", "presets"
-};
+static const char* const symkind[] = {"parameter", "curve",  "law",    "body", "joint", "ellipsoid",
+                                      "pair",      "airbag", "sensor", "part", "preset"};
+static const char* const symkinds[] = {"parameters", "curves",     "laws",   "bodies",
+                                       "joints",     "ellipsoids", "pairs",  "airbags",
+                                       "sensors",    "parts",      "presets"};
 
 /* the most elements of each kind a model may have (uasrisk-model(5), LIMITS): a model of the
    person and a drone has tens of bodies and a few hundred pairs; the limits keep the largest
    model parsing and compiling within about a second (the builder checks each new name among
    the elements of its kind) */
-static const int limit[] = {
-  4000, 4000, 4000, 1000, 0, 2000, 5000, 64, 1000, 256, 64
-};
+static const int limit[] = {4000, 4000, 4000, 1000, 0, 2000, 5000, 64, 1000, 256, 64};
 _Static_assert(sizeof limit / sizeof limit[0] == sizeof symkind / sizeof symkind[0] &&
-               sizeof symkinds / sizeof symkinds[0] == sizeof symkind / sizeof symkind[0],
+                   sizeof symkinds / sizeof symkinds[0] == sizeof symkind / sizeof symkind[0],
                "a kind of name without its limit or plural");
 
 /* units: name, factor to SI, and the SI unit it is in */
@@ -56,12 +60,11 @@ static const struct {
   double f;
   const char* si;
 } units[] = {
-  {"m", 1, "m"}, {"mm", 1e-3, "m"}, {"cm", 1e-2, "m"}, {"kg", 1, "kg"}, {"g", 1e-3, "kg"},
-  {"s", 1, "s"}, {"ms", 1e-3, "s"}, {"N", 1, "N"}, {"kN", 1e3, "N"}, {"Pa", 1, "Pa"},
-  {"kPa", 1e3, "Pa"}, {"MPa", 1e6, "Pa"}, {"GPa", 1e9, "Pa"}, {"atm", 101325, "Pa"},
-  {"bar", 1e5, "Pa"}, {"deg", M_PI/180, "rad"}, {"rad", 1, "rad"}, {"J", 1, "J"},
-  {"L", 1e-3, "m^3"}, {"none", 1, ""}
-};
+    {"m", 1, "m"},      {"mm", 1e-3, "m"},     {"cm", 1e-2, "m"},  {"kg", 1, "kg"},
+    {"g", 1e-3, "kg"},  {"s", 1, "s"},         {"ms", 1e-3, "s"},  {"N", 1, "N"},
+    {"kN", 1e3, "N"},   {"Pa", 1, "Pa"},       {"kPa", 1e3, "Pa"}, {"MPa", 1e6, "Pa"},
+    {"GPa", 1e9, "Pa"}, {"atm", 101325, "Pa"}, {"bar", 1e5, "Pa"}, {"deg", M_PI / 180, "rad"},
+    {"rad", 1, "rad"},  {"J", 1, "J"},         {"L", 1e-3, "m^3"}, {"none", 1, ""}};
 
 /* a unit: units of the table joined by '*' and '/' (N*m/rad, kN/m); the factor to SI and the
    SI unit (si may be NULL) */
@@ -79,8 +82,11 @@ int ur_unit_parse(const char* unit, double* factor, char* si, size_t n) {
     if (!strcmp(units[i].name, "none") && strlen(unit) != 4) return -1;
     f = op == '*' ? f * units[i].f : f / units[i].f;
     if (si && *units[i].si) {
-      k += (size_t)snprintf(si + k, k < n ? n - k : 0, "%s%s", k ? (op == '*' ? "*" : "/") :
-                            op == '/' ? "1/" : "", units[i].si);
+      k += (size_t)snprintf(si + k, k < n ? n - k : 0, "%s%s",
+                            k           ? (op == '*' ? "*" : "/")
+                            : op == '/' ? "1/"
+                                        : "",
+                            units[i].si);
     }
     if (!s[len]) break;
     op = s[len];
@@ -97,92 +103,130 @@ int ur_unit_si(const char* unit, double* factor) {
 
 /* kinds of values */
 enum {
-  K_NUM = 0,                       /* one number */
-  K_INT,                           /* one whole number >= 0 */
-  K_FLAG,                          /* 0 or 1 */
-  K_VEC,                           /* n numbers (or n2) */
-  K_LIST,                          /* n2..n numbers */
-  K_NAME,                          /* one name */
-  K_NAMES,                         /* n2..n names */
-  K_ENUM                           /* one of the words in enums */
+  K_NUM = 0, /* one number */
+  K_INT,     /* one whole number >= 0 */
+  K_FLAG,    /* 0 or 1 */
+  K_VEC,     /* n numbers (or n2) */
+  K_LIST,    /* n2..n numbers */
+  K_NAME,    /* one name */
+  K_NAMES,   /* n2..n names */
+  K_ENUM     /* one of the words in enums */
 };
 
 /* one key of a statement */
 typedef struct {
   const char* key;
   int kind;
-  int n, n2;                       /* counts, see the kinds */
-  int req;                         /* 1: required */
-  const char* enums;               /* K_ENUM: words separated by '|' */
+  int n, n2;         /* counts, see the kinds */
+  int req;           /* 1: required */
+  const char* enums; /* K_ENUM: words separated by '|' */
 } KeySpec;
 
 /* shorthands for the key tables */
-#define NUM(k)        {k, K_NUM, 1, 0, 0, NULL}
-#define NUMR(k)       {k, K_NUM, 1, 0, 1, NULL}
-#define VEC3(k)       {k, K_VEC, 3, 0, 0, NULL}
-#define VEC3R(k)      {k, K_VEC, 3, 0, 1, NULL}
-#define QUAT          {"quat", K_VEC, 4, 0, 0, NULL}
-#define ROT           {"rot", K_VEC, 4, 0, 0, NULL}
-#define NAMER(k)      {k, K_NAME, 1, 0, 1, NULL}
-#define NAME(k)       {k, K_NAME, 1, 0, 0, NULL}
-#define FLAG(k)       {k, K_FLAG, 1, 0, 0, NULL}
-#define ENABLE        FLAG("enable")
-#define FRICTION      NUM("damping"), NUM("chi"), NUM("mu"), NUM("v_eps")
-#define NKEY(a)       ((int)(sizeof(a)/sizeof(a[0])))
+#define NUM(k)                                                                                     \
+  { k, K_NUM, 1, 0, 0, NULL }
+#define NUMR(k)                                                                                    \
+  { k, K_NUM, 1, 0, 1, NULL }
+#define VEC3(k)                                                                                    \
+  { k, K_VEC, 3, 0, 0, NULL }
+#define VEC3R(k)                                                                                   \
+  { k, K_VEC, 3, 0, 1, NULL }
+#define QUAT                                                                                       \
+  { "quat", K_VEC, 4, 0, 0, NULL }
+#define ROT                                                                                        \
+  { "rot", K_VEC, 4, 0, 0, NULL }
+#define NAMER(k)                                                                                   \
+  { k, K_NAME, 1, 0, 1, NULL }
+#define NAME(k)                                                                                    \
+  { k, K_NAME, 1, 0, 0, NULL }
+#define FLAG(k)                                                                                    \
+  { k, K_FLAG, 1, 0, 0, NULL }
+#define ENABLE   FLAG("enable")
+#define FRICTION NUM("damping"), NUM("chi"), NUM("mu"), NUM("v_eps")
+#define NKEY(a)  ((int)(sizeof(a) / sizeof(a[0])))
 
-static const KeySpec spec_option[] = {
-  NUM("dt"), NUM("sample_dt"), NUM("tmax"), NUM("t_quiet"), NUM("t_clear"), NUM("a_clear"),
-  NUM("ke_settle"), NUM("vmax"), NUM("jump_margin"), VEC3("gravity"), {"integrator", K_ENUM, 1, 0, 0, "euler|rk4"},
-  {"damping", K_ENUM, 1, 0, 0, "implicit|explicit"}, ENABLE
-};
-static const KeySpec spec_curve[] = {
-  {"x", K_LIST, urMAXCURVE, 2, 1, NULL}, {"y", K_LIST, urMAXCURVE, 2, 1, NULL}, NUM("xscale"),
-  NUM("yscale"), ENABLE
-};
+static const KeySpec spec_option[] = {NUM("dt"),
+                                      NUM("sample_dt"),
+                                      NUM("tmax"),
+                                      NUM("t_quiet"),
+                                      NUM("t_clear"),
+                                      NUM("a_clear"),
+                                      NUM("ke_settle"),
+                                      NUM("vmax"),
+                                      NUM("jump_margin"),
+                                      VEC3("gravity"),
+                                      {"integrator", K_ENUM, 1, 0, 0, "euler|rk4"},
+                                      {"damping", K_ENUM, 1, 0, 0, "implicit|explicit"},
+                                      ENABLE};
+static const KeySpec spec_curve[] = {{"x", K_LIST, urMAXCURVE, 2, 1, NULL},
+                                     {"y", K_LIST, urMAXCURVE, 2, 1, NULL},
+                                     NUM("xscale"),
+                                     NUM("yscale"),
+                                     ENABLE};
 static const KeySpec spec_body[] = {
-  NAMER("parent"),
-  {"joint", K_ENUM, 1, 0, 1, "free|fixed|revolute|universal|spherical|prismatic"},
-  VEC3R("pos"), QUAT, ROT, NUMR("mass"), VEC3("com"), {"inertia", K_VEC, 3, 6, 0, NULL},
-  VEC3("axis"), VEC3("axis2"), NAME("jname"), FLAG("gravity"), ENABLE
-};
-static const KeySpec spec_restraint[] = {
-  {"dof", K_INT, 1, 0, 1, NULL}, NUM("k"), NUM("sat"), NAME("load"), NAME("unload"), NUM("c"),
-  NUM("lo"), NUM("hi"), NUM("kstop"), NUM("cstop"), NUM("x0"), ENABLE
-};
-static const KeySpec spec_ellipsoid[] = {
-  NAMER("body"), VEC3R("pos"), VEC3R("size"), QUAT, ROT, NUM("degree"), ENABLE
-};
-#define LAWTYPE {"type", K_ENUM, 1, 0, 1, "hertz|table|foam"}
-static const KeySpec spec_hertz[] = {
-  LAWTYPE, NUMR("E1"), NUMR("nu1"), NUM("R1"), NUMR("E2"), NUMR("nu2"), NUM("R2"), NUM("sy"),
-  NUM("nu_yield"), FLAG("plastic"), FRICTION, ENABLE
-};
-static const KeySpec spec_table[] = {
-  LAWTYPE, NAMER("load"), NAME("unload"), FRICTION, ENABLE
-};
-static const KeySpec spec_foam[] = {
-  LAWTYPE, NAMER("stress"), NUMR("thickness"), NUMR("unload_r"), NUMR("unload_p"), NUM("lock"),
-  NAME("backing"), FRICTION, ENABLE
-};
-static const KeySpec spec_pair[] = {
-  NAMER("a"), NAMER("b"), NAMER("law"), ENABLE
-};
+    NAMER("parent"),
+    {"joint", K_ENUM, 1, 0, 1, "free|fixed|revolute|universal|spherical|prismatic"},
+    VEC3R("pos"),
+    QUAT,
+    ROT,
+    NUMR("mass"),
+    VEC3("com"),
+    {"inertia", K_VEC, 3, 6, 0, NULL},
+    VEC3("axis"),
+    VEC3("axis2"),
+    NAME("jname"),
+    FLAG("gravity"),
+    ENABLE};
+static const KeySpec spec_restraint[] = {{"dof", K_INT, 1, 0, 1, NULL},
+                                         NUM("k"),
+                                         NUM("sat"),
+                                         NAME("load"),
+                                         NAME("unload"),
+                                         NUM("c"),
+                                         NUM("lo"),
+                                         NUM("hi"),
+                                         NUM("kstop"),
+                                         NUM("cstop"),
+                                         NUM("x0"),
+                                         ENABLE};
+static const KeySpec spec_ellipsoid[] = {NAMER("body"), VEC3R("pos"),  VEC3R("size"), QUAT,
+                                         ROT,           NUM("degree"), ENABLE};
+#define LAWTYPE                                                                                    \
+  { "type", K_ENUM, 1, 0, 1, "hertz|table|foam" }
+static const KeySpec spec_hertz[] = {LAWTYPE,         NUMR("E1"),      NUMR("nu1"), NUM("R1"),
+                                     NUMR("E2"),      NUMR("nu2"),     NUM("R2"),   NUM("sy"),
+                                     NUM("nu_yield"), FLAG("plastic"), FRICTION,    ENABLE};
+static const KeySpec spec_table[] = {LAWTYPE, NAMER("load"), NAME("unload"), FRICTION, ENABLE};
+static const KeySpec spec_foam[] = {LAWTYPE,          NAMER("stress"),  NUMR("thickness"),
+                                    NUMR("unload_r"), NUMR("unload_p"), NUM("lock"),
+                                    NAME("backing"),  FRICTION,         ENABLE};
+static const KeySpec spec_pair[] = {NAMER("a"), NAMER("b"), NAMER("law"), ENABLE};
 static const KeySpec spec_pairs[] = {
-  {"a", K_NAMES, MAXLIST, 1, 1, NULL}, {"b", K_NAMES, MAXLIST, 1, 1, NULL}, NAMER("law"), ENABLE
-};
-static const KeySpec spec_airbag[] = {
-  NAMER("geom"), NUMR("p0"), NUMR("patm"), NUMR("v0"), NUMR("gamma"), NUMR("kappa"),
-  NUMR("thickness"), NUM("fabric_k"), NUM("fabric_c"), NUM("mu"), NUM("v_eps"),
-  {"targets", K_NAMES, urMAXBAGTGT, 1, 1, NULL}, ENABLE
-};
-static const KeySpec spec_role[] = {
-  NAME("drone"), NAME("head"), NAME("head_acc"), NAME("neck"), NAME("head_pos"), NAME("chest"),
-  NAME("abdomen"), NUM("mass"), NUM("size"), ENABLE
-};
+    {"a", K_NAMES, MAXLIST, 1, 1, NULL}, {"b", K_NAMES, MAXLIST, 1, 1, NULL}, NAMER("law"), ENABLE};
+static const KeySpec spec_airbag[] = {NAMER("geom"),
+                                      NUMR("p0"),
+                                      NUMR("patm"),
+                                      NUMR("v0"),
+                                      NUMR("gamma"),
+                                      NUMR("kappa"),
+                                      NUMR("thickness"),
+                                      NUM("fabric_k"),
+                                      NUM("fabric_c"),
+                                      NUM("mu"),
+                                      NUM("v_eps"),
+                                      {"targets", K_NAMES, urMAXBAGTGT, 1, 1, NULL},
+                                      ENABLE};
+static const KeySpec spec_role[] = {NAME("drone"),    NAME("head"),  NAME("head_acc"), NAME("neck"),
+                                    NAME("head_pos"), NAME("chest"), NAME("abdomen"),  NUM("mass"),
+                                    NUM("size"),      ENABLE};
 static const KeySpec spec_sensor[] = {
-  {"type", K_ENUM, 1, 0, 1, "accel|jointload|jointpos|jointvel|contact|airbag|bodypos|bodyvel"},
-  NAMER("obj"), {"dof", K_INT, 1, 0, 0, NULL}, VEC3("pos"), QUAT, ROT, ENABLE
-};
+    {"type", K_ENUM, 1, 0, 1, "accel|jointload|jointpos|jointvel|contact|airbag|bodypos|bodyvel"},
+    NAMER("obj"),
+    {"dof", K_INT, 1, 0, 0, NULL},
+    VEC3("pos"),
+    QUAT,
+    ROT,
+    ENABLE};
 
 //---------------------------------- parser state --------------------------------------------------
 
@@ -190,28 +234,28 @@ static const KeySpec spec_sensor[] = {
 typedef struct {
   int kind;
   char name[urNAMELEN];
-  unsigned hash;                   /* namehash(name): most lookups compare only this */
-  int id;                          /* index in the model or parser table */
+  unsigned hash; /* namehash(name): most lookups compare only this */
+  int id;        /* index in the model or parser table */
   int src, line;
   int enabled;
-  int next;                        /* the symbol before it in its hash chain, or -1 */
+  int next; /* the symbol before it in its hash chain, or -1 */
 } Sym;
 
 /* one parsed value */
 typedef struct {
-  int set;                         /* key given */
-  int line;                        /* line of the word */
-  const char* raw;                 /* text after '=' */
-  int n;                           /* numbers or names */
-  double v[urMAXCURVE];            /* numbers */
-  int e;                           /* K_ENUM: index of the word */
+  int set;              /* key given */
+  int line;             /* line of the word */
+  const char* raw;      /* text after '=' */
+  int n;                /* numbers or names */
+  double v[urMAXCURVE]; /* numbers */
+  int e;                /* K_ENUM: index of the word */
 } Val;
 
 /* one statement with its keys bound to a key table */
 typedef struct {
-  const char* kw;                  /* keyword */
-  const char* what;                /* keyword for the list of keys (law: with its type) */
-  const char* name;                /* NAME or NULL */
+  const char* kw;   /* keyword */
+  const char* what; /* keyword for the list of keys (law: with its type) */
+  const char* name; /* NAME or NULL */
   int line;
   const KeySpec* spec;
   int nspec;
@@ -224,14 +268,14 @@ typedef struct {
   const urOverride* ov;
   int nov;
   urlLex lx;
-  int cur;                         /* statement being parsed */
-  int cursrc;                      /* its source */
+  int cur;    /* statement being parsed */
+  int cursrc; /* its source */
   urModel* m;
   Sym* sym;
   int nsym, capsym;
-  int* chain;                      /* capsym chain heads: the last symbol of each hash */
-  int count[SYM_PRESET + 1];       /* enabled elements of each kind (limits) */
-  const _Atomic int* stop;         /* a stop request (Ctrl-C), polled between statements */
+  int* chain;                /* capsym chain heads: the last symbol of each hash */
+  int count[SYM_PRESET + 1]; /* enabled elements of each kind (limits) */
+  const _Atomic int* stop;   /* a stop request (Ctrl-C), polled between statements */
   urCurve* curve;
   int ncurve, capcurve;
   urLaw* law;
@@ -319,8 +363,8 @@ static int isident(const char* s, size_t n) {
   }
   for (size_t i = 1; i < n; i++) {
     char c = s[i];
-    if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-          c == '_' || c == '.')) {
+    if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+          c == '.')) {
       return 0;
     }
   }
@@ -346,7 +390,7 @@ static int checkname(Parser* p, const char* s, size_t n, int line, const char* w
 static unsigned namehash(const char* s) {
   unsigned h = 2166136261u;
   for (; *s; s++) {
-    h = (h ^ (unsigned char)*s)*16777619u;
+    h = (h ^ (unsigned char)*s) * 16777619u;
   }
   return h;
 }
@@ -372,10 +416,8 @@ static int findsym(const Parser* p, int kind, const char* name, int enabled) {
 
 /* keyword that defines a kind of name */
 static const char* kindword(int kind) {
-  static const char* const kw[] = {
-    "param", "curve", "law", "body", NULL, "ellipsoid", "pair", "airbag", "sensor", "part",
-    "preset"
-  };
+  static const char* const kw[] = {"param", "curve",  "law",    "body", NULL,    "ellipsoid",
+                                   "pair",  "airbag", "sensor", "part", "preset"};
   return kw[kind];
 }
 
@@ -445,23 +487,27 @@ static int declare(Parser* p, int kind, const char* name, int line, int id, int 
     int i = findsym(p, kind, name, 1);
     int persrc = kind == SYM_PARAM || kind == SYM_PART;
     if (i >= 0 && (!persrc || p->sym[i].src == p->cursrc)) {
-      return fail(p, line, "duplicate %s name '%s' (first defined at %s:%d); names must be "
-                  "unique", symkind[kind], name, srcname(p, p->sym[i].src), p->sym[i].line);
+      return fail(p, line,
+                  "duplicate %s name '%s' (first defined at %s:%d); names must be "
+                  "unique",
+                  symkind[kind], name, srcname(p, p->sym[i].src), p->sym[i].line);
     }
   }
   if (enabled && kind != SYM_JOINT && ++p->count[kind] > limit[kind]) {
-    return fail(p, line, "more than %d %s in the model; accepted: at most %d (uasrisk-model(5), "
-                "LIMITS)", limit[kind], symkinds[kind], limit[kind]);
+    return fail(p, line,
+                "more than %d %s in the model; accepted: at most %d (uasrisk-model(5), "
+                "LIMITS)",
+                limit[kind], symkinds[kind], limit[kind]);
   }
   if (p->nsym == p->capsym) {
     /* twice the room, and the chains rebuilt over twice the buckets (a power of two) */
-    int nc = p->capsym ? 2*p->capsym : 64;
-    Sym* s = realloc(p->sym, (size_t)nc*sizeof(Sym));
+    int nc = p->capsym ? 2 * p->capsym : 64;
+    Sym* s = realloc(p->sym, (size_t)nc * sizeof(Sym));
     if (!s) {
       return fail(p, line, "out of memory");
     }
     p->sym = s;
-    int* ch = realloc(p->chain, (size_t)nc*sizeof(int));
+    int* ch = realloc(p->chain, (size_t)nc * sizeof(int));
     if (!ch) {
       return fail(p, line, "out of memory");
     }
@@ -495,15 +541,15 @@ static int declare(Parser* p, int kind, const char* name, int line, int id, int 
 /* append one element to a parser table; returns its index or -1 */
 static int push(Parser* p, void** arr, int* n, int* cap, size_t size, int line) {
   if (*n == *cap) {
-    int nc = *cap ? 2*(*cap) : 16;
-    void* a = realloc(*arr, (size_t)nc*size);
+    int nc = *cap ? 2 * (*cap) : 16;
+    void* a = realloc(*arr, (size_t)nc * size);
     if (!a) {
       return fail(p, line, "out of memory");
     }
     *arr = a;
     *cap = nc;
   }
-  memset((char*)*arr + (size_t)(*n)*size, 0, size);
+  memset((char*)*arr + (size_t)(*n) * size, 0, size);
   return (*n)++;
 }
 
@@ -585,9 +631,10 @@ static int paramref(Parser* p, const char* s, size_t n, int line, const char* ct
   }
   int later = findlater(p, SYM_PARAM, name);
   if (later >= 0) {
-    return fail(p, line, "%s: parameter '%s' used before its definition (at %s:%d); expected "
-                "'param %s VALUE' above this line", ctx, name,
-                srcname(p, p->lx.stmt[later].src), p->lx.stmt[later].line, name);
+    return fail(p, line,
+                "%s: parameter '%s' used before its definition (at %s:%d); expected "
+                "'param %s VALUE' above this line",
+                ctx, name, srcname(p, p->lx.stmt[later].src), p->lx.stmt[later].line, name);
   }
   char hint[96];
   suggest(p, SYM_PARAM, name, hint, sizeof(hint));
@@ -623,8 +670,8 @@ static int number(Parser* p, const char* s, size_t n, int line, const char* ctx,
     return fail(p, line, "%s: '%s' is not a finite number; %s", ctx, quote(s, n).s, expect_num);
   }
   if (tn >= 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) {
-    return fail(p, line, "%s: '%s' is not a decimal number (hexadecimal is not accepted); %s",
-                ctx, quote(s, n).s, expect_num);
+    return fail(p, line, "%s: '%s' is not a decimal number (hexadecimal is not accepted); %s", ctx,
+                quote(s, n).s, expect_num);
   }
 
   /* strict decimal syntax over the whole word */
@@ -641,8 +688,7 @@ static int number(Parser* p, const char* s, size_t n, int line, const char* ctx,
                 quote(s, n).s, quote(s + k, n - k).s, quote(s, k).s, expect_num);
   }
   if (n > NUMLEN) {
-    return fail(p, line, "%s: number '%s' is too long (%d characters)", ctx, quote(s, n).s,
-                (int)n);
+    return fail(p, line, "%s: number '%s' is too long (%d characters)", ctx, quote(s, n).s, (int)n);
   }
 
   /* convert the validated text (correctly rounded); the range must be that of a double */
@@ -656,12 +702,16 @@ static int number(Parser* p, const char* s, size_t n, int line, const char* ctx,
     return fail(p, line, "%s: cannot convert '%s' (C library locale?)", ctx, quote(s, n).s);
   }
   if (!isfinite(x) || (errno == ERANGE && fabs(x) >= 1)) {
-    return fail(p, line, "%s: '%s' is not a finite number (beyond the range of a double, "
-                "about 1.8e308); %s", ctx, quote(s, n).s, expect_num);
+    return fail(p, line,
+                "%s: '%s' is not a finite number (beyond the range of a double, "
+                "about 1.8e308); %s",
+                ctx, quote(s, n).s, expect_num);
   }
   if (errno == ERANGE) {
-    return fail(p, line, "%s: '%s' is too small to be represented (below about 2.2e-308); "
-                "expected 0 or a larger magnitude", ctx, quote(s, n).s);
+    return fail(p, line,
+                "%s: '%s' is too small to be represented (below about 2.2e-308); "
+                "expected 0 or a larger magnitude",
+                ctx, quote(s, n).s);
   }
   *v = x;
   return 0;
@@ -746,8 +796,8 @@ static int value(Parser* p, const KeySpec* ks, Val* v) {
   case K_VEC:
     if (n != ks->n && n != ks->n2) {
       if (ks->n2) {
-        return fail(p, v->line, "key '%s' needs %d or %d numbers (got %d)", ks->key, ks->n,
-                    ks->n2, n);
+        return fail(p, v->line, "key '%s' needs %d or %d numbers (got %d)", ks->key, ks->n, ks->n2,
+                    n);
       }
       return fail(p, v->line, "key '%s' needs %d numbers (got %d)", ks->key, ks->n, n);
     }
@@ -762,14 +812,11 @@ static int value(Parser* p, const KeySpec* ks, Val* v) {
     v->n = n;
     return numbers(p, v->raw, v->line, ctx, v->v, n) < 0 ? -1 : 0;
 
-  case K_NAME:
-    v->n = 1;
-    return checkname(p, v->raw, strlen(v->raw), v->line, ctx);
+  case K_NAME: v->n = 1; return checkname(p, v->raw, strlen(v->raw), v->line, ctx);
 
   case K_NAMES: {
     if (n < ks->n2 || n > ks->n) {
-      return fail(p, v->line, "key '%s' needs %d to %d names (got %d)", ks->key, ks->n2, ks->n,
-                  n);
+      return fail(p, v->line, "key '%s' needs %d to %d names (got %d)", ks->key, ks->n2, ks->n, n);
     }
     const char* s = v->raw;
     for (int i = 0; i < n; i++) {
@@ -812,8 +859,7 @@ static int value(Parser* p, const KeySpec* ks, Val* v) {
 
 /* bind words [first, end) as key=value to a key table: unknown, duplicate and empty keys,
    required keys, enable, values; returns 0, 1 if disabled (values not parsed), or -1 */
-static int bind(Parser* p, const urlStmt* st, int first, const KeySpec* spec, int nspec,
-                Bound* b) {
+static int bind(Parser* p, const urlStmt* st, int first, const KeySpec* spec, int nspec, Bound* b) {
   b->spec = spec;
   b->nspec = nspec;
   memset(b->val, 0, sizeof(b->val));
@@ -841,12 +887,14 @@ static int bind(Parser* p, const urlStmt* st, int first, const KeySpec* spec, in
     if (k == nspec) {
       char list[400];
       keylist(spec, nspec, list, sizeof(list));
-      return fail(p, line, "unknown key '%s' for %s; expected one of %s", quote(s, kl).s,
-                  b->what, list);
+      return fail(p, line, "unknown key '%s' for %s; expected one of %s", quote(s, kl).s, b->what,
+                  list);
     }
     if (b->val[k].set) {
-      return fail(p, line, "duplicate key '%s' (first given on line %d); a key may appear once "
-                  "per statement", spec[k].key, b->val[k].line);
+      return fail(p, line,
+                  "duplicate key '%s' (first given on line %d); a key may appear once "
+                  "per statement",
+                  spec[k].key, b->val[k].line);
     }
     if (!eq[1]) {
       return fail(p, line, "missing value for key '%s'; expected %s=VALUE", spec[k].key,
@@ -931,26 +979,25 @@ static int orientation(Parser* p, const Bound* b, double q[4]) {
     return fail(p, vr->line, "%s '%s': give quat or rot, not both", b->kw, b->name);
   }
   if (vq->set) {
-    double n = sqrt(vq->v[0]*vq->v[0] + vq->v[1]*vq->v[1] + vq->v[2]*vq->v[2] +
-                    vq->v[3]*vq->v[3]);
+    double n =
+        sqrt(vq->v[0] * vq->v[0] + vq->v[1] * vq->v[1] + vq->v[2] * vq->v[2] + vq->v[3] * vq->v[3]);
     if (!(n > 0)) {
-      return fail(p, vq->line, "%s '%s': quat must not be zero; expected w,x,y,z", b->kw,
-                  b->name);
+      return fail(p, vq->line, "%s '%s': quat must not be zero; expected w,x,y,z", b->kw, b->name);
     }
     for (int k = 0; k < 4; k++) {
-      q[k] = vq->v[k]/n;
+      q[k] = vq->v[k] / n;
     }
   }
   if (vr->set) {
-    double n = sqrt(vr->v[0]*vr->v[0] + vr->v[1]*vr->v[1] + vr->v[2]*vr->v[2]);
+    double n = sqrt(vr->v[0] * vr->v[0] + vr->v[1] * vr->v[1] + vr->v[2] * vr->v[2]);
     if (!(n > 0)) {
-      return fail(p, vr->line, "%s '%s': rot axis must not be zero; expected ax,ay,az,deg",
-                  b->kw, b->name);
+      return fail(p, vr->line, "%s '%s': rot axis must not be zero; expected ax,ay,az,deg", b->kw,
+                  b->name);
     }
-    double h = 0.5*vr->v[3]*M_PI/180, s = sin(h);
+    double h = 0.5 * vr->v[3] * M_PI / 180, s = sin(h);
     q[0] = cos(h);
     for (int k = 0; k < 3; k++) {
-      q[k + 1] = s*vr->v[k]/n;
+      q[k + 1] = s * vr->v[k] / n;
     }
   }
   return 0;
@@ -1003,8 +1050,10 @@ static int st_param(Parser* p, const urlStmt* st) {
       for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
         k += (size_t)snprintf(list + k, sizeof(list) - k, "%s%s", i ? ", " : "", units[i].name);
       }
-      return fail(p, ln[3], "param '%s': unknown unit '%s'; expected one of %s, or several "
-                  "joined by * and / (N*m/rad)", w[1], quote(w[3], strlen(w[3])).s, list);
+      return fail(p, ln[3],
+                  "param '%s': unknown unit '%s'; expected one of %s, or several "
+                  "joined by * and / (N*m/rad)",
+                  w[1], quote(w[3], strlen(w[3])).s, list);
     }
     v *= f;
     if (!isfinite(v)) {
@@ -1042,8 +1091,7 @@ static int st_option(Parser* p, const urlStmt* st, Bound* b) {
   }
   urOption* o = &p->m->opt;
   static const char* const pos[] = {"dt", "sample_dt", "tmax", "vmax"};
-  static const char* const nn[] = {"t_quiet", "ke_settle", "jump_margin", "t_clear",
-                                   "a_clear"};
+  static const char* const nn[] = {"t_quiet", "ke_settle", "jump_margin", "t_clear", "a_clear"};
   for (int i = 0; i < 4; i++) {
     const Val* v = get(b, pos[i]);
     if (v->set && !(v->v[0] > 0)) {
@@ -1066,7 +1114,7 @@ static int st_option(Parser* p, const urlStmt* st, Bound* b) {
   o->vmax = num(b, "vmax", o->vmax);
   o->jump_margin = num(b, "jump_margin", o->jump_margin);
   if (vec(b, "gravity")) {
-    memcpy(o->gravity, vec(b, "gravity"), 3*sizeof(double));
+    memcpy(o->gravity, vec(b, "gravity"), 3 * sizeof(double));
   }
   if (get(b, "integrator")->set) {
     o->integrator = get(b, "integrator")->e ? urINT_RK4 : urINT_EULER;
@@ -1088,8 +1136,10 @@ static int st_curve(Parser* p, const Bound* b) {
   }
   for (int i = 1; i < x->n; i++) {
     if (!(x->v[i] > x->v[i - 1])) {
-      return fail(p, x->line, "curve '%s': x must be strictly ascending (x[%d] = %g after "
-                  "x[%d] = %g)", b->name, i + 1, x->v[i], i, x->v[i - 1]);
+      return fail(p, x->line,
+                  "curve '%s': x must be strictly ascending (x[%d] = %g after "
+                  "x[%d] = %g)",
+                  b->name, i + 1, x->v[i], i, x->v[i - 1]);
     }
   }
   static const char* const scales[] = {"xscale", "yscale"};
@@ -1107,8 +1157,8 @@ static int st_curve(Parser* p, const Bound* b) {
   double sx = num(b, "xscale", 1), sy = num(b, "yscale", 1);
   c->n = x->n;
   for (int i = 0; i < x->n; i++) {
-    c->x[i] = sx*x->v[i];
-    c->y[i] = sy*y->v[i];
+    c->x[i] = sx * x->v[i];
+    c->y[i] = sy * y->v[i];
   }
   return 0;
 }
@@ -1144,26 +1194,29 @@ static int st_body(Parser* p, const Bound* b) {
   const Val* vi = get(b, "inertia");
   double I[6] = {0, 0, 0, 0, 0, 0};
   if (vi->set) {
-    memcpy(I, vi->v, (size_t)vi->n*sizeof(double));
-    double d2 = I[0]*I[1] - I[3]*I[3];
-    double d3 = I[0]*(I[1]*I[2] - I[5]*I[5]) - I[3]*(I[3]*I[2] - I[5]*I[4]) +
-                I[4]*(I[3]*I[5] - I[1]*I[4]);
+    memcpy(I, vi->v, (size_t)vi->n * sizeof(double));
+    double d2 = I[0] * I[1] - I[3] * I[3];
+    double d3 = I[0] * (I[1] * I[2] - I[5] * I[5]) - I[3] * (I[3] * I[2] - I[5] * I[4]) +
+                I[4] * (I[3] * I[5] - I[1] * I[4]);
     if (!(I[0] > 0 && d2 > 0 && d3 > 0)) {
-      return fail(p, vi->line, "body '%s': inertia must be positive definite (got xx,yy,zz,"
-                  "xy,xz,yz = %g,%g,%g,%g,%g,%g)", b->name, I[0], I[1], I[2], I[3], I[4], I[5]);
+      return fail(p, vi->line,
+                  "body '%s': inertia must be positive definite (got xx,yy,zz,"
+                  "xy,xz,yz = %g,%g,%g,%g,%g,%g)",
+                  b->name, I[0], I[1], I[2], I[3], I[4], I[5]);
     }
     /* a real mass distribution: no principal moment above the sum of the other two, that is
        J = tr(I)/2 E - I positive semidefinite (its principal minors >= 0, to rounding) */
-    double h = 0.5*(I[0] + I[1] + I[2]), e = 1e-9*h;
+    double h = 0.5 * (I[0] + I[1] + I[2]), e = 1e-9 * h;
     double J[6] = {h - I[0] + e, h - I[1] + e, h - I[2] + e, -I[3], -I[4], -I[5]};
-    double j2 = J[0]*J[1] - J[3]*J[3];
-    double j3 = J[0]*(J[1]*J[2] - J[5]*J[5]) - J[3]*(J[3]*J[2] - J[5]*J[4]) +
-                J[4]*(J[3]*J[5] - J[1]*J[4]);
+    double j2 = J[0] * J[1] - J[3] * J[3];
+    double j3 = J[0] * (J[1] * J[2] - J[5] * J[5]) - J[3] * (J[3] * J[2] - J[5] * J[4]) +
+                J[4] * (J[3] * J[5] - J[1] * J[4]);
     if (!(J[0] > 0 && j2 > 0 && j3 > 0)) {
-      return fail(p, vi->line, "body '%s': inertia is not that of a real body: a principal moment "
+      return fail(p, vi->line,
+                  "body '%s': inertia is not that of a real body: a principal moment "
                   "exceeds the sum of the other two (got xx,yy,zz,xy,xz,yz = %g,%g,%g,%g,%g,%g); "
-                  "expected moments such as a box's or a rod's", b->name, I[0], I[1], I[2], I[3],
-                  I[4], I[5]);
+                  "expected moments such as a box's or a rod's",
+                  b->name, I[0], I[1], I[2], I[3], I[4], I[5]);
     }
   } else if (jt == urJNT_FREE || jt == urJNT_SPHERICAL) {
     return fail(p, b->line, "body '%s': a %s joint needs inertia=xx,yy,zz[,xy,xz,yz]", b->name,
@@ -1174,12 +1227,13 @@ static int st_body(Parser* p, const Bound* b) {
   const Val* va = get(b, "axis");
   const Val* va2 = get(b, "axis2");
   if (va->set && jt != urJNT_REVOLUTE && jt != urJNT_PRISMATIC && jt != urJNT_UNIVERSAL) {
-    return fail(p, va->line, "body '%s': key 'axis' applies only to revolute, prismatic and "
-                "universal joints", b->name);
+    return fail(p, va->line,
+                "body '%s': key 'axis' applies only to revolute, prismatic and "
+                "universal joints",
+                b->name);
   }
   if (va2->set && jt != urJNT_UNIVERSAL) {
-    return fail(p, va2->line, "body '%s': key 'axis2' applies only to universal joints",
-                b->name);
+    return fail(p, va2->line, "body '%s': key 'axis2' applies only to universal joints", b->name);
   }
   const Val* ax[2] = {va, va2};
   for (int k = 0; k < 2; k++) {
@@ -1206,11 +1260,13 @@ static int st_body(Parser* p, const Bound* b) {
 
   /* universal axes must not be parallel (checked after normalisation) */
   const urBody* bd = m->body + id;
-  double c = bd->axis[0][0]*bd->axis[1][0] + bd->axis[0][1]*bd->axis[1][1] +
-             bd->axis[0][2]*bd->axis[1][2];
+  double c = bd->axis[0][0] * bd->axis[1][0] + bd->axis[0][1] * bd->axis[1][1] +
+             bd->axis[0][2] * bd->axis[1][2];
   if (jt == urJNT_UNIVERSAL && fabs(c) > 1 - 1e-9) {
-    return fail(p, va2->set ? va2->line : b->line, "body '%s': universal joint axes are "
-                "parallel; expected two different directions in axis and axis2", b->name);
+    return fail(p, va2->set ? va2->line : b->line,
+                "body '%s': universal joint axes are "
+                "parallel; expected two different directions in axis and axis2",
+                b->name);
   }
   return 0;
 }
@@ -1225,22 +1281,25 @@ static int st_restraint(Parser* p, const Bound* b) {
   }
   const urBody* bd = m->body + id;
   static const int nv[] = {6, 0, 1, 2, 3, 1};
-  static const char* const jn[] = {"free", "fixed", "revolute", "universal", "spherical",
-                                   "prismatic"};
+  static const char* const jn[] = {"free",      "fixed",     "revolute",
+                                   "universal", "spherical", "prismatic"};
   if (bd->jtype == urJNT_FREE || bd->jtype == urJNT_FIXED) {
-    return fail(p, b->line, "restraint '%s': body '%s' has a %s joint; restraints need a "
-                "revolute, universal, spherical or prismatic joint", b->name, b->name,
-                jn[bd->jtype]);
+    return fail(p, b->line,
+                "restraint '%s': body '%s' has a %s joint; restraints need a "
+                "revolute, universal, spherical or prismatic joint",
+                b->name, b->name, jn[bd->jtype]);
   }
   const Val* vd = get(b, "dof");
   int dof = (int)vd->v[0];
   if (dof >= nv[bd->jtype]) {
-    return fail(p, vd->line, "restraint '%s': dof %d is beyond the %s joint (dof 0..%d)",
-                b->name, dof, jn[bd->jtype], nv[bd->jtype] - 1);
+    return fail(p, vd->line, "restraint '%s': dof %d is beyond the %s joint (dof 0..%d)", b->name,
+                dof, jn[bd->jtype], nv[bd->jtype] - 1);
   }
   if (bd->rst[dof].active) {
-    return fail(p, b->line, "restraint '%s': dof %d is already restrained; expected one "
-                "restraint per dof", b->name, dof);
+    return fail(p, b->line,
+                "restraint '%s': dof %d is already restrained; expected one "
+                "restraint per dof",
+                b->name, dof);
   }
 
   /* scalars */
@@ -1306,8 +1365,10 @@ static int st_ellipsoid(Parser* p, const Bound* b) {
   }
   const Val* vb = get(b, "body");
   if (!strcmp(vb->raw, "world")) {
-    return fail(p, vb->line, "ellipsoid '%s': ellipsoids sit on bodies, not on the world; for "
-                "the ground use 'pair ... b=ground'", b->name);
+    return fail(p, vb->line,
+                "ellipsoid '%s': ellipsoids sit on bodies, not on the world; for "
+                "the ground use 'pair ... b=ground'",
+                b->name);
   }
   int body = ref(p, SYM_BODY, vb->raw, vb->line, NULL);
   if (body < 0) {
@@ -1320,9 +1381,10 @@ static int st_ellipsoid(Parser* p, const Bound* b) {
   }
   const Val* vd = get(b, "degree");
   if (vd->set && !(vd->v[0] >= 2 && vd->v[0] <= urMAXDEGREE)) {
-    return fail(p, vd->line, "ellipsoid '%s': degree must be in [2, %d] (got %g); 2 is the "
-                "ellipsoid, larger values flatten it towards a box", b->name, urMAXDEGREE,
-                vd->v[0]);
+    return fail(p, vd->line,
+                "ellipsoid '%s': degree must be in [2, %d] (got %g); 2 is the "
+                "ellipsoid, larger values flatten it towards a box",
+                b->name, urMAXDEGREE, vd->v[0]);
   }
   double q[4];
   if (orientation(p, b, q) || declare(p, SYM_ELLIPSOID, b->name, b->line, m->ngeom, 1)) {
@@ -1343,9 +1405,10 @@ static int curv2(Parser* p, int law, int g, const char* name, int line, const ch
       p->m->geom[g].degree == 2) {
     return 0;
   }
-  return fail(p, line, "%s: ellipsoid '%s' has degree=%g; a Hertz law without R1 and R2 takes "
-              "its radius from the curvature of ellipsoids of degree 2 (give R1 and R2)", what,
-              name, p->m->geom[g].degree);
+  return fail(p, line,
+              "%s: ellipsoid '%s' has degree=%g; a Hertz law without R1 and R2 takes "
+              "its radius from the curvature of ellipsoids of degree 2 (give R1 and R2)",
+              what, name, p->m->geom[g].degree);
 }
 
 
@@ -1355,9 +1418,10 @@ static int degree2(Parser* p, int g, const char* name, int line, const char* wha
     return 0;
   }
   const Sym* sy = p->sym + findsym(p, SYM_ELLIPSOID, name, 1);
-  return fail(p, line, "%s: ellipsoid '%s' (%s:%d) has degree=%g; %s must have degree 2 (its "
-              "section area and cap volume are those of an ellipsoid)", what, name,
-              srcname(p, sy->src), sy->line, p->m->geom[g].degree, role);
+  return fail(p, line,
+              "%s: ellipsoid '%s' (%s:%d) has degree=%g; %s must have degree 2 (its "
+              "section area and cap volume are those of an ellipsoid)",
+              what, name, srcname(p, sy->src), sy->line, p->m->geom[g].degree, role);
 }
 
 
@@ -1392,8 +1456,10 @@ static int st_law(Parser* p, const Bound* b) {
     const Val* r1 = get(b, "R1");
     const Val* r2 = get(b, "R2");
     if (r1->set != r2->set) {
-      return fail(p, (r1->set ? r1 : r2)->line, "law '%s': give R1 and R2, or neither (the radius "
-                  "then comes from the ellipsoids' curvature at the contact)", b->name);
+      return fail(p, (r1->set ? r1 : r2)->line,
+                  "law '%s': give R1 and R2, or neither (the radius "
+                  "then comes from the ellipsoids' curvature at the contact)",
+                  b->name);
     }
     ur_law_hertz(&law, num(b, "E1", 0), num(b, "nu1", 0), num(b, "R1", 0), num(b, "E2", 0),
                  num(b, "nu2", 0), num(b, "R2", 0), num(b, "sy", 0), num(b, "nu_yield", 0),
@@ -1426,8 +1492,7 @@ static int st_law(Parser* p, const Bound* b) {
       return -1;
     }
     if (!(vr->v[0] >= 0 && vr->v[0] < 1)) {
-      return fail(p, vr->line, "law '%s': unload_r must be in [0, 1) (got %g)", b->name,
-                  vr->v[0]);
+      return fail(p, vr->line, "law '%s': unload_r must be in [0, 1) (got %g)", b->name, vr->v[0]);
     }
     law.stress = p->curve[c];
     law.thickness = num(b, "thickness", 0);
@@ -1438,14 +1503,18 @@ static int st_law(Parser* p, const Bound* b) {
     const Val* vk = get(b, "lock");
     const Val* vb = get(b, "backing");
     if (vk->set != vb->set) {
-      return fail(p, (vk->set ? vk : vb)->line, "law '%s': lock and backing go together (the "
-                  "solid foam rests on the backing)", b->name);
+      return fail(p, (vk->set ? vk : vb)->line,
+                  "law '%s': lock and backing go together (the "
+                  "solid foam rests on the backing)",
+                  b->name);
     }
     if (vk->set) {
       double last = law.stress.x[law.stress.n - 1];
       if (!(vk->v[0] > 0 && vk->v[0] < 1 && vk->v[0] <= last)) {
-        return fail(p, vk->line, "law '%s': lock must be in (0, 1) and within the stress curve "
-                    "(last strain %g; got %g)", b->name, last, vk->v[0]);
+        return fail(p, vk->line,
+                    "law '%s': lock must be in (0, 1) and within the stress curve "
+                    "(last strain %g; got %g)",
+                    b->name, last, vk->v[0]);
       }
       int l = ref(p, SYM_LAW, vb->raw, vb->line, "law");
       if (l < 0) {
@@ -1455,8 +1524,10 @@ static int st_law(Parser* p, const Bound* b) {
         return fail(p, vb->line, "law '%s': backing '%s' must be a hertz law", b->name, vb->raw);
       }
       if (p->law[l].radius == urHERTZ_CURVATURE) {
-        return fail(p, vb->line, "law '%s': backing '%s' must give R1 and R2 (a backing has no "
-                    "contact of its own to take a curvature from)", b->name, vb->raw);
+        return fail(p, vb->line,
+                    "law '%s': backing '%s' must give R1 and R2 (a backing has no "
+                    "contact of its own to take a curvature from)",
+                    b->name, vb->raw);
       }
       double K, dy, fy;
       ur_law_hertz_params(p->law + l, &K, &dy, &fy);
@@ -1504,8 +1575,10 @@ static int st_pair(Parser* p, const Bound* b) {
     return -1;
   }
   if (gb >= 0 && m->geom[ga].body == m->geom[gb].body) {
-    return fail(p, vb->line, "pair '%s': a and b are both on body '%s'; expected ellipsoids of "
-                "two bodies", b->name, m->body[m->geom[ga].body].name);
+    return fail(p, vb->line,
+                "pair '%s': a and b are both on body '%s'; expected ellipsoids of "
+                "two bodies",
+                b->name, m->body[m->geom[ga].body].name);
   }
   char what[urNAMELEN + 16];
   snprintf(what, sizeof(what), "pair '%s'", b->name);
@@ -1566,14 +1639,17 @@ static int st_pairs(Parser* p, const Bound* b) {
         return -1;
       }
       if (pairname(pn, b->name, na, nb)) {
-        return fail(p, b->line, "pairs '%s': the pair name '%s_%s_%s' is too long (%d "
-                    "characters, at most %d); shorten NAME or the ellipsoid names", b->name,
-                    b->name, na, nb, (int)(strlen(b->name) + strlen(na) + strlen(nb) + 2),
+        return fail(p, b->line,
+                    "pairs '%s': the pair name '%s_%s_%s' is too long (%d "
+                    "characters, at most %d); shorten NAME or the ellipsoid names",
+                    b->name, b->name, na, nb, (int)(strlen(b->name) + strlen(na) + strlen(nb) + 2),
                     urNAMELEN - 1);
       }
       if (gb >= 0 && m->geom[ga].body == m->geom[gb].body) {
-        return fail(p, vb->line, "pairs '%s': '%s' and '%s' are both on body '%s'; expected "
-                    "ellipsoids of two bodies", b->name, na, nb, m->body[m->geom[ga].body].name);
+        return fail(p, vb->line,
+                    "pairs '%s': '%s' and '%s' are both on body '%s'; expected "
+                    "ellipsoids of two bodies",
+                    b->name, na, nb, m->body[m->geom[ga].body].name);
       }
       if (declare(p, SYM_PAIR, pn, b->line, m->npair, 1)) {
         return -1;
@@ -1595,8 +1671,8 @@ static int pairs_disabled(Parser* p, const Bound* b, int line) {
   for (int i = 0; i < na && na <= MAXLIST && nb <= MAXLIST; i++) {
     for (int j = 0; j < nb; j++) {
       char x[urNAMELEN], y[urNAMELEN], pn[urNAMELEN];
-      if (!item(ra, i, x, sizeof(x)) && !item(rb, j, y, sizeof(y)) &&
-          isident(x, strlen(x)) && isident(y, strlen(y)) && !pairname(pn, b->name, x, y) &&
+      if (!item(ra, i, x, sizeof(x)) && !item(rb, j, y, sizeof(y)) && isident(x, strlen(x)) &&
+          isident(y, strlen(y)) && !pairname(pn, b->name, x, y) &&
           declare(p, SYM_PAIR, pn, line, -1, 0)) {
         return -1;
       }
@@ -1653,8 +1729,8 @@ static int st_airbag(Parser* p, const Bound* b) {
       return -1;
     }
     if (m->geom[g].body == m->geom[bag.geom].body) {
-      return fail(p, vt->line, "airbag '%s': target '%s' is on the bag's own body '%s'",
-                  b->name, name, m->body[m->geom[g].body].name);
+      return fail(p, vt->line, "airbag '%s': target '%s' is on the bag's own body '%s'", b->name,
+                  name, m->body[m->geom[g].body].name);
     }
     for (int k = 0; k < i; k++) {
       if (bag.target[k] == g) {
@@ -1710,8 +1786,10 @@ static int st_sensor(Parser* p, const Bound* b) {
   if (onjoint && findsym(p, SYM_JOINT, vo->raw, 1) < 0 && findsym(p, SYM_BODY, vo->raw, 1) >= 0) {
     obj = ref(p, SYM_BODY, vo->raw, vo->line, NULL);
   } else {
-    int kind = onbody ? SYM_BODY : onjoint ? SYM_JOINT :
-               type == urSENS_CONTACT ? SYM_PAIR : SYM_AIRBAG;
+    int kind = onbody                   ? SYM_BODY
+               : onjoint                ? SYM_JOINT
+               : type == urSENS_CONTACT ? SYM_PAIR
+                                        : SYM_AIRBAG;
     obj = ref(p, kind, vo->raw, vo->line, NULL);
   }
   if (obj < 0) {
@@ -1728,10 +1806,13 @@ static int st_sensor(Parser* p, const Bound* b) {
       ok = ok && bd->jtype != urJNT_FREE && bd->jtype != urJNT_SPHERICAL;
     }
     if (!ok) {
-      return fail(p, vd->set ? vd->line : b->line, "sensor '%s': dof %d does not exist on "
-                  "joint '%s'%s", b->name, dof, bd->jname,
+      return fail(p, vd->set ? vd->line : b->line,
+                  "sensor '%s': dof %d does not exist on "
+                  "joint '%s'%s",
+                  b->name, dof, bd->jname,
                   type == urSENS_JOINTPOS ? " (jointpos needs a revolute, universal or "
-                  "prismatic joint)" : "");
+                                            "prismatic joint)"
+                                          : "");
     }
   }
   double q[4];
@@ -1756,15 +1837,16 @@ static int st_role(Parser* p, const urlStmt* st, Bound* b) {
   static const struct {
     const char* key;
     int kind;
-    int type;                      /* sensor type, or -1 */
-  } rk[] = {
-    {"drone", SYM_BODY, -1}, {"head", SYM_ELLIPSOID, -1}, {"head_acc", SYM_SENSOR, urSENS_ACCEL},
-    {"neck", SYM_SENSOR, urSENS_JOINTLOAD}, {"head_pos", SYM_SENSOR, urSENS_BODYPOS},
-    {"chest", SYM_SENSOR, urSENS_JOINTPOS}, {"abdomen", SYM_SENSOR, urSENS_JOINTPOS}
-  };
-  int* slot[] = {&r->drone, &r->head, &r->head_acc, &r->neck, &r->head_pos, &r->chest,
-                 &r->abdomen};
-  for (int i = 0; i < (int)(sizeof(rk)/sizeof(rk[0])); i++) {
+    int type; /* sensor type, or -1 */
+  } rk[] = {{"drone", SYM_BODY, -1},
+            {"head", SYM_ELLIPSOID, -1},
+            {"head_acc", SYM_SENSOR, urSENS_ACCEL},
+            {"neck", SYM_SENSOR, urSENS_JOINTLOAD},
+            {"head_pos", SYM_SENSOR, urSENS_BODYPOS},
+            {"chest", SYM_SENSOR, urSENS_JOINTPOS},
+            {"abdomen", SYM_SENSOR, urSENS_JOINTPOS}};
+  int* slot[] = {&r->drone, &r->head, &r->head_acc, &r->neck, &r->head_pos, &r->chest, &r->abdomen};
+  for (int i = 0; i < (int)(sizeof(rk) / sizeof(rk[0])); i++) {
     const Val* v = get(b, rk[i].key);
     if (!v->set) {
       continue;
@@ -1774,17 +1856,20 @@ static int st_role(Parser* p, const urlStmt* st, Bound* b) {
       return -1;
     }
     if (rk[i].kind == SYM_BODY && r->drone >= 0 && r->drone != id) {
-      return fail(p, v->line, "role drone: the model has a drone already (body '%s'); one model "
-                  "has one drone: drop the other drone's parts first", m->body[r->drone].name);
+      return fail(p, v->line,
+                  "role drone: the model has a drone already (body '%s'); one model "
+                  "has one drone: drop the other drone's parts first",
+                  m->body[r->drone].name);
     }
-    if (rk[i].kind == SYM_BODY &&
-        (m->body[id].parent >= 0 || m->body[id].jtype != urJNT_FREE)) {
-      return fail(p, v->line, "role drone: body '%s' must have a free joint to the world (the "
-                  "drone is placed and launched by it)", v->raw);
+    if (rk[i].kind == SYM_BODY && (m->body[id].parent >= 0 || m->body[id].jtype != urJNT_FREE)) {
+      return fail(p, v->line,
+                  "role drone: body '%s' must have a free joint to the world (the "
+                  "drone is placed and launched by it)",
+                  v->raw);
     }
     if (rk[i].type >= 0 && (int)m->sensor[id].type != rk[i].type) {
-      static const char* const tname[] = {"accel", "jointload", "jointpos", "jointvel",
-                                          "contact", "airbag", "bodypos", "bodyvel"};
+      static const char* const tname[] = {"accel",   "jointload", "jointpos", "jointvel",
+                                          "contact", "airbag",    "bodypos",  "bodyvel"};
       int t = rk[i].type;
       return fail(p, v->line, "role %s: sensor '%s' must be of type=%s", rk[i].key, v->raw,
                   t >= 0 && t < 8 ? tname[t] : "?");
@@ -1799,8 +1884,10 @@ static int st_role(Parser* p, const urlStmt* st, Bound* b) {
       continue;
     }
     if (v->raw[0] != '$') {
-      return fail(p, v->line, "role %s: expected a parameter ($NAME) that the workbench can set, "
-                  "got '%s'", design[i], quote(v->raw, strlen(v->raw)).s);
+      return fail(p, v->line,
+                  "role %s: expected a parameter ($NAME) that the workbench can set, "
+                  "got '%s'",
+                  design[i], quote(v->raw, strlen(v->raw)).s);
     }
     if (!(v->v[0] > 0)) {
       return fail(p, v->line, "role %s: must be > 0 (got %g)", design[i], v->v[0]);
@@ -1815,7 +1902,8 @@ static int st_role(Parser* p, const urlStmt* st, Bound* b) {
    settings (plain numbers, checked by the workbench) */
 static int st_preset(Parser* p, const urlStmt* st) {
   if (st->nword < 2 || strchr(url_word(&p->lx, st->word + 1), '=')) {
-    return fail(p, st->line, "preset needs a NAME before its keys; expected 'preset NAME "
+    return fail(p, st->line,
+                "preset needs a NAME before its keys; expected 'preset NAME "
                 "key=value ...'");
   }
   const char* name = url_word(&p->lx, st->word + 1);
@@ -1823,8 +1911,10 @@ static int st_preset(Parser* p, const urlStmt* st) {
     return -1;
   }
   if (strlen(name) > 7) {
-    return fail(p, st->line, "preset '%s': a preset name has at most 7 characters (it labels "
-                "the rows of tables)", name);
+    return fail(p, st->line,
+                "preset '%s': a preset name has at most 7 characters (it labels "
+                "the rows of tables)",
+                name);
   }
   urPreset pr;
   memset(&pr, 0, sizeof(pr));
@@ -1835,8 +1925,8 @@ static int st_preset(Parser* p, const urlStmt* st) {
     const char* eq = strchr(s, '=');
     size_t kl = eq ? (size_t)(eq - s) : 0;
     if (!eq || kl == 0 || !eq[1]) {
-      return fail(p, line, "preset '%s': expected key=value, got '%s' (no blanks around '=')",
-                  name, quote(s, strlen(s)).s);
+      return fail(p, line, "preset '%s': expected key=value, got '%s' (no blanks around '=')", name,
+                  quote(s, strlen(s)).s);
     }
     char key[urNAMELEN];
     if (checkname(p, s, kl, line, "preset key")) {
@@ -1861,12 +1951,16 @@ static int st_preset(Parser* p, const urlStmt* st) {
     int isref = v[0] == '$' || (v[0] == '-' && v[1] == '$');
     if (!isref && k > 0 && k < vn) {
       if (ur_unit_si(v + k, &f)) {
-        return fail(p, line, "%s: unknown unit '%s'; expected a unit of a param line (atm, kg, "
-                    "mm, ...)", ctx, quote(v + k, vn - k).s);
+        return fail(p, line,
+                    "%s: unknown unit '%s'; expected a unit of a param line (atm, kg, "
+                    "mm, ...)",
+                    ctx, quote(v + k, vn - k).s);
       }
       if (!isparam) {
-        return fail(p, line, "%s: a unit is taken only by model parameters ('%s' is a "
-                    "workbench setting, in the unit its 'show' prints)", ctx, key);
+        return fail(p, line,
+                    "%s: a unit is taken only by model parameters ('%s' is a "
+                    "workbench setting, in the unit its 'show' prints)",
+                    ctx, key);
       }
       vn = k;
     }
@@ -1885,7 +1979,7 @@ static int st_preset(Parser* p, const urlStmt* st) {
   if (declare(p, SYM_PRESET, name, st->line, p->m->npreset, 1)) {
     return -1;
   }
-  urPreset* np = realloc(p->m->preset, (size_t)(p->m->npreset + 1)*sizeof(urPreset));
+  urPreset* np = realloc(p->m->preset, (size_t)(p->m->npreset + 1) * sizeof(urPreset));
   if (!np) {
     return fail(p, st->line, "out of memory");
   }
@@ -1911,7 +2005,7 @@ static int apply_design(Parser* p) {
                m->param[r->mass_param].name, mm);
       return -1;
     }
-    fm = mm/r->mass0;
+    fm = mm / r->mass0;
   }
   if (r->size_param >= 0) {
     fs = m->param[r->size_param].value;
@@ -1922,7 +2016,7 @@ static int apply_design(Parser* p) {
     }
   }
   if (fabs(fm - 1) <= 1e-12) {
-    fm = 1;                        /* the total as written, to rounding: the bodies as written */
+    fm = 1; /* the total as written, to rounding: the bodies as written */
   }
   r->mass_scale = fm;
   r->size_scale = fs;
@@ -1952,11 +2046,9 @@ static int statement(Parser* p, const urlStmt* st) {
   static const struct {
     const char* kw;
     int kind;
-  } elem[] = {
-    {"curve", SYM_CURVE}, {"body", SYM_BODY}, {"restraint", -1}, {"ellipsoid", SYM_ELLIPSOID},
-    {"law", SYM_LAW}, {"pair", SYM_PAIR}, {"airbag", SYM_AIRBAG}, {"sensor", SYM_SENSOR},
-    {"pairs", -1}
-  };
+  } elem[] = {{"curve", SYM_CURVE},         {"body", SYM_BODY},     {"restraint", -1},
+              {"ellipsoid", SYM_ELLIPSOID}, {"law", SYM_LAW},       {"pair", SYM_PAIR},
+              {"airbag", SYM_AIRBAG},       {"sensor", SYM_SENSOR}, {"pairs", -1}};
   const char* kw = url_word(&p->lx, st->word);
   Bound b;
   b.kw = kw;
@@ -1988,7 +2080,7 @@ static int statement(Parser* p, const urlStmt* st) {
   }
 
   /* element statements: KEYWORD NAME key=value... */
-  int e = 0, ne = (int)(sizeof(elem)/sizeof(elem[0]));
+  int e = 0, ne = (int)(sizeof(elem) / sizeof(elem[0]));
   while (e < ne && strcmp(elem[e].kw, kw)) {
     e++;
   }
@@ -2009,14 +2101,38 @@ static int statement(Parser* p, const urlStmt* st) {
   const KeySpec* spec;
   int nspec;
   switch (e) {
-  case 0: spec = spec_curve; nspec = NKEY(spec_curve); break;
-  case 1: spec = spec_body; nspec = NKEY(spec_body); break;
-  case 2: spec = spec_restraint; nspec = NKEY(spec_restraint); break;
-  case 3: spec = spec_ellipsoid; nspec = NKEY(spec_ellipsoid); break;
-  case 5: spec = spec_pair; nspec = NKEY(spec_pair); break;
-  case 6: spec = spec_airbag; nspec = NKEY(spec_airbag); break;
-  case 7: spec = spec_sensor; nspec = NKEY(spec_sensor); break;
-  case 8: spec = spec_pairs; nspec = NKEY(spec_pairs); break;
+  case 0:
+    spec = spec_curve;
+    nspec = NKEY(spec_curve);
+    break;
+  case 1:
+    spec = spec_body;
+    nspec = NKEY(spec_body);
+    break;
+  case 2:
+    spec = spec_restraint;
+    nspec = NKEY(spec_restraint);
+    break;
+  case 3:
+    spec = spec_ellipsoid;
+    nspec = NKEY(spec_ellipsoid);
+    break;
+  case 5:
+    spec = spec_pair;
+    nspec = NKEY(spec_pair);
+    break;
+  case 6:
+    spec = spec_airbag;
+    nspec = NKEY(spec_airbag);
+    break;
+  case 7:
+    spec = spec_sensor;
+    nspec = NKEY(spec_sensor);
+    break;
+  case 8:
+    spec = spec_pairs;
+    nspec = NKEY(spec_pairs);
+    break;
   default: {
     const char* t = NULL;
     for (int w = 2; w < st->nword; w++) {
@@ -2103,7 +2219,8 @@ static int check_overrides(Parser* p) {
               !strcmp(url_word(&p->lx, st->word + 1), name);
     }
     if (!found) {
-      snprintf(p->msg, sizeof(p->msg), "override '%s': no model text defines a parameter of "
+      snprintf(p->msg, sizeof(p->msg),
+               "override '%s': no model text defines a parameter of "
                "that name; expected a name from 'param NAME VALUE' lines",
                quote(name, strlen(name)).s);
       return -1;
@@ -2164,8 +2281,8 @@ urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverrid
     p.cur = i;
     p.cursrc = p.lx.stmt[i].src;
     if (p.stop && *p.stop) {
-      snprintf(p.msg, sizeof(p.msg), "%s:%d: stopped on request (interrupted)", srcname(&p, p.cursrc),
-               p.lx.stmt[i].line);
+      snprintf(p.msg, sizeof(p.msg), "%s:%d: stopped on request (interrupted)",
+               srcname(&p, p.cursrc), p.lx.stmt[i].line);
       rc = -1;
       break;
     }
@@ -2178,8 +2295,8 @@ urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverrid
     rc = apply_design(&p);
   }
   if (!rc && ur_model_compile(p.m)) {
-    snprintf(p.msg, sizeof(p.msg), "%s: the model does not compile: %s",
-             srcname(&p, nsrc - 1), p.m->err);
+    snprintf(p.msg, sizeof(p.msg), "%s: the model does not compile: %s", srcname(&p, nsrc - 1),
+             p.m->err);
     rc = -1;
   }
   release(&p);
@@ -2197,8 +2314,8 @@ urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverrid
 
 //---------------------------------- parts ---------------------------------------------------------
 
-int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart,
-                   char* err, int errlen) {
+int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart, char* err,
+                   int errlen) {
   urlLex lx;
   char msg[MSGLEN];
   memset(&lx, 0, sizeof(lx));
@@ -2225,18 +2342,22 @@ int ur_model_split(const char* text, const char* file, urModelPart* parts, int m
                file, st->line, expect_name);
       rc = -1;
     } else if (nseen == limit[SYM_PART]) {
-      snprintf(msg, sizeof(msg), "%s:%d: more than %d parts; accepted: at most %d "
-               "(uasrisk-model(5), LIMITS)", file, st->line, limit[SYM_PART], limit[SYM_PART]);
+      snprintf(msg, sizeof(msg),
+               "%s:%d: more than %d parts; accepted: at most %d "
+               "(uasrisk-model(5), LIMITS)",
+               file, st->line, limit[SYM_PART], limit[SYM_PART]);
       rc = -1;
-    } else if (!seen && !(seen = malloc(sizeof(int)*(size_t)limit[SYM_PART]))) {
+    } else if (!seen && !(seen = malloc(sizeof(int) * (size_t)limit[SYM_PART]))) {
       snprintf(msg, sizeof(msg), "%s: out of memory", file);
       rc = -1;
     }
     for (int k = 0; !rc && k < nseen; k++) {
       const urlStmt* sk = lx.stmt + seen[k];
       if (!strcmp(url_word(&lx, sk->word + 1), name)) {
-        snprintf(msg, sizeof(msg), "%s:%d: duplicate part name '%s' (first at line %d); names "
-                 "must be unique", file, st->line, name, sk->line);
+        snprintf(msg, sizeof(msg),
+                 "%s:%d: duplicate part name '%s' (first at line %d); names "
+                 "must be unique",
+                 file, st->line, name, sk->line);
         rc = -1;
       }
     }

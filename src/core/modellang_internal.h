@@ -7,22 +7,22 @@
 
 /* one word of a statement: a keyword, a name, a positional value or key=value */
 typedef struct {
-  size_t off;                      /* text offset in urlLex.buf (0-terminated there) */
-  int line;                        /* physical line of its first character */
+  size_t off; /* text offset in urlLex.buf (0-terminated there) */
+  int line;   /* physical line of its first character */
 } urlWord;
 
 /* one statement: a logical line with at least one word */
 typedef struct {
-  int src;                         /* source index given to url_lex */
-  int line;                        /* physical line of the first word */
-  size_t linestart;                /* offset in the source text of that line's first byte */
-  int word;                        /* first word in urlLex.word */
-  int nword;                       /* words */
+  int src;          /* source index given to url_lex */
+  int line;         /* physical line of the first word */
+  size_t linestart; /* offset in the source text of that line's first byte */
+  int word;         /* first word in urlLex.word */
+  int nword;        /* words */
 } urlStmt;
 
 /* statements of any number of texts (append with url_lex, release with url_free) */
 typedef struct {
-  char* buf;                       /* word texts, each 0-terminated */
+  char* buf; /* word texts, each 0-terminated */
   size_t nbuf, capbuf;
   urlWord* word;
   int nword, capword;

@@ -18,11 +18,11 @@ static int reserve(void** arr, size_t* cap, size_t need, size_t size) {
   if (need <= *cap) {
     return 0;
   }
-  size_t nc = *cap ? 2*(*cap) : 64;
+  size_t nc = *cap ? 2 * (*cap) : 64;
   while (nc < need) {
     nc *= 2;
   }
-  void* p = realloc(*arr, nc*size);
+  void* p = realloc(*arr, nc * size);
   if (!p) {
     return -1;
   }
@@ -46,9 +46,9 @@ static int reserve_i(void** arr, int* cap, int need, size_t size) {
 
 /* the logical text of a source: comments and continuations removed, one char per byte kept */
 typedef struct {
-  char* c;                         /* characters; '\n' ends a statement */
-  int* line;                       /* physical line of each character */
-  size_t* off;                     /* offset of each character in the source text */
+  char* c;     /* characters; '\n' ends a statement */
+  int* line;   /* physical line of each character */
+  size_t* off; /* offset of each character in the source text */
   size_t n;
 } Clean;
 
@@ -59,8 +59,8 @@ static int clean(Clean* cl, const char* text, const char* file, int firstline, c
   size_t len = strlen(text);
   cl->n = 0;
   cl->c = malloc(len + 2);
-  cl->line = malloc((len + 2)*sizeof(int));
-  cl->off = malloc((len + 2)*sizeof(size_t));
+  cl->line = malloc((len + 2) * sizeof(int));
+  cl->off = malloc((len + 2) * sizeof(size_t));
   if (!cl->c || !cl->line || !cl->off) {
     snprintf(err, errlen, "%s: out of memory", file);
     return -1;
@@ -81,8 +81,10 @@ static int clean(Clean* cl, const char* text, const char* file, int firstline, c
     if (cont) {
       te--;
       if (!nl || e + 1 >= len) {
-        snprintf(err, errlen, "%s:%d: '\\' at the end of the text continues nothing; "
-                 "expected another line after it", file, line);
+        snprintf(err, errlen,
+                 "%s:%d: '\\' at the end of the text continues nothing; "
+                 "expected another line after it",
+                 file, line);
         return -1;
       }
     }

@@ -47,8 +47,8 @@ int ur_parametric(const urParametricParams* p, double m, double v, double psi_de
   out->planform = p->width * p->length;
   out->mtow_area = p->cfit * m;
   double glide = psi_deg >= 90.0 ? 0.0 : p->person_height / tan(psi);
-  out->gliding = (p->width + p->person_diameter) *
-                 (glide + p->slide + p->length + p->person_diameter);
+  out->gliding =
+      (p->width + p->person_diameter) * (glide + p->slide + p->length + p->person_diameter);
 
   /* RCC per body part; the drone falling on a standing person strikes the head */
   for (int i = 0; i < 3; i++) out->pof_rcc_part[i] = ur_pof_rcc(i, e);

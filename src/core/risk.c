@@ -68,8 +68,9 @@ int ur_dist_check(const urDist* d, char* err, int errlen) {
   case urDIST_WEIBULL: {
     int nor = d->kind == urDIST_NORMAL;
     if (!(d->b > 0) || (!nor && !(d->a > 0)) || !isfinite(d->a) || !isfinite(d->b)) {
-      snprintf(err, errlen, nor ? "normal MEAN SD needs SD > 0" :
-               "weibull SCALE SHAPE needs SCALE > 0 and SHAPE > 0");
+      snprintf(err, errlen,
+               nor ? "normal MEAN SD needs SD > 0"
+                   : "weibull SCALE SHAPE needs SCALE > 0 and SHAPE > 0");
       return -1;
     }
     if (!(cdf(d, d->hi) - cdf(d, d->lo) > 1e-9)) {
@@ -81,8 +82,8 @@ int ur_dist_check(const urDist* d, char* err, int errlen) {
   }
   case urDIST_UNIFORM:
     if (!(d->a < d->b) || d->a < d->lo || d->b > d->hi) {
-      snprintf(err, errlen, "uniform LO HI needs LO < HI within the accepted range [%g, %g]",
-               d->lo, d->hi);
+      snprintf(err, errlen, "uniform LO HI needs LO < HI within the accepted range [%g, %g]", d->lo,
+               d->hi);
       return -1;
     }
     return 0;
@@ -94,8 +95,8 @@ int ur_dist_check(const urDist* d, char* err, int errlen) {
     }
     for (int i = 0; i < d->nval; i++) {
       if (d->val[i] < d->lo || d->val[i] > d->hi) {
-        snprintf(err, errlen, "discrete value %g is outside the accepted range [%g, %g]",
-                 d->val[i], d->lo, d->hi);
+        snprintf(err, errlen, "discrete value %g is outside the accepted range [%g, %g]", d->val[i],
+                 d->lo, d->hi);
         return -1;
       }
       for (int j = 0; j < i; j++) {
@@ -123,8 +124,7 @@ int ur_dist_check(const urDist* d, char* err, int errlen) {
 
 double ur_dist_quantile(const urDist* d, double u) {
   switch (d->kind) {
-  case urDIST_UNIFORM:
-    return d->a + u * (d->b - d->a);
+  case urDIST_UNIFORM: return d->a + u * (d->b - d->a);
   case urDIST_DISCRETE: {
     double sum = 0, cum = 0;
     for (int i = 0; i < d->nval; i++) sum += d->prob[i];
@@ -138,8 +138,10 @@ double ur_dist_quantile(const urDist* d, double u) {
     /* the truncated distribution: u mapped into [F(lo), F(hi)] */
     double lo = d->kind == urDIST_WEIBULL && d->lo < 0 ? 0 : d->lo;
     double fl = cdf(d, lo), fh = cdf(d, d->hi), p = fl + u * (fh - fl), x;
-    if (d->kind == urDIST_NORMAL) x = d->a + gsl_cdf_gaussian_Pinv(p, d->b);
-    else x = gsl_cdf_weibull_Pinv(p, d->a, d->b);
+    if (d->kind == urDIST_NORMAL)
+      x = d->a + gsl_cdf_gaussian_Pinv(p, d->b);
+    else
+      x = gsl_cdf_weibull_Pinv(p, d->a, d->b);
     return x < lo ? lo : x > d->hi ? d->hi : x;
   }
   }
@@ -232,8 +234,8 @@ double ur_mc_first_order(const double* x, const double* y, int n) {
 
 /* ---- response surfaces ---- */
 
-double ur_lattice_interp(int ndim, const int* nnode, const double* const* node,
-                         const double* value, const double* x) {
+double ur_lattice_interp(int ndim, const int* nnode, const double* const* node, const double* value,
+                         const double* x) {
   int lo[16];
   double t[16];
   for (int d = 0; d < ndim; d++) {

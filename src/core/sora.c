@@ -58,8 +58,8 @@ void ur_annexf_ca(const urAnnexFIn* in, urAnnexFOut* out) {
   out->ca = out->a_glide + out->a_slide;
 }
 
-int ur_igrc(double density, double ca, double tlos, double compensation, double* raw,
-            double* raw1, int* igrc, int* igrc_table) {
+int ur_igrc(double density, double ca, double tlos, double compensation, double* raw, double* raw1,
+            int* igrc, int* igrc_table) {
   if (!(density > 0) || !(ca > 0) || !(tlos > 0)) return -1;
   double r = 1 - log10(tlos / ((density * 1e-6) * ca)) - compensation;
   /* to one decimal, ties to even (nearbyint in the default rounding mode, as Python's round) */

@@ -37,12 +37,12 @@
 
 #include "../app/app.h"
 
-#define MAXFREE 24
-#define MAXCASE 4
+#define MAXFREE  24
+#define MAXCASE  4
 #define MAXGROUP 4
-#define MAXALT 4
-#define MAXSET 8
-#define LINELEN 512
+#define MAXALT   4
+#define MAXSET   8
+#define LINELEN  512
 
 typedef struct {
   char name[urNAMELEN];
@@ -50,7 +50,7 @@ typedef struct {
   char unit[16];
 } freeParam;
 
-typedef struct {                   /* one alternative of a discrete group: injury settings */
+typedef struct { /* one alternative of a discrete group: injury settings */
   char label[24];
   int nset;
   char set[MAXSET][urNAMELEN];
@@ -67,9 +67,9 @@ typedef struct {
   char name[8];
   double speed;
   char table[LINELEN];
-  int share;                       /* the HIC-share constraint applies at its centre */
-  urGrid* paper;                   /* the paper's grid, full plane (ura_grid_load) */
-  double pbar;                     /* the paper's mean P over its footprint */
+  int share;     /* the HIC-share constraint applies at its centre */
+  urGrid* paper; /* the paper's grid, full plane (ura_grid_load) */
+  double pbar;   /* the paper's mean P over its footprint */
 } trainCase;
 
 typedef struct {
@@ -78,9 +78,9 @@ typedef struct {
   trainCase k[MAXCASE];
   group g[MAXGROUP];
   double hic_share, threshold, simplex, tol;
-  int maxeval;                     /* evaluations per run of the simplex */
-  int restarts;                    /* new simplices around the best point, while they gain */
-  double gain;                     /* a restart that lowers the loss by less than this ends */
+  int maxeval;  /* evaluations per run of the simplex */
+  int restarts; /* new simplices around the best point, while they gain */
+  double gain;  /* a restart that lowers the loss by less than this ends */
 } spec;
 
 typedef struct {
@@ -92,9 +92,9 @@ typedef struct {
   double bestx[MAXFREE];
   char bestcombo[128];
   double bestpart[MAXCASE], bestshare[MAXCASE];
-  char extra[LINELEN];             /* NAME=VALUE settings given on the command line */
+  char extra[LINELEN]; /* NAME=VALUE settings given on the command line */
   int failed;
-  int use[MAXFREE];                /* the free parameters set (-m: those the model has) */
+  int use[MAXFREE]; /* the free parameters set (-m: those the model has) */
 } fit;
 
 /* ---- the spec ---- */
@@ -179,10 +179,10 @@ static int spec_read(const char* path, spec* s) {
         snprintf(a->label, sizeof a->label, "%s", w[2]);
         if (parse_settings(w[3], a)) rc = spec_fail(path, ln, "expected NAME=VALUE,...", w[3]);
       }
-    } else if (n == 2 && (!strcmp(w[0], "hic_share") || !strcmp(w[0], "threshold") ||
-                          !strcmp(w[0], "simplex") || !strcmp(w[0], "tol") ||
-                          !strcmp(w[0], "maxeval") || !strcmp(w[0], "restarts") ||
-                          !strcmp(w[0], "gain"))) {
+    } else if (n == 2 &&
+               (!strcmp(w[0], "hic_share") || !strcmp(w[0], "threshold") ||
+                !strcmp(w[0], "simplex") || !strcmp(w[0], "tol") || !strcmp(w[0], "maxeval") ||
+                !strcmp(w[0], "restarts") || !strcmp(w[0], "gain"))) {
       double v;
       if (num(w[1], &v)) {
         rc = spec_fail(path, ln, "not a number", w[1]);
@@ -257,8 +257,8 @@ static double cell_p(const urCell* e, const urInjuryParams* ip, double part[urNC
 }
 
 /* mean |dP| over the union footprint / the paper's mean P, and HIC's share at the centre */
-static double case_loss(const spec* s, const trainCase* k, urGrid* ours,
-                        const urInjuryParams* ip, double* share) {
+static double case_loss(const spec* s, const trainCase* k, urGrid* ours, const urInjuryParams* ip,
+                        double* share) {
   const urGrid* pg = k->paper;
   double sum = 0, w = 0, part[urNCRIT];
   for (long j = 0; j < (long)pg->nrow * pg->ncol; j++) {
@@ -283,8 +283,10 @@ static int run_grids(fit* F, const double* x, urGrid** g) {
   uraCtx* c = F->c;
   for (int i = 0; i < s->ncase; i++) {
     char line[4096];
-    int n = snprintf(line, sizeof line, "case %s; set wind 0; set face 0; set step 0.05; "
-                     "set speed %.17g; set angle 90", s->k[i].name, s->k[i].speed);
+    int n = snprintf(line, sizeof line,
+                     "case %s; set wind 0; set face 0; set step 0.05; "
+                     "set speed %.17g; set angle 90",
+                     s->k[i].name, s->k[i].speed);
     for (int j = 0; j < s->nfree; j++) {
       if (F->use[j]) n += snprintf(line + n, sizeof line - n, "; set %s %.17g", s->f[j].name, x[j]);
     }
@@ -390,10 +392,11 @@ static void write_result(fit* F, const char* dir, double seconds) {
     fprintf(out, "# calibrate: %d evaluations (%d failed) in %.0f s; best loss %.5f\n", F->neval,
             F->failed, seconds, F->best);
     for (int i = 0; i < s->ncase; i++) {
-      fprintf(out, "# case %s: mean |dP| / mean P = %.4f (mean |dP| %.4f, the paper's mean P "
-              "%.4f), HIC share at (0,0) %.3f%s\n", s->k[i].name, F->bestpart[i],
-              F->bestpart[i] * s->k[i].pbar, s->k[i].pbar, F->bestshare[i],
-              s->k[i].share ? " (constrained)" : "");
+      fprintf(out,
+              "# case %s: mean |dP| / mean P = %.4f (mean |dP| %.4f, the paper's mean P "
+              "%.4f), HIC share at (0,0) %.3f%s\n",
+              s->k[i].name, F->bestpart[i], F->bestpart[i] * s->k[i].pbar, s->k[i].pbar,
+              F->bestshare[i], s->k[i].share ? " (constrained)" : "");
     }
     fprintf(out, "# injury choices: %s\n", F->bestcombo[0] ? F->bestcombo : "none");
     for (int j = 0; j < s->nfree; j++) {
@@ -419,7 +422,8 @@ int main(int argc, char** argv) {
       if (nload < 8) load[nload++] = optarg;
       break;
     default:
-      fprintf(stderr, "usage: calibrate [-s SPEC] [-o DIR] [-n MAXEVAL] [-e [-m]] [-l FILE]... "
+      fprintf(stderr,
+              "usage: calibrate [-s SPEC] [-o DIR] [-n MAXEVAL] [-e [-m]] [-l FILE]... "
               "[NAME=VALUE ...]\n");
       return 2;
     }
@@ -435,11 +439,11 @@ int main(int argc, char** argv) {
       return 2;
     }
     size_t n = strlen(F.extra);
-    snprintf(F.extra + n, sizeof F.extra - n, "%sset %.*s %s", n ? "; " : "",
-             (int)(eq - argv[i]), argv[i], eq + 1);
+    snprintf(F.extra + n, sizeof F.extra - n, "%sset %.*s %s", n ? "; " : "", (int)(eq - argv[i]),
+             argv[i], eq + 1);
   }
   if (maxeval > 0) s.maxeval = maxeval;
-  ura_init(&c);                                  /* GSL failures as return codes (ur_init) */
+  ura_init(&c); /* GSL failures as return codes (ur_init) */
   c.out = fopen("/dev/null", "w");
   if (!c.out || ura_models_init(&c) || load_tables(&c, &s)) return 1;
   for (int i = 0; i < nload; i++) {
@@ -460,8 +464,8 @@ int main(int argc, char** argv) {
   }
   fprintf(F.log, "eval");
   for (int j = 0; j < s.nfree; j++) fprintf(F.log, ",%s", s.f[j].name);
-  for (int i = 0; i < s.ncase; i++) fprintf(F.log, ",loss_%s,hic_share_%s", s.k[i].name,
-                                             s.k[i].name);
+  for (int i = 0; i < s.ncase; i++)
+    fprintf(F.log, ",loss_%s,hic_share_%s", s.k[i].name, s.k[i].name);
   fprintf(F.log, ",choices,loss\n");
 
   struct timespec t0, t1;
@@ -487,7 +491,7 @@ int main(int argc, char** argv) {
     gsl_vector* z = gsl_vector_alloc(s.nfree);
     gsl_vector* step = gsl_vector_alloc(s.nfree);
     gsl_multimin_fminimizer* nm =
-      gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, s.nfree);
+        gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, s.nfree);
     double before = INFINITY;
     for (int run = 0; run <= s.restarts && (run == 0 || before - F.best >= s.gain); run++) {
       before = F.best;

@@ -32,12 +32,13 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   urModelSource src = {text, "fuzz", 1};
   urModel* m = ur_model_parse(&src, 1, NULL, 0, err, sizeof err);
-  if (!m && !memchr(err, 0, sizeof err)) abort();    /* the message is a string */
+  if (!m && !memchr(err, 0, sizeof err)) abort(); /* the message is a string */
 
   /* a few steps of what was built */
   if (m) {
     urData* d = ur_data_new(m);
-    for (int i = 0; d && i < STEPS && ur_step(m, d) >= 0; i++) {}
+    for (int i = 0; d && i < STEPS && ur_step(m, d) >= 0; i++) {
+    }
     ur_data_free(d);
     ur_model_free(m);
   }

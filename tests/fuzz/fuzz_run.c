@@ -30,17 +30,17 @@
 
 #include "../../src/app/app.h"
 
-#define MAXSTEPS 400               /* steps of one impact */
-#define MAXCELLS 49                /* cells of one grid (at most 7 x 7) */
-#define MAXSWEEP 3                 /* values of one sweep */
+#define MAXSTEPS 400 /* steps of one impact */
+#define MAXCELLS 49  /* cells of one grid (at most 7 x 7) */
+#define MAXSWEEP 3   /* values of one sweep */
 
 static uraCtx c;
-static uraState st0;               /* the fresh state: short impacts, a 3 x 3 grid */
-static char* text0[uraMAXPARTS];   /* the parts of the fresh state */
+static uraState st0;             /* the fresh state: short impacts, a 3 x 3 grid */
+static char* text0[uraMAXPARTS]; /* the parts of the fresh state */
 static char* origin0[uraMAXPARTS];
 static int npart0;
-static char simfile[400];          /* the simulation part with short impacts */
-static char allowed[256][urNAMELEN];   /* model parameters that leave the person as settled */
+static char simfile[400];            /* the simulation part with short impacts */
+static char allowed[256][urNAMELEN]; /* model parameters that leave the person as settled */
 static int nallowed;
 static FILE* null;
 static char scratch[256];
@@ -69,7 +69,8 @@ static void allow_params(void) {
 }
 
 static int allowed_param(const char* name) {
-  for (int i = 0; i < nallowed; i++) if (!strcmp(allowed[i], name)) return 1;
+  for (int i = 0; i < nallowed; i++)
+    if (!strcmp(allowed[i], name)) return 1;
   return 0;
 }
 
@@ -82,8 +83,7 @@ static int guard(uraCtx* x, int argc, char** argv) {
   const char* cmd = argv[0];
   if (!strcmp(cmd, "reset")) return ura_fail(x, "fuzz: reset is not run here");
   int sim = !strcmp(cmd, "impact") || !strcmp(cmd, "compare") ||
-            (!strcmp(cmd, "grid") && argc == 1) ||
-            (!strcmp(cmd, "sweep") && argc == 3);
+            (!strcmp(cmd, "grid") && argc == 1) || (!strcmp(cmd, "sweep") && argc == 3);
 
   /* files: a plain name (the last word of the file commands, the value of set output) */
   int file = (!strcmp(cmd, "export") || !strcmp(cmd, "save") || !strcmp(cmd, "source") ||
@@ -115,7 +115,7 @@ static int guard(uraCtx* x, int argc, char** argv) {
   double lo = x->st.par_min, hi = x->st.par_max, cross = x->st.perp_max;
   if (!x->st.par_min_set || !x->st.par_max_set || !x->st.perp_max_set) {
     double e[3];
-    if (ura_grid_extents(x, &e[0], &e[1], &e[2])) return -1;    /* the stance of a donor */
+    if (ura_grid_extents(x, &e[0], &e[1], &e[2])) return -1; /* the stance of a donor */
     if (!x->st.par_min_set) lo = e[0];
     if (!x->st.par_max_set) hi = e[1];
     if (!x->st.perp_max_set) cross = e[2];
@@ -165,8 +165,10 @@ static void fresh(void) {
       if (strcmp(c.part[i].name, "sim")) continue;
       for (const char* p = c.part[i].text; *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : "") {
         size_t n = strcspn(p, "\n");
-        if (!strncmp(p, "param tmax ", 11)) fprintf(f, "param tmax 0.02 s\n");
-        else fprintf(f, "%.*s\n", (int)n, p);
+        if (!strncmp(p, "param tmax ", 11))
+          fprintf(f, "param tmax 0.02 s\n");
+        else
+          fprintf(f, "%.*s\n", (int)n, p);
       }
     }
     if (!f || fclose(f)) abort();
@@ -178,7 +180,7 @@ static void fresh(void) {
     }
     allow_params();
     static const char* const setup =
-      "set step 0.1; set along_min -0.1; set along_max 0.1; set cross_max 0.1; set threads 1";
+        "set step 0.1; set along_min -0.1; set along_max 0.1; set cross_max 0.1; set threads 1";
     if (ura_run_line(&c, setup)) abort();
     st0 = c.st;
     ready = 1;
@@ -189,8 +191,8 @@ static void fresh(void) {
 
   /* a settled person to share (a reset forgot them all): settled once more */
   const urImpactSetup* donor;
-  if (!c.have_setup && !ura_mcache_setups(&c, &donor, 1) && ura_model_state(&c, &st0, "fuzz") == 0 &&
-      !ura_setup(&c)) {
+  if (!c.have_setup && !ura_mcache_setups(&c, &donor, 1) &&
+      ura_model_state(&c, &st0, "fuzz") == 0 && !ura_setup(&c)) {
     abort();
   }
 
@@ -230,7 +232,8 @@ int LLVMFuzzerInitialize(int* argc, char*** argv) {
   snprintf(simfile, sizeof simfile, "%s/bin/sim.urm", scratch);
   FILE* g = fopen("bin/gnuplot", "w");
   if (!g) return 1;
-  fprintf(g, "#!/bin/sh\n# fake gnuplot of fuzz_run: reads the script, writes its output file\n"
+  fprintf(g,
+          "#!/bin/sh\n# fake gnuplot of fuzz_run: reads the script, writes its output file\n"
           "s=$(cat)\nout=$(printf '%%s\\n' \"$s\" | sed -n \"s/^set output '\\(.*\\)'\\$/\\1/p\")\n"
           "[ -n \"$out\" ] && echo fake >\"$out\"\nexit 0\n");
   fclose(g);

@@ -19,8 +19,8 @@
 #include "../../src/app/app.h"
 
 static uraCtx c;
-static uraState st0;               /* the state of a fresh context */
-static char* text0[uraMAXPARTS];   /* the parts of a fresh context */
+static uraState st0;             /* the state of a fresh context */
+static char* text0[uraMAXPARTS]; /* the parts of a fresh context */
 static int npart0, ready;
 static FILE* null;
 
@@ -38,7 +38,7 @@ static void fresh(void) {
     if (ready) ura_models_free(&c);
     ura_last_free(&c);
     ura_init(&c);
-    if (!c.model) abort();           /* the built-in models must compile */
+    if (!c.model) abort(); /* the built-in models must compile */
     st0 = c.st;
     for (int i = 0; i < npart0; i++) free(text0[i]);
     npart0 = c.npart;
