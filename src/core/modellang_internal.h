@@ -1,5 +1,8 @@
-/* modellang_internal.h: the model-language lexer shared by modellang_lex.c and modellang.c
- * (not public API). */
+/* modellang_internal.h: what the files of the model-language parser share (not public API):
+ * the lexer (modellang_lex.c), the parser's state and key tables, and the helpers each file
+ * offers the others, prefixed url_: messages and names (modellang_names.c), units, numbers and
+ * key binding (modellang_value.c), the element statements (modellang_stmt.c), the links,
+ * roles and presets (modellang_link.c), and the driver (modellang.c). */
 #ifndef UASRISK_MODELLANG_INTERNAL_H
 #define UASRISK_MODELLANG_INTERNAL_H
 
@@ -41,5 +44,188 @@ void url_free(urlLex* lx);
 
 /* Text of word i. */
 const char* url_word(const urlLex* lx, int i);
+
+//---------------------------------- the parser (modellang*.c) -------------------------------------
+
+#include <stdio.h>
+#include "uasrisk/modellang.h"
+
+#define MAXKEY  20  /* keys of one statement kind */
+#define MSGLEN  512 /* internal message buffer */
+#define MAXLIST 64  /* names in one list of 'pairs' */
+#define NUMLEN  400 /* longest number accepted, characters */
+
+//---------------------------------- tables --------------------------------------------------------
+
+/* kinds of names */
+enum {
+  SYM_PARAM = 0,
+  SYM_CURVE,
+  SYM_LAW,
+  SYM_BODY,
+  SYM_JOINT,
+  SYM_ELLIPSOID,
+  SYM_PAIR,
+  SYM_AIRBAG,
+  SYM_SENSOR,
+  SYM_PART,
+  SYM_PRESET
+};
+
+/* kinds of values */
+enum {
+  K_NUM = 0, /* one number */
+  K_INT,     /* one whole number >= 0 */
+  K_FLAG,    /* 0 or 1 */
+  K_VEC,     /* n numbers (or n2) */
+  K_LIST,    /* n2..n numbers */
+  K_NAME,    /* one name */
+  K_NAMES,   /* n2..n names */
+  K_ENUM     /* one of the words in enums */
+};
+
+/* one key of a statement */
+typedef struct {
+  const char* key;
+  int kind;
+  int n, n2;         /* counts, see the kinds */
+  int req;           /* 1: required */
+  const char* enums; /* K_ENUM: words separated by '|' */
+} KeySpec;
+
+/* shorthands for the key tables */
+#define NUM(k)                                                                                     \
+  { k, K_NUM, 1, 0, 0, NULL }
+#define NUMR(k)                                                                                    \
+  { k, K_NUM, 1, 0, 1, NULL }
+#define VEC3(k)                                                                                    \
+  { k, K_VEC, 3, 0, 0, NULL }
+#define VEC3R(k)                                                                                   \
+  { k, K_VEC, 3, 0, 1, NULL }
+#define QUAT                                                                                       \
+  { "quat", K_VEC, 4, 0, 0, NULL }
+#define ROT                                                                                        \
+  { "rot", K_VEC, 4, 0, 0, NULL }
+#define NAMER(k)                                                                                   \
+  { k, K_NAME, 1, 0, 1, NULL }
+#define NAME(k)                                                                                    \
+  { k, K_NAME, 1, 0, 0, NULL }
+#define FLAG(k)                                                                                    \
+  { k, K_FLAG, 1, 0, 0, NULL }
+#define ENABLE   FLAG("enable")
+#define FRICTION NUM("damping"), NUM("chi"), NUM("mu"), NUM("v_eps")
+#define NKEY(a)  ((int)(sizeof(a) / sizeof(a[0])))
+
+//---------------------------------- parser state --------------------------------------------------
+
+/* one defined (or disabled) name */
+typedef struct {
+  int kind;
+  char name[urNAMELEN];
+  unsigned hash; /* namehash(name): most lookups compare only this */
+  int id;        /* index in the model or parser table */
+  int src, line;
+  int enabled;
+  int next; /* the symbol before it in its hash chain, or -1 */
+} Sym;
+
+/* one parsed value */
+typedef struct {
+  int set;              /* key given */
+  int line;             /* line of the word */
+  const char* raw;      /* text after '=' */
+  int n;                /* numbers or names */
+  double v[urMAXCURVE]; /* numbers */
+  int e;                /* K_ENUM: index of the word */
+} Val;
+
+/* one statement with its keys bound to a key table */
+typedef struct {
+  const char* kw;   /* keyword */
+  const char* what; /* keyword for the list of keys (law: with its type) */
+  const char* name; /* NAME or NULL */
+  int line;
+  const KeySpec* spec;
+  int nspec;
+  Val val[MAXKEY];
+} Bound;
+
+typedef struct {
+  const urModelSource* src;
+  int nsrc;
+  const urOverride* ov;
+  int nov;
+  urlLex lx;
+  int cur;    /* statement being parsed */
+  int cursrc; /* its source */
+  urModel* m;
+  Sym* sym;
+  int nsym, capsym;
+  int* chain;                /* capsym chain heads: the last symbol of each hash */
+  int count[SYM_PRESET + 1]; /* enabled elements of each kind (limits) */
+  const _Atomic int* stop;   /* a stop request (Ctrl-C), polled between statements */
+  urCurve* curve;
+  int ncurve, capcurve;
+  urLaw* law;
+  int nlaw, caplaw;
+  double* pval;
+  int npval, cappval;
+  char msg[MSGLEN];
+} Parser;
+
+/* user text shortened for messages */
+typedef struct {
+  char s[56];
+} Quote;
+
+/* the words of messages and the limits of each kind of name (modellang_names.c) */
+extern const char* const url_keywords;
+extern const char* const url_expect_num;
+extern const char* const url_expect_name;
+extern const char* const url_symkind[SYM_PRESET + 1];
+extern const char* const url_symkinds[SYM_PRESET + 1];
+extern const int url_limit[SYM_PRESET + 1];
+
+/* the helpers each file of the parser offers the others */
+void url_unit_names(char* list, size_t len);
+Quote url_quote(const char* s, size_t n);
+const Val* url_get(const Bound* b, const char* key);
+const char* url_srcname(const Parser* p, int src);
+const double* url_vec(const Bound* b, const char* key);
+double url_num(const Bound* b, const char* key, double dflt);
+int url_apply_design(Parser* p);
+int url_bind(Parser* p, const urlStmt* st, int first, const KeySpec* spec, int nspec, Bound* b);
+int url_checkname(Parser* p, const char* s, size_t n, int line, const char* what);
+int url_count(const char* s);
+int url_curv2(Parser* p, int law, int g, const char* name, int line, const char* what);
+int url_declare(Parser* p, int kind, const char* name, int line, int id, int enabled);
+int url_degree2(Parser* p, int g, const char* name, int line, const char* what, const char* role);
+int url_fail(Parser* p, int line, const char* fmt, ...);
+int url_findlater(const Parser* p, int kind, const char* name);
+int url_findsym(const Parser* p, int kind, const char* name, int enabled);
+int url_isident(const char* s, size_t n);
+int url_item(const char* s, int i, char* out, size_t len);
+int url_nonneg(Parser* p, const Bound* b, const char* key, int strict);
+int url_number(Parser* p, const char* s, size_t n, int line, const char* ctx, double* v);
+int url_orientation(Parser* p, const Bound* b, double q[4]);
+int url_pairs_disabled(Parser* p, const Bound* b, int line);
+int url_push(Parser* p, void** arr, int* n, int* cap, size_t size, int line);
+int url_ref(Parser* p, int kind, const char* name, int line, const char* ctx);
+int url_st_airbag(Parser* p, const Bound* b);
+int url_st_body(Parser* p, const Bound* b);
+int url_st_curve(Parser* p, const Bound* b);
+int url_st_ellipsoid(Parser* p, const Bound* b);
+int url_st_law(Parser* p, const Bound* b);
+int url_st_option(Parser* p, const urlStmt* st, Bound* b);
+int url_st_pair(Parser* p, const Bound* b);
+int url_st_pairs(Parser* p, const Bound* b);
+int url_st_param(Parser* p, const urlStmt* st);
+int url_st_part(Parser* p, const urlStmt* st);
+int url_st_preset(Parser* p, const urlStmt* st);
+int url_st_restraint(Parser* p, const Bound* b);
+int url_st_role(Parser* p, const urlStmt* st, Bound* b);
+int url_st_sensor(Parser* p, const Bound* b);
+size_t url_decimal_prefix(const char* s, size_t n);
+void url_suggest(const Parser* p, int kind, const char* name, char* out, size_t len);
 
 #endif
