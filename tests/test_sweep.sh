@@ -129,7 +129,7 @@ check plot_none fails_with "plot sweep: no sweep yet; run 'sweep wind LIST' or '
 run -c 'plot sweep sideways'
 check plot_bad_kind fails_with "plot sweep: unknown 'sideways'; accepted: plot sweep, plot sweep wind"
 run -c 'sweep wind'
-check sweep_no_list fails_with "sweep: 'wind' is not accepted; accepted: sweep wind LIST"
+check sweep_no_list fails_with "sweep wind: needs a list of values, e.g. 'sweep wind 0,4,10'"
 run -c 'sweep clear 1'
 check clear_no_arg fails_with "sweep: 'clear' is not accepted"
 run -c 'sweep face 0,400'
