@@ -440,7 +440,7 @@ static int model_drop(uraCtx* c, const char* name) {
     if (!strcmp(c->part[i].name, name)) at = i;
   }
   if (at < 0) return ura_fail(c, "model drop: no part '%s'; 'model parts' lists them", name);
-  uraPart np[uraMAXPARTS];
+  uraPart np[uraMAXPARTS] = {0}; /* zeroed: -O2 with sanitizers cannot see nn bound it */
   int nn = 0;
   for (int i = 0; i < c->npart; i++) {
     if (i == at) continue;

@@ -12,6 +12,7 @@ typedef struct {
   int n;
   uraPartFile* part; /* n, by shard */
   char** name;       /* their file names */
+  char** argv;       /* the replayed command line, freed with the rest */
 } merge;
 
 static int refuse(const char* fmt, const char* a, const char* b) {
@@ -82,6 +83,7 @@ static int m_finish(uraScale* s, int rc) {
   for (int i = 0; i < m->n; i++) ura_part_free(&m->part[i]);
   free(m->part);
   free(m->name);
+  free(m->argv);
   free(m);
   free(s);
   return rc;
@@ -202,7 +204,8 @@ int ura_merge_new(uraCtx* c, int nfile, char** file, int* argc, char*** argv) {
   av[0] = (*argv)[0];
   for (int i = 0; i < p0->argc; i++) av[i + 1] = p0->argv[i];
   *argc = p0->argc + 1;
-  *argv = av; /* lives as long as the run */
+  *argv = av; /* lives as long as the run: freed by m_finish */
+  m->argv = av;
   c->scale = s;
   return 0;
 }
