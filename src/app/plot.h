@@ -28,6 +28,14 @@ typedef struct {
    output settings; who names the command in messages ("plot grid") */
 int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len);
 
+/* the pieces plot.c offers the files of other kinds of plot (plot_history.c): a script writer
+   run through gnuplot under the settings, a number as gnuplot reads it (NaN as a gap), and a
+   text setting (set NAME "TEXT", quoted) */
+typedef int (*uraPlotWriter)(uraCtx* c, FILE* f, const void* arg);
+int ura_plot_script(uraCtx* c, const char* who, uraPlotWriter fn, const void* arg);
+void ura_plot_num(FILE* f, double v);
+void ura_plot_text(FILE* f, const char* name, const char* text);
+
 /* the canvas size (pixels) the next plot asks of a file terminal named without options (png,
    svg, pdfcairo, ...); 0, 0: the terminal's default */
 void ura_plot_canvas(uraCtx* c, int w, int h);
