@@ -77,6 +77,17 @@ check pager_off wait_for p1 'uasrisk\[C\]> *$'
 check pager_off_no_less cond '! grep -q "^:$" "$TMP/screen" && grep -q "^0\.[0-9]* " "$TMP/screen"'
 line p1 "set pager on"
 
+# Tab completes the last impact's channels after history and plot history
+keys p1 C-l
+keys p1 -l "history head_a"
+keys p1 Tab
+check history_tab wait_for p1 'uasrisk\[C\]> history head_acc *$'
+keys p1 C-u
+keys p1 -l "plot history chest_d"
+keys p1 Tab
+check plot_history_tab wait_for p1 'uasrisk\[C\]> plot history chest_defl *$'
+keys p1 C-u
+
 # show PREFIX at the prompt; a slip gets a suggestion
 line p1 "show bag"
 check show_bag wait_for p1 '^bag_front_kappa +[0-9.]+$'

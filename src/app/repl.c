@@ -139,6 +139,16 @@ static char** complete(const char* text, int start, int end) {
   } else if (nw == 2 && cmd->compl == uraC_NONE) {
     keywords(args, words[1]);
   }
+  /* history CHANNEL..., plot history CHANNEL...: the last impact's signals */
+  int hist = !strcmp(cmd ? cmd->name : "", "history") ||
+             (nw >= 2 && !strcmp(cmd ? cmd->name : "", "plot") && !strcmp(words[1], "history"));
+  uraTrace tr;
+  if (hist && nw >= 1 && repl_ctx && ura_last_trace(repl_ctx, &tr) == 0) {
+    if (nw > 1 || strcmp(cmd->name, "plot")) {
+      if (!ncand) add("all");
+      for (int k = 0; k < tr.nsig; k++) add(tr.names[k]);
+    }
+  }
 
   /* no names: readline's file-name completion (not for the value of a parameter) */
   if (!ncand && cmd && cmd->compl == uraC_PARAM && nw >= 2) return NULL;
