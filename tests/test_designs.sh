@@ -63,6 +63,8 @@ check d_compare wait_for d1 'plain +B +0\.[0-9]+ +bag' 20
 line d1 "view"
 check d_caption wait_for d1 'P_b - P_a in % \(blue: B safer, red: B riskier\)'
 check d_legend wait_for d1 'P_b - P_a: .*<=-30 %.*-30-0 %.*0-30 %.*>=30 %'
+# the cursor line holds the differences the grid keeps, and no Nij mode (it has no difference)
+check d_cursor_diff wait_for d1 '^dpar 0\.00 m  dperp 0\.00 m  dP -?[0-9.]+ %  dHIC15 -?[0-9.]+  dNij -?[0-9.]+ *$'
 grab d1 -e
 # a grid row (its dpar label, then cells) holds a blue cell: the legend alone does not count
 check d_blue grep -Eq "(^|m) *0\.00 .*$ESC\[([0-9;]*;)?(44|48;5;(25|153))(;[0-9;]*)?m" "$TMP/screen"

@@ -137,14 +137,16 @@ static void put(WINDOW* w, int y, int x, chtype attr, const char* s) {
 /* ---- the screen ---- */
 
 /* the values of criterion k that a place (urIN_PANEL, urIN_CURSOR) shows, from the registry:
-   "0.812 mode NCF", "thorax 0.500 m/s abdomen 0.300 m/s" */
-static void crit_values(const urCell* cl, int k, int where, char* buf, size_t n) {
+   "0.812 mode NCF", "thorax 0.500 m/s abdomen 0.300 m/s"; of a difference grid (design
+   compare) only the differences it keeps, HIC15 and Nij (a mode has no difference) */
+static void crit_values(const urCell* cl, int k, int where, int diff, char* buf, size_t n) {
   const urCriterion* cr = ur_criterion(k);
   size_t len = 0;
   buf[0] = 0;
   for (int i = cr->val0; i < cr->val0 + cr->nval && len < n; i++) {
     const urValueDef* d = ur_value_def(i);
     if (!(d->where & where)) continue;
+    if (diff && i != urVAL_HIC15 && i != urVAL_NIJ) continue;
     char num[32];
     ur_value_format(i, cl->val[i], num, sizeof num);
     int w = snprintf(buf + len, n - len, "%s%s%s%s%s%s", len ? " " : "", d->label,
@@ -165,15 +167,20 @@ static void draw_cursor_line(viewer* v, int y) {
   /* the criteria in use from the registry; at a narrow screen those after the first two (HIC
      and Nij) and the status go on a second line */
   int two = COLS < STATUS_ONE_LINE, shown = 0;
-  int len = snprintf(buf, sizeof buf, "dpar %.2f m  dperp %.2f m  P %s", cl->dpar, cl->dperp, p);
+  const char* d = v->c->last.diff ? "d" : ""; /* a difference grid: P_b - P_a, dHIC15, dNij */
+  int len =
+      snprintf(buf, sizeof buf, "dpar %.2f m  dperp %.2f m  %sP %s", cl->dpar, cl->dperp, d, p);
   for (int k = 0; k < urNCRIT && len >= 0 && (size_t)len < sizeof buf; k++) {
     if (!ur_criterion_used(k, &v->c->st.injury)) continue;
-    crit_values(cl, k, urIN_CURSOR, vals, sizeof vals);
+    crit_values(cl, k, urIN_CURSOR, v->c->last.diff, vals, sizeof vals);
+    if (!vals[0]) continue;
     if (two && shown++ >= 2) {
       size_t m = strlen(more);
-      snprintf(more + m, sizeof more - m, "%s%s %s", m ? "  " : "", ur_criterion(k)->label, vals);
+      snprintf(more + m, sizeof more - m, "%s%s%s %s", m ? "  " : "", d, ur_criterion(k)->label,
+               vals);
     } else {
-      len += snprintf(buf + len, sizeof buf - (size_t)len, "  %s %s", ur_criterion(k)->label, vals);
+      len += snprintf(buf + len, sizeof buf - (size_t)len, "  %s%s %s", d, ur_criterion(k)->label,
+                      vals);
     }
   }
   char* tail = two ? more : buf;
@@ -359,7 +366,7 @@ static void draw_panel(viewer* v) {
   for (int k = 0; k < urNCRIT; k++) {
     if (!ur_criterion_used(k, &v->c->st.injury)) continue;
     const urCriterion* cr = ur_criterion(k);
-    crit_values(cl, k, urIN_PANEL, vals, sizeof vals);
+    crit_values(cl, k, urIN_PANEL, v->c->last.diff, vals, sizeof vals);
     snprintf(buf, sizeof buf, "%-5s %s", cr->label, vals);
     put(w, y, 2, A_NORMAL, buf);
     fmt_num(e, sizeof e, "%.4f", cl->pof[k]);
