@@ -100,6 +100,10 @@ static void malformed(void** state) {
   *strchr(strchr(bad, ' ') + 1, ' ') = 'x'; /* junk in a number */
   assert_int_equal(ura_cell_read(bad, &b), -1);
   assert_int_equal(ura_cell_read("", &b), -1);
+  urCell big = sample(); /* a mode out of range */
+  big.val[urVAL_NIJ_MODE] = 1e300;
+  assert_true(ura_cell_write(&big, bad, sizeof bad) > 0);
+  assert_int_equal(ura_cell_read(bad, &b), -1);
   snprintf(bad, sizeof bad, "%s%070d", line, 0); /* reason too long */
   assert_int_equal(ura_cell_read(bad, &b), -1);
   urCell keep = b; /* a refusal changes nothing */

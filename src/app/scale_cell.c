@@ -57,7 +57,7 @@ int ura_cell_read(const char* s, urCell* c) {
   if (bad || get_double(&s, &t.p) || get_int(&s, 0, 1 << 30, &t.extrap) || *s != '|') return -1;
   /* the Nij mode is an index: a whole number of -1..3 or NAN */
   double md = t.val[urVAL_NIJ_MODE];
-  if (md == md && (md != (int)md || md < -1 || md > 3)) return -1;
+  if (md == md && (md < -1 || md > 3 || md != (int)md)) return -1; /* range first: no UB cast */
   s++;
   size_t n = strcspn(s, "\n");
   if (n >= sizeof t.reason) return -1;
