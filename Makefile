@@ -1,5 +1,5 @@
-# uasrisk: drone-on-person impact risk workbench.
-#   make          build ./uasrisk and build/libuasrisk.a
+# uasimpact: drone-on-person impact risk workbench.
+#   make          build ./uasimpact and build/libuasimpact.a
 #   make run      set up, build, start the workbench (replays sessions/demo.ses without a terminal)
 #   make check    set up, build, run every test
 #   make bench    benchmarks (not part of check; tests/bench_scale.sh: 2 MPI ranks against 1);
@@ -7,7 +7,7 @@
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
-#                 zero-wind grids; src/models/calibrate.spec, uasrisk-model(5)); build/calibration/
+#                 zero-wind grids; src/models/calibrate.spec, uasimpact-model(5)); build/calibration/
 #   make sensitivity  how far Table 17 moves with one unknown the calibration does not set
 #                 moved in its public range, at the shipped models (scripts/sensitivity.sh;
 #                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
@@ -15,7 +15,7 @@
 #                 session under valgrind (scripts/check-san.sh)
 #   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions (FUZZ_RUN_RUNS for
 #                 the executing script target) or FUZZ_SECONDS each (clang; build-fuzz/)
-#   make mpi      ./uasrisk-mpi, the MPI build (OpenMPI from Debian; mpirun -n N ./uasrisk-mpi FILE)
+#   make mpi      ./uasimpact-mpi, the MPI build (OpenMPI from Debian; mpirun -n N ./uasimpact-mpi FILE)
 #   make check-tsan  a ThreadSanitizer build (build-tsan/) runs a short grid on 2 threads and is
 #                 interrupted by SIGINT in the middle (scripts/check-tsan.sh)
 #   make format   apply the house style (.clang-format, clang-format 14) to every C source
@@ -26,7 +26,7 @@ PREFIX  ?= /usr/local
 CC      ?= cc
 OPT     ?= -O3 -g
 BUILD   ?= build
-BIN     ?= uasrisk
+BIN     ?= uasimpact
 # -fno-math-errno: sqrt inline and over vectors (the same IEEE results; errno is read only after
 # strtod and file calls, never after a math function)
 CFLAGS  += $(OPT) -fno-math-errno -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -Wall \
@@ -49,8 +49,8 @@ APP_OBJ   = $(APP_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN  = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 
-LIB     = $(BUILD)/libuasrisk.a
-APPLIB  = $(BUILD)/libuasrisk-app.a
+LIB     = $(BUILD)/libuasimpact.a
+APPLIB  = $(BUILD)/libuasimpact-app.a
 
 .PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz \
   check-tsan mpi mpideps format
@@ -60,7 +60,7 @@ all: $(BIN) $(LIB)
 deps:
 	@sh scripts/setup.sh
 
-# the version, and the commit it was built from (uasrisk --version): git's in a checkout (-dirty
+# the version, and the commit it was built from (uasimpact --version): git's in a checkout (-dirty
 # with uncommitted changes), else the COMMIT file that git archive fills in (export-subst in
 # .gitattributes); build/version.h is rewritten only when they change
 VERSION = 0.1
@@ -115,7 +115,7 @@ $(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 # the MPI build: only the distributor (src/app/scale_mpi.c) is compiled by mpicc with URA_MPI;
 # its object comes before the application's archive, whose MPI-less stub is then not linked
 MPICC ?= mpicc
-MPI_BIN = uasrisk-mpi
+MPI_BIN = uasimpact-mpi
 mpideps:
 	@sh scripts/setup.sh mpi
 mpi: $(MPI_BIN)
@@ -126,7 +126,7 @@ $(MPI_BIN): $(BUILD)/src/app/main.o $(BUILD)/mpi/scale_mpi.o $(APPLIB) $(LIB) | 
 	$(MPICC) $(LDFLAGS) -o $@ $^ $(APP_LIBS) $(CORE_LIBS)
 
 run: all
-	@if [ -t 0 ]; then ./uasrisk; else ./uasrisk sessions/demo.ses; fi
+	@if [ -t 0 ]; then ./uasimpact; else ./uasimpact sessions/demo.ses; fi
 
 check: all mpi $(TEST_BIN) $(BUILD)/calibrate
 	@sh scripts/runtests.sh $(TEST_BIN)
@@ -159,20 +159,20 @@ sensitivity: all
 	@sh scripts/sensitivity.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/sensitivity-step$(STEP)) \
 	  $(if $(VARIANTS),-v $(VARIANTS))
 
-# the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run);
+# the same tests on a sanitized build of its own (build-san/uasimpact is what the shell tests run);
 # its lanes are the portable vector code without the AVX2 clones (urNO_CLONES), so that the
 # lanes-equal-alone tests cover both code paths (make check runs the AVX2 clone where the
 # processor has AVX2). The valgrind session runs a plain build of the same portable path
-# (build-vg/uasrisk): valgrind 3.19 cannot decode every AVX instruction GCC emits in the clones.
+# (build-vg/uasimpact): valgrind 3.19 cannot decode every AVX instruction GCC emits in the clones.
 SAN_OPT = -O2 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
   -DurNO_CLONES
 check-san:
 	@sh scripts/setup.sh san
-	@$(MAKE) --no-print-directory BUILD=build-san BIN=build-san/uasrisk OPT='$(SAN_OPT)' \
-	  LDFLAGS='-pthread $(SAN_OPT)' build-san/uasrisk $(TEST_SRC:tests/%.c=build-san/tests/%)
-	@$(MAKE) --no-print-directory BUILD=build-vg BIN=build-vg/uasrisk OPT='-O2 -g -DurNO_CLONES' \
-	  build-vg/uasrisk
-	@sh scripts/check-san.sh build-san build-vg/uasrisk
+	@$(MAKE) --no-print-directory BUILD=build-san BIN=build-san/uasimpact OPT='$(SAN_OPT)' \
+	  LDFLAGS='-pthread $(SAN_OPT)' build-san/uasimpact $(TEST_SRC:tests/%.c=build-san/tests/%)
+	@$(MAKE) --no-print-directory BUILD=build-vg BIN=build-vg/uasimpact OPT='-O2 -g -DurNO_CLONES' \
+	  build-vg/uasimpact
+	@sh scripts/check-san.sh build-san build-vg/uasimpact
 
 # fuzzing with libFuzzer: each target until FUZZ_RUNS executions or FUZZ_SECONDS, corpora in
 # tests/fuzz/corpus_*. Each target has its own build: the model-language target instruments
@@ -200,9 +200,9 @@ fuzz:
 TSAN_OPT = -O1 -g -fsanitize=thread -fno-omit-frame-pointer -DurNO_CLONES
 check-tsan:
 	@sh scripts/setup.sh tsan
-	@$(MAKE) --no-print-directory BUILD=build-tsan BIN=build-tsan/uasrisk OPT='$(TSAN_OPT)' \
-	  LDFLAGS='-pthread $(TSAN_OPT)' build-tsan/uasrisk
-	@sh scripts/check-tsan.sh build-tsan/uasrisk
+	@$(MAKE) --no-print-directory BUILD=build-tsan BIN=build-tsan/uasimpact OPT='$(TSAN_OPT)' \
+	  LDFLAGS='-pthread $(TSAN_OPT)' build-tsan/uasimpact
+	@sh scripts/check-tsan.sh build-tsan/uasimpact
 
 # the core built with other options than the application (CORE_OPT, for the fuzz builds)
 ifneq ($(CORE_OPT),)
@@ -214,11 +214,11 @@ $(BUILD)/fuzz/%: tests/fuzz/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	$(CC) $(CFLAGS) -fsanitize=fuzzer -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
 
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/uasrisk \
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/uasimpact \
 	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
-	install -m 755 uasrisk $(DESTDIR)$(PREFIX)/bin/
+	install -m 755 uasimpact $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/
-	install -m 644 include/uasrisk/*.h $(DESTDIR)$(PREFIX)/include/uasrisk/
+	install -m 644 include/uasimpact/*.h $(DESTDIR)$(PREFIX)/include/uasimpact/
 	install -m 644 man/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 	for f in man/*.5; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man5/; done; true
 	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man7/; done; true
@@ -230,6 +230,6 @@ format:
 	rm -f .clang-format-pending
 
 clean:
-	rm -rf $(BUILD) build-san build-vg build-fuzz build-tsan uasrisk uasrisk-mpi
+	rm -rf $(BUILD) build-san build-vg build-fuzz build-tsan uasimpact uasimpact-mpi
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,6 +1,6 @@
 #!/bin/sh
-# check-tsan.sh BIN: ThreadSanitizer on the grid's threads and the Ctrl-C flag. BIN is uasrisk
-# built with -fsanitize=thread (make check-tsan builds build-tsan/uasrisk). Two runs, each on 2
+# check-tsan.sh BIN: ThreadSanitizer on the grid's threads and the Ctrl-C flag. BIN is uasimpact
+# built with -fsanitize=thread (make check-tsan builds build-tsan/uasimpact). Two runs, each on 2
 # worker threads: a short grid that completes (case C, 0.2 m step), and a finer grid that gets
 # SIGINT while its workers run (the handler sets the flag that the workers and the running
 # impacts read): it must stop with status 130 and keep its finished cells. Any ThreadSanitizer

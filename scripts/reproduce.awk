@@ -1,12 +1,12 @@
 # reproduce.awk: the report of 'make reproduce' (run by scripts/reproduce.sh).
 #   awk -f scripts/table17.awk -f scripts/reproduce.awk -v out=DIR -v values=sessions/paper/values.csv \
 #       -v run=DIR/run.txt -v loads=DIR/paper-load.txt DIR/raw.csv
-# Input: raw.csv, the CSV tables uasrisk printed for sessions/paper.ses (descent, parametric, grid
+# Input: raw.csv, the CSV tables uasimpact printed for sessions/paper.ses (descent, parametric, grid
 # summary rows, sweeps, compare, grid cells, with their '#' notes: the paper's Table 2 as the
 # source of speed and angle, tau top); run.txt, the conditions of the run (key=value);
 # values.csv, the paper's printed numbers; paper-load.txt, "FILE Q" per paper grid CSV with the Q
 # that 'grid load' computes. Output in DIR: report.md and the CSV files listed in it.
-# Our values are taken as uasrisk printed them; a value computed twice must be printed the same
+# Our values are taken as uasimpact printed them; a value computed twice must be printed the same
 # (the report lists any that differ). Ratios are ours / paper. Every comparison is labelled
 # training (the zero-wind grids of A, B and C: their cells, P{F|Delta=(0,0)} among them, and
 # their sums) or validation (everything else), the project's calibration rule
@@ -211,7 +211,7 @@ function header(    wall) {
   m("zero-wind grids, Tables 4, 5 and 6 (cases A, B, C at 0 m/s, every cell over the full plane,")
   m("so also P{F|Delta=(0,0)} at 0 m/s of Tables 11-13 and the grids' sums Q): the only data of")
   m("the paper that `make calibrate` fitted the built-in models' unknowns to (the person: public")
-  m("test corridors; uasrisk-model(5), CALIBRATION). **Validation** is everything else: Table 17")
+  m("test corridors; uasimpact-model(5), CALIBRATION). **Validation** is everything else: Table 17")
   m("at 4 and 10 m/s, every A1 and A2 value, the 10 m/s grids (Tables 8-10, 15, 16), the faces of")
   m("Fig. 11, the rest of Tables")
   m("11-13, and the numbers of Tables 2 and 3. Validation results are reported as they are: nothing")
@@ -247,7 +247,7 @@ function values_section(    i, o, r, f, last, s, note, st, fq, rf) {
   p("fractions. Tables 11-13 rows come from `compare` (P{F|Delta=(0,0)} x gliding area against Q).")
   p("Where the paper prints the grid of a Q, the full-plane sum of its printed cells is given")
   p("beside the printed value (they differ for Tables 4 and 5, see below). The Table 2 and Table 3")
-  p("rows are uasrisk's descent and parametric models; the grids' own speeds and angles (and so the")
+  p("rows are uasimpact's descent and parametric models; the grids' own speeds and angles (and so the")
   p("gliding areas of Tables 11-13, from `compare`) are in the header (*impact speed and descent")
   p("angle*).")
   last = ""
@@ -547,7 +547,7 @@ function fig_table(fig, list,    n, cs, i, j, w, o, pv, line) {
 
 # ---- the paper's printed grids: their sums, and cell by cell against ours ----
 
-# the Q that uasrisk's 'grid load' computes for each file, and the files themselves
+# the Q that uasimpact's 'grid load' computes for each file, and the files themselves
 function read_grids(    l, a, i) {
   while ((getline l < loads) > 0) {
     split(l, a, " ")
@@ -608,7 +608,7 @@ function grids_section(    f, fp, t, c, w, i, cap, o, full, half, k, tau, line) 
   p("where the drone touches the person at all. *Mean |Delta P|* (MAD), bias (ours - paper) and max")
   p("|diff| are in P (0..1) over the *union footprint*, the cells where ours or the paper's P > 0.")
   p("")
-  p("*tau* is the moment our Delta is taken (uasrisk(1), `set tau`): **rmax**, the paper's text (the")
+  p("*tau* is the moment our Delta is taken (uasimpact(1), `set tau`): **rmax**, the paper's text (the")
   p("drone centre R_max above the head top), or **top**, the centre at head-top level, R_max/tan(psi)")
   p("further along the course. At zero wind the two are the same grid. Under wind the paper's")
   p("printed grids behave as if taken at top, so the 10 m/s grids are compared at top (their maps,")

@@ -9,17 +9,17 @@
 #              cell-by-cell comparison with the paper's grids is then skipped
 #     -n       no run: write the report again from DIR/raw.csv and DIR/run.txt
 #
-# DIR receives raw.csv (everything uasrisk printed), raw.err, run.txt (date, commit, machine, wall
+# DIR receives raw.csv (everything uasimpact printed), raw.err, run.txt (date, commit, machine, wall
 # time of the run), report.md, and the CSV files the report describes. The paper's numbers come
 # from $PAPER_VALUES and its P{F|Delta} grids from $PAPER_GRIDS (sessions/paper/README.md); the
 # comparison is made by scripts/reproduce.awk, with the labels and the scoring of Table 17 of
 # scripts/table17.awk (which 'make sensitivity' shares). Without any of them nothing is run: one
-# line names the missing file and the status is 1. Environment: UASRISK (default ./uasrisk),
+# line names the missing file and the status is 1. Environment: UASIMPACT (default ./uasimpact),
 # PAPER_VALUES (default sessions/paper/values.csv), PAPER_GRIDS (default sessions/paper/grids).
 # Run from the source directory.
 set -u
 out=build/reproduce step="" norun=0
-UASRISK=${UASRISK:-./uasrisk}
+UASIMPACT=${UASIMPACT:-./uasimpact}
 PAPER_VALUES=${PAPER_VALUES:-sessions/paper/values.csv}
 PAPER_GRIDS=${PAPER_GRIDS:-sessions/paper/grids}
 # the paper's printed grids the report compares with (sessions/paper/grids/README.md)
@@ -34,8 +34,8 @@ while getopts o:s:n opt; do
     *) echo "usage: scripts/reproduce.sh [-o DIR] [-s STEP] [-n]" >&2; exit 2 ;;
   esac
 done
-if [ ! -x "$UASRISK" ]; then
-  echo "reproduce: $UASRISK is not built (run make)" >&2
+if [ ! -x "$UASIMPACT" ]; then
+  echo "reproduce: $UASIMPACT is not built (run make)" >&2
   exit 1
 fi
 # the paper's data first: a report without it would be empty tables
@@ -87,7 +87,7 @@ if [ "$norun" -eq 0 ]; then
 
   started=$(date -u '+%Y-%m-%d %H:%M:%S UTC')
   start=$(date +%s)
-  "$UASRISK" -c 'set format csv' "$ses" >"$out/raw.csv" 2>"$out/raw.err" &
+  "$UASIMPACT" -c 'set format csv' "$ses" >"$out/raw.csv" 2>"$out/raw.err" &
   pid=$!
   t=0
   while kill -0 "$pid" 2>/dev/null; do
@@ -115,7 +115,7 @@ if [ "$norun" -eq 0 ]; then
     echo "status=$rc"
   } >"$out/run.txt"
   if [ "$rc" -ne 0 ]; then
-    echo "reproduce: uasrisk failed (status $rc) after ${wall} s:" >&2
+    echo "reproduce: uasimpact failed (status $rc) after ${wall} s:" >&2
     cat "$out/raw.err" >&2
     exit 1
   fi
@@ -128,14 +128,14 @@ for f in "$out/raw.csv" "$out/run.txt"; do
   fi
 done
 
-# the paper's grids as uasrisk's 'grid load' reads them: the full-plane Q it computes
+# the paper's grids as uasimpact's 'grid load' reads them: the full-plane Q it computes
 : >"$out/paper-load.txt"
 for g in $GRID_FILES; do
   f=$PAPER_GRIDS/$g
-  q=$(NO_COLOR=1 "$UASRISK" -c "grid load $f; grid show" |
+  q=$(NO_COLOR=1 "$UASIMPACT" -c "grid load $f; grid show" |
       sed -n 's/.*: Q = \([0-9.]*\) m^2 over the full plane.*/\1/p')
   if [ -z "$q" ]; then
-    echo "reproduce: uasrisk could not load the paper's grid $f ('grid load' gave no Q)" >&2
+    echo "reproduce: uasimpact could not load the paper's grid $f ('grid load' gave no Q)" >&2
     exit 1
   fi
   echo "$f $q" >>"$out/paper-load.txt"

@@ -2,7 +2,7 @@
 #   awk -f scripts/table17.awk -f scripts/sensitivity.awk -v out=DIR -v values=VALUES.csv \
 #       -v grid4=TABLE4.csv -v variants=DIR/variants.txt -v step=STEP -v wall=SECONDS \
 #       -v commit=REV -v date=DATE -v shipped=TEXT DIR/raw.csv
-# Input: raw.csv, uasrisk's CSV output for each variant after a '#variant NAME' line (the grid
+# Input: raw.csv, uasimpact's CSV output for each variant after a '#variant NAME' line (the grid
 # summary rows case,wind,speed,angle,face,step,cells,contact_cells,q,seconds); variants.txt,
 # name|settings|source a line; values.csv, the paper's printed numbers (Table 17's Q); the paper's
 # Table 4 grid (its full-plane sum is A's reference at 0 m/s). Output in DIR: sensitivity.csv and
@@ -118,7 +118,7 @@ function summary(md,    i, v, j, line, s) {
     print "| " v " | " (s == "" ? "-" : "`" s "`") " | " SRC[i] " |" > md
   }
   print "" > md
-  print "Not run, for want of a model parameter (`uasrisk -c 'model params'`): damping of the Hertz head" > md
+  print "Not run, for want of a model parameter (`uasimpact -c 'model params'`): damping of the Hertz head" > md
   print "contacts, and Jackson-Green elastic-plastic Hertz for them (the laws' damping= and plastic= keys" > md
   print "are fixed in ra3.urm)." > md
   close(md)

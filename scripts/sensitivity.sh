@@ -10,20 +10,20 @@
 #              shipped variant is always run, since every move is measured against it
 #
 # Nothing is calibrated again here: the free parameters stay at the values 'make calibrate' fitted
-# (uasrisk-model(5), CALIBRATION); fitting them again for each variant would take about half an
+# (uasimpact-model(5), CALIBRATION); fitting them again for each variant would take about half an
 # hour a variant. Every grid is at the paper's impact speeds ('set descent paper'), face 0. The
 # scoring is 'make reproduce''s (scripts/table17.awk): A at 0 m/s against the full-plane sum of
 # the paper's Table 4 grid, A1 and A2 at 0 m/s against the printed value or twice it.
 #
-# DIR receives raw.csv (what uasrisk printed, each variant after a '#variant NAME' line), err.txt,
+# DIR receives raw.csv (what uasimpact printed, each variant after a '#variant NAME' line), err.txt,
 # variants.txt (name|settings|source), sensitivity.csv (variant,case,wind,q,paper_q,ratio,label,
 # ratio_twice,reference,scored_ratio,within_1.3) and sensitivity.md (the summary), written by
-# scripts/sensitivity.awk. Environment: UASRISK (default ./uasrisk), PAPER_VALUES (default
+# scripts/sensitivity.awk. Environment: UASIMPACT (default ./uasimpact), PAPER_VALUES (default
 # sessions/paper/values.csv), PAPER_GRIDS (default sessions/paper/grids). Run from the source
 # directory.
 set -u
 out=build/sensitivity step=0.05 only=""
-UASRISK=${UASRISK:-./uasrisk}
+UASIMPACT=${UASIMPACT:-./uasimpact}
 PAPER_VALUES=${PAPER_VALUES:-sessions/paper/values.csv}
 PAPER_GRIDS=${PAPER_GRIDS:-sessions/paper/grids}
 GRID4=$PAPER_GRIDS/table04_caseA_wind0.csv
@@ -35,8 +35,8 @@ while getopts o:s:v: opt; do
     *) echo "usage: scripts/sensitivity.sh [-o DIR] [-s STEP] [-v LIST]" >&2; exit 2 ;;
   esac
 done
-if [ ! -x "$UASRISK" ]; then
-  echo "sensitivity: $UASRISK is not built (run make)" >&2
+if [ ! -x "$UASIMPACT" ]; then
+  echo "sensitivity: $UASIMPACT is not built (run make)" >&2
   exit 1
 fi
 for f in "$PAPER_VALUES" "$GRID4"; do
@@ -47,13 +47,13 @@ for f in "$PAPER_VALUES" "$GRID4"; do
 done
 
 # the shipped values the variants start from, read from the binary (the calibration may move them)
-shown=$("$UASRISK" -c 'show arm_k; show arm_c; show nij_rescale; show nij_order; show pof_ais2;
+shown=$("$UASIMPACT" -c 'show arm_k; show arm_c; show nij_rescale; show nij_order; show pof_ais2;
   show pof_ais3; show pof_ais4' 2>&1)
 shipped() { echo "$shown" | awk -v n="$1" '$1 == n { print $2; exit }'; }
 ARM_K=$(shipped arm_k) ARM_C=$(shipped arm_c) RESCALE=$(shipped nij_rescale)
 ORDER=$(shipped nij_order) AIS2=$(shipped pof_ais2) AIS3=$(shipped pof_ais3) AIS4=$(shipped pof_ais4)
 if [ -z "$ARM_K" ] || [ -z "$RESCALE" ] || [ -z "$ORDER" ] || [ -z "$AIS4" ]; then
-  echo "sensitivity: could not read the shipped settings from $UASRISK: $shown" >&2
+  echo "sensitivity: could not read the shipped settings from $UASIMPACT: $shown" >&2
   exit 1
 fi
 # arm damping c = 2 zeta sqrt(k I), I = 0.07 kg m^2 the hinge inertia (contact sheet 5: I_cm + m r^2
@@ -69,10 +69,10 @@ else
   AIS_ALT="set pof_ais2 0.02; set pof_ais3 0.10; set pof_ais4 0.50" AIS_WHAT="upper ends"
 fi
 
-# name | settings (uasrisk commands after each 'case', ';'-separated) | source of the alternative
+# name | settings (uasimpact commands after each 'case', ';'-separated) | source of the alternative
 variants() {
   cat <<EOF
-shipped||the shipped models as they are (uasrisk-model(5)): Table 17 of 'make reproduce'
+shipped||the shipped models as they are (uasimpact-model(5)): Table 17 of 'make reproduce'
 foam_r_01|set foam_r 0.1|contact sheet 3.2: foam unloading residual strain r 0.1-0.3 (shipped 0.2)
 foam_r_03|set foam_r 0.3|contact sheet 3.2: residual strain r 0.1-0.3
 foam_p_3|set foam_p 3|contact sheet 3.2: unloading exponent p 3-6 (shipped 4)
@@ -87,7 +87,7 @@ nij_order_alt|set nij_order $ORDER_ALT|injury sheet 3.5: the other ordering fix 
 pof_ais_alt|$AIS_ALT|injury sheet 3.4: Gennarelli & Wodzin AIS-to-death rates at the $AIS_WHAT (shipped $AIS2, $AIS3, $AIS4)
 nij_1998|set nij_fzc_tension 4500; set nij_fzc_compression 4500; set nij_myc_extension 125|injury sheet 3.2: the 1998 Kleinberger Nij intercepts instead of FMVSS 208's
 filter_cfc|set filter 1|injury sheet 1.1, 3.1: the CFC filters of crash-test practice (the paper names none)
-tau_top|set tau top|uasrisk(1) set tau: Delta taken at head-top level, the other definition of the moment (0 m/s: the same grids)
+tau_top|set tau top|uasimpact(1) set tau: Delta taken at head-top level, the other definition of the moment (0 m/s: the same grids)
 EOF
 }
 # not variants, for want of a model parameter ('model params'): damping of the Hertz head contacts
@@ -110,8 +110,8 @@ while IFS='|' read -r name sets src; do
     cmds="$cmds; case $c${sets:+; $sets}; set wind 0; grid; set wind 4; grid; set wind 10; grid"
   done
   echo "#variant $name" >>"$out/raw.csv"
-  if ! "$UASRISK" -c "$cmds" </dev/null >>"$out/raw.csv" 2>>"$out/err.txt"; then
-    echo "sensitivity: uasrisk failed on variant $name:" >&2
+  if ! "$UASIMPACT" -c "$cmds" </dev/null >>"$out/raw.csv" 2>>"$out/err.txt"; then
+    echo "sensitivity: uasimpact failed on variant $name:" >&2
     cat "$out/err.txt" >&2
     exit 1
   fi

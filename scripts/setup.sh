@@ -1,5 +1,5 @@
 #!/bin/sh
-# setup.sh: install the Debian packages uasrisk needs, only those that are missing.
+# setup.sh: install the Debian packages uasimpact needs, only those that are missing.
 # Called by the Makefile (make deps, run, check); safe to run again; prints nothing when all is there.
 # 'setup.sh fuzz' adds what make fuzz needs (clang, libFuzzer); 'setup.sh san' what make
 # check-san needs (valgrind; the sanitizer runtimes come with gcc); 'setup.sh tsan' the
@@ -14,7 +14,7 @@ case "$1" in
   tsan) pkgs="$pkgs libtsan2" ;;
   mpi) pkgs="$pkgs libopenmpi-dev openmpi-bin" ;;
 esac
-[ -n "$UASRISK_EXTRA_PKGS" ] && pkgs="$pkgs $UASRISK_EXTRA_PKGS"
+[ -n "$UASIMPACT_EXTRA_PKGS" ] && pkgs="$pkgs $UASIMPACT_EXTRA_PKGS"
 
 missing=""
 for p in $pkgs; do

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 #include "test_engine_scene.h"
 
 static double cpu(void) {

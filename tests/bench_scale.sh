@@ -1,12 +1,12 @@
 # bench_scale.sh: the speed-up of 2 MPI ranks x 1 thread over 1 rank x 1 thread on a zero-wind
 # grid (case B, step 0.05 m, the paper's pitch), the two runs back to back, repeated R times
-# (min and median of each); and the figures of the cost model in uasrisk(1), SCALING OUT: the
+# (min and median of each); and the figures of the cost model in uasimpact(1), SCALING OUT: the
 # seconds per impact (one thread, in the grid and alone), the set-up per grid (a grid of one cell after a model change:
 # compile and settled stance) and the bytes a simulated cell costs in a part or message.
-#   sh tests/bench_scale.sh [R]        (make bench; needs ./uasrisk-mpi: make mpi)
+#   sh tests/bench_scale.sh [R]        (make bench; needs ./uasimpact-mpi: make mpi)
 # The machine may be shared: the load average is printed with the times.
-U=${UASRISK:-./uasrisk}
-MPI=$(dirname "$U")/uasrisk-mpi
+U=${UASIMPACT:-./uasimpact}
+MPI=$(dirname "$U")/uasimpact-mpi
 R=${1:-5}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 if ! command -v mpirun >/dev/null 2>&1 || [ ! -x "$MPI" ]; then

@@ -7,7 +7,7 @@ T_PASS=0; T_FAIL=0; T_FAILED=""; T_SKIP=0; T_SKIPPED=""
 NL='
 '
 TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
-UASRISK=${UASRISK:-./uasrisk}
+UASIMPACT=${UASIMPACT:-./uasimpact}
 
 check() {
   name=$1; shift
@@ -20,9 +20,9 @@ skip() {
   T_SKIP=$((T_SKIP + 1)); T_SKIPPED="$T_SKIPPED$NL$1 ($2)"; echo "[  SKIPPED ] $1 ($2)"
 }
 
-# run uasrisk, keeping stdout, stderr and status in $TMP/out, $TMP/err, $RC
-run() { "$UASRISK" "$@" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
-run_in() { f=$1; shift; "$UASRISK" "$@" <"$f" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
+# run uasimpact, keeping stdout, stderr and status in $TMP/out, $TMP/err, $RC
+run() { "$UASIMPACT" "$@" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
+run_in() { f=$1; shift; "$UASIMPACT" "$@" <"$f" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
 
 # a compound condition, evaluated in the caller's variables: check NAME cond '[ a ] && [ b ]'
 cond() { eval "$1"; }

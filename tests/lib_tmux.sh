@@ -1,4 +1,4 @@
-# lib_tmux.sh: drive uasrisk in tmux as a person would (after tests/lib.sh). A private tmux
+# lib_tmux.sh: drive uasimpact in tmux as a person would (after tests/lib.sh). A private tmux
 # server, killed at exit; sessions started with 'start NAME W H [ENV=VALUE...] [-- ARGS...]'.
 #   grab S [-e]        the screen (with -e: with escapes) into $TMP/screen
 #   wait_for S RE [N]  wait up to N seconds (5) until the screen matches RE (grep -E)
@@ -7,8 +7,8 @@
 #   line S TEXT        type TEXT literally, then Enter
 #   coloured S         the screen holds SGR colour escapes
 #   alive S            the program in S still runs
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
-SOCK="uasrisk-test-$$"
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
+SOCK="uasimpact-test-$$"
 TM() { tmux -L "$SOCK" -f /dev/null "$@"; }
 trap 'tmux -L "$SOCK" kill-server 2>/dev/null; rm -rf "$TMP"' EXIT
 ESC=$(printf '\033')

@@ -7,7 +7,7 @@
 # followed to its file and stays a link; SIGTERM during a write leaves no temporary file.
 . tests/lib.sh
 
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 printf 'along,0.00,0.05,0.10\n0.10,0,2,0\n0.05,50,100,10\n0.00,100,95,0\n-0.05,0,4,0\n' \
   >"$TMP/small.csv"
 # a grid of 400 cells, so that its export is larger than the size limit
@@ -40,7 +40,7 @@ for w in session grid history contacts model; do
   mkdir -p "$TMP/d"
   printf 'OLD CONTENT\n' >"$TMP/d/$w.out"
 
-  # writes fail past lim x 512 bytes; SIGXFSZ is not trapped here: uasrisk must survive it
+  # writes fail past lim x 512 bytes; SIGXFSZ is not trapped here: uasimpact must survive it
   # itself. The message goes to its file through a pipe, and the status through fd 3, which the
   # limit does not reach
   RC=$( { { (ulimit -f "$lim"; exec "$U" -c "$pre; $cmd $TMP/d/$w.out") 2>&1 >/dev/null

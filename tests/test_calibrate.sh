@@ -36,10 +36,10 @@ printf 'case C 40.6 x.csv\nfree arm_k 2000 1000 6000\n' >"$TMP/bad.spec"
 check "malformed spec" cond '[ "$RC" -eq 1 ] && has "$TMP/err" "bad.spec:2: expected free NAME LO HI START"'
 
 # the man page's CALIBRATION section declares each free parameter of the spec
-sed -n '/^\.SS Free parameters/,/^\.SS Discrete/p' man/uasrisk-model.5 >"$TMP/decl"
+sed -n '/^\.SS Free parameters/,/^\.SS Discrete/p' man/uasimpact-model.5 >"$TMP/decl"
 ok=1
 for name in $(awk '$1 == "free" { print $2 }' "$SPEC"); do
   grep -q "^\.BR\{0,1\} .*\b$name\b" "$TMP/decl" || { echo "not declared: $name"; ok=0; }
 done
-check "every free parameter declared in uasrisk-model(5)" [ "$ok" -eq 1 ]
+check "every free parameter declared in uasimpact-model(5)" [ "$ok" -eq 1 ]
 finish

@@ -1,4 +1,4 @@
-# test_cli.sh: the scripting contract of uasrisk(1): -c, script files, stdin, exit status,
+# test_cli.sh: the scripting contract of uasimpact(1): -c, script files, stdin, exit status,
 # FILE:LINE messages, CSV headers, and the man page covering every command
 . tests/lib.sh
 
@@ -86,7 +86,7 @@ printf 'case B\nset format csv\ndescent\n' >"$TMP/ok.ses"
 run_in "$TMP/ok.ses"
 check stdin_ok cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^B," "$TMP/out")" -eq 6 ]'
 run -h
-check help_option cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^usage: uasrisk"'
+check help_option cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^usage: uasimpact"'
 run -x
 check bad_option [ "$RC" -eq 2 ]
 
@@ -176,7 +176,7 @@ run -c help
 cmds=$(sed -n 's/^  \([a-z][a-z]*\).*/\1/p' "$TMP/out" | sort -u)
 check help_lists_commands [ -n "$cmds" ]
 for k in $cmds; do
-  check "man documents $k" grep -q "^\.BI* $k\( \|\$\)" man/uasrisk.1
+  check "man documents $k" grep -q "^\.BI* $k\( \|\$\)" man/uasimpact.1
 done
 
 
@@ -190,17 +190,17 @@ run -c "set output '/tmp/x.png"
 check quote_unterminated cond '[ "$RC" -eq 1 ] && has "$TMP/err" "unterminated quote"'
 
 # ---- standard output that cannot be written: one message, a non-zero exit (issue 24, item 6) ----
-"$UASRISK" -c 'case C; impact 0 0; history' >/dev/full 2>"$TMP/err"; RC=$?
+"$UASIMPACT" -c 'case C; impact 0 0; history' >/dev/full 2>"$TMP/err"; RC=$?
 check stdout_full cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "^-c:1: impact: cannot write the output: No space left on device$"'
-"$UASRISK" -c 'help' >/dev/full 2>"$TMP/err"; RC=$?
+"$UASIMPACT" -c 'help' >/dev/full 2>"$TMP/err"; RC=$?
 check stdout_full_help cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "help: cannot write the output: No space left on device$"'
-printf 'show wind\n' | "$UASRISK" >/dev/full 2>"$TMP/err"; RC=$?
+printf 'show wind\n' | "$UASIMPACT" >/dev/full 2>"$TMP/err"; RC=$?
 check stdout_full_stdin cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "^<stdin>:1: show: cannot write the output: No space left on device$"'
-"$UASRISK" -h >/dev/full 2>"$TMP/err"; RC=$?
+"$UASIMPACT" -h >/dev/full 2>"$TMP/err"; RC=$?
 check stdout_full_usage cond '[ "$RC" -eq 1 ] &&
-  has "$TMP/err" "^uasrisk: cannot write standard output: No space left on device$"'
+  has "$TMP/err" "^uasimpact: cannot write standard output: No space left on device$"'
 
 finish

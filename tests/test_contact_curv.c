@@ -10,7 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 
 static urEllipsoid ell(double x, double y, double z, double a, double b, double c, double turn) {
   urEllipsoid e;

@@ -15,7 +15,7 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 
-#include "uasrisk/contact.h"
+#include "uasimpact/contact.h"
 
 #define NPAIR   1000
 #define NSAMPLE 20000

@@ -11,7 +11,7 @@
 
 #include <cmocka.h>
 
-#include "uasrisk/contact.h"
+#include "uasimpact/contact.h"
 
 /* |a - b| <= tol with both values printed on failure (cmocka 1.1 has float-only compares) */
 #define assert_near(a, b, tol) near_((a), (b), (tol), #a, __FILE__, __LINE__)

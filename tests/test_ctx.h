@@ -1,8 +1,8 @@
 /* test_ctx.h: a fresh workbench context per cmocka test (ura_init, output to /dev/null), freed
  * with everything it holds, and lines run on it that must succeed or fail as expected; for the
  * tests of the application's caches (test_modelcache.c, test_recall.c). Include after cmocka.h. */
-#ifndef UASRISK_TEST_CTX_H
-#define UASRISK_TEST_CTX_H
+#ifndef UASIMPACT_TEST_CTX_H
+#define UASIMPACT_TEST_CTX_H
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <cmocka.h>
 
-#include "uasrisk/descent.h"
+#include "uasimpact/descent.h"
 
 /* vertical fall with quadratic drag from rest: v(h) = vt sqrt(1 - exp(-2 g h / vt^2)),
    t(h) = (vt/g) acosh(exp(g h / vt^2)) */

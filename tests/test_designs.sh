@@ -57,7 +57,7 @@ if ! command -v tmux >/dev/null 2>&1; then
 fi
 . tests/lib_tmux.sh
 start d1 120 40
-check d_prompt wait_for d1 'uasrisk\[A\]>'
+check d_prompt wait_for d1 'uasimpact\[A\]>'
 line d1 "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag"
 check d_compare wait_for d1 'plain +B +0\.[0-9]+ +bag' 20
 line d1 "view"

@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 
 static const double R = 0.0875, CZ = 0.15, ATM = 101325;
 

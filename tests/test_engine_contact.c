@@ -11,7 +11,7 @@
 #include <string.h>
 #include <cmocka.h>
 #include "../src/core/engine_internal.h"
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 
 // scalp on a flat (Table B1 of the paper)
 static const double E1 = 2.23e7, NU1 = 0.29, E2 = 5.48e10, NU2 = 0.34, R = 0.0875;

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 #include "test_engine_scene.h"
 
 //---------------------------------- helpers -------------------------------------------------------

@@ -10,8 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/engine.h"
-#include "uasrisk/modellang.h"
+#include "uasimpact/engine.h"
+#include "uasimpact/modellang.h"
 
 static urModel* parse(const char* text) {
   char err[256];

@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 
 // independent piecewise-linear interpolation (linear extrapolation)
 static double interp(const double* x, const double* y, int n, double v) {

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 #include "test_engine_scene.h"
 
 #define ROWS 2000

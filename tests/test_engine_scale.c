@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 
 static const char* TEXT =
     "param M 3.5 kg\n"

@@ -2,12 +2,12 @@
  * human (17 segments of human-model.md §3-5 plus a sternum plate on a prismatic joint) and a
  * 7-body RA3-like drone (main body + six arms on universal joints with Cardan restraints) with a
  * bottom airbag; about 30 contact pairs. Parameters are placeholders, not calibrated. */
-#ifndef UASRISK_TEST_ENGINE_SCENE_H
-#define UASRISK_TEST_ENGINE_SCENE_H
+#ifndef UASIMPACT_TEST_ENGINE_SCENE_H
+#define UASIMPACT_TEST_ENGINE_SCENE_H
 
 #include <math.h>
 #include <string.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 
 typedef struct {
   const char* name;

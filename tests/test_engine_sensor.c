@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 
 // pendulum about y through the world origin, bob below at distance l
 static urModel* pendulum(double mass, double l, double ic) {

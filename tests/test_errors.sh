@@ -3,7 +3,7 @@
 # state unchanged (interactively, where errors do not stop the session)
 . tests/lib.sh
 
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 
 # refused NAME COMMANDS REGEX: -c fails with status 1 and one line of error matching REGEX
 refused() {
@@ -16,7 +16,7 @@ kept() {
   printf 'set wind 3\nset mass 7\nshow\n%s\nshow\n' "$2" >"$TMP/in"
   run_in "$TMP/in" -i
   # the two show listings (each from 'case' to the last model parameter) must be the same
-  awk '/^uasrisk\[/{next} /^case /{n++} n==1{print >f1} n==2{print >f2}' f1="$TMP/show1" \
+  awk '/^uasimpact\[/{next} /^case /{n++} n==1{print >f1} n==2{print >f2}' f1="$TMP/show1" \
     f2="$TMP/show2" "$TMP/out"
   check "$1" cond '[ "$RC" -eq 0 ] && has "$TMP/err" "^error: " && [ -s "$TMP/show1" ] &&
     cmp -s "$TMP/show1" "$TMP/show2" && has "$TMP/show2" "^wind  *3 m/s"'

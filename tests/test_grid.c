@@ -8,7 +8,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "uasrisk/grid.h"
+#include "uasimpact/grid.h"
 
 /* a synthetic impact: p = 1 inside a disc of radius 0.3 m, a smooth field outside */
 typedef struct {

@@ -55,7 +55,7 @@ static void stance(void** state) {
 
 /* the zero-wind centre cells (training): C >= 0.99, B within a factor 1.3 of Table 5's 63.7 %,
    A above 0 and below B; at the centres of A and B HIC's share of P is at least 2/3, the
-   calibration's constraint (uasrisk-model(5)), within 0.005 */
+   calibration's constraint (uasimpact-model(5)), within 0.005 */
 static double hic_share(const urImpactResult* r) {
   const double* q = r->inj.pof;
   return q[urCRIT_HIC] / (q[urCRIT_HIC] + q[urCRIT_NIJ] + q[urCRIT_VC]);

@@ -15,7 +15,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_vector.h>
 
-#include "uasrisk/init.h"
+#include "uasimpact/init.h"
 
 /* in a child: apply flags (unless < 0), then make GSL fail (copying a vector into one of another
    length is a GSL_EBADLEN error); the child's wait status: exit 0 when the error came back as

@@ -7,7 +7,7 @@
 
 #include <cmocka.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 #define FS 50000.0 /* sampling rate, Hz (J211 asks >= 10 kHz for CFC 1000) */
 #define NS 50001   /* 1 s of samples */

@@ -7,7 +7,7 @@
 
 #include <cmocka.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 #define DT   1e-5 /* sample step, s */
 #define NMAX 8001

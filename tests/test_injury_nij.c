@@ -6,7 +6,7 @@
 
 #include <cmocka.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 static void test_mode_by_sign(void** state) {
   assert_int_equal(ur_nij_mode(100, 10), urNIJ_NTF);

@@ -8,7 +8,7 @@
 
 #include <cmocka.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 static void test_hic_curve(void** state) {
   urInjuryParams p;

@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 /* the criterion and value rows fit together: each value belongs to the range of its criterion,
    the ranges tile [0, urNVAL) in order, names are unique, PoF columns are p_NAME */

@@ -6,7 +6,7 @@
 
 #include <cmocka.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 #define AMP   0.05              /* deflection amplitude, m */
 #define OMEGA (2 * M_PI * 25.0) /* rad/s: 40 ms period */

@@ -4,10 +4,10 @@
 # line and never exits (tmux)
 . tests/lib.sh
 
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
 
-# start uasrisk with ARGS in the background (stdin from $IN when set); it writes $TMP/ready.ses
+# start uasimpact with ARGS in the background (stdin from $IN when set); it writes $TMP/ready.ses
 # when the work to interrupt is about to start; with $1 = grid we wait until its worker threads
 # run (the grid's cells are being computed, not its extents), then $2 seconds more
 start_bg() { what=$1; delay=$2; shift 2
@@ -96,7 +96,7 @@ if ! command -v tmux >/dev/null 2>&1; then
   skip terminal_checks "tmux is not installed"
   finish
 fi
-SOCK="uasrisk-int-$$"
+SOCK="uasimpact-int-$$"
 TM() { tmux -L "$SOCK" -f /dev/null "$@"; }
 trap 'tmux -L "$SOCK" kill-server 2>/dev/null; rm -rf "$TMP"' EXIT
 grab() { TM capture-pane -p -S -100 -t t >"$TMP/screen"; }
@@ -112,10 +112,10 @@ alive() { [ "$(TM display -p -t t "#{pane_dead}")" = 0 ]; }
 # PAGER=cat: grid show's long output straight to the screen (the pager is test_pager.sh's)
 TM new-session -d -s t -x 150 -y 50 -c "$PWD" "env HOME=$TMP PAGER=cat $U"
 TM set -t t remain-on-exit on
-check tty_prompt wait_for 'uasrisk\[A\]>'
+check tty_prompt wait_for 'uasimpact\[A\]>'
 TM send-keys -t t -l 'show wi'
 TM send-keys -t t C-c
-check tty_ctrl_c_line_dropped wait_for '^uasrisk\[A\]> show wi\^C$'
+check tty_ctrl_c_line_dropped wait_for '^uasimpact\[A\]> show wi\^C$'
 TM send-keys -t t C-c
 sleep 0.3
 check tty_second_ctrl_c_alive alive

@@ -1,6 +1,6 @@
 # test_man.sh: the man pages cover the command table: every command listed by help, and every
 # keyword of its usage (plot sweep, export sweep, sweep clear, model load, ...), has an entry in
-# man/uasrisk.1; the pages format without errors; make install installs all three.
+# man/uasimpact.1; the pages format without errors; make install installs all three.
 . tests/lib.sh
 
 run -c help
@@ -10,7 +10,7 @@ sed -n 's/^  \([a-z].*\)$/\1/p' "$TMP/out" | sed 's/  .*//' >"$TMP/usages"
 check usages_read [ "$(lines "$TMP/usages")" -ge 20 ]
 
 # the entries of the COMMANDS section, font escapes and quotes removed
-sed -n '/^\.SH COMMANDS/,/^\.SH /p' man/uasrisk.1 | grep '^\.B' |
+sed -n '/^\.SH COMMANDS/,/^\.SH /p' man/uasimpact.1 | grep '^\.B' |
   sed 's/\\f[BIRP]//g; s/\\ / /g; s/"//g; s/^\.B[IR]* //' >"$TMP/entries"
 
 # the keywords at the first place of a usage: lowercase words at bracket depth 0 that begin it
@@ -35,7 +35,7 @@ while read -r cmd args; do
 done <"$TMP/usages"
 
 # the pages format (groff's warnings other than line adjustment are errors)
-for p in man/uasrisk.1 man/uasrisk-model.5 man/uasrisk-injury.7; do
+for p in man/uasimpact.1 man/uasimpact-model.5 man/uasimpact-injury.7; do
   if command -v groff >/dev/null 2>&1; then
     groff -man -Tutf8 -ww "$p" 2>"$TMP/groff" >/dev/null
     check "formats $p" cond '! grep -v "cannot adjust line" "$TMP/groff" | grep -q .'
@@ -46,9 +46,9 @@ done
 if command -v make >/dev/null 2>&1; then
   make -s install DESTDIR="$TMP/root" PREFIX=/usr >"$TMP/make" 2>&1
   check install_status [ $? -eq 0 ]
-  check install_pages cond '[ -x "$TMP/root/usr/bin/uasrisk" ] &&
-    [ -s "$TMP/root/usr/share/man/man1/uasrisk.1" ] &&
-    [ -s "$TMP/root/usr/share/man/man5/uasrisk-model.5" ] &&
-    [ -s "$TMP/root/usr/share/man/man7/uasrisk-injury.7" ]'
+  check install_pages cond '[ -x "$TMP/root/usr/bin/uasimpact" ] &&
+    [ -s "$TMP/root/usr/share/man/man1/uasimpact.1" ] &&
+    [ -s "$TMP/root/usr/share/man/man5/uasimpact-model.5" ] &&
+    [ -s "$TMP/root/usr/share/man/man7/uasimpact-injury.7" ]'
 fi
 finish

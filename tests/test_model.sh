@@ -7,7 +7,7 @@
 # Ctrl-C stops a load that waits (issue 24, items 3, 5 and 8)
 . tests/lib.sh
 
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 fails_with() { [ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "$1"; }
 now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
 
@@ -24,7 +24,7 @@ check nobodies_case_a fails_with \
 printf 'case B\nimpact 0 0\nmodel parts\nshow\nmodel load %s\nmodel parts\nshow\ncontacts\nimpact 0 0\nset bag_p0 -1\nsave session %s/s.ses\n' \
   "$TMP/nobodies.urm" "$TMP" >"$TMP/in"
 run_in "$TMP/in" -i
-awk '/^uasrisk\[/{next} /^human /{n++} n==1{print >f1} n==2{print >f2}' f1="$TMP/a1" f2="$TMP/a2" "$TMP/out"
+awk '/^uasimpact\[/{next} /^human /{n++} n==1{print >f1} n==2{print >f2}' f1="$TMP/a1" f2="$TMP/a2" "$TMP/out"
 check nobodies_state_kept cond '[ -s "$TMP/a1" ] && head -n "$(wc -l <"$TMP/a1")" "$TMP/a2" |
   cmp -s - "$TMP/a1" && has "$TMP/a2" "^ra3  *built-in$"'
 check nobodies_impact_kept cond 'has "$TMP/out" "^# impact at (0, 0) m: [0-9]* pair"'
@@ -80,7 +80,7 @@ awk 'BEGIN { print "part big"; print "body b0 parent=world joint=free pos=0,0,5 
   >"$TMP/huge.urm"
 t0=$(now_ms); run -c "model load $TMP/huge.urm"; MS=$(( $(now_ms) - t0 ))
 echo "  (a model of 100000 bodies refused after $MS ms)"
-check huge_model_refused cond 'fails_with "huge.urm:[0-9]*: more than 1000 bodies in the model; accepted: at most 1000 (uasrisk-model(5), LIMITS)" &&
+check huge_model_refused cond 'fails_with "huge.urm:[0-9]*: more than 1000 bodies in the model; accepted: at most 1000 (uasimpact-model(5), LIMITS)" &&
   [ "$MS" -lt 3000 ]'
 awk 'BEGIN { for (i = 0; i < 300; i++) printf "part p%d\n", i }' >"$TMP/parts.urm"
 run -c "model load $TMP/parts.urm"

@@ -11,7 +11,7 @@
 #include <string.h>
 #include <time.h>
 #include <cmocka.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 
 //---------------------------------- helpers -------------------------------------------------------
 
@@ -1029,7 +1029,7 @@ static void test_stop_and_limits(void** state) {
   assert_null(ur_model_parse(&big, 1, NULL, 0, err, sizeof err));
   assert_string_equal(err,
                       "big.urm:1001: more than 1000 bodies in the model; accepted: at most "
-                      "1000 (uasrisk-model(5), LIMITS)");
+                      "1000 (uasimpact-model(5), LIMITS)");
 
   /* 1000 bodies and 3999 parameters parse in well under a second (names by hash) */
   char* end = strstr(text, "body b1000 ");

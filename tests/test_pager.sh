@@ -49,7 +49,7 @@ fi
 fits80() { grab "$1" -J; ! awk 'length > 80 { bad = 1 } END { exit !bad }' "$TMP/screen"; }
 
 start p1 80 24 PAGER=
-check prompt wait_for p1 'uasrisk\[A\]> *$'
+check prompt wait_for p1 'uasimpact\[A\]> *$'
 line p1 "case C"
 line p1 "impact 0 0"
 check impact_compact wait_for p1 '^dpar +dperp +hic15 +nij +vc_th +vc_ab +p_hic +p_nij +p_vc +p$' 60
@@ -70,10 +70,10 @@ line p1 "history all"
 check history_pages wait_for p1 '^:$' 10
 check history_paged_top cond 'grep -q "^ *t  *head_acc_x" "$TMP/screen"'
 keys p1 q
-check pager_quits wait_for p1 'uasrisk\[C\]> *$'
+check pager_quits wait_for p1 'uasimpact\[C\]> *$'
 line p1 "set pager off"
 line p1 "history all"
-check pager_off wait_for p1 'uasrisk\[C\]> *$'
+check pager_off wait_for p1 'uasimpact\[C\]> *$'
 check pager_off_no_less cond '! grep -q "^:$" "$TMP/screen" && grep -q "^0\.[0-9]* " "$TMP/screen"'
 line p1 "set pager on"
 
@@ -81,11 +81,11 @@ line p1 "set pager on"
 keys p1 C-l
 keys p1 -l "history head_a"
 keys p1 Tab
-check history_tab wait_for p1 'uasrisk\[C\]> history head_acc *$'
+check history_tab wait_for p1 'uasimpact\[C\]> history head_acc *$'
 keys p1 C-u
 keys p1 -l "plot history chest_d"
 keys p1 Tab
-check plot_history_tab wait_for p1 'uasrisk\[C\]> plot history chest_defl *$'
+check plot_history_tab wait_for p1 'uasimpact\[C\]> plot history chest_defl *$'
 keys p1 C-u
 
 # show PREFIX at the prompt; a slip gets a suggestion
@@ -115,20 +115,20 @@ check view_values cond 'grep -q "^dpar [-0-9.]* m  dperp [-0-9.]* m  P " "$TMP/s
 check view_orientation cond 'grep -q "dperp m (+ left of course), rows dpar m (+ ahead)" "$TMP/screen"'
 check view_fits fits80 p1
 keys p1 q
-check view_back wait_for p1 'uasrisk\[A\]> *$'
+check view_back wait_for p1 'uasimpact\[A\]> *$'
 
 # the prompt names the live model where it is not the case's
 line p1 "set bag_p0 1.2 atm"
-check prompt_modified wait_for p1 'uasrisk\[A\|modified\]> *$'
+check prompt_modified wait_for p1 'uasimpact\[A\|modified\]> *$'
 line p1 "case A"
-check prompt_case_again wait_for p1 'uasrisk\[A\]> *$'
+check prompt_case_again wait_for p1 'uasimpact\[A\]> *$'
 printf 'part bag2\n' >"$TMP/bag2.urm"
 line p1 "model load $TMP/bag2.urm"
-check prompt_loaded wait_for p1 'uasrisk\[A\|bag2\]> *$'
+check prompt_loaded wait_for p1 'uasimpact\[A\|bag2\]> *$'
 
 # PAGER names the pager (sh -c, as git does); one that cannot run leaves the text on screen
 start p2 80 24 "PAGER='sed -n 1p'"
-check prompt2 wait_for p2 'uasrisk\[A\]> *$'
+check prompt2 wait_for p2 'uasimpact\[A\]> *$'
 line p2 "show"
 check pager_env wait_for p2 '^case +A$'
 check pager_env_used cond '[ "$(grep -c . "$TMP/screen")" -le 4 ]'
@@ -136,12 +136,12 @@ check pager_env_used cond '[ "$(grep -c . "$TMP/screen")" -le 4 ]'
 line p2 "set pager off"
 keys p2 C-l
 line p2 "help"
-check help_all wait_for p2 '^  exit +leave uasrisk$'
+check help_all wait_for p2 '^  exit +leave uasimpact$'
 TM capture-pane -p -J -S -300 -t p2 >"$TMP/screen"
 check help_all_fits cond '! awk "length > 80 { bad = 1 } END { exit !bad }" "$TMP/screen" &&
   grep -q "^ *nij_ce,vc_thorax" "$TMP/screen"'
 start p3 80 24 PAGER=/nonexistent/pager
-check prompt3 wait_for p3 'uasrisk\[A\]> *$'
+check prompt3 wait_for p3 'uasimpact\[A\]> *$'
 line p3 "show"
 check pager_missing_prints wait_for p3 '^window +0\.06 s$'
 finish

@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <cmocka.h>
 
-#include "uasrisk/parametric.h"
+#include "uasimpact/parametric.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -21,7 +21,7 @@ static void table3_zero_wind(void** state) {
 }
 
 /* 10 m/s wind: eq. D.1 with the stated 1.73 m person gives 5.99 m^2 at 37 deg and 2.78 at
-   85 deg (the paper prints 6.45 and 2.81, see uasrisk(1)); closed form here */
+   85 deg (the paper prints 6.45 and 2.81, see uasimpact(1)); closed form here */
 static void gliding_closed_form(void** state) {
   urParametricParams p;
   urParametricResult r;

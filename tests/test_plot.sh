@@ -3,8 +3,8 @@
 # (SIGPIPE), and the placeholders that are not wired yet
 . tests/lib.sh
 
-# uasrisk by absolute path, so that PATH can be changed
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+# uasimpact by absolute path, so that PATH can be changed
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 # the paper's Table 6 (sessions/paper/grids, part of the repository: its absence is a failure)
 T6=sessions/paper/grids/table06_caseC_wind0.csv
 Q=0.8469
@@ -108,7 +108,7 @@ if command -v gnuplot >/dev/null 2>&1; then
   check inject_backquote_plain cond '[ "$(cat "$TMP/rc")" -eq 0 ] &&
     [ -s "$TMP/atk/x\`touch pwned5\`.txt" ]'
 fi
-# what reaches gnuplot: the terminal as uasrisk writes it, the output in single quotes
+# what reaches gnuplot: the terminal as uasimpact writes it, the output in single quotes
 run -c "set terminal 'pngcairo  font \"Arial,10\" size 640,480 noenhanced'; show terminal"
 check terminal_normalised has "$TMP/out" "^terminal  *pngcairo font 'Arial,10' size 640,480 noenhanced$"
 

@@ -47,15 +47,15 @@ PAPER='# speed and angle: the paper'"'"'s Table 2, case B'"'"'s column, at each 
   printf 'A2,0,0,7.500,90.00,0.050\nA2,4,0,8.500,62.00,0.049\nA2,10,0,12.488,36.80,0.452\n'
   echo "$PAPER"
   printf 'case,wind,speed,angle,face,step,cells,contact_cells,q,seconds\nC,0,40.600,90.00,0,0.05,1271,602,0.8500,9.5\n'
-  "$UASRISK" -c "set format csv; grid load $G/table04_caseA_wind0.csv; grid cells" |
+  "$UASIMPACT" -c "set format csv; grid load $G/table04_caseA_wind0.csv; grid cells" |
     sed 's/^0\.000,0\.000,\([01]\),\(.*\),[^,]*$/0.000,0.000,1,\2,1/'
   printf '0.900,0.000,1,0,0,0,0,0.2\n'
-  "$UASRISK" -c "set format csv; grid load $G/table08_caseA_wind10.csv; grid cells" |
+  "$UASIMPACT" -c "set format csv; grid load $G/table08_caseA_wind10.csv; grid cells" |
     awk -F, -v OFS=, '/^-?[0-9]/ { $1 = sprintf("%.3f", $1 + 0.25) } { print }'
   echo "$PAPER"
   echo '# tau top: Delta is taken when the drone centre reaches head-top level, 0.863 m further along the course than the paper'"'"'s text (R_max above the head top; '"'"'set tau rmax'"'"')'
   printf 'case,wind,speed,angle,face,step,cells,contact_cells,q,seconds\nA,10,12.500,37.00,0,0.05,1000,500,0.6800,1.5\n'
-  "$UASRISK" -c "set format csv; grid load $G/table08_caseA_wind10.csv; grid cells" |
+  "$UASIMPACT" -c "set format csv; grid load $G/table08_caseA_wind10.csv; grid cells" |
     sed 's/^\(# grid of case .*; status: complete\)$/\1; tau top (Delta at head-top level)/'
 } >"$R/raw.csv"
 check made_up_top_cells has "$R/raw.csv" '^# grid of case A, wind 10 m/s, face 0 deg (.*); status: complete; tau top'

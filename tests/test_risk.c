@@ -9,8 +9,8 @@
 #include <stdlib.h>
 #include <cmocka.h>
 
-#include "uasrisk/risk.h"
-#include "uasrisk/rng.h"
+#include "uasimpact/risk.h"
+#include "uasimpact/rng.h"
 
 #define NEAR(a, b, tol)                                                                            \
   do {                                                                                             \

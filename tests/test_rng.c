@@ -7,7 +7,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include "uasrisk/rng.h"
+#include "uasimpact/rng.h"
 
 static void known_answers(void** state) {
   static const uint32_t ctr[3][4] = {{0, 0, 0, 0},

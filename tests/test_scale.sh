@@ -1,14 +1,14 @@
 # test_scale.sh: a script's grids split over processes (src/app/scale*.c): run serially, as 2 and
-# as 3 shards merged (uasrisk --shard I/N --part OUT; uasrisk merge), and under mpirun -n 2
-# (./uasrisk-mpi, make mpi), the outputs and the exported file must be the serial run's apart
+# as 3 shards merged (uasimpact --shard I/N --part OUT; uasimpact merge), and under mpirun -n 2
+# (./uasimpact-mpi, make mpi), the outputs and the exported file must be the serial run's apart
 # from the wall-clock fields (the grid row's seconds, montecarlo's time note). The script has a
 # grid, its cells, an impact, a wind sweep, a model-parameter sweep, risk, sora, compare, a small
 # montecarlo on a response surface with its check grids, and an export. Then every refusal of merge (status 2, one line) and of --shard, and Ctrl-C or
 # SIGTERM on MPI rank 0 stopping every rank.
 . tests/lib.sh
 
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
-MPI=$(cd "$(dirname "$UASRISK")" && pwd)/uasrisk-mpi
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
+MPI=$(cd "$(dirname "$UASIMPACT")" && pwd)/uasimpact-mpi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 
 # the wall-clock fields masked: the last column of rows under a header ending in ',seconds',
@@ -114,7 +114,7 @@ if command -v mpirun >/dev/null 2>&1 && [ -x "$MPI" ]; then
     fi
   done
 else
-  skip mpi "mpirun or ./uasrisk-mpi missing: scripts/setup.sh mpi; make mpi"
+  skip mpi "mpirun or ./uasimpact-mpi missing: scripts/setup.sh mpi; make mpi"
 fi
 
 # ---- refusals: status 2, one line naming what is wrong ----

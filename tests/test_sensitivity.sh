@@ -18,9 +18,9 @@ check "15 rows per variant, shipped always run" cond '[ "$(grep -c "^shipped," "
   [ "$(lines "$C")" -eq 46 ]'
 
 # the shipped variant's Q is the plain grid's, at the paper's Table 2 speeds
-q=$("$UASRISK" -c 'set format csv; set descent paper; set step 0.2; set wind 4; case B; grid' |
+q=$("$UASIMPACT" -c 'set format csv; set descent paper; set step 0.2; set wind 4; case B; grid' |
   awk -F, 'NF == 10 && $1 == "B" { print $9 }')
-q10=$("$UASRISK" -c 'set format csv; set descent paper; set step 0.2; set wind 10; case A2; grid' |
+q10=$("$UASIMPACT" -c 'set format csv; set descent paper; set step 0.2; set wind 10; case A2; grid' |
   awk -F, 'NF == 10 && $1 == "A2" { print $9 }')
 check "shipped is the plain grids' Q" cond '[ -n "$q" ] && [ -n "$q10" ] &&
   grep -q "^shipped,B,4,$q,0.382," "$C" && grep -q "^shipped,A2,10,$q10,0.452," "$C"'
@@ -72,13 +72,13 @@ check "scoring rule (table17.awk)" awk -f scripts/table17.awk -f "$TMP/t.awk"
 
 # a variant's settings are applied: without the Nij rescale (or with it, if the shipped models
 # have none) Q moves; its settings are the other value of the shipped one
-r=$("$UASRISK" -c 'show nij_rescale' | awk '{ print $2 }')
+r=$("$UASIMPACT" -c 'show nij_rescale' | awk '{ print $2 }')
 check "variant applied" awk -F, '$1 == "shipped" { s[$2, $3] = $4 } $1 == "nij_rescale_alt" && s[$2, $3] != $4 { d++ }
   END { exit !(d > 0) }' "$C"
 check "variant settings from the shipped values" cond 'has "$S/variants.txt" "^nij_rescale_alt|set nij_rescale $((1 - r))|" &&
   has "$S/sensitivity.md" "^| nij_rescale_alt | .set nij_rescale $((1 - r)). |"'
 # the arm damping ratios from the shipped arm_k and a hinge inertia of 0.07 kg m^2
-k=$("$UASRISK" -c 'show arm_k' | awk '{ print $2 }')
+k=$("$UASIMPACT" -c 'show arm_k' | awk '{ print $2 }')
 c=$(awk -v k="$k" 'BEGIN { printf "%.3g", 2 * 0.2 * sqrt(k * 0.07) }')
 check "arm damping from the shipped arm_k" has "$S/variants.txt" "^arm_zeta_20|set arm_c $c|"
 

@@ -68,7 +68,7 @@ static void minimal(void** state) {
   /* the defaults: nothing but reset and the case */
   char* s = session(c);
   assert_string_equal(s,
-                      "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n"
+                      "# uasimpact session: replay with 'uasimpact FILE' or 'source FILE'\n"
                       "reset\ncase A\n");
   free(s);
   /* A1's own bag_p0 (1.1 atm) is the case's: not written; threads and output never */
@@ -78,7 +78,7 @@ static void minimal(void** state) {
          0);
   s = session(c);
   assert_string_equal(s,
-                      "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n"
+                      "# uasimpact session: replay with 'uasimpact FILE' or 'source FILE'\n"
                       "reset\ncase A1\nset wind 6\nset step 0.1\nset terminal \"png\"\n"
                       "set hic_window 0.036\nset thorax_k 27000 N/m\n");
   free(s);
@@ -98,7 +98,7 @@ static void replays(void** state) {
          0);
   char* s = session(c);
   char* before = shown(c);
-  char path[] = "/tmp/uasrisk-test-session-XXXXXX";
+  char path[] = "/tmp/uasimpact-test-session-XXXXXX";
   int fd = mkstemp(path);
   assert_true(fd >= 0);
   FILE* f = fdopen(fd, "w");

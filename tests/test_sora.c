@@ -9,7 +9,7 @@
 #include <stddef.h>
 #include <cmocka.h>
 
-#include "uasrisk/sora.h"
+#include "uasimpact/sora.h"
 
 static void near(double got, double want) {
   double tol = 1e-5 * fabs(want);

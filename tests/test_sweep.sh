@@ -5,7 +5,7 @@
 # descent' says (the paper's Table 2 or the descent model). Coarse 0.3 m grids keep it short.
 . tests/lib.sh
 
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 umask 022
 png_magic() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; }
 png_width() { od -An -tu1 -j16 -N4 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4}'; }

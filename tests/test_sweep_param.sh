@@ -7,7 +7,7 @@
 mkdir -p "$TMP/bin"
 printf '#!/bin/sh\ncat >>"%s/plot.gp"\n' "$TMP" >"$TMP/bin/gnuplot"
 chmod +x "$TMP/bin/gnuplot"
-U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 
 S='set format csv; set step 0.3; case A'
 run -c "$S; show bag_p0; sweep bag_p0 1.0,1.2 atm; show bag_p0; set bag_p0 1.2 atm; grid; sweep show; export sweep $TMP/s.csv"

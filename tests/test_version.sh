@@ -1,11 +1,11 @@
-# test_version.sh: uasrisk --version and -V (src/app/version.c, the Makefile): the version and
+# test_version.sh: uasimpact --version and -V (src/app/version.c, the Makefile): the version and
 # the commit the binary was built from; a git archive carries the commit in its COMMIT file
 . tests/lib.sh
 
 run --version
 check version_status [ "$RC" -eq 0 ]
 check version_line cond '[ "$(lines "$TMP/out")" -eq 1 ] &&
-  grep -Eq "^uasrisk [0-9]+\.[0-9]+(\.[0-9]+)? \(commit [^)]+\)$" "$TMP/out"'
+  grep -Eq "^uasimpact [0-9]+\.[0-9]+(\.[0-9]+)? \(commit [^)]+\)$" "$TMP/out"'
 cp "$TMP/out" "$TMP/long"
 run -V
 check version_short cmp -s "$TMP/out" "$TMP/long"

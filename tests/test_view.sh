@@ -26,7 +26,7 @@ check paper_grids_present cond '[ -r "$T6" ] && [ -r "$T8" ]'
 
 # ---- TERM=dumb: no cursor addressing; one line saying so, no escape codes, the prompt again ----
 start v0 100 20 TERM=dumb
-check dumb_prompt wait_for v0 'uasrisk\[A\]>'
+check dumb_prompt wait_for v0 'uasimpact\[A\]>'
 line v0 "grid load $TMP/tiny.csv; view"
 check dumb_refused wait_for v0 'error: view: the terminal \(TERM=dumb\) cannot place the cursor'
 line v0 "show case"
@@ -36,7 +36,7 @@ check dumb_no_escapes cond '! grep -q "$ESC\[[0-9;]*[HJ]" "$TMP/screen"'
 
 # ---- a 160x50 terminal ----
 start v1 160 50
-check prompt wait_for v1 'uasrisk\[A\]>'
+check prompt wait_for v1 'uasimpact\[A\]>'
 line v1 "grid load $T6"
 line v1 "grid show"
 check show_q wait_for v1 'Q = 0.8469 m\^2 over the full plane'
@@ -106,7 +106,7 @@ check alive_at_end cond '[ "$(TM display -p -t v1 "#{pane_dead}")" = 0 ]'
 
 # ---- too small, then resized ----
 start v2 30 10
-check small_prompt wait_for v2 'uasrisk'
+check small_prompt wait_for v2 'uasimpact'
 line v2 "grid load $T6"
 line v2 "view"
 check too_small wait_for v2 'need at least 60x12,'
@@ -121,7 +121,7 @@ check small_back wait_for v2 '^case +A$'
 
 # ---- NO_COLOR: no colour escapes, glyphs tell the bands ----
 start v3 160 50 NO_COLOR=1
-check nc_prompt wait_for v3 'uasrisk'
+check nc_prompt wait_for v3 'uasimpact'
 line v3 "grid load $T6"
 line v3 "grid show"
 check nc_show wait_for v3 'Q = 0.8469 m\^2 over the full plane'
@@ -135,7 +135,7 @@ keys v3 q
 
 # ---- scrolling: Table 8 (48 x 33 cells) in 100 x 30 ----
 start v4 100 30
-check sc_prompt wait_for v4 'uasrisk'
+check sc_prompt wait_for v4 'uasimpact'
 line v4 "grid load $T8"
 line v4 "view"
 check sc_view wait_for v4 'case A, wind 10 m/s'

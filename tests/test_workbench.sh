@@ -1,6 +1,6 @@
 # test_workbench.sh: the workbench as a person uses it, in tmux: a computed grid in the viewer
 # (case B; grid; view), back to the prompt with the state intact, plot history to a PNG, Tab
-# completion of commands, keywords, parameter names and file names, uasrisk -i FILE, the history
+# completion of commands, keywords, parameter names and file names, uasimpact -i FILE, the history
 # file, Ctrl-D; and the 'no display' message at the prompt
 . tests/lib.sh
 
@@ -14,10 +14,10 @@ png_magic() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1
 # ---- the acceptance walk: case B, grid, view, q, plot history ----
 # a coarse 0.1 m grid keeps this short (the default 0.05 m takes a few times longer)
 start w1 160 50
-check prompt wait_for w1 'uasrisk\[A\]>'
+check prompt wait_for w1 'uasimpact\[A\]>'
 line w1 "set step 0.1"
 line w1 "case B"
-check prompt_shows_case wait_for w1 'uasrisk\[B\]> *$'
+check prompt_shows_case wait_for w1 'uasimpact\[B\]> *$'
 line w1 "grid"
 check grid_q wait_for w1 '^ +B +0 +7\.480 +90\.00 +0 +0\.1 .* 0\.[0-9]{4} ' 120
 Q=$(sed -n 's/^ *B  *0  *7\.480  *90\.00  *0  *0\.1 .* \(0\.[0-9]\{4\}\)  *[0-9.]*$/\1/p' "$TMP/screen" |
@@ -66,7 +66,7 @@ check alive_after_plot alive w1
 : >"$TMP/tab-session.ses"
 complete() { # $1 typed, $2 expected line after Tab
   keys w1 C-u; TM send-keys -t w1 -l "$1"; keys w1 Tab
-  wait_for w1 "^uasrisk\\[B\\]> $2 ?\$" 3; r=$?; keys w1 C-u; return $r; }
+  wait_for w1 "^uasimpact\\[B\\]> $2 ?\$" 3; r=$?; keys w1 C-u; return $r; }
 check tab_command complete "ca" "case"
 check tab_keyword complete "plot sw" "plot sweep"
 check tab_second_keyword complete "plot sweep w" "plot sweep wind"
@@ -82,25 +82,25 @@ check tab_file_after_keyword complete "grid load $TMP/tab-se" "grid load $TMP/ta
 keys w1 C-d
 n=0; while alive w1 && [ "$n" -lt 50 ]; do sleep 0.1; n=$((n + 1)); done
 check ctrl_d_leaves cond '! alive w1'
-check history_file cond 'grep -q "^case B$" "$TMP/.uasrisk_history" &&
-  grep -q "^plot history head_acc$" "$TMP/.uasrisk_history"'
+check history_file cond 'grep -q "^case B$" "$TMP/.uasimpact_history" &&
+  grep -q "^plot history head_acc$" "$TMP/.uasimpact_history"'
 
 # ---- without gnuplot: one clear line, and the session goes on ----
 start w3 120 30 PATH=/nonexistent
-check nogp_prompt wait_for w3 'uasrisk\[A\]>'
+check nogp_prompt wait_for w3 'uasimpact\[A\]>'
 line w3 "set output $TMP/x.png"
 line w3 "plot pof"
 check nogp_message wait_for w3 \
   '^error: plot pof: gnuplot not found; install it \(Debian: gnuplot-nox\) or use export$'
 line w3 "case C"
-check nogp_goes_on wait_for w3 'uasrisk\[C\]> *$'
+check nogp_goes_on wait_for w3 'uasimpact\[C\]> *$'
 check nogp_no_file [ ! -e "$TMP/x.png" ]
 line w3 "quit"
 
-# ---- uasrisk -i FILE: the script, then the prompt on its state ----
+# ---- uasimpact -i FILE: the script, then the prompt on its state ----
 printf 'case C\nset wind 3\n' >"$TMP/start.ses"
 start w2 120 30 -- -i "$TMP/start.ses"
-check i_prompt wait_for w2 'uasrisk\[C\]>'
+check i_prompt wait_for w2 'uasimpact\[C\]>'
 line w2 "show wind"
 check i_state wait_for w2 '^wind +3 m/s$'
 line w2 "quit"

@@ -1,19 +1,19 @@
-/* app.h: the application layer of uasrisk: live case state, command table, output.
- * Prefix ura_ (application), types ura*. The numerical core (libuasrisk) knows nothing of this.
+/* app.h: the application layer of uasimpact: live case state, command table, output.
+ * Prefix ura_ (application), types ura*. The numerical core (libuasimpact) knows nothing of this.
  */
-#ifndef UASRISK_APP_H
-#define UASRISK_APP_H
+#ifndef UASIMPACT_APP_H
+#define UASIMPACT_APP_H
 
 #include <stddef.h>
 #include <stdio.h>
 
-#include "uasrisk/descent.h"
-#include "uasrisk/grid.h"
-#include "uasrisk/impact.h"
-#include "uasrisk/init.h"
-#include "uasrisk/injury.h"
-#include "uasrisk/modellang.h"
-#include "uasrisk/parametric.h"
+#include "uasimpact/descent.h"
+#include "uasimpact/grid.h"
+#include "uasimpact/impact.h"
+#include "uasimpact/init.h"
+#include "uasimpact/injury.h"
+#include "uasimpact/modellang.h"
+#include "uasimpact/parametric.h"
 #include "app_risk.h"
 
 #define uraMAXLIST     64 /* values in a list parameter */
@@ -501,7 +501,7 @@ void ura_pager_end(uraCtx* c);
 void ura_progress_label(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 void ura_progress_start(void);
 void ura_progress_line(const char* what, long done, long total, const char* noun);
-/* "uasrisk VERSION (commit HASH[-dirty])" (version.c) */
+/* "uasimpact VERSION (commit HASH[-dirty])" (version.c) */
 const char* ura_version(void);
 /* "did you mean" (suggest.c): the edit distance of two names; the nearest name offered for a
    word, near enough for a typing slip; its text (" (did you mean 'NAME'?)" or ""); the names of

@@ -2,11 +2,11 @@
  * risk_dist.c, plot_mc.c): deployment reliability, declared input distributions, Monte Carlo, and
  * the SORA figures. Included by app.h: the settings live in the live state (uraState.risk), so
  * that set, show, save session and case treat them as every other parameter. */
-#ifndef UASRISK_APP_RISK_H
-#define UASRISK_APP_RISK_H
+#ifndef UASIMPACT_APP_RISK_H
+#define UASIMPACT_APP_RISK_H
 
-#include "uasrisk/engine.h"
-#include "uasrisk/risk.h"
+#include "uasimpact/engine.h"
+#include "uasimpact/risk.h"
 
 #define uraMAXDIST 16 /* declared input distributions */
 

@@ -64,11 +64,11 @@ const uraCmd ura_cmds[] = {
     {"model", ura_cmd_model, 1, 2, uraC_NONE,
      "model show|params [PREFIX]|parts|save FILE|load FILE|drop PART",
      "print, list (params: with units and who set them; PREFIX: the names starting with it), "
-     "write or load the model set (human, drone, airbags, options: uasrisk-model(5)), or drop a "
+     "write or load the model set (human, drone, airbags, options: uasimpact-model(5)), or drop a "
      "part (before loading another drone)"},
     {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen|defl",
      "print a probability-of-fatality curve of the injury criteria as columns x,p "
-     "(Appendix C; settings in uasrisk-injury(7))"},
+     "(Appendix C; settings in uasimpact-injury(7))"},
     {"export", ura_cmd_export, 2, 2, uraC_NONE,
      "export grid|history|sweep|contacts|montecarlo FILE",
      "write the last grid's cells, the last impact's histories, the kept sweeps, the last "
@@ -87,11 +87,11 @@ const uraCmd ura_cmds[] = {
      "SORA 2.5 figures: critical area (Q, and Annex F) and iGRC of the unmitigated drone and the "
      "live case, and the reduction factor; mc: with the last montecarlo's intervals"},
     {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
-     "write a script that recreates the live state exactly (replay: uasrisk FILE, or source)"},
+     "write a script that recreates the live state exactly (replay: uasimpact FILE, or source)"},
     {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
      "run the commands of a session script; errors name the file and line"},
-    {"quit", ura_cmd_quit, 0, 0, uraC_NONE, "quit", "leave uasrisk (also: exit, Ctrl-D)"},
-    {"exit", ura_cmd_quit, 0, 0, uraC_NONE, "exit", "leave uasrisk"},
+    {"quit", ura_cmd_quit, 0, 0, uraC_NONE, "quit", "leave uasimpact (also: exit, Ctrl-D)"},
+    {"exit", ura_cmd_quit, 0, 0, uraC_NONE, "exit", "leave uasimpact"},
     {NULL, NULL, 0, 0, uraC_NONE, NULL, NULL}};
 
 const uraCmd* ura_cmd_find(const char* name) {
@@ -278,10 +278,10 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   for (const uraParam* p = ura_params; p->name; p++) {
     if (show_one(c, p, ext)) return -1;
   }
-  fprintf(c->out, "# injury criteria (uasrisk-injury(7))\n");
+  fprintf(c->out, "# injury criteria (uasimpact-injury(7))\n");
   for (int i = 0; i < ur_injury_param_count(); i++) show_injury(c, i);
   fprintf(c->out,
-          "# model parameters, SI units (uasrisk-model(5); 'model params' says who set "
+          "# model parameters, SI units (uasimpact-model(5); 'model params' says who set "
           "them)\n");
   const urModel* m = ura_model(c);
   for (int i = 0; m && i < m->nparam; i++) show_model_param(c, &m->param[i]);

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "app.h"
-#include "uasrisk/injury_registry.h"
+#include "uasimpact/injury_registry.h"
 #include "plot.h"
 
 /* FROM:TO in ms into s; 1 if word is a range, 0 if not, -1 with a message if malformed */

@@ -190,7 +190,7 @@ int ura_history_samples(uraCtx* c, double from, double to) {
   uraTable* t = ura_table_new(ncol, (const char* const*)names);
   ura_table_note(t,
                  "impact %s (%g, %g) m; t in s from tau; SI units; engine frames "
-                 "(uasrisk-model(5))",
+                 "(uasimpact-model(5))",
                  c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar,
                  c->last_dperp);
   for (int r = 0; r < d->nhist; r++) {

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "risk_internal.h"
-#include "uasrisk/sora.h"
+#include "uasimpact/sora.h"
 
 static const char* const bag_names[urMAXBAGS] = {"bag_bottom", "bag_front"};
 

@@ -2,13 +2,13 @@
  * and the parts of a screen), with one style table per colour scheme, after htop's
  * ColorElements/CRT_colors. Shared by 'grid show' (ANSI escapes) and 'view' (ncurses pairs).
  */
-#ifndef UASRISK_COLORS_H
-#define UASRISK_COLORS_H
+#ifndef UASIMPACT_COLORS_H
+#define UASIMPACT_COLORS_H
 
 #include <stddef.h>
 #include <stdio.h>
 
-#include "uasrisk/grid.h"
+#include "uasimpact/grid.h"
 
 /* band thresholds, percent: low < MED <= medium < HIGH <= high < SEVERE <= severe */
 #define uraBAND_MED    5.0

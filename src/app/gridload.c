@@ -1,5 +1,5 @@
 /* gridload.c: read a grid CSV into the last grid: the paper's tables (P in percent, the printed
- * half dperp >= 0, mirrored to the full plane with the column dperp = 0 once) and uasrisk's own
+ * half dperp >= 0, mirrored to the full plane with the column dperp = 0 once) and uasimpact's own
  * export (dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p over the full plane, p in 0..1).
  * Parsing is strict: the first problem gives FILE:LINE: message and the last grid is kept.
  */
@@ -481,7 +481,7 @@ static int export_row(reader* r, const int* col, xrow* x) {
   return 0;
 }
 
-/* uasrisk's export: named columns, one row per cell of the full plane, p in 0..1 */
+/* uasimpact's export: named columns, one row per cell of the full plane, p in 0..1 */
 static int load_export(reader* r, int hline, urGrid** out) {
   /* which field holds which column */
   int col[X_N], ncol_file = r->nfld, rc = -1;
@@ -633,7 +633,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
   if (got == 0) {
     bad(&r, r.line ? r.line : 1,
         "%s: expected a header 'along,0.00,0.05,...' (paper table) "
-        "or 'dpar,dperp,...,p' (uasrisk export)",
+        "or 'dpar,dperp,...,p' (uasimpact export)",
         r.line ? "no data" : "empty file");
     goto done;
   }
@@ -646,7 +646,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
   } else {
     bad(&r, hline,
         "missing header: expected 'along,0.00,0.05,...' (paper table) or "
-        "'dpar,dperp,...,p' (uasrisk export), found '%.40s'",
+        "'dpar,dperp,...,p' (uasimpact export), found '%.40s'",
         r.fld[0]);
     goto done;
   }

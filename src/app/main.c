@@ -1,4 +1,4 @@
-/* main.c: command line: uasrisk [-i] [-c COMMANDS] [FILE]... (-h, -V) */
+/* main.c: command line: uasimpact [-i] [-c COMMANDS] [FILE]... (-h, -V) */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -10,14 +10,14 @@
 
 static void usage(FILE* f) {
   fprintf(f,
-          "usage: uasrisk [-i] [-c COMMANDS] [FILE]...\n"
-          "       uasrisk --shard I/N --part OUT [-c COMMANDS] [FILE]...\n"
-          "       uasrisk merge PART...\n"
+          "usage: uasimpact [-i] [-c COMMANDS] [FILE]...\n"
+          "       uasimpact --shard I/N --part OUT [-c COMMANDS] [FILE]...\n"
+          "       uasimpact merge PART...\n"
           "  with no arguments: interactive on a terminal, else replay standard input\n"
           "  FILE         replay a session script\n"
           "  -c COMMANDS  run commands (separated by ';')\n"
           "  -i           stay interactive after the scripts and commands\n"
-          "  -h, --help   this text; see uasrisk(1)\n"
+          "  -h, --help   this text; see uasimpact(1)\n"
           "  -V, --version  the version and the commit it was built from\n");
 }
 
@@ -32,7 +32,7 @@ static int done(int rc) {
   int e = ura_out_errno() ? ura_out_errno() : errno;
   if (!bad) bad = fflush(stdout) || ferror(stdout), e = errno;
   if (bad) {
-    fprintf(stderr, "uasrisk: cannot write standard output: %s\n", strerror(e ? e : EIO));
+    fprintf(stderr, "uasimpact: cannot write standard output: %s\n", strerror(e ? e : EIO));
     return rc ? rc : 1;
   }
   return rc;
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
     FILE* out = ura_out_stream(STDOUT_FILENO);
     if (out) c->out = out;
   }
-  if (!c->model) fprintf(stderr, "uasrisk: warning: built-in model: %s\n", c->err);
+  if (!c->model) fprintf(stderr, "uasimpact: warning: built-in model: %s\n", c->err);
 
   /* --shard I/N --part OUT, merge PART..., or an MPI rank (scale.h) */
   int st = ura_scale_args(c, &argc, &argv);
@@ -70,13 +70,13 @@ int main(int argc, char** argv) {
       stay = 1;
     } else if (!strcmp(argv[i], "-c")) {
       if (i + 1 >= argc) {
-        fprintf(stderr, "uasrisk: -c needs the commands as its argument\n");
+        fprintf(stderr, "uasimpact: -c needs the commands as its argument\n");
         return 2;
       }
       i++;
       work = 1;
     } else if (argv[i][0] == '-' && argv[i][1]) {
-      fprintf(stderr, "uasrisk: unknown option '%s'\n", argv[i]);
+      fprintf(stderr, "uasimpact: unknown option '%s'\n", argv[i]);
       usage(stderr);
       return 2;
     } else {

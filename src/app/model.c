@@ -307,13 +307,13 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
   if (ura_parse_number(value, &v)) {
     return ura_fail(c,
                     "set %s: '%s' is not a number; accepted: a number, optionally with a "
-                    "unit (uasrisk-model(5))",
+                    "unit (uasimpact-model(5))",
                     name, value);
   }
   char si[urNAMELEN];
   if (unit && ur_unit_parse(unit, &f, si, sizeof si)) {
     return ura_fail(c,
-                    "set %s: unknown unit '%s'; accepted: the units of uasrisk-model(5) "
+                    "set %s: unknown unit '%s'; accepted: the units of uasimpact-model(5) "
                     "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L), or several "
                     "joined by * and / (N*m/rad)",
                     name, unit);
@@ -424,7 +424,7 @@ static int model_load(uraCtx* c, const char* path) {
     free(text);
     return ura_fail(c,
                     "model load: cannot use '%s': %s; accepted: a model text file "
-                    "(uasrisk-model(5))",
+                    "(uasimpact-model(5))",
                     path, why);
   }
   int rc = parts_merge(c, text, path, path);

@@ -514,7 +514,7 @@ static int write_pof(uraCtx* c, FILE* f, const void* arg) {
           "set key outside right top vertical Left reverse samplen 2 noenhanced\n");
   fprintf(f,
           "set multiplot layout 2,2 title \"probability of fatality curves "
-          "(uasrisk-injury(7))\" noenhanced\n");
+          "(uasimpact-injury(7))\" noenhanced\n");
   fprintf(f,
           "set title \"HIC15 -> P_HIC\" noenhanced\nset xlabel \"HIC15\"\n"
           "set xtics 1000\nplot $HIC using 1:2 with lines lw 2 notitle\n");

@@ -7,14 +7,14 @@
  * With an output file the file is complete when the function returns. Gnuplot's warnings go to
  * c->msg; text terminals' drawings to c->out.
  */
-#ifndef UASRISK_PLOT_H
-#define UASRISK_PLOT_H
+#ifndef UASIMPACT_PLOT_H
+#define UASIMPACT_PLOT_H
 
 #include <stddef.h>
 #include <stdio.h>
 
 #include "app.h"
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 /* one x-y curve */
 typedef struct {

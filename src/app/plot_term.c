@@ -89,7 +89,7 @@ int ura_terminal_check(uraCtx* c, const char* value, char* norm, size_t n) {
       "postscript, canvas, dumb, caca, sixelgd, kittygd, kittycairo, block, qt, wxt, x11; options "
       "size W,H (numbers, in or cm after each for vector terminals), font 'NAME,SIZE' (letters, "
       "digits, blanks, ,.-_+), background '#RRGGBB' or 'NAME', fontscale, linewidth, dashlength, "
-      "pointscale N, and words such as enhanced, mono, transparent, crop, ansi (uasrisk(1))";
+      "pointscale N, and words such as enhanced, mono, transparent, crop, ansi (uasimpact(1))";
   static const char* const size_units[] = {"in", "cm", NULL};
   const char* s = value;
   size_t len, k = 0;

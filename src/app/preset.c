@@ -1,4 +1,4 @@
-/* preset.c: the cases as the model declares them (preset statements, uasrisk-model(5)): the
+/* preset.c: the cases as the model declares them (preset statements, uasimpact-model(5)): the
  * state a case starts from, its names for messages and completion */
 #include <stdio.h>
 #include <string.h>

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <readline/history.h>
 #include <readline/readline.h>
@@ -159,13 +160,27 @@ static char** complete(const char* text, int start, int end) {
   return rl_completion_matches(text, gen);
 }
 
-static char* history_path(void) {
+/* the history file in HOME (NAME: .uasimpact_history, or the former name's .uasrisk_history) */
+static char* history_path(const char* name) {
   const char* home = getenv("HOME");
   if (!home) return NULL;
-  size_t n = strlen(home) + 32;
+  size_t n = strlen(home) + strlen(name) + 2;
   char* p = malloc(n);
-  snprintf(p, n, "%s/.uasrisk_history", home);
+  snprintf(p, n, "%s/%s", home, name);
   return p;
+}
+
+/* read the history: ~/.uasimpact_history, or once, while it does not exist yet, the history the
+   tool kept under its former name (~/.uasrisk_history, left as it is); the new file is written
+   at the end of the session */
+static void history_load(const char* hist) {
+  if (access(hist, F_OK) == 0) {
+    read_history(hist);
+    return;
+  }
+  char* old = history_path(".uasrisk_history");
+  if (old) read_history(old);
+  free(old);
 }
 
 /* Ctrl-C while typing: the line is dropped and the prompt comes again (never an exit) */
@@ -181,9 +196,9 @@ static int on_signal(void) {
 
 /* the prompt: the case, then the live model where it is not the case's: the parts loaded from
    files by name, "modified" when built-in parts were dropped or model parameters set
-   (uasrisk[A|bag2]>, uasrisk[A|modified]>) */
+   (uasimpact[A|bag2]>, uasimpact[A|modified]>) */
 static void prompt_text(uraCtx* c, char* buf, size_t n) {
-  size_t k = (size_t)snprintf(buf, n, "uasrisk[%s", c->st.casename);
+  size_t k = (size_t)snprintf(buf, n, "uasimpact[%s", c->st.casename);
   for (int i = 0; i < c->npart && k < n; i++) {
     if (strcmp(c->part[i].origin, "built-in")) {
       k += (size_t)snprintf(buf + k, n - k, "%s%s", strchr(buf, '|') ? "," : "|", c->part[i].name);
@@ -205,8 +220,8 @@ static void prompt_text(uraCtx* c, char* buf, size_t n) {
 }
 
 int ura_repl(uraCtx* c) {
-  char* hist = history_path();
-  rl_readline_name = "uasrisk";
+  char* hist = history_path(".uasimpact_history");
+  rl_readline_name = "uasimpact";
   repl_ctx = c;
   rl_attempted_completion_function = complete;
 
@@ -214,7 +229,7 @@ int ura_repl(uraCtx* c) {
      passes the signal on to ours, and calls on_signal */
   ura_interrupt_install(1);
   rl_signal_event_hook = on_signal;
-  if (hist) read_history(hist);
+  if (hist) history_load(hist);
   c->interactive = 1;
 
   /* read, run, report; errors never end the session */

@@ -1,7 +1,7 @@
 /* risk_internal.h: what the files of the risk figures share (cmd_risk.c, cmd_montecarlo.c,
  * risk_dist.c, plot_mc.c); after app.h */
-#ifndef UASRISK_RISK_INTERNAL_H
-#define UASRISK_RISK_INTERNAL_H
+#ifndef UASIMPACT_RISK_INTERNAL_H
+#define UASIMPACT_RISK_INTERNAL_H
 
 #include "app.h"
 

@@ -80,8 +80,8 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   if (ac >= 2 && !strcmp(av[1], "merge")) {
     if (ac < 3) {
       fprintf(stderr,
-              "uasrisk merge: no part files; usage: uasrisk merge PART... (the files of "
-              "'uasrisk --shard I/N --part PART', one per shard)\n");
+              "uasimpact merge: no part files; usage: uasimpact merge PART... (the files of "
+              "'uasimpact --shard I/N --part PART', one per shard)\n");
       return 2;
     }
     return ura_merge_new(c, ac - 2, av + 2, argc, argv);
@@ -101,7 +101,7 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
       av[w++] = av[i];
     } else if (!strcmp(av[i], "--shard") || !strcmp(av[i], "--part")) {
       if (i + 1 >= ac) {
-        fprintf(stderr, "uasrisk: %s needs %s as its argument\n", av[i],
+        fprintf(stderr, "uasimpact: %s needs %s as its argument\n", av[i],
                 av[i][2] == 's' ? "I/N (shard I of N)" : "the part file to write");
         return 2;
       }
@@ -109,7 +109,7 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
         part = av[++i];
       } else if (shard_arg(av[++i], &shard, &nshard)) {
         fprintf(stderr,
-                "uasrisk: --shard '%s' is not a shard; accepted: I/N with whole numbers "
+                "uasimpact: --shard '%s' is not a shard; accepted: I/N with whole numbers "
                 "0 <= I < N <= 1000000 (e.g. --shard 0/4)\n",
                 av[i]);
         return 2;
@@ -123,27 +123,27 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   if (!part && shard < 0) return 0;
   if (!part || shard < 0) {
     fprintf(stderr,
-            "uasrisk: --shard and --part go together; usage: uasrisk --shard I/N --part "
+            "uasimpact: --shard and --part go together; usage: uasimpact --shard I/N --part "
             "OUT FILE.ses\n");
     return 2;
   }
   int work = 0;
   for (int i = 1; i < w; i++) {
     if (!strcmp(av[i], "-i")) {
-      fprintf(stderr, "uasrisk: --shard runs a script, not a session; -i is not accepted\n");
+      fprintf(stderr, "uasimpact: --shard runs a script, not a session; -i is not accepted\n");
       return 2;
     }
     work = 1;
   }
   if (!work) {
     fprintf(stderr,
-            "uasrisk: --shard needs the script as FILE or -c COMMANDS; standard input is "
+            "uasimpact: --shard needs the script as FILE or -c COMMANDS; standard input is "
             "not accepted (merge could not replay it)\n");
     return 2;
   }
   c->scale = ura_shard_new(c, shard, nshard, part, w - 1, av + 1);
   if (!c->scale) {
-    fprintf(stderr, "uasrisk: --shard: %s\n", c->err);
+    fprintf(stderr, "uasimpact: --shard: %s\n", c->err);
     return 2;
   }
   return 0;

@@ -1,4 +1,4 @@
-/* scale.h: the cells of a script's grids split over processes (uasrisk(1), SCALING OUT).
+/* scale.h: the cells of a script's grids split over processes (uasimpact(1), SCALING OUT).
  *
  * Every process replays the whole script; only the simulated cells of each grid are shared out.
  * Grids are numbered in the order they run (0, 1, ...); the cells a grid simulates form a fixed
@@ -7,16 +7,17 @@
  *   serial  none (c->scale NULL): this process simulates every cell
  *   shard   --shard I/N --part OUT: position k of grid G when (k + G) mod N == I; the cells go
  *           to the part file OUT, the other cells are placeholders (output muted)
- *   merge   uasrisk merge PART...: replays the parts' command line with every cell from the parts
- *   mpi     ./uasrisk-mpi under mpirun: rank 0 hands out chunks on demand, gathers, broadcasts
+ *   merge   uasimpact merge PART...: replays the parts' command line with every cell from the parts
+ *   mpi     ./uasimpact-mpi under mpirun: rank 0 hands out chunks on demand, gathers, broadcasts
  */
 #ifndef URA_SCALE_H
 #define URA_SCALE_H
 
 #include "app.h"
 
-#define uraPART_VERSION 1
-#define uraPART_MAGIC   "uasrisk-part"
+#define uraPART_VERSION   1
+#define uraPART_MAGIC     "uasimpact-part"
+#define uraPART_MAGIC_OLD "uasrisk-part" /* the former name's parts, still read (with a note) */
 
 typedef struct uraScale uraScale;
 

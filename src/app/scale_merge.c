@@ -1,4 +1,4 @@
-/* scale_merge.c: uasrisk merge PART...: the parts of every shard checked against each other and
+/* scale_merge.c: uasimpact merge PART...: the parts of every shard checked against each other and
  * against the script and the built-in models as they are now, then the parts' command line
  * replayed with every simulated cell taken from the part of its shard (nothing is simulated):
  * the output is the unsharded run's. Whatever does not fit is refused with one line, status 2. */
@@ -16,7 +16,7 @@ typedef struct {
 } merge;
 
 static int refuse(const char* fmt, const char* a, const char* b) {
-  fprintf(stderr, "uasrisk merge: ");
+  fprintf(stderr, "uasimpact merge: ");
   fprintf(stderr, fmt, a, b);
   fputc('\n', stderr);
   return 2;
@@ -127,7 +127,7 @@ static int load(merge* m, int nfile, char** file) {
           qname, file[f]);
     } else if (q && strcmp(p.model, q->model)) {
       rc = refuse(
-          "'%s' and '%s' come from different uasrisk builds (built-in models); accepted: "
+          "'%s' and '%s' come from different uasimpact builds (built-in models); accepted: "
           "the parts of one run",
           qname, file[f]);
     }
@@ -175,7 +175,7 @@ static int load(merge* m, int nfile, char** file) {
   }
   if (strcmp(mh, p0->model)) {
     return refuse(
-        "the parts were written by a uasrisk with other built-in models%s%s; "
+        "the parts were written by a uasimpact with other built-in models%s%s; "
         "accepted: parts of this build",
         "", "");
   }

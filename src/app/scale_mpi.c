@@ -1,4 +1,4 @@
-/* scale_mpi.c: the MPI distributor of ./uasrisk-mpi ('make mpi': this file compiled with
+/* scale_mpi.c: the MPI distributor of ./uasimpact-mpi ('make mpi': this file compiled with
  * -DURA_MPI by mpicc; the plain build has none). Every rank replays the script; rank 0 prints,
  * the others are muted. In each grid rank 0 hands out chunks of the fixed cell list on demand
  * (about 1/(4 N) of the cells still free, so a slow chunk does not stall a rank): its own worker
@@ -60,7 +60,7 @@ static void wait_req(MPI_Request* r) {
 }
 
 static void abort_all(const char* why) {
-  fprintf(stderr, "uasrisk-mpi: %s; every rank stopped\n", why);
+  fprintf(stderr, "uasimpact-mpi: %s; every rank stopped\n", why);
   MPI_Abort(MPI_COMM_WORLD, 130);
 }
 
@@ -255,9 +255,9 @@ static int p_finish(uraScale* s, int rc) {
     if (done) break;
     if (rc && MPI_Wtime() - t0 > FINISH_WAIT) {
       if (d->err_fd >= 0) {
-        dprintf(d->err_fd, "uasrisk-mpi: rank %d failed alone: %s\n", d->rank, s->c->err);
+        dprintf(d->err_fd, "uasimpact-mpi: rank %d failed alone: %s\n", d->rank, s->c->err);
       }
-      fprintf(stderr, "uasrisk-mpi: rank %d failed alone; every rank stopped\n", d->rank);
+      fprintf(stderr, "uasimpact-mpi: rank %d failed alone; every rank stopped\n", d->rank);
       MPI_Abort(MPI_COMM_WORLD, rc);
     }
     pause_us(1000);
@@ -275,19 +275,19 @@ static const uraScaleOps ops = {"mpi", p_begin, p_next, p_end, p_finish};
 uraScale* ura_mpi_new(uraCtx* c, int* argc, char*** argv) {
   int have = 0;
   if (MPI_Init_thread(argc, argv, MPI_THREAD_MULTIPLE, &have) != MPI_SUCCESS) {
-    fprintf(stderr, "uasrisk-mpi: MPI_Init failed\n");
+    fprintf(stderr, "uasimpact-mpi: MPI_Init failed\n");
     exit(2);
   }
   if (have < MPI_THREAD_SERIALIZED) {
     fprintf(stderr,
-            "uasrisk-mpi: this MPI cannot be called from threads (MPI_THREAD_SERIALIZED "
+            "uasimpact-mpi: this MPI cannot be called from threads (MPI_THREAD_SERIALIZED "
             "is needed)\n");
     MPI_Abort(MPI_COMM_WORLD, 2);
   }
   uraScale* s = calloc(1, sizeof *s);
   mpiDist* d = calloc(1, sizeof *d);
   if (!s || !d) {
-    fprintf(stderr, "uasrisk-mpi: out of memory\n");
+    fprintf(stderr, "uasimpact-mpi: out of memory\n");
     MPI_Abort(MPI_COMM_WORLD, 2);
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &d->rank);
@@ -304,8 +304,8 @@ uraScale* ura_mpi_new(uraCtx* c, int* argc, char*** argv) {
   if (work <= 0) {
     if (d->rank == 0) {
       fprintf(stderr,
-              "uasrisk-mpi: runs scripts, not sessions; accepted: mpirun -n N "
-              "uasrisk-mpi [-c COMMANDS] [FILE]... (no -i)\n");
+              "uasimpact-mpi: runs scripts, not sessions; accepted: mpirun -n N "
+              "uasimpact-mpi [-c COMMANDS] [FILE]... (no -i)\n");
     }
     MPI_Finalize();
     exit(2);

@@ -1,5 +1,5 @@
-/* scale_part.c: the part file of a shard (uasrisk --shard I/N --part OUT), versioned text:
- *   uasrisk-part 1
+/* scale_part.c: the part file of a shard (uasimpact --shard I/N --part OUT), versioned text:
+ *   uasimpact-part 1       (uasrisk-part 1, the former name's, is read too, with a note)
  *   shard I N
  *   script HASH            the script files of the command line (ura_scale_script_hash)
  *   model HASH             the built-in models
@@ -157,9 +157,15 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
   if (!text) return -1;
   p->text = text;
   size_t ml = strlen(uraPART_MAGIC);
-  if (n < ml + 1 || memcmp(text, uraPART_MAGIC " ", ml + 1)) {
+  /* the tool's former name: its parts are the same format under another magic word */
+  if (n > strlen(uraPART_MAGIC_OLD) &&
+      !memcmp(text, uraPART_MAGIC_OLD " ", strlen(uraPART_MAGIC_OLD) + 1)) {
+    ml = strlen(uraPART_MAGIC_OLD);
+    fprintf(stderr, "note: '%s' was written under the former name uasrisk; read as a part file\n",
+            path);
+  } else if (n < ml + 1 || memcmp(text, uraPART_MAGIC " ", ml + 1)) {
     snprintf(err, nerr,
-             "'%s' is not a part file; accepted: files written by 'uasrisk --shard "
+             "'%s' is not a part file; accepted: files written by 'uasimpact --shard "
              "I/N --part FILE'",
              path);
     return -1;
@@ -170,7 +176,7 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
   if (num(vbuf, 0, 1000000, &ver) || ver != uraPART_VERSION) {
     snprintf(err, nerr,
              "'%s' is a part file of format version %s; accepted: version %d (write "
-             "the parts again with this uasrisk)",
+             "the parts again with this uasimpact)",
              path, vbuf, uraPART_VERSION);
     return -1;
   }

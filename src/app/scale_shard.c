@@ -1,4 +1,4 @@
-/* scale_shard.c: uasrisk --shard I/N --part OUT: position k of grid G is simulated when
+/* scale_shard.c: uasimpact --shard I/N --part OUT: position k of grid G is simulated when
  * (k + G) mod N == I; the other cells are placeholders (no contact) so that the script runs on,
  * its results, notes and files muted. The cells computed go to the part file (scale_part.c),
  * written whole at the end of the run (with the run's status; none when Ctrl-C stopped it). */
@@ -77,7 +77,7 @@ static int s_finish(uraScale* s, int rc) {
       bad = ura_atomic_close(c, &a, 1, "--part");
     }
     if (bad) {
-      fprintf(stderr, "uasrisk: %s\n", c->err);
+      fprintf(stderr, "uasimpact: %s\n", c->err);
       if (!status) status = 1;
     }
   }

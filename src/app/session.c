@@ -29,7 +29,7 @@ void ura_session_write(uraCtx* c, FILE* f) {
   ura_session_base(c, &base);
   uraCtx bc = *c;
   bc.st = base;
-  fprintf(f, "# uasrisk session: replay with 'uasrisk FILE' or 'source FILE'\n");
+  fprintf(f, "# uasimpact session: replay with 'uasimpact FILE' or 'source FILE'\n");
   fprintf(f, "reset\n");
   ura_model_write_parts(c, f);
   fprintf(f, "case %s\n", c->st.casename);

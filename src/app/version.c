@@ -1,4 +1,4 @@
-/* version.c: what uasrisk --version prints: the version and the commit it was built from (the
+/* version.c: what uasimpact --version prints: the version and the commit it was built from (the
  * Makefile writes both into version.h: git's commit, -dirty with uncommitted changes, or the
  * COMMIT file of a git archive) */
 #include <stdio.h>
@@ -8,7 +8,7 @@
 
 const char* ura_version(void) {
   static char buf[128];
-  snprintf(buf, sizeof buf, "uasrisk %s (commit %s)", uraVERSION,
+  snprintf(buf, sizeof buf, "uasimpact %s (commit %s)", uraVERSION,
            *uraCOMMIT ? uraCOMMIT : "unknown: not built from a git checkout or archive");
   return buf;
 }

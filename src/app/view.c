@@ -236,7 +236,7 @@ static void draw_grid(viewer* v) {
   int nt = ura_split_fields(buf, COLS, lines, 2);
   for (int k = 0; k < nt; k++) put(stdscr, k, 0, v->role_attr[uraROLE_TITLE], lines[k]);
 
-  /* axis caption with the orientation (the paper's layout: uasrisk(1), ORIENTATION), cross
+  /* axis caption with the orientation (the paper's layout: uasimpact(1), ORIENTATION), cross
      offset labels; along offset labels at the left */
   const char* what =
       v->c->last.diff ? "P_b - P_a in % (blue: B safer, red: B riskier)" : "P{F|Delta} in %";

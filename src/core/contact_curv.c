@@ -3,7 +3,7 @@
  * in the common tangent plane, and the equivalent radius R_e = 1 / sqrt(det(K_A + K_B)) (the
  * geometric mean of the principal relative radii; for two spheres 1/R = 1/R1 + 1/R2) */
 #include <math.h>
-#include "uasrisk/contact.h"
+#include "uasimpact/contact.h"
 
 /* curvature tensor of ellipsoid e at its surface point x (world) in the tangent basis t1, t2:
    for |R^T (x - c) / r|^2 = 1, kappa(t) = t' D t / |D y| with y local, D = diag(1/r^2) */

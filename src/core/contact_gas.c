@@ -4,7 +4,7 @@
  */
 #include <math.h>
 
-#include "uasrisk/contact.h"
+#include "uasimpact/contact.h"
 
 /* log(V0 / V) for a volume drop dv, V kept above 1e-9 V0 */
 static double logratio(const urGas* gas, double dv) {

@@ -6,7 +6,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "uasrisk/contact.h"
+#include "uasimpact/contact.h"
 
 #define NEWTON_MAXITER 60    /* Newton iterations per start */
 #define LS_MAXHALF     40    /* backtracking halvings */

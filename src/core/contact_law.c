@@ -6,7 +6,7 @@
  */
 #include <math.h>
 
-#include "uasrisk/contact.h"
+#include "uasimpact/contact.h"
 
 #define JG_LO 1.9 /* JG law used beyond JG_LO * dy (sheet §1.4) */
 #define JG_HI 2.2 /* end of the smoothstep blend Hertz -> JG */

@@ -4,7 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include "uasrisk/descent.h"
+#include "uasimpact/descent.h"
 
 #define EPS_ABS 1e-11
 #define EPS_REL 1e-11

@@ -1,8 +1,8 @@
 /* engine_internal.h: functions shared between the engine source files (not public API). */
-#ifndef UASRISK_ENGINE_INTERNAL_H
-#define UASRISK_ENGINE_INTERNAL_H
+#ifndef UASIMPACT_ENGINE_INTERNAL_H
+#define UASIMPACT_ENGINE_INTERNAL_H
 
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 
 // unroll the small fixed-size loops of the 3x3 / 6x6 kernels (GCC and clang)
 #if defined(__GNUC__)

@@ -13,8 +13,8 @@
  * instance; the protocol (who defines and undefines the parameters, the bit-exactness rules):
  * src/README. */
 
-#ifndef UASRISK_ENGINE_TRIG_CONST
-#define UASRISK_ENGINE_TRIG_CONST
+#ifndef UASIMPACT_ENGINE_TRIG_CONST
+#define UASIMPACT_ENGINE_TRIG_CONST
 // argument reduction (fdlibm __rem_pio2): pi/2 = PIO2_1 + PIO2_2 + PIO2_2T, 33 + 33 + 53 bits
 #define urTRIG_TOINT      6755399441055744.0         /* 1.5 * 2^52: rounds to an integer */
 #define urTRIG_INVPIO2    6.36619772367581382433e-01 /* 0x3FE45F30 6DC9C883 */

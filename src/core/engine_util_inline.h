@@ -1,7 +1,7 @@
 /* engine_util_inline.h: the small vector, matrix and spatial-algebra kernels of engine_util.c
  * that run many times per step, inlined into their callers (included by engine_internal.h). */
-#ifndef UASRISK_ENGINE_UTIL_INLINE_H
-#define UASRISK_ENGINE_UTIL_INLINE_H
+#ifndef UASIMPACT_ENGINE_UTIL_INLINE_H
+#define UASIMPACT_ENGINE_UTIL_INLINE_H
 
 #include <math.h>
 #include <string.h>

@@ -5,7 +5,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "uasrisk/grid.h"
+#include "uasimpact/grid.h"
 
 #define SNAP 1e-9 /* tolerance when rounding extents to the lattice */
 

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "uasrisk/impact.h"
+#include "uasimpact/impact.h"
 #include "engine_internal.h"
 #include "impact_internal.h"
 

@@ -1,9 +1,9 @@
 /* impact_internal.h: the parts of one impact run (impact.c), shared with the runner of many
  * impacts in lock-step (impact_lanes.c). Not public API. */
-#ifndef UASRISK_IMPACT_INTERNAL_H
-#define UASRISK_IMPACT_INTERNAL_H
+#ifndef UASIMPACT_IMPACT_INTERNAL_H
+#define UASIMPACT_IMPACT_INTERNAL_H
 
-#include "uasrisk/impact.h"
+#include "uasimpact/impact.h"
 
 /* ur_impact_run is: ur_impact_begin; while the status is ok: ur_step, ur_impact_after_step
    (-1: return -1; 1: stop); ur_impact_finish */

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "uasrisk/impact.h"
+#include "uasimpact/impact.h"
 #include "engine_internal.h"
 
 /* height of the top of an ellipsoid in the world */
@@ -518,7 +518,7 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   memset(s, 0, sizeof *s);
   s->m = m;
 
-  /* the roles the model declares (role statements, uasrisk-model(5)) */
+  /* the roles the model declares (role statements, uasimpact-model(5)) */
   const urRoles* ro = &m->roles;
   s->drone = ro->drone;
   s->head_geom = ro->head;

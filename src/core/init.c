@@ -1,7 +1,7 @@
 /* init.c: the host's options of the library (init.h). */
 #include <gsl/gsl_errno.h>
 
-#include "uasrisk/init.h"
+#include "uasimpact/init.h"
 
 int ur_init(unsigned flags) {
   if (flags & ~urINIT_GSL_CODES) return -1;

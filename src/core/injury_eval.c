@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 #define NBUF                                                                                       \
   10 /* work buffers of n doubles: 8 conditioned channels, then the

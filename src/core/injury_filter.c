@@ -2,7 +2,7 @@
  * backward for zero phase. */
 #include <math.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 /* J211 digital filter coefficients: y = a0 x + a1 x1 + a2 x2 + b1 y1 + b2 y2 */
 typedef struct {

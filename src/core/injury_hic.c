@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 typedef struct {
   double bound, am, vm;

@@ -1,7 +1,7 @@
 /* injury_nij.c: neck injury criterion Nij, four modes selected by the load signs. */
 #include <math.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 urNijMode ur_nij_mode(double fz, double moc) {
   // tension/compression by Fz, flexion/extension by the moment at the condyle

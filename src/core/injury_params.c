@@ -3,7 +3,7 @@
 #include <stddef.h>
 #include <string.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 void ur_injury_defaults(urInjuryParams* p) {
   memset(p, 0, sizeof(*p));
@@ -34,7 +34,7 @@ void ur_injury_defaults(urInjuryParams* p) {
     p->nij_beta[k] = b[k];
   }
   p->nij_rescale = 1;
-  p->nij_order = urORDER_LOWER; // chosen by the calibration (uasrisk-model(5))
+  p->nij_order = urORDER_LOWER; // chosen by the calibration (uasimpact-model(5))
 
   // Gennarelli & Wodzin (2006) midpoints of the AIS 2005 ranges, chosen by the calibration
   p->pof_ais2 = 0.015;

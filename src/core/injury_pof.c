@@ -4,7 +4,7 @@
 
 #include <gsl/gsl_cdf.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 /* logistic 1 / (1 + exp(alpha - beta x)) */
 static double logistic(double alpha, double beta, double x) {

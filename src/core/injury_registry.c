@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 /* ---- compute functions: values and PoF of one criterion from conditioned channels ---- */
 

@@ -1,7 +1,7 @@
 /* injury_vc.c: viscous criterion VC = SF V(t) C(t), C = D/D0 as a fraction. */
 #include <math.h>
 
-#include "uasrisk/injury.h"
+#include "uasimpact/injury.h"
 
 /* derivative at i by the three-point formula on possibly non-uniform samples */
 static double deriv3(const double* t, const double* d, int n, int i) {

@@ -1,4 +1,4 @@
-/* modellang.c: parser of the model language (uasrisk-model(5)): statements into builder calls,
+/* modellang.c: parser of the model language (uasimpact-model(5)): statements into builder calls,
  * parameters, units, overrides, enable flags, name resolution, checks with FILE:LINE messages,
  * and the split of a text into parts. */
 #include <errno.h>
@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 #include "modellang_internal.h"
 
 static const KeySpec spec_curve[] = {{"x", K_LIST, urMAXCURVE, 2, 1, NULL},
@@ -383,7 +383,7 @@ int ur_model_split(const char* text, const char* file, urModelPart* parts, int m
     } else if (nseen == url_limit[SYM_PART]) {
       snprintf(msg, sizeof(msg),
                "%s:%d: more than %d parts; accepted: at most %d "
-               "(uasrisk-model(5), LIMITS)",
+               "(uasimpact-model(5), LIMITS)",
                file, st->line, url_limit[SYM_PART], url_limit[SYM_PART]);
       rc = -1;
     } else if (!seen && !(seen = malloc(sizeof(int) * (size_t)url_limit[SYM_PART]))) {

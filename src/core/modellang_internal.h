@@ -3,8 +3,8 @@
  * offers the others, prefixed url_: messages and names (modellang_names.c), units, numbers and
  * key binding (modellang_value.c), the element statements (modellang_stmt.c), the links,
  * roles and presets (modellang_link.c), and the driver (modellang.c). */
-#ifndef UASRISK_MODELLANG_INTERNAL_H
-#define UASRISK_MODELLANG_INTERNAL_H
+#ifndef UASIMPACT_MODELLANG_INTERNAL_H
+#define UASIMPACT_MODELLANG_INTERNAL_H
 
 #include <stddef.h>
 
@@ -48,7 +48,7 @@ const char* url_word(const urlLex* lx, int i);
 //---------------------------------- the parser (modellang*.c) -------------------------------------
 
 #include <stdio.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 
 #define MAXKEY  20  /* keys of one statement kind */
 #define MSGLEN  512 /* internal message buffer */

@@ -1,5 +1,5 @@
 /* modellang_lex.c: lexer of the model language: comments, line continuation, words, statements
- * (uasrisk-model(5), section LEXICAL RULES). */
+ * (uasimpact-model(5), section LEXICAL RULES). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

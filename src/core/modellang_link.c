@@ -1,4 +1,4 @@
-/* modellang_link.c: the model-language parser (uasrisk-model(5)): the statements that link elements and describe cases: pair,
+/* modellang_link.c: the model-language parser (uasimpact-model(5)): the statements that link elements and describe cases: pair,
  * pairs, airbag, sensor, role, preset, part, and the design scale. */
 #include <errno.h>
 #include <math.h>
@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 #include "modellang_internal.h"
 
 static const KeySpec spec_role[] = {NAME("drone"),    NAME("head"),  NAME("head_acc"), NAME("neck"),

@@ -1,4 +1,4 @@
-/* modellang_names.c: the model-language parser (uasrisk-model(5)): messages with FILE:LINE and quoted user text, and the names: their
+/* modellang_names.c: the model-language parser (uasimpact-model(5)): messages with FILE:LINE and quoted user text, and the names: their
  * checks, symbol table with hash chains, references, declarations with limits, "did you mean". */
 #include <errno.h>
 #include <math.h>
@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 #include "modellang_internal.h"
 
 const char* const url_keywords =
@@ -24,7 +24,7 @@ const char* const url_symkinds[SYM_PRESET + 1] = {"parameters", "curves",     "l
                                                   "joints",     "ellipsoids", "pairs",  "airbags",
                                                   "sensors",    "parts",      "presets"};
 
-/* the most elements of each kind a model may have (uasrisk-model(5), LIMITS): a model of the
+/* the most elements of each kind a model may have (uasimpact-model(5), LIMITS): a model of the
    person and a drone has tens of bodies and a few hundred pairs; the limits keep the largest
    model parsing and compiling within about a second (the builder checks each new name among
    the elements of its kind) */
@@ -242,7 +242,7 @@ int url_declare(Parser* p, int kind, const char* name, int line, int id, int ena
   }
   if (enabled && kind != SYM_JOINT && ++p->count[kind] > url_limit[kind]) {
     return url_fail(p, line,
-                    "more than %d %s in the model; accepted: at most %d (uasrisk-model(5), "
+                    "more than %d %s in the model; accepted: at most %d (uasimpact-model(5), "
                     "LIMITS)",
                     url_limit[kind], url_symkinds[kind], url_limit[kind]);
   }

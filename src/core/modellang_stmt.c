@@ -1,4 +1,4 @@
-/* modellang_stmt.c: the model-language parser (uasrisk-model(5)): the statements that build the model's elements: param, option,
+/* modellang_stmt.c: the model-language parser (uasimpact-model(5)): the statements that build the model's elements: param, option,
  * curve, body, restraint, ellipsoid, law. */
 #include <errno.h>
 #include <math.h>
@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 #include "modellang_internal.h"
 
 static const KeySpec spec_option[] = {NUM("dt"),

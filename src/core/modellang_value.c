@@ -1,4 +1,4 @@
-/* modellang_value.c: the model-language parser (uasrisk-model(5)): units, numbers (with $param references) and the binding of a
+/* modellang_value.c: the model-language parser (uasimpact-model(5)): units, numbers (with $param references) and the binding of a
  * statement's key=value words to its key table. */
 #include <errno.h>
 #include <math.h>
@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "uasrisk/modellang.h"
+#include "uasimpact/modellang.h"
 #include "modellang_internal.h"
 
 /* units: name, factor to SI, and the SI unit it is in */

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <gsl/gsl_cdf.h>
 
-#include "uasrisk/parametric.h"
+#include "uasimpact/parametric.h"
 
 /* Table D1 (RCC 2000): a in J and b for head, thorax, abdomen */
 static const double rcc_a[3] = {74.8, 59.8, 130.6};

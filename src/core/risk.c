@@ -10,8 +10,8 @@
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 
-#include "uasrisk/risk.h"
-#include "uasrisk/rng.h"
+#include "uasimpact/risk.h"
+#include "uasimpact/rng.h"
 
 /* ---- deployment reliability ---- */
 

@@ -1,9 +1,9 @@
 /* sora.c: the SORA 2.5 Annex F critical area and the iGRC (sora.h). Written from the formulas
- * of casex (JARUS-QM/casex 2ccfd10) as documented in uasrisk(1), SORA FIGURES; the tests hold
+ * of casex (JARUS-QM/casex 2ccfd10) as documented in uasimpact(1), SORA FIGURES; the tests hold
  * casex's own values. */
 #include <math.h>
 
-#include "uasrisk/sora.h"
+#include "uasimpact/sora.h"
 
 void ur_annexf_defaults(urAnnexFIn* in, double mass, double width, double speed, double angle) {
   in->mass = mass;

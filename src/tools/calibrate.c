@@ -1,4 +1,4 @@
-/* calibrate.c: 'make calibrate', the declared calibration of the model's unknowns (uasrisk-model(5),
+/* calibrate.c: 'make calibrate', the declared calibration of the model's unknowns (uasimpact-model(5),
  * CALIBRATION). The unknowns the paper leaves open are fitted to the training set alone: the
  * paper's three zero-wind grids (Tables 4, 5, 6), cell by cell over the full plane. Everything
  * else the paper prints is validation and is never read here.

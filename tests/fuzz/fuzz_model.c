@@ -1,4 +1,4 @@
-/* fuzz_model.c: libFuzzer target for the model language (uasrisk-model(5)). Each input is a
+/* fuzz_model.c: libFuzzer target for the model language (uasimpact-model(5)). Each input is a
  * model text: split into parts (ur_model_split) and parsed, built and compiled
  * (ur_model_parse, as the application compiles its model set). A model that compiles is then
  * stepped a few times from its reference configuration (ur_data_new, ur_step), which runs the
@@ -11,8 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "uasrisk/engine.h"
-#include "uasrisk/modellang.h"
+#include "uasimpact/engine.h"
+#include "uasimpact/modellang.h"
 
 #define STEPS 8
 

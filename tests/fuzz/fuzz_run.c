@@ -225,7 +225,7 @@ static void remove_scratch(void) {
 
 int LLVMFuzzerInitialize(int* argc, char*** argv) {
   null = fopen("/dev/null", "w");
-  snprintf(scratch, sizeof scratch, "/tmp/uasrisk-fuzz-run.XXXXXX");
+  snprintf(scratch, sizeof scratch, "/tmp/uasimpact-fuzz-run.XXXXXX");
   if (!null || !mkdtemp(scratch) || chdir(scratch)) return 1;
   atexit(remove_scratch);
   mkdir("bin", 0755);

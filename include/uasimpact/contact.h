@@ -6,8 +6,8 @@
  * so column k of R is the k-th local axis in world coordinates. Penetration depth g > 0 means
  * overlap, g < 0 separation. Rates are d(depth)/dt: positive while approaching.
  */
-#ifndef UASRISK_CONTACT_H
-#define UASRISK_CONTACT_H
+#ifndef UASIMPACT_CONTACT_H
+#define UASIMPACT_CONTACT_H
 
 #ifdef __cplusplus
 extern "C" {

@@ -2,8 +2,8 @@
  * (paper eq. 2.1-2.2, Table 1). Integrated with GSL from rest at the start altitude; the
  * ground crossing is located exactly, not taken at the last step.
  */
-#ifndef UASRISK_DESCENT_H
-#define UASRISK_DESCENT_H
+#ifndef UASIMPACT_DESCENT_H
+#define UASIMPACT_DESCENT_H
 
 #ifdef __cplusplus
 extern "C" {

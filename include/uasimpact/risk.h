@@ -5,8 +5,8 @@
  * ratio of two paired means, and multilinear interpolation on a lattice (response surfaces).
  * Everything here is a pure function of its arguments.
  */
-#ifndef UASRISK_RISK_H
-#define UASRISK_RISK_H
+#ifndef UASIMPACT_RISK_H
+#define UASIMPACT_RISK_H
 
 #include <stdint.h>
 

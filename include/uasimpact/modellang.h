@@ -1,13 +1,13 @@
-/* modellang.h: the uasrisk model language. Human, drone and airbag models are plain text
- * (uasrisk-model(5)); this parses one or more texts into a compiled urModel and splits a text
+/* modellang.h: the uasimpact model language. Human, drone and airbag models are plain text
+ * (uasimpact-model(5)); this parses one or more texts into a compiled urModel and splits a text
  * into named parts so that an application can replace or add parts. Pure library code: no I/O,
  * no globals, reentrant.
  */
-#ifndef UASRISK_MODELLANG_H
-#define UASRISK_MODELLANG_H
+#ifndef UASIMPACT_MODELLANG_H
+#define UASIMPACT_MODELLANG_H
 
 #include <stddef.h>
-#include "uasrisk/engine.h"
+#include "uasimpact/engine.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -41,7 +41,7 @@ typedef struct {
    the model. Returns the compiled model, or NULL with a one-line message in err (at most
    errlen bytes, "FILE:LINE: what was wrong; expected ...") and nothing allocated. An override
    naming a parameter that no source defines is an error, and so is a model beyond the limits of
-   uasrisk-model(5) (e.g. more than 1000 bodies). err may be NULL. Time and memory grow linearly
+   uasimpact-model(5) (e.g. more than 1000 bodies). err may be NULL. Time and memory grow linearly
    with the text up to those limits. */
 urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
                         char* err, int errlen);

@@ -5,8 +5,8 @@
  * annex_f_parms.py AnnexFParms.iGRC and CoR_from_impact_angle), whose values the tests reproduce
  * (tests/test_sora.c). Inert areas only: no deflagration (the parcel drone carries no fuel).
  */
-#ifndef UASRISK_SORA_H
-#define UASRISK_SORA_H
+#ifndef UASIMPACT_SORA_H
+#define UASIMPACT_SORA_H
 
 #ifdef __cplusplus
 extern "C" {

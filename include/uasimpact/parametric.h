@@ -1,8 +1,8 @@
 /* parametric.h: the parametric impact-area and fatality models of the paper's Appendix D
  * (planform, MTOW and RCC gliding areas; RCC, Blunt Criterion and AWKE probabilities).
  */
-#ifndef UASRISK_PARAMETRIC_H
-#define UASRISK_PARAMETRIC_H
+#ifndef UASIMPACT_PARAMETRIC_H
+#define UASIMPACT_PARAMETRIC_H
 
 #ifdef __cplusplus
 extern "C" {

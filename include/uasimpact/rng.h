@@ -3,8 +3,8 @@
  * function of (seed, sample, stream): sample i of a Monte Carlo run gets the same numbers whatever
  * the number of threads or processes and however the samples are split among them.
  */
-#ifndef UASRISK_RNG_H
-#define UASRISK_RNG_H
+#ifndef UASIMPACT_RNG_H
+#define UASIMPACT_RNG_H
 
 #include <stdint.h>
 

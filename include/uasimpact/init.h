@@ -7,8 +7,8 @@
  * program may rely on it). A host that wants GSL's failures inside the core to come back as the
  * core's return codes asks for urINIT_GSL_CODES; the workbench does (ura_init).
  */
-#ifndef UASRISK_INIT_H
-#define UASRISK_INIT_H
+#ifndef UASIMPACT_INIT_H
+#define UASIMPACT_INIT_H
 
 #ifdef __cplusplus
 extern "C" {

@@ -24,11 +24,11 @@
  *   ur_run_impact(m, run, drone, pos, quat, vel);      // jump, step until the end, status > 0
  *   run->peakmax[m->sensor[s].adr + k], run->hist[row * (1 + m->nsensordata) + 1 + adr + k]
  */
-#ifndef UASRISK_ENGINE_H
-#define UASRISK_ENGINE_H
+#ifndef UASIMPACT_ENGINE_H
+#define UASIMPACT_ENGINE_H
 
 #include <stddef.h>
-#include "uasrisk/contact.h"
+#include "uasimpact/contact.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -182,7 +182,7 @@ typedef struct {
   char unit[urNAMELEN]; /* SI unit from its param line (N/m, Pa; "": none given) */
 } urParam;
 
-/* the roles an impact needs, declared by the model's role statements (uasrisk-model(5)), and
+/* the roles an impact needs, declared by the model's role statements (uasimpact-model(5)), and
    the drone's design handles; -1: not declared */
 typedef struct {
   int drone;                     /* root body of the drone (free joint) */

@@ -22,11 +22,11 @@
  * A urImpactSetup is constant after ur_impact_setup (or ur_impact_prepare) and shared by all
  * threads; each thread owns a urImpactWork.
  */
-#ifndef UASRISK_IMPACT_H
-#define UASRISK_IMPACT_H
+#ifndef UASIMPACT_IMPACT_H
+#define UASIMPACT_IMPACT_H
 
-#include "uasrisk/engine.h"
-#include "uasrisk/injury.h"
+#include "uasimpact/engine.h"
+#include "uasimpact/injury.h"
 
 #ifdef __cplusplus
 extern "C" {

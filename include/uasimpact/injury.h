@@ -4,12 +4,12 @@
  *
  * Conventions: SI units except head acceleration for HIC, which is in g (9.80665 m/s^2).
  * Neck: Fz > 0 tension, My > 0 flexion (SAE J211/J1733). Deflection D > 0 is compression.
- * Sources and defaults are documented in uasrisk-injury(7).
+ * Sources and defaults are documented in uasimpact-injury(7).
  */
-#ifndef UASRISK_INJURY_H
-#define UASRISK_INJURY_H
+#ifndef UASIMPACT_INJURY_H
+#define UASIMPACT_INJURY_H
 
-#include "uasrisk/injury_registry.h"
+#include "uasimpact/injury_registry.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -9,10 +9,10 @@
  * The runner is generic: the impact itself is a callback, so the grid knows nothing of models.
  * Workers are POSIX threads over cells; results do not depend on the number of threads.
  */
-#ifndef UASRISK_GRID_H
-#define UASRISK_GRID_H
+#ifndef UASIMPACT_GRID_H
+#define UASIMPACT_GRID_H
 
-#include "uasrisk/injury_registry.h"
+#include "uasimpact/injury_registry.h"
 
 #ifdef __cplusplus
 extern "C" {

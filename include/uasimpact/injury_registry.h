@@ -7,8 +7,8 @@
  *
  * Only this file's enums are needed to size the arrays: grid.h includes it without injury.h.
  */
-#ifndef UASRISK_INJURY_REGISTRY_H
-#define UASRISK_INJURY_REGISTRY_H
+#ifndef UASIMPACT_INJURY_REGISTRY_H
+#define UASIMPACT_INJURY_REGISTRY_H
 
 #ifdef __cplusplus
 extern "C" {
