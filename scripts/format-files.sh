@@ -1,5 +1,5 @@
 #!/bin/sh
 # format-files.sh: the C sources the house style (.clang-format) covers, one per line: what
-# 'make format' rewrites and tests/test_format.sh checks. Generated files (build/) are not sources.
-ls src/core/*.c src/core/*.h src/app/*.c src/app/*.h src/tools/*.c include/uasimpact/*.h \
-  tests/*.c tests/*.h tests/fuzz/*.c 2>/dev/null
+# 'make format' rewrites and tests/test_format.sh checks: every .c and .h under src, include and
+# tests, in every folder. Generated files (build/) are not sources.
+find src include tests \( -name '*.c' -o -name '*.h' \) -type f 2>/dev/null | LC_ALL=C sort

@@ -12,7 +12,7 @@
 #include <cmocka.h>
 
 #include "../src/app/app.h"
-#include "../src/core/impact_internal.h"
+#include "../src/core/impact/impact_internal.h"
 
 /* one context per test: the built-in models, a case, its conditions */
 static uraCtx* fresh(const char* casename) {

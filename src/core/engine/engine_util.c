@@ -53,7 +53,7 @@ void uru_axisangle2quat(double q[4], const double axis[3], double angle) {
 #define urBC(x)        (x)
 #define urSEL(m, a, b) ((m) ? (a) : (b))
 #define urSQRT(x)      sqrt(x)
-#include "engine_quat.h"
+#include "kernels/engine_quat.h"
 #undef urT
 #undef urM
 #undef urK
@@ -61,7 +61,7 @@ void uru_axisangle2quat(double q[4], const double axis[3], double angle) {
 #undef urBC
 #undef urSEL
 #undef urSQRT
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"
 
 
 //---------------------------------- spatial algebra -----------------------------------------------
@@ -86,11 +86,11 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 #define urT       double
 #define urK(name) uru_##name
 #define urSTORAGE
-#include "engine_spatial_inertia.h"
+#include "kernels/engine_spatial_inertia.h"
 #undef urT
 #undef urK
 #undef urSTORAGE
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"
 
 
 // uru_invsym for doubles, from its template
@@ -100,11 +100,11 @@ void uru_rbi(double I[36], double mass, const double com[3], const double Ic[9])
 #define urBC(x)   (x)
 #define urALL(c)  (c)
 #define urSQRT(x) sqrt(x)
-#include "engine_invsym.h"
+#include "kernels/engine_invsym.h"
 #undef urT
 #undef urK
 #undef urSTORAGE
 #undef urBC
 #undef urALL
 #undef urSQRT
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine_internal.h"
+#include "../engine/engine_internal.h"
 #include "impact_internal.h"
 
 _Static_assert(urIMPACT_LANES == urNLANE, "impact lanes are the engine's lanes");

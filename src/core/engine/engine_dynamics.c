@@ -19,7 +19,7 @@
     ur_set_status(d, urSTAT_NONFINITE, "singular joint-space inertia");                            \
     memset(Dinv, 0, 36 * sizeof(double));                                                          \
   }
-#include "engine_aba.h"
+#include "kernels/engine_aba.h"
 #undef urT
 #undef urBC
 #undef urK
@@ -27,7 +27,7 @@
 #undef urD
 #undef urSETENERGY
 #undef urINVSYM
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"
 
 //---------------------------------- joint reactions -----------------------------------------------
 

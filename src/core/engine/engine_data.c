@@ -1,6 +1,8 @@
-/* engine_data.c: per-run data: allocation in one buffer, reset, copy, history buffers. */
+/* engine_data.c: per-run data: allocation in one buffer, reset, copy, history buffers, and the
+ * run's status (set by every stage, so it lives with the data, below them all). */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "engine_internal.h"
@@ -178,4 +180,30 @@ int ur_data_history(const urModel* m, urData* d, double* buf, int rows) {
   }
   d->nhist_cap = rows;
   return 0;
+}
+
+
+//---------------------------------- status --------------------------------------------------------
+
+void ur_set_status(urData* d, int status, const char* msg) {
+  if (d->status < 0) {
+    return;
+  }
+  d->status = status;
+  snprintf(d->msg, sizeof(d->msg), "%s", msg ? msg : "");
+}
+
+
+const char* ur_status_str(int status) {
+  switch (status) {
+  case urSTAT_OK: return "ok";
+  case urSTAT_SEPARATED: return "ended: contact over";
+  case urSTAT_SETTLED: return "ended: motion settled";
+  case urSTAT_TMAX: return "ended: maximum time";
+  case urSTAT_NONFINITE: return "failed: non-finite state";
+  case urSTAT_EXPLODE: return "failed: exploding state";
+  case urSTAT_BADARG: return "failed: bad argument";
+  case urSTAT_STOPPED: return "failed: stopped on request";
+  default: return "unknown";
+  }
 }

@@ -22,14 +22,14 @@ static void axisrot(double R[9], const double a[3], double ang) {
 #define urFN(name)                ur_##name
 #define urD                       urData
 #define urAXISROT(R, axis, angle) axisrot(R, axis, angle)
-#include "engine_kin.h"
+#include "kernels/engine_kin.h"
 #undef urT
 #undef urBC
 #undef urK
 #undef urFN
 #undef urD
 #undef urAXISROT
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"
 
 //---------------------------------- world poses ---------------------------------------------------
 

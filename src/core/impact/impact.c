@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "uasimpact/impact.h"
-#include "engine_internal.h"
+#include "../engine/engine_internal.h"
 #include "impact_internal.h"
 
 #define DEG                 (M_PI / 180.0)

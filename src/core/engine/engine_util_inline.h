@@ -13,10 +13,10 @@ static inline double uru_dot3(const double a[3], const double b[3]) {
 // the templated kernels for doubles (uru_cross3, uru_mulmat3vec, ..., uru_mul6)
 #define urT       double
 #define urK(name) uru_##name
-#include "engine_spatial.h"
+#include "kernels/engine_spatial.h"
 #undef urT
 #undef urK
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"
 
 static inline double uru_norm3(const double a[3]) {
   return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
@@ -84,7 +84,7 @@ static inline double uru_ast(unsigned long long i) {
 #define urEL(x, l)     (x)
 #define urASI(x)       uru_asi(x)
 #define urAST(i)       uru_ast(i)
-#include "engine_trig.h"
+#include "kernels/engine_trig.h"
 #undef urT
 #undef urM
 #undef urU
@@ -96,6 +96,6 @@ static inline double uru_ast(unsigned long long i) {
 #undef urEL
 #undef urASI
 #undef urAST
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"
 
 #endif

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "uasimpact/impact.h"
-#include "engine_internal.h"
+#include "../engine/engine_internal.h"
 
 /* height of the top of an ellipsoid in the world */
 static double ellipsoid_top(const urModel* m, urData* d, int g) {

@@ -6,31 +6,6 @@
 #include <string.h>
 #include "engine_internal.h"
 
-//---------------------------------- status --------------------------------------------------------
-
-void ur_set_status(urData* d, int status, const char* msg) {
-  if (d->status < 0) {
-    return;
-  }
-  d->status = status;
-  snprintf(d->msg, sizeof(d->msg), "%s", msg ? msg : "");
-}
-
-
-const char* ur_status_str(int status) {
-  switch (status) {
-  case urSTAT_OK: return "ok";
-  case urSTAT_SEPARATED: return "ended: contact over";
-  case urSTAT_SETTLED: return "ended: motion settled";
-  case urSTAT_TMAX: return "ended: maximum time";
-  case urSTAT_NONFINITE: return "failed: non-finite state";
-  case urSTAT_EXPLODE: return "failed: exploding state";
-  case urSTAT_BADARG: return "failed: bad argument";
-  case urSTAT_STOPPED: return "failed: stopped on request";
-  default: return "unknown";
-  }
-}
-
 //---------------------------------- forward -------------------------------------------------------
 
 // the forward pipeline up to the accelerations: positions, velocities, the restraint kinematics

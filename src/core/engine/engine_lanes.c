@@ -59,9 +59,9 @@ static inline __attribute__((always_inline)) urV4 bc4(double x) {
 #define urFN(name) urv_##name
 #define urD        urLanes
 #define urBC(x)    bc4(x)
-#include "engine_spatial.h"
+#include "kernels/engine_spatial.h"
 #define urSTORAGE static inline __attribute__((always_inline))
-#include "engine_spatial_inertia.h"
+#include "kernels/engine_spatial_inertia.h"
 #undef urSTORAGE
 
 
@@ -78,7 +78,7 @@ static inline __attribute__((always_inline)) int all4(urV4I c) {
     for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]);                                    \
     r_;                                                                                            \
   })
-#include "engine_invsym.h"
+#include "kernels/engine_invsym.h"
 #undef urSTORAGE
 #undef urALL
 #undef urSQRT
@@ -109,7 +109,7 @@ static inline __attribute__((always_inline)) void invsym4(urLanes* L, urV4* Ainv
 #define urSETENERGY(d, ke)       ((d)->energy[0] = (ke))
 #define urINVSYM(d, Dinv, D, nv) invsym4(d, Dinv, D, nv)
 #define urABA_ATTR               urCLONES
-#include "engine_aba.h"
+#include "kernels/engine_aba.h"
 #undef urSETENERGY
 #undef urINVSYM
 
@@ -123,7 +123,7 @@ typedef unsigned long long urV4U __attribute__((vector_size(4 * sizeof(long long
 #define urEL(x, l)     ((x)[l])
 #define urASI(x)       ((urV4U)(x))
 #define urAST(i)       ((urV4)(i))
-#include "engine_trig.h"
+#include "kernels/engine_trig.h"
 #undef urM
 #undef urU
 #undef urSEL
@@ -166,7 +166,7 @@ static inline __attribute__((always_inline)) void axisrot4(urV4 R[9], const urV4
     for (int l_ = 0; l_ < urNLANE; l_++) r_[l_] = sqrt(r_[l_]);                                    \
     r_;                                                                                            \
   })
-#include "engine_quat.h"
+#include "kernels/engine_quat.h"
 #undef urM
 #undef urSTORAGE
 #undef urSEL
@@ -174,14 +174,14 @@ static inline __attribute__((always_inline)) void axisrot4(urV4 R[9], const urV4
 
 #define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
 #define urKIN_ATTR                urCLONES
-#include "engine_kin.h"
+#include "kernels/engine_kin.h"
 #undef urAXISROT
 #undef urT
 #undef urK
 #undef urFN
 #undef urD
 #undef urBC
-#include "engine_template_check.h"
+#include "kernels/engine_template_check.h"
 
 // square roots in place of the pairs' entries of L->gap (the pairs between two ellipsoids)
 static void sqrt_pairs_default(const urModel* m, urLanes* L) {
