@@ -39,7 +39,7 @@ APP_LIBS  = -lreadline -lncursesw -ltinfo
 TEST_LIBS = -lcmocka
 
 CORE_SRC  = $(sort $(wildcard src/core/*/*.c))
-APP_SRC   = $(filter-out src/app/main.c,$(sort $(wildcard src/app/*.c)))
+APP_SRC   = $(sort $(wildcard src/app/*/*.c))
 TEST_SRC  = $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = $(sort $(wildcard tests/bench_*.c))
 MODELS    = $(sort $(wildcard src/models/*.urm))
@@ -76,8 +76,8 @@ $(shell mkdir -p $(BUILD) && printf '#define uraVERSION "%s"\n#define uraCOMMIT 
   '$(VERSION)' '$(COMMIT)' | cmp -s - $(BUILD)/version.h || printf \
   '#define uraVERSION "%s"\n#define uraCOMMIT "%s"\n' '$(VERSION)' '$(COMMIT)' > $(BUILD)/version.h)
 endif
-$(BUILD)/src/app/version.o: $(BUILD)/version.h
-$(BUILD)/src/app/version.o: CFLAGS += -I$(BUILD)
+$(BUILD)/src/app/base/version.o: $(BUILD)/version.h
+$(BUILD)/src/app/base/version.o: CFLAGS += -I$(BUILD)
 
 # everything is rebuilt when the compiler or its flags change (e.g. make OPT='-O0 -g')
 FLAGS = $(BUILD)/.flags
@@ -112,14 +112,14 @@ $(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(TEST_LIBS) $(APP_LIBS) $(CORE_LIBS)
 
-# the MPI build: only the distributor (src/app/scale_mpi.c) is compiled by mpicc with URA_MPI;
+# the MPI build: only the distributor (src/app/scale/scale_mpi.c) is compiled by mpicc with URA_MPI;
 # its object comes before the application's archive, whose MPI-less stub is then not linked
 MPICC ?= mpicc
 MPI_BIN = uasimpact-mpi
 mpideps:
 	@sh scripts/setup.sh mpi
 mpi: $(MPI_BIN)
-$(BUILD)/mpi/scale_mpi.o: src/app/scale_mpi.c $(FLAGS) | mpideps
+$(BUILD)/mpi/scale_mpi.o: src/app/scale/scale_mpi.c $(FLAGS) | mpideps
 	@mkdir -p $(dir $@)
 	$(MPICC) $(CFLAGS) -DURA_MPI -c $< -o $@
 $(MPI_BIN): $(BUILD)/src/app/main.o $(BUILD)/mpi/scale_mpi.o $(APPLIB) $(LIB) | mpideps

@@ -11,7 +11,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "../src/app/app.h"
+#include "../src/app/ui/ui.h"
 
 static double now(double* cpu) {
   struct timespec t;

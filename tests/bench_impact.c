@@ -13,7 +13,7 @@
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 
-#include "../src/app/app.h"
+#include "../src/app/ui/ui.h"
 
 #define NREP 5 /* passes in lanes */
 

@@ -10,7 +10,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "../src/app/app.h"
+#include "../src/app/ui/ui.h"
 
 int main(int argc, char** argv) {
   double step = argc > 1 ? atof(argv[1]) : 0.1;

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../src/app/app.h"
+#include "../src/app/ui/ui.h"
 
 static int ctx_setup(void** state) {
   uraCtx* c = calloc(1, sizeof *c);

@@ -1,4 +1,4 @@
-# test_design.sh: each design parameter's path into the models (src/app/design.c, preset.c,
+# test_design.sh: each design parameter's path into the models (src/app/case/design.c, preset.c,
 # cmd_aim.c): at a fixed speed and angle, 'set mass' changes the multibody drone (doubling it
 # raises HIC) and 'show mass' says so; drone_size, arm_k, foam_t and bag_p0 change the impact;
 # width and area_chute do not (show marks them) while area_chute changes the derived speed; a

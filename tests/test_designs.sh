@@ -1,4 +1,4 @@
-# test_designs.sh: designs side by side (src/app/designs.c): design save keeps the full state,
+# test_designs.sh: designs side by side (src/app/cmd/designs.c): design save keeps the full state,
 # design compare prints both Q (each the Q of that design's own grid) and their ratio, and leaves
 # the difference grid P_b - P_a (its Q is q_b - q_a, a cell's p the difference of the cells);
 # the live state stays; a saved session replays the designs; refusals name what is accepted.

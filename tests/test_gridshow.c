@@ -15,8 +15,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "../src/app/app.h"
-#include "../src/app/colors.h"
+#include "../src/app/ui/ui.h"
 
 typedef struct {
   uraCtx c;

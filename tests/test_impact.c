@@ -11,7 +11,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "../src/app/app.h"
+#include "../src/app/ui/ui.h"
 #include "../src/core/impact/impact_internal.h"
 
 /* one context per test: the built-in models, a case, its conditions */

@@ -1,4 +1,4 @@
-# test_model.sh: the model set as a session changes it (src/app/model.c): 'model load' is
+# test_model.sh: the model set as a session changes it (src/app/case/model.c): 'model load' is
 # transactional (a part that leaves the model unable to run impacts, or that breaks another part
 # in some case, is refused naming the loaded file and line, and the session is exactly as
 # before); a model parameter must hold in every case (an airbag's pressure set in case B);

@@ -1,4 +1,4 @@
-/* test_modelcache.c: the model cache (src/app/modelcache.c): switching back to a case or setting
+/* test_modelcache.c: the model cache (src/app/case/modelcache.c): switching back to a case or setting
  * seen earlier makes its compiled, balanced and settled model live again (no settling), with the
  * same impact results; the last impact does not survive a switch; at most uraMODELCACHE models
  * are kept, the least recently used freed first; after new model parts none of them returns,

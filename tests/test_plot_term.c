@@ -10,8 +10,7 @@
 
 #include <cmocka.h>
 
-#include "../src/app/app.h"
-#include "../src/app/plot.h"
+#include "../src/app/ui/ui.h"
 
 static void test_kind(void** state) {
   (void)state;

@@ -11,8 +11,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "../src/app/app.h"
-#include "../src/app/plot.h"
+#include "../src/app/ui/ui.h"
 
 #define N 401
 

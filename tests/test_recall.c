@@ -1,4 +1,4 @@
-/* test_recall.c: grid recall (src/app/recall.c) through the workbench context: every injury
+/* test_recall.c: grid recall (src/app/case/recall.c) through the workbench context: every injury
  * setting is part of what a recalled grid must match; the recalled grid is a copy (changing or
  * freeing the last grid leaves the kept one intact); a recalled grid's cells can be inspected
  * (the impact run again gives the same numbers); at most uraRECALLGRIDS grids are kept, the least
@@ -68,7 +68,7 @@ static void inspect_cells(uraCtx* c) {
     urCell cell = g->cell[k];
     if (cell.status != urCELL_DONE || cell.mirrored || !cell.contact || cell.p <= 0) continue;
     uraTrace tr;
-    assert_int_equal(c->inspect(c, &g->cell[k], &tr), 0);
+    assert_int_equal(ura_inspect_cell(c, &g->cell[k], &tr), 0);
     assert_true(tr.n > 10 && tr.nsig > 6);
     assert_memory_equal(&c->last_impact.p, &cell.p, sizeof cell.p);
     assert_memory_equal(&c->last_impact.inj.hic15.hic, &cell.val[urVAL_HIC15], sizeof(double));

@@ -1,4 +1,4 @@
-# test_recall.sh: grid recall (src/app/recall.c) from the command line: a grid asked for again
+# test_recall.sh: grid recall (src/app/case/recall.c) from the command line: a grid asked for again
 # with everything a cell depends on unchanged reuses the cells of the earlier one (the same bytes
 # as a fresh computation, a note says so, seconds about 0); any change that alters a cell
 # computes afresh, as do 'set recall off', new model parts and grids that failed; sweep and

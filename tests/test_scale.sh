@@ -1,4 +1,4 @@
-# test_scale.sh: a script's grids split over processes (src/app/scale*.c): run serially, as 2 and
+# test_scale.sh: a script's grids split over processes (src/app/scale/scale*.c): run serially, as 2 and
 # as 3 shards merged (uasimpact --shard I/N --part OUT; uasimpact merge), and under mpirun -n 2
 # (./uasimpact-mpi, make mpi), the outputs and the exported file must be the serial run's apart
 # from the wall-clock fields (the grid row's seconds, montecarlo's time note). The script has a

@@ -1,4 +1,4 @@
-/* test_scale_cell.c: a grid cell's results as one line of text and back (src/app/scale_cell.c):
+/* test_scale_cell.c: a grid cell's results as one line of text and back (src/app/scale/scale_cell.c):
  * exact for every double (negative zero, subnormals, infinities, NaN), the reason kept (control
  * characters as spaces), dpar and dperp left as they are; malformed lines refused. */
 #include <math.h>
@@ -9,7 +9,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "../src/app/scale.h"
+#include "../src/app/scale/scale.h"
 
 static urCell sample(void) {
   urCell c;

@@ -1,4 +1,4 @@
-/* test_session_base.c: minimal sessions (src/app/session_base.c, session.c): the shortest exact
+/* test_session_base.c: minimal sessions (src/app/case/session_base.c, session.c): the shortest exact
  * numbers, model parameters in the unit that writes them shortest, only what differs from
  * 'reset; case NAME' written (never threads or the plot output), and the replay exact */
 #include <setjmp.h>

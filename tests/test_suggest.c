@@ -1,4 +1,4 @@
-/* test_suggest.c: "did you mean" (src/app/suggest.c): the edit distance, how near a name must be,
+/* test_suggest.c: "did you mean" (src/app/base/suggest.c): the edit distance, how near a name must be,
  * and the names offered in the messages of set, show, help, unknown commands, history and plot */
 #include <setjmp.h>
 #include <stdarg.h>

@@ -1,4 +1,4 @@
-# test_sweep_param.sh: sweep NAME LIST [UNIT] over any numeric parameter (src/app/sweep_param.c):
+# test_sweep_param.sh: sweep NAME LIST [UNIT] over any numeric parameter (src/app/cmd/sweep_param.c):
 # columns case,NAME,wind,face,speed,angle,q; each Q is the grid the same setting gives; the
 # live state comes back; sweep show and export sweep list the values in their unit; plot sweep
 # NAME draws Q against it; bad names, values and units are refused before any grid runs.

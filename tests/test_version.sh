@@ -1,4 +1,4 @@
-# test_version.sh: uasimpact --version and -V (src/app/version.c, the Makefile): the version and
+# test_version.sh: uasimpact --version and -V (src/app/base/version.c, the Makefile): the version and
 # the commit the binary was built from; a git archive carries the commit in its COMMIT file
 . tests/lib.sh
 

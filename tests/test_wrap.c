@@ -1,4 +1,4 @@
-/* test_wrap.c: text for an 80-column terminal (src/app/wrap.c): wrapping between words, long
+/* test_wrap.c: text for an 80-column terminal (src/app/base/wrap.c): wrapping between words, long
  * lists broken after their commas, no wrapping at width 0, and fields split at double spaces */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -8,7 +8,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "../src/app/app.h"
+#include "../src/app/base/base.h"
 
 static char* wrapped(const char* lead, const char* cont, const char* text, int width) {
   char* buf = NULL;

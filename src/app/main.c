@@ -5,8 +5,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "app.h"
-#include "scale.h"
+#include "ui/ui.h"
+#include "scale/scale.h"
 
 static void usage(FILE* f) {
   fprintf(f,
@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   ura_interrupt_install(0);
   signal(SIGXFSZ, SIG_IGN);
   ura_init(c);
+  c->inspect = ura_inspect_cell; /* the viewer's Enter runs a cell's impact (cmd layer) */
 
   /* results to a file or a pipe through a stream that keeps why a write failed */
   if (!isatty(STDOUT_FILENO)) {
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
 
   /* --shard I/N --part OUT, merge PART..., or an MPI rank (scale.h) */
   int st = ura_scale_args(c, &argc, &argv);
+  c->scale_grid = ura_scale_grid; /* called by each grid when c->scale is set */
   if (st) return done(st);
 
   /* options first: -i anywhere, help */

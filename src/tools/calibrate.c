@@ -35,7 +35,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multimin.h>
 
-#include "../app/app.h"
+#include "../app/cmd/cmd.h"
 
 #define MAXFREE  24
 #define MAXCASE  4

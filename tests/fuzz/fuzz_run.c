@@ -28,7 +28,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "../../src/app/app.h"
+#include "../../src/app/ui/ui.h"
 
 #define MAXSTEPS 400 /* steps of one impact */
 #define MAXCELLS 49  /* cells of one grid (at most 7 x 7) */

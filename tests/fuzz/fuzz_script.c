@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../src/app/app.h"
+#include "../../src/app/ui/ui.h"
 
 static uraCtx c;
 static uraState st0;             /* the state of a fresh context */

@@ -1,0 +1,201 @@
+/* base.h: the base layer of the application (src/app/base): text and files, knowing nothing of a
+ * case. Strict parsing of numbers, tables, wrapping, the pager, the progress line, Ctrl-C and the
+ * temporary file it removes, defensive line reading and printable messages, files written
+ * atomically, "did you mean", the version, and the colour roles (the P{F|Delta} bands and the
+ * parts of a screen, after htop's ColorElements/CRT_colors, shared by 'grid show' and 'view').
+ * Everything here takes plain streams, buffers and values, never the session's context: a
+ * failure is a return value with its message in a buffer the caller owns. The layers above
+ * (case, cmd, ui, scale, main) include this header; it includes no header of theirs.
+ */
+#ifndef UASIMPACT_BASE_H
+#define UASIMPACT_BASE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "uasimpact/grid.h"
+
+#define uraERRLEN 1024 /* a failure message, bytes */
+
+/* ---- strict parsing ---- */
+
+/* a finite decimal number (no hex, nan, inf, empty, or trailing text) */
+int ura_parse_number(const char* s, double* v);
+/* a comma-separated list of numbers; returns count or -1 */
+int ura_parse_list(const char* s, double* v, int max);
+
+/* ---- tabular output ---- */
+
+typedef struct uraTable uraTable;
+uraTable* ura_table_new(int ncol, const char* const* names);
+void ura_table_cell(uraTable* t, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+void ura_table_note(uraTable* t, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+/* print (aligned table when width allows and !csv, or CSV) to f and free; notes first as comment
+   lines, wrapped at width (0: not wrapped) */
+void ura_table_write(FILE* f, uraTable* t, int csv, int width);
+
+/* a word a script reads back as s: in double quotes, or single ones when s holds a double quote
+   (word.c); -1 when it cannot be written (a control byte, or both quote characters) */
+int ura_word_ok(const char* s);
+void ura_put_word(FILE* f, const char* s);
+
+/* files written atomically (atomic.c): open a temporary file beside path (symbolic links
+   followed); close renames it over the file if ok and everything was written, else removes it (a
+   failure message unless !ok). A FIFO, a character device or an open descriptor (/dev/stdout)
+   is written in place; directories, block devices and sockets are refused. */
+typedef struct {
+  FILE* f;
+  int fd;
+  int inplace;     /* written in place (no temporary file, no rename) */
+  int err;         /* errno of the first failed write */
+  char path[1024]; /* as given (messages) */
+  char real[4096]; /* the file replaced */
+  char tmp[4200];  /* the temporary file beside it */
+} uraAtomic;
+/* open, as above; close, as above. who names the command in messages ("save session"); a
+   failure is -1 with its message in err (nerr bytes) */
+int ura_atomic_begin(uraAtomic* a, const char* path, const char* who, char* err, size_t nerr);
+int ura_atomic_end(uraAtomic* a, int ok, const char* who, char* err, size_t nerr);
+
+/* Ctrl-C (interrupt.c): the handler for the whole run (interactive: repeated Ctrl-C never end
+   the program), the flag that long work polls (also the models' opt.stop), cleared at the
+   prompt */
+void ura_interrupt_install(int interactive);
+_Atomic int* ura_interrupt_flag(void);
+int ura_interrupted(void);
+void ura_interrupt_clear(void);
+/* the temporary file of a write under way, removed if SIGTERM, SIGHUP or a fatal Ctrl-C end the
+   program (at most one at a time); disarm when it is renamed or removed */
+void ura_temp_arm(const char* path);
+void ura_temp_disarm(void);
+
+/* text files (textin.c): the next line of f without its line end into *buf (realloc'ed, *cap
+   its size), at most max bytes; its length, or one of these */
+enum {
+  uraLINE_EOF = -1,
+  uraLINE_ERROR = -2 /* errno */,
+  uraLINE_LONG = -3,
+  uraLINE_NUL = -4
+};
+long ura_read_line(FILE* f, char** buf, size_t* cap, size_t max);
+#define uraMAXLINE (1L << 20) /* longest line of a script or grid file, bytes */
+/* s as printable text into buf (n bytes, cut to fit): control bytes, DEL, C1 controls and bytes
+   that are not UTF-8 as \xNN, printable ASCII and UTF-8 kept; its length. Every message goes
+   through it (ura_fail), so that no input echoed in an error can drive the terminal. */
+size_t ura_printable(const char* s, char* buf, size_t n);
+/* a buffered stream writing to fd (standard output when it is not a terminal) that keeps the
+   errno of its first failed write: ura_out_errno, 0 if none since ura_out_clear */
+FILE* ura_out_stream(int fd);
+int ura_out_errno(void);
+void ura_out_clear(void);
+
+/* the terminal (pager.c): f is a terminal (or the pager's buffer of one); its size; gather a
+   command's output (the stream out it would go to; NULL when it is not to be paged: a
+   command that takes the screen, runs others, starts a program or leaves, or a gathering under
+   way) and release it: paged when taller than the screen, else written to out, which is
+   returned (NULL: nothing was gathered) */
+int ura_tty(FILE* f);
+void ura_term_size(int* rows, int* cols);
+FILE* ura_pager_gather(FILE* out, const char* cmd);
+FILE* ura_pager_release(void);
+
+/* the progress line on standard error (progress.c): a label before it (a sweep's value; NULL:
+   none), the start of the work, one line "LABEL WHAT DONE/TOTAL NOUN, ELAPSED, about T left" */
+void ura_progress_label(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+void ura_progress_start(void);
+void ura_progress_line(const char* what, long done, long total, const char* noun);
+/* "uasimpact VERSION (commit HASH[-dirty])" (version.c) */
+const char* ura_version(void);
+/* "did you mean" (suggest.c): the edit distance of two names; the nearest name offered for a
+   word, near enough for a typing slip; its text (" (did you mean 'NAME'?)" or ""); the names of
+   a usage text's keywords (the command table's: cmd.h; the parameter tables': case.h) */
+typedef struct {
+  const char* word;
+  char best[64];
+  int d;
+} uraSuggest;
+int ura_edit_distance(const char* a, const char* b);
+void ura_suggest_init(uraSuggest* s, const char* word);
+void ura_suggest_add(uraSuggest* s, const char* name);
+const char* ura_suggest_text(const uraSuggest* s, char* buf, size_t n);
+void ura_suggest_keywords(uraSuggest* s, const char* usage);
+
+/* text after lead, wrapped between words at width (0: one line), later lines after cont */
+void ura_wrap(FILE* f, const char* lead, const char* cont, const char* text, int width);
+/* s split at its double spaces into at most max lines of width (the last takes the rest); the
+   number of lines */
+int ura_split_fields(const char* s, int width, char (*out)[256], int max);
+
+/* ---- colours (colors.c) ---- */
+
+/* band thresholds, percent: low < MED <= medium < HIGH <= high < SEVERE <= severe */
+#define uraBAND_MED    5.0
+#define uraBAND_HIGH   30.0
+#define uraBAND_SEVERE 90.0
+
+typedef enum {
+  uraROLE_NONE = 0, /* no contact, or P = 0: white / blank */
+  uraROLE_LOW,      /* 0 < P < 5 % */
+  uraROLE_MEDIUM,   /* 5 <= P < 30 % (yellow) */
+  uraROLE_HIGH,     /* 30 <= P < 90 % (orange) */
+  uraROLE_SEVERE,   /* P >= 90 % (red) */
+  uraROLE_FAILED,   /* the cell's simulation failed */
+  uraROLE_PENDING,  /* the cell is not computed */
+  uraROLE_AXIS,     /* axis labels */
+  uraROLE_TITLE,    /* title and status lines */
+  /* a difference grid P_b - P_a (design compare), a diverging scale: */
+  uraROLE_SAFER2,   /* P_b - P_a <= -30 % (deep blue) */
+  uraROLE_SAFER,    /* -30 % < P_b - P_a < 0 (light blue) */
+  uraROLE_RISKIER,  /* 0 < P_b - P_a < 30 % (light red) */
+  uraROLE_RISKIER2, /* P_b - P_a >= 30 % (deep red) */
+  uraROLE_N
+} uraRole;
+
+typedef enum {
+  uraSCHEME_PLAIN = 0, /* no escapes at all (not a terminal, or NO_COLOR for text) */
+  uraSCHEME_MONO,      /* attributes and glyphs only (ncurses without colour) */
+  uraSCHEME_BASIC,     /* the 8 ANSI colours */
+  uraSCHEME_XTERM,     /* 256 colours: white, pale yellow, yellow, orange, red */
+  uraSCHEME_N
+} uraScheme;
+
+enum {
+  uraATTR_BOLD = 1,
+  uraATTR_REVERSE = 2,
+  uraATTR_DIM = 4,
+  uraATTR_UNDERLINE = 8
+};
+
+typedef struct {
+  short fg, bg; /* colour numbers (0-7 ANSI, 8-255 xterm), -1 default */
+  int attr;     /* uraATTR_* bits */
+  char glyph;   /* marker of the band where colour is absent */
+} uraStyle;
+
+/* role of a probability 0..1 (band), and of a grid cell (band, failed or pending) */
+uraRole ura_band_role(double p);
+uraRole ura_cell_role(const urCell* cell);
+
+/* role of a cell of a difference grid (diverging: 0 is none), and of a cell of a grid that is
+   one (diff) or not */
+uraRole ura_diff_role(const urCell* cell);
+uraRole ura_grid_role(int diff, const urCell* cell);
+
+/* style of a role in a scheme */
+const uraStyle* ura_style(uraScheme s, uraRole r);
+
+/* short name of a role ("none", "low", ...) and its legend text ("0 / no contact", "0-5 %") */
+const char* ura_role_name(uraRole r);
+const char* ura_role_label(uraRole r);
+
+/* scheme for text on a stream: PLAIN unless it is a terminal and NO_COLOR is unset; XTERM when
+   TERM or COLORTERM promise 256 colours, BASIC otherwise */
+uraScheme ura_scheme_for_stream(FILE* f);
+
+/* true when the NO_COLOR convention (https://no-color.org) asks for no colour */
+int ura_no_color(void);
+
+/* SGR escape sequence of a style into buf ("" for PLAIN); returns its length */
+size_t ura_style_sgr(uraScheme s, const uraStyle* st, char* buf, size_t n);
+
+#endif

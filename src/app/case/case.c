@@ -1,0 +1,87 @@
+/* case.c: the live case as a whole: a fresh context (the defaults, the built-in model set, the
+ * model's first case), the case loaded by name from the model's presets, the impact speed and
+ * angle the live settings give (set, or derived from the descent model or the paper's Table 2),
+ * and the last grid let go. The top of the case layer: it calls the model set, the presets and
+ * the parameter table, and nothing in the layer calls back into it but through the context. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "case.h"
+
+void ura_init(uraCtx* c) {
+  ur_init(urINIT_GSL_CODES); /* the core's GSL failures as return codes */
+  memset(c, 0, sizeof *c);
+  ura_state_defaults(&c->st);
+  c->out = stdout;
+  c->msg = stderr;
+  if (ura_models_init(c) == 0) ura_case_default(c);
+}
+
+int ura_paper_speed(const uraCtx* c) {
+  return (!c->st.speed_set || !c->st.angle_set) && c->st.descent_src == uraDESC_PAPER;
+}
+
+int ura_impact_conditions(uraCtx* c, double* speed, double* angle) {
+  urDescentResult r;
+  char err[256];
+  int derive = !c->st.speed_set || !c->st.angle_set;
+  if (derive && c->st.descent_src == uraDESC_PAPER) {
+    if (ura_paper_descent(c, c->st.casename, c->st.descent.wind, &r.speed, &r.angle)) return -1;
+  } else if (derive) {
+    if (ur_descent(&c->st.descent, &r, err, sizeof err)) return ura_fail(c, "%s", err);
+  }
+  *speed = c->st.speed_set ? c->st.speed : r.speed;
+  *angle = c->st.angle_set ? c->st.angle : r.angle;
+  return 0;
+}
+
+int ura_case_load(uraCtx* c, const char* name) {
+  /* the cases are the model's presets (preset.c); the model is compiled once, and not at all
+     when the overrides are as they were */
+  if (!ura_model(c)) return -1;
+  const urPreset* pr = ura_preset_find(c, name);
+  if (!pr) {
+    char names[400];
+    ura_preset_names(c, names, sizeof names);
+    return ura_fail(c, "case: unknown case '%s'; accepted: %s", name, names);
+  }
+  uraState ns;
+  if (ura_preset_state(c, pr, c->model, &ns)) return -1;
+  return ura_model_state(c, &ns, "case");
+}
+
+int ura_case_default(uraCtx* c) {
+  const urModel* m = ura_model(c);
+  if (!m) return -1;
+  if (m->npreset == 0) return 0;
+  return ura_case_load(c, m->preset[0].name);
+}
+
+void ura_last_free(uraCtx* c) {
+  ur_grid_free(c->last.g);
+  memset(&c->last, 0, sizeof c->last);
+}
+
+const urPreset* ura_preset_find(uraCtx* c, const char* name) {
+  const urModel* m = ura_model(c);
+  for (int i = 0; m && i < m->npreset; i++) {
+    if (!strcasecmp(m->preset[i].name, name)) return m->preset + i;
+  }
+  return NULL;
+}
+
+void ura_preset_names(uraCtx* c, char* buf, size_t n) {
+  const urModel* m = c->model ? c->model : ura_model(c);
+  size_t k = 0;
+  buf[0] = 0;
+  for (int i = 0; m && i < m->npreset && k < n; i++) {
+    k += (size_t)snprintf(buf + k, n - k, "%s%s",
+                          i == 0                ? ""
+                          : i + 1 == m->npreset ? " or "
+                                                : ", ",
+                          m->preset[i].name);
+  }
+  if (!buf[0]) snprintf(buf, n, "none (the model declares no preset)");
+}

@@ -1,0 +1,406 @@
+/* case.h: the case layer of the application (src/app/case): the live case and what it is
+ * computed with. The state of a session (uraState: every setting; uraCtx: the state, the model
+ * set and its compiled model and settled stance, the caches, the last grid, impact and trace),
+ * the parameter table behind set and show, presets and design parameters, the model set and the
+ * model cache, grid recall, what a saved session leaves out, the paper's Table 2, a grid file
+ * read back, the risk settings and declared distributions, the checks of the plot settings, and
+ * the context's output: tables, the pager and atomic files under the session's settings.
+ * Prefix ura_ (application), types ura*. It builds on the base layer (base.h) and the core
+ * (libuasimpact); the layers above (cmd, ui, scale, main) include it; it includes none of theirs.
+ */
+#ifndef UASIMPACT_CASE_H
+#define UASIMPACT_CASE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "../base/base.h"
+#include "uasimpact/descent.h"
+#include "uasimpact/engine.h"
+#include "uasimpact/grid.h"
+#include "uasimpact/impact.h"
+#include "uasimpact/init.h"
+#include "uasimpact/injury.h"
+#include "uasimpact/modellang.h"
+#include "uasimpact/parametric.h"
+#include "uasimpact/risk.h"
+
+#define uraMAXLIST     64          /* values in a list parameter */
+#define uraMAXOV       64          /* model parameters set by the case or the user */
+#define uraMAXPARTS    32          /* model parts */
+#define uraMODELCACHE  8           /* compiled, settled models kept besides the live one */
+#define uraRECALLGRIDS 64          /* complete grids kept for recall */
+#define uraRECALLBYTES (64L << 20) /* their cells, bytes at most */
+
+/* ---- live case state ---- */
+
+/* table: rows fit 80 columns at a terminal, every column elsewhere; wide: every column always */
+typedef enum {
+  uraFMT_TABLE = 0,
+  uraFMT_CSV,
+  uraFMT_WIDE
+} uraFormat;
+/* where a derived impact speed and descent angle come from (set descent) */
+typedef enum {
+  uraDESC_MODEL = 0,
+  uraDESC_PAPER
+} uraDescentSrc;
+
+#define uraMAXDIST 16 /* declared input distributions */
+
+typedef enum {
+  uraMC_SURFACE = 0,
+  uraMC_EXACT
+} uraMcMethod;
+
+/* one declared input distribution ('dist NAME KIND ...') */
+typedef struct {
+  char name[urNAMELEN];
+  urDist d;
+} uraDistDecl;
+
+typedef struct {
+  double p_chute;       /* the parachute deploys in time */
+  double p_bag;         /* each airbag deploys */
+  double h_chute_min;   /* m: below this failure height the parachute cannot help */
+  double seed;          /* Monte Carlo key (a whole number) */
+  int mc_method;        /* uraMcMethod */
+  double surface_nodes; /* nodes per continuous axis of the response surface */
+  double surface_check; /* samples computed exactly to check the surface */
+  double pop_density;   /* people/km^2 for the iGRC */
+  double tlos;          /* target level of safety, fatalities per flight hour */
+  double igrc_comp;     /* compensation subtracted from the raw iGRC */
+  int annexf_obstacles; /* 1: the Annex F obstacle factor (1 < w < 40 m) */
+  int ndist;
+  uraDistDecl dist[uraMAXDIST];
+} uraRiskSet;
+
+typedef struct {
+  char casename[8];         /* A, B, C, A1, A2 */
+  urDescentParams descent;  /* descent model parameters (wind is the live wind) */
+  urParametricParams para;  /* Appendix D parameters */
+  double winds[uraMAXLIST]; /* wind list for descent/parametric/sweeps, m/s */
+  int nwinds;
+  double speed, angle;               /* impact speed (m/s) and descent angle (deg) when set */
+  int speed_set, angle_set;          /* 0: derived (descent_src says from what) */
+  int descent_src;                   /* uraDescentSrc: the descent model, or the paper's Table 2 */
+  int tau;                           /* urTau: the moment at which Delta is taken */
+  double face;                       /* face direction phi, deg */
+  int format;                        /* uraFormat */
+  int pager;                         /* 1: long output at the prompt through $PAGER (pager.c) */
+  urInjuryParams injury;             /* injury criteria and PoF curve settings */
+  double pitch, roll, yaw;           /* drone attitude relative to upright on its course, deg */
+  double step;                       /* grid pitch, m */
+  double par_min, par_max, perp_max; /* grid extents along_min, along_max, cross_max when set, m */
+  int par_min_set, par_max_set, perp_max_set; /* 0: sized automatically (derived) */
+  double threads;                             /* grid worker threads (a whole number) */
+  int recall;                        /* 1: a grid identical to an earlier one reuses its cells */
+  char ov_name[uraMAXOV][urNAMELEN]; /* model parameters overridden (SI values) */
+  double ov_val[uraMAXOV];
+  int ov_user[uraMAXOV]; /* 1: set by the user, 0: by the case preset */
+  int nov;
+  char terminal[64]; /* gnuplot terminal; empty: gnuplot's default */
+  char output[512];  /* gnuplot output file; empty: a window */
+  uraRiskSet risk;   /* deployment reliability, distributions, SORA (app_risk.h) */
+} uraState;
+
+/* one part of the model set (human, ra3, airbags, sim, or loaded from a file) */
+typedef struct {
+  char name[urNAMELEN];
+  char* text;       /* owned */
+  char origin[256]; /* "built-in" or the file it came from */
+  int line;         /* line of the origin where the part starts */
+} uraPart;
+
+/* the last grid with the conditions it was computed (or loaded) for */
+typedef struct {
+  urGrid* g; /* NULL: none yet */
+  char casename[8];
+  double wind, face, speed, angle; /* m/s, deg, m/s, deg */
+  int paper_speed;                 /* speed or angle came from the paper's Table 2 */
+  int tau;                         /* urTau of a computed grid (loaded: urTAU_RMAX) */
+  double tau_shift;                /* ur_impact_tau_shift of a computed grid, m */
+  char source[512];                /* "computed", or the file it was loaded from */
+  int recalled;                    /* the cells of an identical earlier grid (recall.c) */
+  int extents_set;                 /* some extent was set: Q covers only the lattice */
+  int diff;                        /* a difference grid (design compare): p is P_b - P_a */
+} uraGridResult;
+
+/* what a compiled model is made of: the generation of the model parts (counted up whenever they
+   change) and the parameter overrides, names and exact values in any order */
+typedef struct {
+  unsigned long gen;
+  int nov;
+  char ov_name[uraMAXOV][urNAMELEN];
+  double ov_val[uraMAXOV];
+} uraModelKey;
+
+typedef struct uraModelCache uraModelCache; /* modelcache.c */
+typedef struct uraRecall uraRecall;         /* recall.c */
+
+/* time histories of one impact, for inspection and plotting */
+typedef struct {
+  int n, nsig;              /* samples, signals */
+  double* t;                /* n times, s */
+  double* v;                /* nsig*n values, signal-major */
+  const char* const* names; /* nsig signal names (e.g. head_acc, neck_fz) */
+  const char* const* units; /* nsig units */
+  const char* title;        /* the impact's conditions and results (NULL: none) */
+} uraTrace;
+/* the last trace (c->trace, ura_last_trace) starts with this many derived signals (static names),
+   then one per sensor channel (names allocated) */
+#define uraTRACE_NDERIVED 6
+
+/* one sweep kept for plot sweep and export sweep (cmd_sweep.c): Q per wind or face value */
+#define uraMAXSWEEPS 32
+typedef struct {
+  char casename[8];
+  int over_face;     /* 0: over wind (face fixed), 1: over face (wind fixed) */
+  double fixed;      /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
+  double step;       /* grid pitch, m */
+  char changes[200]; /* settings that differ from the case preset, or "none" */
+  int n;             /* values, in increasing order */
+  double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
+} uraSweep;
+
+/* ---- context ---- */
+
+typedef struct uraCtx {
+  uraState st;
+  FILE* out;           /* results */
+  FILE* msg;           /* errors and notes */
+  char err[uraERRLEN]; /* message of the last failure */
+  int err_located;     /* err already starts with FILE:LINE: */
+  int interactive;     /* a person is typing: errors do not stop anything */
+  int depth;           /* nesting of source */
+  int quit;            /* set by quit */
+  int dry;             /* fuzzing (tests/fuzz): commands parse their arguments but
+                                      refuse to simulate, plot, open the viewer or touch files
+                                      (ura_dry) */
+  uraGridResult last;  /* the last grid */
+  uraSweep* sweep;     /* the kept sweeps, oldest first (sweep clear frees them) */
+  int nsweep;
+  struct uraPSweep* psweep; /* the kept sweeps over other parameters (sweep_param.c) */
+  int npsweep;
+  struct uraDesign* design; /* the saved designs (design_cmd.c) */
+  int ndesign;
+  uraPart part[uraMAXPARTS]; /* the model set, in order */
+  int npart;
+  unsigned long parts_gen; /* generation of the model parts */
+  urModel* model;          /* compiled with the overrides; NULL: stale */
+  urImpactSetup setup;     /* settled stance of the model; valid if have_setup */
+  int have_setup;
+  urImpactWork work; /* the single-impact work space (histories of the last impact) */
+  int have_work;
+  int have_impact; /* the work holds a finished impact */
+  urImpactResult last_impact;
+  double last_dpar, last_dperp;
+  int last_aim;          /* the last impact was aimed (impact aim): the two are the
+                                      eccentricity up, side */
+  uraModelCache* mcache; /* other models with their stances (NULL until one is kept) */
+  uraRecall* recall;     /* complete grids for recall (NULL until one is kept) */
+  unsigned long tick;    /* use counter of both, for least-recently-used eviction */
+  /* run (or recall) the impact of one grid cell and its histories, for the viewer; NULL: the
+     viewer shows stored cell values only (main sets the command layer's ura_inspect_cell) */
+  int (*inspect)(struct uraCtx* c, urCell* cell, uraTrace* trace);
+  struct uraMc* mc;       /* the last montecarlo's samples (NULL: none; cmd_montecarlo.c) */
+  char impact_title[400]; /* the last impact's conditions and results (plot titles) */
+  struct {                /* the last trace's signals (ura_last_trace; ura_trace_free) */
+    double* t;
+    double* v;
+    char** names;
+    const char** units;
+    int nsig;
+  } trace;
+  int canvas_w, canvas_h; /* canvas (pixels) a plot of several panels asks for; 0: the
+                                      terminal's default (ura_plot_canvas) */
+  /* optional: asked before each command runs (the executing fuzz target bounds the work and the
+     files of its inputs); nonzero refuses the command with c->err set */
+  int (*guard)(struct uraCtx* c, int argc, char** argv);
+  struct uraScale* scale; /* the work split over processes (scale.h; NULL: serial) */
+  /* with scale: called before each grid runs, to share out its cells (set with scale by the
+     scale layer; the grid command calls it without knowing the distributors) */
+  void (*scale_grid)(struct uraCtx* c, urGridSpec* spec, urGridDist* d);
+  int mute; /* results, notes, files and plots go nowhere (scale.h) */
+} uraCtx;
+
+/* record a failure message; always returns -1 */
+int ura_fail(uraCtx* c, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+
+void ura_init(uraCtx* c);
+void ura_state_defaults(uraState* s);
+
+/* in dry mode, refuse WHAT (a simulation, plot, file...) with a message; 0 otherwise */
+int ura_dry(uraCtx* c, const char* what);
+
+/* ---- the risk settings and declared distributions (risk_dist.c) ---- */
+
+void ura_risk_defaults(uraRiskSet* r);
+/* show and save session: the declared distributions, as '# ...' lines or as dist commands */
+void ura_dist_show(uraCtx* c);
+void ura_dist_save(uraCtx* c, FILE* f);
+/* index of a declared input, or -1 */
+int ura_dist_find(const uraRiskSet* r, const char* name);
+/* the accepted range of an input that may be declared: 0, or -1 (with a message) when NAME
+   cannot be drawn */
+int ura_dist_range(uraCtx* c, const char* name, double* lo, double* hi);
+/* the distribution as the arguments of a dist command ("weibull 5 2") */
+void ura_dist_format(const uraDistDecl* d, char* buf, size_t n);
+int ura_cmd_dist(uraCtx* c, int argc, char** argv);
+
+/* ---- parameters (one table drives set, show, save and completion) ---- */
+
+typedef enum {
+  uraP_NUM = 0,
+  uraP_LIST,
+  uraP_ENUM,
+  uraP_CASE,
+  uraP_STR,
+  uraP_INT
+} uraPKind;
+
+typedef struct {
+  const char* name;
+  uraPKind kind;
+  size_t off;    /* offset of the value in uraState */
+  size_t setoff; /* offset of the int "set" flag of a derivable value, or 0 */
+  const char* unit;
+  double min, max; /* accepted closed range (numbers, list items); STR: size */
+  const char* help;
+  const char* const* choices; /* uraP_ENUM: NULL-terminated names */
+  /* uraP_STR: checks a value and writes what is kept into norm (n bytes); 0, or -1 with the
+     failure recorded (NULL: any text of the size) */
+  int (*check)(struct uraCtx* c, const char* value, char* norm, size_t n);
+} uraParam;
+
+extern const uraParam ura_params[];
+const uraParam* ura_param_find(const char* name);
+int ura_param_set(uraCtx* c, const uraParam* p, const char* value);
+/* the value as text (without unit) into buf, exact (round-trips through set); a derivable
+   value that is not set prints as auto */
+void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n);
+
+/* the injury settings (core table) through set/show: index of NAME or -1; set; one show line */
+int ura_injury_find(const char* name);
+int ura_injury_set(uraCtx* c, int i, const char* value);
+void ura_injury_line(uraCtx* c, int i, char* buf, size_t n, int with_unit);
+
+/* current impact speed and angle: set values, or derived at the live wind from the descent
+   model or (set descent paper) the paper's Table 2 */
+int ura_impact_conditions(uraCtx* c, double* speed, double* angle);
+/* 1 if the live speed or angle is derived from the paper's Table 2 */
+int ura_paper_speed(const uraCtx* c);
+
+/* the paper's Table 2 (paper.c): speed (m/s) and descent angle (deg) of a case at a wind:
+   case C's column for C, case B's for A, A1, A2 and B; only the printed winds 0, 2, ..., 10
+   m/s. 0, or -1 with a message naming the wind and the accepted ones */
+int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed, double* angle);
+/* the column of Table 2 a case takes: "B" or "C" */
+const char* ura_paper_descent_column(const char* casename);
+
+/* load a case: a preset of the model (the RA3's A, B, C, A1, A2; wind and face are kept); the
+   model's first preset (none: nothing) */
+int ura_case_load(uraCtx* c, const char* name);
+int ura_case_default(uraCtx* c);
+/* presets (preset.c): by name (any case), the names as "A, B or C", the state a case starts
+   from (the live wind, face, lists, step and output settings kept) */
+const urPreset* ura_preset_find(uraCtx* c, const char* name);
+void ura_preset_names(uraCtx* c, char* buf, size_t n);
+int ura_preset_state(uraCtx* c, const urPreset* pr, const urModel* m, uraState* ns);
+/* design parameters (design.c): mass also as the multibody drone's total (its role mass=
+   parameter, as an override of ns; user: set by the user), the models a setting changes */
+int ura_design_mass(const urModel* m, uraState* ns, double mass, int user);
+int ura_design_set(uraCtx* c, const char* name, const char* value, const char* unit);
+const char* ura_design_reach(uraCtx* c, const char* name);
+const char* ura_design_mark(uraCtx* c, const char* name, char* buf, size_t n);
+
+/* the checks of the terminal and output settings (plot_term.c): a terminal is a known name with
+   checked options (kept normalised: fonts in single quotes), an output a file name that gnuplot
+   cannot take for a pipe; both can be written back by save session */
+int ura_terminal_check(uraCtx* c, const char* value, char* norm, size_t n);
+int ura_output_check(uraCtx* c, const char* value, char* norm, size_t n);
+/* what a gnuplot terminal draws on (plot_term.c) */
+enum {
+  uraTERM_WINDOW = 0,
+  uraTERM_TEXT,
+  uraTERM_FILE
+};
+
+/* the kind of a terminal setting (its first word; empty: gnuplot's default window) */
+int ura_term_kind(const char* term);
+
+/* the terminal an output file's extension implies (.png pngcairo, .svg, .pdf pdfcairo, .eps
+   epscairo, .txt dumb, .jpg/.jpeg jpeg, .gif), NULL for none */
+const char* ura_term_for_ext(const char* path);
+
+/* index of a signal of a trace by name, or -1 (model.c) */
+int ura_trace_find(const uraTrace* tr, const char* name);
+
+/* the last grid (c->last) freed (state.c); a grid CSV read into it (gridload.c) */
+void ura_last_free(uraCtx* c);
+int ura_grid_load(uraCtx* c, const char* path);
+
+/* models (model.c) */
+int ura_models_init(uraCtx* c);
+void ura_models_free(uraCtx* c);
+void ura_trace_free(uraCtx* c);            /* the signals of the last trace (c->trace) */
+const urModel* ura_model(uraCtx* c);       /* compiled model, or NULL with c->err */
+const urImpactSetup* ura_setup(uraCtx* c); /* settled stance, or NULL with c->err */
+void ura_model_stale(uraCtx* c);
+int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or -1 */
+int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
+/* the live state becomes ns if the model compiles with its parameter overrides (unchanged
+   overrides keep the model and its stance); else nothing changes and WHO: refused ... */
+int ura_model_state(uraCtx* c, const uraState* ns, const char* who);
+int ura_cmd_model(uraCtx* c, int argc, char** argv);
+/* the model parts as session commands: model drop for each built-in part missing, model load
+   for each loaded one */
+void ura_model_write_parts(uraCtx* c, FILE* f);
+
+/* the model cache (modelcache.c): the key of the live parts with st's overrides, and equality */
+void ura_model_key(const uraCtx* c, const uraState* st, uraModelKey* k);
+int ura_model_key_same(const uraModelKey* a, const uraModelKey* b);
+/* the live model leaves: kept with its settled stance (an unsettled one is freed); its work space
+   and last impact go with it */
+void ura_mcache_park(uraCtx* c);
+/* a kept model for ns's overrides becomes the live one (the live one is parked): 1, else 0 */
+int ura_mcache_take(uraCtx* c, const uraState* ns);
+void ura_mcache_flush(uraCtx* c); /* free every kept model */
+/* the settled stances of the kept models into out (at most max): donors of the person's stance
+   for a new model (ur_impact_prepare); their count */
+int ura_mcache_setups(const uraCtx* c, const urImpactSetup** out, int max);
+
+/* grid recall (recall.c): a copy of a kept complete grid for the live model and these
+   conditions (NULL: none, or recall is off); keep a complete grid; free every kept grid */
+urGrid* ura_recall_find(uraCtx* c, const urImpactCond* cond);
+void ura_recall_keep(uraCtx* c, const urImpactCond* cond, const urGrid* g);
+void ura_recall_flush(uraCtx* c);
+
+/* what a session leaves out (session_base.c): the state 'reset; case NAME' gives with the live
+   model parts (0, or -1: the defaults, the case is not a preset); the shortest text of v that
+   reads back exactly; a model parameter's value in the unit that writes it shortest and exactly
+   ("1.1 atm", "26 kN", "0.25 m") */
+int ura_session_base(uraCtx* c, uraState* base);
+void ura_num_shortest(char* buf, size_t n, double v);
+void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n);
+
+/* ---- output under the session's settings (output.c) ---- */
+
+/* a command typed at the prompt writes to a terminal; the width text wraps at (0: no wrapping:
+   not at a terminal, or format wide); gather a command's output and page it when taller than
+   the screen (pager.c), the results stream c->out swapped meanwhile */
+int ura_at_terminal(const uraCtx* c);
+int ura_text_width(const uraCtx* c);
+int ura_pager_begin(uraCtx* c, const char* cmd);
+void ura_pager_end(uraCtx* c);
+/* print a table (aligned, or CSV per the format setting) to c->out and free it */
+void ura_table_print(uraCtx* c, uraTable* t);
+/* files written atomically (atomic.c) for a command: refused in dry mode, to /dev/null when
+   muted (a shard, an MPI rank but 0); a failure recorded in c->err */
+int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);
+int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
+/* "did you mean" over the parameter tables (the workbench's, the injury settings, the live
+   model's parameters) (state.c) */
+void ura_suggest_params(uraCtx* c, uraSuggest* s);
+
+#endif

@@ -1,0 +1,552 @@
+/* model.c: the model set (parts of model-language text), its parameters, the compiled model and
+ * the settled stance, rebuilt lazily when something changes; the model command */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "case.h"
+
+
+#define SETTLE_SECONDS 1.0         /* settling of the stance, s (it is still within 0.1 mm) */
+#define BALANCE_ITERS  2           /* muscle-tone balancing of the upright posture */
+#define MAXMODELFILE   (16L << 20) /* largest model file, bytes */
+
+typedef struct {
+  const char* name;
+  const char* text;
+} urBuiltinModel;
+extern const urBuiltinModel ur_builtin_models[];
+
+/* built-in order: the person, the drone, its airbags, the simulation options */
+static const char* const builtin_order[] = {"human", "ra3", "airbags", "sim", NULL};
+
+static void parts_free(uraPart* p, int n) {
+  for (int i = 0; i < n; i++) free(p[i].text);
+}
+
+/* the model parts change (or go): the live model, the kept ones and the grids computed with them
+   are of the old parts. New parts keep the settled models as stance donors only: their keys name
+   the old parts, so none becomes live again, but a new model whose person is byte for byte a
+   kept one's takes its stance (a new drone or airbag file settles nothing; modelcache.c) */
+static void parts_changed(uraCtx* c, int keep_stances) {
+  if (keep_stances) {
+    ura_mcache_park(c);
+  } else {
+    ura_model_stale(c);
+    ura_mcache_flush(c);
+  }
+  ura_recall_flush(c);
+  c->parts_gen++;
+}
+
+void ura_models_free(uraCtx* c) {
+  parts_changed(c, 0);
+  parts_free(c->part, c->npart);
+  c->npart = 0;
+  ura_trace_free(c);
+}
+
+/* compile parts with the state's parameter overrides (messages name built-in parts by name, a
+   loaded part by its file) */
+static urModel* compile(const uraPart* part, int n, const uraState* st, char* err, int errlen) {
+  urModelSource src[uraMAXPARTS];
+  urOverride ov[uraMAXOV];
+  for (int i = 0; i < n; i++) {
+    src[i].text = part[i].text;
+    src[i].file = !strcmp(part[i].origin, "built-in") ? part[i].name : part[i].origin;
+    src[i].line = part[i].line;
+  }
+  for (int i = 0; i < st->nov; i++) {
+    ov[i].name = st->ov_name[i];
+    ov[i].value = st->ov_val[i];
+  }
+  urModel* m = ur_model_parse_stop(src, n, ov, st->nov, ura_interrupt_flag(), err, errlen);
+  if (m) m->opt.stop = ura_interrupt_flag(); /* Ctrl-C stops its runs at the next step */
+  return m;
+}
+
+/* a compiled model of these parts must run impacts (ur_impact_check) and compile in every case
+   preset with the user's overrides of st, so that 'case', 'reset' and a saved session's replay
+   cannot meet a model that fails; 0, or -1 with what broke in err (m: the parts compiled with
+   st's overrides) */
+static int fits(uraCtx* c, const uraPart* part, int n, const uraState* st, const urModel* m,
+                char* err, size_t errlen) {
+  char e[300];
+  if (ur_impact_check(m, e, sizeof e)) {
+    snprintf(err, errlen, "%s", e);
+    return -1;
+  }
+  /* every preset of the candidate model, the live case first: a failure there is not one of
+     another case */
+  const urPreset* order[m->npreset > 0 ? m->npreset : 1];
+  int no = 0;
+  for (int k = 0; k < m->npreset; k++) {
+    if (!strcasecmp(m->preset[k].name, st->casename)) order[no++] = m->preset + k;
+  }
+  for (int k = 0; k < m->npreset; k++) {
+    if (strcasecmp(m->preset[k].name, st->casename)) order[no++] = m->preset + k;
+  }
+  for (int k = 0; k < no; k++) {
+    uraState ns;
+    if (ura_preset_state(c, order[k], m, &ns)) return -1;
+    for (int i = 0; i < st->nov; i++) {
+      if (!st->ov_user[i]) continue;
+      int at = -1;
+      for (int j = 0; j < ns.nov; j++)
+        if (!strcmp(ns.ov_name[j], st->ov_name[i])) at = j;
+      if (at < 0 && ns.nov == uraMAXOV) continue;
+      if (at < 0) at = ns.nov++;
+      memcpy(ns.ov_name[at], st->ov_name[i], urNAMELEN);
+      ns.ov_val[at] = st->ov_val[i];
+      ns.ov_user[at] = 1;
+    }
+    urModel* mk = compile(part, n, &ns, e, sizeof e);
+    int bad = !mk || ur_impact_check(mk, e, sizeof e);
+    ur_model_free(mk);
+    if (bad) {
+      if (k)
+        snprintf(err, errlen, "in case %s: %s", order[k]->name, e);
+      else
+        snprintf(err, errlen, "%s", e);
+      return -1;
+    }
+  }
+  return 0;
+}
+
+/* add or replace the parts of a text in the candidate set np[0..*nn) (its texts owned) */
+static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const char* file,
+                     const char* origin) {
+  urModelPart sp[uraMAXPARTS];
+  char err[300];
+  int n = ur_model_split(text, file, sp, uraMAXPARTS, err, sizeof err);
+  if (n < 0) return ura_fail(c, "%s", err);
+  if (n > uraMAXPARTS) return ura_fail(c, "%s: more than %d parts", file, uraMAXPARTS);
+  if (n == 0) return ura_fail(c, "%s: no model text", file);
+  for (int k = 0; k < n; k++) {
+    int at = -1;
+    for (int i = 0; i < *nn; i++) {
+      if (!strcmp(np[i].name, sp[k].name)) at = i;
+    }
+    if (at < 0) {
+      if (*nn == uraMAXPARTS) {
+        return ura_fail(c, "%s: too many parts (at most %d)", file, uraMAXPARTS);
+      }
+      at = (*nn)++;
+      np[at].text = NULL;
+    }
+    char* t = strndup(sp[k].text, sp[k].len);
+    if (!t) return ura_fail(c, "%s: out of memory", file);
+    snprintf(np[at].name, sizeof np[at].name, "%.*s", (int)sizeof np[at].name - 1, sp[k].name);
+    free(np[at].text);
+    np[at].text = t;
+    snprintf(np[at].origin, sizeof np[at].origin, "%s", origin);
+    np[at].line = sp[k].line;
+  }
+  return 0;
+}
+
+/* the candidate set replaces the model set if it compiles with the current overrides and, when
+   file is given (the parts loaded from file, which failures name), fits; a drop need not fit (a
+   model may be rebuilt a part at a time: 'model drop ra3' before loading another drone); np is
+   consumed either way; on error nothing changes */
+static int parts_commit(uraCtx* c, uraPart* np, int nn, const char* file) {
+  char err[300], why[400];
+  urModel* m = compile(np, nn, &c->st, err, sizeof err);
+  int bad = !m, in_file = 0;
+  if (!m) {
+    /* an error in the file names its line; one elsewhere is the file's doing all the same */
+    size_t fl = file ? strlen(file) : 0;
+    in_file = !file || (!strncmp(err, file, fl) && err[fl] == ':');
+    snprintf(why, sizeof why, "%s", err);
+  } else if (file) {
+    bad = fits(c, np, nn, &c->st, m, why, sizeof why);
+  }
+  if (bad) {
+    ur_model_free(m);
+    int first = -1;
+    for (int i = 0; file && i < nn && first < 0; i++)
+      if (!strcmp(np[i].origin, file)) first = i;
+    if (ura_interrupted()) {
+      ura_fail(c, "model load: interrupted (Ctrl-C) while compiling '%s'; the model is unchanged",
+               file ? file : "model");
+    } else if (in_file || first < 0) {
+      ura_fail(c, "%s", why);
+    } else {
+      ura_fail(c,
+               "model load: %s:%d: part '%s' does not fit the model: %s; the model is "
+               "unchanged",
+               file, np[first].line, np[first].name, why);
+    }
+    parts_free(np, nn);
+    return -1;
+  }
+  parts_changed(c, 1);
+  parts_free(c->part, c->npart);
+  memcpy(c->part, np, sizeof(uraPart) * nn);
+  c->npart = nn;
+  c->model = m;
+  return 0;
+}
+
+/* add or replace the parts of a text; on error nothing changes */
+static int parts_merge(uraCtx* c, const char* text, const char* file, const char* origin) {
+  uraPart np[uraMAXPARTS];
+  int nn = c->npart;
+  memcpy(np, c->part, sizeof(uraPart) * nn);
+  for (int i = 0; i < nn; i++) {
+    np[i].text = strdup(c->part[i].text);
+    if (!np[i].text) {
+      parts_free(np, i);
+      return ura_fail(c, "%s: out of memory", file);
+    }
+  }
+  if (parts_add(c, np, &nn, text, file, origin)) {
+    parts_free(np, nn);
+    return -1;
+  }
+  return parts_commit(c, np, nn, file);
+}
+
+/* the built-in parts in order, compiled once */
+int ura_models_init(uraCtx* c) {
+  uraPart np[uraMAXPARTS];
+  int nn = 0;
+  for (int i = 0; builtin_order[i]; i++) {
+    for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
+      if (!strcmp(b->name, builtin_order[i]) &&
+          parts_add(c, np, &nn, b->text, b->name, "built-in")) {
+        parts_free(np, nn);
+        return -1;
+      }
+    }
+  }
+  return parts_commit(c, np, nn, NULL);
+}
+
+const urModel* ura_model(uraCtx* c) {
+  if (c->model) return c->model;
+  char err[300];
+  c->model = compile(c->part, c->npart, &c->st, err, sizeof err);
+  if (!c->model) ura_fail(c, "model: %s", err);
+  return c->model;
+}
+
+const urImpactSetup* ura_setup(uraCtx* c) {
+  if (c->have_setup) return &c->setup;
+  if (ura_dry(c, "simulation")) return NULL;
+  if (!ura_model(c)) return NULL;
+
+  /* balance and settle, or take both from a kept model with the same person (modelcache.c) */
+  const urImpactSetup* donors[uraMODELCACHE];
+  int nd = ura_mcache_setups(c, donors, uraMODELCACHE);
+  int rc = ur_impact_prepare(&c->setup, c->model, SETTLE_SECONDS, BALANCE_ITERS, donors, nd);
+  if (rc == -1) {
+    ura_fail(c, ura_interrupted() ? "interrupted (Ctrl-C) while settling the standing posture"
+                                  : "model: the standing posture cannot be balanced (it falls)");
+  } else if (rc) {
+    if (ura_interrupted())
+      ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
+    else
+      ura_fail(c, "model: %s", c->setup.err);
+  }
+  if (rc) {
+    /* the balancing shifts neutral positions in the model: compile afresh next time */
+    ur_impact_free(&c->setup);
+    ura_model_stale(c);
+    return NULL;
+  }
+  c->have_setup = 1;
+  return &c->setup;
+}
+
+int ura_model_param_find(uraCtx* c, const char* name) {
+  const urModel* m = ura_model(c);
+  return m ? ur_name_param(m, name) : -1;
+}
+
+int ura_model_state(uraCtx* c, const uraState* ns, const char* who) {
+  /* the same overrides: the same model, and its settled stance stays valid; overrides seen
+     earlier: the model kept for them, balanced and settled (modelcache.c) */
+  uraModelKey now, want;
+  ura_model_key(c, &c->st, &now);
+  ura_model_key(c, ns, &want);
+  if ((c->model && ura_model_key_same(&now, &want)) || ura_mcache_take(c, ns)) {
+    c->st = *ns;
+    return 0;
+  }
+
+  /* otherwise the model must compile with them, and run impacts, before anything changes */
+  char err[300];
+  urModel* m = compile(c->part, c->npart, ns, err, sizeof err);
+  if (m && ur_impact_check(m, err, sizeof err)) {
+    ur_model_free(m);
+    m = NULL;
+  }
+  if (!m && ura_interrupted()) return ura_fail(c, "%s: interrupted (Ctrl-C)", who);
+  if (!m) return ura_fail(c, "%s: refused, the model does not accept it: model: %s", who, err);
+  ura_mcache_park(c);
+  c->model = m;
+  c->st = *ns;
+  return 0;
+}
+
+int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit,
+                        int user) {
+  double v, f = 1;
+  if (ura_parse_number(value, &v)) {
+    return ura_fail(c,
+                    "set %s: '%s' is not a number; accepted: a number, optionally with a "
+                    "unit (uasimpact-model(5))",
+                    name, value);
+  }
+  char si[urNAMELEN];
+  if (unit && ur_unit_parse(unit, &f, si, sizeof si)) {
+    return ura_fail(c,
+                    "set %s: unknown unit '%s'; accepted: the units of uasimpact-model(5) "
+                    "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L), or several "
+                    "joined by * and / (N*m/rad)",
+                    name, unit);
+  }
+  int k = unit ? ura_model_param_find(c, name) : -1;
+  const char* want = k >= 0 ? c->model->param[k].unit : "";
+  if (unit && *want && strcmp(si, want)) {
+    return ura_fail(c,
+                    "set %s: the unit '%s' is in %s, not %s; accepted: a unit of %s (as in "
+                    "its param line)",
+                    name, unit, *si ? si : "no unit", want, want);
+  }
+  v *= f;
+
+  /* the new override list */
+  uraState ns = c->st;
+  int at = -1;
+  for (int i = 0; i < ns.nov; i++) {
+    if (!strcmp(ns.ov_name[i], name)) at = i;
+  }
+  if (at < 0) {
+    if (ns.nov == uraMAXOV) return ura_fail(c, "set %s: too many model parameters set", name);
+    at = ns.nov++;
+    snprintf(ns.ov_name[at], urNAMELEN, "%s", name);
+  }
+  ns.ov_val[at] = v;
+  ns.ov_user[at] = user;
+  char who[urNAMELEN + 8];
+  snprintf(who, sizeof who, "set %s", name);
+
+  /* a value the model takes only while the element that reads it is disabled (an airbag's
+     pressure in case B) is refused as well: it must hold in every case */
+  char err[400];
+  const urModel* live = ura_model(c);
+  if (user && live && fits(c, c->part, c->npart, &ns, live, err, sizeof err)) {
+    if (ura_interrupted()) return ura_fail(c, "%s: interrupted (Ctrl-C)", who);
+    return ura_fail(c, "%s: refused, the model does not accept it: model: %s", who, err);
+  }
+  return ura_model_state(c, &ns, who);
+}
+
+/* ---- the model command ---- */
+
+/* the model set as text, each part ending in a newline; headers name each part's origin */
+static void write_parts(const uraCtx* c, FILE* f, int headers) {
+  for (int i = 0; i < c->npart; i++) {
+    if (headers) fprintf(f, "# ---- part %s (%s) ----\n", c->part[i].name, c->part[i].origin);
+    fputs(c->part[i].text, f);
+    size_t n = strlen(c->part[i].text);
+    if (n && c->part[i].text[n - 1] != '\n') fputc('\n', f);
+  }
+}
+
+static int model_save(uraCtx* c, const char* path) {
+  uraAtomic a;
+  if (ura_atomic_open(c, &a, path, "model save")) return -1;
+  write_parts(c, a.f, 0);
+  return ura_atomic_close(c, &a, 1, "model save");
+}
+
+static int model_load(uraCtx* c, const char* path) {
+  if (ura_dry(c, "model load")) return -1;
+  if (ura_word_ok(path)) {
+    return ura_fail(c,
+                    "model load: cannot use '%s': the name holds a control character or both "
+                    "quote characters; accepted: a file name that save session can write back",
+                    path);
+  }
+  FILE* f = fopen(path, "r");
+  if (!f && ura_interrupted()) {
+    return ura_fail(c, "model load: interrupted (Ctrl-C) while opening '%s'", path);
+  }
+  if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+
+  /* the whole text, bounded (a device never ends), read errors named */
+  char* text = NULL;
+  size_t len = 0;
+  FILE* mem = open_memstream(&text, &len);
+  if (!mem) {
+    fclose(f);
+    return ura_fail(c, "model load: out of memory");
+  }
+  char buf[4096];
+  size_t k;
+  long total = 0;
+  int nul = 0;
+  while (!nul && total <= MAXMODELFILE && !ura_interrupted() &&
+         (k = fread(buf, 1, sizeof buf, f)) > 0) {
+    fwrite(buf, 1, k, mem);
+    total += (long)k;
+    nul = memchr(buf, 0, k) != NULL;
+  }
+  int e = errno, rerr = ferror(f);
+  fclose(f);
+  fclose(mem);
+  if (ura_interrupted()) {
+    free(text);
+    return ura_fail(c,
+                    "model load: interrupted (Ctrl-C) while reading '%s'; the model is "
+                    "unchanged",
+                    path);
+  }
+  const char* why = nul                    ? "it contains NUL bytes"
+                    : rerr                 ? strerror(e)
+                    : total > MAXMODELFILE ? "larger than 16 MiB"
+                                           : NULL;
+  if (why) {
+    free(text);
+    return ura_fail(c,
+                    "model load: cannot use '%s': %s; accepted: a model text file "
+                    "(uasimpact-model(5))",
+                    path, why);
+  }
+  int rc = parts_merge(c, text, path, path);
+  free(text);
+  return rc;
+}
+
+/* model drop PART: the part leaves the model set (e.g. the RA3 and its airbags before another
+   drone is loaded); the overrides of parameters that no part defines any more go with it */
+static int model_drop(uraCtx* c, const char* name) {
+  int at = -1;
+  for (int i = 0; i < c->npart; i++) {
+    if (!strcmp(c->part[i].name, name)) at = i;
+  }
+  if (at < 0) return ura_fail(c, "model drop: no part '%s'; 'model parts' lists them", name);
+  uraPart np[uraMAXPARTS] = {0}; /* zeroed: -O2 with sanitizers cannot see nn bound it */
+  int nn = 0;
+  for (int i = 0; i < c->npart; i++) {
+    if (i == at) continue;
+    np[nn] = c->part[i];
+    np[nn].text = strdup(c->part[i].text);
+    if (!np[nn++].text) {
+      parts_free(np, nn);
+      return ura_fail(c, "model drop: out of memory");
+    }
+  }
+
+  /* the parameters the rest defines (compiled without overrides), then its overrides */
+  uraState ns = c->st;
+  ns.nov = 0;
+  char err[300];
+  urModel* m = compile(np, nn, &ns, err, sizeof err);
+  if (!m) {
+    parts_free(np, nn);
+    return ura_fail(c, "model drop %s: refused, the other parts do not compile alone: %s", name,
+                    err);
+  }
+  for (int i = 0; i < c->st.nov; i++) {
+    if (ur_name_param(m, c->st.ov_name[i]) < 0) continue;
+    snprintf(ns.ov_name[ns.nov], urNAMELEN, "%s", c->st.ov_name[i]);
+    ns.ov_val[ns.nov] = c->st.ov_val[i];
+    ns.ov_user[ns.nov++] = c->st.ov_user[i];
+  }
+  ur_model_free(m);
+  uraState keep = c->st;
+  c->st = ns;
+  if (parts_commit(c, np, nn, NULL)) {
+    c->st = keep;
+    return -1;
+  }
+  return 0;
+}
+
+/* the model parts of a session: the built-in parts it lacks dropped, the loaded ones loaded */
+void ura_model_write_parts(uraCtx* c, FILE* f) {
+  int nb = 0;
+  while (builtin_order[nb]) nb++;
+  for (int b = nb - 1; b >= 0; b--) { /* later parts may use earlier ones: last first */
+    int have = 0;
+    for (int i = 0; i < c->npart; i++) {
+      have |= !strcmp(c->part[i].name, builtin_order[b]) && !strcmp(c->part[i].origin, "built-in");
+    }
+    if (!have) fprintf(f, "model drop %s\n", builtin_order[b]);
+  }
+  for (int i = 0; i < c->npart; i++) {
+    if (strcmp(c->part[i].origin, "built-in")) {
+      fprintf(f, "model load ");
+      ura_put_word(f, c->part[i].origin);
+      fprintf(f, "   # part %s\n", c->part[i].name);
+    }
+  }
+}
+
+/* parameters of the model (those whose names start with prefix): name, SI value, unit, and who
+   set it */
+static int model_params(uraCtx* c, const char* prefix) {
+  const urModel* m = ura_model(c);
+  if (!m) return -1;
+  int found = 0;
+  for (int i = 0; i < m->nparam; i++) {
+    if (strncmp(m->param[i].name, prefix, strlen(prefix))) continue;
+    found++;
+    const char* who = "model";
+    for (int k = 0; k < c->st.nov; k++) {
+      if (!strcmp(c->st.ov_name[k], m->param[i].name)) who = c->st.ov_user[k] ? "set" : "case";
+    }
+    const char* u = m->param[i].unit;
+    fprintf(c->out, "%-16s %.10g%s%s  (%s)\n", m->param[i].name, m->param[i].value, *u ? " " : "",
+            u, who);
+  }
+  if (!found) {
+    return ura_fail(c,
+                    "model params: no model parameter starts with '%s'; accepted: a prefix of "
+                    "the names 'model params' lists",
+                    prefix);
+  }
+  return 0;
+}
+
+int ura_cmd_model(uraCtx* c, int argc, char** argv) {
+  if (argc == 2 && !strcmp(argv[1], "show")) {
+    write_parts(c, c->out, 1);
+    return 0;
+  }
+  if (argc <= 3 && !strcmp(argv[1], "params")) return model_params(c, argc == 3 ? argv[2] : "");
+  if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
+  if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
+  if (argc == 3 && !strcmp(argv[1], "drop")) return model_drop(c, argv[2]);
+  if (argc == 2 && !strcmp(argv[1], "parts")) {
+    for (int i = 0; i < c->npart; i++) {
+      fprintf(c->out, "%-12s %s\n", c->part[i].name, c->part[i].origin);
+    }
+    return 0;
+  }
+  return ura_fail(c,
+                  "model: usage: model show|params [PREFIX]|parts|save FILE|load FILE|drop "
+                  "PART");
+}
+
+void ura_trace_free(uraCtx* c) {
+  for (int k = uraTRACE_NDERIVED; k < c->trace.nsig; k++) free(c->trace.names[k]);
+  free(c->trace.t);
+  free(c->trace.v);
+  free(c->trace.names);
+  free(c->trace.units);
+  memset(&c->trace, 0, sizeof c->trace);
+}
+
+int ura_trace_find(const uraTrace* tr, const char* name) {
+  for (int k = 0; tr && tr->names && k < tr->nsig; k++) {
+    if (tr->names[k] && !strcmp(tr->names[k], name)) return k;
+  }
+  return -1;
+}

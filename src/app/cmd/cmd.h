@@ -1,0 +1,186 @@
+/* cmd.h: the command layer of the application (src/app/cmd): the one command table (cmd.c, like
+ * gnuplot's: dispatch, help and completion all read it), the running of command lines and
+ * scripts (script.c), and the handlers, one file per group: grid, impact and its histories and
+ * contacts, sweeps, the paper's tables, PoF curves, risk, SORA and Monte Carlo, designs, save
+ * session and export. Includes the case layer (case.h); the interfaces, scale-out and main
+ * include this header. The table also names handlers that live in the ui layer (view, plot)
+ * and the grid's text ('grid show'): the one circle the layers allow, between the command
+ * table and its handlers (src/README).
+ */
+#ifndef UASIMPACT_CMD_H
+#define UASIMPACT_CMD_H
+
+#include "../case/case.h"
+
+/* ---- commands ---- */
+
+typedef int (*uraCmdFn)(uraCtx* c, int argc, char** argv);
+
+typedef enum {
+  uraC_NONE = 0,
+  uraC_PARAM,
+  uraC_CASE,
+  uraC_COMMAND,
+  uraC_FILE,
+  uraC_POF
+} uraCompl;
+
+typedef struct {
+  const char* name;
+  uraCmdFn fn;
+  int minargs, maxargs; /* argument count range (maxargs -1: any) */
+  uraCompl compl ;      /* what the first argument completes to */
+  const char* usage;
+  const char* help;
+} uraCmd;
+
+extern const uraCmd ura_cmds[];
+const uraCmd* ura_cmd_find(const char* name);
+
+/* run one command line (may hold several commands separated by ';'); 0 or -1 */
+int ura_run_line(uraCtx* c, const char* line);
+/* prefix the failure message with NAME:LINE: (LINE 0: NAME: only), once */
+void ura_locate(uraCtx* c, const char* name, int lineno);
+/* run a script file; errors are reported as FILE:LINE: message; 0 or -1 */
+int ura_run_file(uraCtx* c, const char* path);
+/* run a script from an open stream, naming it name in messages */
+int ura_run_stream(uraCtx* c, FILE* f, const char* name);
+
+/* command handlers, one file per group */
+int ura_cmd_help(uraCtx* c, int argc, char** argv);
+int ura_cmd_set(uraCtx* c, int argc, char** argv);
+int ura_cmd_show(uraCtx* c, int argc, char** argv);
+int ura_cmd_reset(uraCtx* c, int argc, char** argv);
+int ura_cmd_case(uraCtx* c, int argc, char** argv);
+int ura_cmd_source(uraCtx* c, int argc, char** argv);
+int ura_cmd_quit(uraCtx* c, int argc, char** argv);
+int ura_cmd_descent(uraCtx* c, int argc, char** argv);
+int ura_cmd_parametric(uraCtx* c, int argc, char** argv);
+int ura_cmd_pof(uraCtx* c, int argc, char** argv);
+extern const char* const ura_pof_names[];
+
+/* the grid (cmd_grid.c): the command, run one (quiet: no output), its extents */
+int ura_cmd_grid(uraCtx* c, int argc, char** argv);
+int ura_grid_run(uraCtx* c, int quiet);
+int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_max);
+
+/* handlers the table names that live in the ui layer: the viewer (view.c), plots (plot.c), and
+   the last grid as text in the paper's layout for 'grid show' (gridshow.c) */
+int ura_cmd_view(uraCtx* c, int argc, char** argv);
+int ura_cmd_plot(uraCtx* c, int argc, char** argv);
+int ura_grid_show(uraCtx* c);
+
+int ura_cmd_save(uraCtx* c, int argc, char** argv);
+/* the commands of save session (session.c) */
+void ura_session_write(uraCtx* c, FILE* f);
+
+int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
+int ura_cmd_design(uraCtx* c, int argc, char** argv); /* designs.c */
+/* the saved designs as commands, for save session (designs.c) */
+void ura_designs_write(uraCtx* c, FILE* f, void (*write_state)(uraCtx*, FILE*));
+/* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
+   (cmd_sweep.c) */
+void ura_sweep_changes(uraCtx* c, char* buf, size_t n);
+/* sweeps over any numeric parameter (sweep_param.c): sweep NAME LIST [UNIT]; their rows for
+   sweep show (t: its table, columns case,sweep,wind,face,speed,angle,step,q,changes,value,
+   unit); forget them (plot sweep NAME: ui.h) */
+/* one kept sweep over a parameter (c->psweep): Q per value (plot sweep NAME draws them) */
+typedef struct uraPSweep {
+  char casename[8];
+  char param[urNAMELEN];
+  char unit[16]; /* the unit of the values as given ("" : the setting's own) */
+  double wind, face, step;
+  char changes[200];
+  int n;
+  double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
+} uraPSweep;
+int ura_sweep_param(uraCtx* c, int argc, char** argv);
+void ura_sweep_param_rows(uraCtx* c, uraTable* t);
+void ura_sweep_param_clear(uraCtx* c);
+int ura_cmd_export(uraCtx* c, int argc, char** argv);
+int ura_cmd_compare(uraCtx* c, int argc, char** argv);
+/* why compare's p_centre is 0, as a note of t (explain.c): the impact r at (0, 0) missed or no
+   criterion counts; where the grid g's P is largest (nothing when r->p > 0) */
+void ura_explain_centre(uraTable* t, const urImpactResult* r, const urGrid* g);
+int ura_cmd_impact(uraCtx* c, int argc, char** argv);
+int ura_cmd_history(uraCtx* c, int argc, char** argv); /* cmd_history.c */
+/* every sensor channel's samples of the last impact from from to to (s from tau) */
+int ura_history_samples(uraCtx* c, double from, double to);
+int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
+int ura_impact_cond(uraCtx* c, urImpactCond* cond); /* refuses angles below uraANGLE_DELTA */
+#define uraANGLE_DELTA 1.0 /* deg: the least descent angle of an offset Delta (grids) */
+/* impact aim head UP SIDE (cmd_aim.c): one impact whose line of travel passes the head's centre
+   at an eccentricity, at any angle 0-90 deg */
+int ura_impact_aim(uraCtx* c, int argc, char** argv);
+/* the table of impact rows (columns dpar,dperp,contact,hic15,...,p) and one row of it */
+uraTable* ura_impact_table(const urInjuryParams* ip);
+void ura_impact_cells(uraTable* t, const urInjuryParams* ip, double dpar, double dperp,
+                      const urImpactResult* r);
+/* the impact row at a terminal (impact_compact.c): whether to print it, its table (columns
+   dpar,dperp,hic15,nij,vc_th,vc_ab,p_hic,p_nij,p_vc,p) and its row with a note */
+int ura_impact_compact(const uraCtx* c);
+uraTable* ura_impact_compact_table(void);
+void ura_impact_compact_row(uraTable* t, double dpar, double dperp, const urImpactResult* r);
+/* notes for a table computed under cond: where speed and angle came from when it was the paper's
+   Table 2 (paper), and the moment tau when it is not the paper's text (shift: the tau shift, m) */
+void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,
+                    double shift);
+int ura_last_trace(uraCtx* c, uraTrace* tr); /* histories of the last impact; -1: none */
+/* keep a finished impact (its work space holds the histories) as the last impact, with the case
+   and wind it ran for */
+void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
+                     double dpar, double dperp, const urImpactResult* r);
+int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr);
+/* run one impact in a work space of its own, which becomes c->work only when it finishes: a
+   failed or interrupted impact leaves the last one (histories, contacts) as it was; 0, or -1
+   with r->status and r->reason */
+int ura_impact_fresh(uraCtx* c, const urImpactSetup* s, const urImpactCond* cond, double dpar,
+                     double dperp, urImpactResult* r);
+
+/* "did you mean" over the command table (cmd.c) */
+void ura_suggest_commands(uraSuggest* s);
+
+/* ---- risk, SORA and Monte Carlo (cmd_risk.c, cmd_montecarlo.c) ---- */
+
+int ura_cmd_risk(uraCtx* c, int argc, char** argv);
+int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv);
+int ura_cmd_sora(uraCtx* c, int argc, char** argv);
+void ura_mc_free(uraCtx* c);
+
+/* the deployable devices of the live model: a parachute (area_chute > 0) and the airbags it
+   carries (bag_bottom, bag_front set to 1), with the reliabilities of st; dep->nbag bags, named
+   by ura_risk_bag(k) */
+int ura_risk_devices(uraCtx* c, const uraState* st, urDeploy* dep, int* bag);
+/* the name of the k-th carried bag (bag[k] indexes "bag_bottom", "bag_front") */
+const char* ura_risk_bag(int which);
+/* a branch's name: "none", "chute", "chute+bag_bottom", ... */
+void ura_risk_branch_name(int mask, const urDeploy* dep, const int* bag, char* buf, size_t n);
+/* the state of a branch: base with the parachute (area_chute 0 and case C's Table 2 column
+   without it) and each carried airbag as the mask says */
+void ura_risk_branch_state(const uraState* base, int mask, const urDeploy* dep, const int* bag,
+                           uraState* ns);
+/* a model parameter value in a state's overrides (set by the user when user) */
+void ura_risk_override(uraState* ns, const char* name, double v, int user);
+/* Q of the grid of state ns (it becomes the live state; the caller restores its own) */
+int ura_risk_grid(uraCtx* c, const uraState* ns, const char* who, int quiet, double* q);
+/* the Annex F critical area of state ns (mass, width, its impact speed and angle), m^2 */
+int ura_risk_annexf(uraCtx* c, const uraState* ns, double* ca, double* speed, double* angle);
+/* a critical area (m^2) with its 95 % interval, and the reduction factor of the unmitigated
+   drone's against it with its interval */
+typedef struct {
+  double ca, lo, hi, red, red_lo, red_hi;
+} uraSoraFig;
+/* the figures of the last montecarlo (cmd_montecarlo.c): [0] Q unmitigated, [1] its Annex F
+   area, [2] Q of the live case (its drawn deployment), [3] its Annex F area; *mitigated: the
+   drone carries a parachute; note: what they come from. 0, or -1 when there is none or the
+   settings changed since */
+int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t n);
+/* the last montecarlo for the plots: its samples' Q and statistics (-1: none); the shares of its
+   independent inputs (names, values; their count, at most uraMAXDIST + 1 + urMAXBAGS) */
+int ura_mc_data(uraCtx* c, const double** q, int* n, const urMcStats** st, const char** casename,
+                double* seed);
+int ura_mc_shares(uraCtx* c, const char** name, double* share);
+/* the iGRC columns of a critical area: raw1, igrc, igrc_table (0, or -1 without a class) */
+int ura_risk_igrc(const uraState* st, double ca, double* raw1, int* igrc, int* table);
+
+#endif

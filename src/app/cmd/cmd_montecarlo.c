@@ -1,0 +1,670 @@
+/* cmd_montecarlo.c: montecarlo N: the declared inputs (dist) and the deployment outcomes drawn
+ * per sample from a counter-based generator keyed by (seed, sample), Q of each sample from a
+ * response surface of real grids (or from a grid per sample), the mean with its 95 % interval,
+ * the first-order variance shares, and the paired unmitigated Q and Annex F areas that sora mc
+ * reads. Sample i depends only on (seed, i): its inputs come from ur_mc_inputs, its Q from grids
+ * whose cells do not depend on the number of threads, and the statistics are taken in sample
+ * order, so a run is the same for any thread count (and its samples can be computed apart and
+ * merged in sample order). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cmd.h"
+
+
+#define MAXIN      (uraMAXDIST + 1 + urMAXBAGS)
+#define MAXGRIDS   10000 /* grids of a response surface, at most */
+#define MAXSAMPLES 1000000
+
+struct uraMc {
+  int n, nin, ndecl; /* samples; input columns; declared inputs (the first ones) */
+  int face_col;      /* the column of face = face_dir - wind_dir, or -1 */
+  int chute_col;     /* the first deployment column (chute, then bags), or -1 */
+  char name[MAXIN][urNAMELEN];
+  double* x;           /* n x nin inputs, sample-major */
+  int* mask;           /* each sample's branch */
+  double *q, *q_c;     /* Q of the sample's branch, and without any device, m^2 */
+  double *ca, *ca_c;   /* their Annex F critical areas, m^2 */
+  double share[MAXIN]; /* first-order variance shares (NAN: a derived column) */
+  urMcStats st;
+  urDeploy dep;
+  int bag[urMAXBAGS];
+  char casename[8];
+  double seed;
+  char note[4][1000]; /* inputs, method, surface check, timing */
+  char* settings;     /* the session text it ran under (sora mc checks it) */
+};
+
+void ura_mc_free(uraCtx* c) {
+  struct uraMc* m = c->mc;
+  if (!m) return;
+  free(m->x);
+  free(m->mask);
+  free(m->q);
+  free(m->settings);
+  free(m);
+  c->mc = NULL;
+}
+
+/* the session text without the settings that change no sample */
+static char* settings_text(uraCtx* c) {
+  static const char* const skip[] = {
+      "set format ", "set terminal ",    "set output ", "set threads ",
+      "set recall ", "set pop_density ", "set tlos ",   "set igrc_compensation ",
+      NULL};
+  char* s = NULL;
+  size_t n = 0;
+  FILE* f = open_memstream(&s, &n);
+  if (!f) return NULL;
+  ura_session_write(c, f);
+  fclose(f);
+  char* w = s;
+  for (char* line = s; *line;) {
+    char* end = strchr(line, '\n');
+    size_t len = end ? (size_t)(end - line + 1) : strlen(line);
+    int drop = 0;
+    for (int i = 0; skip[i]; i++) drop |= !strncmp(line, skip[i], strlen(skip[i]));
+    if (!drop) memmove(w, line, len), w += len;
+    line += len;
+  }
+  *w = 0;
+  return s;
+}
+
+/* a drawn value into a state: a number parameter of the case, an injury setting or a model
+   parameter (the bearings wind_dir and face_dir act through face only) */
+static void apply_input(uraState* ns, const char* name, double v) {
+  if (!strcmp(name, "wind_dir") || !strcmp(name, "face_dir")) return;
+  const uraParam* p = ura_param_find(name);
+  if (p) {
+    *(double*)((char*)ns + p->off) = v;
+    if (p->setoff) *(int*)((char*)ns + p->setoff) = 1;
+    return;
+  }
+  if (ura_injury_find(name) >= 0) {
+    ur_injury_param_set(&ns->injury, name, v);
+    return;
+  }
+  ura_risk_override(ns, name, v, 1);
+}
+
+/* the state of sample i: the live one with every drawn input (and face from the bearings) */
+static void sample_state(const struct uraMc* m, const uraState* base, int i, uraState* ns) {
+  *ns = *base;
+  const double* x = m->x + (size_t)i * m->nin;
+  for (int k = 0; k < m->ndecl; k++) apply_input(ns, m->name[k], x[k]);
+  if (m->face_col >= 0) ns->face = x[m->face_col];
+}
+
+/* does an input act on the grids (the reliabilities and the bearings do not: face does) */
+static int grid_input(const char* name) {
+  return strcmp(name, "p_chute") && strcmp(name, "p_bag") && strcmp(name, "h_chute_min") &&
+         strcmp(name, "wind_dir") && strcmp(name, "face_dir");
+}
+
+static double elapsed(const struct timespec* t0) {
+  struct timespec t1;
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  return (t1.tv_sec - t0->tv_sec) + 1e-9 * (t1.tv_nsec - t0->tv_nsec);
+}
+
+static int cmp_double(const void* a, const void* b) {
+  double x = *(const double*)a, y = *(const double*)b;
+  return x < y ? -1 : x > y;
+}
+
+/* ---- the response surface ---- */
+
+typedef struct {
+  int col; /* the input column of its coordinate */
+  int n;   /* nodes */
+  double node[uraMAXLIST + 1];
+  int discrete; /* the nodes are the drawn values themselves */
+} axis;
+
+typedef struct {
+  int nax;
+  axis ax[MAXIN];
+  long total;                    /* lattice points */
+  int nmask, masks[urMAXBRANCH]; /* branches needed (the drawn ones and none) */
+  double* value;                 /* nmask x total Q values */
+} surface;
+
+/* the axes: one per drawn input of the grids, nodes spanning what was drawn */
+static void surface_axes(const struct uraMc* m, const uraState* st, surface* s) {
+  s->nax = 0;
+  s->total = 1;
+  for (int k = 0; k < m->nin; k++) {
+    int decl = k < m->ndecl;
+    if ((decl && !grid_input(m->name[k])) || (!decl && k != m->face_col)) continue;
+    axis* a = &s->ax[s->nax++];
+    a->col = k;
+    a->discrete = decl && st->risk.dist[k].d.kind == urDIST_DISCRETE;
+    double lo = INFINITY, hi = -INFINITY;
+    a->n = 0;
+    for (int i = 0; i < m->n; i++) {
+      double v = m->x[(size_t)i * m->nin + k];
+      lo = fmin(lo, v);
+      hi = fmax(hi, v);
+      if (a->discrete) {
+        int seen = 0;
+        for (int j = 0; j < a->n; j++) seen |= a->node[j] == v;
+        if (!seen) a->node[a->n++] = v;
+      }
+    }
+    if (a->discrete) {
+      qsort(a->node, (size_t)a->n, sizeof(double), cmp_double);
+    } else {
+      int n = lo == hi ? 1 : (int)st->risk.surface_nodes;
+      for (int j = 0; j < n; j++) a->node[j] = n == 1 ? lo : lo + (hi - lo) * j / (n - 1);
+      a->node[n - 1] = hi;
+      a->n = n;
+    }
+    s->total *= a->n;
+  }
+}
+
+/* the lattice point idx of a surface as a state of branch mask */
+static void node_state(const struct uraMc* m, const surface* s, const uraState* base, long idx,
+                       int mask, uraState* tmp, uraState* ns) {
+  *tmp = *base;
+  for (int d = s->nax - 1; d >= 0; d--) {
+    const axis* a = &s->ax[d];
+    apply_input(tmp, m->name[a->col], a->node[idx % a->n]);
+    idx /= a->n;
+  }
+  ura_risk_branch_state(tmp, mask, &m->dep, m->bag, ns);
+}
+
+static double surface_at(const struct uraMc* m, const surface* s, int mask, int i) {
+  int nn[MAXIN];
+  const double* node[MAXIN];
+  double x[MAXIN];
+  int k = 0;
+  while (s->masks[k] != mask) k++;
+  for (int d = 0; d < s->nax; d++) {
+    nn[d] = s->ax[d].n;
+    node[d] = s->ax[d].node;
+    x[d] = m->x[(size_t)i * m->nin + s->ax[d].col];
+  }
+  return ur_lattice_interp(s->nax, nn, node, s->value + (size_t)k * s->total, x);
+}
+
+static void progress(int tty, const char* what, long k, long n) {
+  char w[80];
+  snprintf(w, sizeof w, "montecarlo: %s", what);
+  if (tty) ura_progress_line(w, k, n, "");
+}
+
+/* Q of every sample from the surface; a few samples again by their own grids */
+static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp, uraState* ns,
+                      int tty) {
+  surface s;
+  memset(&s, 0, sizeof s);
+  surface_axes(m, base, &s);
+  s.masks[s.nmask++] = 0;
+  for (int i = 0; i < m->n; i++) {
+    int seen = 0;
+    for (int k = 0; k < s.nmask; k++) seen |= s.masks[k] == m->mask[i];
+    if (!seen) s.masks[s.nmask++] = m->mask[i];
+  }
+  long ngrid = s.total * s.nmask;
+  if (ngrid > MAXGRIDS) {
+    return ura_fail(c,
+                    "montecarlo: the response surface needs %ld grids; accepted: at most %d "
+                    "(lower surface_nodes, or 'set mc_method exact')",
+                    ngrid, MAXGRIDS);
+  }
+  s.value = malloc((size_t)ngrid * sizeof *s.value);
+  if (!s.value) return ura_fail(c, "montecarlo: out of memory");
+  int rc = 0, recalled = 0;
+  for (long g = 0; g < ngrid && rc == 0; g++) {
+    progress(tty, "surface grid", g + 1, ngrid);
+    node_state(m, &s, base, g % s.total, s.masks[g / s.total], tmp, ns);
+    rc = ura_risk_grid(c, ns, "montecarlo", 1, &s.value[g]);
+    recalled += rc == 0 && c->last.recalled;
+  }
+
+  /* the method, in words */
+  char axes[400] = "";
+  size_t k = 0;
+  for (int d = 0; d < s.nax && k < sizeof axes; d++) {
+    const axis* a = &s.ax[d];
+    k += (size_t)snprintf(axes + k, sizeof axes - k, "%s%s %d %s %g..%g", d ? ", " : "",
+                          m->name[a->col], a->n, a->discrete ? "values" : "nodes", a->node[0],
+                          a->node[a->n - 1]);
+  }
+  int exact = 1;
+  for (int d = 0; d < s.nax; d++) exact &= s.ax[d].discrete || s.ax[d].n == 1;
+  snprintf(m->note[1], sizeof m->note[1],
+           "method: response surface: Q on a lattice of real "
+           "grids (step %g m), %ld point%s x %d deployment branch%s = %ld grids%s%s%s; %s; %s",
+           base->step, s.total, s.total == 1 ? "" : "s", s.nmask, s.nmask == 1 ? "" : "es", ngrid,
+           recalled ? " (" : "", recalled ? "some recalled" : "", recalled ? ")" : "",
+           s.nax ? axes : "no drawn input acts on the grids",
+           exact ? "every sample is on a lattice point: exact"
+                 : "multilinear interpolation between the nodes");
+
+  /* each sample's Q; the check against its own grids */
+  for (int i = 0; i < m->n && rc == 0; i++) {
+    m->q[i] = surface_at(m, &s, m->mask[i], i);
+    m->q_c[i] = surface_at(m, &s, 0, i);
+  }
+  int nchk = exact ? 0 : (int)fmin(base->risk.surface_check, m->n);
+  double emax = 0, rmax = 0, esum = 0;
+  for (int i = 0; i < nchk && rc == 0; i++) {
+    double q;
+    progress(tty, "surface check", i + 1, nchk);
+    sample_state(m, base, i, tmp);
+    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
+    rc = ura_risk_grid(c, ns, "montecarlo", 1, &q);
+    if (rc) break;
+    double e = fabs(m->q[i] - q);
+    emax = fmax(emax, e);
+    esum += e;
+    if (q > 0) rmax = fmax(rmax, e / q);
+  }
+  if (exact) {
+    snprintf(m->note[2], sizeof m->note[2], "surface check: not needed (exact)");
+  } else if (nchk) {
+    snprintf(m->note[2], sizeof m->note[2],
+             "surface check: samples 0..%d computed by their own "
+             "grids: |Q_surface - Q_grid| at most %.3g m^2 (%.2g %%), mean %.3g m^2 "
+             "(surface_check)",
+             nchk - 1, emax, 100 * rmax, esum / nchk);
+  } else {
+    snprintf(m->note[2], sizeof m->note[2],
+             "surface check: none (surface_check 0): the "
+             "interpolation error is not measured");
+  }
+  free(s.value);
+  return rc;
+}
+
+/* Q of every sample from its own grids */
+static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp, uraState* ns,
+                    int tty) {
+  int rc = 0, ngrid = 0, recalled = 0;
+  for (int i = 0; i < m->n && rc == 0; i++) {
+    progress(tty, "sample", i + 1, m->n);
+    sample_state(m, base, i, tmp);
+    for (int b = 0; b < 2 && rc == 0; b++) {
+      int mask = b ? 0 : m->mask[i];
+      if (b && m->mask[i] == 0) {
+        m->q_c[i] = m->q[i];
+        break;
+      }
+      ura_risk_branch_state(tmp, mask, &m->dep, m->bag, ns);
+      rc = ura_risk_grid(c, ns, "montecarlo", 1, b ? &m->q_c[i] : &m->q[i]);
+      ngrid++;
+      recalled += rc == 0 && c->last.recalled;
+    }
+  }
+  snprintf(m->note[1], sizeof m->note[1],
+           "method: exact: every sample's own grids (step %g m), "
+           "%d grids (%d recalled: samples with identical conditions)",
+           base->step, ngrid, recalled);
+  snprintf(m->note[2], sizeof m->note[2], "surface check: not needed (exact)");
+  return rc;
+}
+
+/* ---- the command ---- */
+
+static int mc_shares(uraCtx* c);
+static int mc_samples(uraCtx* c);
+static void mc_summary(uraCtx* c);
+
+/* the input columns and the draws of every sample */
+static int draw(uraCtx* c, struct uraMc* m, const uraState* base, uraState* ns) {
+  const uraRiskSet* r = &base->risk;
+  const char* names[uraMAXDIST];
+  urDist dist[uraMAXDIST];
+  int bearings = 0;
+  m->ndecl = r->ndist;
+  for (int k = 0; k < r->ndist; k++) {
+    double lo, hi;
+    if (ura_dist_range(c, r->dist[k].name, &lo, &hi)) return -1;
+    snprintf(m->name[k], urNAMELEN, "%s", r->dist[k].name);
+    names[k] = m->name[k];
+    dist[k] = r->dist[k].d;
+    bearings |=
+        !grid_input(names[k]) && strncmp(names[k], "p_", 2) && strcmp(names[k], "h_chute_min");
+  }
+  m->nin = m->ndecl;
+  m->face_col = bearings ? m->nin++ : -1;
+  if (bearings) snprintf(m->name[m->face_col], urNAMELEN, "face");
+  m->chute_col = m->dep.chute ? m->nin : -1;
+  if (m->dep.chute) {
+    snprintf(m->name[m->nin++], urNAMELEN, "chute");
+    for (int j = 0; j < m->dep.nbag; j++) {
+      snprintf(m->name[m->nin++], urNAMELEN, "%s", ura_risk_bag(m->bag[j]));
+    }
+  }
+  size_t n = (size_t)m->n;
+  m->x = malloc(n * m->nin * sizeof *m->x);
+  m->mask = malloc(n * sizeof *m->mask);
+  m->q = malloc(4 * n * sizeof *m->q);
+  if (!m->x || !m->mask || !m->q)
+    return ura_fail(c, "montecarlo: out of memory for %d samples", m->n);
+  m->q_c = m->q + n;
+  m->ca = m->q + 2 * n;
+  m->ca_c = m->q + 3 * n;
+
+  uint64_t seed = (uint64_t)r->seed;
+  for (int i = 0; i < m->n; i++) {
+    double *x = m->x + (size_t)i * m->nin, u[1 + urMAXBAGS];
+    ur_mc_inputs(seed, (uint64_t)i, m->ndecl, names, dist, x, u);
+    if (bearings) {
+      /* the course runs downwind; face is the person's bearing from the one the wind comes
+         from, wrapped to [-180, 180) */
+      int wd = ura_dist_find(r, "wind_dir"), fd = ura_dist_find(r, "face_dir");
+      double phi = (fd >= 0 ? x[fd] : 0) - (wd >= 0 ? x[wd] : 0);
+      x[m->face_col] = phi - 360 * floor((phi + 180) / 360);
+    }
+    sample_state(m, base, i, ns);
+    urDeploy d = m->dep;
+    d.p_chute = ns->risk.p_chute;
+    d.p_bag = ns->risk.p_bag;
+    d.altitude = ns->descent.altitude;
+    d.h_chute_min = ns->risk.h_chute_min;
+    m->mask[i] = ur_deploy_outcome(&d, u[0], u + 1);
+    /* the outcomes as drawn: each airbag's whether the parachute deployed or not (so that the
+       columns are independent inputs; the branch credits no airbag without the parachute) */
+    if (m->chute_col >= 0) {
+      x[m->chute_col] = m->mask[i] & 1;
+      for (int j = 0; j < m->dep.nbag; j++) x[m->chute_col + 1 + j] = u[1 + j] < d.p_bag;
+    }
+  }
+  return 0;
+}
+
+int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv) {
+  if (!strcmp(argv[1], "shares")) return mc_shares(c);
+  if (!strcmp(argv[1], "samples")) return mc_samples(c);
+  double nd;
+  if (ura_parse_number(argv[1], &nd) || nd != floor(nd) || nd < 2 || nd > MAXSAMPLES) {
+    return ura_fail(c,
+                    "montecarlo: '%s' is not accepted; accepted: a whole number of samples "
+                    "in [2, %d], shares or samples",
+                    argv[1], MAXSAMPLES);
+  }
+  if (ura_dry(c, "simulation")) return -1;
+  struct timespec t0;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
+
+  struct uraMc* m = calloc(1, sizeof *m);
+  uraState* st = malloc(3 * sizeof *st); /* the live state, and two to work in */
+  if (!m || !st) {
+    free(m);
+    free(st);
+    return ura_fail(c, "montecarlo: out of memory");
+  }
+  uraState *tmp = st + 1, *ns = st + 2;
+  *st = c->st;
+  m->n = (int)nd;
+  m->seed = st->risk.seed;
+  snprintf(m->casename, sizeof m->casename, "%s", st->casename);
+  int rc = ura_risk_devices(c, st, &m->dep, m->bag);
+  if (rc == 0) rc = draw(c, m, st, ns);
+
+  /* Q of each sample, then the Annex F areas at each sample's impact conditions */
+  int tty = isatty(STDERR_FILENO);
+  ura_progress_start();
+  if (rc == 0) {
+    rc = st->risk.mc_method == uraMC_EXACT ? by_grids(c, m, st, tmp, ns, tty)
+                                           : by_surface(c, m, st, tmp, ns, tty);
+  }
+  for (int i = 0; i < m->n && rc == 0; i++) {
+    double sp, an;
+    sample_state(m, st, i, tmp);
+    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
+    rc = ura_risk_annexf(c, ns, &m->ca[i], &sp, &an);
+    if (rc == 0 && m->mask[i] == 0)
+      m->ca_c[i] = m->ca[i];
+    else if (rc == 0) {
+      ura_risk_branch_state(tmp, 0, &m->dep, m->bag, ns);
+      rc = ura_risk_annexf(c, ns, &m->ca_c[i], &sp, &an);
+    }
+  }
+  if (tty) fputs("\r\033[K", stderr);
+
+  /* the live state back (the last grid stays the last one computed) */
+  char err[uraERRLEN];
+  snprintf(err, sizeof err, "%s", c->err);
+  if (ura_model_state(c, st, "montecarlo") && rc == 0)
+    rc = -1;
+  else
+    snprintf(c->err, sizeof c->err, "%s", err);
+  if (rc && strncmp(c->err, "montecarlo", 10)) {
+    snprintf(err, sizeof err, "%s", c->err);
+    ura_fail(c, "montecarlo: %.900s", err);
+  }
+
+  /* statistics in sample order, the variance shares, what it ran under */
+  double* work = rc == 0 ? malloc((size_t)m->n * sizeof *work) : NULL;
+  if (rc == 0 && !work) rc = ura_fail(c, "montecarlo: out of memory");
+  if (rc == 0) {
+    ur_mc_stats(m->q, m->n, work, &m->st);
+    double* col = work;
+    for (int k = 0; k < m->nin; k++) {
+      for (int i = 0; i < m->n; i++) col[i] = m->x[(size_t)i * m->nin + k];
+      m->share[k] = k == m->face_col ? NAN : ur_mc_first_order(col, m->q, m->n);
+    }
+    m->settings = settings_text(c);
+    if (!m->settings) rc = ura_fail(c, "montecarlo: out of memory");
+  }
+  free(work);
+  free(st);
+  if (rc) {
+    free(m->settings);
+    m->settings = NULL;
+    struct uraMc* keep = c->mc;
+    c->mc = m;
+    ura_mc_free(c);
+    c->mc = keep;
+    return -1;
+  }
+  snprintf(m->note[3], sizeof m->note[3], "time: %.1f s", elapsed(&t0));
+  ura_mc_free(c);
+  c->mc = m;
+  mc_summary(c);
+  return 0;
+}
+
+/* the inputs in words */
+static void inputs_note(uraCtx* c, struct uraMc* m, char* buf, size_t n) {
+  char d[400];
+  size_t k = (size_t)snprintf(buf, n, "inputs: ");
+  for (int i = 0; i < c->st.risk.ndist && k < n; i++) {
+    ura_dist_format(&c->st.risk.dist[i], d, sizeof d);
+    k += (size_t)snprintf(buf + k, n - k, "%s%s ~ %s", i ? ", " : "", c->st.risk.dist[i].name, d);
+  }
+  if (!c->st.risk.ndist && k < n) k += (size_t)snprintf(buf + k, n - k, "none declared");
+  if (m->face_col >= 0 && k < n) {
+    k += (size_t)snprintf(buf + k, n - k,
+                          "; face = face_dir - wind_dir (the course runs "
+                          "downwind)");
+  }
+  if (k < n) {
+    if (m->dep.chute) {
+      snprintf(buf + k, n - k,
+               "; deployment drawn per sample: p_chute %g, p_bag %g (%d "
+               "airbag%s), h_chute_min %g m",
+               c->st.risk.p_chute, c->st.risk.p_bag, m->dep.nbag, m->dep.nbag == 1 ? "" : "s",
+               c->st.risk.h_chute_min);
+    } else {
+      snprintf(buf + k, n - k, "; no parachute: nothing deploys");
+    }
+  }
+}
+
+static double mean_of(const double* y, int n) {
+  double m = 0;
+  for (int i = 0; i < n; i++) m += (y[i] - m) / (i + 1);
+  return m;
+}
+
+static void mc_summary(uraCtx* c) {
+  static const char* const cols[] = {"n", "mean", "sd", "lo95", "hi95"};
+  struct uraMc* m = c->mc;
+  char buf[1000];
+  uraTable* t = ura_table_new(5, cols);
+  ura_table_note(t,
+                 "Q of case %s over %d samples (seed %.0f; sample i depends on (seed, i) "
+                 "only): mean and sd of the samples, lo95..hi95 the 95 %% confidence interval of "
+                 "the mean (Student's t)",
+                 m->casename, m->n, m->seed);
+  inputs_note(c, m, buf, sizeof buf);
+  snprintf(m->note[0], sizeof m->note[0], "%s", buf);
+  for (int i = 0; i < 3; i++) ura_table_note(t, "%s", m->note[i]);
+  ura_table_note(t,
+                 "the samples' spread: 2.5 %% and 97.5 %% quantiles %.6g and %.6g m^2, min "
+                 "%.6g, max %.6g",
+                 m->st.p025, m->st.p975, m->st.min, m->st.max);
+  size_t k = (size_t)snprintf(buf, sizeof buf,
+                              "variance shares (first-order, 'montecarlo "
+                              "shares'): ");
+  for (int i = 0; i < m->nin && k < sizeof buf; i++) {
+    if (i == m->face_col) continue;
+    k += (size_t)snprintf(buf + k, sizeof buf - k, "%s%s %.3g", i ? ", " : "", m->name[i],
+                          m->share[i]);
+  }
+  if (!m->nin && k < sizeof buf) snprintf(buf + k, sizeof buf - k, "no input drawn");
+  ura_table_note(t, "%s", buf);
+  if (m->dep.chute) {
+    double r, lo, hi;
+    if (ur_mc_ratio(m->q_c, m->q, m->n, &r, &lo, &hi) == 0) {
+      ura_table_note(t,
+                     "unmitigated (no parachute, no airbag) at the same samples: mean Q %.6g "
+                     "m^2, reduction factor %.4g (95 %% interval %.4g..%.4g; 'sora mc')",
+                     mean_of(m->q_c, m->n), r, lo, hi);
+    }
+  }
+  ura_table_note(t, "%s", m->note[3]);
+  ura_table_cell(t, "%d", m->n);
+  ura_table_cell(t, "%.6g", m->st.mean);
+  ura_table_cell(t, "%.6g", m->st.sd);
+  ura_table_cell(t, "%.6g", m->st.lo95);
+  ura_table_cell(t, "%.6g", m->st.hi95);
+  ura_table_print(c, t);
+}
+
+static int mc_shares(uraCtx* c) {
+  static const char* const cols[] = {"input", "share"};
+  struct uraMc* m = c->mc;
+  if (!m) return ura_fail(c, "montecarlo shares: no montecarlo yet; run 'montecarlo N'");
+  uraTable* t = ura_table_new(2, cols);
+  ura_table_note(t,
+                 "first-order variance shares of Q over the %d samples of the last "
+                 "montecarlo: S = Var(E[Q | input]) / Var(Q), by the means of Q over about "
+                 "sqrt(N) bins of the input (bias-corrected); nan when Q does not vary",
+                 m->n);
+  for (int k = 0; k < m->nin; k++) {
+    if (k == m->face_col) continue;
+    ura_table_cell(t, "%s", m->name[k]);
+    ura_table_cell(t, "%.4f", m->share[k]);
+  }
+  ura_table_print(c, t);
+  return 0;
+}
+
+static int mc_samples(uraCtx* c) {
+  struct uraMc* m = c->mc;
+  if (!m) return ura_fail(c, "montecarlo samples: no montecarlo yet; run 'montecarlo N'");
+  const char* cols[MAXIN + 6];
+  int nc = 0;
+  cols[nc++] = "sample";
+  for (int k = 0; k < m->nin; k++) cols[nc++] = m->name[k];
+  cols[nc++] = "branch";
+  cols[nc++] = "q";
+  cols[nc++] = "q_unmitigated";
+  cols[nc++] = "ca_annexf";
+  cols[nc++] = "ca_annexf_unmitigated";
+  uraTable* t = ura_table_new(nc, cols);
+  ura_table_note(t,
+                 "the %d samples of the last montecarlo of case %s (seed %.0f): drawn inputs, "
+                 "deployment outcomes (1 deployed), the branch, Q (m^2), Q without any device, "
+                 "and both Annex F critical areas (m^2)",
+                 m->n, m->casename, m->seed);
+  char name[64];
+  for (int i = 0; i < m->n; i++) {
+    ura_table_cell(t, "%d", i);
+    for (int k = 0; k < m->nin; k++) ura_table_cell(t, "%.9g", m->x[(size_t)i * m->nin + k]);
+    ura_risk_branch_name(m->mask[i], &m->dep, m->bag, name, sizeof name);
+    ura_table_cell(t, "%s", name);
+    ura_table_cell(t, "%.9g", m->q[i]);
+    ura_table_cell(t, "%.9g", m->q_c[i]);
+    ura_table_cell(t, "%.9g", m->ca[i]);
+    ura_table_cell(t, "%.9g", m->ca_c[i]);
+  }
+  ura_table_print(c, t);
+  return 0;
+}
+
+/* ---- for sora mc and the plots ---- */
+
+static void figure(const double* ca, const double* ref, int n, uraSoraFig* f, double* work) {
+  urMcStats s;
+  ur_mc_stats(ca, n, work, &s);
+  f->ca = s.mean;
+  f->lo = s.lo95;
+  f->hi = s.hi95;
+  if (ur_mc_ratio(ref, ca, n, &f->red, &f->red_lo, &f->red_hi))
+    f->red = f->red_lo = f->red_hi = NAN;
+}
+
+int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t n) {
+  struct uraMc* m = c->mc;
+  if (!m) return ura_fail(c, "sora mc: no montecarlo yet; run 'montecarlo N' first");
+  char* now = settings_text(c);
+  int same = now && !strcmp(now, m->settings);
+  free(now);
+  if (!same) {
+    return ura_fail(c,
+                    "sora mc: the settings changed since the last montecarlo (case, "
+                    "parameters or distributions); accepted: run 'montecarlo N' again");
+  }
+  double* work = malloc((size_t)m->n * sizeof *work);
+  if (!work) return ura_fail(c, "sora mc: out of memory");
+  figure(m->q_c, m->q_c, m->n, &fig[0], work);
+  figure(m->ca_c, m->ca_c, m->n, &fig[1], work);
+  figure(m->q, m->q_c, m->n, &fig[2], work);
+  figure(m->ca, m->ca_c, m->n, &fig[3], work);
+  free(work);
+  *mitigated = m->dep.chute;
+  snprintf(note, n,
+           "from the last montecarlo: %d samples (seed %.0f); ca is the mean, lo95..hi95 "
+           "its 95 %% confidence interval; reduction the ratio of the paired means with its "
+           "interval (delta method); the iGRC of the mean",
+           m->n, m->seed);
+  return 0;
+}
+
+/* the samples' Q and the kept statistics, for plot_mc.c */
+int ura_mc_data(uraCtx* c, const double** q, int* n, const urMcStats** st, const char** casename,
+                double* seed) {
+  struct uraMc* m = c->mc;
+  if (!m) return -1;
+  *q = m->q;
+  *n = m->n;
+  *st = &m->st;
+  *casename = m->casename;
+  *seed = m->seed;
+  return 0;
+}
+
+/* the variance shares of the independent inputs: their count, names and values */
+int ura_mc_shares(uraCtx* c, const char** name, double* share) {
+  struct uraMc* m = c->mc;
+  int k = 0;
+  for (int i = 0; m && i < m->nin; i++) {
+    if (i == m->face_col) continue;
+    name[k] = m->name[i];
+    share[k++] = m->share[i];
+  }
+  return k;
+}

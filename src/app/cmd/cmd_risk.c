@@ -1,0 +1,297 @@
+/* cmd_risk.c: risk (Q mixed over parachute and airbag deployment) and sora (the SORA 2.5
+ * critical areas, iGRC and the mitigation's reduction factor), with the helpers montecarlo
+ * shares: the devices a drone carries, the state of a deployment branch, a branch's grid */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cmd.h"
+#include "uasimpact/sora.h"
+
+static const char* const bag_names[urMAXBAGS] = {"bag_bottom", "bag_front"};
+
+const char* ura_risk_bag(int which) {
+  return bag_names[which];
+}
+
+int ura_risk_devices(uraCtx* c, const uraState* st, urDeploy* dep, int* bag) {
+  const urModel* m = ura_model(c);
+  if (!m) return -1;
+  memset(dep, 0, sizeof *dep);
+  dep->chute = st->descent.area_chute > 0;
+  for (int k = 0; k < urMAXBAGS; k++) {
+    int i = ur_name_param(m, bag_names[k]);
+    if (i >= 0 && m->param[i].value != 0) bag[dep->nbag++] = k;
+  }
+  dep->p_chute = st->risk.p_chute;
+  dep->p_bag = st->risk.p_bag;
+  dep->altitude = st->descent.altitude;
+  dep->h_chute_min = st->risk.h_chute_min;
+  return 0;
+}
+
+void ura_risk_branch_name(int mask, const urDeploy* dep, const int* bag, char* buf, size_t n) {
+  size_t k = (size_t)snprintf(buf, n, "%s", mask & 1 ? "chute" : "none");
+  for (int j = 0; j < dep->nbag && k < n; j++) {
+    if ((mask >> (j + 1)) & 1) k += (size_t)snprintf(buf + k, n - k, "+%s", bag_names[bag[j]]);
+  }
+}
+
+void ura_risk_override(uraState* ns, const char* name, double v, int user) {
+  for (int i = 0; i < ns->nov; i++) {
+    if (!strcmp(ns->ov_name[i], name)) {
+      ns->ov_val[i] = v;
+      if (user) ns->ov_user[i] = 1;
+      return;
+    }
+  }
+  if (ns->nov == uraMAXOV) return;
+  snprintf(ns->ov_name[ns->nov], urNAMELEN, "%s", name);
+  ns->ov_val[ns->nov] = v;
+  ns->ov_user[ns->nov++] = user;
+}
+
+void ura_risk_branch_state(const uraState* base, int mask, const urDeploy* dep, const int* bag,
+                           uraState* ns) {
+  *ns = *base;
+  if (!(mask & 1)) {
+    /* no parachute: the drone falls as case C (and takes C's column of the paper's Table 2) */
+    ns->descent.area_chute = 0;
+    snprintf(ns->casename, sizeof ns->casename, "C");
+  }
+  for (int j = 0; j < dep->nbag; j++) {
+    ura_risk_override(ns, bag_names[bag[j]], (mask >> (j + 1)) & 1, 0);
+  }
+}
+
+int ura_risk_grid(uraCtx* c, const uraState* ns, const char* who, int quiet, double* q) {
+  if (ura_model_state(c, ns, who) || ura_grid_run(c, quiet)) return -1;
+  if (!c->last.g->complete) {
+    return ura_fail(c,
+                    "%s: %d cells failed in the grid of case %s at wind %g m/s, face %g deg; "
+                    "Q is not complete ('grid cells' lists the grid)",
+                    who, c->last.g->nfailed, ns->casename, ns->descent.wind, ns->face);
+  }
+  *q = c->last.g->q;
+  return 0;
+}
+
+int ura_risk_annexf(uraCtx* c, const uraState* ns, double* ca, double* speed, double* angle) {
+  uraState* keep = malloc(sizeof *keep);
+  if (!keep) return ura_fail(c, "out of memory");
+  *keep = c->st;
+  c->st = *ns;
+  int rc = ura_impact_conditions(c, speed, angle);
+  c->st = *keep;
+  free(keep);
+  if (rc) return -1;
+  urAnnexFIn in;
+  urAnnexFOut out;
+  ur_annexf_defaults(&in, ns->descent.mass, ns->para.width, *speed, *angle);
+  in.obstacles = ns->risk.annexf_obstacles;
+  ur_annexf_ca(&in, &out);
+  *ca = out.ca;
+  return 0;
+}
+
+int ura_risk_igrc(const uraState* st, double ca, double* raw1, int* igrc, int* table) {
+  double raw;
+  return ur_igrc(st->risk.pop_density, ca, st->risk.tlos, st->risk.igrc_comp, &raw, raw1, igrc,
+                 table);
+}
+
+/* ---- the branches of the live case ---- */
+
+typedef struct {
+  urDeploy dep;
+  int bag[urMAXBAGS];
+  urBranch br[urMAXBRANCH];
+  int nbr;
+  double q[urMAXBRANCH];     /* each branch's Q, m^2 */
+  double mixed;              /* sum of weight q */
+  double q_none;             /* Q without any device (the last branch) */
+  double speed[2], angle[2]; /* impact conditions without and with the parachute */
+  double ca[2];              /* their Annex F critical areas */
+  double recalled;           /* branches whose grids were recalled */
+} branches;
+
+/* every branch's grid (and the Annex F areas without and with the parachute); the live state is
+   restored afterwards, the last grid is the last branch's */
+static int run_branches(uraCtx* c, const char* who, branches* b) {
+  memset(b, 0, sizeof *b);
+  if (ura_dry(c, "simulation") || ura_risk_devices(c, &c->st, &b->dep, b->bag)) return -1;
+  b->nbr = ur_deploy_branches(&b->dep, b->br);
+  uraState* orig = malloc(2 * sizeof *orig);
+  if (!orig) return ura_fail(c, "%s: out of memory", who);
+  uraState* ns = orig + 1;
+  *orig = c->st;
+  int rc = 0;
+  for (int i = 0; i < b->nbr && rc == 0; i++) {
+    ura_risk_branch_state(orig, b->br[i].mask, &b->dep, b->bag, ns);
+    rc = ura_risk_grid(c, ns, who, 0, &b->q[i]);
+    if (rc == 0) {
+      b->mixed += b->br[i].weight * b->q[i];
+      b->recalled += c->last.recalled;
+    }
+    if (rc == 0 && (i == 0 || i == b->nbr - 1)) {
+      int k = b->br[i].mask & 1;
+      rc = ura_risk_annexf(c, ns, &b->ca[k], &b->speed[k], &b->angle[k]);
+    }
+  }
+  b->q_none = b->q[b->nbr - 1];
+  if (!b->dep.chute) {
+    b->ca[1] = b->ca[0];
+    b->speed[1] = b->speed[0];
+    b->angle[1] = b->angle[0];
+  }
+  char err[uraERRLEN];
+  snprintf(err, sizeof err, "%s", c->err);
+  if (ura_model_state(c, orig, who) && rc == 0)
+    rc = -1;
+  else
+    snprintf(c->err, sizeof c->err, "%s", err);
+  free(orig);
+  return rc;
+}
+
+/* the notes every deployment table shares */
+static void deploy_notes(uraCtx* c, uraTable* t, const branches* b) {
+  const uraRiskSet* r = &c->st.risk;
+  if (!b->dep.chute) {
+    ura_table_note(t,
+                   "case %s carries no parachute (area_chute 0): one branch, nothing to "
+                   "deploy",
+                   c->st.casename);
+    return;
+  }
+  ura_table_note(t,
+                 "deployment: p_chute %g (the parachute deploys in time), p_bag %g (each of "
+                 "%d airbag%s); failure at altitude %g m %s h_chute_min %g m%s",
+                 r->p_chute, r->p_bag, b->dep.nbag, b->dep.nbag == 1 ? "" : "s",
+                 c->st.descent.altitude, c->st.descent.altitude >= r->h_chute_min ? ">=" : "<",
+                 r->h_chute_min,
+                 c->st.descent.altitude < r->h_chute_min ? ": the parachute cannot help" : "");
+  ura_table_note(t,
+                 "branch none: no parachute, and no airbag credited (the drone falls as case "
+                 "C at %.3f m/s, %.2f deg); with the parachute %.3f m/s, %.2f deg",
+                 b->speed[0], b->angle[0], b->speed[1], b->angle[1]);
+}
+
+int ura_cmd_risk(uraCtx* c, int argc, char** argv) {
+  static const char* const cols[] = {"branch", "weight", "q"};
+  branches b;
+  if (run_branches(c, "risk", &b)) return -1;
+  uraTable* t = ura_table_new(3, cols);
+  ura_table_note(t,
+                 "Q of case %s at wind %g m/s, face %g deg mixed over the deployment "
+                 "outcomes: mixed = sum of weight x q (one grid per branch, step %g m)",
+                 c->st.casename, c->st.descent.wind, c->st.face, c->st.step);
+  deploy_notes(c, t, &b);
+  if (b.recalled) {
+    ura_table_note(t,
+                   "recalled: %g of the %d grids are identical to grids computed earlier in "
+                   "this session ('set recall off' recomputes)",
+                   b.recalled, b.nbr);
+  }
+  double wsum = 0;
+  char name[64];
+  for (int i = 0; i < b.nbr; i++) {
+    ura_risk_branch_name(b.br[i].mask, &b.dep, b.bag, name, sizeof name);
+    ura_table_cell(t, "%s", name);
+    ura_table_cell(t, "%.6g", b.br[i].weight);
+    ura_table_cell(t, "%.6f", b.q[i]);
+    wsum += b.br[i].weight;
+  }
+  ura_table_cell(t, "mixed");
+  ura_table_cell(t, "%.6g", wsum);
+  ura_table_cell(t, "%.6f", b.mixed);
+  ura_table_print(c, t);
+  return 0;
+}
+
+/* ---- sora ---- */
+
+static void sora_row(uraCtx* c, uraTable* t, const char* casename, const char* model,
+                     const uraSoraFig* f) {
+  double raw1;
+  int g, gt;
+  int ok = ura_risk_igrc(&c->st, f->ca, &raw1, &g, &gt) == 0;
+  ura_table_cell(t, "%s", casename);
+  ura_table_cell(t, "%s", model);
+  ura_table_cell(t, "%.6g", f->ca);
+  ura_table_cell(t, "%.6g", f->lo);
+  ura_table_cell(t, "%.6g", f->hi);
+  ura_table_cell(t, "%.6g", f->red);
+  ura_table_cell(t, "%.6g", f->red_lo);
+  ura_table_cell(t, "%.6g", f->red_hi);
+  if (ok) {
+    ura_table_cell(t, "%.1f", raw1);
+    ura_table_cell(t, "%d", g);
+    ura_table_cell(t, "%d", gt);
+  } else {
+    for (int k = 0; k < 3; k++) ura_table_cell(t, "none");
+  }
+}
+
+/* a figure without interval */
+static uraSoraFig fixed(double ca, double red) {
+  uraSoraFig f = {ca, ca, ca, red, red, red};
+  return f;
+}
+
+int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
+  static const char* const cols[] = {"case",     "model",     "ca",        "lo95",
+                                     "hi95",     "reduction", "red_lo95",  "red_hi95",
+                                     "igrc_raw", "igrc",      "igrc_table"};
+  if (argc == 2 && strcmp(argv[1], "mc")) {
+    return ura_fail(c, "sora: unknown '%s'; accepted: sora, sora mc", argv[1]);
+  }
+  uraSoraFig fig[4];
+  int mitigated;
+  char note[600];
+  branches b;
+  if (argc == 2) {
+    if (ura_mc_sora(c, fig, &mitigated, note, sizeof note)) return -1;
+  } else {
+    if (run_branches(c, "sora", &b)) return -1;
+    double pc = ur_deploy_chute(&b.dep), ca_mix = pc * b.ca[1] + (1 - pc) * b.ca[0];
+    fig[0] = fixed(b.q_none, 1);
+    fig[1] = fixed(b.ca[0], 1);
+    fig[2] = fixed(b.mixed, b.q_none / b.mixed);
+    fig[3] = fixed(ca_mix, b.ca[0] / ca_mix);
+    mitigated = b.dep.chute;
+    snprintf(note, sizeof note,
+             "deterministic: at the live wind %g m/s and face %g deg (lo95 = "
+             "hi95; 'sora mc' gives the last montecarlo's intervals)",
+             c->st.descent.wind, c->st.face);
+  }
+
+  const uraRiskSet* r = &c->st.risk;
+  uraTable* t = ura_table_new(11, cols);
+  ura_table_note(t,
+                 "SORA 2.5 at %g ppl/km^2, TLOS %g /h, compensation %g: raw = 1 - "
+                 "log10(TLOS / (density 1e-6 CA)) - compensation; igrc_raw = raw to 0.1 (ties to "
+                 "even), igrc = its ceiling (casex AnnexFParms.iGRC), igrc_table = igrc_raw - 0.1 "
+                 "to the nearest (SORA 2.5 Table 2's convention)",
+                 r->pop_density, r->tlos, r->igrc_comp);
+  ura_table_note(t,
+                 "q: Q of the grids (expected fatalities per fall = density x Q); annex_f: the "
+                 "Annex F critical area of a %g kg, %g m drone at the impact speed and angle (mu "
+                 "0.65, CoR(angle), 290 J, obstacle factor %s; casex "
+                 "CriticalAreaModels.critical_area)",
+                 c->st.descent.mass, c->st.para.width, r->annexf_obstacles ? "on" : "off");
+  ura_table_note(t,
+                 "reduction: the unmitigated drone's CA (no parachute, no airbag: case C) over "
+                 "the row's, per model; each factor 10 lowers raw by 1");
+  if (argc == 1) deploy_notes(c, t, &b);
+  ura_table_note(t, "%s", note);
+  sora_row(c, t, "C", "q", &fig[0]);
+  sora_row(c, t, "C", "annex_f", &fig[1]);
+  if (mitigated) {
+    sora_row(c, t, c->st.casename, "q", &fig[2]);
+    sora_row(c, t, c->st.casename, "annex_f", &fig[3]);
+  }
+  ura_table_print(c, t);
+  return 0;
+}

@@ -1,0 +1,327 @@
+/* cmd_sweep.c: sweeps of the grid over wind or face direction, and the paper's comparison of Q
+ * with P{F|Delta=(0,0)} x gliding area (Tables 11-13) */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cmd.h"
+
+
+/* the settings a grid depends on that differ from the case preset, as "name=value ..." (the
+   wind or face swept, the step and the threads excepted; descent=paper and tau=top, which 'case'
+   keeps, included), or "none" */
+void ura_sweep_changes(uraCtx* c, char* buf, size_t n) {
+  static const char* const names[] = {"speed",    "angle", "pitch",      "roll",     "yaw",
+                                      "altitude", "mass",  "area_drone", "cd_drone", "area_chute",
+                                      "cd_chute", "rho",   "g",          NULL};
+  uraState ref;
+  urInjuryParams inj;
+  char val[64];
+  size_t k = 0;
+  buf[0] = 0;
+
+  /* the preset, as ura_case_load makes it */
+  const urPreset* pr = ura_preset_find(c, c->st.casename);
+  if (!pr || ura_preset_state(c, pr, c->model, &ref)) ura_state_defaults(&ref);
+  c->err[0] = 0;
+  ref.descent_src = uraDESC_MODEL; /* 'case' keeps these: the changes name them */
+  ref.tau = urTAU_RMAX;
+  for (int i = 0; names[i] && k < n; i++) {
+    const uraParam* p = ura_param_find(names[i]);
+    const char* a = (const char*)&c->st + p->off;
+    const char* b = (const char*)&ref + p->off;
+    int set = p->setoff ? *(const int*)((const char*)&c->st + p->setoff) : 1;
+    if (!set || *(const double*)a == *(const double*)b) continue;
+    ura_param_format(c, p, val, sizeof val);
+    k += (size_t)snprintf(buf + k, n - k, "%s%s=%s", k ? " " : "", p->name, val);
+  }
+
+  /* where speed and angle come from, and the moment tau */
+  if (c->st.descent_src != ref.descent_src && k < n) {
+    k += (size_t)snprintf(buf + k, n - k, "%sdescent=paper", k ? " " : "");
+  }
+  if (c->st.tau != ref.tau && k < n) {
+    k += (size_t)snprintf(buf + k, n - k, "%stau=top", k ? " " : "");
+  }
+
+  /* injury settings, and model parameters the user set */
+  ur_injury_defaults(&inj);
+  for (int i = 0; i < ur_injury_param_count() && k < n; i++) {
+    const char* name;
+    double v, v0;
+    ur_injury_param_info(i, &name, NULL, NULL);
+    ur_injury_param_get(&c->st.injury, name, &v);
+    ur_injury_param_get(&inj, name, &v0);
+    if (v != v0) k += (size_t)snprintf(buf + k, n - k, "%s%s=%.6g", k ? " " : "", name, v);
+  }
+  for (int i = 0; i < c->st.nov && k < n; i++) {
+    if (!c->st.ov_user[i]) continue;
+    k += (size_t)snprintf(buf + k, n - k, "%s%s=%.6g", k ? " " : "", c->st.ov_name[i],
+                          c->st.ov_val[i]);
+  }
+  if (!buf[0]) snprintf(buf, n, "none");
+}
+
+/* keep a sweep: it replaces the one of the same case, kind, fixed value and changes */
+static int sweep_keep(uraCtx* c, const uraSweep* s) {
+  for (int i = 0; i < c->nsweep; i++) {
+    uraSweep* o = &c->sweep[i];
+    if (!strcmp(o->casename, s->casename) && o->over_face == s->over_face && o->fixed == s->fixed &&
+        !strcmp(o->changes, s->changes)) {
+      *o = *s;
+      return 0;
+    }
+  }
+  if (c->nsweep + c->npsweep >= uraMAXSWEEPS) { /* both kinds count */
+    return ura_fail(c, "sweep: %d sweeps are kept already; 'sweep clear' forgets them",
+                    uraMAXSWEEPS);
+  }
+  uraSweep* m = realloc(c->sweep, (size_t)(c->nsweep + 1) * sizeof *m);
+  if (!m) return ura_fail(c, "sweep: out of memory");
+  c->sweep = m;
+  c->sweep[c->nsweep++] = *s;
+  return 0;
+}
+
+/* add one value to a sweep, keeping the values in increasing order */
+static void sweep_add(uraSweep* s, double x, double speed, double angle, double q) {
+  int i = s->n++;
+  for (; i > 0 && s->x[i - 1] > x; i--) {
+    s->x[i] = s->x[i - 1];
+    s->speed[i] = s->speed[i - 1];
+    s->angle[i] = s->angle[i - 1];
+    s->q[i] = s->q[i - 1];
+  }
+  s->x[i] = x;
+  s->speed[i] = speed;
+  s->angle[i] = angle;
+  s->q[i] = q;
+}
+
+/* sweep show: every kept value; columns case,sweep,wind,face,speed,angle,step,q,changes,value,
+   unit (value: the swept value in unit) */
+static int sweep_show(uraCtx* c) {
+  static const char* const cols[] = {"case", "sweep", "wind",    "face",  "speed", "angle",
+                                     "step", "q",     "changes", "value", "unit"};
+  if (!c->nsweep && !c->npsweep) {
+    return ura_fail(c,
+                    "sweep show: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
+                    "(or 'sweep NAME LIST [UNIT]')");
+  }
+  uraTable* t = ura_table_new(11, cols);
+  ura_table_note(t,
+                 "%d sweep%s kept (plot sweep draws them; sweep clear forgets them); "
+                 "changes: settings that differ from the case preset",
+                 c->nsweep + c->npsweep, c->nsweep + c->npsweep == 1 ? "" : "s");
+  for (int i = 0; i < c->nsweep; i++) {
+    const uraSweep* s = &c->sweep[i];
+    for (int k = 0; k < s->n; k++) {
+      ura_table_cell(t, "%s", s->casename);
+      ura_table_cell(t, "%s", s->over_face ? "face" : "wind");
+      ura_table_cell(t, "%g", s->over_face ? s->fixed : s->x[k]);
+      ura_table_cell(t, "%g", s->over_face ? s->x[k] : s->fixed);
+      ura_table_cell(t, "%.3f", s->speed[k]);
+      ura_table_cell(t, "%.2f", s->angle[k]);
+      ura_table_cell(t, "%g", s->step);
+      ura_table_cell(t, "%.4f", s->q[k]);
+      ura_table_cell(t, "%s", s->changes);
+      ura_table_cell(t, "%g", s->x[k]);
+      ura_table_cell(t, "%s", s->over_face ? "deg" : "m/s");
+    }
+  }
+  ura_sweep_param_rows(c, t);
+  ura_table_print(c, t);
+  return 0;
+}
+
+int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
+  static const char* const cols[] = {"case", "wind", "face", "speed", "angle", "q"};
+  if (argc == 2 && !strcmp(argv[1], "show")) return sweep_show(c);
+  if (argc == 2 && !strcmp(argv[1], "clear")) {
+    free(c->sweep);
+    c->sweep = NULL;
+    c->nsweep = 0;
+    ura_sweep_param_clear(c);
+    return 0;
+  }
+  if (argc >= 3 && strcmp(argv[1], "wind") && strcmp(argv[1], "face")) {
+    return ura_sweep_param(c, argc, argv); /* sweep NAME LIST [UNIT] (sweep_param.c) */
+  }
+  int is_wind = !strcmp(argv[1], "wind"), is_face = !strcmp(argv[1], "face");
+  double v[uraMAXLIST];
+  if ((is_wind || is_face) && argc == 2) {
+    return ura_fail(c, "sweep %s: needs a list of values, e.g. 'sweep %s %s'", argv[1], argv[1],
+                    is_wind ? "0,4,10" : "0,90,180");
+  }
+  if ((!is_wind && !is_face) || argc != 3) {
+    return ura_fail(c,
+                    "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face "
+                    "LIST, sweep show, sweep clear",
+                    argv[1]);
+  }
+  int n = ura_parse_list(argv[2], v, uraMAXLIST);
+  const uraParam* p = ura_param_find(is_wind ? "wind" : "face");
+  for (int i = 0; i < n; i++) {
+    if (v[i] < p->min || v[i] > p->max) n = -1;
+  }
+  if (n < 0) {
+    return ura_fail(c,
+                    "sweep %s: '%s' is not accepted; accepted: comma-separated numbers in "
+                    "[%g, %g] %s",
+                    argv[1], argv[2], p->min, p->max, p->unit);
+  }
+  /* with the paper's Table 2, every wind must be one it prints (refused before any grid runs) */
+  if (ura_paper_speed(c)) {
+    double ws = c->st.descent.wind, sp, an;
+    for (int i = 0; i < (is_wind ? n : 1); i++) {
+      if (ura_paper_descent(c, c->st.casename, is_wind ? v[i] : ws, &sp, &an)) {
+        char why[uraERRLEN];
+        snprintf(why, sizeof why, "%s", c->err);
+        return ura_fail(c, "sweep %s: %.900s", argv[1], why);
+      }
+    }
+  }
+
+  /* the sweep to keep: case, kind, the fixed condition, what differs from the preset */
+  uraSweep* s = calloc(1, sizeof *s);
+  if (!s) return ura_fail(c, "sweep: out of memory");
+  snprintf(s->casename, sizeof s->casename, "%s", c->st.casename);
+  s->over_face = is_face;
+  s->fixed = is_wind ? c->st.face : c->st.descent.wind;
+  s->step = c->st.step;
+  ura_sweep_changes(c, s->changes, sizeof s->changes);
+
+  /* one grid per value (speed and angle derived per wind as 'set descent' says); the live wind
+     or face is restored afterwards */
+  double keep = is_wind ? c->st.descent.wind : c->st.face;
+  uraTable* t = ura_table_new(6, cols);
+  int paper = ura_paper_speed(c);
+  double shift = 0; /* the tau shift at each value (it depends on the angle) */
+  int shifts_differ = 0;
+  int rc = 0;
+  char recalled[200] = ""; /* the values whose grids were recalled (recall.c) */
+  size_t nr = 0;
+  for (int i = 0; i < n && rc == 0; i++) {
+    if (is_wind)
+      c->st.descent.wind = v[i];
+    else
+      c->st.face = v[i];
+    ura_progress_label("sweep %s %g %s (%d of %d): ", argv[1], v[i], is_wind ? "m/s" : "deg", i + 1,
+                       n);
+    rc = ura_grid_run(c, 0);
+    ura_progress_label(NULL);
+    if (rc && ura_interrupted()) {
+      char why[uraERRLEN];
+      snprintf(why, sizeof why, "%s", c->err);
+      ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", argv[1],
+               v[i], i, n, why);
+    }
+    if (rc == 0 && !c->last.g->complete) {
+      rc = ura_fail(c, "sweep: %d cells failed at %s %g; Q is not complete", c->last.g->nfailed,
+                    argv[1], v[i]);
+    }
+    if (rc == 0) {
+      ura_table_cell(t, "%s", c->st.casename);
+      ura_table_cell(t, "%g", c->st.descent.wind);
+      ura_table_cell(t, "%g", c->st.face);
+      ura_table_cell(t, "%.3f", c->last.speed);
+      ura_table_cell(t, "%.2f", c->last.angle);
+      ura_table_cell(t, "%.4f", c->last.g->q);
+      sweep_add(s, v[i], c->last.speed, c->last.angle, c->last.g->q);
+      if (i > 0 && c->last.tau_shift != shift) shifts_differ = 1;
+      shift = c->last.tau_shift;
+      if (c->last.recalled && nr < sizeof recalled) {
+        nr += (size_t)snprintf(recalled + nr, sizeof recalled - nr, "%s%g", nr ? ", " : "", v[i]);
+      }
+    }
+  }
+  if (is_wind)
+    c->st.descent.wind = keep;
+  else
+    c->st.face = keep;
+  if (paper) {
+    ura_table_note(t,
+                   "speed and angle: the paper's Table 2, case %s's column, at each wind "
+                   "('set descent paper'), not the descent model",
+                   ura_paper_descent_column(c->st.casename));
+  }
+  if (c->st.tau == urTAU_TOP) {
+    if (shifts_differ || s->n == 0) {
+      ura_table_note(t,
+                     "tau top: Delta is taken when the drone centre reaches head-top level, "
+                     "R_max/tan(psi) further along the course than the paper's text (R_max "
+                     "above the head top; 'set tau rmax')");
+    } else {
+      ura_table_note(t,
+                     "tau top: Delta is taken when the drone centre reaches head-top level, "
+                     "%.3f m further along the course than the paper's text (R_max above the "
+                     "head top; 'set tau rmax')",
+                     shift);
+    }
+  }
+  if (nr) {
+    ura_table_note(t,
+                   "recalled: the grids of %s %s are identical to grids computed earlier in "
+                   "this session and were not simulated again ('set recall off' recomputes)",
+                   argv[1], recalled);
+  }
+  ura_table_print(c, t);
+
+  /* keep what finished (a sweep that stopped keeps the values before the failure) */
+  if (s->n > 0) {
+    char err[uraERRLEN];
+    snprintf(err, sizeof err, "%s", c->err);
+    if (sweep_keep(c, s))
+      rc = -1;
+    else if (rc)
+      snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err, s->n);
+  }
+  free(s);
+  return rc;
+}
+
+int ura_cmd_compare(uraCtx* c, int argc, char** argv) {
+  static const char* const cols[] = {"case",         "wind", "p_centre", "gliding",
+                                     "q_parametric", "q",    "factor"};
+  urImpactCond cond;
+  const urImpactSetup* s = ura_setup(c);
+  if (!s || ura_impact_cond(c, &cond)) return -1;
+
+  /* P{F|Delta=(0,0)}, the gliding area at this descent, and the grid's Q */
+  urImpactResult r;
+  if (ura_impact_fresh(c, s, &cond, 0, 0, &r)) {
+    if (r.status == urSTAT_STOPPED) return ura_fail(c, "compare: interrupted (Ctrl-C)");
+    return ura_fail(c, "compare: the impact at (0, 0) failed: %s", r.reason);
+  }
+  ura_impact_keep(c, c->st.casename, c->st.descent.wind, &cond, 0, 0, &r);
+  urParametricResult q;
+  ur_parametric(&c->st.para, c->st.descent.mass, cond.speed, cond.angle, &q);
+  if (ura_grid_run(c, 0)) return -1;
+  if (!c->last.g->complete) {
+    return ura_fail(c, "compare: the grid has %d failed and %d pending cells; Q is not complete",
+                    c->last.g->nfailed, c->last.g->npending);
+  }
+
+  uraTable* t = ura_table_new(7, cols);
+  ura_table_note(t,
+                 "paper Tables 11-13: P{F|Delta=(0,0)} x gliding area (eq. D.1) against the "
+                 "dynamical Q, and the reduction factor between them");
+  if (c->last.recalled) {
+    ura_table_note(t,
+                   "recalled: the grid is identical to one computed earlier in this session "
+                   "and was not simulated again ('set recall off' recomputes)");
+  }
+  ura_cond_notes(t, c->st.casename, c->st.descent.wind, c->last.paper_speed, c->last.tau,
+                 c->last.tau_shift);
+  ura_explain_centre(t, &r, c->last.g);
+  ura_table_cell(t, "%s", c->st.casename);
+  ura_table_cell(t, "%g", c->st.descent.wind);
+  ura_table_cell(t, "%.4f", r.p);
+  ura_table_cell(t, "%.3f", q.gliding);
+  ura_table_cell(t, "%.4f", r.p * q.gliding);
+  ura_table_cell(t, "%.4f", c->last.g->q);
+  ura_table_cell(t, "%.2f", c->last.g->q > 0 ? r.p * q.gliding / c->last.g->q : NAN);
+  ura_table_print(c, t);
+  return 0;
+}
