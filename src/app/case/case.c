@@ -1,8 +1,9 @@
 /* case.c: the live case as a whole: a fresh context (the defaults, the built-in model set, the
  * model's first case), the case loaded by name from the model's presets, the impact speed and
  * angle the live settings give (set, or derived from the descent model or the paper's Table 2),
- * and the last grid let go. The top of the case layer: it calls the model set, the presets and
+ * the last impact kept (with the title its plots take), and the last grid let go. The top of the case layer: it calls the model set, the presets and
  * the parameter table, and nothing in the layer calls back into it but through the context. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,4 +85,24 @@ void ura_preset_names(uraCtx* c, char* buf, size_t n) {
                           m->preset[i].name);
   }
   if (!buf[0]) snprintf(buf, n, "none (the model declares no preset)");
+}
+
+void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
+                     double dpar, double dperp, const urImpactResult* r) {
+  c->have_impact = 1;
+  c->last_impact = *r;
+  c->last_dpar = dpar;
+  c->last_dperp = dperp;
+  c->last_aim = cond->aim;
+  char w[32];
+  if (isfinite(wind))
+    snprintf(w, sizeof w, "%g m/s", wind);
+  else
+    snprintf(w, sizeof w, "?");
+  snprintf(c->impact_title, sizeof c->impact_title,
+           "case %s, wind %s, face %g deg, %.3g m/s at "
+           "%.3g deg\nimpact %s %.2f m, %s %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
+           casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle,
+           cond->aim ? "aimed at the head, up" : "at dpar", dpar, cond->aim ? "side" : "dperp",
+           dperp, r->inj.hic15.hic, r->inj.nij.nij, r->contact ? r->p : 0.0);
 }

@@ -336,6 +336,10 @@ const char* ura_term_for_ext(const char* path);
 /* index of a signal of a trace by name, or -1 (model.c) */
 int ura_trace_find(const uraTrace* tr, const char* name);
 
+/* keep a finished impact (its work space holds the histories) as the last impact, with the case
+   and wind it ran for (case.c) */
+void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
+                     double dpar, double dperp, const urImpactResult* r);
 /* the last grid (c->last) freed (state.c); a grid CSV read into it (gridload.c) */
 void ura_last_free(uraCtx* c);
 int ura_grid_load(uraCtx* c, const char* path);
@@ -383,6 +387,9 @@ void ura_recall_flush(uraCtx* c);
 int ura_session_base(uraCtx* c, uraState* base);
 void ura_num_shortest(char* buf, size_t n, double v);
 void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n);
+/* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
+   (session_base.c) */
+void ura_sweep_changes(uraCtx* c, char* buf, size_t n);
 
 /* ---- output under the session's settings (output.c) ---- */
 

@@ -78,9 +78,6 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
 int ura_cmd_design(uraCtx* c, int argc, char** argv); /* designs.c */
 /* the saved designs as commands, for save session (designs.c) */
 void ura_designs_write(uraCtx* c, FILE* f, void (*write_state)(uraCtx*, FILE*));
-/* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
-   (cmd_sweep.c) */
-void ura_sweep_changes(uraCtx* c, char* buf, size_t n);
 /* sweeps over any numeric parameter (sweep_param.c): sweep NAME LIST [UNIT]; their rows for
    sweep show (t: its table, columns case,sweep,wind,face,speed,angle,step,q,changes,value,
    unit); forget them (plot sweep NAME: ui.h) */
@@ -112,11 +109,12 @@ int ura_impact_cond(uraCtx* c, urImpactCond* cond); /* refuses angles below uraA
 /* impact aim head UP SIDE (cmd_aim.c): one impact whose line of travel passes the head's centre
    at an eccentricity, at any angle 0-90 deg */
 int ura_impact_aim(uraCtx* c, int argc, char** argv);
-/* the table of impact rows (columns dpar,dperp,contact,hic15,...,p) and one row of it */
+/* the table of impact rows (columns dpar,dperp,contact,hic15,...,p) and one row of it
+   (impact_rows.c) */
 uraTable* ura_impact_table(const urInjuryParams* ip);
 void ura_impact_cells(uraTable* t, const urInjuryParams* ip, double dpar, double dperp,
                       const urImpactResult* r);
-/* the impact row at a terminal (impact_compact.c): whether to print it, its table (columns
+/* the impact row at a terminal (impact_rows.c): whether to print it, its table (columns
    dpar,dperp,hic15,nij,vc_th,vc_ab,p_hic,p_nij,p_vc,p) and its row with a note */
 int ura_impact_compact(const uraCtx* c);
 uraTable* ura_impact_compact_table(void);
@@ -126,10 +124,6 @@ void ura_impact_compact_row(uraTable* t, double dpar, double dperp, const urImpa
 void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, int tau,
                     double shift);
 int ura_last_trace(uraCtx* c, uraTrace* tr); /* histories of the last impact; -1: none */
-/* keep a finished impact (its work space holds the histories) as the last impact, with the case
-   and wind it ran for */
-void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
-                     double dpar, double dperp, const urImpactResult* r);
 int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr);
 /* run one impact in a work space of its own, which becomes c->work only when it finishes: a
    failed or interrupted impact leaves the last one (histories, contacts) as it was; 0, or -1

@@ -43,36 +43,6 @@ void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, i
   }
 }
 
-/* the columns of impact rows: dpar,dperp,contact, the row values of the criteria in use, their
-   PoF columns, p (the paper's criteria: hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,
-   vc_abdomen,p_hic,p_nij,p_vc) */
-uraTable* ura_impact_table(const urInjuryParams* ip) {
-  const char* cols[3 + urNVAL + urNCRIT + 1] = {"dpar", "dperp", "contact"};
-  int n = 3;
-  for (int v = 0; v < urNVAL; v++) {
-    if (ur_value_shown(v, urIN_ROW, ip)) cols[n++] = ur_value_def(v)->name;
-  }
-  for (int k = 0; k < urNCRIT; k++) {
-    if (ur_criterion_used(k, ip)) cols[n++] = ur_criterion(k)->pof_col;
-  }
-  cols[n++] = "p";
-  return ura_table_new(n, cols);
-}
-
-void ura_impact_cells(uraTable* t, const urInjuryParams* ip, double dpar, double dperp,
-                      const urImpactResult* r) {
-  ura_table_cell(t, "%g", dpar);
-  ura_table_cell(t, "%g", dperp);
-  ura_table_cell(t, "%d", r->contact);
-  for (int v = 0; v < urNVAL; v++) {
-    if (ur_value_shown(v, urIN_ROW, ip)) ura_table_cell(t, "%.6g", r->inj.val[v]);
-  }
-  for (int k = 0; k < urNCRIT; k++) {
-    if (ur_criterion_used(k, ip)) ura_table_cell(t, "%.6g", r->inj.pof[k]);
-  }
-  ura_table_cell(t, "%.6g", r->p);
-}
-
 int ura_impact_fresh(uraCtx* c, const urImpactSetup* s, const urImpactCond* cond, double dpar,
                      double dperp, urImpactResult* r) {
   urImpactWork w;
@@ -249,26 +219,6 @@ int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
 }
 
 /* ---- the histories of the last impact as a trace (plot history, the viewer's inspection) ---- */
-
-void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
-                     double dpar, double dperp, const urImpactResult* r) {
-  c->have_impact = 1;
-  c->last_impact = *r;
-  c->last_dpar = dpar;
-  c->last_dperp = dperp;
-  c->last_aim = cond->aim;
-  char w[32];
-  if (isfinite(wind))
-    snprintf(w, sizeof w, "%g m/s", wind);
-  else
-    snprintf(w, sizeof w, "?");
-  snprintf(c->impact_title, sizeof c->impact_title,
-           "case %s, wind %s, face %g deg, %.3g m/s at "
-           "%.3g deg\nimpact %s %.2f m, %s %.2f m: HIC15 %.0f, Nij %.2f, p = %.3f",
-           casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle,
-           cond->aim ? "aimed at the head, up" : "at dpar", dpar, cond->aim ? "side" : "dperp",
-           dperp, r->inj.hic15.hic, r->inj.nij.nij, r->contact ? r->p : 0.0);
-}
 
 /* derived signals first (what the injury criteria read), then every sensor channel */
 static const char* const trace_names[] = {"head_acc", "neck_fz",    "neck_my",

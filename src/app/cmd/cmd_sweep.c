@@ -8,61 +8,6 @@
 #include "cmd.h"
 
 
-/* the settings a grid depends on that differ from the case preset, as "name=value ..." (the
-   wind or face swept, the step and the threads excepted; descent=paper and tau=top, which 'case'
-   keeps, included), or "none" */
-void ura_sweep_changes(uraCtx* c, char* buf, size_t n) {
-  static const char* const names[] = {"speed",    "angle", "pitch",      "roll",     "yaw",
-                                      "altitude", "mass",  "area_drone", "cd_drone", "area_chute",
-                                      "cd_chute", "rho",   "g",          NULL};
-  uraState ref;
-  urInjuryParams inj;
-  char val[64];
-  size_t k = 0;
-  buf[0] = 0;
-
-  /* the preset, as ura_case_load makes it */
-  const urPreset* pr = ura_preset_find(c, c->st.casename);
-  if (!pr || ura_preset_state(c, pr, c->model, &ref)) ura_state_defaults(&ref);
-  c->err[0] = 0;
-  ref.descent_src = uraDESC_MODEL; /* 'case' keeps these: the changes name them */
-  ref.tau = urTAU_RMAX;
-  for (int i = 0; names[i] && k < n; i++) {
-    const uraParam* p = ura_param_find(names[i]);
-    const char* a = (const char*)&c->st + p->off;
-    const char* b = (const char*)&ref + p->off;
-    int set = p->setoff ? *(const int*)((const char*)&c->st + p->setoff) : 1;
-    if (!set || *(const double*)a == *(const double*)b) continue;
-    ura_param_format(c, p, val, sizeof val);
-    k += (size_t)snprintf(buf + k, n - k, "%s%s=%s", k ? " " : "", p->name, val);
-  }
-
-  /* where speed and angle come from, and the moment tau */
-  if (c->st.descent_src != ref.descent_src && k < n) {
-    k += (size_t)snprintf(buf + k, n - k, "%sdescent=paper", k ? " " : "");
-  }
-  if (c->st.tau != ref.tau && k < n) {
-    k += (size_t)snprintf(buf + k, n - k, "%stau=top", k ? " " : "");
-  }
-
-  /* injury settings, and model parameters the user set */
-  ur_injury_defaults(&inj);
-  for (int i = 0; i < ur_injury_param_count() && k < n; i++) {
-    const char* name;
-    double v, v0;
-    ur_injury_param_info(i, &name, NULL, NULL);
-    ur_injury_param_get(&c->st.injury, name, &v);
-    ur_injury_param_get(&inj, name, &v0);
-    if (v != v0) k += (size_t)snprintf(buf + k, n - k, "%s%s=%.6g", k ? " " : "", name, v);
-  }
-  for (int i = 0; i < c->st.nov && k < n; i++) {
-    if (!c->st.ov_user[i]) continue;
-    k += (size_t)snprintf(buf + k, n - k, "%s%s=%.6g", k ? " " : "", c->st.ov_name[i],
-                          c->st.ov_val[i]);
-  }
-  if (!buf[0]) snprintf(buf, n, "none");
-}
-
 /* keep a sweep: it replaces the one of the same case, kind, fixed value and changes */
 static int sweep_keep(uraCtx* c, const uraSweep* s) {
   for (int i = 0; i < c->nsweep; i++) {

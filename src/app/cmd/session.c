@@ -93,11 +93,10 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   c->out = a.f;
   c->st.format = uraFMT_CSV;
   char* av[2] = {argv[1], grid ? "cells" : mc ? "samples" : "show"};
-  int rc = grid    ? ura_cmd_grid(c, 2, av)
-           : sweep ? ura_cmd_sweep(c, 2, av)
-           : mc    ? ura_cmd_montecarlo(c, 2, av)
-           : cont  ? ura_cmd_contacts(c, 1, av)
-                   : ura_history_samples(c, -INFINITY, INFINITY);
+  /* the commands' own writers, through the command table (grid cells, sweep show, montecarlo
+     samples, contacts) */
+  const uraCmd* k = hist ? NULL : ura_cmd_find(argv[1]);
+  int rc = hist ? ura_history_samples(c, -INFINITY, INFINITY) : k->fn(c, cont ? 1 : 2, av);
   c->out = out;
   c->st.format = fmt;
   return ura_atomic_close(c, &a, rc == 0, "export");

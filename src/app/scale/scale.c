@@ -9,56 +9,6 @@
 
 #include "scale.h"
 
-typedef struct {
-  const char* name;
-  const char* text;
-} urBuiltinModel;
-extern const urBuiltinModel ur_builtin_models[];
-
-unsigned long long ura_fnv(unsigned long long h, const void* p, size_t n) {
-  const unsigned char* s = p;
-  for (size_t i = 0; i < n; i++) h = (h ^ s[i]) * 0x100000001b3ULL;
-  return h;
-}
-
-void ura_scale_script_hash(int argc, char** argv, char out[17]) {
-  unsigned long long h = uraFNV0;
-  for (int i = 0; i < argc; i++) {
-    if (!strcmp(argv[i], "-c")) {
-      i++;
-      continue;
-    }
-    if (argv[i][0] == '-' && argv[i][1]) continue;
-    FILE* f = fopen(argv[i], "rb");
-    char buf[65536];
-    size_t r;
-    h = ura_fnv(h, argv[i], strlen(argv[i]) + 1);
-    if (!f) continue; /* the run itself will say it cannot read it */
-    while ((r = fread(buf, 1, sizeof buf, f)) > 0) h = ura_fnv(h, buf, r);
-    fclose(f);
-  }
-  snprintf(out, 17, "%016llx", h);
-}
-
-void ura_scale_model_hash(char out[17]) {
-  unsigned long long h = uraFNV0;
-  for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
-    h = ura_fnv(h, b->name, strlen(b->name) + 1);
-    h = ura_fnv(h, b->text, strlen(b->text) + 1);
-  }
-  snprintf(out, 17, "%016llx", h);
-}
-
-int ura_scale_mute(uraCtx* c) {
-  FILE* f = fopen("/dev/null", "w");
-  if (!f) return -1;
-  c->out = f;
-  c->msg = f;
-  c->mute = 1;
-  return 0;
-}
-
-/* I/N: whole numbers 0 <= I < N */
 static int shard_arg(const char* s, int* i, int* n) {
   const char* slash = strchr(s, '/');
   double a, b;

@@ -13,7 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "cmd.h"
+#include "../cmd.h"
 
 
 #define MAXIN      (uraMAXDIST + 1 + urMAXBAGS)
