@@ -40,7 +40,7 @@ TEST_LIBS = -lcmocka
 
 CORE_SRC  = $(sort $(wildcard src/core/*/*.c))
 APP_SRC   = $(sort $(wildcard src/app/*/*.c src/app/*/*/*.c))
-TEST_SRC  = $(sort $(wildcard tests/test_*.c))
+TEST_SRC  = $(sort $(wildcard tests/test_*.c tests/*/test_*.c tests/*/*/test_*.c))
 BENCH_SRC = $(sort $(wildcard tests/bench_*.c))
 MODELS    = $(sort $(wildcard src/models/*.urm))
 

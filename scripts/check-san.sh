@@ -16,7 +16,7 @@ UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export ASAN_OPTIONS UBSAN_OPTIONS
 
 t0=$(date +%s)
-tests=$(ls "$b"/tests/test_* | grep -v '\.d$')
+tests=$(find "$b"/tests -name 'test_*' -type f ! -name '*.d' | LC_ALL=C sort)
 # shellcheck disable=SC2086
 UASIMPACT=$b/uasimpact sh scripts/runtests.sh $tests || status=1
 t1=$(date +%s)

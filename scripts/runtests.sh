@@ -1,5 +1,6 @@
 #!/bin/sh
-# runtests.sh: run every test binary given and every tests/test_*.sh, then list the skipped tests
+# runtests.sh: run every test binary given and every shell test (tests/test_*.sh and
+# tests/*/.../test_*.sh, the folders mirroring the sources), then list the skipped tests
 # and print one closing line "N passed, N failed, N skipped". Exit status is non-zero when any
 # test failed or a test program crashed, and, with NOSKIP=1 in the environment ('make check
 # NOSKIP=1'), when any test was skipped.
@@ -9,7 +10,7 @@
 # machine cannot run (a tool that is not installed); the repository's own data is never a reason.
 passed=0; failed=0; skipped=0
 log=$(mktemp); skips=$(mktemp); trap 'rm -f "$log" "$skips"' EXIT
-for t in "$@" tests/test_*.sh; do
+for t in "$@" $(find tests -name 'test_*.sh' -type f | LC_ALL=C sort); do
   [ -e "$t" ] || continue
   echo "== $t"
   case "$t" in *.sh) sh "$t" >"$log" 2>&1 ;; *) "$t" >"$log" 2>&1 ;; esac

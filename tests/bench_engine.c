@@ -6,7 +6,7 @@
 #include <string.h>
 #include <time.h>
 #include "uasimpact/engine.h"
-#include "test_engine_scene.h"
+#include "core/engine/test_engine_scene.h"
 
 static double cpu(void) {
   struct timespec t;

@@ -57,4 +57,12 @@ chmod +x "$W/prog_crash"
 (cd "$W" && sh scripts/runtests.sh ./prog_crash) >"$TMP/out" 2>&1; RC=$?
 check failures_fail cond '[ "$RC" -eq 1 ] && [ "$(tail -1 "$TMP/out")" = "2 passed, 2 failed, 0 skipped" ] &&
   has "$TMP/out" "^runtests: ./prog_crash exited with status 3$" && ! has "$TMP/out" "^skipped"'
+
+# shell tests in the folders that mirror the sources (tests/app/base/...) are found too
+rm "$W/tests/test_b.sh"
+mkdir -p "$W/tests/app/base"
+printf '. tests/lib.sh\ncheck deep true\nfinish\n' >"$W/tests/app/base/test_c.sh"
+(cd "$W" && sh scripts/runtests.sh) >"$TMP/out" 2>&1; RC=$?
+check subfolders_found cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^== tests/app/base/test_c.sh$" &&
+  [ "$(tail -1 "$TMP/out")" = "1 passed, 0 failed, 0 skipped" ]'
 finish

@@ -3,7 +3,7 @@
  * population density. The formulas and their quirks are those of casex (JARUS-QM/casex, commit
  * 2ccfd10, version 1.2.4: critical_area_models.py CriticalAreaModels.critical_area,
  * annex_f_parms.py AnnexFParms.iGRC and CoR_from_impact_angle), whose values the tests reproduce
- * (tests/test_sora.c). Inert areas only: no deflagration (the parcel drone carries no fuel).
+ * (tests/core/risk/test_sora.c). Inert areas only: no deflagration (the parcel drone carries no fuel).
  */
 #ifndef UASIMPACT_SORA_H
 #define UASIMPACT_SORA_H

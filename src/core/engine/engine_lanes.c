@@ -133,7 +133,7 @@ typedef unsigned long long urV4U __attribute__((vector_size(4 * sizeof(long long
 #undef urASI
 #undef urAST
 
-// sine, cosine and atan2q of four arguments over the vectors (for tests/test_engine_trig.c)
+// sine, cosine and atan2q of four arguments over the vectors (for tests/core/engine/test_engine_trig.c)
 void ur_lanes_trig(const double x[urNLANE], double s[urNLANE], double c[urNLANE],
                    const double y[urNLANE], const double w[urNLANE], double a[urNLANE]) {
   urV4 xv, yv, wv, sv, cv, av;

@@ -1,6 +1,6 @@
 /* rng.c: Philox4x32-10 (rng.h). The round function and constants are those of the SC'11 paper:
  * two 32x32->64 multiplications by M0 and M1 per round, the key bumped by the Weyl constants W0
- * and W1 between rounds. Tested against Random123's known-answer vectors (tests/test_rng.c). */
+ * and W1 between rounds. Tested against Random123's known-answer vectors (tests/core/risk/test_rng.c). */
 #include "uasimpact/rng.h"
 
 #define M0 0xD2511F53u

@@ -5,7 +5,7 @@
  * with the reduction's tail, and the four-interval arctangent of s_atan.c; all branch-free, the
  * rare arguments they do not cover handed to libm element by element. Errors against the true
  * value: sine and cosine under 1 ulp, the arctangent under 2 (the rounding of its quotient);
- * tests/test_engine_trig.c measures them against libm. Parameters: urT the element type, urM the
+ * tests/core/engine/test_engine_trig.c measures them against libm. Parameters: urT the element type, urM the
  * type of its comparisons (the masks), urU the unsigned integer type of its width, urK(name) the
  * function names, urBC(x) a double broadcast to urT, urSEL(m, a, b) a where m else b, urANY(m)
  * whether any element's m holds, urNEL the element count, urEL(x, l) element l of x (an lvalue),

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "test_ctx.h"
+#include "../../test_ctx.h"
 
 static void distance(void** state) {
   (void)state;

@@ -10,7 +10,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "test_ctx.h"
+#include "../../test_ctx.h"
 
 static void shortest(void** state) {
   (void)state;

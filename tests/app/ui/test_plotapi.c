@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "../src/app/ui/ui.h"
+#include "../../../src/app/ui/ui.h"
 
 #define N 401
 

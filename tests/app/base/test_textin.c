@@ -8,7 +8,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "../src/app/case/case.h"
+#include "../../../src/app/case/case.h"
 
 /* a stream over n bytes of text */
 static FILE* over(const char* text, size_t n) {

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "../src/core/engine/engine_internal.h"
+#include "../../../src/core/engine/engine_internal.h"
 
 static double urand(unsigned* s) {
   *s = *s * 1103515245u + 12345u;

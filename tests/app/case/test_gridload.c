@@ -12,7 +12,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "../src/app/ui/ui.h"
+#include "../../../src/app/ui/ui.h"
 
 /* the paper's grids, part of the repository: a missing file fails the test, it is not skipped */
 #define GRIDS "sessions/paper/grids"

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "../src/core/engine/engine_internal.h"
+#include "../../../src/core/engine/engine_internal.h"
 
 static double urand(uint64_t* s) {
   *s = *s * 6364136223846793005ull + 1442695040888963407ull;

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "../src/core/engine/engine_internal.h"
+#include "../../../src/core/engine/engine_internal.h"
 #include "uasimpact/modellang.h"
 
 // scalp on a flat (Table B1 of the paper)

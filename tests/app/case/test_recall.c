@@ -10,7 +10,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "test_ctx.h"
+#include "../../test_ctx.h"
 
 static void run(uraCtx* c, const char* line) {
   run_rc(c, line, 0);

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "../src/app/base/base.h"
+#include "../../../src/app/base/base.h"
 
 static char* wrapped(const char* lead, const char* cont, const char* text, int width) {
   char* buf = NULL;

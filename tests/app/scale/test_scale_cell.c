@@ -9,7 +9,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "../src/app/scale/scale.h"
+#include "../../../src/app/scale/scale.h"
 
 static urCell sample(void) {
   urCell c;

@@ -11,8 +11,8 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "../src/app/ui/ui.h"
-#include "../src/core/impact/impact_internal.h"
+#include "../../../src/app/ui/ui.h"
+#include "../../../src/core/impact/impact_internal.h"
 
 /* one context per test: the built-in models, a case, its conditions */
 static uraCtx* fresh(const char* casename) {

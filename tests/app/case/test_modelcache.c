@@ -14,7 +14,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "test_ctx.h"
+#include "../../test_ctx.h"
 
 /* A, B, A: the second A is the first one's model and stance, and its impact is the same */
 static void switch_back(void** state) {

@@ -12,7 +12,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "test_ctx.h"
+#include "../../test_ctx.h"
 
 #define MAXOFF 400
 

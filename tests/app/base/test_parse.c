@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <cmocka.h>
 
-#include "../src/app/base/base.h"
+#include "../../../src/app/base/base.h"
 
 static void good_numbers(void** state) {
   double v;

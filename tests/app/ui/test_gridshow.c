@@ -15,7 +15,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "../src/app/ui/ui.h"
+#include "../../../src/app/ui/ui.h"
 
 typedef struct {
   uraCtx c;

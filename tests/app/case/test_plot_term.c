@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "../src/app/ui/ui.h"
+#include "../../../src/app/ui/ui.h"
 
 static void test_kind(void** state) {
   (void)state;

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "../src/core/engine/engine_internal.h"
+#include "../../../src/core/engine/engine_internal.h"
 #include "test_engine_scene.h"
 
 #define ROWS 2000

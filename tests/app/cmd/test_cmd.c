@@ -9,7 +9,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "../src/app/ui/ui.h"
+#include "../../../src/app/ui/ui.h"
 
 /* run lines on a fresh context, capturing what they print */
 typedef struct {
