@@ -1,4 +1,4 @@
-/* colors.c: the colour roles of colors.h: band of a probability, one style table per scheme,
+/* colors.c: the colour roles of base.h: band of a probability, one style table per scheme,
  * the legend texts, the choice of scheme for a stream, and ANSI SGR sequences */
 #include <stdio.h>
 #include <stdlib.h>

@@ -101,7 +101,7 @@ typedef struct {
   int nov;
   char terminal[64]; /* gnuplot terminal; empty: gnuplot's default */
   char output[512];  /* gnuplot output file; empty: a window */
-  uraRiskSet risk;   /* deployment reliability, distributions, SORA (app_risk.h) */
+  uraRiskSet risk;   /* deployment reliability, distributions, SORA (above) */
 } uraState;
 
 /* one part of the model set (human, ra3, airbags, sim, or loaded from a file) */
@@ -233,7 +233,7 @@ void ura_state_defaults(uraState* s);
 /* in dry mode, refuse WHAT (a simulation, plot, file...) with a message; 0 otherwise */
 int ura_dry(uraCtx* c, const char* what);
 
-/* ---- the risk settings and declared distributions (risk_dist.c) ---- */
+/* ---- the risk settings (their defaults: state.c) and declared distributions (risk_dist.c) ---- */
 
 void ura_risk_defaults(uraRiskSet* r);
 /* show and save session: the declared distributions, as '# ...' lines or as dist commands */
@@ -302,13 +302,13 @@ const char* ura_paper_descent_column(const char* casename);
    model's first preset (none: nothing) */
 int ura_case_load(uraCtx* c, const char* name);
 int ura_case_default(uraCtx* c);
-/* presets (preset.c): by name (any case), the names as "A, B or C", the state a case starts
-   from (the live wind, face, lists, step and output settings kept) */
+/* presets: by name (any case), the names as "A, B or C" (case.c), the state a case starts
+   from (the live wind, face, lists, step and output settings kept; preset.c) */
 const urPreset* ura_preset_find(uraCtx* c, const char* name);
 void ura_preset_names(uraCtx* c, char* buf, size_t n);
 int ura_preset_state(uraCtx* c, const urPreset* pr, const urModel* m, uraState* ns);
-/* design parameters (design.c): mass also as the multibody drone's total (its role mass=
-   parameter, as an override of ns; user: set by the user), the models a setting changes */
+/* design parameters: mass also as the multibody drone's total (its role mass= parameter, as an
+   override of ns; user: set by the user; preset.c), the models a setting changes (design.c) */
 int ura_design_mass(const urModel* m, uraState* ns, double mass, int user);
 int ura_design_set(uraCtx* c, const char* name, const char* value, const char* unit);
 const char* ura_design_reach(uraCtx* c, const char* name);
@@ -340,7 +340,7 @@ int ura_trace_find(const uraTrace* tr, const char* name);
    and wind it ran for (case.c) */
 void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpactCond* cond,
                      double dpar, double dperp, const urImpactResult* r);
-/* the last grid (c->last) freed (state.c); a grid CSV read into it (gridload.c) */
+/* the last grid (c->last) freed (case.c); a grid CSV read into it (gridload.c) */
 void ura_last_free(uraCtx* c);
 int ura_grid_load(uraCtx* c, const char* path);
 

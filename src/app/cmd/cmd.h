@@ -64,7 +64,7 @@ int ura_cmd_grid(uraCtx* c, int argc, char** argv);
 int ura_grid_run(uraCtx* c, int quiet);
 int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_max);
 
-/* handlers the table names that live in the ui layer: the viewer (view.c), plots (plot.c), and
+/* handlers the table names that live in the ui layer: the viewer (view.c), plots (plot_cmd.c), and
    the last grid as text in the paper's layout for 'grid show' (gridshow.c) */
 int ura_cmd_view(uraCtx* c, int argc, char** argv);
 int ura_cmd_plot(uraCtx* c, int argc, char** argv);
