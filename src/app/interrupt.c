@@ -96,9 +96,9 @@ static const int fatal[] = {
 static void catch_fatal(int sig) {
   struct sigaction old, sa;
   if (sigaction(sig, NULL, &old)) return;
-  int free =
+  int ours =
       !(old.sa_flags & SA_SIGINFO) && (old.sa_handler == SIG_DFL || old.sa_handler == on_term);
-  if (!free) return;
+  if (!ours) return;
   memset(&sa, 0, sizeof sa);
   sa.sa_handler = on_term;
   sigfillset(&sa.sa_mask); /* one at a time: the first to come removes the file */
