@@ -181,7 +181,7 @@ check wait_plot_stays cond 'alive v5 && grep -q "dpar 0.00 m  dperp 0.00 m" "$TM
 keys v5 p
 check wait_plotting_again wait_for v5 'plotting in gnuplot\.\.\.' 30
 t0=$(now_ms); keys v5 q
-check wait_plot_q wait_gone v5 'plotting in gnuplot|Enter inspect  p plot  q back'
+check wait_plot_q wait_for v5 '^uasrisk\[A\]> *$' 2
 MS=$(( $(now_ms) - t0 )); echo "  (q while gnuplot hangs in the viewer: left after $MS ms)"
 check wait_plot_q_bound [ "$MS" -lt 2000 ]
 check wait_plot_q_gnuplot_gone gp_gone
@@ -199,7 +199,7 @@ check wait_impact_ctrl_c_bound [ "$MS" -lt 2000 ]
 keys v5 Enter
 check wait_running_again wait_for v5 'running the impact of this cell' 5
 t0=$(now_ms); keys v5 q
-check wait_impact_q wait_gone v5 'running the impact|Enter inspect  p plot  q back'
+check wait_impact_q wait_for v5 '^uasrisk\[A[^]]*\]> *$' 2
 MS=$(( $(now_ms) - t0 )); echo "  (q during Enter's impact: left after $MS ms)"
 check wait_impact_q_bound [ "$MS" -lt 2000 ]
 line v5 "show settle_dt"
