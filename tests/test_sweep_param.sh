@@ -5,7 +5,14 @@
 . tests/lib.sh
 
 mkdir -p "$TMP/bin"
-printf '#!/bin/sh\ncat >>"%s/plot.gp"\n' "$TMP" >"$TMP/bin/gnuplot"
+# a fake gnuplot: keeps the scripts, writes a PNG (signature and end chunk) where they say
+cat >"$TMP/bin/gnuplot" <<EOF
+#!/bin/sh
+tee -a "$TMP/plot.gp" >"$TMP/last.gp"
+out=\$(sed -n "s/^set output '\\(.*\\)'\\\$/\\1/p" "$TMP/last.gp")
+[ -n "\$out" ] && printf '\\211PNG\\r\\n\\032\\n\\0\\0\\0\\0IEND\\256B\`\\202' >"\$out"
+exit 0
+EOF
 chmod +x "$TMP/bin/gnuplot"
 U=$(cd "$(dirname "$UASRISK")" && pwd)/$(basename "$UASRISK")
 
@@ -23,8 +30,8 @@ run -c "$S; set bag_p0 1.2 atm; grid"
 check grid_equals_sweep has "$TMP/out" ",$qs\(,\|$\)"
 
 # plot sweep NAME
-PATH="$TMP/bin:$PATH" "$U" -c "set step 0.3; case C; set terminal png; set output $TMP/p.png; sweep mass 10,20; plot sweep mass" >"$TMP/out" 2>"$TMP/err"
-check plot_sweep_name cond '[ $? -eq 0 ] && grep -q "Q against mass" "$TMP/plot.gp" && grep -q "^10 " "$TMP/plot.gp"'
+PATH="$TMP/bin:$PATH" "$U" -c "set step 0.3; case C; set terminal png; set output $TMP/p.png; sweep mass 10,20; plot sweep mass" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check plot_sweep_name cond '[ $RC -eq 0 ] && [ -s "$TMP/p.png" ] && grep -q "Q against mass" "$TMP/plot.gp" && grep -q "^10 " "$TMP/plot.gp"'
 
 # refusals, nothing run
 run -c "$S; sweep nosuch 1,2"

@@ -348,6 +348,9 @@ typedef struct {
   char tmp[4200];  /* the temporary file beside it */
 } uraAtomic;
 int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);
+/* the same for a file another process writes by the name a->tmp (gnuplot): only a regular file
+   or a new one; anything else (/dev/stdout, /dev/fd/N, a FIFO, a device) is refused */
+int ura_atomic_open_file(uraCtx* c, uraAtomic* a, const char* path, const char* who);
 int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
 
 /* models (model.c) */
@@ -462,10 +465,15 @@ void ura_interrupt_install(int interactive);
 _Atomic int* ura_interrupt_flag(void);
 int ura_interrupted(void);
 void ura_interrupt_clear(void);
-/* the temporary file of a write under way, removed if SIGTERM, SIGHUP or a fatal Ctrl-C end the
-   program (at most one at a time); disarm when it is renamed or removed */
+/* the temporary file of a write under way, removed if a signal that ends the program by default
+   (SIGTERM, SIGHUP, SIGUSR1, SIGALRM, SIGPIPE, ...) or a fatal Ctrl-C ends it (at most one at a
+   time); disarm when it is renamed or removed */
 void ura_temp_arm(const char* path);
 void ura_temp_disarm(void);
+/* a child process (gnuplot) that writes the armed temporary file: killed and reaped before the
+   file is removed, so that it cannot make it again; disarm once it is reaped */
+void ura_child_arm(int pid);
+void ura_child_disarm(void);
 
 /* text files (textin.c): the next line of f without its line end into *buf (realloc'ed, *cap
    its size), at most max bytes; its length, or one of these */

@@ -9,6 +9,9 @@
  * and sockets are refused. Every write error is reported with its own reason (a full disk is
  * "No space left on device"), and Ctrl-C stops a write that waits (a FIFO without a reader, a
  * pipe that is full) within 0.1 s.
+ * A file another process writes (gnuplot's plots) is opened with ura_atomic_open_file: only a
+ * regular file (or a new one) is accepted, the other process writes the temporary file by its
+ * name, and the caller checks it before ura_atomic_close renames it.
  */
 #define _GNU_SOURCE /* fopencookie */
 #include <errno.h>
@@ -122,11 +125,13 @@ static int fail_open(uraCtx* c, const char* who, const char* path, int e) {
   return ura_fail(c, "%s: cannot write '%s': %s", who, path, strerror(e));
 }
 
-int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) {
+/* open path for writing as ura_atomic_open says; regular: refuse what is not a regular file (or
+   a new one), for a file that another process writes by its temporary name */
+static int open_as(uraCtx* c, uraAtomic* a, const char* path, const char* who, int regular) {
   memset(a, 0, sizeof *a);
   a->fd = -1;
   if (ura_dry(c, who)) return -1;
-  if (c->mute) path = "/dev/null"; /* a shard or an MPI rank but 0: its files go nowhere */
+  if (c->mute && !regular) path = "/dev/null"; /* a shard or an MPI rank but 0: no files */
   if (!*path || strlen(path) >= sizeof a->path - 16) {
     return ura_fail(c, "%s: cannot write '%.200s': %s; accepted: a file name of 1 to %d bytes", who,
                     path, *path ? "name too long" : "empty name", (int)sizeof a->path - 17);
@@ -139,6 +144,18 @@ int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) 
   int exists = dupfd >= 0 ? fstat(dupfd, &sb) == 0 : stat(path, &sb) == 0;
   if (dupfd >= 0 && !exists) return fail_open(c, who, path, errno);
   if (!exists && errno != ENOENT) return fail_open(c, who, path, errno);
+  if (regular && (dupfd >= 0 || (exists && !S_ISREG(sb.st_mode)))) {
+    return ura_fail(c,
+                    "%s: cannot write '%s': it %s %s; accepted: a regular file, replaced "
+                    "whole when complete (not a device, a FIFO or an open descriptor such as "
+                    "/dev/stdout: a text terminal such as dumb without an output draws on "
+                    "standard output); nothing was written",
+                    who, path, dupfd >= 0 ? "names" : "is",
+                    dupfd >= 0             ? "an open descriptor"
+                    : S_ISFIFO(sb.st_mode) ? "a FIFO"
+                    : S_ISCHR(sb.st_mode)  ? "a character device"
+                                           : kind_of(sb.st_mode));
+  }
   if (exists && !S_ISREG(sb.st_mode) && !S_ISFIFO(sb.st_mode) && !S_ISCHR(sb.st_mode)) {
     return ura_fail(c,
                     "%s: cannot write '%s': it is %s; accepted: a regular file (replaced "
@@ -181,6 +198,14 @@ int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) 
     return fail_open(c, who, path, e);
   }
   return 0;
+}
+
+int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) {
+  return open_as(c, a, path, who, 0);
+}
+
+int ura_atomic_open_file(uraCtx* c, uraAtomic* a, const char* path, const char* who) {
+  return open_as(c, a, path, who, 1);
 }
 
 int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who) {

@@ -4,7 +4,9 @@
  *
  * Settings (c->st): terminal empty = gnuplot's default (a window, needs DISPLAY or
  * WAYLAND_DISPLAY), output empty = a window (or the text of a text terminal such as dumb).
- * With an output file the file is complete when the function returns. Gnuplot's warnings go to
+ * With an output file the file is complete when the function returns: gnuplot writes a temporary
+ * file beside it, renamed over it only when gnuplot succeeded and the file is checked complete;
+ * on any failure an existing file of that name is left as it was. Gnuplot's warnings go to
  * c->msg; text terminals' drawings to c->out.
  */
 #ifndef UASRISK_PLOT_H
@@ -82,6 +84,12 @@ int ura_term_kind(const char* term);
 /* the terminal an output file's extension implies (.png pngcairo, .svg, .pdf pdfcairo, .eps
    epscairo, .txt dumb, .jpg/.jpeg jpeg, .gif), NULL for none */
 const char* ura_term_for_ext(const char* path);
+
+/* the file tmp that gnuplot wrote under terminal term for the output shown is complete: not
+   empty, the format's first bytes and end marker (PNG, JPEG, GIF, PDF, EPS, PostScript, SVG,
+   HTML), for a text terminal a disk not left full (plot_file.c); 0, or -1 with c->err set */
+int ura_plot_file_check(uraCtx* c, const char* who, const char* tmp, const char* term,
+                        const char* shown);
 
 /* index of a signal of a trace by name, or -1 */
 int ura_trace_find(const uraTrace* tr, const char* name);
