@@ -77,15 +77,7 @@ static int shard_arg(const char* s, int* i, int* n) {
 int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   char** av = *argv;
   int ac = *argc;
-  if (ac >= 2 && !strcmp(av[1], "merge")) {
-    if (ac < 3) {
-      fprintf(stderr,
-              "uasrisk merge: no part files; usage: uasrisk merge PART... (the files of "
-              "'uasrisk --shard I/N --part PART', one per shard)\n");
-      return 2;
-    }
-    return ura_merge_new(c, ac - 2, av + 2, argc, argv);
-  }
+  if (ac >= 2 && !strcmp(av[1], "merge")) return ura_merge_new(c, argc, argv);
   uraScale* mpi = ura_mpi_new(c, argc, argv);
   if (mpi) {
     c->scale = mpi;
