@@ -49,6 +49,12 @@ void ura_scale_model_hash(char out[17]) {
   snprintf(out, 17, "%016llx", h);
 }
 
+void ura_scale_input(uraCtx* c, FILE* f, const char* path) {
+  struct stat st;
+  if (!c->scale || !c->scale->ops->input || fstat(fileno(f), &st)) return;
+  c->scale->ops->input(c->scale, path, &st);
+}
+
 int ura_scale_mute(uraCtx* c) {
   FILE* f = fopen("/dev/null", "w");
   if (!f) return -1;
@@ -135,7 +141,7 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   }
   c->scale = ura_shard_new(c, shard, nshard, part, w - 1, av + 1);
   if (!c->scale) {
-    fprintf(stderr, "uasrisk: --shard: %s\n", c->err);
+    fprintf(stderr, "uasrisk: %s\n", c->err);
     return 2;
   }
   return 0;

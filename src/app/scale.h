@@ -15,6 +15,8 @@
 #ifndef URA_SCALE_H
 #define URA_SCALE_H
 
+#include <sys/stat.h>
+
 #include "app.h"
 
 #define uraPART_VERSION 1
@@ -28,6 +30,7 @@ typedef struct {
   long (*next)(uraScale* s);             /* any worker thread: next position, -1 none */
   int (*end)(uraScale* s, urGrid* g, const long* todo, long ntodo);
   int (*finish)(uraScale* s, int rc); /* end of the run: the exit status */
+  void (*input)(uraScale* s, const char* path, const struct stat* st); /* a file read; or NULL */
 } uraScaleOps;
 
 struct uraScale {
@@ -47,6 +50,9 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv);
 int ura_scale_end(uraCtx* c, int rc);
 /* a grid about to run under c->scale: its number and key, and spec->dist pointing at d */
 void ura_scale_grid(uraCtx* c, urGridSpec* spec, urGridDist* d);
+/* a file the run reads (a script, a sourced file, a model, a grid), open as f: a shard keeps its
+   device and inode, so that its part never replaces an input of the run */
+void ura_scale_input(uraCtx* c, FILE* f, const char* path);
 /* results, notes and files of this process go nowhere (a shard, an MPI rank other than 0) */
 int ura_scale_mute(uraCtx* c);
 
