@@ -110,7 +110,13 @@ static int s_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
   for (long k = 0; k < ntodo; k++) {
     urCell* c = &g->cell[todo[k]];
     if ((k + s->grid) % d->n == d->i) {
-      if (ura_cell_write(c, line, sizeof line) < 0) {
+      int w = ura_cell_write(c, line, sizeof line);
+      if (w == -2) {
+        return ura_fail(s->c,
+                        "grid: cell %ld holds a value outside its domain (p or a PoF not in [0, "
+                        "1], or an infinite criterion): a part cannot carry it",
+                        k);
+      } else if (w < 0) {
         return ura_fail(s->c, "grid: a cell's result does not fit a part line");
       }
       fprintf(d->f, "c %ld %s\n", k, line);
