@@ -90,7 +90,7 @@ typedef struct {
   int shard, nshard;
   char script[17], model[17];
   int argc;
-  char** argv; /* the command line without --shard and --part */
+  char** argv; /* the command line without --shard and --part: data, compared, never run */
   int status;  /* the exit status of the shard's run */
   long ngrid;
   struct uraPartGrid* grid; /* ngrid */

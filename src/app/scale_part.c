@@ -12,6 +12,7 @@
  * count by the bytes left before allocating, and refuses a command line no shard runs and cell
  * values outside their domain (ura_cell_read). Its command line is never run: the merge compares
  * it with its own (scale_merge.c). */
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -50,7 +51,7 @@ static int get_arg(char* s) {
     } else if (r[1] == '\\') {
       *w++ = '\\';
       r++;
-    } else if (r[1] == 'x' && r[2] && r[3]) {
+    } else if (r[1] == 'x' && isxdigit((unsigned char)r[2]) && isxdigit((unsigned char)r[3])) {
       char hex[3] = {r[2], r[3], 0}, *end;
       long v = strtol(hex, &end, 16);
       if (*end || v <= 0) return -1;
