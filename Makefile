@@ -13,8 +13,9 @@
 #                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
 #   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
 #                 session under valgrind (scripts/check-san.sh)
-#   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions (FUZZ_RUN_RUNS for
-#                 the executing script target) or FUZZ_SECONDS each (clang; build-fuzz/)
+#   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c (model language, scripts, part files),
+#                 FUZZ_RUNS executions (FUZZ_RUN_RUNS for the executing script target) or
+#                 FUZZ_SECONDS each (clang; build-fuzz/)
 #   make mpi      ./uasrisk-mpi, the MPI build (OpenMPI from Debian; mpirun -n N ./uasrisk-mpi FILE)
 #   make check-tsan  a ThreadSanitizer build (build-tsan/) runs a short grid on 2 threads and is
 #                 interrupted by SIGINT in the middle (scripts/check-tsan.sh)
@@ -178,6 +179,7 @@ check-san:
 # tests/fuzz/corpus_*. Each target has its own build: the model-language target instruments
 # everything for coverage; the command targets only the application (the core, the model parser
 # above all, is the model target's field and would slow them five-fold), under ASan+UBSan all.
+# The part file target (fuzz_part: the reader merge trusts) shares the command targets' build.
 # The executing script target (fuzz_run: short simulations, files in a scratch folder, a fake
 # gnuplot) is slower per input: FUZZ_RUN_RUNS executions.
 FUZZ_SAN = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
@@ -190,9 +192,10 @@ fuzz:
 	@$(MAKE) --no-print-directory BUILD=build-fuzz/model CC=clang OPT='$(FUZZ_OPT)' \
 	  build-fuzz/model/fuzz/fuzz_model
 	@$(MAKE) --no-print-directory BUILD=build-fuzz/script CC=clang OPT='$(FUZZ_OPT)' \
-	  CORE_OPT='$(FUZZ_SAN)' build-fuzz/script/fuzz/fuzz_script build-fuzz/script/fuzz/fuzz_run
+	  CORE_OPT='$(FUZZ_SAN)' build-fuzz/script/fuzz/fuzz_script build-fuzz/script/fuzz/fuzz_run \
+	  build-fuzz/script/fuzz/fuzz_part
 	@sh scripts/fuzz.sh $(FUZZ_RUNS) $(FUZZ_SECONDS) build-fuzz/model/fuzz/fuzz_model \
-	  build-fuzz/script/fuzz/fuzz_script
+	  build-fuzz/script/fuzz/fuzz_script build-fuzz/script/fuzz/fuzz_part
 	@sh scripts/fuzz.sh $(FUZZ_RUN_RUNS) $(FUZZ_SECONDS) build-fuzz/script/fuzz/fuzz_run
 
 # ThreadSanitizer: the application and the core built with -fsanitize=thread (build-tsan/), a

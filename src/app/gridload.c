@@ -13,6 +13,7 @@
 #include <strings.h>
 
 #include "app.h"
+#include "scale.h"
 
 #define MAXCELLS    4000000L /* refuse grids larger than this */
 #define LATTICE_TOL 1e-6     /* m: offsets must sit on the lattice within this */
@@ -620,6 +621,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
     return ura_fail(c, "grid load: interrupted (Ctrl-C) while opening '%s'", path);
   }
   if (!r.f) return ura_fail(c, "grid load: cannot open '%s': %s", path, strerror(errno));
+  ura_scale_input(c, r.f, path); /* a shard's part may not replace it */
 
   /* comments (conditions), then the header that tells the format */
   int got;

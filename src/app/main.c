@@ -12,7 +12,7 @@ static void usage(FILE* f) {
   fprintf(f,
           "usage: uasrisk [-i] [-c COMMANDS] [FILE]...\n"
           "       uasrisk --shard I/N --part OUT [-c COMMANDS] [FILE]...\n"
-          "       uasrisk merge PART...\n"
+          "       uasrisk merge [-c COMMANDS] [--script FILE]... PART...\n"
           "  with no arguments: interactive on a terminal, else replay standard input\n"
           "  FILE         replay a session script\n"
           "  -c COMMANDS  run commands (separated by ';')\n"
@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
   }
   if (!c->model) fprintf(stderr, "uasrisk: warning: built-in model: %s\n", c->err);
 
-  /* --shard I/N --part OUT, merge PART..., or an MPI rank (scale.h) */
+  /* --shard I/N --part OUT, merge [-c COMMANDS] [--script FILE]... PART..., or an MPI rank
+     (scale.h) */
   int st = ura_scale_args(c, &argc, &argv);
   if (st) return done(st);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "scale.h"
 
 #define SETTLE_SECONDS 1.0         /* settling of the stance, s (it is still within 0.1 mm) */
 #define BALANCE_ITERS  2           /* muscle-tone balancing of the upright posture */
@@ -387,6 +388,7 @@ static int model_load(uraCtx* c, const char* path) {
     return ura_fail(c, "model load: interrupted (Ctrl-C) while opening '%s'", path);
   }
   if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+  ura_scale_input(c, f, path); /* a shard's part may not replace it */
 
   /* the whole text, bounded (a device never ends), read errors named */
   char* text = NULL;

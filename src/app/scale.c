@@ -49,6 +49,12 @@ void ura_scale_model_hash(char out[17]) {
   snprintf(out, 17, "%016llx", h);
 }
 
+void ura_scale_input(uraCtx* c, FILE* f, const char* path) {
+  struct stat st;
+  if (!c->scale || !c->scale->ops->input || fstat(fileno(f), &st)) return;
+  c->scale->ops->input(c->scale, path, &st);
+}
+
 int ura_scale_mute(uraCtx* c) {
   FILE* f = fopen("/dev/null", "w");
   if (!f) return -1;
@@ -77,15 +83,7 @@ static int shard_arg(const char* s, int* i, int* n) {
 int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   char** av = *argv;
   int ac = *argc;
-  if (ac >= 2 && !strcmp(av[1], "merge")) {
-    if (ac < 3) {
-      fprintf(stderr,
-              "uasrisk merge: no part files; usage: uasrisk merge PART... (the files of "
-              "'uasrisk --shard I/N --part PART', one per shard)\n");
-      return 2;
-    }
-    return ura_merge_new(c, ac - 2, av + 2, argc, argv);
-  }
+  if (ac >= 2 && !strcmp(av[1], "merge")) return ura_merge_new(c, argc, argv);
   uraScale* mpi = ura_mpi_new(c, argc, argv);
   if (mpi) {
     c->scale = mpi;
@@ -143,7 +141,7 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   }
   c->scale = ura_shard_new(c, shard, nshard, part, w - 1, av + 1);
   if (!c->scale) {
-    fprintf(stderr, "uasrisk: --shard: %s\n", c->err);
+    fprintf(stderr, "uasrisk: %s\n", c->err);
     return 2;
   }
   return 0;

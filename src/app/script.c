@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include "app.h"
+#include "scale.h"
 
 #define MAXARGS  64
 #define MAXDEPTH 16
@@ -167,6 +168,7 @@ int ura_run_file(uraCtx* c, const char* path) {
     fclose(f);
     return ura_fail(c, "cannot run '%s': it is a directory; accepted: a script file", path);
   }
+  ura_scale_input(c, f, path); /* a shard's part may not replace it */
   c->depth++;
   int rc = ura_run_stream(c, f, path);
   c->depth--;
