@@ -328,9 +328,13 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv);
    cannot take for a pipe; both can be written back by save session */
 int ura_terminal_check(uraCtx* c, const char* value, char* norm, size_t n);
 int ura_output_check(uraCtx* c, const char* value, char* norm, size_t n);
-/* a word a script reads back as s: in double quotes, or single ones when s holds a double quote
-   (session.c); -1 when it cannot be written (a control byte, or both quote characters) */
+/* a word a script reads back as s: ura_put_word writes it in single quotes, or in double ones
+   when s holds a single quote (session.c). ura_word_ok: -1 when the script reader cannot take it
+   back (a control byte, or both quote characters); ura_word_inert: -1 also when it cannot be
+   quoted so that a shell would not expand it either (a single quote with a double quote, $,
+   backquote, backslash or !): the test of what save session writes */
 int ura_word_ok(const char* s);
+int ura_word_inert(const char* s);
 void ura_put_word(FILE* f, const char* s);
 void ura_last_free(uraCtx* c);
 

@@ -376,10 +376,12 @@ static int model_save(uraCtx* c, const char* path) {
 
 static int model_load(uraCtx* c, const char* path) {
   if (ura_dry(c, "model load")) return -1;
-  if (ura_word_ok(path)) {
+  if (ura_word_inert(path)) {
     return ura_fail(c,
-                    "model load: cannot use '%s': the name holds a control character or both "
-                    "quote characters; accepted: a file name that save session can write back",
+                    "model load: cannot use '%s': the name holds a control character, or a "
+                    "single quote with a double quote, $, backquote, backslash or !; accepted: "
+                    "a file name that save session can write back as one quoted word that "
+                    "neither uasrisk nor a shell expands",
                     path);
   }
   FILE* f = fopen(path, "r");
