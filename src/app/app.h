@@ -150,6 +150,8 @@ typedef struct uraCtx {
   urModel* model;          /* compiled with the overrides; NULL: stale */
   urImpactSetup setup;     /* settled stance of the model; valid if have_setup */
   int have_setup;
+  char noted[240];   /* the last note on a set-up (a start pose that may overlap the person):
+                                      each is printed once */
   urImpactWork work; /* the single-impact work space (histories of the last impact) */
   int have_work;
   int have_impact; /* the work holds a finished impact */
@@ -362,6 +364,9 @@ const urModel* ura_model(uraCtx* c);       /* compiled model, or NULL with c->er
 const urImpactSetup* ura_setup(uraCtx* c); /* settled stance, or NULL with c->err */
 void ura_model_stale(uraCtx* c);
 int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or -1 */
+/* the values a model parameter accepts, for messages: "0.15 m to 0.65 m: REASON" (its range,
+   param ... range= why=, uasrisk-model(5)), or "any number" */
+void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
 /* the live state becomes ns if the model compiles with its parameter overrides (unchanged
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
