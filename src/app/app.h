@@ -364,7 +364,7 @@ const urModel* ura_model(uraCtx* c);       /* compiled model, or NULL with c->er
 const urImpactSetup* ura_setup(uraCtx* c); /* settled stance, or NULL with c->err */
 void ura_model_stale(uraCtx* c);
 int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or -1 */
-/* the values a model parameter accepts, for messages: "0.15 m to 0.65 m: REASON" (its range,
+/* the values a model parameter accepts, for messages: "0.15 to 0.65 m: REASON" (its range,
    param ... range= why=, uasrisk-model(5)), or "any number" */
 void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);

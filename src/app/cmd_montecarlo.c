@@ -436,7 +436,7 @@ static int draw(uraCtx* c, struct uraMc* m, const uraState* base, uraState* ns) 
                    ? -1
                    : ura_model_param_find(c, names[k]);
       if (pk >= 0 && !ur_param_accepts(&c->model->param[pk], x[k])) {
-        char v[160], range[300];
+        char v[160], range[400];
         input_text(c, names[k], x[k], v, sizeof v);
         ura_param_range_text(c, &c->model->param[pk], range, sizeof range);
         ura_fail(c,

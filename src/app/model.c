@@ -313,9 +313,9 @@ void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n) {
     snprintf(buf, n, "any number");
     return;
   }
-  ura_model_value_text(c, p->name, p->lo, lo, sizeof lo);
-  ura_model_value_text(c, p->name, p->hi, hi, sizeof hi);
-  snprintf(buf, n, "%s to %s%s%s%s", lo, hi, *p->unit ? "" : " (no unit)", *p->why ? ": " : "",
+  ura_num_shortest(lo, sizeof lo, p->lo);
+  ura_num_shortest(hi, sizeof hi, p->hi);
+  snprintf(buf, n, "%s to %s %s%s%s", lo, hi, *p->unit ? p->unit : "(no unit)", *p->why ? ": " : "",
            p->why);
 }
 
@@ -377,7 +377,7 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
   }
   v *= f;
   if (k >= 0 && !ur_param_accepts(&c->model->param[k], v)) {
-    char val[64], range[200];
+    char val[64], range[400];
     ura_model_value_text(c, name, v, val, sizeof val);
     ura_param_range_text(c, &c->model->param[k], range, sizeof range);
     return ura_fail(c, "set %s: %s is out of range; accepted: %s", name, val, range);

@@ -215,7 +215,7 @@ int ura_cmd_dist(uraCtx* c, int argc, char** argv) {
   char why[300];
   if (ur_dist_check(&d.d, why, sizeof why)) {
     int k = ura_param_find(name) || ura_injury_find(name) >= 0 ? -1 : ura_model_param_find(c, name);
-    char range[300] = "";
+    char range[400] = "";
     if (k >= 0) ura_param_range_text(c, &c->model->param[k], range, sizeof range);
     return ura_fail(c, "dist %s: %s%s%s%s", name, why, *range ? " (" : "", range,
                     *range ? ")" : "");
