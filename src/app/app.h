@@ -367,6 +367,8 @@ int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or
 /* the values a model parameter accepts, for messages: "0.15 to 0.65 m: REASON" (its range,
    param ... range= why=, uasrisk-model(5)), or "any number" */
 void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
+/* a model parameter's value for messages, six digits and its SI unit: "1e+20 N*m/rad" */
+void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
 /* the live state becomes ns if the model compiles with its parameter overrides (unchanged
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */

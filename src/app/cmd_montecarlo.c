@@ -106,11 +106,11 @@ static void input_text(uraCtx* c, const char* name, double v, char* buf, size_t 
   const char* unit = p ? p->unit : "";
   if (i >= 0) ur_injury_param_info(i, NULL, &unit, NULL);
   if (!strcmp(name, "wind_dir") || !strcmp(name, "face_dir")) unit = "deg";
-  char t[64];
+  char t[96];
   if (p || i >= 0 || *unit)
     snprintf(t, sizeof t, "%g%s%s", v, *unit ? " " : "", unit);
   else
-    ura_model_value_text(c, name, v, t, sizeof t); /* a model parameter in its unit */
+    ura_model_value_brief(c, name, v, t, sizeof t); /* a model parameter in its SI unit */
   snprintf(buf, n, "%s = %s", name, t);
 }
 

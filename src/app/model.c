@@ -251,8 +251,8 @@ static void params_set(uraCtx* c, char* buf, size_t n) {
   buf[0] = 0;
   for (int i = 0; i < c->st.nov && k < n; i++) {
     if (!c->st.ov_user[i]) continue;
-    char v[64];
-    ura_model_value_text(c, c->st.ov_name[i], c->st.ov_val[i], v, sizeof v);
+    char v[80];
+    ura_model_value_brief(c, c->st.ov_name[i], c->st.ov_val[i], v, sizeof v);
     k += (size_t)snprintf(buf + k, n - k, "%s%s = %s", k ? ", " : " with ", c->st.ov_name[i], v);
   }
   if (k && k < n) snprintf(buf + k, n - k, " (set)");
@@ -305,6 +305,12 @@ const urImpactSetup* ura_setup(uraCtx* c) {
   c->have_setup = 1;
   setup_note(c);
   return &c->setup;
+}
+
+void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n) {
+  int k = ura_model_param_find(c, name);
+  const char* u = k >= 0 ? c->model->param[k].unit : "";
+  snprintf(buf, n, "%g%s%s", v, *u ? " " : "", u);
 }
 
 void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n) {
@@ -377,10 +383,11 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
   }
   v *= f;
   if (k >= 0 && !ur_param_accepts(&c->model->param[k], v)) {
-    char val[64], range[400];
-    ura_model_value_text(c, name, v, val, sizeof val);
+    char range[400];
+    const char* u = unit ? unit : c->model->param[k].unit;
     ura_param_range_text(c, &c->model->param[k], range, sizeof range);
-    return ura_fail(c, "set %s: %s is out of range; accepted: %s", name, val, range);
+    return ura_fail(c, "set %s: %s%s%s is out of range; accepted: %s", name, value, *u ? " " : "",
+                    u, range);
   }
 
   /* the new override list */
