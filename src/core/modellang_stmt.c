@@ -65,9 +65,9 @@ static int param_range(Parser* p, const urlStmt* st, int i, const char* name, do
                       name);
     }
     size_t k = 0;
-    for (int j = i; j < st->nword; j++) {
+    for (int j = i; j < st->nword && k < nwhy; j++) {
       const char* t = url_word(&p->lx, st->word + j) + (j == i ? 4 : 0);
-      k += (size_t)snprintf(why + k, k < nwhy ? nwhy - k : 0, "%s%s", k ? " " : "", t);
+      k += (size_t)snprintf(why + k, nwhy - k, "%s%s", k ? " " : "", t);
     }
     if (k == 0 || k >= nwhy) {
       return url_fail(p, line, "param '%s': why= needs a reason of 1 to %d characters (got %zu)",
