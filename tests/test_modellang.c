@@ -528,7 +528,28 @@ static const struct {
      "x.urm:4: param 'q': unknown unit 'furlong'; expected one of m, "
      "mm, cm, kg, g, s, ms, N, kN, Pa, kPa, MPa, GPa, atm, bar, deg, rad, J, L, none, or several "
      "joined by * and / (N*m/rad)"},
-    {PRE "param q\n", "x.urm:4: param takes NAME VALUE [UNIT]; got 1 word(s) after 'param'"},
+    {PRE "param q\n",
+     "x.urm:4: param takes NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]]; got 1 word(s) after "
+     "'param'"},
+    {PRE "param q 3 mm range=1,2 why=held by two stops\n",
+     "x.urm:4: param 'q': its value 0.003 m is outside its range 0.001 to 0.002 m: held by two "
+     "stops"},
+    {PRE "param q 3 range=4,2\n",
+     "x.urm:4: param 'q': range: LO must not exceed HI (got 4, 2 after conversion to SI)"},
+    {PRE "param q 3 range=1\n",
+     "x.urm:4: param 'q': range: '1' is not two numbers; expected range=LO,HI (in the unit of "
+     "the value)"},
+    {PRE "param q 3 range=1,x\n", "x.urm:4: param 'q': range: 'x' is not a number*"},
+    {PRE "param q 3 why=no range\n",
+     "x.urm:4: param 'q': why= explains a range; expected range=LO,HI before it"},
+    {PRE "param q 3 m range=1,4 why=\n",
+     "x.urm:4: param 'q': why= needs a reason of 1 to 159 characters (got 0)"},
+    {PRE "param q 3 m range=1,4 stiff\n",
+     "x.urm:4: param takes NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]]; got 'stiff'"},
+    {PRE "param q 3 m range=1,4 why=caf\xc3\xa9\n",
+     "x.urm:4: param 'q': why= holds a character that is not printable ASCII*"},
+    {"param q 3 range=1,4 why=first\nparam q 5\n",
+     "x.urm:2: param 'q': its value 5 is outside its range 1 to 4 (no unit): first"},
     {PRE "param 9q 1\n", "x.urm:4: param: '9q' is not a valid name*"},
     {PRE "body abcdefghijabcdefghijabcdefghijkl parent=world joint=fixed pos=0,0,0 mass=1\n",
      "x.urm:4: body: name 'abcdefghijabcdefghijabcdefghijkl' is too long (32 characters)*"},
@@ -679,6 +700,49 @@ static void test_scales_lock_sat(void** state) {
   assert_near(m->body[1].rst[0].sat, 400, 0);
   assert_near(m->body[1].rst[0].k, 5000, 0);
   ur_model_free(m);
+}
+
+/* a parameter's range and reason reach the model, in SI; an override is held to it; a later
+   definition without a range keeps the earlier one */
+static void test_param_range(void** state) {
+  char err[256];
+  const char* text =
+      "param k 26 kN/m range=2.6,260 why=a chest; stiffer is rigid\n"
+      "param free 1\n";
+  urModel* m = parse1(text, NULL, 0, err);
+  assert_non_null(m);
+  int k = ur_name_param(m, "k"), f = ur_name_param(m, "free");
+  assert_near(m->param[k].lo, 2600, 0);
+  assert_near(m->param[k].hi, 260000, 0);
+  assert_string_equal(m->param[k].why, "a chest; stiffer is rigid");
+  assert_true(ur_param_accepts(&m->param[k], 2600) && ur_param_accepts(&m->param[k], 260000));
+  assert_false(ur_param_accepts(&m->param[k], 2599.9) || ur_param_accepts(&m->param[k], NAN));
+  assert_true(isinf(m->param[f].lo) && isinf(m->param[f].hi) && !m->param[f].why[0]);
+  assert_true(ur_param_accepts(&m->param[f], -1e300));
+  ur_model_free(m);
+
+  urOverride ov = {"k", 1e300};
+  assert_null(parse1(text, &ov, 1, err));
+  assert_string_equal(err,
+                      "t.urm:1: param 'k': the value set, 1e+300 N/m, is outside its range 2600 "
+                      "to 260000 N/m: a chest; stiffer is rigid");
+  ov.value = 260000;
+  m = parse1(text, &ov, 1, err);
+  assert_non_null(m);
+  ur_model_free(m);
+
+  urModelSource src[2] = {{text, "a.urm", 1}, {"param k 30 kN/m\n", "b.urm", 1}};
+  m = ur_model_parse(src, 2, NULL, 0, err, sizeof err);
+  assert_non_null(m);
+  k = ur_name_param(m, "k");
+  assert_near(m->param[k].value, 30000, 0);
+  assert_near(m->param[k].hi, 260000, 0);
+  ur_model_free(m);
+  src[1].text = "param k 300 kN/m\n";
+  assert_null(ur_model_parse(src, 2, NULL, 0, err, sizeof err));
+  assert_string_equal(err,
+                      "b.urm:1: param 'k': its value 300000 N/m is outside its range 2600 "
+                      "to 260000 N/m: a chest; stiffer is rigid");
 }
 
 static void test_malformed(void** state) {
@@ -1065,6 +1129,7 @@ int main(void) {
       cmocka_unit_test(test_preamble_valid),
       cmocka_unit_test(test_malformed),
       cmocka_unit_test(test_scales_lock_sat),
+      cmocka_unit_test(test_param_range),
       cmocka_unit_test(test_short_err),
       cmocka_unit_test(test_roles_presets),
       cmocka_unit_test(test_pairs),

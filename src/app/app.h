@@ -150,6 +150,8 @@ typedef struct uraCtx {
   urModel* model;          /* compiled with the overrides; NULL: stale */
   urImpactSetup setup;     /* settled stance of the model; valid if have_setup */
   int have_setup;
+  char noted[240];   /* the last note on a set-up (a start pose that may overlap the person):
+                                      each is printed once */
   urImpactWork work; /* the single-impact work space (histories of the last impact) */
   int have_work;
   int have_impact; /* the work holds a finished impact */
@@ -328,9 +330,13 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv);
    cannot take for a pipe; both can be written back by save session */
 int ura_terminal_check(uraCtx* c, const char* value, char* norm, size_t n);
 int ura_output_check(uraCtx* c, const char* value, char* norm, size_t n);
-/* a word a script reads back as s: in double quotes, or single ones when s holds a double quote
-   (session.c); -1 when it cannot be written (a control byte, or both quote characters) */
+/* a word a script reads back as s: ura_put_word writes it in single quotes, or in double ones
+   when s holds a single quote (session.c). ura_word_ok: -1 when the script reader cannot take it
+   back (a control byte, or both quote characters); ura_word_inert: -1 also when it cannot be
+   quoted so that a shell would not expand it either (a single quote with a double quote, $,
+   backquote, backslash or !): the test of what save session writes */
 int ura_word_ok(const char* s);
+int ura_word_inert(const char* s);
 void ura_put_word(FILE* f, const char* s);
 void ura_last_free(uraCtx* c);
 
@@ -361,6 +367,11 @@ const urModel* ura_model(uraCtx* c);       /* compiled model, or NULL with c->er
 const urImpactSetup* ura_setup(uraCtx* c); /* settled stance, or NULL with c->err */
 void ura_model_stale(uraCtx* c);
 int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or -1 */
+/* the values a model parameter accepts, for messages: "0.15 to 0.65 m: REASON" (its range,
+   param ... range= why=, uasrisk-model(5)), or "any number" */
+void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
+/* a model parameter's value for messages, six digits and its SI unit: "1e+20 N*m/rad" */
+void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
 /* the live state becomes ns if the model compiles with its parameter overrides (unchanged
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */

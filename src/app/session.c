@@ -14,15 +14,28 @@ int ura_word_ok(const char* s) {
   return strchr(s, '"') && strchr(s, '\'') ? -1 : 0;
 }
 
+/* what a POSIX shell expands inside double quotes: parameters and commands ($), commands
+   (backquote), escapes (backslash), and bash's history (!) */
+static int shell_active(const char* s) {
+  return strpbrk(s, "$`\\!") != NULL;
+}
+
+int ura_word_inert(const char* s) {
+  if (ura_word_ok(s)) return -1;
+  return strchr(s, '\'') && shell_active(s) ? -1 : 0;
+}
+
 void ura_put_word(FILE* f, const char* s) {
-  char q = strchr(s, '"') ? '\'' : '"';
+  char q = strchr(s, '\'') ? '"' : '\'';
   fprintf(f, "%c%s%c", q, s, q);
 }
 
 /* write the state as commands: defaults, loaded model parts, case, then every setting that
    differs from what those give (session_base.c; never threads or the plot output, which belong
    to the machine and the last plot); every text is one quoted word that the reader takes back as
-   it is (the terminal was checked when set: nothing in it is run) */
+   it is and a shell would not expand (single quotes; double quotes only around a word that holds
+   a single quote and nothing a shell expands: ura_word_inert; the terminal was checked when set,
+   nothing in it is run) */
 void ura_session_write(uraCtx* c, FILE* f) {
   char val[2048], was[2048];
   uraState base;
