@@ -160,17 +160,19 @@ sensitivity: all
 	@sh scripts/sensitivity.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/sensitivity-step$(STEP)) \
 	  $(if $(VARIANTS),-v $(VARIANTS))
 
-# the same tests on a sanitized build of its own (build-san/uasrisk is what the shell tests run);
-# its lanes are the portable vector code without the AVX2 clones (urNO_CLONES), so that the
-# lanes-equal-alone tests cover both code paths (make check runs the AVX2 clone where the
-# processor has AVX2). The valgrind session runs a plain build of the same portable path
-# (build-vg/uasrisk): valgrind 3.19 cannot decode every AVX instruction GCC emits in the clones.
+# the same tests on a sanitized build of its own (build-san/uasrisk and build-san/calibrate are
+# what the shell tests run: it needs nothing of a plain 'make check'); its lanes are the portable
+# vector code without the AVX2 clones (urNO_CLONES), so that the lanes-equal-alone tests cover
+# both code paths (make check runs the AVX2 clone where the processor has AVX2). The valgrind
+# session runs a plain build of the same portable path (build-vg/uasrisk): valgrind 3.19 cannot
+# decode every AVX instruction GCC emits in the clones.
 SAN_OPT = -O2 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
   -DurNO_CLONES
 check-san:
 	@sh scripts/setup.sh san
 	@$(MAKE) --no-print-directory BUILD=build-san BIN=build-san/uasrisk OPT='$(SAN_OPT)' \
-	  LDFLAGS='-pthread $(SAN_OPT)' build-san/uasrisk $(TEST_SRC:tests/%.c=build-san/tests/%)
+	  LDFLAGS='-pthread $(SAN_OPT)' build-san/uasrisk build-san/calibrate \
+	  $(TEST_SRC:tests/%.c=build-san/tests/%)
 	@$(MAKE) --no-print-directory BUILD=build-vg BIN=build-vg/uasrisk OPT='-O2 -g -DurNO_CLONES' \
 	  build-vg/uasrisk
 	@sh scripts/check-san.sh build-san build-vg/uasrisk

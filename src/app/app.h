@@ -115,12 +115,13 @@ typedef struct {
 #define uraMAXSWEEPS 32
 typedef struct {
   char casename[8];
-  int over_face;     /* 0: over wind (face fixed), 1: over face (wind fixed) */
-  double fixed;      /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
-  double step;       /* grid pitch, m */
-  char changes[200]; /* settings that differ from the case preset, or "none" */
-  int n;             /* values, in increasing order */
-  double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
+  int over_face;                 /* 0: over wind (face fixed), 1: over face (wind fixed) */
+  double fixed;                  /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
+  double step;                   /* grid pitch, m */
+  char changes[200];             /* settings that differ from the case preset, or "none" */
+  int n;                         /* values, in increasing order */
+  double *x, *speed, *angle, *q; /* n values each, in one block at x (owned): no limit but
+                                    the command's length */
 } uraSweep;
 
 /* ---- context ---- */
@@ -194,6 +195,12 @@ void ura_state_defaults(uraState* s);
 int ura_parse_number(const char* s, double* v);
 /* a comma-separated list of numbers; returns count or -1 */
 int ura_parse_list(const char* s, double* v, int max);
+/* the same, and on failure why (n bytes) says what is wrong, naming the value by its place
+   rather than echoing the list: "value 3 of 70, 'x', is not a number", "value 2 of 3 is
+   empty", "70 values, more than 64", "the list is empty" */
+int ura_parse_list_why(const char* s, double* v, int max, char* why, size_t n);
+/* the number of values a comma-separated list holds (its commas plus one) */
+int ura_list_count(const char* s);
 
 /* ---- parameters (one table drives set, show, save and completion) ---- */
 
