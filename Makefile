@@ -13,8 +13,9 @@
 #                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
 #   make check-san  every test again on an AddressSanitizer+UBSan build (build-san/), and a
 #                 session under valgrind (scripts/check-san.sh)
-#   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c, FUZZ_RUNS executions (FUZZ_RUN_RUNS for
-#                 the executing script target) or FUZZ_SECONDS each (clang; build-fuzz/)
+#   make fuzz     libFuzzer targets tests/fuzz/fuzz_*.c (model language, scripts, part files),
+#                 FUZZ_RUNS executions (FUZZ_RUN_RUNS for the executing script target) or
+#                 FUZZ_SECONDS each (clang; build-fuzz/)
 #   make mpi      ./uasimpact-mpi, the MPI build (OpenMPI from Debian; mpirun -n N ./uasimpact-mpi FILE)
 #   make check-tsan  a ThreadSanitizer build (build-tsan/) runs a short grid on 2 threads and is
 #                 interrupted by SIGINT in the middle (scripts/check-tsan.sh)
@@ -159,17 +160,19 @@ sensitivity: all
 	@sh scripts/sensitivity.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/sensitivity-step$(STEP)) \
 	  $(if $(VARIANTS),-v $(VARIANTS))
 
-# the same tests on a sanitized build of its own (build-san/uasimpact is what the shell tests run);
-# its lanes are the portable vector code without the AVX2 clones (urNO_CLONES), so that the
-# lanes-equal-alone tests cover both code paths (make check runs the AVX2 clone where the
-# processor has AVX2). The valgrind session runs a plain build of the same portable path
-# (build-vg/uasimpact): valgrind 3.19 cannot decode every AVX instruction GCC emits in the clones.
+# the same tests on a sanitized build of its own (build-san/uasimpact and build-san/calibrate are
+# what the shell tests run: it needs nothing of a plain 'make check'); its lanes are the portable
+# vector code without the AVX2 clones (urNO_CLONES), so that the lanes-equal-alone tests cover
+# both code paths (make check runs the AVX2 clone where the processor has AVX2). The valgrind
+# session runs a plain build of the same portable path (build-vg/uasimpact): valgrind 3.19 cannot
+# decode every AVX instruction GCC emits in the clones.
 SAN_OPT = -O2 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
   -DurNO_CLONES
 check-san:
 	@sh scripts/setup.sh san
 	@$(MAKE) --no-print-directory BUILD=build-san BIN=build-san/uasimpact OPT='$(SAN_OPT)' \
-	  LDFLAGS='-pthread $(SAN_OPT)' build-san/uasimpact $(TEST_SRC:tests/%.c=build-san/tests/%)
+	  LDFLAGS='-pthread $(SAN_OPT)' build-san/uasimpact build-san/calibrate \
+	  $(TEST_SRC:tests/%.c=build-san/tests/%)
 	@$(MAKE) --no-print-directory BUILD=build-vg BIN=build-vg/uasimpact OPT='-O2 -g -DurNO_CLONES' \
 	  build-vg/uasimpact
 	@sh scripts/check-san.sh build-san build-vg/uasimpact
@@ -178,6 +181,7 @@ check-san:
 # tests/fuzz/corpus_*. Each target has its own build: the model-language target instruments
 # everything for coverage; the command targets only the application (the core, the model parser
 # above all, is the model target's field and would slow them five-fold), under ASan+UBSan all.
+# The part file target (fuzz_part: the reader merge trusts) shares the command targets' build.
 # The executing script target (fuzz_run: short simulations, files in a scratch folder, a fake
 # gnuplot) is slower per input: FUZZ_RUN_RUNS executions.
 FUZZ_SAN = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
@@ -190,9 +194,10 @@ fuzz:
 	@$(MAKE) --no-print-directory BUILD=build-fuzz/model CC=clang OPT='$(FUZZ_OPT)' \
 	  build-fuzz/model/fuzz/fuzz_model
 	@$(MAKE) --no-print-directory BUILD=build-fuzz/script CC=clang OPT='$(FUZZ_OPT)' \
-	  CORE_OPT='$(FUZZ_SAN)' build-fuzz/script/fuzz/fuzz_script build-fuzz/script/fuzz/fuzz_run
+	  CORE_OPT='$(FUZZ_SAN)' build-fuzz/script/fuzz/fuzz_script build-fuzz/script/fuzz/fuzz_run \
+	  build-fuzz/script/fuzz/fuzz_part
 	@sh scripts/fuzz.sh $(FUZZ_RUNS) $(FUZZ_SECONDS) build-fuzz/model/fuzz/fuzz_model \
-	  build-fuzz/script/fuzz/fuzz_script
+	  build-fuzz/script/fuzz/fuzz_script build-fuzz/script/fuzz/fuzz_part
 	@sh scripts/fuzz.sh $(FUZZ_RUN_RUNS) $(FUZZ_SECONDS) build-fuzz/script/fuzz/fuzz_run
 
 # ThreadSanitizer: the application and the core built with -fsanitize=thread (build-tsan/), a

@@ -1,12 +1,12 @@
 #!/bin/sh
 # check-san.sh BUILD [PLAIN]: the whole test suite again on the AddressSanitizer+UBSan build in
-# BUILD (its test programs, and the shell tests run on BUILD/uasimpact), then a representative
-# session (impacts, their histories, a coarse grid, grid show, a case switched back with its kept
-# model and its grid recalled, save and export, a model saved and loaded back, refused commands)
-# under valgrind on the plain build PLAIN (default ./uasimpact; valgrind does not run sanitized
-# programs, and the Makefile gives it a build without the AVX2 clones, some of whose
-# instructions valgrind 3.19 cannot decode): any memory error or definite leak fails. Prints the
-# times.
+# BUILD (its test programs, and the shell tests run on BUILD/uasimpact and BUILD/calibrate), then a
+# representative session (impacts, their histories, a coarse grid, grid show, a case switched
+# back with its kept model and its grid recalled, save and export, a model saved and loaded
+# back, refused commands) under valgrind on the plain build PLAIN (default ./uasimpact; valgrind
+# does not run sanitized programs, and the Makefile gives it a build without the AVX2 clones,
+# some of whose instructions valgrind 3.19 cannot decode): any memory error or definite leak
+# fails. Prints the times.
 set -u
 b=$1
 plain=${2:-./uasimpact}
@@ -18,7 +18,7 @@ export ASAN_OPTIONS UBSAN_OPTIONS
 t0=$(date +%s)
 tests=$(find "$b"/tests -name 'test_*' -type f ! -name '*.d' | LC_ALL=C sort)
 # shellcheck disable=SC2086
-UASIMPACT=$b/uasimpact sh scripts/runtests.sh $tests || status=1
+UASIMPACT=$b/uasimpact CALIBRATE=$b/calibrate sh scripts/runtests.sh $tests || status=1
 t1=$(date +%s)
 echo "check-san: sanitized test suite: $((t1 - t0)) s"
 

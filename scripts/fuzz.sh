@@ -1,7 +1,8 @@
 #!/bin/sh
 # fuzz.sh RUNS SECONDS BIN...: run each libFuzzer target BIN (.../fuzz_NAME) until RUNS
 # executions or SECONDS, whichever comes first (RUNS 0: only the corpus), on its committed
-# corpus tests/fuzz/corpus_NAME, with the dictionary tests/fuzz/NAME.dict when there is one.
+# corpus tests/fuzz/corpus_NAME, with the dictionary tests/fuzz/NAME.dict when there is one
+# (the targets: fuzz_model, fuzz_script, fuzz_run, fuzz_part).
 # New inputs go to new_NAME beside BIN (the committed corpus is only read); with
 # FUZZ_MINIMISE=1 the corpus is afterwards replaced by the minimal set (libFuzzer -merge=1)
 # covering it and the new inputs. Prints the executions each target reached; a crash, a timeout,

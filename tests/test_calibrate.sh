@@ -1,7 +1,8 @@
 # test_calibrate.sh: 'make calibrate' (src/tools/calibrate.c): one evaluation's log row (every
 # free parameter at its start, each case's loss and HIC share, the discrete choices, the total =
 # the parts plus the HIC-share shortfalls), a setting that changes the loss, a malformed spec
-# named by file and line, and the man page declaring every free parameter of the spec
+# named by file and line, and the man page declaring every free parameter of the spec; make
+# check-san builds and uses a sanitized calibrate of its own
 . tests/lib.sh
 CAL=${CALIBRATE:-build/calibrate}
 SPEC=src/models/calibrate.spec
@@ -42,4 +43,14 @@ for name in $(awk '$1 == "free" { print $2 }' "$SPEC"); do
   grep -q "^\.BR\{0,1\} .*\b$name\b" "$TMP/decl" || { echo "not declared: $name"; ok=0; }
 done
 check "every free parameter declared in uasimpact-model(5)" [ "$ok" -eq 1 ]
+
+# issue 30: 'make check-san' on a fresh clone (no build/calibrate: only 'make check' makes it)
+# builds the sanitized tool and hands it to this test as CALIBRATE (make -n: nothing is built)
+if command -v make >/dev/null 2>&1; then
+  env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -nB check-san >"$TMP/san" 2>&1
+  check "check-san builds its calibrate" grep -q -- " -o build-san/calibrate src/tools/calibrate.c " "$TMP/san"
+  check "check-san runs the tests on it" grep -q '^UASIMPACT=$b/uasimpact CALIBRATE=$b/calibrate sh scripts/runtests.sh' scripts/check-san.sh
+else
+  skip "check-san builds its calibrate" "make is not installed"
+fi
 finish

@@ -37,6 +37,7 @@ extern "C" {
 #define urNAMELEN   32  /* bytes in a name, including the terminating 0 */
 #define urMAXBAGTGT 32  /* target ellipsoids per airbag */
 #define urMSGLEN    160 /* bytes in error / status messages */
+#define urWHYLEN    160 /* bytes in the reason of a parameter's range */
 
 //---------------------------------- enums ---------------------------------------------------------
 
@@ -180,6 +181,9 @@ typedef struct {
   char name[urNAMELEN];
   double value;
   char unit[urNAMELEN]; /* SI unit from its param line (N/m, Pa; "": none given) */
+  double lo, hi;        /* the values it accepts, SI, both ends included (param ... range=;
+                           -inf, inf: any) */
+  char why[urWHYLEN];   /* the physical reason of that range (why=; "": none given) */
 } urParam;
 
 /* the roles an impact needs, declared by the model's role statements (uasimpact-model(5)), and
@@ -402,8 +406,16 @@ int ur_model_add_airbag(urModel* m, const urAirbag* bag);
 int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj, int dof,
                         const double pos[3], const double quat[4]);
 
-/* Named parameter (set or overwrite). */
+/* Named parameter (set or overwrite; a new one accepts any value). */
 int ur_model_set_param(urModel* m, const char* name, double value);
+
+/* The range of a named parameter, SI, both ends included, and its reason (NULL: none); the
+   value must lie in it. Returns the parameter id, or -1 (absent, compiled, lo > hi, a NaN, the
+   value outside, a reason of urWHYLEN bytes or more). */
+int ur_model_set_param_range(urModel* m, const char* name, double lo, double hi, const char* why);
+
+/* 1 if v is a value parameter p accepts (within its range, not NaN), else 0. */
+int ur_param_accepts(const urParam* p, double v);
 
 /* The total mass of the tree rooted at body root (before or after compiling), kg. */
 double ur_model_tree_mass(const urModel* m, int root);

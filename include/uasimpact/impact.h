@@ -53,6 +53,10 @@ typedef struct {
   double rmax;         /* R_max, m */
   double head_cg[3];   /* settled head CG, world, m */
   double head_top;     /* settled height of the head top, m */
+  double overlap;      /* how far the highest person ellipsoid the drone can touch reaches
+                                      above the head top, m (> 0: a drone started R_max above the
+                                      head top may already overlap it; 0: none) */
+  int overlap_geom;    /* that ellipsoid, or -1 */
   double neck_preload; /* settled upper-neck axial force, N (tension > 0) */
   double window;       /* a run ends this long after its first contact, s (model
                                       parameter "window"; none: until the engine ends it) */
@@ -120,7 +124,9 @@ typedef struct {
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual);
 
 /* whether a compiled model can run impacts, before anything is settled: the roles it declares
-   (role drone=, head=, head_acc=, neck=, head_pos=) and the bounds of the simulation options,
+   (role drone=, head=, head_acc=, neck=, head_pos=), at least one contact pair or airbag target
+   between the drone and the person (without one every impact gives P = 0), the bounds of the
+   simulation options,
    each with its reason: dt in (0, 1e-3] s, tmax in (0, 1] s, at most 1e5 steps (tmax/dt),
    settle_dt (when the model defines it) in [dt, 0.01] s, window (when defined) > 0. 0, or -1
    with one line in err (n bytes) saying what was wrong and what is accepted. ur_impact_prepare

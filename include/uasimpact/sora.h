@@ -52,6 +52,15 @@ void ur_annexf_ca(const urAnnexFIn* in, urAnnexFOut* out);
 int ur_igrc(double density, double ca, double tlos, double compensation, double* raw, double* raw1,
             int* igrc, int* igrc_table);
 
+/* the classes of SORA 2.5's iGRC table (Table 2, E S.4.2.3(d)): 1 (a controlled ground area in
+   the two smallest columns) to 10 (< 50 000 ppl/km^2 in the three largest); nothing lies below
+   1, and above 10 an operation is outside SORA's scope (the certified category) */
+#define urIGRC_TABLE_MIN 1
+#define urIGRC_TABLE_MAX 10
+/* a class limited to the table's range: *igrc clamped to [urIGRC_TABLE_MIN, urIGRC_TABLE_MAX];
+   -1 when it was below, +1 above, 0 within */
+int ur_igrc_clamp(int* igrc);
+
 #ifdef __cplusplus
 }
 #endif

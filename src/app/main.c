@@ -12,7 +12,7 @@ static void usage(FILE* f) {
   fprintf(f,
           "usage: uasimpact [-i] [-c COMMANDS] [FILE]...\n"
           "       uasimpact --shard I/N --part OUT [-c COMMANDS] [FILE]...\n"
-          "       uasimpact merge PART...\n"
+          "       uasimpact merge [-c COMMANDS] [--script FILE]... PART...\n"
           "  with no arguments: interactive on a terminal, else replay standard input\n"
           "  FILE         replay a session script\n"
           "  -c COMMANDS  run commands (separated by ';')\n"
@@ -54,9 +54,11 @@ int main(int argc, char** argv) {
   }
   if (!c->model) fprintf(stderr, "uasimpact: warning: built-in model: %s\n", c->err);
 
-  /* --shard I/N --part OUT, merge PART..., or an MPI rank (scale.h) */
+  /* --shard I/N --part OUT, merge [-c COMMANDS] [--script FILE]... PART..., or an MPI rank
+     (scale.h) */
   int st = ura_scale_args(c, &argc, &argv);
-  c->scale_grid = ura_scale_grid; /* called by each grid when c->scale is set */
+  c->scale_grid = ura_scale_grid;   /* called by each grid when c->scale is set */
+  c->scale_input = ura_scale_input; /* called for each file the run reads */
   if (st) return done(st);
 
   /* options first: -i anywhere, help */

@@ -78,6 +78,25 @@ head -c 4096 /dev/urandom >"$TMP/rand.ses"
 run "$TMP/rand.ses"
 check random_bytes cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ]'
 
+# issue 30: a UTF-8 byte-order mark as a script's first bytes (an editor's 'UTF-8 with BOM')
+# is skipped, in a file, a sourced file and standard input; anywhere else it is refused by name
+printf '\357\273\277set wind 3\nshow wind\n' >"$TMP/bom.ses"
+run "$TMP/bom.ses"
+check bom_first_skipped cond '[ "$RC" -eq 0 ] && [ ! -s "$TMP/err" ] && has "$TMP/out" "^wind  *3 m/s$"'
+run -c "source $TMP/bom.ses"
+check bom_sourced cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^wind  *3 m/s$"'
+run_in "$TMP/bom.ses"
+check bom_stdin cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^wind  *3 m/s$"'
+printf 'set wind 3\n\357\273\277show wind\n' >"$TMP/bom2.ses"
+run "$TMP/bom2.ses"
+check bom_later_refused cond '[ "$RC" -eq 1 ] && [ ! -s "$TMP/out" ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "bom2.ses:2: a byte-order mark (U+FEFF, bytes EF BB BF) at byte 1 of the line; accepted only as the first bytes of a script or session file"'
+run -c "$(printf 'set wind 3; show \357\273\277wind')"
+check bom_in_c_refused cond '[ "$RC" -eq 1 ] && has "$TMP/err" "^-c:1: a byte-order mark (U+FEFF, bytes EF BB BF) at byte 18 of the line"'
+printf 'show wind # a comment may hold one \357\273\277\n' >"$TMP/bom3.ses"
+run "$TMP/bom3.ses"
+check bom_in_comment cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^wind  *0 m/s$"'
+
 # quit ends a script successfully; replaying stdin without errors exits 0
 printf 'set wind 1\nquit\nbogus\n' >"$TMP/q.ses"
 run "$TMP/q.ses"

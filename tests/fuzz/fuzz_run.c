@@ -232,10 +232,24 @@ int LLVMFuzzerInitialize(int* argc, char*** argv) {
   snprintf(simfile, sizeof simfile, "%s/bin/sim.urm", scratch);
   FILE* g = fopen("bin/gnuplot", "w");
   if (!g) return 1;
-  fprintf(g,
-          "#!/bin/sh\n# fake gnuplot of fuzz_run: reads the script, writes its output file\n"
-          "s=$(cat)\nout=$(printf '%%s\\n' \"$s\" | sed -n \"s/^set output '\\(.*\\)'\\$/\\1/p\")\n"
-          "[ -n \"$out\" ] && echo fake >\"$out\"\nexit 0\n");
+  /* the output as complete as the plot's check (plot_file.c) asks: the format's first bytes and
+     end marker, by the terminal; a text terminal's text */
+  fprintf(
+      g,
+      "#!/bin/sh\n# fake gnuplot of fuzz_run: reads the script, writes its output file\n"
+      "s=$(cat)\nout=$(printf '%%s\\n' \"$s\" | sed -n \"s/^set output '\\(.*\\)'\\$/\\1/p\")\n"
+      "t=$(printf '%%s\\n' \"$s\" | sed -n 's/^set terminal \\([a-z]*\\).*/\\1/p')\n"
+      "[ -n \"$out\" ] || exit 0\n"
+      "case \"$t\" in\n"
+      "  png|pngcairo) printf '\\211PNG\\r\\n\\032\\n\\0\\0\\0\\0IEND\\256B`\\202' ;;\n"
+      "  jpeg) printf '\\377\\330\\377\\377\\331' ;;\n"
+      "  gif) printf 'GIF89a;' ;;\n"
+      "  pdfcairo) printf '%%%%PDF-1.5\\n%%%%%%%%EOF\\n' ;;\n"
+      "  epscairo|postscript) printf '%%%%!PS-Adobe-3.0\\n%%%%%%%%Trailer\\n%%%%%%%%EOF\\n' ;;\n"
+      "  svg) printf '<svg>\\n</svg>\\n' ;;\n"
+      "  canvas) printf '<html>\\n</html>\\n' ;;\n"
+      "  *) echo fake ;;\n"
+      "esac >\"$out\"\nexit 0\n");
   fclose(g);
   chmod("bin/gnuplot", 0755);
   char path[400];

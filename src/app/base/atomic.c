@@ -9,6 +9,9 @@
  * and sockets are refused. Every write error is reported with its own reason (a full disk is
  * "No space left on device"), and Ctrl-C stops a write that waits (a FIFO without a reader, a
  * pipe that is full) within 0.1 s.
+ * A file another process writes (gnuplot's plots) is opened with ura_atomic_open_file: only a
+ * regular file (or a new one) is accepted, the other process writes the temporary file by its
+ * name, and the caller checks it before ura_atomic_close renames it.
  */
 #define _GNU_SOURCE /* fopencookie */
 #include <errno.h>
@@ -135,7 +138,8 @@ static int fail_open(char* err, size_t nerr, const char* who, const char* path, 
   return afail(err, nerr, "%s: cannot write '%s': %s", who, path, strerror(e));
 }
 
-int ura_atomic_begin(uraAtomic* a, const char* path, const char* who, char* err, size_t nerr) {
+int ura_atomic_begin(uraAtomic* a, const char* path, const char* who, int regular, char* err,
+                     size_t nerr) {
   memset(a, 0, sizeof *a);
   a->fd = -1;
   if (!*path || strlen(path) >= sizeof a->path - 16) {
@@ -150,6 +154,18 @@ int ura_atomic_begin(uraAtomic* a, const char* path, const char* who, char* err,
   int exists = dupfd >= 0 ? fstat(dupfd, &sb) == 0 : stat(path, &sb) == 0;
   if (dupfd >= 0 && !exists) return fail_open(err, nerr, who, path, errno);
   if (!exists && errno != ENOENT) return fail_open(err, nerr, who, path, errno);
+  if (regular && (dupfd >= 0 || (exists && !S_ISREG(sb.st_mode)))) {
+    return afail(err, nerr,
+                 "%s: cannot write '%s': it %s %s; accepted: a regular file, replaced "
+                 "whole when complete (not a device, a FIFO or an open descriptor such as "
+                 "/dev/stdout: a text terminal such as dumb without an output draws on "
+                 "standard output); nothing was written",
+                 who, path, dupfd >= 0 ? "names" : "is",
+                 dupfd >= 0             ? "an open descriptor"
+                 : S_ISFIFO(sb.st_mode) ? "a FIFO"
+                 : S_ISCHR(sb.st_mode)  ? "a character device"
+                                        : kind_of(sb.st_mode));
+  }
   if (exists && !S_ISREG(sb.st_mode) && !S_ISFIFO(sb.st_mode) && !S_ISCHR(sb.st_mode)) {
     return afail(err, nerr,
                  "%s: cannot write '%s': it is %s; accepted: a regular file (replaced "

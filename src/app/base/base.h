@@ -10,6 +10,8 @@
 #ifndef UASIMPACT_BASE_H
 #define UASIMPACT_BASE_H
 
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -23,6 +25,12 @@
 int ura_parse_number(const char* s, double* v);
 /* a comma-separated list of numbers; returns count or -1 */
 int ura_parse_list(const char* s, double* v, int max);
+/* the same, and on failure why (n bytes) says what is wrong, naming the value by its place
+   rather than echoing the list: "value 3 of 70, 'x', is not a number", "value 2 of 3 is
+   empty", "70 values, more than 64", "the list is empty" */
+int ura_parse_list_why(const char* s, double* v, int max, char* why, size_t n);
+/* the number of values a comma-separated list holds (its commas plus one) */
+int ura_list_count(const char* s);
 
 /* ---- tabular output ---- */
 
@@ -34,9 +42,13 @@ void ura_table_note(uraTable* t, const char* fmt, ...) __attribute__((format(pri
    lines, wrapped at width (0: not wrapped) */
 void ura_table_write(FILE* f, uraTable* t, int csv, int width);
 
-/* a word a script reads back as s: in double quotes, or single ones when s holds a double quote
-   (word.c); -1 when it cannot be written (a control byte, or both quote characters) */
+/* a word a script reads back as s: ura_put_word writes it in single quotes, or in double ones
+   when s holds a single quote (word.c). ura_word_ok: -1 when the script reader cannot take it
+   back (a control byte, or both quote characters); ura_word_inert: -1 also when it cannot be
+   quoted so that a shell would not expand it either (a single quote with a double quote, $,
+   backquote, backslash or !): the test of what save session writes */
 int ura_word_ok(const char* s);
+int ura_word_inert(const char* s);
 void ura_put_word(FILE* f, const char* s);
 
 /* files written atomically (atomic.c): open a temporary file beside path (symbolic links
@@ -53,8 +65,11 @@ typedef struct {
   char tmp[4200];  /* the temporary file beside it */
 } uraAtomic;
 /* open, as above; close, as above. who names the command in messages ("save session"); a
-   failure is -1 with its message in err (nerr bytes) */
-int ura_atomic_begin(uraAtomic* a, const char* path, const char* who, char* err, size_t nerr);
+   failure is -1 with its message in err (nerr bytes). regular: for a file another process writes
+   by the name a->tmp (gnuplot): only a regular file or a new one; anything else (/dev/stdout,
+   /dev/fd/N, a FIFO, a device) is refused */
+int ura_atomic_begin(uraAtomic* a, const char* path, const char* who, int regular, char* err,
+                     size_t nerr);
 int ura_atomic_end(uraAtomic* a, int ok, const char* who, char* err, size_t nerr);
 
 /* Ctrl-C (interrupt.c): the handler for the whole run (interactive: repeated Ctrl-C never end
@@ -64,10 +79,33 @@ void ura_interrupt_install(int interactive);
 _Atomic int* ura_interrupt_flag(void);
 int ura_interrupted(void);
 void ura_interrupt_clear(void);
-/* the temporary file of a write under way, removed if SIGTERM, SIGHUP or a fatal Ctrl-C end the
-   program (at most one at a time); disarm when it is renamed or removed */
+/* the temporary file of a write under way, removed if a signal that ends the program by default
+   (SIGTERM, SIGHUP, SIGUSR1, SIGALRM, SIGPIPE, ...) or a fatal Ctrl-C ends it (at most one at a
+   time); disarm when it is renamed or removed */
 void ura_temp_arm(const char* path);
 void ura_temp_disarm(void);
+/* a child process (gnuplot) that writes the armed temporary file: killed and reaped before the
+   file is removed, so that it cannot make it again; disarm once it is reaped */
+void ura_child_arm(int pid);
+void ura_child_disarm(void);
+
+/* the keys that stop a wait on a raw terminal (keywatch.c) */
+typedef struct {
+  pthread_t thread;
+  int fd;           /* the terminal read */
+  int running;      /* the thread was started */
+  _Atomic int stop; /* asks the thread to end */
+  _Atomic int key;  /* the key that stopped the work: 3 (Ctrl-C), 'q', or 0 */
+} uraKeyWatch;
+
+/* watch fd (a terminal in raw mode) while the caller works: Ctrl-C or q sets the interrupt flag
+   (interrupt.c) within 0.05 s; other keys are dropped. 0, or -1 when no thread could start (the
+   work then runs unwatched) */
+int ura_keywatch_start(uraKeyWatch* w, int fd);
+
+/* end the watch; returns the key that stopped the work (3 for Ctrl-C, 'q') or 0 for none, and
+   clears the interrupt flag a key set */
+int ura_keywatch_stop(uraKeyWatch* w);
 
 /* text files (textin.c): the next line of f without its line end into *buf (realloc'ed, *cap
    its size), at most max bytes; its length, or one of these */
@@ -93,11 +131,12 @@ void ura_out_clear(void);
    command's output (the stream out it would go to; NULL when it is not to be paged: a
    command that takes the screen, runs others, starts a program or leaves, or a gathering under
    way) and release it: paged when taller than the screen, else written to out, which is
-   returned (NULL: nothing was gathered) */
+   returned (NULL: nothing was gathered); a pager that is missing, fails or dies is said on msg
+   and the text written to out: nothing computed is lost */
 int ura_tty(FILE* f);
 void ura_term_size(int* rows, int* cols);
 FILE* ura_pager_gather(FILE* out, const char* cmd);
-FILE* ura_pager_release(void);
+FILE* ura_pager_release(FILE* msg);
 
 /* the progress line on standard error (progress.c): a label before it (a sweep's value; NULL:
    none), the start of the work, one line "LABEL WHAT DONE/TOTAL NOUN, ELAPSED, about T left" */

@@ -7,13 +7,19 @@
  * Ctrl-C never end the program.
  *
  * The flag is a lock-free C11 atomic: written by the handler, read by the grid's worker threads
- * (relaxed order is enough: it only asks them to stop). SIGTERM and SIGHUP, and a fatal second
- * Ctrl-C, first remove the temporary file of a write under way (atomic.c), then end the program
- * as the signal would.
+ * (relaxed order is enough: it only asks them to stop). Every signal whose default is to end the
+ * program (SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGXCPU, SIGVTALRM,
+ * SIGPROF, SIGIO, SIGPWR, the real-time signals ...), and a fatal second Ctrl-C, first kill the
+ * gnuplot writing a plot file, then remove the temporary file of a write under way (atomic.c),
+ * then end the program as the signal would. A signal the program was started with ignored
+ * (nohup, trap '' PIPE) stays ignored; the faults (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) are
+ * left to the system and the sanitizers.
  */
 #include <signal.h>
 #include <stdatomic.h>
 #include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "base.h"
@@ -39,8 +45,24 @@ void ura_temp_disarm(void) {
   armed = 0;
 }
 
-/* remove the temporary file (async-signal-safe), then die of sig */
+/* the child writing the temporary file (0: none) */
+static volatile sig_atomic_t child;
+
+void ura_child_arm(int pid) {
+  child = pid;
+}
+
+void ura_child_disarm(void) {
+  child = 0;
+}
+
+/* kill and reap the child, remove the temporary file (async-signal-safe), then die of sig */
 static void die(int sig) {
+  if (child > 0) {
+    kill(child, SIGKILL);
+    waitpid(child, NULL, 0);
+  }
+  child = 0;
   if (armed) unlink(temp_path);
   armed = 0;
   signal(sig, SIG_DFL);
@@ -59,6 +81,31 @@ static void on_term(int sig) {
   die(sig);
 }
 
+/* the signals that end the program by default, but for SIGINT and the faults */
+static const int fatal[] = {
+    SIGHUP,    SIGTERM, SIGQUIT, SIGUSR1,   SIGUSR2, SIGALRM,
+    SIGPIPE,   SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO,
+#ifdef SIGPWR
+    SIGPWR,
+#endif
+#ifdef SIGSTKFLT
+    SIGSTKFLT,
+#endif
+};
+
+/* on_term for sig, unless the program was started with sig ignored or another handler has it */
+static void catch_fatal(int sig) {
+  struct sigaction old, sa;
+  if (sigaction(sig, NULL, &old)) return;
+  int ours =
+      !(old.sa_flags & SA_SIGINFO) && (old.sa_handler == SIG_DFL || old.sa_handler == on_term);
+  if (!ours) return;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_term;
+  sigfillset(&sa.sa_mask); /* one at a time: the first to come removes the file */
+  sigaction(sig, &sa, NULL);
+}
+
 void ura_interrupt_install(int interactive) {
   struct sigaction sa;
   memset(&sa, 0, sizeof sa);
@@ -67,9 +114,8 @@ void ura_interrupt_install(int interactive) {
   sa.sa_flags = 0; /* no SA_RESTART: a blocked read returns and can be stopped */
   patient = interactive;
   sigaction(SIGINT, &sa, NULL);
-  sa.sa_handler = on_term;
-  sigaction(SIGTERM, &sa, NULL);
-  sigaction(SIGHUP, &sa, NULL);
+  for (size_t i = 0; i < sizeof fatal / sizeof fatal[0]; i++) catch_fatal(fatal[i]);
+  for (int sig = SIGRTMIN; sig <= SIGRTMAX; sig++) catch_fatal(sig);
 }
 
 _Atomic int* ura_interrupt_flag(void) {

@@ -71,25 +71,42 @@ static const char* pager_command(void) {
   return p && *p ? p : "less -FRSX";
 }
 
-/* hand text to the pager; 0, or -1 when it could not run (the caller prints it itself) */
-static int page(const char* text, size_t n) {
+/* hand text to the pager; 0 when it ran and exited 0, else -1 with why (the caller prints the
+   text itself: nothing computed is lost when the pager is missing, fails or dies) */
+static int page(const char* text, size_t n, char* why, size_t nwhy) {
   const char* cmd = pager_command();
+  char name[120];
+  why[0] = 0;
   if (!strcmp(cmd, "cat")) return -1;
+  ura_printable(cmd, name, sizeof name);
   void (*old)(int) = signal(SIGPIPE, SIG_IGN);
   FILE* p = popen(cmd, "w");
   if (!p) {
     signal(SIGPIPE, old);
+    snprintf(why, nwhy, "the pager '%s' could not be started", name);
     return -1;
   }
   fwrite(text, 1, n, p);
   int st = pclose(p);
   signal(SIGPIPE, old);
-  /* sh -c: 127 the pager was not found, 126 not runnable */
-  if (st == -1 || (WIFEXITED(st) && (WEXITSTATUS(st) == 127 || WEXITSTATUS(st) == 126))) return -1;
-  return 0;
+  /* sh -c: 127 the pager was not found, 126 not runnable; any other failure said too */
+  if (st == -1) {
+    snprintf(why, nwhy, "the pager '%s' could not be waited for", name);
+  } else if (WIFSIGNALED(st)) {
+    snprintf(why, nwhy, "the pager '%s' was ended by signal %d", name, WTERMSIG(st));
+  } else if (WIFEXITED(st) && WEXITSTATUS(st) == 127) {
+    snprintf(why, nwhy, "the pager '%s' was not found", name);
+  } else if (WIFEXITED(st) && WEXITSTATUS(st) == 126) {
+    snprintf(why, nwhy, "the pager '%s' could not be run", name);
+  } else if (WIFEXITED(st) && WEXITSTATUS(st) != 0) {
+    snprintf(why, nwhy, "the pager '%s' failed (exit status %d)", name, WEXITSTATUS(st));
+  } else {
+    return 0;
+  }
+  return -1;
 }
 
-FILE* ura_pager_release(void) {
+FILE* ura_pager_release(FILE* msg) {
   if (!gather) return NULL;
   fclose(gather);
   gather = NULL;
@@ -99,7 +116,17 @@ FILE* ura_pager_release(void) {
   int rows, cols;
   ura_term_size(&rows, &cols);
   fflush(out);
-  if (lines < (size_t)rows || page(gathered, ngathered)) fwrite(gathered, 1, ngathered, out);
+  char why[300];
+  if (lines < (size_t)rows || page(gathered, ngathered, why, sizeof why)) {
+    if (lines >= (size_t)rows && why[0]) {
+      fprintf(msg,
+              "pager: %s; the output follows here (PAGER=cat or 'set pager off' prints "
+              "without a pager)\n",
+              why);
+      fflush(msg);
+    }
+    fwrite(gathered, 1, ngathered, out);
+  }
   free(gathered);
   gathered = NULL;
   ngathered = 0;

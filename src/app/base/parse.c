@@ -2,6 +2,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -38,17 +39,56 @@ int ura_parse_number(const char* s, double* v) {
 }
 
 int ura_parse_list(const char* s, double* v, int max) {
-  int k = 0;
+  return ura_parse_list_why(s, v, max, NULL, 0);
+}
+
+int ura_list_count(const char* s) {
+  int n = 1;
+  for (; s && *s; s++) n += *s == ',';
+  return n;
+}
+
+/* why the value at p (len bytes), number k of total, is refused: empty, or its first 32
+   bytes (made printable) and "is not a number" */
+static void list_item_why(const char* p, size_t len, int k, int total, char* why, size_t nwhy) {
+  char shown[40], safe[160];
+  size_t m = len > 32 ? 32 : len;
+  memcpy(shown, p, m);
+  strcpy(shown + m, len > m ? "..." : "");
+  ura_printable(shown, safe, sizeof safe);
+  if (len == 0)
+    snprintf(why, nwhy, "value %d of %d is empty", k, total);
+  else
+    snprintf(why, nwhy, "value %d of %d, '%s', is not a number", k, total, safe);
+}
+
+int ura_parse_list_why(const char* s, double* v, int max, char* why, size_t nwhy) {
+  int k = 0, total = ura_list_count(s);
   const char* p = s;
-  if (!s || !*s) return -1;
+  char item[72];
+  if (why && nwhy) why[0] = 0;
+  if (!s || !*s) {
+    if (why) snprintf(why, nwhy, "the list is empty");
+    return -1;
+  }
+  if (total > max) {
+    if (why) snprintf(why, nwhy, "%d values, more than %d", total, max);
+    return -1;
+  }
   for (;;) {
     const char* q = strchr(p, ',');
     size_t len = q ? (size_t)(q - p) : strlen(p);
-    char item[72];
-    if (len >= sizeof item || k >= max) return -1;
-    memcpy(item, p, len);
-    item[len] = 0;
-    if (ura_parse_number(item, &v[k])) return -1;
+    int ok = len < sizeof item;
+    if (ok) {
+      memcpy(item, p, len);
+      item[len] = 0;
+      ok = ura_parse_number(item, &v[k]) == 0;
+    }
+    /* the value named by its place, so that a long list never hides what is wrong with it */
+    if (!ok) {
+      if (why) list_item_why(p, len, k + 1, total, why, nwhy);
+      return -1;
+    }
     k++;
     if (!q) break;
     p = q + 1;

@@ -155,12 +155,13 @@ typedef struct {
 #define uraMAXSWEEPS 32
 typedef struct {
   char casename[8];
-  int over_face;     /* 0: over wind (face fixed), 1: over face (wind fixed) */
-  double fixed;      /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
-  double step;       /* grid pitch, m */
-  char changes[200]; /* settings that differ from the case preset, or "none" */
-  int n;             /* values, in increasing order */
-  double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
+  int over_face;                 /* 0: over wind (face fixed), 1: over face (wind fixed) */
+  double fixed;                  /* the face (deg) of a wind sweep, the wind (m/s) of a face one */
+  double step;                   /* grid pitch, m */
+  char changes[200];             /* settings that differ from the case preset, or "none" */
+  int n;                         /* values, in increasing order */
+  double *x, *speed, *angle, *q; /* n values each, in one block at x (owned): no limit but
+                                    the command's length */
 } uraSweep;
 
 /* ---- context ---- */
@@ -190,6 +191,8 @@ typedef struct uraCtx {
   urModel* model;          /* compiled with the overrides; NULL: stale */
   urImpactSetup setup;     /* settled stance of the model; valid if have_setup */
   int have_setup;
+  char noted[240];   /* the last note on a set-up (a start pose that may overlap the person):
+                                      each is printed once */
   urImpactWork work; /* the single-impact work space (histories of the last impact) */
   int have_work;
   int have_impact; /* the work holds a finished impact */
@@ -221,6 +224,9 @@ typedef struct uraCtx {
   /* with scale: called before each grid runs, to share out its cells (set with scale by the
      scale layer; the grid command calls it without knowing the distributors) */
   void (*scale_grid)(struct uraCtx* c, urGridSpec* spec, urGridDist* d);
+  /* with scale: called with each file the run reads (a script, a sourced file, a model, a grid),
+     open as f, so that a shard's part never replaces an input of the run (ura_input_seen) */
+  void (*scale_input)(struct uraCtx* c, FILE* f, const char* path);
   int mute; /* results, notes, files and plots go nowhere (scale.h) */
 } uraCtx;
 
@@ -352,6 +358,11 @@ const urModel* ura_model(uraCtx* c);       /* compiled model, or NULL with c->er
 const urImpactSetup* ura_setup(uraCtx* c); /* settled stance, or NULL with c->err */
 void ura_model_stale(uraCtx* c);
 int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or -1 */
+/* the values a model parameter accepts, for messages: "0.15 to 0.65 m: REASON" (its range,
+   param ... range= why=, uasimpact-model(5)), or "any number" */
+void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
+/* a model parameter's value for messages, six digits and its SI unit: "1e+20 N*m/rad" */
+void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
 /* the live state becomes ns if the model compiles with its parameter overrides (unchanged
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
@@ -405,6 +416,11 @@ void ura_table_print(uraCtx* c, uraTable* t);
 /* files written atomically (atomic.c) for a command: refused in dry mode, to /dev/null when
    muted (a shard, an MPI rank but 0); a failure recorded in c->err */
 int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);
+/* a file the run reads, open as f: handed to c->scale_input when the work is split (output.c) */
+void ura_input_seen(uraCtx* c, FILE* f, const char* path);
+/* the same for a file another process writes by the name a->tmp (gnuplot): only a regular file
+   or a new one, and written even when muted */
+int ura_atomic_open_file(uraCtx* c, uraAtomic* a, const char* path, const char* who);
 int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who);
 /* "did you mean" over the parameter tables (the workbench's, the injury settings, the live
    model's parameters) (state.c) */

@@ -1,7 +1,8 @@
 /* gridload.c: read a grid CSV into the last grid: the paper's tables (P in percent, the printed
  * half dperp >= 0, mirrored to the full plane with the column dperp = 0 once) and uasimpact's own
- * export (dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p over the full plane, p in 0..1).
- * Parsing is strict: the first problem gives FILE:LINE: message and the last grid is kept.
+ * export (dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p over the full plane, p in 0..1;
+ * the difference grid of 'design compare', marked by DIFF_MARK in a comment, p = P_b - P_a in
+ * -1..1). Parsing is strict: the first problem gives FILE:LINE: message and the last grid is kept.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -14,14 +15,16 @@
 
 #include "case.h"
 
-
 #define MAXCELLS    4000000L /* refuse grids larger than this */
 #define LATTICE_TOL 1e-6     /* m: offsets must sit on the lattice within this */
+/* what the note of an exported difference grid says (its source, designs.c; or loaded again) */
+#define DIFF_MARK "difference P_b - P_a"
 
 /* what the comments before the header say about the conditions */
 typedef struct {
   char casename[8];
   double wind, face, speed, angle;
+  int diff; /* a comment holds DIFF_MARK: a difference grid */
 } meta;
 
 /* the reader's state: file, line, and the fields of the current line */
@@ -34,6 +37,7 @@ typedef struct {
   size_t cap;
   char** fld;
   int nfld, capfld;
+  int diff; /* the file is a difference grid (p = P_b - P_a) */
 } reader;
 
 /* export columns we know (others are ignored): the offsets, contact, status and p, then every
@@ -172,6 +176,7 @@ static void meta_number(const char* s, const char* const* keys, double* v) {
 /* conditions named in one comment line */
 static void meta_parse(meta* m, const char* s) {
   static const char* const kwind[] = {"wind", NULL};
+  if (strstr(s, DIFF_MARK)) m->diff = 1;
   static const char* const kface[] = {"phi", "face", NULL};
   static const char* const kspeed[] = {"|v|", "speed", NULL};
   static const char* const kangle[] = {"psi", "angle", NULL};
@@ -453,7 +458,18 @@ static int export_row(reader* r, const int* col, xrow* x) {
   if (field_number(r, col[X_DPAR], "dpar", &cl->dpar)) return -1;
   if (field_number(r, col[X_DPERP], "dperp", &cl->dperp)) return -1;
   if (field_number(r, col[X_P], "p", &cl->p)) return -1;
-  if (cl->p < 0 || cl->p > 1) return bad(r, r->line, "p is %g, outside [0, 1]", cl->p);
+  if (r->diff && (cl->p < -1 || cl->p > 1)) {
+    return bad(r, r->line, "p is %g, outside [-1, 1] (a difference P_b - P_a)", cl->p);
+  }
+  if (!r->diff && (cl->p < 0 || cl->p > 1)) {
+    return bad(r, r->line, "p is %g, outside [0, 1]%s", cl->p,
+               cl->p < 0 && cl->p >= -1
+                   ? "; a difference grid (p = P_b - P_a in [-1, 1], "
+                     "'design compare') is marked by a comment '# ... " DIFF_MARK
+                     " ...' before the header, as 'export "
+                     "grid' writes it"
+                   : "");
+  }
 
   /* criteria: numbers, or nan for unknown; an integer-coded value one of its codes */
   for (int k = X_VAL; k < X_N; k++) {
@@ -474,7 +490,7 @@ static int export_row(reader* r, const int* col, xrow* x) {
     double v;
     if (field_number(r, col[X_CONTACT], "contact", &v)) return -1;
     if (v != 0 && v != 1) return bad(r, r->line, "contact is %g, expected 0 or 1", v);
-    if (v == 0 && cl->p > 0) return bad(r, r->line, "p is %g without contact", cl->p);
+    if (v == 0 && cl->p != 0) return bad(r, r->line, "p is %g without contact", cl->p);
     cl->contact = (int)v;
   }
   cl->status = cl->contact ? urCELL_DONE : urCELL_NOCONTACT;
@@ -621,6 +637,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
     return ura_fail(c, "grid load: interrupted (Ctrl-C) while opening '%s'", path);
   }
   if (!r.f) return ura_fail(c, "grid load: cannot open '%s': %s", path, strerror(errno));
+  ura_input_seen(c, r.f, path); /* a shard's part may not replace it */
 
   /* comments (conditions), then the header that tells the format */
   int got;
@@ -639,8 +656,16 @@ int ura_grid_load(uraCtx* c, const char* path) {
     goto done;
   }
   int hline = r.line;
+  r.diff = m.diff;
   if (split(&r)) goto done;
   if (!strcmp(r.fld[0], "along")) {
+    if (m.diff) {
+      bad(&r, hline,
+          "a difference grid (" DIFF_MARK
+          ") in the paper's layout; accepted: the "
+          "difference as 'export grid' writes it (dpar,dperp,...,p)");
+      goto done;
+    }
     if (load_paper(&r, hline, &g)) goto done;
   } else if (!strcmp(r.fld[0], "dpar")) {
     if (load_export(&r, hline, &g)) goto done;
@@ -662,7 +687,14 @@ int ura_grid_load(uraCtx* c, const char* path) {
   c->last.face = m.face;
   c->last.speed = m.speed;
   c->last.angle = m.angle;
-  ura_printable(path, c->last.source, sizeof c->last.source); /* shown by grid show, view */
+  c->last.diff = m.diff;
+  if (m.diff) { /* the source says so, and so the note of 'export grid' again (round trip) */
+    char shown[400];
+    ura_printable(path, shown, sizeof shown);
+    snprintf(c->last.source, sizeof c->last.source, DIFF_MARK " loaded from %s", shown);
+  } else {
+    ura_printable(path, c->last.source, sizeof c->last.source); /* shown by grid show, view */
+  }
   g = NULL;
   rc = 0;
 done:

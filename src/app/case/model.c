@@ -1,6 +1,7 @@
 /* model.c: the model set (parts of model-language text), its parameters, the compiled model and
  * the settled stance, rebuilt lazily when something changes; the model command */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -233,6 +234,37 @@ const urModel* ura_model(uraCtx* c) {
   return c->model;
 }
 
+/* what the stance was settled with, for its failures: " with thorax_k = 1e+06 N/m (set)", the
+   model parameters set by the user or drawn by montecarlo, or " with the model's own
+   parameters" */
+static void params_set(uraCtx* c, char* buf, size_t n) {
+  size_t k = 0;
+  buf[0] = 0;
+  for (int i = 0; i < c->st.nov && k < n; i++) {
+    if (!c->st.ov_user[i]) continue;
+    char v[80];
+    ura_model_value_brief(c, c->st.ov_name[i], c->st.ov_val[i], v, sizeof v);
+    k += (size_t)snprintf(buf + k, n - k, "%s%s = %s", k ? ", " : " with ", c->st.ov_name[i], v);
+  }
+  if (k && k < n) snprintf(buf + k, n - k, " (set)");
+  if (!k) snprintf(buf, n, " with the model's own parameters");
+}
+
+/* a note, once, on a set-up whose impacts may start with the drone in the person: a person
+   ellipsoid the drone can touch reaches above the head top, below which the drone never starts */
+static void setup_note(uraCtx* c) {
+  const urImpactSetup* s = &c->setup;
+  char note[sizeof c->noted];
+  if (!(s->overlap > 1e-6) || s->overlap_geom < 0 || c->mute) return;
+  snprintf(note, sizeof note,
+           "model: note: ellipsoid '%s' of the person reaches %.3g m above the top of the head "
+           "(role head=); a drone started R_max above the head top may already overlap it",
+           c->model->geom[s->overlap_geom].name, s->overlap);
+  if (!strcmp(note, c->noted)) return;
+  snprintf(c->noted, sizeof c->noted, "%s", note);
+  fprintf(c->msg, "%s\n", note);
+}
+
 const urImpactSetup* ura_setup(uraCtx* c) {
   if (c->have_setup) return &c->setup;
   if (ura_dry(c, "simulation")) return NULL;
@@ -242,14 +274,18 @@ const urImpactSetup* ura_setup(uraCtx* c) {
   const urImpactSetup* donors[uraMODELCACHE];
   int nd = ura_mcache_setups(c, donors, uraMODELCACHE);
   int rc = ur_impact_prepare(&c->setup, c->model, SETTLE_SECONDS, BALANCE_ITERS, donors, nd);
+  char with[400];
+  if (rc) params_set(c, with, sizeof with);
   if (rc == -1) {
-    ura_fail(c, ura_interrupted() ? "interrupted (Ctrl-C) while settling the standing posture"
-                                  : "model: the standing posture cannot be balanced (it falls)");
+    if (ura_interrupted())
+      ura_fail(c, "interrupted (Ctrl-C) while settling the standing posture");
+    else
+      ura_fail(c, "model: the standing posture cannot be balanced (it falls)%s", with);
   } else if (rc) {
     if (ura_interrupted())
       ura_fail(c, "interrupted (Ctrl-C) while settling the stance");
     else
-      ura_fail(c, "model: %s", c->setup.err);
+      ura_fail(c, "model: %s%s", c->setup.err, with);
   }
   if (rc) {
     /* the balancing shifts neutral positions in the model: compile afresh next time */
@@ -258,7 +294,26 @@ const urImpactSetup* ura_setup(uraCtx* c) {
     return NULL;
   }
   c->have_setup = 1;
+  setup_note(c);
   return &c->setup;
+}
+
+void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n) {
+  int k = ura_model_param_find(c, name);
+  const char* u = k >= 0 ? c->model->param[k].unit : "";
+  snprintf(buf, n, "%g%s%s", v, *u ? " " : "", u);
+}
+
+void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n) {
+  char lo[64], hi[64];
+  if (isinf(p->lo) && isinf(p->hi)) {
+    snprintf(buf, n, "any number");
+    return;
+  }
+  ura_num_shortest(lo, sizeof lo, p->lo);
+  ura_num_shortest(hi, sizeof hi, p->hi);
+  snprintf(buf, n, "%s to %s %s%s%s", lo, hi, *p->unit ? p->unit : "(no unit)", *p->why ? ": " : "",
+           p->why);
 }
 
 int ura_model_param_find(uraCtx* c, const char* name) {
@@ -309,8 +364,8 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
                     "joined by * and / (N*m/rad)",
                     name, unit);
   }
-  int k = unit ? ura_model_param_find(c, name) : -1;
-  const char* want = k >= 0 ? c->model->param[k].unit : "";
+  int k = ura_model_param_find(c, name);
+  const char* want = k >= 0 && unit ? c->model->param[k].unit : "";
   if (unit && *want && strcmp(si, want)) {
     return ura_fail(c,
                     "set %s: the unit '%s' is in %s, not %s; accepted: a unit of %s (as in "
@@ -318,6 +373,13 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
                     name, unit, *si ? si : "no unit", want, want);
   }
   v *= f;
+  if (k >= 0 && !ur_param_accepts(&c->model->param[k], v)) {
+    char range[400];
+    const char* u = unit ? unit : c->model->param[k].unit;
+    ura_param_range_text(c, &c->model->param[k], range, sizeof range);
+    return ura_fail(c, "set %s: %s%s%s is out of range; accepted: %s", name, value, *u ? " " : "",
+                    u, range);
+  }
 
   /* the new override list */
   uraState ns = c->st;
@@ -367,10 +429,12 @@ static int model_save(uraCtx* c, const char* path) {
 
 static int model_load(uraCtx* c, const char* path) {
   if (ura_dry(c, "model load")) return -1;
-  if (ura_word_ok(path)) {
+  if (ura_word_inert(path)) {
     return ura_fail(c,
-                    "model load: cannot use '%s': the name holds a control character or both "
-                    "quote characters; accepted: a file name that save session can write back",
+                    "model load: cannot use '%s': the name holds a control character, or a "
+                    "single quote with a double quote, $, backquote, backslash or !; accepted: "
+                    "a file name that save session can write back as one quoted word that "
+                    "neither uasimpact nor a shell expands",
                     path);
   }
   FILE* f = fopen(path, "r");
@@ -378,6 +442,7 @@ static int model_load(uraCtx* c, const char* path) {
     return ura_fail(c, "model load: interrupted (Ctrl-C) while opening '%s'", path);
   }
   if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+  ura_input_seen(c, f, path); /* a shard's part may not replace it */
 
   /* the whole text, bounded (a device never ends), read errors named */
   char* text = NULL;

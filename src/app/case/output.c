@@ -31,7 +31,7 @@ int ura_pager_begin(uraCtx* c, const char* cmd) {
 }
 
 void ura_pager_end(uraCtx* c) {
-  FILE* out = ura_pager_release();
+  FILE* out = ura_pager_release(c->msg);
   if (out) c->out = out;
 }
 
@@ -39,14 +39,27 @@ void ura_table_print(uraCtx* c, uraTable* t) {
   ura_table_write(c->out, t, c->st.format == uraFMT_CSV, ura_text_width(c));
 }
 
-int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) {
+void ura_input_seen(uraCtx* c, FILE* f, const char* path) {
+  if (c->scale && c->scale_input) c->scale_input(c, f, path);
+}
+
+/* open as ura_atomic_open says; regular: as ura_atomic_open_file */
+static int open_as(uraCtx* c, uraAtomic* a, const char* path, const char* who, int regular) {
   char err[uraERRLEN];
   memset(a, 0, sizeof *a);
   a->fd = -1;
   if (ura_dry(c, who)) return -1;
-  if (c->mute) path = "/dev/null"; /* a shard or an MPI rank but 0: its files go nowhere */
-  if (ura_atomic_begin(a, path, who, err, sizeof err)) return ura_fail(c, "%s", err);
+  if (c->mute && !regular) path = "/dev/null"; /* a shard or an MPI rank but 0: no files */
+  if (ura_atomic_begin(a, path, who, regular, err, sizeof err)) return ura_fail(c, "%s", err);
   return 0;
+}
+
+int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who) {
+  return open_as(c, a, path, who, 0);
+}
+
+int ura_atomic_open_file(uraCtx* c, uraAtomic* a, const char* path, const char* who) {
+  return open_as(c, a, path, who, 1);
 }
 
 int ura_atomic_close(uraCtx* c, uraAtomic* a, int ok, const char* who) {

@@ -61,9 +61,10 @@ int ura_dist_range(uraCtx* c, const char* name, double* lo, double* hi) {
                     "p_bag ... for an uncertain reliability",
                     name);
   }
-  if (ura_model_param_find(c, name) >= 0) {
-    *lo = -INFINITY;
-    *hi = INFINITY;
+  int k = ura_model_param_find(c, name);
+  if (k >= 0) { /* its range (param ... range=): normal and weibull draws are truncated to it */
+    *lo = c->model->param[k].lo;
+    *hi = c->model->param[k].hi;
     return 0;
   }
   c->err[0] = 0;
@@ -199,7 +200,11 @@ int ura_cmd_dist(uraCtx* c, int argc, char** argv) {
   }
   char why[300];
   if (ur_dist_check(&d.d, why, sizeof why)) {
-    return ura_fail(c, "dist %s: %s", name, why);
+    int k = ura_param_find(name) || ura_injury_find(name) >= 0 ? -1 : ura_model_param_find(c, name);
+    char range[400] = "";
+    if (k >= 0) ura_param_range_text(c, &c->model->param[k], range, sizeof range);
+    return ura_fail(c, "dist %s: %s%s%s%s", name, why, *range ? " (" : "", range,
+                    *range ? ")" : "");
   }
 
   /* a new declaration replaces the old one of the input */

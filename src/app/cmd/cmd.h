@@ -89,7 +89,8 @@ typedef struct uraPSweep {
   double wind, face, step;
   char changes[200];
   int n;
-  double x[uraMAXLIST], speed[uraMAXLIST], angle[uraMAXLIST], q[uraMAXLIST];
+  double *x, *speed, *angle, *q; /* n values each, in one block at x (owned): no limit but the
+                                    command's length */
 } uraPSweep;
 int ura_sweep_param(uraCtx* c, int argc, char** argv);
 void ura_sweep_param_rows(uraCtx* c, uraTable* t);

@@ -8,12 +8,25 @@
 #include "cmd.h"
 
 
-/* keep a sweep: it replaces the one of the same case, kind, fixed value and changes */
+/* room for n values in a sweep's arrays (one block); 0, or -1 without memory */
+static int sweep_alloc(uraSweep* s, int n) {
+  double* b = malloc(4 * (size_t)n * sizeof *b);
+  if (!b) return -1;
+  s->x = b;
+  s->speed = b + n;
+  s->angle = b + 2 * (size_t)n;
+  s->q = b + 3 * (size_t)n;
+  return 0;
+}
+
+/* keep a sweep (taking its arrays): it replaces the one of the same case, kind, fixed value and
+   changes */
 static int sweep_keep(uraCtx* c, const uraSweep* s) {
   for (int i = 0; i < c->nsweep; i++) {
     uraSweep* o = &c->sweep[i];
     if (!strcmp(o->casename, s->casename) && o->over_face == s->over_face && o->fixed == s->fixed &&
         !strcmp(o->changes, s->changes)) {
+      free(o->x);
       *o = *s;
       return 0;
     }
@@ -84,6 +97,7 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"case", "wind", "face", "speed", "angle", "q"};
   if (argc == 2 && !strcmp(argv[1], "show")) return sweep_show(c);
   if (argc == 2 && !strcmp(argv[1], "clear")) {
+    for (int i = 0; i < c->nsweep; i++) free(c->sweep[i].x);
     free(c->sweep);
     c->sweep = NULL;
     c->nsweep = 0;
@@ -94,7 +108,6 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     return ura_sweep_param(c, argc, argv); /* sweep NAME LIST [UNIT] (sweep_param.c) */
   }
   int is_wind = !strcmp(argv[1], "wind"), is_face = !strcmp(argv[1], "face");
-  double v[uraMAXLIST];
   if ((is_wind || is_face) && argc == 2) {
     return ura_fail(c, "sweep %s: needs a list of values, e.g. 'sweep %s %s'", argv[1], argv[1],
                     is_wind ? "0,4,10" : "0,90,180");
@@ -105,32 +118,47 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
                     "LIST, sweep show, sweep clear",
                     argv[1]);
   }
-  int n = ura_parse_list(argv[2], v, uraMAXLIST);
+  /* the values: as many as the list holds (a kept sweep has no limit of its own), each named by
+     its place when refused, never by echoing the whole list */
   const uraParam* p = ura_param_find(is_wind ? "wind" : "face");
-  for (int i = 0; i < n; i++) {
-    if (v[i] < p->min || v[i] > p->max) n = -1;
+  int n = ura_list_count(argv[2]);
+  double* v = malloc((size_t)n * sizeof *v);
+  uraSweep* s = calloc(1, sizeof *s);
+  if (!v || !s || sweep_alloc(s, n)) {
+    free(v);
+    free(s);
+    return ura_fail(c, "sweep: out of memory for %d values", n);
   }
-  if (n < 0) {
-    return ura_fail(c,
-                    "sweep %s: '%s' is not accepted; accepted: comma-separated numbers in "
-                    "[%g, %g] %s",
-                    argv[1], argv[2], p->min, p->max, p->unit);
+  char why[uraERRLEN];
+  int bad = ura_parse_list_why(argv[2], v, n, why, sizeof why) < 0;
+  for (int i = 0; i < n && !bad; i++) {
+    if (v[i] < p->min || v[i] > p->max) {
+      snprintf(why, sizeof why, "value %d of %d, %g, is out of range", i + 1, n, v[i]);
+      bad = 1;
+    }
+  }
+  if (bad) {
+    free(v);
+    free(s->x);
+    free(s);
+    return ura_fail(c, "sweep %s: %s; accepted: comma-separated numbers in [%g, %g] %s", argv[1],
+                    why, p->min, p->max, p->unit);
   }
   /* with the paper's Table 2, every wind must be one it prints (refused before any grid runs) */
   if (ura_paper_speed(c)) {
     double ws = c->st.descent.wind, sp, an;
     for (int i = 0; i < (is_wind ? n : 1); i++) {
       if (ura_paper_descent(c, c->st.casename, is_wind ? v[i] : ws, &sp, &an)) {
-        char why[uraERRLEN];
         snprintf(why, sizeof why, "%s", c->err);
+        free(v);
+        free(s->x);
+        free(s);
         return ura_fail(c, "sweep %s: %.900s", argv[1], why);
       }
     }
   }
 
   /* the sweep to keep: case, kind, the fixed condition, what differs from the preset */
-  uraSweep* s = calloc(1, sizeof *s);
-  if (!s) return ura_fail(c, "sweep: out of memory");
   snprintf(s->casename, sizeof s->casename, "%s", c->st.casename);
   s->over_face = is_face;
   s->fixed = is_wind ? c->st.face : c->st.descent.wind;
@@ -157,7 +185,6 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     rc = ura_grid_run(c, 0);
     ura_progress_label(NULL);
     if (rc && ura_interrupted()) {
-      char why[uraERRLEN];
       snprintf(why, sizeof why, "%s", c->err);
       ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", argv[1],
                v[i], i, n, why);
@@ -176,8 +203,16 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
       sweep_add(s, v[i], c->last.speed, c->last.angle, c->last.g->q);
       if (i > 0 && c->last.tau_shift != shift) shifts_differ = 1;
       shift = c->last.tau_shift;
-      if (c->last.recalled && nr < sizeof recalled) {
-        nr += (size_t)snprintf(recalled + nr, sizeof recalled - nr, "%s%g", nr ? ", " : "", v[i]);
+      if (c->last.recalled && nr < sizeof recalled) { /* a long list ends in ", ..." */
+        char one[40];
+        size_t w = (size_t)snprintf(one, sizeof one, "%s%g", nr ? ", " : "", v[i]);
+        if (nr + w + 6 <= sizeof recalled) {
+          memcpy(recalled + nr, one, w + 1);
+          nr += w;
+        } else {
+          snprintf(recalled + nr, sizeof recalled - nr, ", ...");
+          nr = sizeof recalled; /* full */
+        }
       }
     }
   }
@@ -214,15 +249,19 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   ura_table_print(c, t);
 
   /* keep what finished (a sweep that stopped keeps the values before the failure) */
+  int kept = 0;
   if (s->n > 0) {
     char err[uraERRLEN];
     snprintf(err, sizeof err, "%s", c->err);
-    if (sweep_keep(c, s))
+    kept = sweep_keep(c, s) == 0;
+    if (!kept)
       rc = -1;
     else if (rc)
       snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err, s->n);
   }
+  if (!kept) free(s->x);
   free(s);
+  free(v);
   return rc;
 }
 

@@ -11,6 +11,7 @@
 
 #define MAXARGS  64
 #define MAXDEPTH 16
+#define BOM      "\xef\xbb\xbf" /* U+FEFF in UTF-8: the byte-order mark some editors write */
 
 #define printable ura_printable
 
@@ -87,6 +88,16 @@ static int run_words(uraCtx* c, int argc, char** argv) {
   return rc;
 }
 
+/* a byte-order mark inside a command (a script's first bytes excepted, ura_run_stream): it
+   would be part of a word, invisibly ("unknown command 'set'") */
+static int bom_refused(uraCtx* c, long at) {
+  return ura_fail(c,
+                  "a byte-order mark (U+FEFF, bytes EF BB BF) at byte %ld of the line; "
+                  "accepted only as the first bytes of a script or session file (an editor's "
+                  "'UTF-8 with BOM'): delete it",
+                  at + 1);
+}
+
 int ura_run_line(uraCtx* c, const char* line) {
   size_t n = strlen(line);
   char* buf = malloc(n + 1);
@@ -107,7 +118,8 @@ int ura_run_line(uraCtx* c, const char* line) {
       char save = *p;
       *p = 0;
       char* argv[MAXARGS];
-      int argc = split_words(start, argv, c);
+      char* bom = strstr(start, BOM);
+      int argc = bom ? bom_refused(c, bom - buf) : split_words(start, argv, c);
       if (argc < 0) {
         rc = -1;
       } else if (argc > 0 && ura_interrupted()) {
@@ -144,7 +156,9 @@ int ura_run_stream(uraCtx* c, FILE* f, const char* name) {
       rc = ura_interrupted() ? ura_fail(c, "interrupted (Ctrl-C) while reading")
                              : ura_fail(c, "cannot read: %s", strerror(errno));
     } else {
-      rc = ura_run_line(c, line);
+      /* a byte-order mark as the file's first bytes is skipped (an editor's 'UTF-8 with BOM') */
+      int skip = lineno == 1 && !strncmp(line, BOM, 3) ? 3 : 0;
+      rc = ura_run_line(c, line + skip);
     }
     if (rc) {
       ura_locate(c, name, lineno);
@@ -168,6 +182,7 @@ int ura_run_file(uraCtx* c, const char* path) {
     fclose(f);
     return ura_fail(c, "cannot run '%s': it is a directory; accepted: a script file", path);
   }
+  ura_input_seen(c, f, path); /* a shard's part may not replace it */
   c->depth++;
   int rc = ura_run_stream(c, f, path);
   c->depth--;

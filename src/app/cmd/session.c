@@ -10,7 +10,9 @@
 /* write the state as commands: defaults, loaded model parts, case, then every setting that
    differs from what those give (session_base.c; never threads or the plot output, which belong
    to the machine and the last plot); every text is one quoted word that the reader takes back as
-   it is (the terminal was checked when set: nothing in it is run) */
+   it is and a shell would not expand (single quotes; double quotes only around a word that holds
+   a single quote and nothing a shell expands: ura_word_inert; the terminal was checked when set,
+   nothing in it is run) */
 void ura_session_write(uraCtx* c, FILE* f) {
   char val[2048], was[2048];
   uraState base;

@@ -20,13 +20,15 @@ static int sweepable(uraCtx* c, const char* name, const char** unit) {
   return ura_model_param_find(c, name) >= 0;
 }
 
-/* keep s: it replaces the sweep of the same case, parameter, unit, fixed conditions and changes */
+/* keep s (taking its arrays): it replaces the sweep of the same case, parameter, unit, fixed
+   conditions and changes */
 static int keep(uraCtx* c, const uraPSweep* s) {
   for (int i = 0; i < c->npsweep; i++) {
     uraPSweep* o = c->psweep + i;
     if (!strcmp(o->casename, s->casename) && !strcmp(o->param, s->param) &&
         !strcmp(o->unit, s->unit) && o->wind == s->wind && o->face == s->face &&
         !strcmp(o->changes, s->changes)) {
+      free(o->x);
       *o = *s;
       return 0;
     }
@@ -43,9 +45,17 @@ static int keep(uraCtx* c, const uraPSweep* s) {
 }
 
 void ura_sweep_param_clear(uraCtx* c) {
+  for (int i = 0; i < c->npsweep; i++) free(c->psweep[i].x);
   free(c->psweep);
   c->psweep = NULL;
   c->npsweep = 0;
+}
+
+/* free a sweep under way (its arrays unless kept) and its list of values */
+static void free_psweep(uraPSweep* s, double* v) {
+  free(s->x);
+  free(s);
+  free(v);
 }
 
 int ura_sweep_param(uraCtx* c, int argc, char** argv) {
@@ -59,13 +69,25 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
                     "parameter ('show' lists them), sweep show, sweep clear",
                     name);
   }
-  double v[uraMAXLIST];
-  int n = ura_parse_list(argv[2], v, uraMAXLIST);
-  if (n <= 0) {
-    return ura_fail(c,
-                    "sweep %s: '%s' is not a list of numbers; accepted: comma-separated "
-                    "numbers (at most %d)",
-                    name, argv[2], uraMAXLIST);
+  /* the values: as many as the list holds, a refused one named by its place */
+  int n = ura_list_count(argv[2]);
+  double* v = malloc((size_t)n * sizeof *v);
+  uraPSweep* s = calloc(1, sizeof *s);
+  double* b = malloc(4 * (size_t)n * sizeof *b);
+  if (!v || !s || !b) {
+    free(v);
+    free(s);
+    free(b);
+    return ura_fail(c, "sweep: out of memory for %d values", n);
+  }
+  s->x = b;
+  s->speed = b + n;
+  s->angle = b + 2 * (size_t)n;
+  s->q = b + 3 * (size_t)n;
+  char why[uraERRLEN];
+  if (ura_parse_list_why(argv[2], v, n, why, sizeof why) < 0) {
+    free_psweep(s, v);
+    return ura_fail(c, "sweep %s: %s; accepted: comma-separated numbers", name, why);
   }
   const char* unit = argc == 4 ? argv[3] : NULL;
 
@@ -75,16 +97,16 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   for (int i = 0; i < n; i++) {
     snprintf(val, sizeof val, "%.17g", v[i]);
     if (ura_cmd_set(c, unit ? 4 : 3, av)) {
-      char why[uraERRLEN];
       snprintf(why, sizeof why, "%s", c->err);
       ura_model_state(c, &saved, "sweep");
-      return ura_fail(c, "sweep %s: %.900s", name, why);
+      free_psweep(s, v);
+      return ura_fail(c, "sweep %s: %.900s", name, why); /* set names the value */
     }
   }
-  if (ura_model_state(c, &saved, "sweep")) return -1;
-
-  uraPSweep* s = calloc(1, sizeof *s);
-  if (!s) return ura_fail(c, "sweep: out of memory");
+  if (ura_model_state(c, &saved, "sweep")) {
+    free_psweep(s, v);
+    return -1;
+  }
   snprintf(s->casename, sizeof s->casename, "%s", c->st.casename);
   snprintf(s->param, sizeof s->param, "%s", name);
   snprintf(s->unit, sizeof s->unit, "%s", unit ? unit : own);
@@ -105,7 +127,6 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
     if (rc == 0) rc = ura_grid_run(c, 0);
     ura_progress_label(NULL);
     if (rc && ura_interrupted()) {
-      char why[uraERRLEN];
       snprintf(why, sizeof why, "%s", c->err);
       ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", name,
                v[i], i, n, why);
@@ -136,12 +157,14 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   snprintf(c->err, sizeof c->err, "%s", err);
   ura_table_print(c, t);
   if (s->n > 0) {
-    if (keep(c, s))
+    if (keep(c, s)) {
       rc = -1;
-    else if (rc)
-      snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err, s->n);
+    } else {
+      if (rc) snprintf(c->err, sizeof c->err, "%.900s (the %d values before are kept)", err, s->n);
+      s->x = NULL; /* kept */
+    }
   }
-  free(s);
+  free_psweep(s, v);
   return rc;
 }
 

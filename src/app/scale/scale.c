@@ -9,6 +9,13 @@
 
 #include "scale.h"
 
+void ura_scale_input(uraCtx* c, FILE* f, const char* path) {
+  struct stat st;
+  if (!c->scale || !c->scale->ops->input || fstat(fileno(f), &st)) return;
+  c->scale->ops->input(c->scale, path, &st);
+}
+
+/* I/N: whole numbers 0 <= I < N */
 static int shard_arg(const char* s, int* i, int* n) {
   const char* slash = strchr(s, '/');
   double a, b;
@@ -27,15 +34,7 @@ static int shard_arg(const char* s, int* i, int* n) {
 int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   char** av = *argv;
   int ac = *argc;
-  if (ac >= 2 && !strcmp(av[1], "merge")) {
-    if (ac < 3) {
-      fprintf(stderr,
-              "uasimpact merge: no part files; usage: uasimpact merge PART... (the files of "
-              "'uasimpact --shard I/N --part PART', one per shard)\n");
-      return 2;
-    }
-    return ura_merge_new(c, ac - 2, av + 2, argc, argv);
-  }
+  if (ac >= 2 && !strcmp(av[1], "merge")) return ura_merge_new(c, argc, argv);
   uraScale* mpi = ura_mpi_new(c, argc, argv);
   if (mpi) {
     c->scale = mpi;
@@ -93,7 +92,7 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
   }
   c->scale = ura_shard_new(c, shard, nshard, part, w - 1, av + 1);
   if (!c->scale) {
-    fprintf(stderr, "uasimpact: --shard: %s\n", c->err);
+    fprintf(stderr, "uasimpact: %s\n", c->err);
     return 2;
   }
   return 0;

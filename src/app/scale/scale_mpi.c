@@ -6,7 +6,9 @@
  * is handed out, every rank sends rank 0 the cells it simulated, and rank 0 broadcasts the whole
  * grid, so that every rank goes on with the same state. Waiting polls with short sleeps instead
  * of spinning: ranks share cores with worker threads. Ctrl-C on rank 0 aborts every rank (status
- * 130); SIGTERM ends rank 0, and mpirun the others. Scripts only (no -i, no standard input). */
+ * 130); ranks out of step (another grid on another rank: the nodes see other files) abort every
+ * rank with status 3; SIGTERM ends rank 0, and mpirun the others. Scripts only (no -i, no
+ * standard input). */
 #include "scale.h"
 
 #ifndef URA_MPI
@@ -59,9 +61,15 @@ static void wait_req(MPI_Request* r) {
   }
 }
 
-static void abort_all(const char* why) {
+/* exit statuses of a run stopped on every rank (uasimpact(1), EXIT STATUS): Ctrl-C as everywhere;
+   ranks out of step (another grid on another rank) a status of its own; anything else 1 */
+#define ST_INTERRUPTED 130
+#define ST_OUT_OF_STEP 3
+#define ST_FAILED      1
+
+static void abort_all(const char* why, int status) {
   fprintf(stderr, "uasimpact-mpi: %s; every rank stopped\n", why);
-  MPI_Abort(MPI_COMM_WORLD, 130);
+  MPI_Abort(MPI_COMM_WORLD, status);
 }
 
 /* rank 0, lock held: the next chunk of the pool into [*lo, *hi) */
@@ -82,7 +90,7 @@ static void* serve(void* arg) {
     MPI_Status st;
     MPI_Iprobe(MPI_ANY_SOURCE, TAG_REQ, MPI_COMM_WORLD, &flag, &st);
     if (!flag) {
-      if (ura_interrupted()) abort_all("interrupted (Ctrl-C) on rank 0");
+      if (ura_interrupted()) abort_all("interrupted (Ctrl-C) on rank 0", ST_INTERRUPTED);
       pause_us(50);
       continue;
     }
@@ -91,7 +99,8 @@ static void* serve(void* arg) {
     if (req[0] != s->grid || req[1] != d->ntodo || req[2] != (long)strtoull(s->key, NULL, 16)) {
       abort_all(
           "ranks out of step: another grid on another rank (do all nodes see the same "
-          "script and model files?)");
+          "script and model files?)",
+          ST_OUT_OF_STEP);
     }
     pthread_mutex_lock(&d->lock);
     carve(d, &chunk[0], &chunk[1]);
@@ -112,7 +121,7 @@ static int p_begin(uraScale* s, long ntodo) {
   d->serving = 0;
   if (d->rank == 0 && d->size > 1) {
     if (pthread_create(&d->server, NULL, serve, s)) {
-      abort_all("cannot start the thread that hands out cells");
+      abort_all("cannot start the thread that hands out cells", ST_FAILED);
     }
     d->serving = 1;
   }
@@ -142,7 +151,7 @@ static long p_next(uraScale* s) {
     if (d->nmine == d->cap) {
       long cap = d->cap ? 2 * d->cap : 1024;
       long* t = realloc(d->mine, (size_t)cap * sizeof *t);
-      if (!t) abort_all("out of memory");
+      if (!t) abort_all("out of memory", ST_FAILED);
       d->mine = t;
       d->cap = cap;
     }
@@ -158,15 +167,21 @@ static char* pack(urGrid* g, const long* todo, const long* pos, long n, int* len
   size_t size = 0;
   char line[512];
   FILE* f = open_memstream(&text, &size);
-  if (!f) abort_all("out of memory");
+  if (!f) abort_all("out of memory", ST_FAILED);
   for (long k = 0; k < n; k++) {
-    if (ura_cell_write(&g->cell[todo[pos ? pos[k] : k]], line, sizeof line) < 0) {
-      abort_all("a cell's result does not fit a message line");
+    int w = ura_cell_write(&g->cell[todo[pos ? pos[k] : k]], line, sizeof line);
+    if (w == -2) {
+      abort_all(
+          "a cell holds a value outside its domain (p or a PoF not in [0, 1], or an "
+          "infinite criterion): a message cannot carry it",
+          ST_FAILED);
+    } else if (w < 0) {
+      abort_all("a cell's result does not fit a message line", ST_FAILED);
     }
     fprintf(f, "%ld %s\n", pos ? pos[k] : k, line);
   }
   fclose(f);
-  if (size > 2000000000) abort_all("a grid too large for one message");
+  if (size > 2000000000) abort_all("a grid too large for one message", ST_FAILED);
   *len = (int)size;
   return text;
 }
@@ -194,19 +209,19 @@ static int p_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
   if (d->rank == 0) {
     if (d->serving) pthread_join(d->server, NULL);
     d->serving = 0;
-    if (ura_interrupted()) abort_all("interrupted (Ctrl-C) on rank 0");
+    if (ura_interrupted()) abort_all("interrupted (Ctrl-C) on rank 0", ST_INTERRUPTED);
     for (int r = 1; r < d->size; r++) { /* the cells of each rank */
       int flag = 0;
       MPI_Status st;
       for (;;) {
         MPI_Iprobe(r, TAG_CELLS, MPI_COMM_WORLD, &flag, &st);
         if (flag) break;
-        if (ura_interrupted()) abort_all("interrupted (Ctrl-C) on rank 0");
+        if (ura_interrupted()) abort_all("interrupted (Ctrl-C) on rank 0", ST_INTERRUPTED);
         pause_us(50);
       }
       MPI_Get_count(&st, MPI_CHAR, &len);
       text = malloc((size_t)len + 1);
-      if (!text) abort_all("out of memory");
+      if (!text) abort_all("out of memory", ST_FAILED);
       MPI_Recv(text, len, MPI_CHAR, r, TAG_CELLS, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       text[len] = 0;
       if (!rc) rc = unpack(s, g, todo, ntodo, text);
@@ -228,7 +243,7 @@ static int p_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
   wait_req(&r);
   if (d->rank != 0) {
     text = malloc((size_t)len + 1);
-    if (!text) abort_all("out of memory");
+    if (!text) abort_all("out of memory", ST_FAILED);
   }
   MPI_Ibcast(text, len, MPI_CHAR, 0, MPI_COMM_WORLD, &r);
   wait_req(&r);
@@ -242,10 +257,10 @@ static int p_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
    they all arrive here; a rank that fails alone (a file only its node lacks, a full disk on rank
    0) would leave the others waiting in the next grid: a failed rank waits at most FINISH_WAIT s
    for the others, then aborts them all with its status and message */
-#define FINISH_WAIT 5.0
+#define FINISH_WAIT    5.0
 static int p_finish(uraScale* s, int rc) {
   mpiDist* d = s->impl;
-  if (rc == 130 && d->size > 1) abort_all("interrupted (Ctrl-C)");
+  if (rc == 130 && d->size > 1) abort_all("interrupted (Ctrl-C)", ST_INTERRUPTED);
   MPI_Request r;
   int done = 0;
   double t0 = MPI_Wtime();

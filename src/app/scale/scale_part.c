@@ -7,17 +7,26 @@
  *   grid G KEY NTODO NCELL then NCELL lines 'c POS CELL' (ura_cell_write), per grid run
  *   end STATUS NGRID       the shard's exit status and the grids it ran
  *   sum HASH               FNV-1a of every byte before this line
- * Reading checks every line strictly: a truncated or damaged part is refused, not guessed at.
- * Also here, below every distributor (scale.c, scale_shard.c, scale_merge.c, scale_mpi.c): the
- * FNV-1a checksum, the hashes of the script files and the built-in models, muting a rank. */
+ * A part is data someone else may have written: reading checks every line strictly (a truncated
+ * or damaged part is refused, not guessed at), reads the magic line before the rest, bounds every
+ * count by the bytes left before allocating, and refuses a command line no shard runs and cell
+ * values outside their domain (ura_cell_read). Its command line is never run: the merge compares
+ * it with its own (scale_merge.c). */
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "scale.h"
 
-#define MAXPART (1L << 34) /* largest part read, bytes */
+#define MAXPART  (1L << 34) /* largest part read, bytes */
+#define MAGICMAX 32         /* the most bytes read of a first line before it is known a part's */
+#define MINARG   4          /* the shortest arg line: "arg\n" */
+/* the shortest cell line: "c K ", status and contact, every value, PoF and p, extrap (2 bytes
+   each or more), "|\n" */
+#define MINCELL (4 + 4 + 2 * (urNVAL + urNCRIT + 1) + 2 + 2)
 
 static void put_arg(FILE* f, const char* s) {
   fputs("arg ", f);
@@ -42,7 +51,7 @@ static int get_arg(char* s) {
     } else if (r[1] == '\\') {
       *w++ = '\\';
       r++;
-    } else if (r[1] == 'x' && r[2] && r[3]) {
+    } else if (r[1] == 'x' && isxdigit((unsigned char)r[2]) && isxdigit((unsigned char)r[3])) {
       char hex[3] = {r[2], r[3], 0}, *end;
       long v = strtol(hex, &end, 16);
       if (*end || v <= 0) return -1;
@@ -74,43 +83,6 @@ void ura_part_free(uraPartFile* p) {
   free(p->argv);
   free(p->text);
   memset(p, 0, sizeof *p);
-}
-
-/* the whole file, NUL-terminated */
-static char* slurp(const char* path, size_t* n, char* err, size_t nerr) {
-  FILE* f = fopen(path, "rb");
-  if (!f) {
-    snprintf(err, nerr, "cannot read '%s': %s", path, strerror(errno));
-    return NULL;
-  }
-  char* buf = NULL;
-  size_t len = 0, cap = 0;
-  for (;;) {
-    if (len + 65536 + 1 > cap) {
-      cap = cap ? 2 * cap : 1 << 20;
-      char* t = cap > (size_t)MAXPART ? NULL : realloc(buf, cap);
-      if (!t) {
-        snprintf(err, nerr, "'%s' is too large to read", path);
-        free(buf);
-        fclose(f);
-        return NULL;
-      }
-      buf = t;
-    }
-    size_t r = fread(buf + len, 1, 65536, f);
-    len += r;
-    if (r < 65536) break;
-  }
-  int bad = ferror(f);
-  fclose(f);
-  if (bad) {
-    snprintf(err, nerr, "cannot read '%s': read error", path);
-    free(buf);
-    return NULL;
-  }
-  buf[len] = 0;
-  *n = len;
-  return buf;
 }
 
 static int hex16(const char* s) {
@@ -152,34 +124,125 @@ static int words(char** at, char* end, char** w, int max) {
   return n;
 }
 
-int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
-  memset(p, 0, sizeof *p);
-  size_t n;
-  char* text = slurp(path, &n, err, nerr);
-  if (!text) return -1;
-  p->text = text;
+/* the magic line "uasimpact-part VERSION" (or the former name's) at the start of text (n bytes): 0, or -1 with why */
+static int magic(const char* text, size_t n, const char* path, char* err, size_t nerr) {
   size_t ml = strlen(uraPART_MAGIC);
-  /* the tool's former name: its parts are the same format under another magic word */
-  if (n > strlen(uraPART_MAGIC_OLD) &&
-      !memcmp(text, uraPART_MAGIC_OLD " ", strlen(uraPART_MAGIC_OLD) + 1)) {
-    ml = strlen(uraPART_MAGIC_OLD);
+  const char* nl = memchr(text, '\n', n);
+  size_t ol = strlen(uraPART_MAGIC_OLD);
+  if (nl && n > ol && !memcmp(text, uraPART_MAGIC_OLD " ", ol + 1)) {
+    /* the tool's former name: its parts are the same format under another magic word */
+    ml = ol;
     fprintf(stderr, "note: '%s' was written under the former name uasrisk; read as a part file\n",
             path);
-  } else if (n < ml + 1 || memcmp(text, uraPART_MAGIC " ", ml + 1)) {
+  } else if (n < ml + 1 || memcmp(text, uraPART_MAGIC " ", ml + 1) || !nl) {
     snprintf(err, nerr,
-             "'%s' is not a part file; accepted: files written by 'uasimpact --shard "
-             "I/N --part FILE'",
+             "'%s' is not a part file; accepted: files written by 'uasimpact --shard I/N --part "
+             "FILE'",
              path);
     return -1;
   }
   long ver;
   char vbuf[16];
-  snprintf(vbuf, sizeof vbuf, "%.*s", (int)strcspn(text + ml + 1, "\n"), text + ml + 1);
+  snprintf(vbuf, sizeof vbuf, "%.*s", (int)(nl - text - (long)ml - 1), text + ml + 1);
   if (num(vbuf, 0, 1000000, &ver) || ver != uraPART_VERSION) {
     snprintf(err, nerr,
-             "'%s' is a part file of format version %s; accepted: version %d (write "
-             "the parts again with this uasimpact)",
+             "'%s' is a part file of format version %s; accepted: version %d (write the parts "
+             "again with this uasimpact)",
              path, vbuf, uraPART_VERSION);
+    return -1;
+  }
+  return 0;
+}
+
+/* the whole file, NUL-terminated. The magic line is read first, so that a directory, a device
+   that never ends (/dev/zero) or any other file is refused at once; the rest is bounded by the
+   file's size (a regular file) and by MAXPART */
+static char* slurp(const char* path, size_t* n, char* err, size_t nerr) {
+  FILE* f = fopen(path, "rb");
+  struct stat st;
+  if (!f || fstat(fileno(f), &st)) {
+    snprintf(err, nerr, "cannot read '%s': %s", path, strerror(errno));
+    if (f) fclose(f);
+    return NULL;
+  }
+  if (S_ISDIR(st.st_mode)) {
+    snprintf(err, nerr,
+             "'%s' is a directory; accepted: files written by 'uasimpact --shard I/N --part FILE'",
+             path);
+    fclose(f);
+    return NULL;
+  }
+  char head[MAGICMAX + 1];
+  size_t len = 0;
+  int ch = 0;
+  while (len < MAGICMAX && ch != '\n' && (ch = getc(f)) != EOF) head[len++] = (char)ch;
+  if (ferror(f)) {
+    snprintf(err, nerr, "cannot read '%s': %s", path, strerror(errno ? errno : EIO));
+    fclose(f);
+    return NULL;
+  }
+  if (magic(head, len, path, err, nerr)) {
+    fclose(f);
+    return NULL;
+  }
+  if (S_ISREG(st.st_mode) && st.st_size > MAXPART) {
+    snprintf(err, nerr, "'%s' is too large to read (%lld bytes; at most %lld)", path,
+             (long long)st.st_size, (long long)MAXPART);
+    fclose(f);
+    return NULL;
+  }
+  size_t cap = S_ISREG(st.st_mode) ? (size_t)st.st_size + 65536 : 1 << 20;
+  char* buf = malloc(cap);
+  if (!buf) {
+    snprintf(err, nerr, "'%s' is too large to read (out of memory)", path);
+    fclose(f);
+    return NULL;
+  }
+  memcpy(buf, head, len);
+  for (;;) {
+    if (len + 65536 + 1 > cap) {
+      cap = 2 * cap;
+      char* t = cap > (size_t)MAXPART + 65536 ? NULL : realloc(buf, cap);
+      if (!t) {
+        snprintf(err, nerr, "'%s' is too large to read (at most %lld bytes)", path,
+                 (long long)MAXPART);
+        free(buf);
+        fclose(f);
+        return NULL;
+      }
+      buf = t;
+    }
+    size_t r = fread(buf + len, 1, 65536, f);
+    len += r;
+    if (r < 65536) break;
+  }
+  int bad = ferror(f);
+  int e = errno;
+  fclose(f);
+  if (bad) {
+    snprintf(err, nerr, "cannot read '%s': %s", path, strerror(e ? e : EIO));
+    free(buf);
+    return NULL;
+  }
+  buf[len] = 0;
+  *n = len;
+  return buf;
+}
+
+int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
+  size_t n;
+  memset(p, 0, sizeof *p);
+  char* text = slurp(path, &n, err, nerr);
+  if (!text) return -1;
+  return ura_part_parse(text, n, path, p, err, nerr);
+}
+
+int ura_part_parse(char* text, size_t n, const char* path, uraPartFile* p, char* err, size_t nerr) {
+  memset(p, 0, sizeof *p);
+  p->text = text;
+  if (magic(text, n, path, err, nerr)) return -1;
+  if (memchr(text, 0, n)) {
+    snprintf(err, nerr, "'%s' is damaged (a NUL byte: a part is text); run its shard again", path);
     return -1;
   }
 
@@ -226,7 +289,11 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
   if (nw != 2 || strcmp(w[0], "model") || hex16(w[1])) BAD("bad model line");
   memcpy(p->model, w[1], 17);
   nw = words(&at, end, w, 2);
-  if (nw != 2 || strcmp(w[0], "argc") || num(w[1], 0, 100000, &v)) BAD("bad argc line");
+  /* counts are bounded by the bytes left before anything is allocated: an arg line has at
+     least MINARG bytes, a cell line MINCELL */
+  if (nw != 2 || strcmp(w[0], "argc") || num(w[1], 0, (end - at) / MINARG, &v)) {
+    BAD("bad argc line");
+  }
   p->argc = (int)v;
   p->argv = calloc((size_t)p->argc + 1, sizeof *p->argv);
   if (!p->argv) BAD("out of memory");
@@ -236,13 +303,28 @@ int ura_part_read(const char* path, uraPartFile* p, char* err, size_t nerr) {
     if (nw != 2 || strcmp(w[0], "arg") || get_arg(w[1])) BAD("bad arg line");
     p->argv[i] = w[1];
   }
+  /* a command line a shard runs: scripts and -c COMMANDS, at least one, no other option */
+  int ok = p->argc > 0;
+  for (int i = 0; ok && i < p->argc; i++) {
+    if (!strcmp(p->argv[i], "-c"))
+      ok = ++i < p->argc;
+    else
+      ok = p->argv[i][0] != '-' || !p->argv[i][1];
+  }
+  if (!ok) {
+    snprintf(err, nerr,
+             "'%s' records a command line that no shard runs (an option other than -c, or no "
+             "script); accepted: parts written by 'uasimpact --shard I/N --part FILE'",
+             path);
+    return -1;
+  }
   long cap = 0;
   for (;;) {
     nw = words(&at, end, w, 5);
     if (nw < 1) BAD("no end line");
     if (!strcmp(w[0], "end")) break;
     if (nw != 5 || strcmp(w[0], "grid") || num(w[1], p->ngrid, p->ngrid, &v) || hex16(w[2]) ||
-        num(w[3], 0, 1L << 40, &a) || num(w[4], 0, a, &b)) {
+        num(w[3], 0, 1L << 40, &a) || num(w[4], 0, a, &b) || b > (end - at) / MINCELL) {
       BAD("bad grid line");
     }
     if (p->ngrid == cap) {
@@ -328,5 +410,3 @@ int ura_scale_mute(uraCtx* c) {
   c->mute = 1;
   return 0;
 }
-
-/* I/N: whole numbers 0 <= I < N */

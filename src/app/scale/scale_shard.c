@@ -1,7 +1,11 @@
 /* scale_shard.c: uasimpact --shard I/N --part OUT: position k of grid G is simulated when
  * (k + G) mod N == I; the other cells are placeholders (no contact) so that the script runs on,
  * its results, notes and files muted. The cells computed go to the part file (scale_part.c),
- * written whole at the end of the run (with the run's status; none when Ctrl-C stopped it). */
+ * written whole at the end of the run (with the run's status; none when Ctrl-C stopped it).
+ * OUT may replace only a part file or an empty file: not a file the run reads (same device and
+ * inode as a script, a sourced file, a model or a grid it loaded), not a directory, not any other
+ * file; checked before the run (the scripts of the command line) and again before writing. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +20,72 @@ typedef struct {
   FILE* f;
   long first, taken; /* this grid: the first own position; how many handed out */
   long ntodo;
+  struct {
+    dev_t dev;
+    ino_t ino;
+    char* path;
+  } * input; /* the files the run read */
+  int ninput, cap;
 } shard;
+
+/* keep a file the run reads (once) */
+static void s_input(uraScale* s, const char* path, const struct stat* st) {
+  shard* d = s->impl;
+  for (int k = 0; k < d->ninput; k++) {
+    if (d->input[k].dev == st->st_dev && d->input[k].ino == st->st_ino) return;
+  }
+  if (d->ninput == d->cap) {
+    int cap = d->cap ? 2 * d->cap : 16;
+    void* t = realloc(d->input, (size_t)cap * sizeof *d->input);
+    if (!t) return; /* checked again against the command line's scripts at least */
+    d->input = t;
+    d->cap = cap;
+  }
+  char* name = strdup(path);
+  if (!name) return;
+  d->input[d->ninput].dev = st->st_dev;
+  d->input[d->ninput].ino = st->st_ino;
+  d->input[d->ninput++].path = name;
+}
+
+/* what the part may replace: nothing yet, an empty file, a part file or a device, not an input of
+   the run; 0, or -1 with why in c->err */
+static int target_ok(uraCtx* c, shard* d) {
+  struct stat st;
+  if (stat(d->path, &st)) return 0; /* none (or the write says why) */
+  for (int k = 0; k < d->ninput; k++) {
+    if (d->input[k].dev == st.st_dev && d->input[k].ino == st.st_ino) {
+      return ura_fail(c,
+                      "--part '%s' is a file the run reads ('%s'): the part would replace it; "
+                      "accepted: a new file or a part file",
+                      d->path, d->input[k].path);
+    }
+  }
+  if (S_ISDIR(st.st_mode)) {
+    return ura_fail(c, "--part '%s' is a directory; accepted: a new file or a part file", d->path);
+  }
+  if (!S_ISREG(st.st_mode) || st.st_size == 0) return 0;
+  char head[sizeof uraPART_MAGIC + 1] = "";
+  FILE* f = fopen(d->path, "rb");
+  size_t n = f ? fread(head, 1, sizeof uraPART_MAGIC, f) : 0;
+  if (f) fclose(f);
+  if (n < sizeof uraPART_MAGIC || memcmp(head, uraPART_MAGIC " ", sizeof uraPART_MAGIC)) {
+    return ura_fail(c,
+                    "--part '%s' exists and is not a part file: it would be replaced; accepted: "
+                    "a new file, an empty file or a part file",
+                    d->path);
+  }
+  return 0;
+}
+
+static void s_free(uraScale* s) {
+  shard* d = s->impl;
+  for (int k = 0; k < d->ninput; k++) free(d->input[k].path);
+  free(d->input);
+  free(d->text);
+  free(d);
+  free(s);
+}
 
 static int s_begin(uraScale* s, long ntodo) {
   shard* d = s->impl;
@@ -41,7 +110,13 @@ static int s_end(uraScale* s, urGrid* g, const long* todo, long ntodo) {
   for (long k = 0; k < ntodo; k++) {
     urCell* c = &g->cell[todo[k]];
     if ((k + s->grid) % d->n == d->i) {
-      if (ura_cell_write(c, line, sizeof line) < 0) {
+      int w = ura_cell_write(c, line, sizeof line);
+      if (w == -2) {
+        return ura_fail(s->c,
+                        "grid: cell %ld holds a value outside its domain (p or a PoF not in [0, "
+                        "1], or an infinite criterion): a part cannot carry it",
+                        k);
+      } else if (w < 0) {
         return ura_fail(s->c, "grid: a cell's result does not fit a part line");
       }
       fprintf(d->f, "c %ld %s\n", k, line);
@@ -66,7 +141,10 @@ static int s_finish(uraScale* s, int rc) {
     fprintf(d->f, "sum %016llx\n", ura_fnv(uraFNV0, d->text, d->len));
   }
   fclose(d->f);
-  if (rc != 130) {
+  if (rc != 130 && target_ok(c, d)) {
+    fprintf(stderr, "uasimpact: %s\n", c->err);
+    if (!status) status = 2;
+  } else if (rc != 130) {
     uraAtomic a;
     int mute = c->mute;
     c->mute = 0;
@@ -81,13 +159,11 @@ static int s_finish(uraScale* s, int rc) {
       if (!status) status = 1;
     }
   }
-  free(d->text);
-  free(d);
-  free(s);
+  s_free(s);
   return status;
 }
 
-static const uraScaleOps ops = {"shard", s_begin, s_next, s_end, s_finish};
+static const uraScaleOps ops = {"shard", s_begin, s_next, s_end, s_finish, s_input};
 
 uraScale* ura_shard_new(uraCtx* c, int i, int n, const char* path, int argc, char** argv) {
   uraScale* s = calloc(1, sizeof *s);
@@ -103,7 +179,7 @@ uraScale* ura_shard_new(uraCtx* c, int i, int n, const char* path, int argc, cha
   d->n = n;
   snprintf(d->path, sizeof d->path, "%s", path);
   d->f = open_memstream(&d->text, &d->len);
-  if (!d->f || ura_scale_mute(c)) {
+  if (!d->f) {
     free(s);
     free(d);
     ura_fail(c, "out of memory");
@@ -114,5 +190,20 @@ uraScale* ura_shard_new(uraCtx* c, int i, int n, const char* path, int argc, cha
   s->c = c;
   s->grid = -1;
   s->impl = d;
+
+  /* the scripts of the command line are inputs from the start: refused before the run */
+  for (int k = 0; k < argc; k++) {
+    struct stat st;
+    if (!strcmp(argv[k], "-c"))
+      k++;
+    else if (!stat(argv[k], &st))
+      s_input(s, argv[k], &st);
+  }
+  if (target_ok(c, d) ||
+      (ura_scale_mute(c) && ura_fail(c, "cannot open /dev/null: %s", strerror(errno)))) {
+    fclose(d->f);
+    s_free(s);
+    return NULL;
+  }
   return s;
 }

@@ -1,8 +1,12 @@
 /* plot.c: gnuplot as an external process. A plot is a complete script (commands and named
  * datablocks $D << EOD ... EOD) built in memory, then written to gnuplot's standard input
  * through a pipe; we wait for gnuplot to exit, so an output file is complete on return, and
- * read its error output from a temporary file. SIGPIPE is ignored around the writes, a missing
- * gnuplot or a missing display gives one clear message, and nothing here ends the program.
+ * read its error output from a temporary file. An output file is written whole or not at all:
+ * gnuplot writes a temporary file beside it (base/atomic.c), renamed over it only after gnuplot
+ * exited cleanly and the file passed its check (plot_file.c); a failure removes it and leaves
+ * an old file as it was. SIGPIPE is ignored around the writes, a missing gnuplot or a missing
+ * display gives one clear message, Ctrl-C (or the viewer's keys, base/keywatch.c) stops the wait
+ * within 0.05 s, and nothing here ends the program.
  * Here the runner and what every kind of plot shares (scripts, numbers, texts, x-y curves); the
  * plot command and its kinds are plot_cmd.c, plot_history.c, plot_sweep.c and plot_mc.c.
  */
@@ -170,14 +174,13 @@ void ura_plot_canvas(uraCtx* c, int w, int h) {
   c->canvas_h = h;
 }
 
-/* the terminal and output preamble, or -1 with the error recorded: both checked again (they
-   are checked when set), the terminal as we write it, the output as a quoted string */
-static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
-  char term[512], out[512];
-  if (*c->st.terminal && ura_terminal_check(c, c->st.terminal, term, sizeof term)) return -1;
-  if (*c->st.output && ura_output_check(c, c->st.output, out, sizeof out)) return -1;
-  if (!*c->st.terminal) term[0] = 0;
-  if (!*c->st.output) out[0] = 0;
+/* the terminal (as we write it) and the output file of the settings, both checked again (they
+   are checked when set); 0, or -1 with the error recorded */
+static int settings(uraCtx* c, const char* who, char* term, size_t nt, char* out, size_t no,
+                    int* window) {
+  term[0] = out[0] = 0;
+  if (*c->st.terminal && ura_terminal_check(c, c->st.terminal, term, nt)) return -1;
+  if (*c->st.output && ura_output_check(c, c->st.output, out, no)) return -1;
   if (*out && !*term) {
     const char* t = ura_term_for_ext(out);
     if (!t) {
@@ -186,47 +189,104 @@ static int preamble(uraCtx* c, const char* who, FILE* f, int* window) {
                       "pdfcairo, ...)",
                       who, out);
     }
-    snprintf(term, sizeof term, "%s", t);
+    snprintf(term, nt, "%s", t);
   }
   int kind = ura_term_kind(term);
   if (!*out && kind == uraTERM_FILE) {
     return ura_fail(c, "%s: terminal '%s' writes a file; use 'set output FILE'", who, term);
   }
   *window = !*out && kind == uraTERM_WINDOW;
+  return 0;
+}
+
+/* the preamble: the terminal, and the file gnuplot writes (the temporary file beside the
+   output, as a quoted string; ./ before a relative name, so that no name is taken for a pipe);
+   -1 with the error recorded when that name cannot be given to gnuplot as it is */
+static int preamble(uraCtx* c, const char* who, FILE* f, const char* term, const char* tmp,
+                    const char* out) {
+  for (const char* p = tmp; p && *p; p++) {
+    if ((unsigned char)*p < 32 || *p == 127) {
+      return ura_fail(c,
+                      "%s: cannot write '%s': the file it names holds a control character; "
+                      "accepted: a file name without control characters",
+                      who, out);
+    }
+  }
   if (*term) put_terminal(c, f, term);
-  if (*out) {
+  if (tmp) {
+    char name[sizeof((uraAtomic*)0)->tmp + 2];
+    snprintf(name, sizeof name, "%s%s", tmp[0] == '/' ? "" : "./", tmp);
     fprintf(f, "set output ");
-    quote(f, out);
+    quote(f, name);
     fputc('\n', f);
   }
   return 0;
+}
+
+/* wait for gnuplot to exit, stopping it at the deadline or on Ctrl-C; it is reaped only once
+   no signal handler can kill it any more (ura_child_arm); 1 when it exited by itself */
+static int wait_gnuplot(pid_t pid, double deadline, int* status) {
+  struct timespec tick = {0, 5000000};
+  int exited = 0;
+  for (;;) {
+    siginfo_t si;
+    memset(&si, 0, sizeof si);
+    int r = waitid(P_PID, pid, &si, WEXITED | WNOHANG | WNOWAIT);
+    if (r == 0 && si.si_pid == pid) {
+      exited = 1;
+      break;
+    }
+    if (r < 0 && errno != EINTR) break;
+    if (now() > deadline || ura_interrupted()) break;
+    nanosleep(&tick, NULL);
+  }
+  if (!exited) {
+    siginfo_t si;
+    kill(pid, SIGKILL);
+    while (waitid(P_PID, pid, &si, WEXITED | WNOWAIT) < 0 && errno == EINTR) {
+    }
+  }
+  ura_child_disarm();
+  *status = 0;
+  while (waitpid(pid, status, 0) < 0 && errno == EINTR) {
+  }
+  return exited;
 }
 
 int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) {
   if (ura_dry(c, who)) return -1;
   if (c->mute) return 0; /* a shard or an MPI rank but 0 draws nothing */
   /* the settings, then gnuplot and a display */
-  char* pre = NULL;
-  size_t npre = 0;
-  FILE* pf = open_memstream(&pre, &npre);
-  if (!pf) return ura_fail(c, "%s: out of memory", who);
+  char term[512], out[512];
   int window = 0;
-  int rc = preamble(c, who, pf, &window);
-  fclose(pf);
-  if (rc) {
-    free(pre);
-    return -1;
-  }
+  if (settings(c, who, term, sizeof term, out, sizeof out, &window)) return -1;
   if (!have_gnuplot()) {
-    free(pre);
     return ura_fail(c, "%s: gnuplot not found; install it (Debian: gnuplot-nox) or use export",
                     who);
   }
   const char* d = getenv("DISPLAY");
   const char* w = getenv("WAYLAND_DISPLAY");
   if (window && !(d && *d) && !(w && *w)) {
-    free(pre);
     return ura_fail(c, "plot: no display; use 'set terminal png' and 'set output FILE.png'");
+  }
+
+  /* an output file: gnuplot writes a temporary file beside it (atomic.c) */
+  uraAtomic a;
+  int file = *out != 0;
+  if (file && ura_atomic_open_file(c, &a, out, who)) return -1;
+  char* pre = NULL;
+  size_t npre = 0;
+  FILE* pf = open_memstream(&pre, &npre);
+  if (!pf) {
+    if (file) ura_atomic_close(c, &a, 0, who);
+    return ura_fail(c, "%s: out of memory", who);
+  }
+  int rc = preamble(c, who, pf, term, file ? a.tmp : NULL, out);
+  fclose(pf);
+  if (rc) {
+    free(pre);
+    if (file) ura_atomic_close(c, &a, 0, who);
+    return -1;
   }
 
   /* gnuplot reads the pipe; its output and errors go to temporary files */
@@ -234,10 +294,12 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
   FILE* of = tmpfile();
   int fd[2] = {-1, -1};
   if (!ef || !of || pipe(fd)) {
+    int e = errno;
     if (ef) fclose(ef);
     if (of) fclose(of);
     free(pre);
-    return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(errno));
+    if (file) ura_atomic_close(c, &a, 0, who);
+    return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(e));
   }
   fflush(NULL);
   pid_t pid = fork();
@@ -256,12 +318,15 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
   }
   close(fd[0]);
   if (pid < 0) {
+    int e = errno;
     close(fd[1]);
     fclose(ef);
     fclose(of);
     free(pre);
-    return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(errno));
+    if (file) ura_atomic_close(c, &a, 0, who);
+    return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(e));
   }
+  ura_child_arm(pid); /* a signal that ends us kills it before removing the temporary file */
 
   /* the script, with SIGPIPE ignored (a gnuplot that died shows as EPIPE) and a deadline
      (a gnuplot that stops reading does not hold us) */
@@ -273,29 +338,13 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
   fcntl(fd[1], F_SETFL, fcntl(fd[1], F_GETFL) | O_NONBLOCK);
   int werr = write_all(fd[1], pre, npre, deadline);
   if (!werr) werr = write_all(fd[1], script, len, deadline);
-  if (!werr && strstr(pre, "set output")) {
-    werr = write_all(fd[1], "unset output\n", 13, deadline);
-  }
+  if (!werr && file) werr = write_all(fd[1], "unset output\n", 13, deadline);
   close(fd[1]);
   sigaction(SIGPIPE, &old, NULL);
 
   /* wait for gnuplot, stopping it at the deadline or on Ctrl-C */
-  int status = 0, waited = 0;
-  struct timespec tick = {0, 5000000};
-  for (;;) {
-    pid_t r = waitpid(pid, &status, WNOHANG);
-    if (r == pid || (r < 0 && errno != EINTR)) {
-      waited = r == pid;
-      break;
-    }
-    if (now() > deadline || ura_interrupted()) break;
-    nanosleep(&tick, NULL);
-  }
-  if (!waited) {
-    kill(pid, SIGKILL);
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-  }
+  int status = 0;
+  int waited = wait_gnuplot(pid, deadline, &status);
 
   /* text terminals' drawings to the output stream, then the verdict */
   char* outtext = slurp(of, 1L << 24);
@@ -317,7 +366,7 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
   } else {
     snprintf(full, sizeof full, "%s", msg);
   }
-  /* the verdict: stopped, not found, killed, failed, or no file */
+  /* the verdict: stopped, not found, killed, failed, or a file not complete */
   rc = 0;
   if (ura_interrupted()) {
     rc = ura_fail(c, "%s: interrupted (Ctrl-C); gnuplot was stopped", who);
@@ -331,11 +380,13 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
   } else if (WEXITSTATUS(status) != 0 || werr) {
     rc = ura_fail(c, "%s: gnuplot failed%s: %s", who, werr == EPIPE ? " (it stopped reading)" : "",
                   full);
-  } else if (*c->st.output) {
-    struct stat sb;
-    if (stat(c->st.output, &sb) || sb.st_size == 0) {
-      rc = ura_fail(c, "%s: gnuplot wrote nothing to '%s'", who, c->st.output);
-    }
+  } else if (file) {
+    rc = ura_plot_file_check(c, who, a.tmp, term, out);
+  }
+  /* the file renamed over the output when complete, else removed (the old one stays) */
+  if (file) {
+    int crc = ura_atomic_close(c, &a, rc == 0, who);
+    if (!rc) rc = crc;
   }
 
   /* on success, gnuplot's warnings as notes */

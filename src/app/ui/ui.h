@@ -8,7 +8,9 @@
  *
  * Settings (c->st): terminal empty = gnuplot's default (a window, needs DISPLAY or
  * WAYLAND_DISPLAY), output empty = a window (or the text of a text terminal such as dumb).
- * With an output file the file is complete when the function returns. Gnuplot's warnings go to
+ * With an output file the file is complete when the function returns: gnuplot writes a temporary
+ * file beside it, renamed over it only when gnuplot succeeded and the file is checked complete;
+ * on any failure an existing file of that name is left as it was. Gnuplot's warnings go to
  * c->msg; text terminals' drawings to c->out.
  */
 #ifndef UASIMPACT_UI_H
@@ -72,6 +74,12 @@ int ura_plot_sweep(uraCtx* c, const char* kind);
 /* s as a gnuplot string constant: in single quotes (gnuplot substitutes nothing there), line
    breaks as '...'."\n".'...'; the only way a text reaches a plot script */
 void ura_plot_quote(FILE* f, const char* s);
+
+/* the file tmp that gnuplot wrote under terminal term for the output shown is complete: not
+   empty, the format's first bytes and end marker (PNG, JPEG, GIF, PDF, EPS, PostScript, SVG,
+   HTML), for a text terminal a disk not left full (plot_file.c); 0, or -1 with c->err set */
+int ura_plot_file_check(uraCtx* c, const char* who, const char* tmp, const char* term,
+                        const char* shown);
 
 /* factor that shows signal k in its display unit (head_acc in m/s^2: 1/g; deflections in m:
    1000, mm), and that unit */

@@ -2,7 +2,9 @@
  * semantic colour pairs (glyphs and attributes without colour or with NO_COLOR), axes in metres,
  * a legend, the conditions and Q, the values under the cursor; Enter inspects a cell (its peak
  * values and head acceleration drawn in the terminal), p sends its histories to gnuplot, q or
- * Esc returns to the prompt. The terminal is in raw mode, so Ctrl-C is a key here, not SIGINT.
+ * Esc returns to the prompt. The terminal is in raw mode, so Ctrl-C is a key here, not SIGINT:
+ * while Enter's impact or p's gnuplot runs, a thread watches the keys (keywatch.c), so that
+ * Ctrl-C stops the work and q stops it and leaves, within 0.2 s.
  * The window size is polled (TIOCGWINSZ) as well as taken from KEY_RESIZE: ncurses only
  * catches SIGWINCH when nobody else does. The signal dispositions ncurses installs are undone
  * on the way out, so the application's SIGINT handling is as before.
@@ -39,13 +41,14 @@ typedef struct {
   uraCtx* c;
   urGrid* g;
   int fd;        /* the terminal, for its size */
+  int in;        /* the terminal read, for its keys */
   int row, col;  /* cursor cell */
   int top, left; /* first visible row and column */
   uraScheme scheme;
   chtype role_attr[uraROLE_N]; /* colour pair and attributes of each role */
   char note[uraERRLEN + 600];  /* last message (errors of Enter and p) */
   int panel;                   /* the inspect panel is open */
-  int gone;                    /* the grid went away: leave */
+  int gone;                    /* the grid went away, or q during a wait: leave */
   int have_trace;              /* trace holds the histories of cell (trow, tcol) */
   int trow, tcol;
   uraTrace trace;
@@ -452,22 +455,40 @@ static void quiet_end(uraCtx* c, quiet* q, char* note, size_t n) {
   free(q->mbuf);
 }
 
+/* the bottom line during a wait: what runs, and the keys that stop it */
+static void waiting(const char* what) {
+  char buf[200];
+  snprintf(buf, sizeof buf, "%s (Ctrl-C stops it, q stops it and leaves)", what);
+  move(LINES - 1, 0);
+  clrtoeol();
+  put(stdscr, LINES - 1, 0, A_BOLD, buf);
+  refresh();
+}
+
+/* after a wait under a key watch: a key that stopped it is said, and q leaves */
+static int watched(viewer* v, uraKeyWatch* kw) {
+  int key = ura_keywatch_stop(kw);
+  if (key == 'q') v->gone = 1;
+  return key;
+}
+
 /* Enter: run or recall the cell's impact, then open the panel (when asked) */
 static void inspect(viewer* v, int open) {
   urCell* cl = cell_at(v, v->row, v->col);
   v->have_trace = 0;
   v->note[0] = 0;
   if (v->c->inspect) {
-    put(stdscr, LINES - 1, 0, A_BOLD, "running the impact of this cell...");
-    clrtoeol();
-    refresh();
+    waiting("running the impact of this cell...");
     quiet q;
+    uraKeyWatch kw;
     memset(&v->trace, 0, sizeof v->trace);
     quiet_begin(v->c, &q);
+    ura_keywatch_start(&kw, v->in);
     int rc = v->c->inspect(v->c, cl, &v->trace);
+    watched(v, &kw);
     quiet_end(v->c, &q, v->note, sizeof v->note);
-    if (!v->c->last.g) {
-      v->gone = 1; /* the callback dropped the grid: nothing left to show */
+    if (!v->c->last.g || v->gone) {
+      v->gone = 1; /* the callback dropped the grid (nothing left to show), or q */
       return;
     }
     if (v->c->last.g != v->g) {
@@ -498,9 +519,13 @@ static void plot(viewer* v) {
   }
   const urCell* cl = cell_at(v, v->row, v->col);
   quiet q;
+  uraKeyWatch kw;
+  waiting("plotting in gnuplot...");
   quiet_begin(v->c, &q);
+  ura_keywatch_start(&kw, v->in);
   int rc =
       ura_plot_trace_hic(v->c, &v->trace, 0, NULL, cl->val[urVAL_HIC_T1], cl->val[urVAL_HIC_T2]);
+  watched(v, &kw);
   quiet_end(v->c, &q, NULL, 0);
   if (rc)
     snprintf(v->note, sizeof v->note, "%s", v->c->err);
@@ -630,6 +655,7 @@ int ura_cmd_view(uraCtx* c, int argc, char** argv) {
   v.c = c;
   v.g = c->last.g;
   v.fd = fileno(c->out);
+  v.in = fileno(stdin);
   setup_colors(&v);
 
   /* start at the offset nearest 0, centred */

@@ -442,8 +442,34 @@ int ur_model_set_param(urModel* m, const char* name, double value) {
   if (setname(m, m->param[m->nparam].name, name)) {
     return -1;
   }
-  m->param[m->nparam].value = value;
+  urParam* p = m->param + m->nparam;
+  p->value = value;
+  p->unit[0] = 0;
+  p->lo = -INFINITY;
+  p->hi = INFINITY;
+  p->why[0] = 0;
   return m->nparam++;
+}
+
+
+int ur_param_accepts(const urParam* p, double v) {
+  return v >= p->lo && v <= p->hi;
+}
+
+
+int ur_model_set_param_range(urModel* m, const char* name, double lo, double hi, const char* why) {
+  int i = m && !editable(m) ? ur_name_param(m, name) : -1;
+  if (i < 0) {
+    return -1;
+  }
+  urParam* p = m->param + i;
+  if (!(lo <= hi) || (why && strlen(why) >= sizeof p->why) || !(p->value >= lo && p->value <= hi)) {
+    return -1;
+  }
+  p->lo = lo;
+  p->hi = hi;
+  snprintf(p->why, sizeof p->why, "%s", why ? why : "");
+  return i;
 }
 
 //---------------------------------- compile -------------------------------------------------------

@@ -273,6 +273,15 @@ int ur_impact_finish(const urImpactSetup* s, urImpactWork* w, const urInjuryPara
   r->t_first = d->t_first;
   r->contact = d->t_first >= 0;
   r->nextrap = ur_extrapolated(m, d, r->extrap, sizeof r->extrap);
+  if (d->status == urSTAT_TMAX && !r->contact) {
+    /* a drone that has passed the person ends the run earlier (ur_impact_after_step): this one
+       could still touch it, and P = 0 would be a guess */
+    snprintf(r->reason, sizeof r->reason,
+             "the run reached tmax (%g s) before the drone touched or passed the person; "
+             "accepted: a larger tmax, a smaller or faster drone",
+             m->opt.tmax);
+    return -1;
+  }
   if (!r->contact || d->nhist < 2) return 0;
 
   /* channels: time, head acceleration, neck Fz and My (SAE signs), deflections */

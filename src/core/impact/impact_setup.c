@@ -86,6 +86,24 @@ static double drone_low(const urModel* m, const urData* d, int drone) {
   return low;
 }
 
+/* the lowest point of the drone's ellipsoids that can touch the person (the contact
+   candidates), by the box around each: below it a parked drone may push the settling person */
+static double parked_reach(const urModel* m, urData* d, int drone) {
+  double low = INFINITY;
+  urCand cd;
+  for (int k = 0; ur_cand_at(m, k, &cd) == 0; k++) {
+    if (cd.g2 < 0) continue;
+    int a = ur_geom_intree(m, cd.g1, drone), b = ur_geom_intree(m, cd.g2, drone);
+    if (a == b) continue;
+    int g = a ? cd.g1 : cd.g2;
+    const double* R = ur_geom_xmat(m, d, g);
+    double h = 0;
+    for (int j = 0; j < 3; j++) h += fabs(R[6 + j]) * m->geom[g].size[j];
+    low = fmin(low, d->gxpos[3 * g + 2] - h);
+  }
+  return low;
+}
+
 /* d reset to the reference configuration with the drone parked */
 static void park(const urModel* m, urData* d, int drone) {
   ur_data_reset(m, d);
@@ -473,11 +491,28 @@ static int roles_check(const urModel* m, char* err, size_t n) {
   return 0;
 }
 
+/* the contact candidates (pairs and airbag targets, the ground excluded) between the drone's
+   tree and the person's */
+static int drone_person_cands(const urModel* m, int drone) {
+  urCand cd;
+  int n = 0;
+  for (int k = 0; ur_cand_at(m, k, &cd) == 0; k++) {
+    if (cd.g2 >= 0) n += ur_geom_intree(m, cd.g1, drone) != ur_geom_intree(m, cd.g2, drone);
+  }
+  return n;
+}
+
 int ur_impact_check(const urModel* m, char* err, size_t n) {
   double dt = m->opt.dt, tmax = m->opt.tmax;
   double settle_dt = ur_model_param(m, "settle_dt", NAN), window = ur_model_param(m, "window", 1);
   if (roles_check(m, err, n)) {
     return -1;
+  } else if (drone_person_cands(m, m->roles.drone) == 0) {
+    snprintf(err, n,
+             "the model has no contact pair between the drone and the person (every impact "
+             "would pass through the person and give P = 0); accepted: a model with a pair, "
+             "pairs or airbag targets= joining an ellipsoid of the drone to one of the person "
+             "(uasimpact-model(5))");
   } else if (!(dt > 0 && dt <= 1e-3)) {
     snprintf(err, n,
              "dt %g s is out of range; accepted: (0, 1e-3] s (a contact pulse lasts "
@@ -586,6 +621,16 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   const double* sd = d->sensordata;
   memcpy(s->head_cg, sd + m->sensor[m->roles.head_pos].adr, 3 * sizeof(double));
   s->head_top = ellipsoid_top(m, d, s->head_geom);
+  s->overlap = 0;
+  s->overlap_geom = -1;
+  for (int k = 0; k < s->ncand; k++) { /* the drone starts with no part below the head top */
+    int g = s->cand[k][1];
+    double above = ellipsoid_top(m, d, g) - s->head_top;
+    if (above > s->overlap) {
+      s->overlap = above;
+      s->overlap_geom = g;
+    }
+  }
   s->neck_preload = -sd[m->sensor[s->s_neck].adr + 2];
   s->rest = d;
   s->window = ur_model_param(m, "window", INFINITY);
@@ -636,6 +681,16 @@ int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iter
   park(m, d, drone);
   double low = drone_low(m, d, drone);
   int apart = trees_apart(m, drone);
+  double ptop = person_top(m, d, drone), reach = parked_reach(m, d, drone);
+  if (!(reach > ptop)) {
+    snprintf(s->err, sizeof s->err,
+             "the drone is too large to wait clear of the person while the stance settles: "
+             "parked %.3g km up it reaches down to %.3g m (the person's top %.3g m)",
+             PARK[2] / 1000, reach, ptop);
+    stance_free(st);
+    ur_data_free(d);
+    return -2;
+  }
 
   /* a donor with the same person, whose settling stayed below this drone's parked spheres (so
      the trees never touch), and this drone takes its held step without failing (as it would at

@@ -24,7 +24,76 @@ static const KeySpec spec_option[] = {NUM("dt"),
                                       ENABLE};
 //---------------------------------- statements ----------------------------------------------------
 
-/* param NAME VALUE [UNIT] */
+/* a range of a parameter's values for messages: "0.15 to 0.65 m: reason" */
+static void range_text(char* buf, size_t n, double lo, double hi, const char* si, const char* why) {
+  snprintf(buf, n, "%g to %g%s%s%s%s", lo, hi, *si ? " " : " (no unit)", si, *why ? ": " : "", why);
+}
+
+/* the optional range=LO,HI and why=TEXT of a param line, from word i on (LO, HI in the line's
+   unit, factor f); lo, hi stay infinite and why empty when absent */
+static int param_range(Parser* p, const urlStmt* st, int i, const char* name, double f, double* lo,
+                       double* hi, char* why, size_t nwhy) {
+  const char* w = i < st->nword ? url_word(&p->lx, st->word + i) : NULL;
+  int line = i < st->nword ? p->lx.word[st->word + i].line : st->line;
+  char ctx[64];
+  snprintf(ctx, sizeof(ctx), "param '%s': range", name);
+  if (w && !strncmp(w, "range=", 6)) {
+    const char* r = w + 6;
+    const char* comma = strchr(r, ',');
+    if (!comma || strchr(comma + 1, ',')) {
+      return url_fail(p, line,
+                      "%s: '%s' is not two numbers; expected range=LO,HI (in the unit of "
+                      "the value)",
+                      ctx, url_quote(r, strlen(r)).s);
+    }
+    if (url_number(p, r, (size_t)(comma - r), line, ctx, lo) ||
+        url_number(p, comma + 1, strlen(comma + 1), line, ctx, hi)) {
+      return -1;
+    }
+    *lo *= f;
+    *hi *= f;
+    if (!(*lo <= *hi) || !isfinite(*lo) || !isfinite(*hi)) {
+      return url_fail(p, line, "%s: LO must not exceed HI (got %g, %g after conversion to SI)", ctx,
+                      *lo, *hi);
+    }
+    w = ++i < st->nword ? url_word(&p->lx, st->word + i) : NULL;
+    line = i < st->nword ? p->lx.word[st->word + i].line : line;
+  }
+  if (w && !strncmp(w, "why=", 4)) {
+    if (isinf(*lo)) {
+      return url_fail(p, line, "param '%s': why= explains a range; expected range=LO,HI before it",
+                      name);
+    }
+    size_t k = 0;
+    for (int j = i; j < st->nword && k < nwhy; j++) {
+      const char* t = url_word(&p->lx, st->word + j) + (j == i ? 4 : 0);
+      k += (size_t)snprintf(why + k, nwhy - k, "%s%s", k ? " " : "", t);
+    }
+    if (k == 0 || k >= nwhy) {
+      return url_fail(p, line, "param '%s': why= needs a reason of 1 to %d characters (got %zu)",
+                      name, (int)nwhy - 1, k);
+    }
+    for (size_t j = 0; j < k; j++) {
+      if ((unsigned char)why[j] < 32 || (unsigned char)why[j] > 126) {
+        return url_fail(p, line,
+                        "param '%s': why= holds a character that is not printable "
+                        "ASCII; expected a reason in ASCII (only comments may hold other "
+                        "characters)",
+                        name);
+      }
+    }
+    return 0;
+  }
+  if (w) {
+    return url_fail(p, line,
+                    "param takes NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]]; got "
+                    "'%s'",
+                    url_quote(w, strlen(w)).s);
+  }
+  return 0;
+}
+
+/* param NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]] */
 int url_st_param(Parser* p, const urlStmt* st) {
   const char* w[4] = {NULL, NULL, NULL, NULL};
   int ln[4] = {st->line, st->line, st->line, st->line};
@@ -32,11 +101,17 @@ int url_st_param(Parser* p, const urlStmt* st) {
     w[i] = url_word(&p->lx, st->word + i);
     ln[i] = p->lx.word[st->word + i].line;
   }
-  if (st->nword < 3 || st->nword > 4) {
-    return url_fail(p, st->line, "param takes NAME VALUE [UNIT]; got %d word(s) after 'param'",
+  if (w[3] && strchr(w[3], '=')) {
+    w[3] = NULL; /* range= or why= */
+  }
+  int first = w[3] ? 4 : 3; /* the first word after NAME VALUE [UNIT] */
+  if (st->nword < 3) {
+    return url_fail(p, st->line,
+                    "param takes NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]]; got %d word(s) "
+                    "after 'param'",
                     st->nword - 1);
   }
-  for (int i = 1; i < st->nword; i++) {
+  for (int i = 1; i < 3; i++) {
     if (strchr(w[i], '=')) {
       return url_fail(p, ln[i], "param takes NAME VALUE [UNIT], not key=value ('%s')",
                       url_quote(w[i], strlen(w[i])).s);
@@ -49,13 +124,12 @@ int url_st_param(Parser* p, const urlStmt* st) {
   /* value and unit */
   char ctx[64];
   snprintf(ctx, sizeof(ctx), "param '%s'", w[1]);
-  double v;
+  double v, f = 1;
   if (url_number(p, w[2], strlen(w[2]), ln[2], ctx, &v)) {
     return -1;
   }
   char si[urNAMELEN] = "";
   if (w[3]) {
-    double f;
     if (ur_unit_parse(w[3], &f, si, sizeof si)) {
       char list[200];
       url_unit_names(list, sizeof list);
@@ -70,11 +144,35 @@ int url_st_param(Parser* p, const urlStmt* st) {
     }
   }
 
-  /* the caller's override wins (last one given) */
+  /* the range of its values: this line's, or an earlier definition's */
+  double lo = -INFINITY, hi = INFINITY;
+  char why[urWHYLEN] = "";
+  if (param_range(p, st, first, w[1], f, &lo, &hi, why, sizeof why)) {
+    return -1;
+  }
+  int had = ur_name_param(p->m, w[1]);
+  if (isinf(lo) && had >= 0) {
+    lo = p->m->param[had].lo;
+    hi = p->m->param[had].hi;
+    snprintf(why, sizeof why, "%s", p->m->param[had].why);
+  }
+  const char* ru = *si || had < 0 ? si : p->m->param[had].unit; /* SI unit of the range */
+  char rt[urWHYLEN + 80];
+  range_text(rt, sizeof rt, lo, hi, ru, why);
+  if (!(v >= lo && v <= hi)) {
+    return url_fail(p, st->line, "param '%s': its value %g%s%s is outside its range %s", w[1], v,
+                    *ru ? " " : "", ru, rt);
+  }
+
+  /* the caller's override wins (last one given), within the range */
   for (int i = 0; i < p->nov; i++) {
     if (!strcmp(p->ov[i].name, w[1])) {
       v = p->ov[i].value;
     }
+  }
+  if (!(v >= lo && v <= hi)) {
+    return url_fail(p, st->line, "param '%s': the value set, %g%s%s, is outside its range %s", w[1],
+                    v, *ru ? " " : "", ru, rt);
   }
 
   /* store */
@@ -88,6 +186,9 @@ int url_st_param(Parser* p, const urlStmt* st) {
     return url_fail(p, st->line, "param '%s': %s", w[1], p->m->err);
   }
   snprintf(p->m->param[k].unit, sizeof p->m->param[k].unit, "%s", si);
+  if (ur_model_set_param_range(p->m, w[1], lo, hi, why) < 0) {
+    return url_fail(p, st->line, "param '%s': its range cannot be kept", w[1]);
+  }
   return 0;
 }
 

@@ -70,3 +70,15 @@ int ur_igrc(double density, double ca, double tlos, double compensation, double*
   *igrc_table = (int)nearbyint(r1 - 0.1);
   return 0;
 }
+
+int ur_igrc_clamp(int* igrc) {
+  if (*igrc < urIGRC_TABLE_MIN) {
+    *igrc = urIGRC_TABLE_MIN;
+    return -1;
+  }
+  if (*igrc > urIGRC_TABLE_MAX) {
+    *igrc = urIGRC_TABLE_MAX;
+    return 1;
+  }
+  return 0;
+}

@@ -4,7 +4,8 @@
 # file behind, a directory in the way is refused; a good write keeps the old file's mode. What is
 # not a regular file is never replaced: a device (/dev/full: "No space left on device", reported)
 # or a FIFO is written in place, /dev/stdout through the open descriptor; a symbolic link is
-# followed to its file and stays a link; SIGTERM during a write leaves no temporary file.
+# followed to its file and stays a link; SIGTERM, SIGHUP, SIGUSR1, SIGALRM, SIGPIPE and the
+# other signals that end the program by default leave no temporary file during a write.
 . tests/lib.sh
 
 U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
@@ -115,18 +116,40 @@ MS=$(( ($(date +%s%N) - t0) / 1000000 )); echo "  (SIGINT while a writer waits f
 check fifo_wait_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
   has "$TMP/err" "export: interrupted (Ctrl-C) while opening"'
 
-# SIGTERM while the temporary file is being written (a large export): no temporary file stays
+# a signal that ends the program by default, sent while the temporary file is being written (a
+# large export): no temporary file stays, and the program dies of that signal (status 128 + its
+# number). SIGQUIT is ignored in a background job of a script, so it is given back its default
+# first (env --default-signal, where there is one); no core file is written (ulimit -c 0)
 awk 'BEGIN { print "dpar,dperp,p"; for (i = 0; i < 500; i++) for (j = -250; j < 250; j++)
        printf "%.2f,%.2f,%.3f\n", i * 0.05, j * 0.05, (i + j + 300) % 10 / 10 }' >"$TMP/big.csv"
+dflt=""
+env --default-signal=QUIT true 2>/dev/null && dflt="env --default-signal=QUIT"
+for sig in TERM HUP USR1 USR2 ALRM PIPE XCPU VTALRM PROF IO PWR RTMIN QUIT; do
+  if [ "$sig" = QUIT ] && [ -z "$dflt" ]; then
+    skip sigquit_no_temp "env cannot give SIGQUIT back its default in a background job"; continue
+  fi
+  s=$(echo "$sig" | tr 'A-Z' 'a-z')
+  mkdir -p "$TMP/t"
+  (ulimit -c 0; exec $dflt "$U" -c "grid load $TMP/big.csv; export grid $TMP/t/g.csv; export grid $TMP/t/g.csv; export grid $TMP/t/g.csv") \
+    >/dev/null 2>&1 & PID=$!
+  n=0
+  while ! ls "$TMP/t" | grep -q '\.tmp\.' && [ "$n" -lt 600 ]; do sleep 0.01; n=$((n + 1)); done
+  check "sig${s}_while_writing" cond 'ls "$TMP/t" | grep -q "\.tmp\."'
+  kill -s "$sig" $PID; { wait $PID; } 2>/dev/null; RC=$?
+  check "sig${s}_status" cond '[ "$RC" -gt 128 ] && [ "$(kill -l "$RC")" = "$sig" ]'
+  check "sig${s}_no_temp" cond '! ls "$TMP/t" | grep -q "\.tmp\."'
+  rm -rf "$TMP/t"
+done
+
+# a signal the program was started with ignored stays ignored (nohup): the export finishes
 mkdir -p "$TMP/t"
-"$U" -c "grid load $TMP/big.csv; export grid $TMP/t/g.csv; export grid $TMP/t/g.csv; export grid $TMP/t/g.csv" \
+(trap '' HUP; exec "$U" -c "grid load $TMP/big.csv; export grid $TMP/t/g.csv; export grid $TMP/t/g.csv") \
   >/dev/null 2>&1 & PID=$!
 n=0
 while ! ls "$TMP/t" | grep -q '\.tmp\.' && [ "$n" -lt 600 ]; do sleep 0.01; n=$((n + 1)); done
-check sigterm_while_writing cond 'ls "$TMP/t" | grep -q "\.tmp\."'
-kill -TERM $PID; wait $PID; RC=$?
-check sigterm_status [ "$RC" -eq 143 ]
-check sigterm_no_temp cond '! ls "$TMP/t" | grep -q "\.tmp\."'
+kill -s HUP $PID; { wait $PID; } 2>/dev/null; RC=$?
+check ignored_signal_kept cond '[ "$RC" -eq 0 ] && [ -s "$TMP/t/g.csv" ] && ! ls "$TMP/t" | grep -q "\.tmp\."'
+rm -rf "$TMP/t"
 
 # a new file: the mode a plain fopen gives (0666 less the umask)
 (umask 027; exec "$U" -c "grid load $TMP/small.csv; export grid $TMP/new.csv") >/dev/null 2>&1

@@ -2,7 +2,8 @@
 # than the screen through the pager (less -FRSX, $PAGER, set pager off) and never off a
 # terminal; the compact impact row and wrapped notes and help in 80 columns; history's summary;
 # show PREFIX; compare under wind says why p_centre is 0; the viewer's lines fit; the prompt names
-# the live model; off a terminal (-c, pipes) the full row as before
+# the live model; off a terminal (-c, pipes) the full row as before; a pager that fails or dies
+# leaves the output on the screen with a note
 . tests/lib.sh
 
 # ---- off a terminal: the full impact row, the samples of history all, no pager ----
@@ -144,4 +145,20 @@ start p3 80 24 PAGER=/nonexistent/pager
 check prompt3 wait_for p3 'uasimpact\[A\]> *$'
 line p3 "show"
 check pager_missing_prints wait_for p3 '^window +0\.06 s$'
+TM capture-pane -p -J -S -300 -t p3 >"$TMP/screen" # the note scrolled up: the scrollback
+check pager_missing_note cond 'grep -q "^pager: the pager ./nonexistent/pager. was not found; the output follows here" "$TMP/screen"'
+# issue 30: a pager that fails without reading (false exits 1) or dies loses nothing: a note
+# says so and the output follows on the screen
+start p4 80 24 PAGER=false
+check prompt4 wait_for p4 'uasimpact\[A\]> *$'
+line p4 "show"
+check pager_false_prints wait_for p4 '^window +0\.06 s$'
+TM capture-pane -p -J -S -300 -t p4 >"$TMP/screen"
+check pager_false_note cond 'grep -q "^pager: the pager .false. failed (exit status 1); the output follows here (PAGER=cat or .set pager off. prints without a pager)$" "$TMP/screen"'
+start p5 80 24 "PAGER='kill -9 \$\$'"
+check prompt5 wait_for p5 'uasimpact\[A\]> *$'
+line p5 "show"
+check pager_killed_prints wait_for p5 '^window +0\.06 s$'
+TM capture-pane -p -J -S -300 -t p5 >"$TMP/screen"
+check pager_killed_note cond 'grep -q "^pager: the pager .kill -9 \$\$. was ended by signal 9; the output follows here" "$TMP/screen"'
 finish

@@ -111,7 +111,7 @@ static void parts_flush(void** state) {
   while (fgets(buf, sizeof buf, f)) {
     if (!strncmp(buf, "part ", 5)) in_human = !strncmp(buf, "part human", 10);
     if (!in_human) continue;
-    if (!strncmp(buf, "param neck_k_flex ", 18)) strcpy(buf, "param neck_k_flex 170\n");
+    if (!strncmp(buf, "param neck_k_flex 160 ", 22)) memcpy(buf + 18, "170", 3); /* range kept */
     fputs(buf, g);
   }
   fclose(f);

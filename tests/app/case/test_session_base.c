@@ -79,7 +79,7 @@ static void minimal(void** state) {
   s = session(c);
   assert_string_equal(s,
                       "# uasimpact session: replay with 'uasimpact FILE' or 'source FILE'\n"
-                      "reset\ncase A1\nset wind 6\nset step 0.1\nset terminal \"png\"\n"
+                      "reset\ncase A1\nset wind 6\nset step 0.1\nset terminal 'png'\n"
                       "set hic_window 0.036\nset thorax_k 27000 N/m\n");
   free(s);
   /* a user value that differs from the case's */

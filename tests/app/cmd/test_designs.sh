@@ -40,6 +40,29 @@ run -c "set step 0.3; case B; design save plain; case A; design save bag; design
 check show_diff_title has "$TMP/out" '^P_b - P_a in %: '
 check show_diff_legend has "$TMP/out" '^legend: none 0 / no contact; safer <=-30 %; safer -30-0 %; riskier 0-30 %; riskier >=30 %$'
 
+# issue 30: an exported difference grid loads back as a difference grid (grid show the same,
+# Q = q_b - q_a, its note keeps the mark so that it exports and loads again unchanged)
+run -c "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag; grid show; export grid $TMP/d.csv"
+sed -n '/^P_b - P_a in %/,/^legend/p' "$TMP/out" >"$TMP/show0"
+q0=$(sed -n 's/.*: Q = \(-*[0-9.]*\) m^2 over.*/\1/p' "$TMP/out")
+run -c "grid load $TMP/d.csv; grid show; export grid $TMP/d2.csv; grid load $TMP/d2.csv; grid show"
+check diff_loads cond '[ "$RC" -eq 0 ] && [ ! -s "$TMP/err" ]'
+sed -n '/^P_b - P_a in %/,/^legend/p' "$TMP/out" | head -n "$(lines "$TMP/show0")" >"$TMP/show1"
+check diff_load_same_show cond '[ -s "$TMP/show0" ] && cmp -s "$TMP/show0" "$TMP/show1"'
+check diff_load_q cond '[ -n "$q0" ] && [ "$(grep -c ": Q = $q0 m^2 over .*source difference P_b - P_a loaded from" "$TMP/out")" -eq 2 ]'
+check diff_load_negative_q cond 'echo "$q0" | grep -q "^-0\.[0-9]"'
+check diff_round_trip cond '[ "$(grep -v "^#" "$TMP/d.csv")" = "$(grep -v "^#" "$TMP/d2.csv")" ] &&
+  grep -q "^# grid of case A, .*(difference P_b - P_a loaded from .*d.csv)" "$TMP/d2.csv"'
+# without the mark a negative p is refused, saying what makes a difference grid
+grep -v "^#" "$TMP/d.csv" >"$TMP/nomark.csv"
+run -c "grid load $TMP/nomark.csv"
+check diff_unmarked cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "nomark.csv:[0-9]*: p is -[0-9.e-]*, outside \[0, 1\]; a difference grid (p = P_b - P_a in \[-1, 1\], .design compare.) is marked by a comment .# ... difference P_b - P_a .... before the header, as .export grid. writes it$"'
+# a marked grid still refuses p outside [-1, 1]
+sed 's/^\(0\.000,0\.000,1,.*,\)[^,]*$/\1-1.5/' "$TMP/d.csv" >"$TMP/big.csv"
+run -c "grid load $TMP/big.csv"
+check diff_range has "$TMP/err" "big.csv:[0-9]*: p is -1.5, outside \[-1, 1\] (a difference P_b - P_a)$"
+
 # refusals
 run -c "design compare x y"
 check unknown_design has "$TMP/err" "design compare: no design 'x'"

@@ -147,6 +147,24 @@ run -c 'set format csv; set step 0.3; case A; set p_chute 0.8; montecarlo 50; so
 check sora_mc cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^A,q," "$TMP/out")" -eq 2 ] &&
   grep -q "^# from the last montecarlo: 50 samples" "$TMP/out" &&
   awk -F, "/^A,q,/ { if (!(\$4 < \$3 && \$3 < \$5 && \$7 < \$6 && \$6 < \$8)) bad = 1 } END { exit bad }" "$TMP/out"'
+check sora_mc_enough cond '! grep -q "TOO FEW SAMPLES\|truncated at 0\|SORA 2.5.s Table 2;" "$TMP/out"'
+# issue 30: 3 samples: the t interval reaches below 0 (montecarlo's own lo95 is negative); sora
+# truncates lo95 and red_lo95 at 0 and says so, flags the sample count; a class outside SORA
+# 2.5's Table 2 (1..10) is shown at its edge with a note, igrc_raw keeping the formula's value
+run -c 'set format csv; set step 0.6; case A; dist wind uniform 0 10; montecarlo 3; sora mc;
+  set pop_density 1e-6; sora mc; set pop_density 1e9; sora mc'
+check sora_few_runs cond '[ "$RC" -eq 0 ] && awk -F, "/^n,mean,sd,lo95,hi95$/ { getline; exit !(\$4 < 0) }" "$TMP/out"'
+check sora_lo_truncated cond 'awk -F, "/^[AC],(q|annex_f),/ { n++; if (\$4 < 0 || \$7 < 0) bad = 1; z += \$4 == 0 }
+  END { exit bad || n != 12 || z < 3 }" "$TMP/out" &&
+  [ "$(grep -c "^# lo95, red_lo95 of [^:]*A q[^:]*: truncated at 0 (an area and a ratio of areas are not negative)" "$TMP/out")" -eq 3 ]'
+check sora_too_few cond '[ "$(grep -c "^# TOO FEW SAMPLES: 3; the 95 % intervals" "$TMP/out")" -eq 3 ]'
+sed -n '/^# SORA 2.5 at 1e-06 ppl/,/^# SORA 2.5 at 1e+09/p' "$TMP/out" >"$TMP/low"
+sed -n '/^# SORA 2.5 at 1e+09 ppl/,$p' "$TMP/out" >"$TMP/high"
+check sora_below_table cond 'awk -F, "/^[AC],/ { n++; if (!(\$9 < 0 && \$10 == 1 && \$11 == 1)) bad = 1 } END { exit bad || n != 4 }" "$TMP/low" &&
+  grep -q "^# igrc, igrc_table of C q, C annex_f, A q, A annex_f: the formula gives a class below 1, the lowest of SORA 2.5.s Table 2; shown as 1" "$TMP/low"'
+check sora_above_table cond 'awk -F, "/^[AC],/ { n++; if (\$10 > 10 || \$11 > 10) bad = 1; if (\$9 > 10.05) m++ } END { exit bad || n != 4 || m < 1 }" "$TMP/high" &&
+  grep -q "^# igrc, igrc_table of [^:]*: the formula gives a class above 10, the highest of SORA 2.5.s Table 2 (beyond it an operation is outside SORA.s scope: the certified category); shown as 10" "$TMP/high" &&
+  ! grep -q "class below" "$TMP/high"'
 
 # ---- dist, show, save session ----
 runs "set p_chute 0.95; set seed 12; set mc_method exact; dist wind weibull 5.5 2.1

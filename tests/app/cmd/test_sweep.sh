@@ -19,7 +19,7 @@ n=\$(ls "$TMP"/script.* 2>/dev/null | wc -l)
 cat >"$TMP/script.\$n"
 if [ -n "$REAL" ]; then exec "$REAL" "$TMP/script.\$n"; fi
 out=\$(sed -n "s/^set output '\\(.*\\)'\\\$/\\1/p" "$TMP/script.\$n")
-[ -n "\$out" ] && echo fake >"\$out"
+[ -n "\$out" ] && printf '\\211PNG\\r\\n\\032\\n\\0\\0\\0\\0IEND\\256B\`\\202' >"\$out"
 exit 0
 EOF
 chmod +x "$TMP/bin/gnuplot"
@@ -133,7 +133,23 @@ check sweep_no_list fails_with "sweep wind: needs a list of values, e.g. 'sweep 
 run -c 'sweep clear 1'
 check clear_no_arg fails_with "sweep: 'clear' is not accepted"
 run -c 'sweep face 0,400'
-check face_range fails_with "sweep face: '0,400' is not accepted; accepted: comma-separated numbers in \[-360, 360\] deg"
+check face_range fails_with "sweep face: value 2 of 2, 400, is out of range; accepted: comma-separated numbers in \[-360, 360\] deg"
+# issue 30: a long list is never echoed whole, so the reason is never cut off; the refused value
+# is named by its place (here the last of 200, past where a 1024-byte message would end)
+L=$(seq -s, 0 0.05 9.95)
+run -c "sweep wind $L,61"
+check long_list_reason fails_with "sweep wind: value 201 of 201, 61, is out of range; accepted: comma-separated numbers in \[0, 60\] m/s$"
+run -c "sweep wind $L,4x"
+check long_list_item fails_with "sweep wind: value 201 of 201, '4x', is not a number; accepted: comma-separated"
+run -c "sweep wind 0,,4"
+check empty_item fails_with "sweep wind: value 2 of 3 is empty; accepted: comma-separated"
+# more than 64 values (the old fixed limit, refused as 'not accepted' though every value was in
+# range): a sweep holds any number of values; 70 equal winds, 69 of them recalled, all kept
+L70=$(yes 0 | head -70 | paste -sd, -)
+run -c "set format csv; set step 0.6; case C; sweep wind $L70; sweep show"
+check sweep_70_values cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^C,wind,0,0," "$TMP/out")" -eq 70 ] &&
+  [ "$(grep -c "^C,0,0," "$TMP/out")" -eq 70 ]'
+check recalled_note_ends has "$TMP/out" '^# recalled: the grids of wind 0, 0, .*, \.\.\. are identical to grids computed earlier'
 # the face panel alone needs a face sweep (a cheap wind sweep of case C at a 1 m pitch)
 run -c 'set step 1; case C; sweep wind 0; plot sweep face'
 check plot_face_none fails_with "plot sweep: no face sweep yet; run 'sweep face LIST'"

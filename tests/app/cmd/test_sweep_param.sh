@@ -5,7 +5,14 @@
 . tests/lib.sh
 
 mkdir -p "$TMP/bin"
-printf '#!/bin/sh\ncat >>"%s/plot.gp"\n' "$TMP" >"$TMP/bin/gnuplot"
+# a fake gnuplot: keeps the scripts, writes a PNG (signature and end chunk) where they say
+cat >"$TMP/bin/gnuplot" <<EOF
+#!/bin/sh
+tee -a "$TMP/plot.gp" >"$TMP/last.gp"
+out=\$(sed -n "s/^set output '\\(.*\\)'\\\$/\\1/p" "$TMP/last.gp")
+[ -n "\$out" ] && printf '\\211PNG\\r\\n\\032\\n\\0\\0\\0\\0IEND\\256B\`\\202' >"\$out"
+exit 0
+EOF
 chmod +x "$TMP/bin/gnuplot"
 U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 
@@ -23,14 +30,20 @@ run -c "$S; set bag_p0 1.2 atm; grid"
 check grid_equals_sweep has "$TMP/out" ",$qs\(,\|$\)"
 
 # plot sweep NAME
-PATH="$TMP/bin:$PATH" "$U" -c "set step 0.3; case C; set terminal png; set output $TMP/p.png; sweep mass 10,20; plot sweep mass" >"$TMP/out" 2>"$TMP/err"
-check plot_sweep_name cond '[ $? -eq 0 ] && grep -q "Q against mass" "$TMP/plot.gp" && grep -q "^10 " "$TMP/plot.gp"'
+PATH="$TMP/bin:$PATH" "$U" -c "set step 0.3; case C; set terminal png; set output $TMP/p.png; sweep mass 10,20; plot sweep mass" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check plot_sweep_name cond '[ $RC -eq 0 ] && [ -s "$TMP/p.png" ] && grep -q "Q against mass" "$TMP/plot.gp" && grep -q "^10 " "$TMP/plot.gp"'
 
 # refusals, nothing run
 run -c "$S; sweep nosuch 1,2"
 check unknown_name has "$TMP/err" "sweep: 'nosuch' is not accepted; accepted: .*sweep NAME LIST"
 run -c "$S; sweep bag_p0 1,x atm"
-check bad_list has "$TMP/err" "sweep bag_p0: '1,x' is not a list of numbers"
+check bad_list has "$TMP/err" "sweep bag_p0: value 2 of 2, 'x', is not a number; accepted: comma-separated numbers$"
+# issue 30: more than 64 values (the old limit) are taken; a bad value of a long list is named
+L70=$(yes 10 | head -70 | paste -sd, -)
+run -c "set format csv; set step 0.6; case C; sweep mass $L70; sweep show"
+check sweep_70_values cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^C,mass,0,0,.*,10,kg$" "$TMP/out")" -eq 70 ]'
+run -c "$S; sweep bag_p0 $(seq -s, 1 0.001 1.3),zz atm"
+check long_list_item has "$TMP/err" "sweep bag_p0: value 302 of 302, 'zz', is not a number; accepted: comma-separated numbers$"
 run -c "$S; sweep bag_p0 1 furlong"
 check bad_unit has "$TMP/err" "sweep bag_p0: set bag_p0: unknown unit 'furlong'"
 run -c "$S; sweep angle 30,120"

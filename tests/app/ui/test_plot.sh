@@ -1,6 +1,10 @@
 # test_plot.sh: plot through gnuplot: PNG and text files written complete, what is sent (a fake
 # gnuplot captures the script), no display, gnuplot missing, failing, killed or leaving early
-# (SIGPIPE), and the placeholders that are not wired yet
+# (SIGPIPE), and the placeholders that are not wired yet. A plot file is written whole or not at
+# all (issue 30, item 5): gnuplot writes a temporary file beside it, renamed only when complete;
+# a full disk (a small tmpfs where one can be mounted; a gnuplot that leaves a truncated PNG and
+# exits 0, as the real one does on a full disk) is an error, a failed, interrupted or killed plot
+# leaves an old file as it was, and /dev/stdout, /dev/fd/N, FIFOs and devices are refused
 . tests/lib.sh
 
 # uasimpact by absolute path, so that PATH can be changed
@@ -54,7 +58,36 @@ if command -v gnuplot >/dev/null 2>&1; then
   run -c "set terminal 'png ansi'; set output $TMP/x.png; plot pof"
   check bad_terminal_option cond '[ "$RC" -eq 1 ] && has "$TMP/err" "set terminal png ansi: "'
   run -c "set terminal png; set output /nonexistent/dir/x.png; plot pof"
-  check bad_output fails_with "set output ./nonexistent/dir/x.png.: cannot open file"
+  check bad_output fails_with "plot pof: cannot write ./nonexistent/dir/x.png.: No such file or directory"
+
+  # a good plot replaces an old file whole and keeps its mode
+  printf 'OLD CONTENT\n' >"$TMP/old.png"
+  chmod 640 "$TMP/old.png"
+  run -c "set output $TMP/old.png; plot pof"
+  check replaced_whole cond '[ "$RC" -eq 0 ] && png_magic "$TMP/old.png" &&
+    [ "$(stat -c %a "$TMP/old.png")" = 640 ] && ! ls "$TMP" | grep -q "old.png.tmp"'
+
+  # a full disk: a 64 KiB tmpfs (we may not be allowed to mount one: then skipped). Gnuplot
+  # itself exits 0 there with a truncated file; the plot is an error, the old file stays
+  mkdir -p "$TMP/full"
+  trap 'umount "$TMP/full" 2>/dev/null; rm -rf "$TMP"' EXIT
+  if mount -t tmpfs -o size=64k uasimpact-test "$TMP/full" 2>/dev/null; then
+    printf 'OLD CONTENT\n' >"$TMP/full/p.png"
+    printf 'OLD CONTENT\n' >"$TMP/full/p.txt"
+    run -c "set terminal 'pngcairo size 3000,3000'; set output $TMP/full/p.png; plot pof"
+    check full_disk_png fails_with "plot pof: cannot write '.*/full/p.png': No space left on device: gnuplot wrote an incomplete PNG file ([0-9]* bytes, no end marker); the file is unchanged$"
+    run -c "set terminal 'dumb size 1000,1000'; set output $TMP/full/p.txt; plot pof"
+    check full_disk_text fails_with "plot pof: cannot write '.*/full/p.txt': No space left on device: gnuplot wrote [0-9]* bytes and filled the disk; the file is unchanged$"
+    check full_disk_old_intact cond '[ "$(cat "$TMP/full/p.png")" = "OLD CONTENT" ] &&
+      [ "$(cat "$TMP/full/p.txt")" = "OLD CONTENT" ] && [ "$(ls "$TMP/full" | wc -l)" -eq 2 ]'
+    # with room again, the same plot is written
+    rm -f "$TMP/full/p.txt"
+    run -c "set terminal 'dumb size 80,25'; set output $TMP/full/p.txt; plot pof"
+    check full_disk_room_again cond '[ "$RC" -eq 0 ] && has "$TMP/full/p.txt" "HIC15 -> P_HIC"'
+    umount "$TMP/full"
+  else
+    skip full_disk_tmpfs "cannot mount a tmpfs here (not root, or no mount namespace)"
+  fi
 else
   skip real_gnuplot_checks "gnuplot is not installed"
 fi
@@ -139,9 +172,15 @@ echo "$@" >"$FAKE_DIR/args"
 case "$FAKE_GP" in
   capture) cat >"$FAKE_DIR/script"
            out=$(sed -n "s/^set output '\(.*\)'\$/\1/p" "$FAKE_DIR/script")
-           [ -n "$out" ] && echo fake >"$out"; exit 0 ;;
+           [ -n "$out" ] && printf '\211PNG\r\n\032\n\0\0\0\0IEND\256B`\202' >"$out"; exit 0 ;;
   nowrite) cat >/dev/null; exit 0 ;;
-  fail) head -c 100 >/dev/null; echo '"/dev/stdin" line 7: fake failure' >&2; exit 1 ;;
+  trunc) cat >"$FAKE_DIR/script"
+         out=$(sed -n "s/^set output '\(.*\)'\$/\1/p" "$FAKE_DIR/script")
+         head -c 3000 /dev/zero | { printf '\211PNG\r\n\032\n'; cat; } >"$out"; exit 0 ;;
+  fail) head -c 2000 >"$FAKE_DIR/script"
+        out=$(sed -n "s/^set output '\(.*\)'\$/\1/p" "$FAKE_DIR/script")
+        [ -n "$out" ] && : >"$out"  # gnuplot opens (and so empties) the output, then fails
+        echo '"/dev/stdin" line 7: fake failure' >&2; exit 1 ;;
   kill) kill -9 $$ ;;
   early) sleep 0.2; exit 3 ;;
   hang) echo $$ >"$FAKE_DIR/gp.pid"; exec sleep 100 ;;
@@ -156,7 +195,9 @@ fake() { mode=$1; shift; rm -f "$TMP/script" "$TMP/args"
 fake capture -c "grid load $T6; set terminal png; set output $TMP/f.png; plot grid"
 check fake_status [ "$RC" -eq 0 ]
 check fake_terminal [ "$(sed -n 1p "$TMP/script")" = "set terminal png" ]
-check fake_output [ "$(sed -n 2p "$TMP/script")" = "set output '$TMP/f.png'" ]
+check fake_output cond 'sed -n 2p "$TMP/script" | grep -qx "set output .$TMP/f.png.tmp.[A-Za-z0-9]\{6\}."'
+check fake_renamed cond 'png_magic "$TMP/f.png" && ! ls "$TMP" | grep -q "f.png.tmp"'
+
 check fake_unset_output [ "$(tail -1 "$TMP/script")" = "unset output" ]
 check fake_no_persist_for_files [ "$(cat "$TMP/args")" = "/dev/stdin" ]
 rows=$(sed -n '/^\$D << EOD$/,/^EOD$/p' "$TMP/script" | grep -c '^-\{0,1\}[0-9]')
@@ -183,11 +224,15 @@ check window_persist cond '[ "$RC" -eq 0 ] && [ "$(cat "$TMP/args")" = "-persist
 check window_no_output cond '! grep -q "^set output" "$TMP/script"'
 
 # gnuplot failing, writing nothing, killed, or leaving before reading a large script
+printf 'OLD CONTENT\n' >"$TMP/f.png"
 fake fail -c "set terminal png; set output $TMP/f.png; plot pof"
 check fail_message fails_with "plot pof: gnuplot failed.*: fake failure"
+check fail_old_intact cond '[ "$(cat "$TMP/f.png")" = "OLD CONTENT" ] && ! ls "$TMP" | grep -q "f.png.tmp"'
 rm -f "$TMP/f.png"
 fake nowrite -c "set terminal png; set output $TMP/f.png; plot pof"
-check nowrite_message cond '[ "$RC" -eq 1 ] && has "$TMP/err" "gnuplot wrote nothing to"'
+check nowrite_message fails_with "plot pof: cannot write '.*/f.png': gnuplot wrote nothing; the file is unchanged$"
+check nowrite_no_file cond '[ ! -e "$TMP/f.png" ] && ! ls "$TMP" | grep -q "f.png.tmp"'
+
 fake kill -c "set terminal png; set output $TMP/f.png; plot pof"
 check killed_message cond '[ "$RC" -eq 1 ] && has "$TMP/err" "gnuplot was killed by signal 9"'
 awk 'BEGIN { print "dpar,dperp,p"; for (i = 0; i < 200; i++) for (j = -100; j <= 100; j++)
@@ -196,7 +241,9 @@ fake early -c "grid load $TMP/big.csv; set terminal png; set output $TMP/f.png; 
 check sigpipe_survived [ "$RC" -eq 1 ]
 check sigpipe_message has "$TMP/err" "plot grid: gnuplot failed (it stopped reading)"
 
-# a gnuplot that hangs: Ctrl-C stops the wait (and gnuplot) within 0.2 s, not at the timeout
+# a gnuplot that hangs: Ctrl-C stops the wait (and gnuplot) within 0.2 s, not at the timeout;
+# the old file stays as it was and no temporary file is left
+printf 'OLD CONTENT\n' >"$TMP/h.png"
 env PATH="$TMP/bin:/usr/bin:/bin" FAKE_DIR="$TMP" FAKE_GP=hang DISPLAY= WAYLAND_DISPLAY= \
   "$U" -c "set terminal png; set output $TMP/h.png; plot pof" >"$TMP/out" 2>"$TMP/err" & PID=$!
 sleep 0.5
@@ -205,5 +252,59 @@ echo "  (SIGINT while gnuplot hangs: ended after $MS ms)"
 check hang_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
   has "$TMP/err" "plot pof: interrupted (Ctrl-C); gnuplot was stopped$"'
 check hang_gnuplot_gone cond '[ -s "$TMP/gp.pid" ] && ! kill -0 "$(cat "$TMP/gp.pid")" 2>/dev/null'
+check hang_old_intact cond '[ "$(cat "$TMP/h.png")" = "OLD CONTENT" ] && ! ls "$TMP" | grep -q "h.png.tmp"'
+
+# ---- a plot file is written whole or not at all (issue 30, item 5) ----
+# what gnuplot leaves on a full disk: a PNG cut short, status 0. Refused; the old file stays
+printf 'OLD CONTENT\n' >"$TMP/t.png"
+fake trunc -c "set terminal png; set output $TMP/t.png; plot pof"
+check truncated_refused fails_with "plot pof: cannot write '.*/t.png': gnuplot wrote an incomplete PNG file (3008 bytes, no end marker); the file is unchanged$"
+check truncated_old_intact cond '[ "$(cat "$TMP/t.png")" = "OLD CONTENT" ] && ! ls "$TMP" | grep -q "t.png.tmp"'
+fake trunc -c "set terminal pdfcairo; set output $TMP/t.pdf; plot pof"
+check wrong_format_refused fails_with "plot pof: cannot write '.*/t.pdf': gnuplot wrote 3008 bytes that do not start as a PDF file; the file is unchanged$"
+check wrong_format_no_file cond '[ ! -e "$TMP/t.pdf" ] && ! ls "$TMP" | grep -q "t.pdf.tmp"'
+
+# a symbolic link: the file it names is replaced, the link stays a link
+printf 'OLD CONTENT\n' >"$TMP/real.png"
+ln -s real.png "$TMP/link.png"
+fake capture -c "set terminal png; set output $TMP/link.png; plot pof"
+check symlink_followed cond '[ "$RC" -eq 0 ] && [ -L "$TMP/link.png" ] && png_magic "$TMP/real.png" &&
+  ! ls "$TMP" | grep -q "real.png.tmp"'
+
+# what is not a regular file is refused before gnuplot starts: nothing reaches standard output
+# (a binary terminal used to write 8 bytes of its PNG there and report the wrong reason)
+mkfifo "$TMP/fifo.png"
+for n in stdout:/dev/stdout fd1:/dev/fd/1 procfd1:/proc/self/fd/1 null:/dev/null \
+         fifo:"$TMP/fifo.png" dir:"$TMP"; do
+  o=${n#*:}; n=${n%%:*}
+  rm -f "$TMP/args"
+  fake capture -c "set terminal png; set output $o; plot pof"
+  check "refused_$n" cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && [ ! -s "$TMP/out" ] &&
+    has "$TMP/err" "plot pof: cannot write .$o.: it \(names an open descriptor\|is a FIFO\|is a character device\|is a directory\); accepted: a regular file, replaced whole when complete" &&
+    [ ! -e "$TMP/args" ]'
+done
+check refused_fifo_kept [ -p "$TMP/fifo.png" ]
+if command -v gnuplot >/dev/null 2>&1; then
+  "$U" -c "set terminal png; set output /dev/stdout; plot pof" >"$TMP/out" 2>"$TMP/err"; RC=$?
+  check real_stdout_refused cond '[ "$RC" -eq 1 ] && [ ! -s "$TMP/out" ] &&
+    has "$TMP/err" "cannot write ./dev/stdout.: it names an open descriptor"'
+fi
+
+# a signal that ends the program while gnuplot writes the temporary file (here one that hangs):
+# gnuplot is killed, the temporary file removed, the old file kept, and the program dies of the
+# signal (issue 30, item 8)
+for sig in TERM HUP USR1 ALRM PIPE; do
+  rm -f "$TMP/gp.pid"
+  printf 'OLD CONTENT\n' >"$TMP/s.png"
+  env PATH="$TMP/bin:/usr/bin:/bin" FAKE_DIR="$TMP" FAKE_GP=hang DISPLAY= WAYLAND_DISPLAY= \
+    "$U" -c "set terminal png; set output $TMP/s.png; plot pof" >"$TMP/out" 2>"$TMP/err" & PID=$!
+  n=0
+  while [ ! -s "$TMP/gp.pid" ] && [ "$n" -lt 500 ]; do sleep 0.01; n=$((n + 1)); done
+  check "plot_sig_${sig}_temp_made" cond 'ls "$TMP" | grep -q "s.png.tmp"'
+  kill -s "$sig" $PID; { wait $PID; } 2>/dev/null; RC=$?
+  check "plot_sig_${sig}_status" cond '[ "$RC" -gt 128 ] && [ "$(kill -l "$RC")" = "$sig" ]'
+  check "plot_sig_${sig}_cleaned" cond '! ls "$TMP" | grep -q "s.png.tmp" &&
+    [ "$(cat "$TMP/s.png")" = "OLD CONTENT" ] && ! kill -0 "$(cat "$TMP/gp.pid")" 2>/dev/null'
+done
 
 finish

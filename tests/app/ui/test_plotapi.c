@@ -33,11 +33,18 @@ static int setup(void** state) {
   strcpy(f->dir, "/tmp/test_plotapi.XXXXXX");
   assert_non_null(mkdtemp(f->dir));
 
-  /* the fake: keep the script, write the output file */
+  /* the fake: keep the script, write a PNG (its signature and end chunk) to the file the
+     script names (the temporary file beside out.png, renamed when it is complete) */
   char path[128];
   snprintf(path, sizeof path, "%s/gnuplot", f->dir);
   FILE* g = fopen(path, "w");
-  fprintf(g, "#!/bin/sh\ncat >%s/script\necho fake >%s/out.png\n", f->dir, f->dir);
+  fprintf(
+      g,
+      "#!/bin/sh\ncat >%s/script\n"
+      "out=$(sed -n \"s/^set output '\\(.*\\)'$/\\1/p\" %s/script)\n"
+      "[ -n \"$out\" ] && printf '\\211PNG\\r\\n\\032\\n\\0\\0\\0\\0IEND\\256B`\\202' >\"$out\"\n"
+      "exit 0\n",
+      f->dir, f->dir);
   fclose(g);
   assert_int_equal(chmod(path, 0755), 0);
   char env[256];

@@ -1,6 +1,7 @@
 # test_view.sh: the grid viewer as a person uses it, in tmux: colours, the cursor and the status
 # line, keys, the inspect panel, Ctrl-C, q back to the prompt with the state intact, a too small
-# window and resizing, NO_COLOR, scrolling; and grid show in colour on a terminal
+# window and resizing, NO_COLOR, scrolling; and grid show in colour on a terminal; Ctrl-C and q
+# stop the viewer's waits (a gnuplot that hangs, a slow impact) at once
 . tests/lib.sh
 
 T6=sessions/paper/grids/table06_caseC_wind0.csv
@@ -150,5 +151,59 @@ check sc_right_label wait_for v4 ' 0.80 *$'
 keys v4 0
 check sc_left wait_for v4 ' -0.80 '
 keys v4 q
+
+# ---- the viewer's waits: Ctrl-C stops them, q stops them and leaves (issue 30, item 6) ----
+# p waits on gnuplot (here one that hangs, which the viewer would wait on for 60 s) and Enter on
+# the cell's impact (here a settling with a 10 us step, several seconds): each key is answered
+# well within 2 s, the hung gnuplot is gone and no plot file or temporary file is left
+now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
+mkdir -p "$TMP/bin" "$TMP/pl"
+printf '#!/bin/sh
+echo $$ >>"%s/gp.pids"
+exec sleep 100
+' "$TMP" >"$TMP/bin/gnuplot"
+chmod +x "$TMP/bin/gnuplot"
+gp_gone() { [ -s "$TMP/gp.pids" ] && for p in $(cat "$TMP/gp.pids"); do
+  ! kill -0 "$p" 2>/dev/null || return 1; done; }
+start v5 160 50 "PATH=$TMP/bin:/usr/bin:/bin"
+check wait_prompt wait_for v5 'uasimpact\[A\]>'
+line v5 "grid load $T6; set terminal png; set output $TMP/pl/h.png; view"
+check wait_view wait_for v5 'Enter inspect  p plot  q back'
+keys v5 p
+check wait_plotting wait_for v5 'plotting in gnuplot\.\.\. \(Ctrl-C stops it, q stops it and leaves\)' 30
+t0=$(now_ms); keys v5 C-c
+check wait_plot_ctrl_c wait_for v5 'plot history: interrupted \(Ctrl-C\); gnuplot was stopped' 2
+MS=$(( $(now_ms) - t0 )); echo "  (Ctrl-C while gnuplot hangs in the viewer: answered after $MS ms)"
+check wait_plot_ctrl_c_bound [ "$MS" -lt 2000 ]
+check wait_plot_gnuplot_gone gp_gone
+check wait_plot_no_file cond '[ -z "$(ls "$TMP/pl")" ]'
+check wait_plot_stays cond 'alive v5 && grep -q "dpar 0.00 m  dperp 0.00 m" "$TMP/screen"'
+keys v5 p
+check wait_plotting_again wait_for v5 'plotting in gnuplot\.\.\.' 30
+t0=$(now_ms); keys v5 q
+check wait_plot_q wait_for v5 '^uasimpact\[A\]> *$' 2
+MS=$(( $(now_ms) - t0 )); echo "  (q while gnuplot hangs in the viewer: left after $MS ms)"
+check wait_plot_q_bound [ "$MS" -lt 2000 ]
+check wait_plot_q_gnuplot_gone gp_gone
+line v5 "show case"
+check wait_plot_q_prompt wait_for v5 '^case +A$'
+# a slow impact: the settling of the stance with a 10 us step
+line v5 "set dt 1e-5; set settle_dt 1e-5; view"
+check wait_view_again wait_for v5 'Enter inspect  p plot  q back'
+keys v5 Enter
+check wait_running wait_for v5 'running the impact of this cell\.\.\. \(Ctrl-C stops it' 5
+t0=$(now_ms); keys v5 C-c
+check wait_impact_ctrl_c wait_for v5 'inspect: .*interrupted \(Ctrl-C\)' 2
+MS=$(( $(now_ms) - t0 )); echo "  (Ctrl-C during Enter's impact: answered after $MS ms)"
+check wait_impact_ctrl_c_bound [ "$MS" -lt 2000 ]
+keys v5 Enter
+check wait_running_again wait_for v5 'running the impact of this cell' 5
+t0=$(now_ms); keys v5 q
+check wait_impact_q wait_for v5 '^uasimpact\[A[^]]*\]> *$' 2
+MS=$(( $(now_ms) - t0 )); echo "  (q during Enter's impact: left after $MS ms)"
+check wait_impact_q_bound [ "$MS" -lt 2000 ]
+line v5 "show settle_dt"
+check wait_impact_q_prompt wait_for v5 '^settle_dt +1e-05 s$'
+check wait_alive_at_end alive v5
 
 finish

@@ -94,6 +94,30 @@ static void no_contact(void** state) {
   assert_true(ur_impact_may_contact(ura_setup(c), &cond, 0, 0));
 }
 
+/* a run that reaches tmax before the drone touched or passed the person is a failure with that
+   reason, not P = 0; the default tmax lets the same drone touch */
+static void tmax_before_contact(void** state) {
+  uraCtx* c = fresh("B");
+  assert_int_equal(ura_run_line(c, "set tmax 0.005 s"), 0);
+  urImpactCond cond;
+  urImpactResult r;
+  urImpactWork w;
+  const urImpactSetup* s = ura_setup(c);
+  assert_non_null(s);
+  assert_int_equal(ura_impact_cond(c, &cond), 0);
+  assert_int_equal(ur_impact_work_init(s, &w), 0);
+  assert_int_equal(ur_impact_run(s, &w, &cond, &c->st.injury, 0, 0, &r), -1);
+  assert_false(r.contact);
+  assert_int_equal(w.d->status, urSTAT_TMAX);
+  assert_non_null(strstr(r.reason,
+                         "the run reached tmax (0.005 s) before the drone touched or "
+                         "passed the person"));
+  ur_impact_work_free(&w);
+  assert_int_equal(ura_run_line(c, "set tmax 0.15 s"), 0);
+  r = hit(c, 0, 0);
+  assert_true(r.contact && r.p > 0);
+}
+
 /* face 0: mirror offsets agree to 1e-9 in p and HIC */
 static void mirror_symmetry(void** state) {
   uraCtx* c = fresh("B");
@@ -353,10 +377,15 @@ static void aim_eccentricity(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(stance),           cmocka_unit_test(centre_values),
-      cmocka_unit_test(no_contact),       cmocka_unit_test(mirror_symmetry),
-      cmocka_unit_test(dt_convergence),   cmocka_unit_test(window_convergence),
-      cmocka_unit_test(contacts),         cmocka_unit_test(tau_top_shift),
+      cmocka_unit_test(stance),
+      cmocka_unit_test(centre_values),
+      cmocka_unit_test(no_contact),
+      cmocka_unit_test(mirror_symmetry),
+      cmocka_unit_test(tmax_before_contact),
+      cmocka_unit_test(dt_convergence),
+      cmocka_unit_test(window_convergence),
+      cmocka_unit_test(contacts),
+      cmocka_unit_test(tau_top_shift),
       cmocka_unit_test(aim_eccentricity),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

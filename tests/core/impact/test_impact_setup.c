@@ -7,6 +7,7 @@
  * refuses the donor; changes of the drone alone do not. At the workbench (modelcache.c donors),
  * 'set bag_p0 1.1 atm' after case A, and case A -> B -> bag_p0, take the stance, and equal a
  * fresh process that settles; 'set neck_k_flex 170' and 'set spine_k 410' settle anew. */
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -343,6 +344,56 @@ static const char DRONE_SELF[] =
     "law self type=table load=tissue_load damping=10 mu=0 v_eps=0.01\n"
     "pairs self a=frame b=arm_tube law=self\n";
 
+static const char DRONE_PAIR[] =
+    "# the drone's frame against the person's head\n"
+    "law hit type=table load=tissue_load damping=10 mu=0 v_eps=0.01\n"
+    "pair hit a=head_cranium b=frame law=hit\n";
+static const char HAT[] =
+    "# a person ellipsoid above the head top that the drone can touch\n"
+    "ellipsoid hat body=head pos=0,0,0.3 size=0.05,0.05,0.05\n"
+    "pair hat_hit a=hat b=frame law=hit\n";
+static const char DRONE_TALL[] =
+    "# a drone that reaches the person from its parking place, through a pair\n"
+    "ellipsoid pole body=hub pos=0,0,0 size=0.1,0.1,9999\n"
+    "pair pole_hit a=head_cranium b=pole law=hit\n";
+
+/* a drone that cannot touch the person is refused before anything settles; a person ellipsoid
+   above the head top is reported with its height; a drone that reaches the person while parked
+   is named, not blamed on the balance */
+static void drone_person_checks(void** state) {
+  char err[300];
+  const char* const plain[] = {DRONE_PARAM, "human", DRONE, "sim"};
+  urModel* m = parse(plain, 4, NULL, 0);
+  assert_int_equal(ur_impact_check(m, err, sizeof err), -1);
+  assert_non_null(strstr(err, "the model has no contact pair between the drone and the person"));
+  ur_model_free(m);
+
+  const char* const paired[] = {DRONE_PARAM, "human", DRONE, DRONE_PAIR, "sim"};
+  urImpactSetup s;
+  m = parse(paired, 5, NULL, 0);
+  assert_int_equal(ur_impact_check(m, err, sizeof err), 0);
+  prepare(&s, m, NULL);
+  assert_true(s.overlap == 0 && s.overlap_geom == -1);
+  release(&s);
+
+  const char* const hat[] = {DRONE_PARAM, "human", DRONE, DRONE_PAIR, HAT, "sim"};
+  m = parse(hat, 6, NULL, 0);
+  prepare(&s, m, NULL);
+  int g = ur_name_geom(m, "hat");
+  assert_int_equal(s.overlap_geom, g);
+  /* the hat's top, 0.35 m above the head body's origin, over the head top */
+  double top = s.rest->xpos[3 * m->geom[g].body + 2] + 0.35;
+  assert_true(fabs(s.overlap - (top - s.head_top)) < 0.01 && s.overlap > 0.1);
+  release(&s);
+
+  const char* const tall[] = {DRONE_PARAM, "human", DRONE, DRONE_PAIR, DRONE_TALL, "sim"};
+  m = parse(tall, 6, NULL, 0);
+  assert_int_equal(ur_impact_prepare(&s, m, T_SETTLE, ITERS, NULL, 0), -2);
+  assert_non_null(strstr(s.err, "the drone is too large to wait clear of the person"));
+  ur_impact_free(&s);
+  ur_model_free(m);
+}
+
 /* the person at other indices (the drone's bodies first) refuses the donor, at the same indices
    it is taken, and equals settling */
 static void layout(void** state) {
@@ -468,6 +519,7 @@ int main(void) {
       cmocka_unit_test(donor_chain),
       cmocka_unit_test(layout),
       cmocka_unit_test(apart),
+      cmocka_unit_test(drone_person_checks),
       cmocka_unit_test_setup_teardown(workbench_bag_p0, ctx_setup, ctx_teardown),
       cmocka_unit_test_setup_teardown(workbench_cases, ctx_setup, ctx_teardown),
       cmocka_unit_test_setup_teardown(workbench_person, ctx_setup, ctx_teardown),

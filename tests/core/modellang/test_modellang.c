@@ -431,12 +431,56 @@ static void test_scales_lock_sat(void** state) {
   ur_model_free(m);
 }
 
+/* a parameter's range and reason reach the model, in SI; an override is held to it; a later
+   definition without a range keeps the earlier one */
+static void test_param_range(void** state) {
+  char err[256];
+  const char* text =
+      "param k 26 kN/m range=2.6,260 why=a chest; stiffer is rigid\n"
+      "param free 1\n";
+  urModel* m = parse1(text, NULL, 0, err);
+  assert_non_null(m);
+  int k = ur_name_param(m, "k"), f = ur_name_param(m, "free");
+  assert_near(m->param[k].lo, 2600, 0);
+  assert_near(m->param[k].hi, 260000, 0);
+  assert_string_equal(m->param[k].why, "a chest; stiffer is rigid");
+  assert_true(ur_param_accepts(&m->param[k], 2600) && ur_param_accepts(&m->param[k], 260000));
+  assert_false(ur_param_accepts(&m->param[k], 2599.9) || ur_param_accepts(&m->param[k], NAN));
+  assert_true(isinf(m->param[f].lo) && isinf(m->param[f].hi) && !m->param[f].why[0]);
+  assert_true(ur_param_accepts(&m->param[f], -1e300));
+  ur_model_free(m);
+
+  urOverride ov = {"k", 1e300};
+  assert_null(parse1(text, &ov, 1, err));
+  assert_string_equal(err,
+                      "t.urm:1: param 'k': the value set, 1e+300 N/m, is outside its range 2600 "
+                      "to 260000 N/m: a chest; stiffer is rigid");
+  ov.value = 260000;
+  m = parse1(text, &ov, 1, err);
+  assert_non_null(m);
+  ur_model_free(m);
+
+  urModelSource src[2] = {{text, "a.urm", 1}, {"param k 30 kN/m\n", "b.urm", 1}};
+  m = ur_model_parse(src, 2, NULL, 0, err, sizeof err);
+  assert_non_null(m);
+  k = ur_name_param(m, "k");
+  assert_near(m->param[k].value, 30000, 0);
+  assert_near(m->param[k].hi, 260000, 0);
+  ur_model_free(m);
+  src[1].text = "param k 300 kN/m\n";
+  assert_null(ur_model_parse(src, 2, NULL, 0, err, sizeof err));
+  assert_string_equal(err,
+                      "b.urm:1: param 'k': its value 300000 N/m is outside its range 2600 "
+                      "to 260000 N/m: a chest; stiffer is rigid");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_model_fields), cmocka_unit_test(test_numbers_accepted),
       cmocka_unit_test(test_units),        cmocka_unit_test(test_compound_units),
       cmocka_unit_test(test_lexical),      cmocka_unit_test(test_overrides),
       cmocka_unit_test(test_enable),       cmocka_unit_test(test_scales_lock_sat),
+      cmocka_unit_test(test_param_range),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

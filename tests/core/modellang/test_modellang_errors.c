@@ -84,7 +84,28 @@ static const struct {
      "x.urm:4: param 'q': unknown unit 'furlong'; expected one of m, "
      "mm, cm, kg, g, s, ms, N, kN, Pa, kPa, MPa, GPa, atm, bar, deg, rad, J, L, none, or several "
      "joined by * and / (N*m/rad)"},
-    {PRE "param q\n", "x.urm:4: param takes NAME VALUE [UNIT]; got 1 word(s) after 'param'"},
+    {PRE "param q\n",
+     "x.urm:4: param takes NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]]; got 1 word(s) after "
+     "'param'"},
+    {PRE "param q 3 mm range=1,2 why=held by two stops\n",
+     "x.urm:4: param 'q': its value 0.003 m is outside its range 0.001 to 0.002 m: held by two "
+     "stops"},
+    {PRE "param q 3 range=4,2\n",
+     "x.urm:4: param 'q': range: LO must not exceed HI (got 4, 2 after conversion to SI)"},
+    {PRE "param q 3 range=1\n",
+     "x.urm:4: param 'q': range: '1' is not two numbers; expected range=LO,HI (in the unit of "
+     "the value)"},
+    {PRE "param q 3 range=1,x\n", "x.urm:4: param 'q': range: 'x' is not a number*"},
+    {PRE "param q 3 why=no range\n",
+     "x.urm:4: param 'q': why= explains a range; expected range=LO,HI before it"},
+    {PRE "param q 3 m range=1,4 why=\n",
+     "x.urm:4: param 'q': why= needs a reason of 1 to 159 characters (got 0)"},
+    {PRE "param q 3 m range=1,4 stiff\n",
+     "x.urm:4: param takes NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]]; got 'stiff'"},
+    {PRE "param q 3 m range=1,4 why=caf\xc3\xa9\n",
+     "x.urm:4: param 'q': why= holds a character that is not printable ASCII*"},
+    {"param q 3 range=1,4 why=first\nparam q 5\n",
+     "x.urm:2: param 'q': its value 5 is outside its range 1 to 4 (no unit): first"},
     {PRE "param 9q 1\n", "x.urm:4: param: '9q' is not a valid name*"},
     {PRE "body abcdefghijabcdefghijabcdefghijkl parent=world joint=fixed pos=0,0,0 mass=1\n",
      "x.urm:4: body: name 'abcdefghijabcdefghijabcdefghijkl' is too long (32 characters)*"},

@@ -172,11 +172,32 @@ static void igrc(void** state) {
   assert_int_equal(ur_igrc(10, 1, 0, 0, &raw, &raw1, &g, &gt), -1);
 }
 
+/* issue 30: a class the formula gives outside SORA 2.5's Table 2 (1..10) is limited to it, and
+   the caller told on which side */
+static void igrc_table_range(void** state) {
+  static const struct {
+    int in, out, side;
+  } k[] = {{-5, 1, -1}, {0, 1, -1}, {1, 1, 0}, {7, 7, 0}, {10, 10, 0}, {11, 10, 1}, {40, 10, 1}};
+  for (size_t i = 0; i < sizeof k / sizeof *k; i++) {
+    int g = k[i].in;
+    assert_int_equal(ur_igrc_clamp(&g), k[i].side);
+    assert_int_equal(g, k[i].out);
+  }
+  /* casex's 0 (-0.3) for rho 0.5, CA 0.1 (sora-casex 7.2) is below the table */
+  double raw, raw1;
+  int g, gt;
+  assert_int_equal(ur_igrc(0.5, 0.1, 1e-6, 0, &raw, &raw1, &g, &gt), 0);
+  assert_int_equal(g, 0);
+  assert_int_equal(ur_igrc_clamp(&g), -1);
+  assert_int_equal(g, 1);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(critical_area),
       cmocka_unit_test(size_classes),
       cmocka_unit_test(igrc),
+      cmocka_unit_test(igrc_table_range),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -100,6 +100,51 @@ static void sample_state(const struct uraMc* m, const uraState* base, int i, ura
   if (m->face_col >= 0) ns->face = x[m->face_col];
 }
 
+/* an input's value for messages, with its unit: "thorax_k = 30000 N/m" */
+static void input_text(uraCtx* c, const char* name, double v, char* buf, size_t n) {
+  const uraParam* p = ura_param_find(name);
+  int i = p ? -1 : ura_injury_find(name);
+  const char* unit = p ? p->unit : "";
+  if (i >= 0) ur_injury_param_info(i, NULL, &unit, NULL);
+  if (!strcmp(name, "wind_dir") || !strcmp(name, "face_dir")) unit = "deg";
+  char t[96];
+  if (p || i >= 0 || *unit)
+    snprintf(t, sizeof t, "%g%s%s", v, *unit ? " " : "", unit);
+  else
+    ura_model_value_brief(c, name, v, t, sizeof t); /* a model parameter in its SI unit */
+  snprintf(buf, n, "%s = %s", name, t);
+}
+
+/* the drawn inputs of sample i (and face from the bearings), for messages */
+static void drawn_text(uraCtx* c, const struct uraMc* m, int i, char* buf, size_t n) {
+  const double* x = m->x + (size_t)i * m->nin;
+  size_t k = 0;
+  buf[0] = 0;
+  for (int j = 0; j < m->nin && k < n; j++) {
+    if (j >= m->ndecl && j != m->face_col) continue;
+    char t[160];
+    input_text(c, m->name[j], x[j], t, sizeof t);
+    k += (size_t)snprintf(buf + k, n - k, "%s%s", k ? ", " : "", t);
+  }
+}
+
+/* c->err with where in a montecarlo it happened in front: "montecarlo: WHERE: message" */
+static int mc_fail_at(uraCtx* c, const char* where) {
+  char inner[uraERRLEN];
+  const char* e = c->err;
+  if (!strncmp(e, "montecarlo: ", 12)) e += 12;
+  snprintf(inner, sizeof inner, "%s", e);
+  return ura_fail(c, "montecarlo: %s: %.700s", where, inner);
+}
+
+/* a failure of sample i's grids or draws, naming the sample and its drawn inputs */
+static int mc_fail_sample(uraCtx* c, const struct uraMc* m, int i) {
+  char drawn[600], where[700];
+  drawn_text(c, m, i, drawn, sizeof drawn);
+  snprintf(where, sizeof where, "sample %d (%s)", i, *drawn ? drawn : "no drawn input");
+  return mc_fail_at(c, where);
+}
+
 /* does an input act on the grids (the reliabilities and the bearings do not: face does) */
 static int grid_input(const char* name) {
   return strcmp(name, "p_chute") && strcmp(name, "p_bag") && strcmp(name, "h_chute_min") &&
@@ -200,6 +245,22 @@ static void progress(int tty, const char* what, long k, long n) {
   if (tty) ura_progress_line(w, k, n, "");
 }
 
+/* a failure of the surface's grid g, naming its node (the drawn inputs' values there) */
+static int node_fail(uraCtx* c, const struct uraMc* m, const surface* s, long g) {
+  char where[700], t[160];
+  long idx = g % s->total;
+  size_t k = (size_t)snprintf(where, sizeof where, "the response surface's grid %ld of %ld at",
+                              g + 1, s->total * s->nmask);
+  for (int d = s->nax - 1; d >= 0 && k < sizeof where; d--) {
+    const axis* a = &s->ax[d];
+    input_text(c, m->name[a->col], a->node[idx % a->n], t, sizeof t);
+    k += (size_t)snprintf(where + k, sizeof where - k, "%s %s", d == s->nax - 1 ? "" : ",", t);
+    idx /= a->n;
+  }
+  if (s->nax == 0) snprintf(where, sizeof where, "the grid of the live state");
+  return mc_fail_at(c, where);
+}
+
 /* Q of every sample from the surface; a few samples again by their own grids */
 static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp, uraState* ns,
                       int tty) {
@@ -227,6 +288,7 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     node_state(m, &s, base, g % s.total, s.masks[g / s.total], tmp, ns);
     rc = ura_risk_grid(c, ns, "montecarlo", 1, &s.value[g]);
     recalled += rc == 0 && c->last.recalled;
+    if (rc) node_fail(c, m, &s, g);
   }
 
   /* the method, in words */
@@ -262,7 +324,10 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     sample_state(m, base, i, tmp);
     ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
     rc = ura_risk_grid(c, ns, "montecarlo", 1, &q);
-    if (rc) break;
+    if (rc) {
+      mc_fail_sample(c, m, i);
+      break;
+    }
     double e = fabs(m->q[i] - q);
     emax = fmax(emax, e);
     esum += e;
@@ -300,6 +365,7 @@ static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* 
       }
       ura_risk_branch_state(tmp, mask, &m->dep, m->bag, ns);
       rc = ura_risk_grid(c, ns, "montecarlo", 1, b ? &m->q_c[i] : &m->q[i]);
+      if (rc) mc_fail_sample(c, m, i);
       ngrid++;
       recalled += rc == 0 && c->last.recalled;
     }
@@ -364,6 +430,22 @@ static int draw(uraCtx* c, struct uraMc* m, const uraState* base, uraState* ns) 
       int wd = ura_dist_find(r, "wind_dir"), fd = ura_dist_find(r, "face_dir");
       double phi = (fd >= 0 ? x[fd] : 0) - (wd >= 0 ? x[wd] : 0);
       x[m->face_col] = phi - 360 * floor((phi + 180) / 360);
+    }
+    /* a model parameter drawn outside its range (declared before the model changed) */
+    for (int k = 0; k < m->ndecl; k++) {
+      int pk = ura_param_find(names[k]) || ura_injury_find(names[k]) >= 0
+                   ? -1
+                   : ura_model_param_find(c, names[k]);
+      if (pk >= 0 && !ur_param_accepts(&c->model->param[pk], x[k])) {
+        char v[160], range[400];
+        input_text(c, names[k], x[k], v, sizeof v);
+        ura_param_range_text(c, &c->model->param[pk], range, sizeof range);
+        ura_fail(c,
+                 "%s is out of range; accepted: %s (the model changed since 'dist %s' was "
+                 "declared: declare it again)",
+                 v, range, names[k]);
+        return mc_fail_sample(c, m, i);
+      }
     }
     sample_state(m, base, i, ns);
     urDeploy d = m->dep;

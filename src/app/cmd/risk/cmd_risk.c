@@ -9,6 +9,10 @@
 #include "../cmd.h"
 #include "uasimpact/sora.h"
 
+/* fewer samples: 'sora mc' flags its intervals (the t interval's rule of thumb for a mean of
+   skewed values) */
+#define SORA_MC_MIN 30
+
 /* ---- the branches of the live case ---- */
 
 typedef struct {
@@ -120,25 +124,77 @@ int ura_cmd_risk(uraCtx* c, int argc, char** argv) {
 
 /* ---- sora ---- */
 
+/* the rows a sora table changed: classes clamped to the table, interval bounds truncated */
+typedef struct {
+  char below[80], above[80], trunc[80]; /* "C q, A annex_f" */
+} soraFlags;
+
+/* append a row's name to a list of rows */
+static void flag_row(char* list, size_t n, const char* casename, const char* model) {
+  size_t k = strlen(list);
+  snprintf(list + k, n - k, "%s%s %s", k ? ", " : "", casename, model);
+}
+
 static void sora_row(uraCtx* c, uraTable* t, const char* casename, const char* model,
-                     const uraSoraFig* f) {
+                     const uraSoraFig* f, soraFlags* fl) {
   double raw1;
   int g, gt;
   int ok = ura_risk_igrc(&c->st, f->ca, &raw1, &g, &gt) == 0;
+  /* an area and a ratio of areas are >= 0: a t interval of few skewed samples may reach below */
+  double lo = f->lo, red_lo = f->red_lo;
+  if (lo < 0 || red_lo < 0) flag_row(fl->trunc, sizeof fl->trunc, casename, model);
+  if (lo < 0) lo = 0;
+  if (red_lo < 0) red_lo = 0;
   ura_table_cell(t, "%s", casename);
   ura_table_cell(t, "%s", model);
   ura_table_cell(t, "%.6g", f->ca);
-  ura_table_cell(t, "%.6g", f->lo);
+  ura_table_cell(t, "%.6g", lo);
   ura_table_cell(t, "%.6g", f->hi);
   ura_table_cell(t, "%.6g", f->red);
-  ura_table_cell(t, "%.6g", f->red_lo);
+  ura_table_cell(t, "%.6g", red_lo);
   ura_table_cell(t, "%.6g", f->red_hi);
   if (ok) {
+    /* the classes as SORA 2.5's table holds them (igrc_raw keeps the formula's value) */
+    int side = ur_igrc_clamp(&g);
+    int side_t = ur_igrc_clamp(&gt);
+    if (side < 0 || side_t < 0) flag_row(fl->below, sizeof fl->below, casename, model);
+    if (side > 0 || side_t > 0) flag_row(fl->above, sizeof fl->above, casename, model);
     ura_table_cell(t, "%.1f", raw1);
     ura_table_cell(t, "%d", g);
     ura_table_cell(t, "%d", gt);
   } else {
     for (int k = 0; k < 3; k++) ura_table_cell(t, "none");
+  }
+}
+
+/* notes for what sora_row changed, and for a montecarlo of too few samples */
+static void sora_flag_notes(uraTable* t, const soraFlags* fl, int nsamples) {
+  if (fl->below[0]) {
+    ura_table_note(t,
+                   "igrc, igrc_table of %s: the formula gives a class below %d, the lowest of "
+                   "SORA 2.5's Table 2; shown as %d (igrc_raw is the formula's value)",
+                   fl->below, urIGRC_TABLE_MIN, urIGRC_TABLE_MIN);
+  }
+  if (fl->above[0]) {
+    ura_table_note(t,
+                   "igrc, igrc_table of %s: the formula gives a class above %d, the highest of "
+                   "SORA 2.5's Table 2 (beyond it an operation is outside SORA's scope: the "
+                   "certified category); shown as %d (igrc_raw is the formula's value)",
+                   fl->above, urIGRC_TABLE_MAX, urIGRC_TABLE_MAX);
+  }
+  if (fl->trunc[0]) {
+    ura_table_note(t,
+                   "lo95, red_lo95 of %s: truncated at 0 (an area and a ratio of areas are not "
+                   "negative); the t interval is symmetric about the mean and reached below 0, "
+                   "a sign that the samples are too few or too skewed for it",
+                   fl->trunc);
+  }
+  if (nsamples > 0 && nsamples < SORA_MC_MIN) {
+    ura_table_note(t,
+                   "TOO FEW SAMPLES: %d; the 95 %% intervals take the mean as normally "
+                   "distributed, which the skewed Q of few samples is not (a rule of thumb "
+                   "asks for %d or more): run 'montecarlo N' with more",
+                   nsamples, SORA_MC_MIN);
   }
 }
 
@@ -194,12 +250,22 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
                  "the row's, per model; each factor 10 lowers raw by 1");
   if (argc == 1) deploy_notes(c, t, &b);
   ura_table_note(t, "%s", note);
-  sora_row(c, t, "C", "q", &fig[0]);
-  sora_row(c, t, "C", "annex_f", &fig[1]);
+  soraFlags fl = {"", "", ""};
+  sora_row(c, t, "C", "q", &fig[0], &fl);
+  sora_row(c, t, "C", "annex_f", &fig[1], &fl);
   if (mitigated) {
-    sora_row(c, t, c->st.casename, "q", &fig[2]);
-    sora_row(c, t, c->st.casename, "annex_f", &fig[3]);
+    sora_row(c, t, c->st.casename, "q", &fig[2], &fl);
+    sora_row(c, t, c->st.casename, "annex_f", &fig[3], &fl);
   }
+  int nsamples = 0;
+  if (argc == 2) {
+    const double* q;
+    const urMcStats* st;
+    const char* cn;
+    double seed;
+    ura_mc_data(c, &q, &nsamples, &st, &cn, &seed);
+  }
+  sora_flag_notes(t, &fl, nsamples);
   ura_table_print(c, t);
   return 0;
 }
