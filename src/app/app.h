@@ -216,6 +216,7 @@ typedef struct {
   /* uraP_STR: checks a value and writes what is kept into norm (n bytes); 0, or -1 with the
      failure recorded (NULL: any text of the size) */
   int (*check)(struct uraCtx* c, const char* value, char* norm, size_t n);
+  size_t cntoff; /* uraP_LIST: offset of its int count in uraState (0: the winds' nwinds) */
 } uraParam;
 
 extern const uraParam ura_params[];

@@ -16,10 +16,24 @@ void ura_risk_defaults(uraRiskSet* r) {
   r->mc_method = uraMC_SURFACE;
   r->surface_nodes = 7;
   r->surface_check = 4;
-  r->pop_density = 500;
+  r->pop_density[0] = 500;
+  r->npop = 1;
+  r->lambda = 1e-3;
+  r->p_shelter = 0;
+  r->quant[0] = 0.05;
+  r->quant[1] = 0.5;
+  r->quant[2] = 0.95;
+  r->nquant = 3;
+  r->surface_tol = 0;
   r->tlos = 1e-6;
   r->igrc_comp = 0;
   r->annexf_obstacles = 1;
+}
+
+double ura_risk_density_max(const uraRiskSet* r) {
+  double m = r->pop_density[0];
+  for (int i = 1; i < r->npop; i++) m = r->pop_density[i] > m ? r->pop_density[i] : m;
+  return m;
 }
 
 int ura_dist_find(const uraRiskSet* r, const char* name) {
@@ -31,8 +45,10 @@ int ura_dist_find(const uraRiskSet* r, const char* name) {
 
 /* settings that describe the study itself, not what a grid or a deployment depends on */
 static const char* const not_drawn[] = {
-    "step",        "along_min", "along_max",         "cross_max",
-    "pop_density", "tlos",      "igrc_compensation", NULL};
+    "step",        "along_min",    "along_max",         "cross_max",
+    "pop_density", "tlos",         "igrc_compensation", "lambda_system",
+    "p_shelter",   "ua_dimension", "ua_max_speed",      "mc_surface_tol",
+    NULL};
 
 int ura_dist_range(uraCtx* c, const char* name, double* lo, double* hi) {
   if (!strcmp(name, "wind_dir") || !strcmp(name, "face_dir")) {
