@@ -71,6 +71,7 @@ int ura_cmd_risk(struct uraCtx* c, int argc, char** argv);
 int ura_cmd_dist(struct uraCtx* c, int argc, char** argv);
 int ura_cmd_montecarlo(struct uraCtx* c, int argc, char** argv);
 int ura_cmd_sora(struct uraCtx* c, int argc, char** argv);
+int ura_cmd_converge(struct uraCtx* c, int argc, char** argv); /* cmd_converge.c */
 void ura_mc_free(struct uraCtx* c);
 /* plot montecarlo (Q's distribution) and plot tornado (the variance shares) */
 int ura_plot_mc(struct uraCtx* c, const char* what);

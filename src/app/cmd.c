@@ -86,6 +86,10 @@ const uraCmd ura_cmds[] = {
     {"sora", ura_cmd_sora, 0, 1, uraC_NONE, "sora [mc]",
      "SORA 2.5 figures: critical area (Q, and Annex F) and iGRC of the unmitigated drone and the "
      "live case, and the reduction factor; mc: with the last montecarlo's intervals"},
+    {"converge", ura_cmd_converge, 0, 0, uraC_NONE, "converge",
+     "convergence evidence of the live grid: Q at the step and at half of it, the new cells' P "
+     "against the coarse grid, and P at the centre and the worst cell with dt and dt/2; columns "
+     "check,what,dpar,dperp,coarse,fine,change,rel_change"},
     {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
      "write a script that recreates the live state exactly (replay: uasrisk FILE, or source)"},
     {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
