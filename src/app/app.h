@@ -178,6 +178,7 @@ typedef struct uraCtx {
   int (*guard)(struct uraCtx* c, int argc, char** argv);
   struct uraScale* scale; /* the work split over processes (scale.h; NULL: serial) */
   int mute;               /* results, notes, files and plots go nowhere (scale.h) */
+  struct uraReport* rep;  /* the results kept for report (report.h; NULL: none yet) */
 } uraCtx;
 
 /* record a failure message; always returns -1 */

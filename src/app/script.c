@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include "app.h"
+#include "report.h"
 
 #define MAXARGS  64
 #define MAXDEPTH 16
@@ -71,7 +72,9 @@ static int run_words(uraCtx* c, int argc, char** argv) {
   }
   if (c->guard && c->guard(c, argc, argv)) return -1;
   int paged = ura_pager_begin(c, cmd->name);
+  ura_report_begin(c, argc, argv);
   int rc = cmd->fn(c, argc, argv);
+  ura_report_end(c, rc);
   if (paged) ura_pager_end(c);
 
   /* what the command printed reached its destination, or the command failed (a full disk, a

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "report.h"
 
 struct uraTable {
   int ncol;
@@ -88,6 +89,7 @@ void ura_table_print(uraCtx* c, uraTable* t) {
     free(w);
   }
   fflush(f);
+  ura_report_table(c, t->ncol, t->names, t->ncell, t->cells, t->nnote, t->notes);
 
   /* free everything */
   for (int j = 0; j < t->ncol; j++) free(t->names[j]);
