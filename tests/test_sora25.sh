@@ -74,6 +74,9 @@ check quant_cols cond 'grep -q "^n,mean,sd,lo95,hi95,p10,p50,p90$" "$TMP/out" &&
   [ "$(tcol "$TMP/out" n, 3 "" lo95)" = 0 ] && grep -q "^# few samples: n = 3" "$TMP/out" &&
   grep -q "^# thin tails: p10, p50, p90" "$TMP/out"'
 check quant_order cond 'awk -F, "/^3,/ { exit !(\$6 <= \$7 && \$7 <= \$8) }" "$TMP/out"'
+runs "set format csv; set step 0.3; case A; set p_chute 0.8; dist wind uniform 0 10; montecarlo 3; sora mc"
+check sora_mc_truncated cond '[ "$(tcol "$TMP/out" case, A q lo95)" = 0 ] && [ "$(tcol "$TMP/out" case, A q red_lo95)" = 0 ] &&
+  grep -q "truncated: an interval reached below 0 and is held at 0" "$TMP/out" && grep -q "few samples: the intervals" "$TMP/out"'
 
 # ---- the surface's tolerance ----
 runs "set format csv; set step 0.3; case A; set p_chute 0.8; dist wind weibull 5 2

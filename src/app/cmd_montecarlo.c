@@ -748,7 +748,9 @@ static int mc_samples(uraCtx* c) {
 
 /* ---- for sora mc and the plots ---- */
 
-static void figure(const double* ca, const double* ref, int n, uraSoraFig* f, double* work) {
+/* a figure from paired samples; the intervals truncated at 0 (areas and their ratio are not
+   negative): 1 when one was */
+static int figure(const double* ca, const double* ref, int n, uraSoraFig* f, double* work) {
   urMcStats s;
   ur_mc_stats(ca, n, work, &s);
   f->ca = s.mean;
@@ -756,6 +758,9 @@ static void figure(const double* ca, const double* ref, int n, uraSoraFig* f, do
   f->hi = s.hi95;
   if (ur_mc_ratio(ref, ca, n, &f->red, &f->red_lo, &f->red_hi))
     f->red = f->red_lo = f->red_hi = NAN;
+  int clip = ur_interval_clip(&f->lo, &f->hi, 0, INFINITY);
+  if (!isnan(f->red)) clip |= ur_interval_clip(&f->red_lo, &f->red_hi, 0, INFINITY);
+  return clip != 0;
 }
 
 int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t n) {
@@ -771,17 +776,20 @@ int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t
   }
   double* work = malloc((size_t)m->n * sizeof *work);
   if (!work) return ura_fail(c, "sora mc: out of memory");
-  figure(m->q_c, m->q_c, m->n, &fig[0], work);
-  figure(m->ca_c, m->ca_c, m->n, &fig[1], work);
-  figure(m->q, m->q_c, m->n, &fig[2], work);
-  figure(m->ca, m->ca_c, m->n, &fig[3], work);
+  int clip = figure(m->q_c, m->q_c, m->n, &fig[0], work);
+  clip |= figure(m->ca_c, m->ca_c, m->n, &fig[1], work);
+  clip |= figure(m->q, m->q_c, m->n, &fig[2], work);
+  clip |= figure(m->ca, m->ca_c, m->n, &fig[3], work);
   free(work);
   *mitigated = m->dep.chute;
-  snprintf(note, n,
-           "from the last montecarlo: %d samples (seed %.0f); ca is the mean, lo95..hi95 "
-           "its 95 %% confidence interval; reduction the ratio of the paired means with its "
-           "interval (delta method); the iGRC of the mean",
-           m->n, m->seed);
+  snprintf(
+      note, n,
+      "from the last montecarlo: %d samples (seed %.0f); ca is the mean, lo95..hi95 "
+      "its 95 %% confidence interval; reduction the ratio of the paired means with its "
+      "interval (delta method); the iGRC of the mean%s%s",
+      m->n, m->seed,
+      clip ? "; truncated: an interval reached below 0 and is held at 0, the physical bound" : "",
+      m->n < 30 ? "; few samples: the intervals assume a nearly normal mean" : "");
   return 0;
 }
 
