@@ -531,8 +531,8 @@ static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
      "values come from closed forms, the paper or cited data.");
   tb = el(s, "table", NULL);
   tr = el(tb, "tr", NULL);
-  el(tr, "th", "test");
-  el(tr, "th", "proves");
+  attr(el(tr, "th", "test"), "class", "l");
+  attr(el(tr, "th", "proves"), "class", "l");
   const char *file, *proves;
   for (int k = 0; (file = ura_report_check(k, &proves)); k++) {
     tr = el(tb, "tr", NULL);
