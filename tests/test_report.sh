@@ -56,6 +56,10 @@ printf '# a part with <script>alert(1)</script> & "quotes" in a comment\nparam e
 run -c "model load $TMP/x.urm; set step 0.3; grid; report $TMP/x.html"
 check escaped cond '[ "$RC" -eq 0 ] && grep -q "&lt;script&gt;alert(1)&lt;/script&gt; &amp;" "$TMP/x.html" &&
   ! grep -qi "<script" "$TMP/x.html"'
+# warnings gathered: a grid on set extents
+run -c "set step 0.3; set along_min -0.3; grid; report $TMP/w.html"
+check warnings cond '[ "$RC" -eq 0 ] && grep -q "<li>grid: extents set: Q covers only" "$TMP/w.html" &&
+  grep -q "class=\"warnbox\"" "$TMP/w.html"'
 # nothing computed: a report that says so
 run -c "report $TMP/empty.html"
 check empty cond '[ "$RC" -eq 0 ] && grep -q "The session computed no result" "$TMP/empty.html" &&

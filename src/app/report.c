@@ -132,16 +132,6 @@ static int sibling(const uraReport* r, int i, const char* first) {
   return -1;
 }
 
-static int is_alarm(const char* s) {
-  static const char* const alarm[] = {"warning",      "failed",     "extrapolat",  "clamped:",
-                                      "truncated:",   "thin tails", "few samples", "partial",
-                                      "not complete", NULL};
-  for (int a = 0; alarm[a]; a++) {
-    if (strstr(s, alarm[a])) return 1;
-  }
-  return 0;
-}
-
 /* ---- pieces ---- */
 
 static void data_table(xmlNodePtr parent, const uraRepTable* t, int maxrow) {
@@ -378,7 +368,7 @@ static void evidence(uraCtx* c, xmlNodePtr body, const uraReport* r) {
       attr(ul, "class", "notes");
       for (int k = 0; k < t->nnote; k++) {
         xmlNodePtr li = el(ul, "li", t->notes[k]);
-        if (is_alarm(t->notes[k])) attr(li, "class", "warn");
+        if (ura_report_alarm(t->notes[k])) attr(li, "class", "warn");
       }
     }
     data_table(d, t, 200);

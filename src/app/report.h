@@ -56,6 +56,9 @@ void ura_report_end(uraCtx* c, int rc);
 void ura_report_table(uraCtx* c, int ncol, char* const* names, int ncell, char* const* cells,
                       int nnote, char* const* notes);
 void ura_report_free(uraCtx* c);
+/* a note that is a warning: it says warning, failed, extrapolated, clamped, truncated, thin
+   tails, few samples, partial (PARTIAL), not complete, or that the extents were set */
+int ura_report_alarm(const char* note);
 int ura_cmd_report(uraCtx* c, int argc, char** argv);
 
 /* figures: an SVG of gnuplot as a data: URI (malloc'd), or NULL with c->err */

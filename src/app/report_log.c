@@ -2,9 +2,8 @@
  * commands whose results belong in a study (grid, grid load, sweep, design compare, risk,
  * montecarlo, montecarlo shares, sora, converge, compare, descent, parametric) with its command
  * line and notes, the settings it ran under ('show', kept once per change), a copy of each grid
- * for the figures, and the warnings: notes that say warning, failed, extrapolated, clamped,
- * truncated, thin tails, few samples or partial, and the commands that failed. Nothing here
- * prints or computes. */
+ * for the figures, and the warnings: the notes ura_report_alarm picks, and the commands that
+ * failed. Nothing here prints or computes. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +23,16 @@ static int wanted(int argc, char** argv) {
                                     "descent", "parametric", NULL};
   for (int i = 0; all[i]; i++) {
     if (!strcmp(n, all[i])) return 1;
+  }
+  return 0;
+}
+
+int ura_report_alarm(const char* note) {
+  static const char* const alarm[] = {
+      "warning",     "failed",  "extrapolat", "clamped:",     "truncated:",   "thin tails",
+      "few samples", "partial", "PARTIAL",    "not complete", "extents set:", NULL};
+  for (int a = 0; alarm[a]; a++) {
+    if (strstr(note, alarm[a])) return 1;
   }
   return 0;
 }
@@ -135,17 +144,9 @@ void ura_report_table(uraCtx* c, int ncol, char* const* names, int ncell, char* 
   for (int j = 0; j < ncol; j++) t->names[j] = dup(names[j]);
   for (int k = 0; k < ncell; k++) t->cells[k] = dup(cells[k]);
   t->nnote = nnote;
-  static const char* const alarm[] = {"warning",      "failed",     "extrapolat",  "clamped:",
-                                      "truncated:",   "thin tails", "few samples", "partial",
-                                      "not complete", NULL};
   for (int i = 0; i < nnote; i++) {
     t->notes[i] = dup(notes[i]);
-    for (int a = 0; alarm[a]; a++) {
-      if (strstr(notes[i], alarm[a])) {
-        push_warn(r, t->cmd, notes[i]);
-        break;
-      }
-    }
+    if (ura_report_alarm(notes[i])) push_warn(r, t->cmd, notes[i]);
   }
   /* the settings, kept once per change */
   r->busy = 1;
