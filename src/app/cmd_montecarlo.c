@@ -226,9 +226,31 @@ static int refine_axis(axis* a, double x) {
   return 1;
 }
 
-/* the surface's grids (every lattice point of every branch needed) */
-static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const uraState* base,
-                         uraState* tmp, uraState* ns, int tty, int* recalled) {
+/* the value of lattice point idx of s (branch k) in an earlier lattice old whose axes hold every
+   node of it; 0 with *v, or -1 when a node is new */
+static int old_value(const surface* s, const surface* old, long idx, int k, double* v) {
+  if (!old || !old->value) return -1;
+  long oidx = 0, ostride = 1;
+  for (int d = s->nax - 1; d >= 0; d--) {
+    const axis* a = &s->ax[d];
+    const axis* o = &old->ax[d];
+    double x = a->node[idx % a->n];
+    idx /= a->n;
+    int j = 0;
+    while (j < o->n && o->node[j] != x) j++;
+    if (j == o->n) return -1;
+    oidx += j * ostride;
+    ostride *= o->n;
+  }
+  *v = old->value[(size_t)k * old->total + oidx];
+  return 0;
+}
+
+/* the surface's grids (every lattice point of every branch needed; those of an earlier lattice
+   old are taken from it) */
+static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const surface* old,
+                         const uraState* base, uraState* tmp, uraState* ns, int tty,
+                         int* recalled) {
   s->total = 1;
   for (int d = 0; d < s->nax; d++) s->total *= s->ax[d].n;
   long ngrid = s->total * s->nmask;
@@ -238,12 +260,15 @@ static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const uraState*
                     "(lower surface_nodes, or 'set mc_method exact')",
                     ngrid, MAXGRIDS);
   }
-  free(s->value);
   s->value = malloc((size_t)ngrid * sizeof *s->value);
   if (!s->value) return ura_fail(c, "montecarlo: out of memory");
   int rc = 0;
   for (long g = 0; g < ngrid && rc == 0; g++) {
     progress(tty, "surface grid", g + 1, ngrid);
+    if (old_value(s, old, g % s->total, (int)(g / s->total), &s->value[g]) == 0) {
+      (*recalled)++;
+      continue;
+    }
     node_state(m, s, base, g % s->total, s->masks[g / s->total], tmp, ns);
     rc = ura_risk_grid(c, ns, "montecarlo", 1, &s->value[g]);
     *recalled += rc == 0 && c->last.recalled;
@@ -279,8 +304,12 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
     rc = ura_risk_grid(c, ns, "montecarlo", 1, &qchk[i]);
   }
+  surface prev;
+  memset(&prev, 0, sizeof prev);
   for (;; round++) {
-    if (rc == 0) rc = surface_build(c, m, &s, base, tmp, ns, tty, &recalled);
+    if (rc == 0) rc = surface_build(c, m, &s, &prev, base, tmp, ns, tty, &recalled);
+    free(prev.value);
+    prev.value = NULL;
     if (rc) break;
     ngrid = s.total * s.nmask;
     for (int i = 0; i < m->n; i++) {
@@ -306,7 +335,9 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
                     100 * rmax, worst, 100 * tol, MAXREFINE);
       break;
     }
-    /* refine every continuous axis at the worst sample */
+    /* refine every continuous axis at the worst sample (the lattice so far kept) */
+    prev = s;
+    s.value = NULL;
     int any = 0;
     for (int d = 0; d < s.nax; d++) {
       any |= refine_axis(&s.ax[d], m->x[(size_t)worst * m->nin + s.ax[d].col]);
@@ -317,6 +348,8 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
                     "%.3g %% and its axes cannot be refined further; accepted: 'set mc_method "
                     "exact' or a larger mc_surface_tol",
                     100 * rmax, 100 * tol);
+      s.value = prev.value; /* nothing refined: the lattice is the one kept */
+      prev.value = NULL;
       break;
     }
   }
