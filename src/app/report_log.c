@@ -1,9 +1,10 @@
 /* report_log.c: what the report is made of, kept as the session prints it: each table of the
  * commands whose results belong in a study (grid, grid load, sweep, design compare, risk,
  * montecarlo, montecarlo shares, sora, converge, compare, descent, parametric) with its command
- * line and notes, the settings it ran under ('show', kept once per change), a copy of each grid
+ * line and notes, the settings it ran under (as 'show' lists them, kept once per change), a copy of each grid
  * for the figures, and the warnings: the notes ura_report_alarm picks, and the commands that
  * failed. Nothing here prints or computes. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,20 +54,51 @@ static void push_warn(uraReport* r, const char* fmt_cmd, const char* text) {
   r->warn[r->nwarn++] = s;
 }
 
-/* the live settings as 'show' prints them (NULL without memory) */
+/* the live settings in the layout of 'show', without its side effects: every parameter (a
+   derivable one not set is "auto (derived)", with the derived impact speed and angle), the injury
+   settings, the compiled model's parameters and the declared distributions; nothing is compiled,
+   settled or simulated (NULL without memory) */
 static char* show_text(uraCtx* c) {
   char* s = NULL;
   size_t n = 0;
   FILE* f = open_memstream(&s, &n);
   if (!f) return NULL;
-  FILE* keep = c->out;
-  int fmt = c->st.format;
-  c->out = f;
-  c->st.format = uraFMT_TABLE;
-  char* argv[] = {"show", NULL};
-  ura_cmd_show(c, 1, argv);
-  c->out = keep;
-  c->st.format = fmt;
+  char val[2048];
+  double speed = NAN, angle = NAN;
+  char keep[uraERRLEN];
+  snprintf(keep, sizeof keep, "%s", c->err);
+  int cond = ura_impact_conditions(c, &speed, &angle) == 0;
+  snprintf(c->err, sizeof c->err, "%s", keep);
+  for (const uraParam* p = ura_params; p->name; p++) {
+    ura_param_format(c, p, val, sizeof val);
+    int derived = p->setoff && !*(const int*)((const char*)&c->st + p->setoff);
+    if (derived && cond && !strcmp(p->name, "speed"))
+      snprintf(val, sizeof val, "%.6g (derived)", speed);
+    else if (derived && cond && !strcmp(p->name, "angle"))
+      snprintf(val, sizeof val, "%.6g (derived)", angle);
+    else if (derived)
+      snprintf(val, sizeof val, "auto (derived)");
+    fprintf(f, "%-17s %s%s%s\n", p->name, val, *p->unit && !derived ? " " : "",
+            derived ? "" : p->unit);
+  }
+  fprintf(f, "# injury criteria (uasrisk-injury(7))\n");
+  const char* name;
+  for (int i = 0; ur_injury_param_info(i, &name, NULL, NULL) == 0; i++) {
+    ura_injury_line(c, i, val, sizeof val, 1);
+    fprintf(f, "%-17s %s\n", name, val);
+  }
+  if (c->model) {
+    fprintf(f, "# model parameters, SI units (uasrisk-model(5))\n");
+    for (int i = 0; i < c->model->nparam; i++) {
+      const urParam* p = &c->model->param[i];
+      fprintf(f, "%-17s %.10g%s%s\n", p->name, p->value, *p->unit ? " " : "", p->unit);
+    }
+  }
+  for (int i = 0; i < c->st.risk.ndist; i++) {
+    if (i == 0) fprintf(f, "# input distributions of montecarlo (dist)\n");
+    ura_dist_format(&c->st.risk.dist[i], val, sizeof val);
+    fprintf(f, "dist %s %s\n", c->st.risk.dist[i].name, val);
+  }
   fclose(f);
   return s;
 }
