@@ -36,7 +36,10 @@ CFLAGS  += $(OPT) -fno-math-errno -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_
 LDFLAGS += -pthread
 
 CORE_LIBS = -lgsl -lgslcblas -lm
-APP_LIBS  = -lreadline -lncursesw -ltinfo
+# libxml2 (the report's HTML tree and serializer, src/app/report/report.c)
+XML_CFLAGS := $(shell pkg-config --cflags libxml-2.0 2>/dev/null || echo -I/usr/include/libxml2)
+XML_LIBS   := $(shell pkg-config --libs libxml-2.0 2>/dev/null || echo -lxml2)
+APP_LIBS  = -lreadline -lncursesw -ltinfo $(XML_LIBS)
 TEST_LIBS = -lcmocka
 
 CORE_SRC  = $(sort $(wildcard src/core/*/*.c))
@@ -79,6 +82,7 @@ $(shell mkdir -p $(BUILD) && printf '#define uraVERSION "%s"\n#define uraCOMMIT 
 endif
 $(BUILD)/src/app/base/version.o: $(BUILD)/version.h
 $(BUILD)/src/app/base/version.o: CFLAGS += -I$(BUILD)
+$(BUILD)/src/app/report/report.o: CFLAGS += $(XML_CFLAGS)
 
 # everything is rebuilt when the compiler or its flags change (e.g. make OPT='-O0 -g')
 FLAGS = $(BUILD)/.flags

@@ -9,7 +9,8 @@
 # The order, lowest first (a folder's rank; one name per room):
 #   core:  contact injury risk membrane = 1  <  engine (and engine/kernels) = 2
 #          <  modellang impact = 3
-#   app:   base 1  <  case 2  <  cmd (and cmd/risk) 3  <  ui 4  <  scale 5  <  main.c 6
+#   app:   base 1  <  case 2  <  cmd (and cmd/risk) 3  <  ui 4  <  report 5  <  scale 6
+#          <  main.c 7
 # The generated build/version.h (base/version.c) is the one header outside the tree.
 root=${1:-.}
 cd "$root" || exit 2
@@ -37,8 +38,9 @@ function where(p) {
   if (p ~ /^src\/app\/case\//) return "app 2 case"
   if (p ~ /^src\/app\/cmd\//) return "app 3 cmd"
   if (p ~ /^src\/app\/ui\//) return "app 4 ui"
-  if (p ~ /^src\/app\/scale\//) return "app 5 scale"
-  if (p == "src/app/main.c") return "app 6 main"
+  if (p ~ /^src\/app\/report\//) return "app 5 report"
+  if (p ~ /^src\/app\/scale\//) return "app 6 scale"
+  if (p == "src/app/main.c") return "app 7 main"
   if (p ~ /^src\/app\//) return "app 9 unknown"
   return "none 0 none"
 }

@@ -10,11 +10,12 @@
 #     -n       no run: write the report again from DIR/raw.csv and DIR/run.txt
 #
 # DIR receives raw.csv (everything uasimpact printed), raw.err, run.txt (date, commit, machine, wall
-# time of the run), report.md, and the CSV files the report describes. The paper's numbers come
-# from $PAPER_VALUES and its P{F|Delta} grids from $PAPER_GRIDS (sessions/paper/README.md); the
-# comparison is made by scripts/reproduce.awk, with the labels and the scoring of Table 17 of
-# scripts/table17.awk (which 'make sensitivity' shares). Without any of them nothing is run: one
-# line names the missing file and the status is 1. Environment: UASIMPACT (default ./uasimpact),
+# time of the run), report.md, report.html (the run as uasimpact's 'report' writes it), and the
+# CSV files the report describes. The paper's numbers come from $PAPER_VALUES and its
+# P{F|Delta} grids from $PAPER_GRIDS (sessions/paper/README.md); the comparison is made by
+# scripts/reproduce.awk, with the labels and the scoring of Table 17 of scripts/table17.awk
+# (which 'make sensitivity' shares). Without any of them nothing is run: one line names the
+# missing file and the status is 1. Environment: UASIMPACT (default ./uasimpact),
 # PAPER_VALUES (default sessions/paper/values.csv), PAPER_GRIDS (default sessions/paper/grids).
 # Run from the source directory.
 set -u
@@ -87,7 +88,9 @@ if [ "$norun" -eq 0 ]; then
 
   started=$(date -u '+%Y-%m-%d %H:%M:%S UTC')
   start=$(date +%s)
-  "$UASIMPACT" -c 'set format csv' "$ses" >"$out/raw.csv" 2>"$out/raw.err" &
+  # the sessions, then the study report of the same run (report.html, the machinery of 'report')
+  printf 'source "%s"\nreport "%s/report.html"\n' "$ses" "$out" >"$out/run.ses" || exit 1
+  "$UASIMPACT" -c 'set format csv' "$out/run.ses" >"$out/raw.csv" 2>"$out/raw.err" &
   pid=$!
   t=0
   while kill -0 "$pid" 2>/dev/null; do
@@ -152,3 +155,4 @@ awk -f scripts/table17.awk -f scripts/reproduce.awk -v out="$out" -v values="$PA
     -v run="$out/run.txt" -v loads="$out/paper-load.txt" -v recalled="$recalled" \
     "$out/raw.csv" || exit 1
 echo "reproduce: report in $out/report.md"
+if [ -s "$out/report.html" ]; then echo "reproduce: the run's study report in $out/report.html"; fi

@@ -4,15 +4,18 @@
 # 'setup.sh fuzz' adds what make fuzz needs (clang, libFuzzer); 'setup.sh san' what make
 # check-san needs (valgrind; the sanitizer runtimes come with gcc); 'setup.sh tsan' the
 # ThreadSanitizer runtime of make check-tsan; 'setup.sh mpi' OpenMPI for make mpi (make check
-# and make bench build it: the comparison of MPI runs with serial ones is part of the tests).
+# and make bench build it: the comparison of MPI runs with serial ones is part of the tests);
+# 'setup.sh browser' headless Chromium, which tests/test_report.sh uses to render a report
+# (skipped without it).
 set -e
 
-pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev gnuplot-nox tmux"
+pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev libxml2-dev gnuplot-nox tmux"
 case "$1" in
   fuzz) pkgs="$pkgs clang libclang-rt-dev" ;;
   san) pkgs="$pkgs valgrind" ;;
   tsan) pkgs="$pkgs libtsan2" ;;
   mpi) pkgs="$pkgs libopenmpi-dev openmpi-bin" ;;
+  browser) pkgs="$pkgs chromium" ;;
 esac
 [ -n "$UASIMPACT_EXTRA_PKGS" ] && pkgs="$pkgs $UASIMPACT_EXTRA_PKGS"
 

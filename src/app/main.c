@@ -5,7 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "ui/ui.h"
+#include "report/report.h"
 #include "scale/scale.h"
 
 static void usage(FILE* f) {
@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   signal(SIGXFSZ, SIG_IGN);
   ura_init(c);
   c->inspect = ura_inspect_cell; /* the viewer's Enter runs a cell's impact (cmd layer) */
+  ura_report_install(c);         /* what the session computes is kept for report */
 
   /* results to a file or a pipe through a stream that keeps why a write failed */
   if (!isatty(STDOUT_FILENO)) {

@@ -28,7 +28,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "../../src/app/ui/ui.h"
+#include "../../src/app/report/report.h"
 
 #define MAXSTEPS 400 /* steps of one impact */
 #define MAXCELLS 49  /* cells of one grid (at most 7 x 7) */
@@ -82,12 +82,14 @@ static int plain(const char* s) {
 static int guard(uraCtx* x, int argc, char** argv) {
   const char* cmd = argv[0];
   if (!strcmp(cmd, "reset")) return ura_fail(x, "fuzz: reset is not run here");
-  int sim = !strcmp(cmd, "impact") || !strcmp(cmd, "compare") ||
+  int conv = !strcmp(cmd, "converge"); /* a grid at half the step */
+  int sim = !strcmp(cmd, "impact") || !strcmp(cmd, "compare") || conv ||
             (!strcmp(cmd, "grid") && argc == 1) || (!strcmp(cmd, "sweep") && argc == 3);
 
   /* files: a plain name (the last word of the file commands, the value of set output) */
   int file = (!strcmp(cmd, "export") || !strcmp(cmd, "save") || !strcmp(cmd, "source") ||
-              (!strcmp(cmd, "model") && argc == 3) || (!strcmp(cmd, "grid") && argc == 3));
+              !strcmp(cmd, "report") || (!strcmp(cmd, "model") && argc == 3) ||
+              (!strcmp(cmd, "grid") && argc == 3));
   if (file && !plain(argv[argc - 1])) return ura_fail(x, "fuzz: not a scratch file name");
   if (!strcmp(cmd, "set") && argc >= 3 && !strcmp(argv[1], "output") && *argv[2] &&
       strcmp(argv[2], "none") && !plain(argv[2])) {
@@ -120,8 +122,9 @@ static int guard(uraCtx* x, int argc, char** argv) {
     if (!x->st.par_max_set) hi = e[1];
     if (!x->st.perp_max_set) cross = e[2];
   }
-  double rows = floor((hi - lo) / x->st.step + 1e-9) + 2;
-  double cols = 2 * floor(cross / x->st.step + 1e-9) + 3;
+  double step = conv ? x->st.step / 2 : x->st.step;
+  double rows = floor((hi - lo) / step + 1e-9) + 2;
+  double cols = 2 * floor(cross / step + 1e-9) + 3;
   if (!(rows * cols <= MAXCELLS)) return ura_fail(x, "fuzz: grids of at most %d cells", MAXCELLS);
   if (!strcmp(cmd, "sweep")) {
     int n = 1;
@@ -211,6 +214,7 @@ static void fresh(void) {
   c.err[0] = 0;
   c.guard = guard;
   c.inspect = ura_inspect_cell;
+  ura_report_install(&c); /* report keeps what the script prints, as the program does */
 }
 
 /* the scratch folder goes with the process */

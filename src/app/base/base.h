@@ -32,6 +32,13 @@ int ura_parse_list_why(const char* s, double* v, int max, char* why, size_t n);
 /* the number of values a comma-separated list holds (its commas plus one) */
 int ura_list_count(const char* s);
 
+/* ---- hashing (fnv.c) ---- */
+
+/* 64-bit FNV-1a, chained from h (start with uraFNV0): the checksums and hashes of part files,
+   the model texts' hashes in a report */
+#define uraFNV0 0xcbf29ce484222325ULL
+unsigned long long ura_fnv(unsigned long long h, const void* p, size_t n);
+
 /* ---- tabular output ---- */
 
 typedef struct uraTable uraTable;
@@ -41,6 +48,10 @@ void ura_table_note(uraTable* t, const char* fmt, ...) __attribute__((format(pri
 /* print (aligned table when width allows and !csv, or CSV) to f and free; notes first as comment
    lines, wrapped at width (0: not wrapped) */
 void ura_table_write(FILE* f, uraTable* t, int csv, int width);
+/* what a table holds, for a reader that keeps it (the report): its column names, cells (row by
+   row) and notes, owned by the table */
+void ura_table_parts(const uraTable* t, int* ncol, char* const** names, int* ncell,
+                     char* const** cells, int* nnote, char* const** notes);
 
 /* a word a script reads back as s: ura_put_word writes it in single quotes, or in double ones
    when s holds a single quote (word.c). ura_word_ok: -1 when the script reader cannot take it

@@ -97,3 +97,13 @@ void ura_table_write(FILE* f, uraTable* t, int csv, int width) {
   free(t->notes);
   free(t);
 }
+
+void ura_table_parts(const uraTable* t, int* ncol, char* const** names, int* ncell,
+                     char* const** cells, int* nnote, char* const** notes) {
+  *ncol = t->ncol;
+  *names = t->names;
+  *ncell = t->ncell;
+  *cells = t->cells;
+  *nnote = t->nnote;
+  *notes = t->notes;
+}

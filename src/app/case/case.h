@@ -46,7 +46,8 @@ typedef enum {
   uraDESC_PAPER
 } uraDescentSrc;
 
-#define uraMAXDIST 16 /* declared input distributions */
+#define uraMAXDIST  16 /* declared input distributions */
+#define uraMAXBANDS 64 /* population density bands, mc quantiles (= uraMAXLIST) */
 
 typedef enum {
   uraMC_SURFACE = 0,
@@ -60,14 +61,26 @@ typedef struct {
 } uraDistDecl;
 
 typedef struct {
-  double p_chute;       /* the parachute deploys in time */
-  double p_bag;         /* each airbag deploys */
-  double h_chute_min;   /* m: below this failure height the parachute cannot help */
-  double seed;          /* Monte Carlo key (a whole number) */
-  int mc_method;        /* uraMcMethod */
-  double surface_nodes; /* nodes per continuous axis of the response surface */
-  double surface_check; /* samples computed exactly to check the surface */
-  double pop_density;   /* people/km^2 for the iGRC */
+  double p_chute;                  /* the parachute deploys in time */
+  double p_bag;                    /* each airbag deploys */
+  double h_chute_min;              /* m: below this failure height the parachute cannot help */
+  double seed;                     /* Monte Carlo key (a whole number) */
+  int mc_method;                   /* uraMcMethod */
+  double surface_nodes;            /* nodes per continuous axis of the response surface */
+  double surface_check;            /* samples computed exactly to check the surface */
+  double pop_density[uraMAXBANDS]; /* people/km^2: the bands of eq. (1.1); the iGRC's is the
+                                      highest */
+  int npop;
+  double lambda;    /* ground-crash events per flight hour, eq. (1.1) */
+  double p_shelter; /* probability that a person is sheltered, eq. (1.1) */
+  double ua_dim;    /* m: characteristic dimension for SORA 2.5 Table 2, when set */
+  int ua_dim_set;
+  double ua_speed; /* m/s: maximum commanded airspeed for Table 2, when set */
+  int ua_speed_set;
+  int m2_baseline;           /* 0: Q unmitigated, 1: Table B.8's area of the column */
+  double quant[uraMAXBANDS]; /* montecarlo's quantiles of Q (probabilities) */
+  int nquant;
+  double surface_tol;   /* montecarlo's tolerance on the surface's relative error; 0: none */
   double tlos;          /* target level of safety, fatalities per flight hour */
   double igrc_comp;     /* compensation subtracted from the raw iGRC */
   int annexf_obstacles; /* 1: the Annex F obstacle factor (1 < w < 40 m) */
@@ -227,7 +240,13 @@ typedef struct uraCtx {
   /* with scale: called with each file the run reads (a script, a sourced file, a model, a grid),
      open as f, so that a shard's part never replaces an input of the run (ura_input_seen) */
   void (*scale_input)(struct uraCtx* c, FILE* f, const char* path);
-  int mute; /* results, notes, files and plots go nowhere (scale.h) */
+  int mute;              /* results, notes, files and plots go nowhere (scale.h) */
+  struct uraReport* rep; /* the results kept for report (report.h; NULL: none yet) */
+  /* the report's hooks (ura_report_install; the report layer sits above the commands): around
+     each command (script.c), and each printed table (output.c); NULL: nothing is kept */
+  void (*rep_begin)(struct uraCtx* c, int argc, char** argv);
+  void (*rep_end)(struct uraCtx* c, int rc);
+  void (*rep_table)(struct uraCtx* c, const struct uraTable* t);
 } uraCtx;
 
 /* record a failure message; always returns -1 */
@@ -242,6 +261,8 @@ int ura_dry(uraCtx* c, const char* what);
 /* ---- the risk settings (their defaults: state.c) and declared distributions (risk_dist.c) ---- */
 
 void ura_risk_defaults(uraRiskSet* r);
+/* the highest of the population density bands (SORA 2.5 takes the highest in the footprint) */
+double ura_risk_density_max(const uraRiskSet* r);
 /* show and save session: the declared distributions, as '# ...' lines or as dist commands */
 void ura_dist_show(uraCtx* c);
 void ura_dist_save(uraCtx* c, FILE* f);
@@ -277,6 +298,7 @@ typedef struct {
   /* uraP_STR: checks a value and writes what is kept into norm (n bytes); 0, or -1 with the
      failure recorded (NULL: any text of the size) */
   int (*check)(struct uraCtx* c, const char* value, char* norm, size_t n);
+  size_t cntoff; /* uraP_LIST: offset of its int count in uraState (0: the winds' nwinds) */
 } uraParam;
 
 extern const uraParam ura_params[];

@@ -36,6 +36,7 @@ void ura_pager_end(uraCtx* c) {
 }
 
 void ura_table_print(uraCtx* c, uraTable* t) {
+  if (c->rep_table) c->rep_table(c, t); /* kept for report before it is printed and freed */
   ura_table_write(c->out, t, c->st.format == uraFMT_CSV, ura_text_width(c));
 }
 

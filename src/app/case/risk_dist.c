@@ -8,6 +8,12 @@
 #include "case.h"
 
 
+double ura_risk_density_max(const uraRiskSet* r) {
+  double m = r->pop_density[0];
+  for (int i = 1; i < r->npop; i++) m = r->pop_density[i] > m ? r->pop_density[i] : m;
+  return m;
+}
+
 int ura_dist_find(const uraRiskSet* r, const char* name) {
   for (int i = 0; i < r->ndist; i++) {
     if (!strcmp(r->dist[i].name, name)) return i;
@@ -17,8 +23,10 @@ int ura_dist_find(const uraRiskSet* r, const char* name) {
 
 /* settings that describe the study itself, not what a grid or a deployment depends on */
 static const char* const not_drawn[] = {
-    "step",        "along_min", "along_max",         "cross_max",
-    "pop_density", "tlos",      "igrc_compensation", NULL};
+    "step",        "along_min",    "along_max",         "cross_max",
+    "pop_density", "tlos",         "igrc_compensation", "lambda_system",
+    "p_shelter",   "ua_dimension", "ua_max_speed",      "mc_surface_tol",
+    NULL};
 
 int ura_dist_range(uraCtx* c, const char* name, double* lo, double* hi) {
   if (!strcmp(name, "wind_dir") || !strcmp(name, "face_dir")) {

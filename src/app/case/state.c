@@ -20,6 +20,7 @@ static const char* const onoff_names[] = {"off", "on", NULL};
 static const char* const descent_names[] = {"model", "paper", NULL};
 static const char* const tau_names[] = {"rmax", "top", NULL};
 static const char* const mc_method_names[] = {"surface", "exact", NULL};
+static const char* const m2_baseline_names[] = {"unmitigated", "table_b8", NULL};
 
 /* one row per settable quantity: name, kind, offset, derived flag, unit, range, help */
 const uraParam ura_params[] = {
@@ -115,8 +116,38 @@ const uraParam ura_params[] = {
      "nodes of the response surface per continuous input (discrete inputs: their values)", NULL},
     {"surface_check", uraP_INT, OFF(risk.surface_check), 0, "", 0, 1000,
      "samples that montecarlo also computes by grids to measure the surface's error", NULL},
-    {"pop_density", uraP_NUM, OFF(risk.pop_density), 0, "ppl/km^2", 1e-6, 1e9,
-     "population density for the iGRC (sora)", NULL},
+    {"pop_density", uraP_LIST, OFF(risk.pop_density), 0, "ppl/km^2", 1e-6, 1e9,
+     "population density, one value or a list of bands (500,5000,50000): sora's iGRC takes the "
+     "highest (SORA 2.5: the highest density in the footprint); risk and sora print eq. (1.1) "
+     "per band",
+     NULL, NULL, OFF(risk.npop)},
+    {"lambda_system", uraP_NUM, OFF(risk.lambda), 0, "1/h", 1e-12, 1,
+     "ground-crash event rate per flight hour, lambda_system of eq. (1.1) (risk, sora; default "
+     "1e-3, SORA 2.5's implied loss-of-control rate at SAIL III: set the drone's own)",
+     NULL},
+    {"p_shelter", uraP_NUM, OFF(risk.p_shelter), 0, "", 0, 1,
+     "probability that a person is sheltered, P_shelter of eq. (1.1) (0: nobody sheltered)", NULL},
+    {"ua_dimension", uraP_NUM, OFF(risk.ua_dim), OFF(risk.ua_dim_set), "m", 0.001, 1000,
+     "maximum characteristic dimension for SORA 2.5 Table 2 (sora); derived: the larger of width "
+     "and length ('set ua_dimension auto')",
+     NULL},
+    {"ua_max_speed", uraP_NUM, OFF(risk.ua_speed), OFF(risk.ua_speed_set), "m/s", 0.01, 1000,
+     "maximum commanded airspeed for SORA 2.5 Table 2 (sora: the designer's figure); derived: the "
+     "unmitigated impact speed, with a note ('set ua_max_speed auto')",
+     NULL},
+    {"m2_baseline", uraP_ENUM, OFF(risk.m2_baseline), 0, "", 0, 0,
+     "baseline of sora's M2 reduction factor: unmitigated (Q of the same drone without parachute "
+     "and airbag) or table_b8 (Annex B Table B.8's critical area of the Table 2 column; warns of "
+     "double counting with Step #2)",
+     m2_baseline_names},
+    {"mc_quantiles", uraP_LIST, OFF(risk.quant), 0, "", 0.0001, 0.9999,
+     "quantiles of Q that montecarlo prints as columns p5, p50, ... (probabilities in (0, 1))",
+     NULL, NULL, OFF(risk.nquant)},
+    {"mc_surface_tol", uraP_NUM, OFF(risk.surface_tol), 0, "", 0, 10,
+     "montecarlo's tolerance on the response surface's relative error (0.05 = 5 %): above it the "
+     "run warns, refines the surface where the error is largest, and fails if it cannot meet it; "
+     "0: none declared",
+     NULL},
     {"tlos", uraP_NUM, OFF(risk.tlos), 0, "1/h", 1e-12, 1,
      "target level of safety for the iGRC, fatalities per flight hour (sora)", NULL},
     {"igrc_compensation", uraP_NUM, OFF(risk.igrc_comp), 0, "", 0, 1,
@@ -225,7 +256,7 @@ int ura_param_set(uraCtx* c, const uraParam* p, const char* value) {
       }
     }
     memcpy(base + p->off, v, k * sizeof(double));
-    c->st.nwinds = k;
+    *(p->cntoff ? (int*)(base + p->cntoff) : &c->st.nwinds) = k;
     return 0;
   }
 
@@ -271,9 +302,11 @@ void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
   case uraP_LIST: {
     size_t k = 0;
     buf[0] = 0;
-    for (int i = 0; i < c->st.nwinds && k < n; i++) {
+    int cnt = p->cntoff ? *(const int*)(base + p->cntoff) : c->st.nwinds;
+    const double* v = (const double*)(base + p->off);
+    for (int i = 0; i < cnt && k < n; i++) {
       if (i) k += snprintf(buf + k, n - k, ",");
-      if (k < n) k += fmt_exact(buf + k, n - k, c->st.winds[i]);
+      if (k < n) k += fmt_exact(buf + k, n - k, v[i]);
     }
     break;
   }
@@ -340,7 +373,15 @@ void ura_risk_defaults(uraRiskSet* r) {
   r->mc_method = uraMC_SURFACE;
   r->surface_nodes = 7;
   r->surface_check = 4;
-  r->pop_density = 500;
+  r->pop_density[0] = 500;
+  r->npop = 1;
+  r->lambda = 1e-3;
+  r->p_shelter = 0;
+  r->quant[0] = 0.05;
+  r->quant[1] = 0.5;
+  r->quant[2] = 0.95;
+  r->nquant = 3;
+  r->surface_tol = 0;
   r->tlos = 1e-6;
   r->igrc_comp = 0;
   r->annexf_obstacles = 1;

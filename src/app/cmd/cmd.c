@@ -87,6 +87,15 @@ const uraCmd ura_cmds[] = {
     {"sora", ura_cmd_sora, 0, 1, uraC_NONE, "sora [mc]",
      "SORA 2.5 figures: critical area (Q, and Annex F) and iGRC of the unmitigated drone and the "
      "live case, and the reduction factor; mc: with the last montecarlo's intervals"},
+    {"converge", ura_cmd_converge, 0, 0, uraC_NONE, "converge",
+     "convergence evidence of the live grid: Q at the step and at half of it, the new cells' P "
+     "against the coarse grid, and P at the centre and the worst cell with dt and dt/2; columns "
+     "check,what,dpar,dperp,coarse,fine,change,rel_change"},
+    {"report", ura_cmd_report, 1, 1, uraC_FILE, "report FILE.html",
+     "write the session's study as one self-contained HTML file: question, answer (SORA 2.5 "
+     "iGRC, M2 evidence, risk per flight hour), every grid, sweep, design comparison, risk, "
+     "montecarlo, sora and converge result with its settings, notes and figures, warnings, "
+     "assumptions, model validity and the model texts"},
     {"save", ura_cmd_save, 2, 2, uraC_NONE, "save session FILE",
      "write a script that recreates the live state exactly (replay: uasimpact FILE, or source)"},
     {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",

@@ -69,6 +69,8 @@ int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_m
 int ura_cmd_view(uraCtx* c, int argc, char** argv);
 int ura_cmd_plot(uraCtx* c, int argc, char** argv);
 int ura_grid_show(uraCtx* c);
+/* and the one in the report layer above: the study as one HTML file (report/report.c) */
+int ura_cmd_report(uraCtx* c, int argc, char** argv);
 
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
 /* the commands of save session (session.c) */
@@ -140,6 +142,7 @@ void ura_suggest_commands(uraSuggest* s);
 int ura_cmd_risk(uraCtx* c, int argc, char** argv);
 int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv);
 int ura_cmd_sora(uraCtx* c, int argc, char** argv);
+int ura_cmd_converge(uraCtx* c, int argc, char** argv); /* risk/cmd_converge.c */
 void ura_mc_free(uraCtx* c);
 
 /* the deployable devices of the live model: a parachute (area_chute > 0) and the airbags it
@@ -177,5 +180,28 @@ int ura_mc_data(uraCtx* c, const double** q, int* n, const urMcStats** st, const
 int ura_mc_shares(uraCtx* c, const char** name, double* share);
 /* the iGRC columns of a critical area: raw1, igrc, igrc_table (0, or -1 without a class) */
 int ura_risk_igrc(const uraState* st, double ca, double* raw1, int* igrc, int* table);
+
+/* ---- SORA 2.5 and eq. (1.1) (risk/cmd_sora25.c) ---- */
+
+/* the Table 2 look-up of the live drone: its dimension and maximum speed (set or derived), the
+   highest density band, the column, row and iGRC (0 grey, -1 outside), clamped values counted */
+typedef struct {
+  double dim, speed, density;
+  int dim_set, speed_set;
+  int col, row, igrc;
+  int nclamp;
+} uraSora25;
+void ura_sora25_inputs(uraCtx* c, double unmit_speed, uraSora25* s);
+const char* ura_sora25_col_name(int col);
+/* a sora row's columns igrc_sora25 and igrc_quant (the quantitative iGRC of area ca clamped) */
+void ura_sora25_cells(uraTable* t, uraSora25* s, int igrc_quant, int ok, double ca);
+/* sora's notes on those columns */
+void ura_sora25_notes(uraTable* t, const uraSora25* s);
+/* the M2 evidence table from sora's four figures (as ura_mc_sora fills them) */
+int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], const char* design,
+                        int from_mc);
+/* eq. (1.1) per case and density band: n rows of Q with interval, and where they come from */
+void ura_eq11_table(uraCtx* c, int n, const char* const* label, const double* q, const double* lo,
+                    const double* hi, const char* source);
 
 #endif

@@ -73,7 +73,9 @@ static int run_words(uraCtx* c, int argc, char** argv) {
   }
   if (c->guard && c->guard(c, argc, argv)) return -1;
   int paged = ura_pager_begin(c, cmd->name);
+  if (c->rep_begin) c->rep_begin(c, argc, argv); /* report/ keeps what it prints */
   int rc = cmd->fn(c, argc, argv);
+  if (c->rep_end) c->rep_end(c, rc);
   if (paged) ura_pager_end(c);
 
   /* what the command printed reached its destination, or the command failed (a full disk, a

@@ -57,9 +57,6 @@ void ura_scale_input(uraCtx* c, FILE* f, const char* path);
 /* results, notes and files of this process go nowhere (a shard, an MPI rank other than 0) */
 int ura_scale_mute(uraCtx* c);
 
-/* 64-bit FNV-1a, chained from h (start with uraFNV0) */
-#define uraFNV0 0xcbf29ce484222325ULL
-unsigned long long ura_fnv(unsigned long long h, const void* p, size_t n);
 /* the hash of the script files named on a command line (the -c texts are in the line) and of
    the built-in models: 16 hex digits each */
 void ura_scale_script_hash(int argc, char** argv, char out[17]);

@@ -368,12 +368,6 @@ typedef struct {
 } urBuiltinModel;
 extern const urBuiltinModel ur_builtin_models[];
 
-unsigned long long ura_fnv(unsigned long long h, const void* p, size_t n) {
-  const unsigned char* s = p;
-  for (size_t i = 0; i < n; i++) h = (h ^ s[i]) * 0x100000001b3ULL;
-  return h;
-}
-
 void ura_scale_script_hash(int argc, char** argv, char out[17]) {
   unsigned long long h = uraFNV0;
   for (int i = 0; i < argc; i++) {

@@ -14,11 +14,12 @@
 #include <unistd.h>
 
 #include "../cmd.h"
-
+#include "uasimpact/quantile.h"
 
 #define MAXIN      (uraMAXDIST + 1 + urMAXBAGS)
 #define MAXGRIDS   10000 /* grids of a response surface, at most */
 #define MAXSAMPLES 1000000
+#define MAXREFINE  4 /* refinements of the response surface towards mc_surface_tol */
 
 struct uraMc {
   int n, nin, ndecl; /* samples; input columns; declared inputs (the first ones) */
@@ -35,7 +36,8 @@ struct uraMc {
   int bag[urMAXBAGS];
   char casename[8];
   double seed;
-  char note[4][1000]; /* inputs, method, surface check, timing */
+  char note[5][1000]; /* inputs, method, surface check, timing, surface tolerance */
+  double surf_err;    /* the surface check's largest relative error (NAN: not measured) */
   char* settings;     /* the session text it ran under (sora mc checks it) */
 };
 
@@ -52,10 +54,21 @@ void ura_mc_free(uraCtx* c) {
 
 /* the session text without the settings that change no sample */
 static char* settings_text(uraCtx* c) {
-  static const char* const skip[] = {
-      "set format ", "set terminal ",    "set output ", "set threads ",
-      "set recall ", "set pop_density ", "set tlos ",   "set igrc_compensation ",
-      NULL};
+  static const char* const skip[] = {"set format ",
+                                     "set terminal ",
+                                     "set output ",
+                                     "set threads ",
+                                     "set recall ",
+                                     "set pop_density ",
+                                     "set tlos ",
+                                     "set igrc_compensation ",
+                                     "set lambda_system ",
+                                     "set p_shelter ",
+                                     "set ua_dimension ",
+                                     "set ua_max_speed ",
+                                     "set m2_baseline ",
+                                     "set mc_quantiles ",
+                                     NULL};
   char* s = NULL;
   size_t n = 0;
   FILE* f = open_memstream(&s, &n);
@@ -261,7 +274,72 @@ static int node_fail(uraCtx* c, const struct uraMc* m, const surface* s, long g)
   return mc_fail_at(c, where);
 }
 
-/* Q of every sample from the surface; a few samples again by their own grids */
+/* insert the midpoint of the interval holding x into a continuous axis; 0 when it cannot */
+static int refine_axis(axis* a, double x) {
+  if (a->discrete || a->n < 2 || a->n >= uraMAXLIST + 1) return 0;
+  int j = 0;
+  while (j < a->n - 2 && x >= a->node[j + 1]) j++;
+  double mid = 0.5 * (a->node[j] + a->node[j + 1]);
+  if (!(mid > a->node[j] && mid < a->node[j + 1])) return 0;
+  memmove(&a->node[j + 2], &a->node[j + 1], (size_t)(a->n - j - 1) * sizeof(double));
+  a->node[j + 1] = mid;
+  a->n++;
+  return 1;
+}
+
+/* the value of lattice point idx of s (branch k) in an earlier lattice old whose axes hold every
+   node of it; 0 with *v, or -1 when a node is new */
+static int old_value(const surface* s, const surface* old, long idx, int k, double* v) {
+  if (!old || !old->value) return -1;
+  long oidx = 0, ostride = 1;
+  for (int d = s->nax - 1; d >= 0; d--) {
+    const axis* a = &s->ax[d];
+    const axis* o = &old->ax[d];
+    double x = a->node[idx % a->n];
+    idx /= a->n;
+    int j = 0;
+    while (j < o->n && o->node[j] != x) j++;
+    if (j == o->n) return -1;
+    oidx += j * ostride;
+    ostride *= o->n;
+  }
+  *v = old->value[(size_t)k * old->total + oidx];
+  return 0;
+}
+
+/* the surface's grids (every lattice point of every branch needed; those of an earlier lattice
+   old are taken from it) */
+static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const surface* old,
+                         const uraState* base, uraState* tmp, uraState* ns, int tty,
+                         int* recalled) {
+  s->total = 1;
+  for (int d = 0; d < s->nax; d++) s->total *= s->ax[d].n;
+  long ngrid = s->total * s->nmask;
+  if (ngrid > MAXGRIDS) {
+    return ura_fail(c,
+                    "montecarlo: the response surface needs %ld grids; accepted: at most %d "
+                    "(lower surface_nodes, or 'set mc_method exact')",
+                    ngrid, MAXGRIDS);
+  }
+  s->value = malloc((size_t)ngrid * sizeof *s->value);
+  if (!s->value) return ura_fail(c, "montecarlo: out of memory");
+  int rc = 0;
+  for (long g = 0; g < ngrid && rc == 0; g++) {
+    progress(tty, "surface grid", g + 1, ngrid);
+    if (old_value(s, old, g % s->total, (int)(g / s->total), &s->value[g]) == 0) {
+      (*recalled)++;
+      continue;
+    }
+    node_state(m, s, base, g % s->total, s->masks[g / s->total], tmp, ns);
+    rc = ura_risk_grid(c, ns, "montecarlo", 1, &s->value[g]);
+    *recalled += rc == 0 && c->last.recalled;
+    if (rc) node_fail(c, m, s, g);
+  }
+  return rc;
+}
+
+/* Q of every sample from the surface; a few samples again by their own grids; below
+   mc_surface_tol, or refined where the error is largest, or a failure */
 static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp, uraState* ns,
                       int tty) {
   surface s;
@@ -273,23 +351,72 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     for (int k = 0; k < s.nmask; k++) seen |= s.masks[k] == m->mask[i];
     if (!seen) s.masks[s.nmask++] = m->mask[i];
   }
-  long ngrid = s.total * s.nmask;
-  if (ngrid > MAXGRIDS) {
-    return ura_fail(c,
-                    "montecarlo: the response surface needs %ld grids; accepted: at most %d "
-                    "(lower surface_nodes, or 'set mc_method exact')",
-                    ngrid, MAXGRIDS);
+  int exact = 1;
+  for (int d = 0; d < s.nax; d++) exact &= s.ax[d].discrete || s.ax[d].n == 1;
+  int nchk = exact ? 0 : (int)fmin(base->risk.surface_check, m->n);
+  double tol = base->risk.surface_tol, *qchk = calloc((size_t)nchk + 1, sizeof *qchk);
+  if (!qchk) return ura_fail(c, "montecarlo: out of memory");
+  int rc = 0, recalled = 0, round = 0, first_worse = 0;
+  double first_err = 0, emax = 0, rmax = 0, esum = 0;
+  long ngrid = 0;
+  /* the check samples' own grids, once */
+  for (int i = 0; i < nchk && rc == 0; i++) {
+    progress(tty, "surface check", i + 1, nchk);
+    sample_state(m, base, i, tmp);
+    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
+    rc = ura_risk_grid(c, ns, "montecarlo", 1, &qchk[i]);
+    if (rc) mc_fail_sample(c, m, i);
   }
-  s.value = malloc((size_t)ngrid * sizeof *s.value);
-  if (!s.value) return ura_fail(c, "montecarlo: out of memory");
-  int rc = 0, recalled = 0;
-  for (long g = 0; g < ngrid && rc == 0; g++) {
-    progress(tty, "surface grid", g + 1, ngrid);
-    node_state(m, &s, base, g % s.total, s.masks[g / s.total], tmp, ns);
-    rc = ura_risk_grid(c, ns, "montecarlo", 1, &s.value[g]);
-    recalled += rc == 0 && c->last.recalled;
-    if (rc) node_fail(c, m, &s, g);
+  surface prev;
+  memset(&prev, 0, sizeof prev);
+  for (;; round++) {
+    if (rc == 0) rc = surface_build(c, m, &s, &prev, base, tmp, ns, tty, &recalled);
+    free(prev.value);
+    prev.value = NULL;
+    if (rc) break;
+    ngrid = s.total * s.nmask;
+    for (int i = 0; i < m->n; i++) {
+      m->q[i] = surface_at(m, &s, m->mask[i], i);
+      m->q_c[i] = surface_at(m, &s, 0, i);
+    }
+    int worst = -1;
+    emax = rmax = esum = 0;
+    for (int i = 0; i < nchk; i++) {
+      double e = fabs(m->q[i] - qchk[i]);
+      emax = fmax(emax, e);
+      esum += e;
+      double rel = qchk[i] > 0 ? e / qchk[i] : e > 0 ? INFINITY : 0;
+      if (rel > rmax || worst < 0) rmax = fmax(rmax, rel), worst = i;
+    }
+    if (round == 0) first_err = rmax, first_worse = tol > 0 && rmax > tol;
+    if (!(tol > 0) || rmax <= tol || !nchk) break;
+    if (round == MAXREFINE) {
+      rc = ura_fail(c,
+                    "montecarlo: the response surface's error %.3g %% (sample %d) is above "
+                    "mc_surface_tol %.3g %% after %d refinements; accepted: more surface_nodes, "
+                    "a larger mc_surface_tol, or 'set mc_method exact'",
+                    100 * rmax, worst, 100 * tol, MAXREFINE);
+      break;
+    }
+    /* refine every continuous axis at the worst sample (the lattice so far kept) */
+    prev = s;
+    s.value = NULL;
+    int any = 0;
+    for (int d = 0; d < s.nax; d++) {
+      any |= refine_axis(&s.ax[d], m->x[(size_t)worst * m->nin + s.ax[d].col]);
+    }
+    if (!any) {
+      rc = ura_fail(c,
+                    "montecarlo: the response surface's error %.3g %% is above mc_surface_tol "
+                    "%.3g %% and its axes cannot be refined further; accepted: 'set mc_method "
+                    "exact' or a larger mc_surface_tol",
+                    100 * rmax, 100 * tol);
+      s.value = prev.value; /* nothing refined: the lattice is the one kept */
+      prev.value = NULL;
+      break;
+    }
   }
+  free(qchk);
 
   /* the method, in words */
   char axes[400] = "";
@@ -300,8 +427,6 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
                           m->name[a->col], a->n, a->discrete ? "values" : "nodes", a->node[0],
                           a->node[a->n - 1]);
   }
-  int exact = 1;
-  for (int d = 0; d < s.nax; d++) exact &= s.ax[d].discrete || s.ax[d].n == 1;
   snprintf(m->note[1], sizeof m->note[1],
            "method: response surface: Q on a lattice of real "
            "grids (step %g m), %ld point%s x %d deployment branch%s = %ld grids%s%s%s; %s; %s",
@@ -310,29 +435,7 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
            s.nax ? axes : "no drawn input acts on the grids",
            exact ? "every sample is on a lattice point: exact"
                  : "multilinear interpolation between the nodes");
-
-  /* each sample's Q; the check against its own grids */
-  for (int i = 0; i < m->n && rc == 0; i++) {
-    m->q[i] = surface_at(m, &s, m->mask[i], i);
-    m->q_c[i] = surface_at(m, &s, 0, i);
-  }
-  int nchk = exact ? 0 : (int)fmin(base->risk.surface_check, m->n);
-  double emax = 0, rmax = 0, esum = 0;
-  for (int i = 0; i < nchk && rc == 0; i++) {
-    double q;
-    progress(tty, "surface check", i + 1, nchk);
-    sample_state(m, base, i, tmp);
-    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
-    rc = ura_risk_grid(c, ns, "montecarlo", 1, &q);
-    if (rc) {
-      mc_fail_sample(c, m, i);
-      break;
-    }
-    double e = fabs(m->q[i] - q);
-    emax = fmax(emax, e);
-    esum += e;
-    if (q > 0) rmax = fmax(rmax, e / q);
-  }
+  m->surf_err = nchk ? rmax : NAN;
   if (exact) {
     snprintf(m->note[2], sizeof m->note[2], "surface check: not needed (exact)");
   } else if (nchk) {
@@ -345,6 +448,22 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     snprintf(m->note[2], sizeof m->note[2],
              "surface check: none (surface_check 0): the "
              "interpolation error is not measured");
+  }
+  if (exact) {
+    m->note[4][0] = 0;
+  } else if (!(tol > 0)) {
+    snprintf(m->note[4], sizeof m->note[4],
+             "surface tolerance: none declared (set mc_surface_tol): the surface's error%s is "
+             "not held to any bound",
+             nchk ? " above" : "");
+  } else if (first_worse) {
+    snprintf(m->note[4], sizeof m->note[4],
+             "warning: the surface's error %.3g %% was above mc_surface_tol %.3g %%; refined %d "
+             "time%s where the error was largest, now %.3g %%",
+             100 * first_err, 100 * tol, round, round == 1 ? "" : "s", 100 * rmax);
+  } else {
+    snprintf(m->note[4], sizeof m->note[4], "surface tolerance: error %.3g %% within %.3g %%%s",
+             100 * rmax, 100 * tol, nchk ? "" : " (not measured: surface_check 0)");
   }
   free(s.value);
   return rc;
@@ -590,11 +709,21 @@ static double mean_of(const double* y, int n) {
   return m;
 }
 
+static int cmp_q(const void* a, const void* b) {
+  double x = *(const double*)a, y = *(const double*)b;
+  return x < y ? -1 : x > y;
+}
+
 static void mc_summary(uraCtx* c) {
-  static const char* const cols[] = {"n", "mean", "sd", "lo95", "hi95"};
   struct uraMc* m = c->mc;
-  char buf[1000];
-  uraTable* t = ura_table_new(5, cols);
+  const uraRiskSet* rs = &c->st.risk;
+  char buf[1000], qname[uraMAXBANDS][24];
+  const char* cols[5 + uraMAXBANDS] = {"n", "mean", "sd", "lo95", "hi95"};
+  for (int j = 0; j < rs->nquant; j++) {
+    snprintf(qname[j], sizeof qname[j], "p%g", 100 * rs->quant[j]);
+    cols[5 + j] = qname[j];
+  }
+  uraTable* t = ura_table_new(5 + rs->nquant, cols);
   ura_table_note(t,
                  "Q of case %s over %d samples (seed %.0f; sample i depends on (seed, i) "
                  "only): mean and sd of the samples, lo95..hi95 the 95 %% confidence interval of "
@@ -603,6 +732,7 @@ static void mc_summary(uraCtx* c) {
   inputs_note(c, m, buf, sizeof buf);
   snprintf(m->note[0], sizeof m->note[0], "%s", buf);
   for (int i = 0; i < 3; i++) ura_table_note(t, "%s", m->note[i]);
+  if (m->note[4][0]) ura_table_note(t, "%s", m->note[4]);
   ura_table_note(t,
                  "the samples' spread: 2.5 %% and 97.5 %% quantiles %.6g and %.6g m^2, min "
                  "%.6g, max %.6g",
@@ -626,12 +756,54 @@ static void mc_summary(uraCtx* c) {
                      mean_of(m->q_c, m->n), r, lo, hi);
     }
   }
+  /* the tails: quantiles of Q; the interval of the mean truncated at Q >= 0 */
+  double lo = m->st.lo95, hi = m->st.hi95, *sorted = malloc((size_t)m->n * sizeof *sorted);
+  int clip = ur_interval_clip(&lo, &hi, 0, INFINITY), thin = 0;
+  char thin_names[200] = "";
+  size_t tk = 0;
+  if (sorted) {
+    memcpy(sorted, m->q, (size_t)m->n * sizeof *sorted);
+    qsort(sorted, (size_t)m->n, sizeof *sorted, cmp_q);
+  }
+  for (int j = 0; j < rs->nquant; j++) {
+    if (ur_quantile_thin(m->n, rs->quant[j]) && tk < sizeof thin_names) {
+      tk += (size_t)snprintf(thin_names + tk, sizeof thin_names - tk, "%s%s", thin ? ", " : "",
+                             qname[j]);
+      thin++;
+    }
+  }
+  ura_table_note(t,
+                 "tails: the columns after hi95 are quantiles of Q over the samples (the spread of "
+                 "Q itself, not of its mean; linear between order statistics; 'set "
+                 "mc_quantiles' chooses them)");
+  if (clip) {
+    ura_table_note(t,
+                   "truncated: the interval of the mean reached below 0 (%.4g); lo95 is held at 0, "
+                   "Q's physical bound",
+                   m->st.lo95);
+  }
+  if (m->n < 30) {
+    ura_table_note(t,
+                   "few samples: n = %d; the interval of the mean (Student's t) assumes a nearly "
+                   "normal mean, which so few samples of a skewed Q do not show",
+                   m->n);
+  }
+  if (thin) {
+    ura_table_note(t,
+                   "thin tails: %s rest%s on fewer than %d samples beyond them (n min(p, 1-p) < "
+                   "%d); more samples resolve them",
+                   thin_names, thin == 1 ? "s" : "", urQ_TAILMIN, urQ_TAILMIN);
+  }
   ura_table_note(t, "%s", m->note[3]);
   ura_table_cell(t, "%d", m->n);
   ura_table_cell(t, "%.6g", m->st.mean);
   ura_table_cell(t, "%.6g", m->st.sd);
-  ura_table_cell(t, "%.6g", m->st.lo95);
-  ura_table_cell(t, "%.6g", m->st.hi95);
+  ura_table_cell(t, "%.6g", lo);
+  ura_table_cell(t, "%.6g", hi);
+  for (int j = 0; j < rs->nquant; j++) {
+    ura_table_cell(t, "%.6g", sorted ? ur_quantile_sorted(sorted, m->n, rs->quant[j]) : NAN);
+  }
+  free(sorted);
   ura_table_print(c, t);
 }
 
@@ -689,7 +861,9 @@ static int mc_samples(uraCtx* c) {
 
 /* ---- for sora mc and the plots ---- */
 
-static void figure(const double* ca, const double* ref, int n, uraSoraFig* f, double* work) {
+/* a figure from paired samples; the intervals truncated at 0 (areas and their ratio are not
+   negative): 1 when one was */
+static int figure(const double* ca, const double* ref, int n, uraSoraFig* f, double* work) {
   urMcStats s;
   ur_mc_stats(ca, n, work, &s);
   f->ca = s.mean;
@@ -697,6 +871,9 @@ static void figure(const double* ca, const double* ref, int n, uraSoraFig* f, do
   f->hi = s.hi95;
   if (ur_mc_ratio(ref, ca, n, &f->red, &f->red_lo, &f->red_hi))
     f->red = f->red_lo = f->red_hi = NAN;
+  int clip = ur_interval_clip(&f->lo, &f->hi, 0, INFINITY);
+  if (!isnan(f->red)) clip |= ur_interval_clip(&f->red_lo, &f->red_hi, 0, INFINITY);
+  return clip != 0;
 }
 
 int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t n) {
@@ -712,17 +889,20 @@ int ura_mc_sora(uraCtx* c, uraSoraFig fig[4], int* mitigated, char* note, size_t
   }
   double* work = malloc((size_t)m->n * sizeof *work);
   if (!work) return ura_fail(c, "sora mc: out of memory");
-  figure(m->q_c, m->q_c, m->n, &fig[0], work);
-  figure(m->ca_c, m->ca_c, m->n, &fig[1], work);
-  figure(m->q, m->q_c, m->n, &fig[2], work);
-  figure(m->ca, m->ca_c, m->n, &fig[3], work);
+  int clip = figure(m->q_c, m->q_c, m->n, &fig[0], work);
+  clip |= figure(m->ca_c, m->ca_c, m->n, &fig[1], work);
+  clip |= figure(m->q, m->q_c, m->n, &fig[2], work);
+  clip |= figure(m->ca, m->ca_c, m->n, &fig[3], work);
   free(work);
   *mitigated = m->dep.chute;
-  snprintf(note, n,
-           "from the last montecarlo: %d samples (seed %.0f); ca is the mean, lo95..hi95 "
-           "its 95 %% confidence interval; reduction the ratio of the paired means with its "
-           "interval (delta method); the iGRC of the mean",
-           m->n, m->seed);
+  snprintf(
+      note, n,
+      "from the last montecarlo: %d samples (seed %.0f); ca is the mean, lo95..hi95 "
+      "its 95 %% confidence interval; reduction the ratio of the paired means with its "
+      "interval (delta method); the iGRC of the mean%s%s",
+      m->n, m->seed,
+      clip ? "; truncated: an interval reached below 0 and is held at 0, the physical bound" : "",
+      m->n < 30 ? "; few samples: the intervals assume a nearly normal mean" : "");
   return 0;
 }
 

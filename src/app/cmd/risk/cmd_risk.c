@@ -119,6 +119,11 @@ int ura_cmd_risk(uraCtx* c, int argc, char** argv) {
   ura_table_cell(t, "%.6g", wsum);
   ura_table_cell(t, "%.6f", b.mixed);
   ura_table_print(c, t);
+  const char* lab[2] = {c->st.casename, "none"};
+  double q[2] = {b.mixed, b.q_none};
+  ura_eq11_table(c, b.dep.chute ? 2 : 1, lab, q, q, q,
+                 "Q: the mixed row (and branch none, the unmitigated drone); deterministic "
+                 "(lo95 = hi95: 'sora mc' after montecarlo gives intervals)");
   return 0;
 }
 
@@ -136,10 +141,11 @@ static void flag_row(char* list, size_t n, const char* casename, const char* mod
 }
 
 static void sora_row(uraCtx* c, uraTable* t, const char* casename, const char* model,
-                     const uraSoraFig* f, soraFlags* fl) {
+                     const uraSoraFig* f, soraFlags* fl, uraSora25* s25) {
   double raw1;
   int g, gt;
   int ok = ura_risk_igrc(&c->st, f->ca, &raw1, &g, &gt) == 0;
+  int g_formula = g; /* igrc_quant clamps it into the Table 2 column itself, and counts it */
   /* an area and a ratio of areas are >= 0: a t interval of few skewed samples may reach below */
   double lo = f->lo, red_lo = f->red_lo;
   if (lo < 0 || red_lo < 0) flag_row(fl->trunc, sizeof fl->trunc, casename, model);
@@ -165,6 +171,23 @@ static void sora_row(uraCtx* c, uraTable* t, const char* casename, const char* m
   } else {
     for (int k = 0; k < 3; k++) ura_table_cell(t, "none");
   }
+  ura_sora25_cells(t, s25, g_formula, ok, f->ca);
+}
+
+/* the unmitigated drone's impact speed (Table 2's stand-in for the maximum speed) */
+static int unmitigated_speed(uraCtx* c, double* speed) {
+  urDeploy dep;
+  int bag[urMAXBAGS];
+  double ca, angle;
+  uraState* ns = malloc(sizeof *ns);
+  if (!ns) return ura_fail(c, "sora: out of memory");
+  int rc = ura_risk_devices(c, &c->st, &dep, bag);
+  if (rc == 0) {
+    ura_risk_branch_state(&c->st, 0, &dep, bag, ns);
+    rc = ura_risk_annexf(c, ns, &ca, speed, &angle);
+  }
+  free(ns);
+  return rc;
 }
 
 /* notes for what sora_row changed, and for a montecarlo of too few samples */
@@ -205,9 +228,9 @@ static uraSoraFig fixed(double ca, double red) {
 }
 
 int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
-  static const char* const cols[] = {"case",     "model",     "ca",        "lo95",
-                                     "hi95",     "reduction", "red_lo95",  "red_hi95",
-                                     "igrc_raw", "igrc",      "igrc_table"};
+  static const char* const cols[] = {"case",       "model",       "ca",        "lo95",     "hi95",
+                                     "reduction",  "red_lo95",    "red_hi95",  "igrc_raw", "igrc",
+                                     "igrc_table", "igrc_sora25", "igrc_quant"};
   if (argc == 2 && strcmp(argv[1], "mc")) {
     return ura_fail(c, "sora: unknown '%s'; accepted: sora, sora mc", argv[1]);
   }
@@ -215,8 +238,10 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
   int mitigated;
   char note[600];
   branches b;
+  double unmit_speed = 0;
   if (argc == 2) {
     if (ura_mc_sora(c, fig, &mitigated, note, sizeof note)) return -1;
+    if (unmitigated_speed(c, &unmit_speed)) return -1;
   } else {
     if (run_branches(c, "sora", &b)) return -1;
     double pc = ur_deploy_chute(&b.dep), ca_mix = pc * b.ca[1] + (1 - pc) * b.ca[0];
@@ -225,6 +250,7 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
     fig[2] = fixed(b.mixed, b.q_none / b.mixed);
     fig[3] = fixed(ca_mix, b.ca[0] / ca_mix);
     mitigated = b.dep.chute;
+    unmit_speed = b.speed[0];
     snprintf(note, sizeof note,
              "deterministic: at the live wind %g m/s and face %g deg (lo95 = "
              "hi95; 'sora mc' gives the last montecarlo's intervals)",
@@ -232,13 +258,15 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
   }
 
   const uraRiskSet* r = &c->st.risk;
-  uraTable* t = ura_table_new(11, cols);
+  uraSora25 s25;
+  ura_sora25_inputs(c, unmit_speed, &s25);
+  uraTable* t = ura_table_new(13, cols);
   ura_table_note(t,
                  "SORA 2.5 at %g ppl/km^2, TLOS %g /h, compensation %g: raw = 1 - "
                  "log10(TLOS / (density 1e-6 CA)) - compensation; igrc_raw = raw to 0.1 (ties to "
                  "even), igrc = its ceiling (casex AnnexFParms.iGRC), igrc_table = igrc_raw - 0.1 "
                  "to the nearest (SORA 2.5 Table 2's convention)",
-                 r->pop_density, r->tlos, r->igrc_comp);
+                 ura_risk_density_max(r), r->tlos, r->igrc_comp);
   ura_table_note(t,
                  "q: Q of the grids (expected fatalities per fall = density x Q); annex_f: the "
                  "Annex F critical area of a %g kg, %g m drone at the impact speed and angle (mu "
@@ -251,11 +279,11 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
   if (argc == 1) deploy_notes(c, t, &b);
   ura_table_note(t, "%s", note);
   soraFlags fl = {"", "", ""};
-  sora_row(c, t, "C", "q", &fig[0], &fl);
-  sora_row(c, t, "C", "annex_f", &fig[1], &fl);
+  sora_row(c, t, "C", "q", &fig[0], &fl, &s25);
+  sora_row(c, t, "C", "annex_f", &fig[1], &fl, &s25);
   if (mitigated) {
-    sora_row(c, t, c->st.casename, "q", &fig[2], &fl);
-    sora_row(c, t, c->st.casename, "annex_f", &fig[3], &fl);
+    sora_row(c, t, c->st.casename, "q", &fig[2], &fl, &s25);
+    sora_row(c, t, c->st.casename, "annex_f", &fig[3], &fl, &s25);
   }
   int nsamples = 0;
   if (argc == 2) {
@@ -266,6 +294,17 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
     ura_mc_data(c, &q, &nsamples, &st, &cn, &seed);
   }
   sora_flag_notes(t, &fl, nsamples);
+  ura_sora25_notes(t, &s25);
   ura_table_print(c, t);
+  if (mitigated && ura_sora25_m2_table(c, &s25, fig, c->st.casename, argc == 2)) return -1;
+  const char* lab[2] = {c->st.casename, "C"};
+  double q[2] = {fig[2].ca, fig[0].ca}, lo[2] = {fig[2].lo, fig[0].lo},
+         hi[2] = {fig[2].hi, fig[0].hi};
+  if (!mitigated) q[0] = q[1], lo[0] = lo[1], hi[0] = hi[1];
+  ura_eq11_table(c, mitigated ? 2 : 1, lab, q, lo, hi,
+                 argc == 2 ? "Q: the last montecarlo's mean with its 95 % interval of the mean "
+                             "(the design's drawn deployment; C without any device)"
+                           : "Q: the deterministic grids (the design's deployment mixture; C "
+                             "without any device); lo95 = hi95");
   return 0;
 }

@@ -99,6 +99,6 @@ int ura_risk_annexf(uraCtx* c, const uraState* ns, double* ca, double* speed, do
 
 int ura_risk_igrc(const uraState* st, double ca, double* raw1, int* igrc, int* table) {
   double raw;
-  return ur_igrc(st->risk.pop_density, ca, st->risk.tlos, st->risk.igrc_comp, &raw, raw1, igrc,
-                 table);
+  return ur_igrc(ura_risk_density_max(&st->risk), ca, st->risk.tlos, st->risk.igrc_comp, &raw, raw1,
+                 igrc, table);
 }

@@ -1,0 +1,606 @@
+/* report.c: report FILE.html, the study as one self-contained HTML file a reviewer reads top to
+ * bottom: the question, the answer (SORA 2.5 iGRC, M2 evidence, risk per flight hour, tails,
+ * convergence, from the last results of the session), the evidence (every kept result with its
+ * command, notes, table, settings and figures), the warnings, the assumptions, the model's
+ * validity (the paper's Table 17 beside this session's grids, the convergence checks, the physics
+ * the test suite proves, the known limits) and appendices (inputs, the model texts in full with
+ * their hashes, sources). Built as a libxml2 HTML tree and written by its serializer, so every
+ * text is escaped by the library; figures are data: images (report_fig.c); no script, no link
+ * outside the file; print styles for a clean PDF. */
+#include <libxml/HTMLtree.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/utsname.h>
+#include <time.h>
+
+#include "report.h"
+
+#define X(s) ((const xmlChar*)(s))
+
+static const char* const css =
+    "body{font-family:Helvetica,Arial,sans-serif;font-size:11pt;line-height:1.4;max-width:60em;"
+    "margin:1.5em auto;padding:0 1em;color:#111}"
+    "h1{font-size:18pt;border-bottom:2px solid #333}h2{font-size:14pt;margin-top:1.6em;"
+    "border-bottom:1px solid #999}h3{font-size:12pt;margin-top:1.2em}"
+    "table{border-collapse:collapse;margin:.5em 0;font-size:9pt}"
+    "th,td{border:1px solid #bbb;padding:2px 5px;text-align:right}th{background:#eee}"
+    "td.l,th.l{text-align:left}ul.notes{font-size:9pt;color:#333}li.warn{color:#a00}"
+    "code,pre{font-family:Menlo,Consolas,monospace;font-size:8.5pt}"
+    "pre{background:#f6f6f6;padding:.5em;white-space:pre-wrap;word-break:break-all}"
+    "figure{margin:1em 0;page-break-inside:avoid}figure img{max-width:100%;height:auto}"
+    "figcaption{font-size:9pt;color:#333}.answer{background:#f3f7ff;border:1px solid #9ab;"
+    "padding:.5em 1em}.cells td{padding:0 2px;font-size:7pt;min-width:1.6em}"
+    ".meta td{text-align:left}.warnbox{background:#fff3f3;border:1px solid #d99;padding:.3em 1em}"
+    "@media print{body{max-width:none;margin:0;font-size:10pt}h2{page-break-after:avoid}"
+    "h3{page-break-after:avoid}table,figure,pre{page-break-inside:avoid}"
+    "section{page-break-before:auto}}";
+
+/* ---- tree helpers: every text goes through libxml2 ---- */
+
+static xmlNodePtr el(xmlNodePtr parent, const char* tag, const char* text) {
+  return xmlNewTextChild(parent, NULL, X(tag), text ? X(text) : NULL);
+}
+
+static xmlNodePtr elf(xmlNodePtr parent, const char* tag, const char* fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static xmlNodePtr elf(xmlNodePtr parent, const char* tag, const char* fmt, ...) {
+  char buf[4000];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  return el(parent, tag, buf);
+}
+
+static void attr(xmlNodePtr n, const char* name, const char* value) {
+  xmlNewProp(n, X(name), X(value));
+}
+
+static void attrf(xmlNodePtr n, const char* name, const char* fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static void attrf(xmlNodePtr n, const char* name, const char* fmt, ...) {
+  char buf[200];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  attr(n, name, buf);
+}
+
+/* a section with its id and heading */
+static xmlNodePtr section(xmlNodePtr body, const char* id, const char* title) {
+  xmlNodePtr s = el(body, "section", NULL);
+  attr(s, "id", id);
+  el(s, "h2", title);
+  return s;
+}
+
+/* a link inside the file */
+static void anchor(xmlNodePtr parent, const char* href, const char* text) {
+  xmlNodePtr a = el(parent, "a", text);
+  attr(a, "href", href);
+}
+
+/* ---- reading the kept tables ---- */
+
+static int colix(const uraRepTable* t, const char* name) {
+  for (int j = 0; j < t->ncol; j++) {
+    if (!strcmp(t->names[j], name)) return j;
+  }
+  return -1;
+}
+
+static const char* cell(const uraRepTable* t, int row, const char* name) {
+  int j = colix(t, name);
+  return j >= 0 && row >= 0 && row < t->nrow ? t->cells[row * t->ncol + j] : NULL;
+}
+
+/* the row whose column a is va (and b is vb when b) */
+static int findrow(const uraRepTable* t, const char* a, const char* va, const char* b,
+                   const char* vb) {
+  int ja = colix(t, a), jb = b ? colix(t, b) : -1;
+  if (ja < 0 || (b && jb < 0)) return -1;
+  for (int r = 0; r < t->nrow; r++) {
+    if (strcmp(t->cells[r * t->ncol + ja], va)) continue;
+    if (b && strcmp(t->cells[r * t->ncol + jb], vb)) continue;
+    return r;
+  }
+  return -1;
+}
+
+/* the last kept table of a command whose first column is first (and holding column has) */
+static int last_table(const uraReport* r, const char* name, const char* first, const char* has) {
+  for (int i = r->nt - 1; i >= 0; i--) {
+    const uraRepTable* t = &r->t[i];
+    if (strcmp(t->name, name) || t->failed || !t->ncol || strcmp(t->names[0], first)) continue;
+    if (has && colix(t, has) < 0) continue;
+    return i;
+  }
+  return -1;
+}
+
+/* a kept table after index i from the same command line, whose first column is first */
+static int sibling(const uraReport* r, int i, const char* first) {
+  for (int k = i + 1; k < r->nt && !strcmp(r->t[k].cmd, r->t[i].cmd); k++) {
+    if (!strcmp(r->t[k].names[0], first)) return k;
+  }
+  return -1;
+}
+
+/* ---- pieces ---- */
+
+static void data_table(xmlNodePtr parent, const uraRepTable* t, int maxrow) {
+  xmlNodePtr tb = el(parent, "table", NULL);
+  xmlNodePtr tr = el(tb, "tr", NULL);
+  for (int j = 0; j < t->ncol; j++) el(tr, "th", t->names[j]);
+  int n = t->nrow < maxrow ? t->nrow : maxrow;
+  for (int r = 0; r < n; r++) {
+    tr = el(tb, "tr", NULL);
+    for (int j = 0; j < t->ncol; j++) {
+      xmlNodePtr td = el(tr, "td", t->cells[r * t->ncol + j]);
+      if (j == 0) attr(td, "class", "l");
+    }
+  }
+  if (t->nrow > n) {
+    elf(parent, "p", "(%d more rows not shown; the command prints them all)", t->nrow - n);
+  }
+}
+
+/* the paper's coloured table of P per cell (percent, the viewer's bands) */
+static void cell_table(xmlNodePtr parent, const uraRepGrid* rg) {
+  const urGrid* g = &rg->g;
+  xmlNodePtr tb = el(parent, "table", NULL);
+  attr(tb, "class", "cells");
+  xmlNodePtr tr = el(tb, "tr", NULL);
+  el(tr, "th", "dpar \\ dperp");
+  for (int j = 0; j < g->ncol; j++) elf(tr, "th", "%.3g", g->perp_min + j * g->step);
+  for (int i = 0; i < g->nrow; i++) {
+    tr = el(tb, "tr", NULL);
+    elf(tr, "th", "%.3g", g->par_max - i * g->step);
+    for (int j = 0; j < g->ncol; j++) {
+      const urCell* c = &g->cell[(size_t)i * g->ncol + j];
+      int fin = rg->diff || c->status == urCELL_DONE || c->status == urCELL_NOCONTACT;
+      double p = 100 * c->p;
+      xmlNodePtr td = fin ? elf(tr, "td", "%.0f", p) : el(tr, "td", "?");
+      const char* bg;
+      if (rg->diff)
+        bg = p > 0.5 ? "#f4a582" : p < -0.5 ? "#92c5de" : "#f7f7f7";
+      else
+        bg = !fin                  ? "#cccccc"
+             : p >= uraBAND_SEVERE ? "#d7191c"
+             : p >= uraBAND_HIGH   ? "#ff9000"
+             : p >= uraBAND_MED    ? "#ffe000"
+             : p > 0               ? "#fff3b0"
+                                   : "#ffffff";
+      attrf(td, "style", "background:%s", bg);
+    }
+  }
+}
+
+static void figure(uraCtx* c, xmlNodePtr parent, const char* uri, const char* caption,
+                   const char* id) {
+  xmlNodePtr f = el(parent, "figure", NULL);
+  attr(f, "id", id);
+  if (uri) {
+    xmlNodePtr img = el(f, "img", NULL);
+    attr(img, "src", uri);
+    attr(img, "alt", caption);
+  } else {
+    elf(f, "p", "figure not drawn: %s", c->err);
+  }
+  el(f, "figcaption", caption);
+}
+
+/* ---- the sections ---- */
+
+static void meta(uraCtx* c, xmlNodePtr body) {
+  struct utsname u;
+  char when[64], machine[400] = "unknown";
+  time_t now = time(NULL);
+  strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S %Z", localtime(&now));
+  if (uname(&u) == 0) {
+    snprintf(machine, sizeof machine, "%s (%s %s, %s)", u.nodename, u.sysname, u.release,
+             u.machine);
+  }
+  xmlNodePtr t = el(body, "table", NULL);
+  attr(t, "class", "meta");
+  const char* rows[][2] = {
+      {"program", ura_version()}, {"date", when}, {"machine", machine}, {NULL, NULL}};
+  for (int i = 0; rows[i][0]; i++) {
+    xmlNodePtr tr = el(t, "tr", NULL);
+    el(tr, "th", rows[i][0]);
+    xmlNodePtr td = el(tr, "td", rows[i][1]);
+    attr(td, "class", "l");
+  }
+  xmlNodePtr tr = el(t, "tr", NULL);
+  el(tr, "th", "threads");
+  elf(tr, "td", "%.0f (results do not depend on it)", c->st.threads);
+  tr = el(t, "tr", NULL);
+  el(tr, "th", "model");
+  char buf[1200];
+  size_t k = 0;
+  buf[0] = 0;
+  for (int i = 0; i < c->npart && k < sizeof buf; i++) {
+    unsigned long long h = ura_fnv(uraFNV0, c->part[i].text, strlen(c->part[i].text));
+    k += (size_t)snprintf(buf + k, sizeof buf - k, "%s%s %016llx", i ? ", " : "", c->part[i].name,
+                          h);
+  }
+  xmlNodePtr td = elf(tr, "td", "parts (FNV-1a 64 of each text, in full in Appendix B): %s", buf);
+  attr(td, "class", "l");
+}
+
+static void question(uraCtx* c, xmlNodePtr body) {
+  xmlNodePtr s = section(body, "question", "1. Question");
+  const uraRiskSet* r = &c->st.risk;
+  char bands[400];
+  size_t k = 0;
+  bands[0] = 0;
+  for (int i = 0; i < r->npop && k < sizeof bands; i++) {
+    k += (size_t)snprintf(bands + k, sizeof bands - k, "%s%g", i ? ", " : "", r->pop_density[i]);
+  }
+  elf(s, "p",
+      "Does the drone of case %s (%g kg, %g m x %g m), with the mitigations it carries "
+      "(parachute deployment probability %g, each airbag %g), keep the expected number of "
+      "ground fatalities per flight hour at or below the target level of safety %g over the "
+      "population densities %s ppl/km^2, and which SORA 2.5 intrinsic ground-risk class and M2 "
+      "credit (effects of ground impact reduced) does the simulation support?",
+      c->st.casename, c->st.descent.mass, c->st.para.width, c->st.para.length, r->p_chute, r->p_bag,
+      r->tlos, bands);
+  el(s, "p",
+     "The answer below is read from the last results of the session; every number it quotes is "
+     "in the evidence with its command, settings and notes.");
+}
+
+static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
+  xmlNodePtr s = section(body, "answer", "2. Answer");
+  xmlNodePtr box = el(s, "div", NULL);
+  attr(box, "class", "answer");
+  xmlNodePtr ul = el(box, "ul", NULL);
+  int so = last_table(r, "sora", "case", "igrc_sora25");
+  if (so < 0) {
+    el(ul, "li",
+       "No SORA answer: the session ran no sora. Run sora (or montecarlo N and sora mc) before "
+       "report.");
+  } else {
+    const uraRepTable* t = &r->t[so];
+    const char* g = cell(t, 0, "igrc_sora25");
+    elf(ul, "li",
+        "Intrinsic ground-risk class for the submission (SORA 2.5 Table 2, by characteristic "
+        "dimension and maximum speed at the highest density): %s%s. Command: %s.",
+        g ? g : "?", g && !strcmp(g, "grey") ? " (not part of SORA: certified category)" : "",
+        t->cmd);
+    int rq = t->nrow >= 3 ? 2 : 0;
+    elf(ul, "li",
+        "Quantitative iGRC from Q (Annex F's formula, clamped into Table 2): %s for case %s, %s "
+        "unmitigated (Q %s and %s m^2).",
+        cell(t, rq, "igrc_quant") ? cell(t, rq, "igrc_quant") : "?", cell(t, rq, "case"),
+        cell(t, 0, "igrc_quant") ? cell(t, 0, "igrc_quant") : "?", cell(t, rq, "ca"),
+        cell(t, 0, "ca"));
+    int m2 = sibling(r, so, "quantity");
+    if (m2 >= 0) {
+      const uraRepTable* m = &r->t[m2];
+      int row = findrow(m, "quantity", "q", NULL, NULL);
+      elf(ul, "li",
+          "M2 evidence: Q is reduced by a factor %s (95 %% interval %s to %s; %s orders of "
+          "magnitude), which meets integrity criterion #1 at level %s (lower bound: %s), GRC "
+          "credit %s, final GRC %s (M1 not applied). A simulation cannot show deployment "
+          "reliability, automatic activation or post-impact hazards: see the assumptions.",
+          cell(m, row, "factor"), cell(m, row, "lo95"), cell(m, row, "hi95"),
+          cell(m, row, "orders"), cell(m, row, "m2_integrity"), cell(m, row, "m2_lo95"),
+          cell(m, row, "grc_credit"), cell(m, row, "final_grc"));
+    } else {
+      el(ul, "li", "M2: the drone carries no parachute; nothing to credit.");
+    }
+    int e = sibling(r, so, "case");
+    if (e >= 0 && colix(&r->t[e], "fatalities_per_fh") >= 0) {
+      const uraRepTable* q = &r->t[e];
+      char buf[1500];
+      size_t k = 0;
+      for (int i = 0; i < q->nrow && k < sizeof buf; i++) {
+        k += (size_t)snprintf(buf + k, sizeof buf - k, "%s%s at %s ppl/km^2: %s /h (%s)",
+                              i ? "; " : "", cell(q, i, "case"), cell(q, i, "density"),
+                              cell(q, i, "fatalities_per_fh"), cell(q, i, "meets"));
+      }
+      elf(ul, "li", "Risk per flight hour, eq. (1.1) of the paper, against the target %s /h: %s.",
+          cell(q, 0, "tlos"), buf);
+    }
+  }
+  int mc = last_table(r, "montecarlo", "n", "mean");
+  if (mc >= 0) {
+    const uraRepTable* t = &r->t[mc];
+    char buf[600];
+    size_t k = 0;
+    buf[0] = 0;
+    for (int j = 5; j < t->ncol && k < sizeof buf; j++) {
+      k += (size_t)snprintf(buf + k, sizeof buf - k, "%s%s %s", j > 5 ? ", " : "", t->names[j],
+                            t->cells[j]);
+    }
+    elf(ul, "li",
+        "Uncertainty (%s): mean Q %s m^2 over %s samples, interval of the mean %s to %s; the "
+        "spread of Q itself: %s m^2.",
+        t->cmd, cell(t, 0, "mean"), cell(t, 0, "n"), cell(t, 0, "lo95"), cell(t, 0, "hi95"),
+        buf[0] ? buf : "no quantiles");
+  }
+  int cv = last_table(r, "converge", "check", NULL);
+  if (cv >= 0) {
+    const uraRepTable* t = &r->t[cv];
+    int q = findrow(t, "check", "step", "what", "q");
+    int d = findrow(t, "check", "dt", "what", "p_centre");
+    elf(ul, "li",
+        "Convergence: halving the grid step changes Q by %s (relative); halving the time step "
+        "changes P at the centre by %s (relative).",
+        q >= 0 ? cell(t, q, "rel_change") : "?", d >= 0 ? cell(t, d, "rel_change") : "?");
+  } else {
+    el(ul, "li", "Convergence: not run in this session (converge).");
+  }
+  if (r->nwarn) {
+    xmlNodePtr li = elf(ul, "li", "%d warning%s: ", r->nwarn, r->nwarn == 1 ? "" : "s");
+    anchor(li, "#warnings", "listed in 3.2");
+  }
+}
+
+static void evidence(uraCtx* c, xmlNodePtr body, const uraReport* r) {
+  xmlNodePtr s = section(body, "evidence", "3. Evidence");
+  el(s, "h3", "3.1 Results, in the order computed");
+  if (!r->nt) el(s, "p", "The session computed no result.");
+  int nfig = 0;
+  char id[64], cap[600];
+  for (int i = 0; i < r->nt; i++) {
+    const uraRepTable* t = &r->t[i];
+    xmlNodePtr d = el(s, "div", NULL);
+    snprintf(id, sizeof id, "result-%d", i + 1);
+    attr(d, "id", id);
+    xmlNodePtr h = elf(d, "h4", "R%d: ", i + 1);
+    el(h, "code", t->cmd);
+    if (t->failed) el(d, "p", "The command failed after printing this table (see warnings).");
+    xmlNodePtr p = el(d, "p", "Inputs: ");
+    snprintf(id, sizeof id, "#settings-%d", t->settings + 1);
+    snprintf(cap, sizeof cap, "settings S%d (Appendix A)", t->settings + 1);
+    anchor(p, id, cap);
+    if (t->nnote) {
+      xmlNodePtr ul = el(d, "ul", NULL);
+      attr(ul, "class", "notes");
+      for (int k = 0; k < t->nnote; k++) {
+        xmlNodePtr li = el(ul, "li", t->notes[k]);
+        if (ura_report_alarm(t->notes[k])) attr(li, "class", "warn");
+      }
+    }
+    data_table(d, t, 200);
+    if (t->grid >= 0) {
+      const uraRepGrid* g = &r->g[t->grid];
+      char* uri = ura_report_svg_grid(c, g);
+      snprintf(id, sizeof id, "figure-%d", ++nfig);
+      snprintf(cap, sizeof cap, "Figure %d: %s of R%d as a heat map (%s).", nfig,
+               g->diff ? "the difference grid" : "the grid", i + 1, g->title);
+      figure(c, d, uri, cap, id);
+      free(uri);
+      if ((long)g->g.nrow * g->g.ncol <= 1600) {
+        elf(d, "p",
+            "%s of R%d cell by cell, P in %% (the paper's coloured tables; rows along the course, "
+            "columns across; bands %g, %g, %g %%):",
+            g->diff ? "The difference" : "The grid", i + 1, uraBAND_MED, uraBAND_HIGH,
+            uraBAND_SEVERE);
+        cell_table(d, g);
+      } else {
+        elf(d, "p",
+            "The grid has %d cells: only its heat map is shown ('export grid' writes them).",
+            g->g.nrow * g->g.ncol);
+      }
+    }
+  }
+  if (r->dropped) {
+    elf(s, "p", "%d grids were not kept for figures (at most %d, %ld cells in all).", r->dropped,
+        uraREPMAXGRIDS, uraREPMAXCELLS);
+  }
+  if (c->nsweep || c->npsweep) {
+    char* uri = ura_report_svg_plot(c, "sweep");
+    snprintf(id, sizeof id, "figure-%d", ++nfig);
+    snprintf(cap, sizeof cap, "Figure %d: the kept sweeps, Q against the swept value.", nfig);
+    figure(c, s, uri, cap, id);
+    free(uri);
+  }
+  if (c->mc) {
+    char* uri = ura_report_svg_plot(c, "montecarlo");
+    snprintf(id, sizeof id, "figure-%d", ++nfig);
+    snprintf(cap, sizeof cap, "Figure %d: the last montecarlo's distribution of Q.", nfig);
+    figure(c, s, uri, cap, id);
+    free(uri);
+    uri = ura_report_svg_plot(c, "tornado");
+    snprintf(id, sizeof id, "figure-%d", ++nfig);
+    snprintf(cap, sizeof cap, "Figure %d: the last montecarlo's first-order variance shares.",
+             nfig);
+    figure(c, s, uri, cap, id);
+    free(uri);
+  }
+  xmlNodePtr w = el(s, "h3", "3.2 Warnings");
+  attr(w, "id", "warnings");
+  if (!r->nwarn) {
+    el(s, "p", "The session gave no warning in the kept results.");
+  } else {
+    xmlNodePtr box = el(s, "div", NULL);
+    attr(box, "class", "warnbox");
+    xmlNodePtr ul = el(box, "ul", NULL);
+    for (int i = 0; i < r->nwarn; i++) el(ul, "li", r->warn[i]);
+  }
+}
+
+static void assumptions(uraCtx* c, xmlNodePtr body) {
+  xmlNodePtr s = section(body, "assumptions", "4. Assumptions");
+  const uraRiskSet* r = &c->st.risk;
+  xmlNodePtr ul = el(s, "ul", NULL);
+  elf(ul, "li",
+      "Ground-crash rate lambda_system = %g per flight hour and P_shelter = %g are inputs of eq. "
+      "(1.1), not results; the target is %g fatalities per flight hour (SORA 2.5 TLOS).",
+      r->lambda, r->p_shelter, r->tlos);
+  elf(ul, "li",
+      "Deployment: the parachute deploys with probability %g above %g m, each airbag with %g; "
+      "without the parachute no airbag is credited (the drone falls as case C).",
+      r->p_chute, r->h_chute_min, r->p_bag);
+  elf(ul, "li",
+      "SORA 2.5 Table 2 column: characteristic dimension %s, maximum speed %s; density bands have "
+      "strict upper edges (5, 50, 500, 5 000 go one band up; 50 000 is taken as '> 50 000').",
+      r->ua_dim_set ? "as set (ua_dimension)" : "the larger of width and length",
+      r->ua_speed_set ? "as set (ua_max_speed)"
+                      : "the unmitigated impact speed standing in for the designer's maximum "
+                        "commanded airspeed");
+  elf(ul, "li",
+      "M2 baseline: %s. Only integrity criterion #1's reduction is assessed; M1 is not applied; "
+      "the final GRC is floored at the column's controlled-ground-area value.",
+      r->m2_baseline ? "Annex B Table B.8's critical area of the column (warned: double counting "
+                       "with Step #2)"
+                     : "the same drone without parachute and airbag (case C)");
+  el(ul, "li",
+     "What the simulation cannot show: that the devices deploy (activation tests, reliability "
+     "evidence), automatic activation (required for high), that a failure of the mitigation does "
+     "not degrade safety, immediate post-impact hazards (fire, debris), procedures and training "
+     "(M2 criteria #2 and #3), and the assurance level (medium accepts simulation whose validity "
+     "is justified: section 5; high needs an EASA design verification report).");
+  el(ul, "li",
+     "Every setting each result ran under, derived or set, is listed in Appendix A; the model "
+     "texts are in Appendix B.");
+}
+
+static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
+  xmlNodePtr s = section(body, "validity", "5. Model validity");
+  el(s, "h3", "5.1 The paper's Table 17 beside this session's grids");
+  el(s, "p",
+     "Q in m^2 at face 0; the printed values of Jiang, Blom and Rattanagraikanakorn (2025); "
+     "'this session' is the last grid or sweep of that case and wind the session computed "
+     "(none: not computed here; 'make reproduce' computes all). A at 0 m/s: the caption's 0.031 "
+     "is the half plane, the full-plane sum of the paper's Table 4 grid is 0.058.");
+  xmlNodePtr tb = el(s, "table", NULL);
+  xmlNodePtr tr = el(tb, "tr", NULL);
+  const char* hd[] = {"case", "wind (m/s)", "paper", "this session", "ratio", "step (m)"};
+  for (int j = 0; j < 6; j++) el(tr, "th", hd[j]);
+  const char* cn;
+  double wind, q;
+  for (int k = 0; ura_report_table17(k, &cn, &wind, &q) == 0; k++) {
+    const char *ours = NULL, *step = "";
+    for (int i = 0; i < r->nt; i++) {
+      const uraRepTable* t = &r->t[i];
+      if (strcmp(t->name, "grid") && strcmp(t->name, "sweep")) continue;
+      for (int row = 0; row < t->nrow; row++) {
+        const char *tc = cell(t, row, "case"), *tw = cell(t, row, "wind"),
+                   *tf = cell(t, row, "face"), *tq = cell(t, row, "q");
+        if (!tc || !tw || !tf || !tq || strcmp(tc, cn) || atof(tw) != wind || atof(tf) != 0)
+          continue;
+        ours = tq;
+        const char* st = cell(t, row, "step");
+        step = st ? st : "";
+      }
+    }
+    tr = el(tb, "tr", NULL);
+    el(tr, "td", cn);
+    elf(tr, "td", "%g", wind);
+    elf(tr, "td", "%.3f", q);
+    el(tr, "td", ours ? ours : "none");
+    if (ours)
+      elf(tr, "td", "%.2f", atof(ours) / q);
+    else
+      el(tr, "td", "");
+    el(tr, "td", step);
+  }
+  el(s, "h3", "5.2 Numerical convergence");
+  int cv = 0;
+  for (int i = 0; i < r->nt; i++) {
+    if (strcmp(r->t[i].name, "converge")) continue;
+    elf(s, "p", "R%d (%s):", i + 1, r->t[i].cmd);
+    data_table(s, &r->t[i], 50);
+    cv++;
+  }
+  if (!cv) el(s, "p", "The session ran no converge: grid and time-step convergence not shown.");
+  el(s, "h3", "5.3 Physics the test suite proves");
+  el(s, "p",
+     "Each check is a test of the source tree that can fail (make check runs them all); golden "
+     "values come from closed forms, the paper or cited data.");
+  tb = el(s, "table", NULL);
+  tr = el(tb, "tr", NULL);
+  attr(el(tr, "th", "test"), "class", "l");
+  attr(el(tr, "th", "proves"), "class", "l");
+  const char *file, *proves;
+  for (int k = 0; (file = ura_report_check(k, &proves)); k++) {
+    tr = el(tb, "tr", NULL);
+    xmlNodePtr td = el(tr, "td", NULL);
+    attr(td, "class", "l");
+    el(td, "code", file);
+    td = el(tr, "td", proves);
+    attr(td, "class", "l");
+  }
+  el(s, "h3", "5.4 Known limits");
+  xmlNodePtr ul = el(s, "ul", NULL);
+  const char* lim;
+  for (int k = 0; (lim = ura_report_limit(k)); k++) el(ul, "li", lim);
+}
+
+static void appendix(uraCtx* c, xmlNodePtr body, const uraReport* r) {
+  xmlNodePtr s = section(body, "appendix", "Appendices");
+  el(s, "h3", "A. Inputs: every setting, derived or set ('show')");
+  char id[32];
+  for (int i = 0; i < r->nset; i++) {
+    xmlNodePtr h = elf(s, "h4", "S%d", i + 1);
+    snprintf(id, sizeof id, "settings-%d", i + 1);
+    attr(h, "id", id);
+    el(s, "pre", r->settings[i]);
+  }
+  if (!r->nset) el(s, "p", "No result was kept, so no settings either.");
+  el(s, "h3", "B. Model texts");
+  for (int i = 0; i < c->npart; i++) {
+    unsigned long long h = ura_fnv(uraFNV0, c->part[i].text, strlen(c->part[i].text));
+    elf(s, "h4", "%s (%s, FNV-1a 64 %016llx)", c->part[i].name, c->part[i].origin, h);
+    el(s, "pre", c->part[i].text);
+  }
+  el(s, "h3", "C. Sources");
+  xmlNodePtr ol = el(s, "ol", NULL);
+  const char* src;
+  for (int k = 0; (src = ura_report_source(k)); k++) el(ol, "li", src);
+}
+
+int ura_cmd_report(uraCtx* c, int argc, char** argv) {
+  if (ura_dry(c, "report")) return -1;
+  uraReport empty;
+  memset(&empty, 0, sizeof empty);
+  uraReport* r = c->rep ? c->rep : &empty;
+  r->busy = 1;
+
+  htmlDocPtr doc = htmlNewDocNoDtD(NULL, NULL);
+  xmlCreateIntSubset(doc, X("html"), NULL, NULL);
+  xmlNodePtr html = xmlNewNode(NULL, X("html"));
+  xmlDocSetRootElement(doc, html);
+  attr(html, "lang", "en");
+  xmlNodePtr head = el(html, "head", NULL);
+  xmlNodePtr mc = el(head, "meta", NULL);
+  attr(mc, "charset", "utf-8");
+  elf(head, "title", "Ground-risk study report: case %s", c->st.casename);
+  el(head, "style", css);
+  xmlNodePtr body = el(html, "body", NULL);
+  elf(body, "h1", "Ground-risk study report: case %s", c->st.casename);
+  meta(c, body);
+  question(c, body);
+  answer(c, body, r);
+  evidence(c, body, r);
+  assumptions(c, body);
+  validity(c, body, r);
+  appendix(c, body, r);
+  r->busy = 0;
+
+  xmlChar* mem = NULL;
+  int size = 0;
+  htmlDocDumpMemoryFormat(doc, &mem, &size, 1);
+  xmlFreeDoc(doc);
+  if (!mem) return ura_fail(c, "report: out of memory");
+  uraAtomic a;
+  int rc = ura_atomic_open(c, &a, argv[1], "report");
+  if (rc == 0) {
+    fwrite(mem, 1, (size_t)size, a.f);
+    rc = ura_atomic_close(c, &a, 1, "report");
+  }
+  xmlFree(mem);
+  if (rc == 0 && c->msg && !c->mute) {
+    fprintf(c->msg, "report: %s written (%d results, %d figures' grids, %d warnings)\n", argv[1],
+            r->nt, r->ng, r->nwarn);
+  }
+  return rc;
+}

@@ -1,0 +1,40 @@
+# test_converge.sh: converge against the commands it stands for: Q coarse and fine equal the
+# grids at the step and at half of it, the shared cells agree exactly, P at the centre with the
+# model's dt equals 'impact 0 0', and with dt / 2 equals 'impact 0 0' after 'set dt' to half;
+# the live state (step, dt) is back afterwards; dry mode refuses. Coarse grids keep it short.
+. tests/lib.sh
+
+col() {
+  awk -F, -v k="$2" -v n="$3" '/^#/ { next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; next }
+    $1 == k { print $(c[n]); exit }' "$1"
+}
+# converge's row: conv FILE CHECK WHAT COLUMN
+conv() {
+  awk -F, -v a="$2" -v b="$3" -v n="$4" '/^#/ { next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; next }
+    $1 == a && $2 == b { print $(c[n]); exit }' "$1"
+}
+
+run -c 'set format csv; case A; set step 0.3; grid'
+Q1=$(col "$TMP/out" A q)
+run -c 'set format csv; case A; set step 0.15; grid'
+Q2=$(col "$TMP/out" A q)
+run -c 'set format csv; case A; impact 0 0'
+P1=$(col "$TMP/out" 0 p)
+run -c 'set format csv; case A; set dt 2.5e-5; impact 0 0'
+P2=$(col "$TMP/out" 0 p)
+run -c 'set format csv; case A; set step 0.3; converge; show step; show dt'
+cp "$TMP/out" "$TMP/c"
+check status [ "$RC" -eq 0 ]
+check header grep -q '^check,what,dpar,dperp,coarse,fine,change,rel_change$' "$TMP/c"
+check q_coarse cond '[ "$(printf %.4f "$(conv "$TMP/c" step q coarse)")" = "$Q1" ]'
+check q_fine cond '[ "$(printf %.4f "$(conv "$TMP/c" step q fine)")" = "$Q2" ]'
+check shared cond '[ "$(conv "$TMP/c" step shared change)" = 0 ]'
+check p_dt cond '[ "$(conv "$TMP/c" dt p_centre coarse)" = "$P1" ] &&
+  [ "$(conv "$TMP/c" dt p_centre fine)" = "$P2" ]'
+check worst_row cond '[ -n "$(conv "$TMP/c" dt p_worst fine)" ] &&
+  [ "$(conv "$TMP/c" dt p_worst dpar)" = "$(conv "$TMP/c" step p_new dpar)" ]'
+check restored cond 'grep -q "^step *0.3 m" "$TMP/c" && grep -q "^dt *5e-05 s" "$TMP/c"'
+run -c 'converge now'
+check args cond '[ "$RC" -eq 1 ] && has "$TMP/err" "converge"'
+
+finish
