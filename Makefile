@@ -38,7 +38,7 @@ CORE_LIBS = -lgsl -lgslcblas -lm
 APP_LIBS  = -lreadline -lncursesw -ltinfo
 TEST_LIBS = -lcmocka
 
-CORE_SRC  = $(sort $(wildcard src/core/*.c))
+CORE_SRC  = $(sort $(wildcard src/core/*.c) $(wildcard src/core/membrane/*.c))
 APP_SRC   = $(filter-out src/app/main.c,$(sort $(wildcard src/app/*.c)))
 TEST_SRC  = $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = $(sort $(wildcard tests/bench_*.c))
