@@ -46,6 +46,8 @@ typedef struct {
   double depth;    /* bottom panel's depth below the seam in the declared shape, m */
   double top;      /* top panel's height above the seam (0: flat top), m */
   double mount[3]; /* top centre of the bag in the carrier's body frame, m */
+  double quat[4];  /* the bag's frame in the carrier's (w, x, y, z; identity: the plan in the
+                      body's x-y plane, the bottom panel towards -z) */
   double mount_r;  /* top-panel nodes within this fraction of the plan are fixed to the
                          carrier (the rigid mount patch, a fixed joint), 0..1 */
   int mesh;        /* rings per panel: 2 + 6 mesh^2 nodes, 12 mesh^2 triangles */
@@ -130,7 +132,8 @@ int ur_mem_inflate(urMembrane* mb, char* err, size_t n);
 
 void ur_mem_free(urMembrane* mb);
 
-/* doubles in one run's state: x (3 nn), v (3 nn), force scratch (3 nn), scalars (urMEMS_N) */
+/* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
+   (3 nn), scalars (urMEMS_N) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->

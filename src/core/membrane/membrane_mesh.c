@@ -24,6 +24,7 @@ void ur_mem_spec_default(urMemSpec* s) {
   s->depth = 0.1;
   s->top = 0;
   s->mount_r = 0.35;
+  s->quat[0] = 1;
   s->mesh = 6;
   s->e1t = s->e2t = 0.40e9 * 0.33e-3;
   s->nu12 = 0.2;
@@ -68,6 +69,10 @@ int ur_mem_spec_check(const urMemSpec* s, char* err, size_t n) {
   } else if (!(s->kc_alpha > 0 && s->kc_alpha < 1 && s->zeta_c >= 0 && s->mu >= 0 &&
                s->v_eps > 0)) {
     what = "contact needs 0 < kc_alpha < 1, zeta_c >= 0, mu >= 0, v_eps > 0";
+  } else if (!(s->quat[0] * s->quat[0] + s->quat[1] * s->quat[1] + s->quat[2] * s->quat[2] +
+                 s->quat[3] * s->quat[3] >
+               0)) {
+    what = "the bag's orientation quaternion is zero";
   } else if (!(s->dt_factor > 0 && s->dt_factor <= 1)) {
     what = "dt_factor must be in (0, 1]";
   }
@@ -207,7 +212,16 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
   mb->invm = mb->mass + nn;
   mb->x0 = mb->xshape + 3 * (size_t)nn;
 
-  // nodes: declared shape (body frame) and reference pattern
+  // nodes: declared shape (body frame) and reference pattern; Q the bag's frame
+  double Q[9], qn = sqrt(s->quat[0] * s->quat[0] + s->quat[1] * s->quat[1] +
+                         s->quat[2] * s->quat[2] + s->quat[3] * s->quat[3]);
+  {
+    double w = s->quat[0] / qn, x = s->quat[1] / qn, y = s->quat[2] / qn, z = s->quat[3] / qn;
+    double q9[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
+                    2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                    2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
+    memcpy(Q, q9, sizeof(Q));
+  }
   for (int panel = 0; panel < 2; panel++) {
     for (int k = 0; k <= r; k++) {
       if (panel == 1 && k == r) {
@@ -220,9 +234,10 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
         double h = sqrt(fmax(0, 1 - rho * rho));
         double z = panel == 0 ? s->top * h : -s->depth * h;
         double* xs = mb->xshape + 3 * i;
-        xs[0] = s->mount[0] + xy[0];
-        xs[1] = s->mount[1] + xy[1];
-        xs[2] = s->mount[2] + z - s->top;
+        double loc[3] = {xy[0], xy[1], z - s->top};
+        for (int c = 0; c < 3; c++) {
+          xs[c] = s->mount[c] + Q[3 * c] * loc[0] + Q[3 * c + 1] * loc[1] + Q[3 * c + 2] * loc[2];
+        }
         double* xr = xref + 3 * i;
         xr[0] = xy[0];
         xr[1] = xy[1];
@@ -316,14 +331,14 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 9 * (size_t)mb->nn + urMEMS_N;
+  return 12 * (size_t)mb->nn + urMEMS_N;
 }
 
 
 void ur_mem_state_init(const urMembrane* mb, double* st, const double R[9], const double c[3],
                        const double vc[3], const double w[3]) {
   int nn = mb->nn;
-  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *sc = st + 9 * nn;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *sc = st + 12 * nn;
   for (int i = 0; i < nn; i++) {
     const double* p = mb->x0 + 3 * i;
     double r[3];
@@ -336,6 +351,7 @@ void ur_mem_state_init(const urMembrane* mb, double* st, const double R[9], cons
     for (int k = 0; k < 3; k++) {
       v[3 * i + k] = vc[k] + wr[k];
       f[3 * i + k] = 0;
+      f[3 * nn + 3 * i + k] = 0;
     }
   }
   sc[urMEMS_MGAS] = mb->mref;
