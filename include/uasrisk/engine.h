@@ -68,7 +68,7 @@ typedef enum {
   urSENS_JOINTVEL,  /* 1: joint velocity dof (rad/s or m/s) */
   urSENS_CONTACT,   /* 3: normal force N, penetration m, friction force N */
   urSENS_AIRBAG,    /* 4: absolute pressure Pa, gas volume m^3, normal force on
-                                      the targets N, largest principal fabric strain (Green;
+                                      the targets N, largest yarn strain (Green, warp or weft) (Green;
                                       membrane bags, else 0) */
   urSENS_BODYPOS,   /* 3: world position of a body point, m */
   urSENS_BODYVEL    /* 3: world velocity of a body point, m/s */
@@ -296,7 +296,7 @@ typedef struct {
   double ftgt[urMAXBAGTGT];  /* normal force on each target, N */
   double u[urMAXBAGTGT][3];  /* warm-start directions */
   int active;                /* 1 if some target indents the bag */
-  double strain;             /* membrane: largest principal fabric strain (Green) */
+  double strain;             /* membrane: largest yarn strain (Green, warp or weft) (Green) */
   int placed;                /* membrane: state placed on the carrier (0 after a reset) */
   int live;                  /* membrane: integrated (a target came near), else carried
                                       rigidly in its inflated state */

@@ -94,7 +94,7 @@ typedef struct {
   double lmin;       /* shortest characteristic element length, m */
   double cbound[3];  /* centre and radius of a sphere holding the inflated bag, body frame */
   double rbound;
-  double strain0;     /* largest principal fabric strain of the inflated state */
+  double strain0;     /* largest yarn strain (Green, warp or weft) of the inflated state */
   int inflate_steps;  /* relaxation steps the inflation took */
   double inflate_res; /* its final residual (largest free-node force / pressure force) */
 } urMembrane;
@@ -104,7 +104,7 @@ enum {
   urMEMS_MGAS = 0, /* gas mass, kg */
   urMEMS_P,        /* absolute pressure at the last force evaluation, Pa */
   urMEMS_V,        /* gas volume, m^3 */
-  urMEMS_STRAIN,   /* largest principal fabric strain at the last force evaluation */
+  urMEMS_STRAIN,   /* largest yarn strain (Green, warp or weft) at the last force evaluation */
   urMEMS_EFAB,     /* fabric strain energy at the last force evaluation, J */
   urMEMS_N
 };
@@ -112,7 +112,7 @@ enum {
 /* forces and diagnostics of one evaluation */
 typedef struct {
   double pressure, volume; /* absolute Pa, m^3 */
-  double strain;           /* largest principal Green strain */
+  double strain;           /* largest yarn strain (Green, warp or weft) */
   double efabric;          /* elastic strain energy of the fabric (taut law), J */
 } urMemInfo;
 

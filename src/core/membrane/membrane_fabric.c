@@ -101,9 +101,8 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
     urm_fabric_stress(s, e, S, &w);
     wsum += w * mb->area0[t];
 
-    // largest principal strain
-    double em = 0.5 * (e[0] + e[1]), eh = 0.5 * (e[0] - e[1]);
-    double e1 = em + sqrt(eh * eh + 0.25 * e[2] * e[2]);
+    // largest yarn strain (warp or weft; trellising shear is not a yarn strain)
+    double e1 = fmax(e[0], e[1]);
     if (e1 > emax) {
       emax = e1;
     }

@@ -1,6 +1,6 @@
 /* membrane_mesh.c: a bag's mesh from its declaration: two panels of the plan shape (ellipse or
- * rounded rectangle) meshed in rings (ring k of 6k nodes, radii sin(pi k / 2n) of the plan so
- * that a dome's arc is evenly divided), sewn at the last ring; the declared shape (bottom panel a
+ * rounded rectangle) meshed in rings (ring k of 6k nodes at radii sin(pi k / 2n) of the plan on
+ * a dome, evenly dividing its arc, k / n on a flat panel), sewn at the last ring; the declared shape (bottom panel a
  * half-ellipsoid of the given depth, top flat or domed), the reference metric (that shape, or
  * the flat pattern), material axes (warp along the plan's x), lumped masses from the areal
  * density, the mount patch and the stable step. Also the default fabric and gas. */
@@ -101,10 +101,11 @@ static int node_at(int n, int ntop, int panel, int k, int j) {
 }
 
 
-/* the plan point of ring k, item j: unit-plan radius rho and direction */
-static void plan_point(const urMemSpec* s, int k, int j, double* rho, double xy[2]) {
+/* the plan point of ring k, item j of a panel of height h (0: flat): unit-plan radius rho and
+   direction; a dome's rings divide its arc evenly, a flat panel's its radius */
+static void plan_point(const urMemSpec* s, double h, int k, int j, double* rho, double xy[2]) {
   int n = s->mesh;
-  *rho = k == n ? 1.0 : sin(0.5 * M_PI * k / n);
+  *rho = k == n ? 1.0 : h > 0 ? sin(0.5 * M_PI * k / n) : (double)k / n;
   double th = k == 0 ? 0 : 2 * M_PI * j / (6.0 * k);
   double c = cos(th), sn = sin(th), nrm = 1;
   if (s->plan == urMEM_RECT) {
@@ -230,7 +231,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
       for (int j = 0; j < (k ? 6 * k : 1); j++) {
         int i = node_at(r, ntop, panel, k, j);
         double rho, xy[2];
-        plan_point(s, k, j, &rho, xy);
+        plan_point(s, panel == 0 ? s->top : s->depth, k, j, &rho, xy);
         double h = sqrt(fmax(0, 1 - rho * rho));
         double z = panel == 0 ? s->top * h : -s->depth * h;
         double* xs = mb->xshape + 3 * i;
