@@ -193,7 +193,7 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
   s->nu12 = url_num(b, "nu12", s->nu12);
   s->g0t = url_num(b, "g0t", s->g0t);
   s->gtt = url_num(b, "gtt", s->gtt);
-  s->lock = url_num(b, "lock", s->lock * 180 / M_PI) * M_PI / 180;
+  s->lock = url_num(b, "lock", s->lock);
   s->re = url_num(b, "re", s->re);
   s->rhot = url_num(b, "rhot", s->rhot);
   s->damp = url_num(b, "damp", s->damp);
