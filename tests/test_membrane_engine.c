@@ -73,7 +73,7 @@ static double bag_bottom(const urModel* m) {
 static double energy(const urModel* m, const urData* d) {
   const urMembrane* mb = m->bag[0].mem;
   const double* st = d->mem + m->bag[0].madr;
-  const double* sc = st + 12 * mb->nn;
+  const double* sc = st + 18 * mb->nn;
   return ur_energy_kinetic(m, d) + ur_mem_kinetic(mb, st) +
          ur_mem_gas_energy(mb, sc[urMEMS_P], sc[urMEMS_V]) + sc[urMEMS_EFAB];
 }

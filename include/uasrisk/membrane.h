@@ -106,7 +106,12 @@ enum {
   urMEMS_V,        /* gas volume, m^3 */
   urMEMS_STRAIN,   /* largest yarn strain (Green, warp or weft) at the last force evaluation */
   urMEMS_EFAB,     /* fabric strain energy at the last force evaluation, J */
-  urMEMS_N
+  urMEMS_TFIRST,   /* time of the first-contact snapshot, s (-1: none) */
+  urMEMS_TPEAK,    /* time of the peak-pressure snapshot (in contact), s (-1: none) */
+  urMEMS_PPEAK,    /* that peak absolute pressure, Pa */
+  urMEMS_HFIRST,   /* 3: the head ellipsoid's centre at the first snapshot (world) */
+  urMEMS_HPEAK = urMEMS_HFIRST + 3, /* 3: and at the peak snapshot */
+  urMEMS_N = urMEMS_HPEAK + 3
 };
 
 /* forces and diagnostics of one evaluation */
@@ -133,7 +138,8 @@ int ur_mem_inflate(urMembrane* mb, char* err, size_t n);
 void ur_mem_free(urMembrane* mb);
 
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
-   (3 nn), scalars (urMEMS_N) */
+   (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
+   scalars (urMEMS_N, after 18 nn) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->

@@ -43,8 +43,9 @@ const uraCmd ura_cmds[] = {
      "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
      "q returns"},
     {"plot", ura_cmd_plot, 1, -1, uraC_NONE,
-     "plot pof|grid|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",
-     "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
+     "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",
+     "send curves to gnuplot: the PoF curves, the last grid as a heat map, the last impact's "
+     "membrane airbags at first contact and peak pressure, time histories of "
      "the last impact, Q of the kept sweeps, the last montecarlo's Q distribution or its "
      "variance shares (set terminal/output to write files)"},
     {"impact", ura_cmd_impact, 2, 5, uraC_NONE, "impact DPAR DPERP|aim head UP SIDE",

@@ -61,6 +61,10 @@ int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* n
 int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names, double t1,
                        double t2);
 
+/* the membrane airbags of the last impact at first contact and at peak pressure, with the head
+   (plot_bag.c) */
+int ura_plot_bag(uraCtx* c);
+
 /* Q of the kept sweeps (c->sweep) against wind or face, one curve per sweep; kind "wind" or
    "face" for one panel, NULL for every kind kept (plot_sweep.c) */
 int ura_plot_sweep(uraCtx* c, const char* kind);

@@ -158,7 +158,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   urBagData* bd = d->bag + ib;
   int nn = mb->nn, cb = m->geom[b->geom].body;
   double* st = d->mem + b->madr;
-  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 12 * nn;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
   double R[9], c[3], vc[3], w[3];
   bodymotion(d, cb, R, c, vc, w);
   bd->active = 0;
@@ -254,7 +254,26 @@ void urm_bags_advance(const urModel* m, urData* d) {
     const urMembrane* mb = b->mem;
     int nn = mb->nn;
     double* st = d->mem + b->madr;
-    double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 12 * nn;
+    double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
+    // snapshots for the plot: at first contact with a target, at the peak pressure in contact
+    if (d->bag[ib].active) {
+      int hg = m->roles.head;
+      double hc[3] = {0, 0, 0};
+      if (hg >= 0) {
+        memcpy(hc, d->gxpos + 3 * hg, sizeof(hc));
+      }
+      if (sc[urMEMS_TFIRST] < 0) {
+        memcpy(st + 12 * nn, x, 3 * (size_t)nn * sizeof(double));
+        sc[urMEMS_TFIRST] = d->time;
+        memcpy(sc + urMEMS_HFIRST, hc, sizeof(hc));
+      }
+      if (sc[urMEMS_P] > sc[urMEMS_PPEAK]) {
+        memcpy(st + 15 * nn, x, 3 * (size_t)nn * sizeof(double));
+        sc[urMEMS_TPEAK] = d->time;
+        sc[urMEMS_PPEAK] = sc[urMEMS_P];
+        memcpy(sc + urMEMS_HPEAK, hc, sizeof(hc));
+      }
+    }
     int nsub = (int)ceil(m->opt.dt / mb->dt_stable - 1e-9);
     if (nsub < 1) {
       nsub = 1;

@@ -84,7 +84,7 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   const double *x = st, *v = st + 3 * nn;
-  double* sc = st + 12 * nn;
+  double* sc = st + 18 * nn;
   memset(f, 0, 3 * (size_t)nn * sizeof(double));
 
   // gas: volume of the closed surface, pressure of the remaining mass

@@ -35,7 +35,7 @@ double ur_mem_gas_energy(const urMembrane* mb, double p, double V) {
 
 double ur_mem_outflow(const urMembrane* mb, const double* st, double dt) {
   const urMemSpec* s = &mb->spec;
-  const double* sc = st + 12 * mb->nn;
+  const double* sc = st + 18 * mb->nn;
   double p = sc[urMEMS_P], V = sc[urMEMS_V], mg = sc[urMEMS_MGAS];
   if (!(s->vent_area > 0 || s->leak > 0) || !(p > s->patm) || !(V > 0)) {
     return 0;

@@ -20,7 +20,7 @@
    steps taken, the final residual in *res */
 static int relax(urMembrane* mb, double* st, double fixedp, double pscale, double* res) {
   int nn = mb->nn, it;
-  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *sc = st + 12 * nn;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *sc = st + 18 * nn;
   double dt = mb->dt_stable, ke_prev = 0;
   const urMemSpec* s = &mb->spec;
   *res = INFINITY;
@@ -88,7 +88,7 @@ int ur_mem_inflate(urMembrane* mb, char* err, size_t n) {
   int n1 = relax(mb, st, s->patm + pg, pg, &res1);
 
   // phase 2: closed at the declared pressure in the volume reached
-  double* sc = st + 12 * nn;
+  double* sc = st + 18 * nn;
   mb->vref = ur_mem_volume(mb, st);
   mb->pref = s->p0;
   mb->mref = s->p0 * mb->vref / (urMEM_RS * s->temp);

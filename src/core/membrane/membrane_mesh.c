@@ -332,14 +332,14 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 12 * (size_t)mb->nn + urMEMS_N;
+  return 18 * (size_t)mb->nn + urMEMS_N;
 }
 
 
 void ur_mem_state_init(const urMembrane* mb, double* st, const double R[9], const double c[3],
                        const double vc[3], const double w[3]) {
   int nn = mb->nn;
-  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *sc = st + 12 * nn;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *sc = st + 18 * nn;
   for (int i = 0; i < nn; i++) {
     const double* p = mb->x0 + 3 * i;
     double r[3];
@@ -360,6 +360,8 @@ void ur_mem_state_init(const urMembrane* mb, double* st, const double R[9], cons
   sc[urMEMS_V] = mb->vref;
   sc[urMEMS_STRAIN] = mb->strain0;
   sc[urMEMS_EFAB] = 0;
+  sc[urMEMS_TFIRST] = sc[urMEMS_TPEAK] = -1;
+  sc[urMEMS_PPEAK] = 0;
 }
 
 
