@@ -14,8 +14,8 @@
 
 /* shear resultant and energy density at engineering Green shear g = 2 E12 (= sin of the
    warp-weft angle change for unstretched yarns): G0 until sin(lock), GT beyond */
-static double shear(const urMemSpec* s, double g, double* w) {
-  double gl = sin(s->lock), ag = fabs(g);
+static double shear(const urMemSpec* s, double gl, double g, double* w) {
+  double ag = fabs(g);
   if (ag <= gl) {
     *w = 0.5 * s->g0t * g * g;
     return s->g0t * g;
@@ -26,12 +26,25 @@ static double shear(const urMemSpec* s, double g, double* w) {
 }
 
 
-void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w) {
-  // taut orthotropic law
-  double nu21 = s->nu12 * s->e2t / s->e1t, q = 1 / (1 - s->nu12 * nu21), ws;
-  S[0] = q * s->e1t * (e[0] + nu21 * e[1]);
-  S[1] = q * s->e2t * (e[1] + s->nu12 * e[0]);
-  S[2] = shear(s, e[2], &ws);
+/* the law's constants, computed once per force evaluation */
+typedef struct {
+  double c11, c12, c21, c22; /* S11 = c11 E11 + c12 E22, S22 = c21 E11 + c22 E22 */
+  double gl;                 /* sine of the lock angle */
+} lawk;
+
+static lawk law_constants(const urMemSpec* s) {
+  double nu21 = s->nu12 * s->e2t / s->e1t, q = 1 / (1 - s->nu12 * nu21);
+  return (lawk){q * s->e1t, q * s->e1t * nu21, q * s->e2t * s->nu12, q * s->e2t, sin(s->lock)};
+}
+
+
+/* the taut orthotropic law, then the tension field; the energy density in *w */
+static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], double S[3],
+                          double* w) {
+  double ws;
+  S[0] = k->c11 * e[0] + k->c12 * e[1];
+  S[1] = k->c21 * e[0] + k->c22 * e[1];
+  S[2] = shear(s, k->gl, e[2], &ws);
   double wn = 0.5 * (S[0] * e[0] + S[1] * e[1]);
 
   // tension field: scale the compressive principal stress by RE, keep the axes
@@ -50,13 +63,23 @@ void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], doubl
     S[2] = beta * S[2];
     f = 0.5 * (1 + s->re);
   }
+  *w = f * (wn + ws);
+}
+
+
+void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w) {
+  lawk k = law_constants(s);
+  double ww;
+  stress(s, &k, e, S, &ww);
   if (w) {
-    *w = f * (wn + ws);
+    *w = ww;
   }
 }
 
 
-void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], double e[3]) {
+/* deformation gradient and Green strain of triangle t */
+static inline void tri_strain(const urMembrane* mb, const double* x, int t, double F[6],
+                              double e[3]) {
   const int* v = mb->tri + 3 * t;
   const double* Di = mb->dminv + 4 * t;
   const double *x1 = x + 3 * v[0], *x2 = x + 3 * v[1], *x3 = x + 3 * v[2];
@@ -71,6 +94,12 @@ void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], d
   e[1] = 0.5 * (urm_dot(F + 3, F + 3) - 1);
   e[2] = urm_dot(F, F + 3);
 }
+
+
+void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], double e[3]) {
+  tri_strain(mb, x, t, F, e);
+}
+
 
 void ur_mem_tri_state(const urMembrane* mb, const double* x, int t, double e[3], double S[3]) {
   double F[6];
@@ -93,12 +122,13 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
   double pg6 = (p - s->patm) / 6;
 
   double emax = 0, wsum = 0;
+  lawk lk = law_constants(s);
   for (int t = 0; t < mb->nt; t++) {
     const int* n3 = mb->tri + 3 * t;
     const double* Di = mb->dminv + 4 * t;
     double F[6], e[3], S[3], w;
-    urm_tri_strain(mb, x, t, F, e);
-    urm_fabric_stress(s, e, S, &w);
+    tri_strain(mb, x, t, F, e);
+    stress(s, &lk, e, S, &w);
     wsum += w * mb->area0[t];
 
     // largest yarn strain (warp or weft; trellising shear is not a yarn strain)
