@@ -231,11 +231,16 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
       for (int j = 0; j < (k ? 6 * k : 1); j++) {
         int i = node_at(r, ntop, panel, k, j);
         double rho, xy[2];
-        plan_point(s, panel == 0 ? s->top : s->depth, k, j, &rho, xy);
+        int flat = s->pattern == urMEM_FLAT;
+        plan_point(s, flat ? 0 : panel == 0 ? s->top : s->depth, k, j, &rho, xy);
         double h = sqrt(fmax(0, 1 - rho * rho));
         double z = panel == 0 ? s->top * h : -s->depth * h;
         double* xs = mb->xshape + 3 * i;
-        double loc[3] = {xy[0], xy[1], z - s->top};
+        // a flat pattern starts from a quarter of the shape's heights, its plan shrunk by 10 %:
+        // every triangle shorter than its pattern, slack until the gas unfolds it (the initial
+        // metric method's smaller start)
+        double sh = flat ? 0.9 : 1, sz = flat ? 0.25 : 1;
+        double loc[3] = {sh * xy[0], sh * xy[1], sz * (z - s->top)};
         for (int c = 0; c < 3; c++) {
           xs[c] = s->mount[c] + Q[3 * c] * loc[0] + Q[3 * c + 1] * loc[1] + Q[3 * c + 2] * loc[2];
         }
