@@ -3,7 +3,8 @@
  * over the triangles within 1 %, with R from the mesh's volume; the mean fabric strain within 1 %
  * of the orthotropic law's), the mesh is closed and outward (its volume near the sphere's), the
  * tension-field rule keeps the tensile principal stress and scales the compressive one by RE,
- * the shear law is G0 before the lock and GT after it, and the isentropic pressure law. */
+ * the shear law is G0 before the lock and GT after it, the isentropic pressure law, and the vent's
+ * isentropic orifice flow against the reference sheet's mass fluxes. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -131,11 +132,41 @@ static void test_gas_law(void** state) {
 }
 
 
+static void test_vent_flow(void** state) {
+  // isentropic orifice flow of air at 293 K into 1 atm: mass flux per area at a gauge pressure
+  // of 1, 5, 10, 30 kPa (materials-membrane B.2: 49, 110, 155, 266 kg/(s m^2))
+  urMemSpec s;
+  char err[200];
+  ur_mem_spec_default(&s);
+  s.vent_area = 1e-3;
+  s.vent_cd = 1;
+  s.temp = 293.15;
+  urMembrane* mb = ur_mem_build(&s, err, sizeof err);
+  assert_non_null(mb);
+  double* st = calloc(ur_mem_state_size(mb), sizeof(double));
+  double* sc = st + 18 * mb->nn;
+  static const double dp[4] = {1e3, 5e3, 10e3, 30e3}, flux[4] = {49, 110, 155, 266};
+  for (int k = 0; k < 4; k++) {
+    double p = s.patm + dp[k];
+    sc[urMEMS_P] = p;
+    sc[urMEMS_V] = 0.02;
+    sc[urMEMS_MGAS] = p * 0.02 / (urMEM_RS * s.temp);
+    double dt = 1e-6, q = ur_mem_outflow(mb, st, dt) / dt / s.vent_area;
+    assert_true(fabs(q / flux[k] - 1) < 0.01);
+  }
+  // none without a gauge pressure, none without openings
+  sc[urMEMS_P] = s.patm;
+  assert_true(ur_mem_outflow(mb, st, 1e-3) == 0);
+  free(st);
+  ur_mem_free(mb);
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_mesh_closed),   cmocka_unit_test(test_laplace_sphere),
       cmocka_unit_test(test_tension_field), cmocka_unit_test(test_shear_lock),
-      cmocka_unit_test(test_gas_law),
+      cmocka_unit_test(test_gas_law),       cmocka_unit_test(test_vent_flow),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
