@@ -67,7 +67,8 @@ typedef struct {
   double vent_cd;   /* orifice discharge coefficient */
   double leak;      /* fabric leakage: effective open area per fabric area (0: none) */
   /* contact with ellipsoids (person and the carrier's own bodies) */
-  double kc_alpha;  /* penalty stiffness alpha m_node / dt^2 (stable for alpha < 1) */
+  double kc_alpha;  /* penalty stiffness alpha m_node / max(dt, kc_dt)^2 (stable, alpha < 1) */
+  double kc_dt;     /* the step that stiffness refers to when dt is smaller, s */
   double zeta_c;    /* contact damping, fraction of critical per node */
   double mu, v_eps; /* regularised Coulomb friction */
   double dt_factor; /* fraction of the stable step taken (<= 1) */

@@ -94,6 +94,7 @@ static const KeySpec spec_airbag[] = {NAMER("geom"),
                                       NUM("vent_cd"),
                                       NUM("leak"),
                                       NUM("kc_alpha"),
+                                      NUM("kc_dt"),
                                       NUM("zeta_c"),
                                       NUM("dt_factor"),
                                       {"support", K_NAMES, urMAXBAGTGT, 1, 0, NULL}};

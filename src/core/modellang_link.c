@@ -158,7 +158,7 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
   static const char* const nn[] = {"depth", "top",      "mount_r", "e1t",       "e2t",
                                    "nu12",  "g0t",      "gtt",     "lock",      "re",
                                    "rhot",  "damp",     "temp",    "vent_area", "vent_cd",
-                                   "leak",  "kc_alpha", "zeta_c",  "dt_factor"};
+                                   "leak",  "kc_alpha", "kc_dt",   "zeta_c",    "dt_factor"};
   for (size_t i = 0; i < sizeof(nn) / sizeof(nn[0]); i++) {
     if (url_nonneg(p, b, nn[i], 0)) {
       return -1;
@@ -202,6 +202,7 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
   s->vent_cd = url_num(b, "vent_cd", s->vent_cd);
   s->leak = url_num(b, "leak", s->leak);
   s->kc_alpha = url_num(b, "kc_alpha", s->kc_alpha);
+  s->kc_dt = url_num(b, "kc_dt", s->kc_dt);
   s->zeta_c = url_num(b, "zeta_c", s->zeta_c);
   s->dt_factor = url_num(b, "dt_factor", s->dt_factor);
   s->p0 = bag->gas.p0;

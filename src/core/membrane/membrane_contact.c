@@ -2,7 +2,9 @@
  * (the person's and the carrier's own bodies): the node is inside when the shape's gauge
  * s = ||diag(1/r) R^T (x - c)||_p is below 1; the depth is the first-order distance
  * (1 - s) / |grad s| along the outward normal grad s; the stiffness comes from stability, not
- * from a material (k = alpha m / dt^2, materials-membrane C.4), with damping 2 zeta sqrt(k m) on
+ * from a material (k = alpha m / max(dt, kc_dt)^2, materials-membrane C.4: stable at the step dt,
+ * and the same at every step below kc_dt, so that halving dt leaves the contact as it was), with
+ * damping 2 zeta sqrt(k m) on
  * the approach rate and regularised Coulomb friction on the sliding velocity (its viscous
  * slope capped at m / dt, which stops the sliding in one step at most). */
 #include <math.h>
@@ -65,7 +67,8 @@ double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, con
     vr[k] = v[k] - vo[k] - wr[k];
   }
   double vn = urm_dot(vr, n);
-  double kc = s->kc_alpha * m / (dt * dt), cc = 2 * s->zeta_c * sqrt(kc * m);
+  double dk = fmax(dt, s->kc_dt), kc = s->kc_alpha * m / (dk * dk);
+  double cc = 2 * s->zeta_c * sqrt(kc * m);
   double fn = kc * depth - cc * vn;
   if (!(fn > 0)) {
     return depth;

@@ -39,6 +39,7 @@ void ur_mem_spec_default(urMemSpec* s) {
   s->temp = 293.15;
   s->vent_cd = 0.7;
   s->kc_alpha = 0.2;
+  s->kc_dt = 5e-5;
   s->zeta_c = 0.3;
   s->mu = 0.4;
   s->v_eps = 0.01;
@@ -66,9 +67,9 @@ int ur_mem_spec_check(const urMemSpec* s, char* err, size_t n) {
     what = "gas needs p0 >= patm > 0, gamma >= 1, temperature > 0";
   } else if (!(s->vent_area >= 0 && s->vent_cd >= 0 && s->leak >= 0 && s->leak < 1)) {
     what = "vent area, discharge coefficient and leak must be >= 0 (leak < 1)";
-  } else if (!(s->kc_alpha > 0 && s->kc_alpha < 1 && s->zeta_c >= 0 && s->mu >= 0 &&
+  } else if (!(s->kc_alpha > 0 && s->kc_alpha < 1 && s->kc_dt >= 0 && s->zeta_c >= 0 && s->mu >= 0 &&
                s->v_eps > 0)) {
-    what = "contact needs 0 < kc_alpha < 1, zeta_c >= 0, mu >= 0, v_eps > 0";
+    what = "contact needs 0 < kc_alpha < 1, kc_dt >= 0, zeta_c >= 0, mu >= 0, v_eps > 0";
   } else if (!(s->quat[0] * s->quat[0] + s->quat[1] * s->quat[1] + s->quat[2] * s->quat[2] +
                  s->quat[3] * s->quat[3] >
                0)) {
