@@ -15,7 +15,7 @@
 
 #define MAXSTEP 60000
 #define TOL     1e-3
-#define VISC    0.995 /* velocity kept per step besides the kinetic damping: slack, wrinkled
+#define VISC    0.98 /* velocity kept per step besides the kinetic damping: slack, wrinkled
                          patches would otherwise flap long after the bag has its shape */
 
 /* one relaxation phase; fixedp > 0 holds the pressure there, else the gas is closed. Returns the
