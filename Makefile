@@ -8,6 +8,8 @@
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
 #                 zero-wind grids; src/models/calibrate.spec, uasimpact-model(5)); build/calibration/
+#   make membrane-convergence  the membrane airbag's mesh and time-step convergence on case A
+#                 (scripts/membrane-convergence.sh; minutes of grids, not part of check)
 #   make sensitivity  how far Table 17 moves with one unknown the calibration does not set
 #                 moved in its public range, at the shipped models (scripts/sensitivity.sh;
 #                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
@@ -57,6 +59,7 @@ LIB     = $(BUILD)/libuasimpact.a
 APPLIB  = $(BUILD)/libuasimpact-app.a
 
 .PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz \
+  membrane-convergence \
   check-tsan mpi mpideps format
 all: $(BIN) $(LIB)
 
@@ -147,6 +150,11 @@ bench: all mpi $(BENCH_BIN)
 	  sh scripts/reproduce.sh >$(BUILD)/reproduce.log 2>&1 || { cat $(BUILD)/reproduce.log; exit 1; }; \
 	  echo "bench: make reproduce: $$(($$(date +%s) - t0)) s wall (target 120 s; report in $(BUILD)/reproduce/report.md)"; \
 	else echo "bench: make reproduce not timed (REPRODUCE=0)"; fi
+
+# the membrane airbag's convergence (issue 32): mesh 6 -> 12, dt halved, at case A's centre and
+# over its zero-wind grid (STEP, default 0.05)
+membrane-convergence: all
+	@sh scripts/membrane-convergence.sh $(STEP)
 
 # the paper's results side by side with ours (scripts/reproduce.sh); minutes of grids
 reproduce: all

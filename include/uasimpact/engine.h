@@ -29,6 +29,7 @@
 
 #include <stddef.h>
 #include "uasimpact/contact.h"
+#include "uasimpact/membrane.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -67,7 +68,9 @@ typedef enum {
   urSENS_JOINTPOS,  /* 1: joint coordinate qpos[qadr + dof] (rad or m) */
   urSENS_JOINTVEL,  /* 1: joint velocity dof (rad/s or m/s) */
   urSENS_CONTACT,   /* 3: normal force N, penetration m, friction force N */
-  urSENS_AIRBAG,    /* 2: absolute pressure Pa, gas volume m^3 */
+  urSENS_AIRBAG,    /* 4: absolute pressure Pa, gas volume m^3, normal force on
+                                      the targets N, largest yarn strain (Green, warp or weft) (Green;
+                                      membrane bags, else 0) */
   urSENS_BODYPOS,   /* 3: world position of a body point, m */
   urSENS_BODYVEL    /* 3: world velocity of a body point, m/s */
 } urSensorType;
@@ -84,8 +87,10 @@ typedef enum {
 } urStatus;
 
 typedef enum {
-  urBAG_UNIFORM = 0 /* analytic uniform-pressure bag (contact sheet 4.2); a membrane
-                                      model may be added behind the same interface */
+  urBAG_UNIFORM = 0, /* analytic uniform-pressure bag (contact sheet 4.2) */
+  urBAG_MEMBRANE     /* finite-element fabric membrane with uniform-pressure gas
+                                      (membrane.h); its ellipsoid is compiled into a bound of
+                                      the inflated bag */
 } urAirbagType;
 
 //---------------------------------- model elements ------------------------------------------------
@@ -164,6 +169,14 @@ typedef struct {
   double mu, v_eps; /* friction on the targets (regularised Coulomb) */
   int ntarget;
   int target[urMAXBAGTGT]; /* ellipsoids that can indent the bag */
+  /* membrane (type urBAG_MEMBRANE): the declaration, the carrier's own ellipsoids the fabric
+     presses against, and (compiled) the inflated bag and its state's place in urData.mem */
+  urMemSpec mspec;
+  int nsupport;
+  int support[urMAXBAGTGT];
+  urMembrane* mem; /* built and inflated by ur_model_compile, constant after */
+  int madr;        /* first double of its run state in urData.mem */
+  int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
 } urAirbag;
 
 typedef struct {
@@ -249,6 +262,7 @@ typedef struct {
   urPreset* preset; /* npreset, in the order of the text */
   int npreset;
   double* qpos0; /* nq: reference configuration */
+  int nmemd;     /* doubles of the membrane bags' run states (urData.mem) */
   // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
   // an active restraint, with a load curve (its extremes are tracked), whose reaction is needed
   // (react)
@@ -286,6 +300,10 @@ typedef struct {
   double ftgt[urMAXBAGTGT];  /* normal force on each target, N */
   double u[urMAXBAGTGT][3];  /* warm-start directions */
   int active;                /* 1 if some target indents the bag */
+  double strain;             /* membrane: largest yarn strain (Green, warp or weft) (Green) */
+  int placed;                /* membrane: state placed on the carrier (0 after a reset) */
+  int live;                  /* membrane: integrated (a target came near), else carried
+                                      rigidly in its inflated state */
 } urBagData;
 
 typedef struct {
@@ -326,6 +344,7 @@ typedef struct {
   double* pdepth;         /* npair: penetration, m (< 0 separated: minus a lower bound
                                       of the distance; -inf before any contact pass) */
   urBagData* bag;         /* nbag */
+  double* mem;            /* nmemd: membrane bags' states (membrane.h) */
   int* plist;             /* 2 npair: of the last contact pass, the pairs to commit
                                       (penetrating or touching; only they can carry a force or
                                       a touching history), then the active ones (supersets once

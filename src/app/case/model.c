@@ -577,6 +577,22 @@ static int model_params(uraCtx* c, const char* prefix) {
                     "the names 'model params' lists",
                     prefix);
   }
+  /* the compiled membrane bags: mesh, time step (sub-steps), inflated state */
+  for (int i = 0; i < m->nbag && !strncmp("bag", prefix, strlen(prefix) < 3 ? strlen(prefix) : 3);
+       i++) {
+    const urAirbag* b = m->bag + i;
+    if (b->type != urBAG_MEMBRANE || !b->mem) continue;
+    const urMembrane* mb = b->mem;
+    double mass = 0;
+    for (int k = 0; k < mb->nn; k++) mass += mb->mass[k];
+    fprintf(c->out,
+            "# membrane %s: %d nodes, %d triangles, %d mount nodes, fabric %.3g kg; stable step "
+            "%.3g us: %d sub-step%s per %.3g us step; inflated %.4g L at %.6g Pa (gauge %.4g "
+            "Pa), largest yarn strain %.3g %%\n",
+            b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
+            b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt, 1e3 * mb->vref, mb->pref,
+            mb->pref - mb->spec.patm, 100 * mb->strain0);
+  }
   return 0;
 }
 

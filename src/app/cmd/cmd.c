@@ -44,8 +44,9 @@ const uraCmd ura_cmds[] = {
      "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
      "q returns"},
     {"plot", ura_cmd_plot, 1, -1, uraC_NONE,
-     "plot pof|grid|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",
-     "send curves to gnuplot: the PoF curves, the last grid as a heat map, time histories of "
+     "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",
+     "send curves to gnuplot: the PoF curves, the last grid as a heat map, the last impact's "
+     "membrane airbags at first contact and peak pressure, time histories of "
      "the last impact, Q of the kept sweeps, the last montecarlo's Q distribution or its "
      "variance shares (set terminal/output to write files)"},
     {"impact", ura_cmd_impact, 2, 5, uraC_NONE, "impact DPAR DPERP|aim head UP SIDE",
@@ -152,6 +153,21 @@ int ura_cmd_set(uraCtx* c, int argc, char** argv) {
 }
 
 static int set_one(uraCtx* c, int argc, char** argv) {
+  /* set bag_model analytic|membrane: the model parameter bag_membrane (0|1) by name */
+  if (!strcmp(argv[1], "bag_model")) {
+    int mem = !strcmp(argv[2], "membrane");
+    if (argc != 3 || (!mem && strcmp(argv[2], "analytic"))) {
+      return ura_fail(c, "set bag_model: expected analytic or membrane (got '%s'%s)", argv[2],
+                      argc == 4 ? " and a unit" : "");
+    }
+    if (ura_model_param_find(c, "bag_membrane") < 0) {
+      return ura_fail(c,
+                      "set bag_model: the model has no parameter bag_membrane (its airbags "
+                      "declare no membrane)");
+    }
+    char* av[3] = {"set", "bag_membrane", mem ? "1" : "0"};
+    return ura_model_param_set(c, av[1], av[2], NULL, 1);
+  }
   const uraParam* p = ura_param_find(argv[1]);
   int i = p ? -1 : ura_injury_find(argv[1]);
   if (!p && i < 0) {

@@ -121,12 +121,13 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv) {
   return 0;
 }
 
-/* name of sensor channel j: SENSOR (one value), SENSOR_x/y/z (3), SENSOR_fx..mz (6), SENSOR_p/v
-   (airbag: pressure, volume) */
+/* name of sensor channel j: SENSOR (one value), SENSOR_x/y/z (3), SENSOR_fx..mz (6), SENSOR_p/v/f/strain
+   (airbag: pressure, volume, force on the targets, fabric strain) */
 static void channel_name(const urModel* m, int j, char* buf, size_t n) {
   static const char* const comp3[] = {"x", "y", "z"};
   static const char* const comp6[] = {"fx", "fy", "fz", "mx", "my", "mz"};
   static const char* const comp2[] = {"p", "v"};
+  static const char* const comp4[] = {"p", "v", "f", "strain"};
   snprintf(buf, n, "s%d", j);
   for (int i = 0; i < m->nsensor; i++) {
     const urSensor* sn = m->sensor + i;
@@ -135,6 +136,7 @@ static void channel_name(const urModel* m, int j, char* buf, size_t n) {
     const char* suffix = sn->dim == 3   ? comp3[k]
                          : sn->dim == 6 ? comp6[k]
                          : sn->dim == 2 ? comp2[k]
+                         : sn->dim == 4 ? comp4[k]
                                         : NULL;
     if (suffix)
       snprintf(buf, n, "%s_%s", sn->name, suffix);

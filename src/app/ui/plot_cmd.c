@@ -170,12 +170,13 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
   if (!strcmp(what, "montecarlo") || !strcmp(what, "tornado")) return ura_plot_mc(c, what);
   if (!strcmp(what, "pof")) return ura_plot_pof(c, &c->st.injury);
   if (!strcmp(what, "grid")) return ura_plot_grid(c);
+  if (!strcmp(what, "bag")) return ura_plot_bag(c);
   uraSuggest sg;
   char dym[120];
   ura_suggest_init(&sg, what);
   ura_suggest_keywords(&sg, ura_cmd_find("plot")->usage + strlen("plot "));
   return ura_fail(c,
                   "plot: unknown plot '%s'%s; accepted: pof, grid, history SIGNAL..., sweep "
-                  "[wind|face], montecarlo, tornado",
+                  "[wind|face], montecarlo, tornado, bag",
                   what, ura_suggest_text(&sg, dym, sizeof dym));
 }

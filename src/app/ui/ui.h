@@ -67,6 +67,10 @@ int ura_plot_trace(uraCtx* c, const uraTrace* tr, int nsel, const char* const* n
 int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names, double t1,
                        double t2);
 
+/* the membrane airbags of the last impact at first contact and at peak pressure, with the head
+   (plot_bag.c) */
+int ura_plot_bag(uraCtx* c);
+
 /* Q of the kept sweeps (c->sweep) against wind or face, one curve per sweep; kind "wind" or
    "face" for one panel, NULL for every kind kept (plot_sweep.c) */
 int ura_plot_sweep(uraCtx* c, const char* kind);
@@ -74,6 +78,10 @@ int ura_plot_sweep(uraCtx* c, const char* kind);
 /* s as a gnuplot string constant: in single quotes (gnuplot substitutes nothing there), line
    breaks as '...'."\n".'...'; the only way a text reaches a plot script */
 void ura_plot_quote(FILE* f, const char* s);
+
+/* the membrane airbags of the last impact at first contact and at peak pressure, with the head
+   (plot_bag.c) */
+int ura_plot_bag(uraCtx* c);
 
 /* the file tmp that gnuplot wrote under terminal term for the output shown is complete: not
    empty, the format's first bytes and end marker (PNG, JPEG, GIF, PDF, EPS, PostScript, SVG,

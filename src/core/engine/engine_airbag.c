@@ -84,6 +84,7 @@ static void bag_uniform(const urModel* m, urData* d, int ib) {
 void ur_airbags(const urModel* m, urData* d) {
   for (int i = 0; i < m->nbag; i++) {
     switch (m->bag[i].type) {
+    case urBAG_MEMBRANE: urm_bag_loads(m, d, i); break;
     case urBAG_UNIFORM:
     default: bag_uniform(m, d, i); break;
     }

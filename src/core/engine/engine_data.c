@@ -14,7 +14,7 @@ static size_t ndoubles(const urModel* m) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, nq = (size_t)m->nq, nv = (size_t)m->nv;
   size_t ns = (size_t)m->nsensordata;
   return nq + 5 * nv + nb * (12 + 3 + 9 + 3 + 9 + 3 + 36 + 6 * 3 + 36 + 6 + 36 + 36 + 6 + 6 + 6) +
-         ng * 12 + 4 * ns + 2 * nq + 8 * nv + (size_t)m->npair;
+         ng * 12 + 4 * ns + 2 * nq + 8 * nv + (size_t)m->npair + (size_t)m->nmemd;
 }
 
 
@@ -55,6 +55,7 @@ static void carve(const urModel* m, urData* d) {
   TAKE(tpeak, ns)
   TAKE(scratch, 2 * nq + 8 * nv)
   TAKE(pdepth, m->npair)
+  TAKE(mem, m->nmemd)
 #undef TAKE
   // pairs on cache lines (the buffer is aligned, so the offset is the same in every copy)
   uintptr_t a = (uintptr_t)p, al = _Alignof(urPairData);

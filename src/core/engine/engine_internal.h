@@ -133,4 +133,10 @@ int ur_tree_active(const urModel* m, const urData* d, int tree);
 double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]);
 double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]);
 
+/* the membrane airbags (engine_membrane.c, on the membrane room's fabric, gas and contact) */
+int urm_model_compile(urModel* m);                       /* build and inflate the membrane bags */
+void urm_model_free(urModel* m);                         /* release them */
+void urm_bag_loads(const urModel* m, urData* d, int ib); /* forces of bag ib this step */
+void urm_bags_advance(const urModel* m, urData* d);      /* move the membranes one step */
+
 #endif

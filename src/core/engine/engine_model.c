@@ -100,6 +100,7 @@ void ur_model_free(urModel* m) {
   free(m->body);
   free(m->geom);
   free(m->pair);
+  urm_model_free(m);
   free(m->bag);
   free(m->sensor);
   free(m->param);
@@ -329,11 +330,23 @@ int ur_model_add_airbag(urModel* m, const urAirbag* bag) {
     if (t < 0 || t >= m->ngeom || m->geom[t].body == m->geom[bag->geom].body) {
       return fail(m, "bad airbag target", bag->name);
     }
-    if (m->geom[t].degree != 2) {
+    if (m->geom[t].degree != 2 && bag->type != urBAG_MEMBRANE) {
       return fail(m, "airbag target of degree other than 2", bag->name);
     }
   }
-  if (!(bag->gas.v0 > 0 && bag->gas.p0 > 0 && bag->gas.gamma > 0)) {
+  if (bag->nsupport < 0 || bag->nsupport > urMAXBAGTGT) {
+    return fail(m, "bad airbag support count", bag->name);
+  }
+  for (int i = 0; i < bag->nsupport; i++) {
+    int t = bag->support[i];
+    if (t < 0 || t >= m->ngeom || t == bag->geom) {
+      return fail(m, "bad airbag support ellipsoid", bag->name);
+    }
+  }
+  if (bag->type == urBAG_MEMBRANE && ur_mem_spec_check(&bag->mspec, m->err, sizeof(m->err))) {
+    return -1;
+  }
+  if (bag->type != urBAG_MEMBRANE && !(bag->gas.v0 > 0 && bag->gas.p0 > 0 && bag->gas.gamma > 0)) {
     return fail(m, "airbag gas needs v0, p0, gamma > 0", bag->name);
   }
   if (ur_name_airbag(m, bag->name) >= 0) {
@@ -346,6 +359,7 @@ int ur_model_add_airbag(urModel* m, const urAirbag* bag) {
   // copy, with defaults
   urAirbag* b = m->bag + m->nbag;
   *b = *bag;
+  b->mem = NULL;
   if (setname(m, b->name, bag->name)) {
     return -1;
   }
@@ -392,7 +406,7 @@ int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj
     break;
   case urSENS_AIRBAG:
     ok = obj >= 0 && obj < m->nbag;
-    dim = 2;
+    dim = 4;
     break;
   default: ok = 0; dim = 0;
   }
@@ -589,6 +603,9 @@ int ur_model_compile(urModel* m) {
     if (b->react) {
       m->reactb[m->nreactb++] = i;
     }
+  }
+  if (urm_model_compile(m)) {
+    return -1;
   }
   m->compiled = 1;
   m->err[0] = 0;

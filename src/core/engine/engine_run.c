@@ -230,6 +230,9 @@ void ur_step_accept(const urModel* m, urData* d) {
   ur_outputs(m, d);
   ur_restraints_commit(m, d);
   ur_contacts_commit(m, d);
+  if (m->nmemd) {
+    urm_bags_advance(m, d);
+  }
   if (d->proj >= 0 && ur_tree_active(m, d, d->proj)) {
     if (d->t_first < 0) {
       d->t_first = d->time;

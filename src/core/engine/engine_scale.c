@@ -57,6 +57,12 @@ int ur_model_scale_tree(urModel* m, int root, double fmass, double fsize) {
     if (!below(m, m->geom[bag->geom].body, root)) continue;
     bag->gas.v0 *= fsize * fsize * fsize;
     if (isfinite(bag->thickness)) bag->thickness *= fsize;
+    urMemSpec* ms = &bag->mspec;
+    ms->a *= fsize;
+    ms->b *= fsize;
+    ms->depth *= fsize;
+    ms->top *= fsize;
+    for (int k = 0; k < 3; k++) ms->mount[k] *= fsize;
   }
   return 0;
 }

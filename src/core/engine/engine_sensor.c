@@ -37,6 +37,8 @@ void ur_sensors(const urModel* m, urData* d) {
     case urSENS_AIRBAG:
       out[0] = d->bag[s->obj].pressure;
       out[1] = d->bag[s->obj].volume;
+      out[2] = d->bag[s->obj].force;
+      out[3] = d->bag[s->obj].strain;
       break;
     }
   }

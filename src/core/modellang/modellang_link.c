@@ -139,6 +139,99 @@ int url_pairs_disabled(Parser* p, const Bound* b, int line) {
 }
 
 
+/* the membrane keys of an airbag: with membrane=1 (and a size) the bag is a finite-element
+   membrane (membrane.h), else they are kept unused; every value from the defaults of
+   ur_mem_spec_default unless given */
+static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
+  urModel* m = p->m;
+  urMemSpec* s = &bag->mspec;
+  ur_mem_spec_default(s);
+  const Val* vm = url_get(b, "membrane");
+  const Val* vs = url_get(b, "size");
+  if (!(vm->set && vm->v[0] != 0)) {
+    return 0;
+  }
+  if (!vs->set) {
+    return url_fail(p, vm->line, "airbag '%s': a membrane bag needs size=A,B (plan semi-axes, m)",
+                    b->name);
+  }
+  static const char* const nn[] = {"depth", "top",      "mount_r", "e1t",       "e2t",
+                                   "nu12",  "g0t",      "gtt",     "lock",      "re",
+                                   "rhot",  "damp",     "temp",    "vent_area", "vent_cd",
+                                   "leak",  "kc_alpha", "kc_dt",   "zeta_c",    "dt_factor"};
+  for (size_t i = 0; i < sizeof(nn) / sizeof(nn[0]); i++) {
+    if (url_nonneg(p, b, nn[i], 0)) {
+      return -1;
+    }
+  }
+  bag->type = urBAG_MEMBRANE;
+  s->plan = url_get(b, "plan")->set ? (urMemPlan)url_get(b, "plan")->e : urMEM_ELLIPSE;
+  s->pattern = url_get(b, "pattern")->set ? (urMemPattern)url_get(b, "pattern")->e : urMEM_SHAPE;
+  s->a = vs->v[0];
+  s->b = vs->v[1];
+  if (url_get(b, "mount")->set) {
+    const double* mt = url_vec(b, "mount");
+    for (int k = 0; k < 3; k++) {
+      s->mount[k] = mt[k];
+    }
+  } else {
+    // default: the top centre of the bag ellipsoid
+    const urGeom* g = m->geom + bag->geom;
+    s->mount[0] = g->pos[0];
+    s->mount[1] = g->pos[1];
+    s->mount[2] = g->pos[2];
+  }
+  if (url_orientation(p, b, s->quat)) {
+    return -1;
+  }
+  s->mesh = (int)url_num(b, "mesh", s->mesh);
+  s->depth = url_num(b, "depth", s->depth);
+  s->top = url_num(b, "top", s->top);
+  s->mount_r = url_num(b, "mount_r", s->mount_r);
+  s->e1t = url_num(b, "e1t", s->e1t);
+  s->e2t = url_num(b, "e2t", s->e2t);
+  s->nu12 = url_num(b, "nu12", s->nu12);
+  s->g0t = url_num(b, "g0t", s->g0t);
+  s->gtt = url_num(b, "gtt", s->gtt);
+  s->lock = url_num(b, "lock", s->lock);
+  s->re = url_num(b, "re", s->re);
+  s->rhot = url_num(b, "rhot", s->rhot);
+  s->damp = url_num(b, "damp", s->damp);
+  s->temp = url_num(b, "temp", s->temp);
+  s->vent_area = url_num(b, "vent_area", s->vent_area);
+  s->vent_cd = url_num(b, "vent_cd", s->vent_cd);
+  s->leak = url_num(b, "leak", s->leak);
+  s->kc_alpha = url_num(b, "kc_alpha", s->kc_alpha);
+  s->kc_dt = url_num(b, "kc_dt", s->kc_dt);
+  s->zeta_c = url_num(b, "zeta_c", s->zeta_c);
+  s->dt_factor = url_num(b, "dt_factor", s->dt_factor);
+  s->p0 = bag->gas.p0;
+  s->patm = bag->gas.patm;
+  s->gamma = bag->gas.gamma;
+  s->mu = bag->mu;
+  if (bag->v_eps > 0) {
+    s->v_eps = bag->v_eps;
+  }
+  char err[120];
+  if (ur_mem_spec_check(s, err, sizeof(err))) {
+    return url_fail(p, vm->line, "airbag '%s': membrane: %s", b->name, err);
+  }
+
+  // supports: ellipsoids of the carrier's own tree the fabric presses against
+  const Val* vp = url_get(b, "support");
+  for (int i = 0; vp->set && i < vp->n; i++) {
+    char name[urNAMELEN];
+    url_item(vp->raw, i, name, sizeof(name));
+    int g = url_ref(p, SYM_ELLIPSOID, name, vp->line, "support");
+    if (g < 0) {
+      return -1;
+    }
+    bag->support[bag->nsupport++] = g;
+  }
+  return 0;
+}
+
+
 /* airbag NAME geom= p0= patm= v0= gamma= kappa= thickness= targets= ... */
 int url_st_airbag(Parser* p, const Bound* b) {
   urModel* m = p->m;
@@ -202,6 +295,9 @@ int url_st_airbag(Parser* p, const Bound* b) {
     bag.target[i] = g;
   }
   bag.ntarget = vt->n;
+  if (membrane_keys(p, b, &bag)) {
+    return -1;
+  }
   if (url_declare(p, SYM_AIRBAG, b->name, b->line, m->nbag, 1)) {
     return -1;
   }

@@ -163,7 +163,7 @@ static void test_model_fields(void** state) {
   s = m->sensor + ur_name_sensor(m, "bagp");
   assert_int_equal(s->type, urSENS_AIRBAG);
   assert_int_equal(s->obj, 0);
-  assert_int_equal(m->nsensordata, 2 + 3 + 6 + 1 + 1 + 3 + 3);
+  assert_int_equal(m->nsensordata, 4 + 3 + 6 + 1 + 1 + 3 + 3);
 
   /* the compiled model runs */
   urData* d = ur_data_new(m);

@@ -1,0 +1,181 @@
+/* membrane.h: the finite-element membrane airbag (paper 3.2: MADYMO FE airbag with uniform-pressure
+ * gas). A bag is a closed triangulated fabric surface made of two panels of a plan shape
+ * (ellipse or rounded rectangle) sewn at their edge; constant-strain triangles, total
+ * Lagrangian, orthotropic woven fabric (warp along the plan's x axis) with a locking shear law,
+ * tension only (wrinkling), optional material damping; a uniform-pressure adiabatic gas,
+ * optional vents and fabric leakage. Sources of every law and value: uasimpact-model(5), BAGS.
+ *
+ * Split like the engine: urMembrane is constant once built and inflated (mesh topology,
+ * reference metric, masses, the inflated state in the carrier's body frame), shared by threads;
+ * the state of one run (node positions and velocities, gas mass) is a caller-owned array of
+ * ur_mem_state_size() doubles. No globals, no I/O.
+ *
+ * Use:
+ *   urMemSpec s; ur_mem_spec_default(&s);  s.a = 0.3; ...
+ *   urMembrane* mb = ur_mem_build(&s, err, sizeof err);   // mesh and reference metric
+ *   ur_mem_inflate(mb, err, sizeof err);                  // once: the stabilised inflated bag
+ *   double* st = malloc(ur_mem_state_size(mb) * sizeof(double));
+ *   ur_mem_state_init(mb, st, R, x0, v0, w0);             // placed rigidly on its carrier
+ *   ur_mem_forces(mb, st, force, &info);                   // fabric + gas forces on the nodes
+ */
+#ifndef UASIMPACT_MEMBRANE_H
+#define UASIMPACT_MEMBRANE_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+  urMEM_ELLIPSE = 0, /* plan (x/a)^2 + (y/b)^2 <= 1 */
+  urMEM_RECT         /* rounded rectangle: the superellipse |x/a|^4 + |y/b|^4 <= 1 */
+} urMemPlan;
+
+typedef enum {
+  urMEM_SHAPE = 0, /* the reference metric is the declared inflated shape (stress free there) */
+  urMEM_FLAT       /* two flat panels of the plan shape (initial metric method: the mesh starts
+                      in the declared shape, the fabric's rest lengths are the flat pattern's) */
+} urMemPattern;
+
+/* a declared bag (model language 'airbag ... mesh=N'): SI units */
+typedef struct {
+  urMemPlan plan;
+  urMemPattern pattern;
+  double a, b;     /* plan semi-axes, m (x: along, warp; y: across, weft) */
+  double depth;    /* bottom panel's depth below the seam in the declared shape, m */
+  double top;      /* top panel's height above the seam (0: flat top), m */
+  double mount[3]; /* top centre of the bag in the carrier's body frame, m */
+  double quat[4];  /* the bag's frame in the carrier's (w, x, y, z; identity: the plan in the
+                      body's x-y plane, the bottom panel towards -z) */
+  double mount_r;  /* top-panel nodes within this fraction of the plan are fixed to the
+                         carrier (the rigid mount patch, a fixed joint), 0..1 */
+  int mesh;        /* rings per panel: 2 + 6 mesh^2 nodes, 12 mesh^2 triangles */
+  /* fabric (membrane stiffnesses: modulus times thickness) */
+  double e1t, e2t; /* warp, weft tensile stiffness, N/m */
+  double nu12;     /* Poisson ratio (warp strain -> weft) */
+  double g0t, gtt; /* shear stiffness before and after locking, N/m */
+  double lock;     /* locking shear angle, rad */
+  double re;       /* compressive principal stress factor (wrinkling), 0..1 */
+  double rhot;     /* areal density, kg/m^2 */
+  double damp;     /* material damping: fraction of critical at the element frequency */
+  /* gas */
+  double p0, patm;  /* inflation (absolute) and ambient pressure, Pa */
+  double gamma;     /* ratio of specific heats */
+  double temp;      /* gas temperature at inflation, K (density for the vents) */
+  double vent_area; /* vent orifice area, m^2 (0: none) */
+  double vent_cd;   /* orifice discharge coefficient */
+  double leak;      /* fabric leakage: effective open area per fabric area (0: none) */
+  /* contact with ellipsoids (person and the carrier's own bodies) */
+  double kc_alpha;  /* penalty stiffness alpha m_node / max(dt, kc_dt)^2 (stable, alpha < 1) */
+  double kc_dt;     /* the step that stiffness refers to when dt is smaller, s */
+  double zeta_c;    /* contact damping, fraction of critical per node */
+  double mu, v_eps; /* regularised Coulomb friction */
+  double dt_factor; /* fraction of the stable step taken (<= 1) */
+} urMemSpec;
+
+/* constant once inflated */
+typedef struct {
+  urMemSpec spec;
+  int nn, nt;        /* nodes, triangles */
+  int ntop;          /* nodes of the top panel (0..ntop-1; the seam is its last ring) */
+  int nfix;          /* mount nodes */
+  int* tri;          /* 3 nt node indices, outward normals by the right-hand rule */
+  double* dminv;     /* 4 nt: inverse of the reference edge matrix in the material axes */
+  double* area0;     /* nt: reference area, m^2 */
+  double* beta;      /* nt: stiffness-proportional damping time, s */
+  double* mass;      /* nn: lumped node mass, kg */
+  double* invm;      /* nn: 1/mass, 0 for mount nodes */
+  int* fix;          /* nfix: the mount nodes */
+  double* xshape;    /* 3 nn: the declared shape, carrier body frame */
+  double* x0;        /* 3 nn: the inflated state, carrier body frame */
+  double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */
+  double mref;       /* gas mass at inflation, kg */
+  double dt_stable;  /* stable explicit step of the fabric (times dt_factor), s */
+  double lmin;       /* shortest characteristic element length, m */
+  double cbound[3];  /* centre and radius of a sphere holding the inflated bag, body frame */
+  double rbound;
+  double strain0;     /* largest yarn strain (Green, warp or weft) of the inflated state */
+  int inflate_steps;  /* relaxation steps the inflation took */
+  double inflate_res; /* its final residual (largest free-node force / pressure force) */
+} urMembrane;
+
+/* per-run scalars at the end of the state array */
+enum {
+  urMEMS_MGAS = 0, /* gas mass, kg */
+  urMEMS_P,        /* absolute pressure at the last force evaluation, Pa */
+  urMEMS_V,        /* gas volume, m^3 */
+  urMEMS_STRAIN,   /* largest yarn strain (Green, warp or weft) at the last force evaluation */
+  urMEMS_EFAB,     /* fabric strain energy at the last force evaluation, J */
+  urMEMS_TFIRST,   /* time of the first-contact snapshot, s (-1: none) */
+  urMEMS_TPEAK,    /* time of the peak-pressure snapshot (in contact), s (-1: none) */
+  urMEMS_PPEAK,    /* that peak absolute pressure, Pa */
+  urMEMS_HFIRST,   /* 3: the head ellipsoid's centre at the first snapshot (world) */
+  urMEMS_HPEAK = urMEMS_HFIRST + 3, /* 3: and at the peak snapshot */
+  urMEMS_N = urMEMS_HPEAK + 3
+};
+
+/* forces and diagnostics of one evaluation */
+typedef struct {
+  double pressure, volume; /* absolute Pa, m^3 */
+  double strain;           /* largest yarn strain (Green, warp or weft) */
+  double efabric;          /* elastic strain energy of the fabric (taut law), J */
+} urMemInfo;
+
+/* the default bag: nylon-6,6 woven fabric and air (uasimpact-model(5), BAGS) */
+void ur_mem_spec_default(urMemSpec* s);
+
+/* check a spec: 0, or -1 with what is wrong in err */
+int ur_mem_spec_check(const urMemSpec* s, char* err, size_t n);
+
+/* mesh, reference metric, masses and stable step of a bag (not inflated: x0 = the declared
+   shape). NULL with a message in err on bad input or no memory. */
+urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n);
+
+/* inflate to the declared pressure and relax until stable (kinetic damping), closed gas; sets
+   x0, pref, vref, mref, strain0. 0, or -1 with err when it does not converge. */
+int ur_mem_inflate(urMembrane* mb, char* err, size_t n);
+
+void ur_mem_free(urMembrane* mb);
+
+/* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
+   (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
+   scalars (urMEMS_N, after 18 nn) */
+size_t ur_mem_state_size(const urMembrane* mb);
+
+/* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->
+   world, c the carrier origin, vc its velocity, w its angular velocity); gas at the inflated
+   state */
+void ur_mem_state_init(const urMembrane* mb, double* st, const double R[9], const double c[3],
+                       const double vc[3], const double w[3]);
+
+/* enclosed volume of positions x (divergence theorem), m^3 */
+double ur_mem_volume(const urMembrane* mb, const double* x);
+
+/* absolute gas pressure at volume V and gas mass mgas (isentropic from the inflated state) */
+double ur_mem_pressure(const urMembrane* mb, double V, double mgas);
+
+/* gas energy relative to the ambient: p V / (gamma - 1) + patm V, J */
+double ur_mem_gas_energy(const urMembrane* mb, double p, double V);
+
+/* fabric and gas forces on every node at the state (x, v) of st into f (3 nn, overwritten);
+   info may be NULL; scalars of st updated (pressure, volume, strain, energy) */
+void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info);
+
+/* Green strain (E11, E22, 2 E12, warp/weft axes) and stress resultant (N/m, after the tension-
+   field reduction, no damping) of triangle t at positions x */
+void ur_mem_tri_state(const urMembrane* mb, const double* x, int t, double e[3], double S[3]);
+
+/* gas leaving through the vents and the fabric in dt at the state's pressure (kg), >= 0 */
+double ur_mem_outflow(const urMembrane* mb, const double* st, double dt);
+
+/* the stable step of the fabric from the reference metric and the material (no dt_factor), s */
+double ur_mem_stable_dt(const urMembrane* mb);
+
+/* kinetic energy of the free nodes, J */
+double ur_mem_kinetic(const urMembrane* mb, const double* st);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

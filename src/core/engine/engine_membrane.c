@@ -1,0 +1,300 @@
+/* engine_membrane.c: the membrane airbags in the multibody engine. ur_model_compile builds and
+ * inflates each membrane bag once (constant model data shared by threads) and turns the bag's
+ * ellipsoid into a bound of the inflated bag (the jump to first contact and the end-of-run
+ * proofs use it). Each step: the loads stage places the mount patch on the carrier (fixed
+ * joint), computes fabric, gas and penalty contact forces of the nodes against the targets (the
+ * person) and supports (the carrier's own bodies) and applies the reactions to their bodies and
+ * the mount forces to the carrier; the accepted step then moves the nodes (symplectic Euler),
+ * in sub-steps when the fabric's stable step is smaller than the multibody step (fabric and gas
+ * forces recomputed each sub-step, contact forces held over the step). Until a target comes
+ * near, the bag rides rigidly in its inflated state (no integration). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "engine_internal.h"
+#include "../membrane/membrane_internal.h"
+
+//---------------------------------- compile -------------------------------------------------------
+
+/* the bag's ellipsoid as a bound of the inflated bag: centre and axes of its box, scaled so that
+   every node lies inside */
+static void bound_geom(urModel* m, urAirbag* b) {
+  const urMembrane* mb = b->mem;
+  urGeom* g = m->geom + b->geom;
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int i = 0; i < mb->nn; i++) {
+    for (int k = 0; k < 3; k++) {
+      lo[k] = fmin(lo[k], mb->x0[3 * i + k]);
+      hi[k] = fmax(hi[k], mb->x0[3 * i + k]);
+    }
+  }
+  double c[3], h[3], s = 0;
+  for (int k = 0; k < 3; k++) {
+    c[k] = 0.5 * (lo[k] + hi[k]);
+    h[k] = fmax(0.5 * (hi[k] - lo[k]), 1e-3);
+  }
+  for (int i = 0; i < mb->nn; i++) {
+    double q = 0;
+    for (int k = 0; k < 3; k++) {
+      double u = (mb->x0[3 * i + k] - c[k]) / h[k];
+      q += u * u;
+    }
+    s = fmax(s, sqrt(q));
+  }
+  static const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, q1[4] = {1, 0, 0, 0};
+  memcpy(g->pos, c, sizeof(c));
+  memcpy(g->quat, q1, sizeof(q1));
+  memcpy(g->gmat, I, sizeof(I));
+  for (int k = 0; k < 3; k++) {
+    g->size[k] = 1.02 * s * h[k];
+  }
+  g->degree = 2;
+  g->rbound = fmax(g->size[0], fmax(g->size[1], g->size[2]));
+}
+
+
+int urm_model_compile(urModel* m) {
+  m->nmemd = 0;
+  for (int i = 0; i < m->nbag; i++) {
+    urAirbag* b = m->bag + i;
+    if (b->type != urBAG_MEMBRANE) {
+      continue;
+    }
+    char err[100];
+    if (!b->mem) {
+      b->mem = ur_mem_build(&b->mspec, err, sizeof(err));
+      if (!b->mem || ur_mem_inflate(b->mem, err, sizeof(err))) {
+        snprintf(m->err, sizeof(m->err), "airbag '%s': %s", b->name, err);
+        return -1;
+      }
+    }
+    b->madr = m->nmemd;
+    m->nmemd += (int)ur_mem_state_size(b->mem);
+    b->nsub = (int)ceil(m->opt.dt / b->mem->dt_stable - 1e-9);
+    if (b->nsub < 1) {
+      b->nsub = 1;
+    }
+    bound_geom(m, b);
+  }
+  return 0;
+}
+
+
+void urm_model_free(urModel* m) {
+  for (int i = 0; i < m->nbag; i++) {
+    ur_mem_free(m->bag[i].mem);
+    m->bag[i].mem = NULL;
+  }
+}
+
+//---------------------------------- loads ---------------------------------------------------------
+
+/* world pose and velocity of body b: rotation, origin, origin velocity, angular velocity */
+static void bodymotion(const urData* d, int b, double R[9], double c[3], double vc[3],
+                       double w[3]) {
+  memcpy(R, d->xmat + 9 * b, 9 * sizeof(double));
+  memcpy(c, d->xpos + 3 * b, 3 * sizeof(double));
+  const double* cv = d->cvel + 6 * b;
+  uru_mulmat3vec(w, R, cv);
+  uru_mulmat3vec(vc, R, cv + 3);
+}
+
+
+/* penalty contact of the free nodes with ellipsoid g; forces added to f and fc, reactions on
+   g's body; the normal force sum and deepest penetration returned */
+static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
+                           const double bc[3], double br, double* depth) {
+  const urMembrane* mb = b->mem;
+  int nn = mb->nn;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
+  const double* gc = d->gxpos + 3 * g;
+  double rg = m->geom[g].rbound, dc[3];
+  urm_sub(dc, gc, bc);
+  *depth = -1;
+  if (urm_dot(dc, dc) > (br + rg) * (br + rg)) {
+    return 0;
+  }
+  urEllipsoid e;
+  ur_geom_ellipsoid(m, d, g, &e);
+  int body = m->geom[g].body;
+  double R[9], o[3], vo[3], w[3], fsum = 0;
+  bodymotion(d, body, R, o, vo, w);
+  for (int i = 0; i < nn; i++) {
+    if (mb->invm[i] == 0) {
+      continue;
+    }
+    const double* xi = x + 3 * i;
+    double r[3];
+    urm_sub(r, xi, gc);
+    if (urm_dot(r, r) >= rg * rg) {
+      continue;
+    }
+    double fi[3];
+    double dep =
+        urm_contact_node(&mb->spec, m->opt.dt, &e, o, vo, w, xi, v + 3 * i, mb->mass[i], fi);
+    if (dep > *depth) {
+      *depth = dep;
+    }
+    if (fi[0] == 0 && fi[1] == 0 && fi[2] == 0) {
+      continue;
+    }
+    double rf[3] = {-fi[0], -fi[1], -fi[2]};
+    for (int k = 0; k < 3; k++) {
+      f[3 * i + k] += fi[k];
+      fc[3 * i + k] += fi[k];
+    }
+    ur_apply_force(m, d, body, rf, xi);
+    // normal part: along the outward normal, i.e. the force's projection on it; friction is
+    // at most mu of it, so the norm bounds it within 1 + mu
+    fsum += sqrt(urm_dot(fi, fi)) / sqrt(1 + mb->spec.mu * mb->spec.mu);
+  }
+  return fsum;
+}
+
+
+void urm_bag_loads(const urModel* m, urData* d, int ib) {
+  const urAirbag* b = m->bag + ib;
+  const urMembrane* mb = b->mem;
+  urBagData* bd = d->bag + ib;
+  int nn = mb->nn, cb = m->geom[b->geom].body;
+  double* st = d->mem + b->madr;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
+  double R[9], c[3], vc[3], w[3];
+  bodymotion(d, cb, R, c, vc, w);
+  bd->active = 0;
+  bd->force = 0;
+  for (int t = 0; t < b->ntarget; t++) {
+    bd->ftgt[t] = 0;
+    bd->rate[t] = 0;
+    bd->depth[t] = -1;
+  }
+
+  // the bag's bound now (world)
+  double bc[3];
+  const double* cb0 = mb->cbound;
+  for (int k = 0; k < 3; k++) {
+    bc[k] = c[k] + R[3 * k] * cb0[0] + R[3 * k + 1] * cb0[1] + R[3 * k + 2] * cb0[2];
+  }
+  double br = 1.5 * mb->rbound + 0.01;
+
+  // carried rigidly until a target comes near its bound
+  if (!bd->placed || !bd->live) {
+    int near = 0;
+    for (int t = 0; t < b->ntarget && !near; t++) {
+      int g = b->target[t];
+      double dc[3];
+      urm_sub(dc, d->gxpos + 3 * g, bc);
+      double r = mb->rbound + m->geom[g].rbound + 0.05;
+      near = urm_dot(dc, dc) < r * r;
+    }
+    ur_mem_state_init(mb, st, R, c, vc, w);
+    bd->placed = 1;
+    bd->live = near;
+    if (!near) {
+      bd->pressure = mb->pref;
+      bd->volume = mb->vref;
+      bd->dv = 0;
+      bd->strain = mb->strain0;
+      return;
+    }
+  }
+
+  // the mount patch moves with the carrier
+  for (int j = 0; j < mb->nfix; j++) {
+    int i = mb->fix[j];
+    const double* p = mb->x0 + 3 * i;
+    double r[3], wr[3];
+    for (int k = 0; k < 3; k++) {
+      r[k] = R[3 * k] * p[0] + R[3 * k + 1] * p[1] + R[3 * k + 2] * p[2];
+    }
+    urm_cross(wr, w, r);
+    for (int k = 0; k < 3; k++) {
+      x[3 * i + k] = c[k] + r[k];
+      v[3 * i + k] = vc[k] + wr[k];
+    }
+  }
+
+  // fabric and gas, then contacts
+  ur_mem_forces(mb, st, f, NULL);
+  memset(fc, 0, 3 * (size_t)nn * sizeof(double));
+  for (int t = 0; t < b->ntarget; t++) {
+    double dep;
+    double fs = contact_geom(m, d, b, st, b->target[t], bc, br, &dep);
+    bd->depth[t] = dep;
+    bd->ftgt[t] = fs;
+    bd->force += fs;
+    if (fs > 0) {
+      bd->active = 1;
+    }
+  }
+  for (int t = 0; t < b->nsupport; t++) {
+    double dep;
+    contact_geom(m, d, b, st, b->support[t], bc, br, &dep);
+  }
+
+  // the mount patch's forces on the carrier
+  for (int j = 0; j < mb->nfix; j++) {
+    int i = mb->fix[j];
+    ur_apply_force(m, d, cb, f + 3 * i, x + 3 * i);
+  }
+  bd->pressure = sc[urMEMS_P];
+  bd->volume = sc[urMEMS_V];
+  bd->dv = mb->vref - sc[urMEMS_V];
+  bd->strain = sc[urMEMS_STRAIN];
+}
+
+//---------------------------------- advance -------------------------------------------------------
+
+void urm_bags_advance(const urModel* m, urData* d) {
+  for (int ib = 0; ib < m->nbag; ib++) {
+    const urAirbag* b = m->bag + ib;
+    if (b->type != urBAG_MEMBRANE || !d->bag[ib].live) {
+      continue;
+    }
+    const urMembrane* mb = b->mem;
+    int nn = mb->nn;
+    double* st = d->mem + b->madr;
+    double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
+    // snapshots for the plot: at first contact with a target, at the peak pressure in contact
+    if (d->bag[ib].active) {
+      int hg = m->roles.head;
+      double hc[3] = {0, 0, 0};
+      if (hg >= 0) {
+        memcpy(hc, d->gxpos + 3 * hg, sizeof(hc));
+      }
+      if (sc[urMEMS_TFIRST] < 0) {
+        memcpy(st + 12 * nn, x, 3 * (size_t)nn * sizeof(double));
+        sc[urMEMS_TFIRST] = d->time;
+        memcpy(sc + urMEMS_HFIRST, hc, sizeof(hc));
+      }
+      if (sc[urMEMS_P] > sc[urMEMS_PPEAK]) {
+        memcpy(st + 15 * nn, x, 3 * (size_t)nn * sizeof(double));
+        sc[urMEMS_TPEAK] = d->time;
+        sc[urMEMS_PPEAK] = sc[urMEMS_P];
+        memcpy(sc + urMEMS_HPEAK, hc, sizeof(hc));
+      }
+    }
+    int nsub = (int)ceil(m->opt.dt / mb->dt_stable - 1e-9);
+    if (nsub < 1) {
+      nsub = 1;
+    }
+    double h = m->opt.dt / nsub;
+    for (int s = 0; s < nsub; s++) {
+      if (s > 0) {
+        ur_mem_forces(mb, st, f, NULL);
+        for (int k = 0; k < 3 * nn; k++) {
+          f[k] += fc[k];
+        }
+      }
+      for (int i = 0; i < nn; i++) {
+        double im = mb->invm[i];
+        for (int k = 0; k < 3; k++) {
+          v[3 * i + k] += h * im * f[3 * i + k];
+          x[3 * i + k] += h * v[3 * i + k];
+        }
+      }
+    }
+    sc[urMEMS_MGAS] -= ur_mem_outflow(mb, st, m->opt.dt);
+  }
+}

@@ -1,0 +1,45 @@
+/* membrane_internal.h: what the files of the membrane room (src/core/membrane) share and the
+ * engine's airbag dispatch calls: small vector helpers, the fabric law of one triangle, the
+ * penalty contact of one node with an ellipsoid (the engine's glue, engine/engine_membrane.c,
+ * includes it too). Not public API. */
+#ifndef UASIMPACT_MEMBRANE_INTERNAL_H
+#define UASIMPACT_MEMBRANE_INTERNAL_H
+
+#include <math.h>
+#include "uasimpact/contact.h"
+#include "uasimpact/engine.h"
+#include "uasimpact/membrane.h"
+
+#define urMEM_RS 287.05 /* specific gas constant of air, J/(kg K) */
+
+static inline double urm_dot(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+static inline void urm_cross(double o[3], const double a[3], const double b[3]) {
+  o[0] = a[1] * b[2] - a[2] * b[1];
+  o[1] = a[2] * b[0] - a[0] * b[2];
+  o[2] = a[0] * b[1] - a[1] * b[0];
+}
+static inline void urm_sub(double o[3], const double a[3], const double b[3]) {
+  o[0] = a[0] - b[0];
+  o[1] = a[1] - b[1];
+  o[2] = a[2] - b[2];
+}
+
+/* the stress resultant (N/m: S11, S22, S12 in the material axes) of Green strain e (E11, E22,
+   2 E12) by the taut orthotropic law with the locking shear law, then the tension-field
+   reduction; the elastic energy density (J/m^2) of the reduced state in *w (may be NULL) */
+void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w);
+
+/* the Green strain (E11, E22, 2 E12) and the deformation gradient F (3x2, column-major: F[0..2]
+   the first column) of triangle t at positions x */
+void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], double e[3]);
+
+/* the penalty contact of a node (position x, velocity v, mass m) with ellipsoid e moving with
+   the rigid velocity (vo at point o, angular w): force on the node in f (3), returns the
+   penetration (> 0 in contact, else the force is zero) */
+double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, const double o[3],
+                        const double vo[3], const double w[3], const double x[3], const double v[3],
+                        double m, double f[3]);
+
+#endif
