@@ -74,6 +74,17 @@ check quant_cols cond 'grep -q "^n,mean,sd,lo95,hi95,p10,p50,p90$" "$TMP/out" &&
   [ "$(tcol "$TMP/out" n, 3 "" lo95)" = 0 ] && grep -q "^# few samples: n = 3" "$TMP/out" &&
   grep -q "^# thin tails: p10, p50, p90" "$TMP/out"'
 check quant_order cond 'awk -F, "/^3,/ { exit !(\$6 <= \$7 && \$7 <= \$8) }" "$TMP/out"'
+# export montecarlo: the existing columns in their order, then the summary montecarlo printed
+# (mean, sd, lo95, hi95 and the mc_quantiles columns), equal as text on every sample row
+runs "set format csv; set step 0.6; case A; set p_chute 0.8; dist wind uniform 0 10
+  set mc_quantiles 0.1,0.5,0.9; montecarlo 5; export montecarlo $TMP/mc5.csv"
+SUM=$(grep "^5," "$TMP/out" | cut -d, -f2-)
+check export_quant_header grep -q "^sample,wind,chute,bag_bottom,branch,q,q_unmitigated,ca_annexf,ca_annexf_unmitigated,mean,sd,lo95,hi95,p10,p50,p90$" "$TMP/mc5.csv"
+check export_quant_values cond '[ -n "$SUM" ] && [ "$(grep -c "^[0-9]" "$TMP/mc5.csv")" -eq 5 ] &&
+  [ "$(grep "^[0-9]" "$TMP/mc5.csv" | cut -d, -f10- | sort -u)" = "$SUM" ]'
+# the quantile columns of the export are the samples' own: p50 of 5 values is the third
+check export_quant_median cond 'M=$(grep "^[0-9]" "$TMP/mc5.csv" | cut -d, -f6 | sort -g | sed -n 3p)
+  near "$(grep "^0," "$TMP/mc5.csv" | cut -d, -f15)" "$M" 1e-5'
 runs "set format csv; set step 0.3; case A; set p_chute 0.8; dist wind uniform 0 10; montecarlo 3; sora mc"
 check sora_mc_truncated cond '[ "$(tcol "$TMP/out" case, A q lo95)" = 0 ] && [ "$(tcol "$TMP/out" case, A q red_lo95)" = 0 ] &&
   grep -q "truncated: an interval reached below 0 and is held at 0" "$TMP/out" && grep -q "few samples: the intervals" "$TMP/out"'
