@@ -77,7 +77,8 @@ typedef struct {
   int ua_dim_set;
   double ua_speed; /* m/s: maximum commanded airspeed for Table 2, when set */
   int ua_speed_set;
-  int m2_baseline;           /* 0: Q unmitigated, 1: Table B.8's area of the column */
+  /* sora's M2 baseline: "" (unmitigated), "table_b8" or "design:NAME" (ura_m2_baseline) */
+  char m2_baseline[urNAMELEN + 8];
   double quant[uraMAXBANDS]; /* montecarlo's quantiles of Q (probabilities) */
   int nquant;
   double surface_tol;   /* montecarlo's tolerance on the surface's relative error; 0: none */
@@ -294,7 +295,9 @@ typedef struct {
   const char* unit;
   double min, max; /* accepted closed range (numbers, list items); STR: size */
   const char* help;
-  const char* const* choices; /* uraP_ENUM: NULL-terminated names */
+  /* uraP_ENUM: NULL-terminated names; uraP_STR: words completion offers, the first shown for
+     the empty value (NULL: none, the empty value shows as default) */
+  const char* const* choices;
   /* uraP_STR: checks a value and writes what is kept into norm (n bytes); 0, or -1 with the
      failure recorded (NULL: any text of the size) */
   int (*check)(struct uraCtx* c, const char* value, char* norm, size_t n);
@@ -304,6 +307,14 @@ typedef struct {
 extern const uraParam ura_params[];
 const uraParam* ura_param_find(const char* name);
 int ura_param_set(uraCtx* c, const uraParam* p, const char* value);
+/* sora's M2 baseline: uraM2_UNMITIGATED, uraM2_TABLE_B8 or uraM2_DESIGN (then *design, when
+   not NULL, points at the design's name in r) */
+enum {
+  uraM2_UNMITIGATED = 0,
+  uraM2_TABLE_B8,
+  uraM2_DESIGN
+};
+int ura_m2_baseline(const uraRiskSet* r, const char** design);
 /* the value as text (without unit) into buf, exact (round-trips through set); a derivable
    value that is not set prints as auto */
 void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n);

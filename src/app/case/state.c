@@ -2,6 +2,7 @@
  * completion (one row per setting: name, kind, unit, range, help), their defaults, the injury
  * settings through set and show, and the risk settings' defaults. The live case as a whole
  * (loading a case, a fresh context) is case.c. */
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <stdarg.h>
@@ -20,7 +21,38 @@ static const char* const onoff_names[] = {"off", "on", NULL};
 static const char* const descent_names[] = {"model", "paper", NULL};
 static const char* const tau_names[] = {"rmax", "top", NULL};
 static const char* const mc_method_names[] = {"surface", "exact", NULL};
-static const char* const m2_baseline_names[] = {"unmitigated", "table_b8", NULL};
+static const char* const m2_baseline_names[] = {"unmitigated", "table_b8", "design:", NULL};
+
+/* set m2_baseline: unmitigated (kept as ""), table_b8, or design:NAME with NAME a design's name
+   as 'design save' accepts it (whether it is kept is sora's to check: a session file may set
+   this before it saves the design it names, and 'design delete' may come after) */
+static int m2_baseline_check(uraCtx* c, const char* value, char* norm, size_t n) {
+  const char* name = strncmp(value, "design:", 7) ? NULL : value + 7;
+  int ok = !strcmp(value, "unmitigated") || !strcmp(value, "table_b8");
+  if (name && (isalpha((unsigned char)name[0]) || name[0] == '_') && strlen(name) < urNAMELEN) {
+    ok = 1;
+    for (const char* q = name; *q; q++) {
+      ok &= isalnum((unsigned char)*q) || *q == '_' || *q == '.' || *q == '-';
+    }
+  }
+  if (!ok) {
+    return ura_fail(c,
+                    "set m2_baseline: '%s' is not accepted; accepted: unmitigated or table_b8 or "
+                    "design:NAME (a design that 'design save NAME' keeps)",
+                    value);
+  }
+  snprintf(norm, n, "%s", strcmp(value, "unmitigated") ? value : "");
+  return 0;
+}
+
+int ura_m2_baseline(const uraRiskSet* r, const char** design) {
+  if (!strcmp(r->m2_baseline, "table_b8")) return uraM2_TABLE_B8;
+  if (!strncmp(r->m2_baseline, "design:", 7)) {
+    if (design) *design = r->m2_baseline + 7;
+    return uraM2_DESIGN;
+  }
+  return uraM2_UNMITIGATED;
+}
 
 /* one row per settable quantity: name, kind, offset, derived flag, unit, range, help */
 const uraParam ura_params[] = {
@@ -135,11 +167,12 @@ const uraParam ura_params[] = {
      "maximum commanded airspeed for SORA 2.5 Table 2 (sora: the designer's figure); derived: the "
      "unmitigated impact speed, with a note ('set ua_max_speed auto')",
      NULL},
-    {"m2_baseline", uraP_ENUM, OFF(risk.m2_baseline), 0, "", 0, 0,
+    {"m2_baseline", uraP_STR, OFF(risk.m2_baseline), 0, "", 0, urNAMELEN + 8,
      "baseline of sora's M2 reduction factor: unmitigated (Q of the same drone without parachute "
-     "and airbag) or table_b8 (Annex B Table B.8's critical area of the Table 2 column; warns of "
-     "double counting with Step #2)",
-     m2_baseline_names},
+     "and airbag), table_b8 (Annex B Table B.8's critical area of the Table 2 column; warns of "
+     "double counting with Step #2) or design:NAME (Q of a design 'design save NAME' kept, its "
+     "grids under the live deployment mixture)",
+     m2_baseline_names, m2_baseline_check},
     {"mc_quantiles", uraP_LIST, OFF(risk.quant), 0, "", 0.0001, 0.9999,
      "quantiles of Q that montecarlo prints as columns p5, p50, ... (probabilities in (0, 1))",
      NULL, NULL, OFF(risk.nquant)},
@@ -296,7 +329,10 @@ void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
   case uraP_CASE: snprintf(buf, n, "%s", c->st.casename); break;
   case uraP_STR:
     snprintf(buf, n, "%s",
-             *(base + p->off) ? base + p->off : (!strcmp(p->name, "output") ? "none" : "default"));
+             *(base + p->off)             ? base + p->off
+             : p->choices                 ? p->choices[0]
+             : !strcmp(p->name, "output") ? "none"
+                                          : "default");
     break;
   case uraP_ENUM: snprintf(buf, n, "%s", p->choices[*(const int*)(base + p->off)]); break;
   case uraP_LIST: {

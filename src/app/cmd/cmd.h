@@ -80,6 +80,9 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
 int ura_cmd_design(uraCtx* c, int argc, char** argv); /* designs.c */
 /* the saved designs as commands, for save session (designs.c) */
 void ura_designs_write(uraCtx* c, FILE* f, void (*write_state)(uraCtx*, FILE*));
+/* the state a design keeps, or NULL; the kept names as "a, b" ("none" without any) */
+const uraState* ura_designs_state(uraCtx* c, const char* name);
+void ura_designs_names(uraCtx* c, char* buf, size_t n);
 /* sweeps over any numeric parameter (sweep_param.c): sweep NAME LIST [UNIT]; their rows for
    sweep show (t: its table, columns case,sweep,wind,face,speed,angle,step,q,changes,value,
    unit); forget them (plot sweep NAME: ui.h) */
@@ -197,9 +200,10 @@ const char* ura_sora25_col_name(int col);
 void ura_sora25_cells(uraTable* t, uraSora25* s, int igrc_quant, int ok, double ca);
 /* sora's notes on those columns */
 void ura_sora25_notes(uraTable* t, const uraSora25* s);
-/* the M2 evidence table from sora's four figures (as ura_mc_sora fills them) */
+/* the M2 evidence table from sora's four figures (as ura_mc_sora fills them); named: with
+   m2_baseline design:NAME, that design's Q and Annex F area (the baseline), else NULL */
 int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], const char* design,
-                        int from_mc);
+                        int from_mc, const double* named);
 /* eq. (1.1) per case and density band: n rows of Q with interval, and where they come from */
 void ura_eq11_table(uraCtx* c, int n, const char* const* label, const double* q, const double* lo,
                     const double* hi, const char* source);

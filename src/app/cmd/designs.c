@@ -232,3 +232,15 @@ void ura_designs_write(uraCtx* c, FILE* f, void (*write_state)(uraCtx*, FILE*)) 
   }
   c->st = live;
 }
+
+const uraState* ura_designs_state(uraCtx* c, const char* name) {
+  const uraDesign* d = find(c, name);
+  return d ? &d->st : NULL;
+}
+
+void ura_designs_names(uraCtx* c, char* buf, size_t n) {
+  size_t k = (size_t)snprintf(buf, n, "%s", c->ndesign ? "" : "none");
+  for (int i = 0; i < c->ndesign && k < n; i++) {
+    k += (size_t)snprintf(buf + k, n - k, "%s%s", i ? ", " : "", c->design[i].name);
+  }
+}

@@ -446,12 +446,19 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
       r->ua_speed_set ? "as set (ua_max_speed)"
                       : "the unmitigated impact speed standing in for the designer's maximum "
                         "commanded airspeed");
+  const char* m2_name = "";
+  int m2 = ura_m2_baseline(r, &m2_name);
+  char m2_text[120];
+  snprintf(m2_text, sizeof m2_text,
+           "design %s (its grids under the live deployment mixture, wind, face, altitude and step)",
+           m2_name);
   elf(ul, "li",
       "M2 baseline: %s. Only integrity criterion #1's reduction is assessed; M1 is not applied; "
       "the final GRC is floored at the column's controlled-ground-area value.",
-      r->m2_baseline ? "Annex B Table B.8's critical area of the column (warned: double counting "
-                       "with Step #2)"
-                     : "the same drone without parachute and airbag (case C)");
+      m2 == uraM2_TABLE_B8 ? "Annex B Table B.8's critical area of the column (warned: double "
+                             "counting with Step #2)"
+      : m2 == uraM2_DESIGN ? m2_text
+                           : "the same drone without parachute and airbag (case C)");
   el(ul, "li",
      "What the simulation cannot show: that the devices deploy (activation tests, reliability "
      "evidence), automatic activation (required for high), that a failure of the mitigation does "

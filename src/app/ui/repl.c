@@ -136,7 +136,9 @@ static char** complete(const char* text, int start, int end) {
     }
   } else if (nw == 2 && cmd->compl == uraC_PARAM && !strcmp(cmd->name, "set")) {
     const uraParam* p = ura_param_find(words[1]);
-    for (int i = 0; p && p->kind == uraP_ENUM && p->choices[i]; i++) add(p->choices[i]);
+    for (int i = 0;
+         p && (p->kind == uraP_ENUM || p->kind == uraP_STR) && p->choices && p->choices[i]; i++)
+      add(p->choices[i]);
     if (p && p->setoff) add("auto");
   } else if (nw == 2 && cmd->compl == uraC_NONE) {
     keywords(args, words[1]);

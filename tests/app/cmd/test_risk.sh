@@ -98,7 +98,7 @@ SD=$(grep '^400,' "$TMP/out" | cut -d, -f3)
 sed -n '/^branch,weight,q$/,$p' "$TMP/out" >"$TMP/mcd"
 MIX=$(col "$TMP/mcd" mixed q)
 check mcd_rows cond '[ "$(grep -vc "^#" "$TMP/s.csv")" -eq 401 ] &&
-  grep -q "^sample,chute,bag_bottom,branch,q,q_unmitigated,ca_annexf,ca_annexf_unmitigated$" "$TMP/s.csv"'
+  grep -q "^sample,chute,bag_bottom,branch,q,q_unmitigated,ca_annexf,ca_annexf_unmitigated,mean,sd,lo95,hi95,p5,p50,p95$" "$TMP/s.csv"'
 check mcd_mean cond 'near "$(awk -F, "/^[0-9]/ { s += \$5; n++ } END { printf \"%.12g\", s / n }" "$TMP/s.csv")" "$MEAN" 1e-6'
 check mcd_branches awk -F, -v a="$(col "$TMP/mcd" chute+bag_bottom q)" -v b="$(col "$TMP/mcd" chute q)" \
   -v c="$(col "$TMP/mcd" none q)" '/^[0-9]/ { q = $4 == "chute+bag_bottom" ? a : $4 == "chute" ? b : c

@@ -48,6 +48,31 @@ runs "set format csv; set step 0.3; case A; set p_chute 0.9; set pop_density 500
 check risk_eq11 cond 'near "$(tcol "$TMP/out" case,density none 5000 q)" "$QC" 1e-5 &&
   near "$(tcol "$TMP/out" case,density A 5000 q)" "$QA" 1e-5'
 
+# ---- M2 against a named design: factor = Q(named) / Q(live), each Q the mixed Q of its own
+# grids under the same deployment mixture, as risk prints them (relative tolerance 1e-4: risk
+# prints Q to 6 decimals, about 0.1 to 0.4 m^2 here, so the ratio of the printed values is good
+# to about 1e-5) ----
+runs "set format csv; set step 0.3; case B; set p_chute 0.9; design save plainB; risk
+  case A; set p_chute 0.9; risk; set m2_baseline design:plainB; sora"
+cp "$TMP/out" "$TMP/nd"
+QB=$(grep "^mixed," "$TMP/nd" | sed -n 1p | cut -d, -f3)
+QL=$(grep "^mixed," "$TMP/nd" | sed -n 2p | cut -d, -f3)
+FN=$(tcol "$TMP/nd" quantity, q "" factor)
+check m2_named_factor cond '[ "$RC" -eq 0 ] && [ -n "$QB" ] && [ -n "$QL" ] && [ -n "$FN" ] &&
+  near "$FN" "$(awk -v b="$QB" -v l="$QL" "BEGIN { print b / l }")" 1e-4 &&
+  near "$(tcol "$TMP/nd" quantity, q "" baseline)" "$QB" 1e-5 && near "$(tcol "$TMP/nd" quantity, q "" design)" "$QL" 1e-5'
+# a factor of 1 against itself: the named design is the live one saved
+check m2_named_self cond 'runs "set format csv; set step 0.3; case A; design save me; set m2_baseline design:me; sora" &&
+  [ "$(tcol "$TMP/out" quantity, q "" factor)" = 1 ] && grep -q "^# factor = baseline / design: design me " "$TMP/out"'
+check m2_named_show cond 'run -c "set m2_baseline design:plainB; show m2_baseline; save session $TMP/nd.ses" &&
+  grep -q "^m2_baseline *design:plainB" "$TMP/out" && grep -q "^set m2_baseline .design:plainB.$" "$TMP/nd.ses"'
+runs "set step 0.3; case B; design save plainB; design save other; case A; set m2_baseline design:plainb; sora"
+check m2_named_unknown cond 'fails_with "sora: m2_baseline design:plainb: no design .plainb.; saved designs: plainB, other" && [ ! -s "$TMP/out" ]'
+run -c 'set m2_baseline design:nosuch; sora'
+check m2_named_none fails_with "no design 'nosuch'; saved designs: none"
+run -c 'set m2_baseline design:9x'
+check m2_named_badname fails_with "set m2_baseline: 'design:9x' is not accepted; accepted: unmitigated or table_b8 or design:NAME"
+
 # ---- clamping ----
 run -c 'set format csv; set step 0.3; case C; set pop_density 0.001; sora'
 check clamp_low cond 'awk "BEGIN { exit !($(tcol "$TMP/out" case, C q igrc_raw) < 1) }" &&
@@ -74,6 +99,17 @@ check quant_cols cond 'grep -q "^n,mean,sd,lo95,hi95,p10,p50,p90$" "$TMP/out" &&
   [ "$(tcol "$TMP/out" n, 3 "" lo95)" = 0 ] && grep -q "^# few samples: n = 3" "$TMP/out" &&
   grep -q "^# thin tails: p10, p50, p90" "$TMP/out"'
 check quant_order cond 'awk -F, "/^3,/ { exit !(\$6 <= \$7 && \$7 <= \$8) }" "$TMP/out"'
+# export montecarlo: the existing columns in their order, then the summary montecarlo printed
+# (mean, sd, lo95, hi95 and the mc_quantiles columns), equal as text on every sample row
+runs "set format csv; set step 0.6; case A; set p_chute 0.8; dist wind uniform 0 10
+  set mc_quantiles 0.1,0.5,0.9; montecarlo 5; export montecarlo $TMP/mc5.csv"
+SUM=$(grep "^5," "$TMP/out" | cut -d, -f2-)
+check export_quant_header grep -q "^sample,wind,chute,bag_bottom,branch,q,q_unmitigated,ca_annexf,ca_annexf_unmitigated,mean,sd,lo95,hi95,p10,p50,p90$" "$TMP/mc5.csv"
+check export_quant_values cond '[ -n "$SUM" ] && [ "$(grep -c "^[0-9]" "$TMP/mc5.csv")" -eq 5 ] &&
+  [ "$(grep "^[0-9]" "$TMP/mc5.csv" | cut -d, -f10- | sort -u)" = "$SUM" ]'
+# the quantile columns of the export are the samples' own: p50 of 5 values is the third
+check export_quant_median cond 'M=$(grep "^[0-9]" "$TMP/mc5.csv" | cut -d, -f6 | sort -g | sed -n 3p)
+  near "$(grep "^0," "$TMP/mc5.csv" | cut -d, -f15)" "$M" 1e-5'
 runs "set format csv; set step 0.3; case A; set p_chute 0.8; dist wind uniform 0 10; montecarlo 3; sora mc"
 check sora_mc_truncated cond '[ "$(tcol "$TMP/out" case, A q lo95)" = 0 ] && [ "$(tcol "$TMP/out" case, A q red_lo95)" = 0 ] &&
   grep -q "truncated: an interval reached below 0 and is held at 0" "$TMP/out" && grep -q "few samples: the intervals" "$TMP/out"'

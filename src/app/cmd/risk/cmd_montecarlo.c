@@ -714,15 +714,34 @@ static int cmp_q(const void* a, const void* b) {
   return x < y ? -1 : x > y;
 }
 
+/* the summary montecarlo prints: the interval of the mean truncated at Q >= 0 (1 when it was),
+   each mc_quantiles quantile of Q into qv (NAN without memory) and its column name into qname */
+static int mc_tails(const struct uraMc* m, const uraRiskSet* rs, double* lo, double* hi, double* qv,
+                    char (*qname)[24]) {
+  *lo = m->st.lo95;
+  *hi = m->st.hi95;
+  int clip = ur_interval_clip(lo, hi, 0, INFINITY);
+  double* sorted = malloc((size_t)m->n * sizeof *sorted);
+  if (sorted) {
+    memcpy(sorted, m->q, (size_t)m->n * sizeof *sorted);
+    qsort(sorted, (size_t)m->n, sizeof *sorted, cmp_q);
+  }
+  for (int j = 0; j < rs->nquant; j++) {
+    snprintf(qname[j], sizeof qname[j], "p%g", 100 * rs->quant[j]);
+    qv[j] = sorted ? ur_quantile_sorted(sorted, m->n, rs->quant[j]) : NAN;
+  }
+  free(sorted);
+  return clip;
+}
+
 static void mc_summary(uraCtx* c) {
   struct uraMc* m = c->mc;
   const uraRiskSet* rs = &c->st.risk;
   char buf[1000], qname[uraMAXBANDS][24];
+  double lo, hi, qv[uraMAXBANDS];
+  int clip = mc_tails(m, rs, &lo, &hi, qv, qname), thin = 0;
   const char* cols[5 + uraMAXBANDS] = {"n", "mean", "sd", "lo95", "hi95"};
-  for (int j = 0; j < rs->nquant; j++) {
-    snprintf(qname[j], sizeof qname[j], "p%g", 100 * rs->quant[j]);
-    cols[5 + j] = qname[j];
-  }
+  for (int j = 0; j < rs->nquant; j++) cols[5 + j] = qname[j];
   uraTable* t = ura_table_new(5 + rs->nquant, cols);
   ura_table_note(t,
                  "Q of case %s over %d samples (seed %.0f; sample i depends on (seed, i) "
@@ -748,23 +767,17 @@ static void mc_summary(uraCtx* c) {
   if (!m->nin && k < sizeof buf) snprintf(buf + k, sizeof buf - k, "no input drawn");
   ura_table_note(t, "%s", buf);
   if (m->dep.chute) {
-    double r, lo, hi;
-    if (ur_mc_ratio(m->q_c, m->q, m->n, &r, &lo, &hi) == 0) {
+    double r, rlo, rhi;
+    if (ur_mc_ratio(m->q_c, m->q, m->n, &r, &rlo, &rhi) == 0) {
       ura_table_note(t,
                      "unmitigated (no parachute, no airbag) at the same samples: mean Q %.6g "
                      "m^2, reduction factor %.4g (95 %% interval %.4g..%.4g; 'sora mc')",
-                     mean_of(m->q_c, m->n), r, lo, hi);
+                     mean_of(m->q_c, m->n), r, rlo, rhi);
     }
   }
   /* the tails: quantiles of Q; the interval of the mean truncated at Q >= 0 */
-  double lo = m->st.lo95, hi = m->st.hi95, *sorted = malloc((size_t)m->n * sizeof *sorted);
-  int clip = ur_interval_clip(&lo, &hi, 0, INFINITY), thin = 0;
   char thin_names[200] = "";
   size_t tk = 0;
-  if (sorted) {
-    memcpy(sorted, m->q, (size_t)m->n * sizeof *sorted);
-    qsort(sorted, (size_t)m->n, sizeof *sorted, cmp_q);
-  }
   for (int j = 0; j < rs->nquant; j++) {
     if (ur_quantile_thin(m->n, rs->quant[j]) && tk < sizeof thin_names) {
       tk += (size_t)snprintf(thin_names + tk, sizeof thin_names - tk, "%s%s", thin ? ", " : "",
@@ -800,10 +813,7 @@ static void mc_summary(uraCtx* c) {
   ura_table_cell(t, "%.6g", m->st.sd);
   ura_table_cell(t, "%.6g", lo);
   ura_table_cell(t, "%.6g", hi);
-  for (int j = 0; j < rs->nquant; j++) {
-    ura_table_cell(t, "%.6g", sorted ? ur_quantile_sorted(sorted, m->n, rs->quant[j]) : NAN);
-  }
-  free(sorted);
+  for (int j = 0; j < rs->nquant; j++) ura_table_cell(t, "%.6g", qv[j]);
   ura_table_print(c, t);
 }
 
@@ -829,7 +839,11 @@ static int mc_shares(uraCtx* c) {
 static int mc_samples(uraCtx* c) {
   struct uraMc* m = c->mc;
   if (!m) return ura_fail(c, "montecarlo samples: no montecarlo yet; run 'montecarlo N'");
-  const char* cols[MAXIN + 6];
+  const uraRiskSet* rs = &c->st.risk;
+  const char* cols[MAXIN + 11 + uraMAXBANDS];
+  char qname[uraMAXBANDS][24];
+  double lo, hi, qv[uraMAXBANDS];
+  mc_tails(m, rs, &lo, &hi, qv, qname);
   int nc = 0;
   cols[nc++] = "sample";
   for (int k = 0; k < m->nin; k++) cols[nc++] = m->name[k];
@@ -838,11 +852,18 @@ static int mc_samples(uraCtx* c) {
   cols[nc++] = "q_unmitigated";
   cols[nc++] = "ca_annexf";
   cols[nc++] = "ca_annexf_unmitigated";
+  cols[nc++] = "mean";
+  cols[nc++] = "sd";
+  cols[nc++] = "lo95";
+  cols[nc++] = "hi95";
+  for (int j = 0; j < rs->nquant; j++) cols[nc++] = qname[j];
   uraTable* t = ura_table_new(nc, cols);
   ura_table_note(t,
                  "the %d samples of the last montecarlo of case %s (seed %.0f): drawn inputs, "
                  "deployment outcomes (1 deployed), the branch, Q (m^2), Q without any device, "
-                 "and both Annex F critical areas (m^2)",
+                 "and both Annex F critical areas (m^2); then, the same on every row, the run's "
+                 "summary as montecarlo prints it: mean, sd, lo95..hi95 (the interval of the "
+                 "mean, truncated at 0) and the quantiles of Q (mc_quantiles)",
                  m->n, m->casename, m->seed);
   char name[64];
   for (int i = 0; i < m->n; i++) {
@@ -854,6 +875,11 @@ static int mc_samples(uraCtx* c) {
     ura_table_cell(t, "%.9g", m->q_c[i]);
     ura_table_cell(t, "%.9g", m->ca[i]);
     ura_table_cell(t, "%.9g", m->ca_c[i]);
+    ura_table_cell(t, "%.6g", m->st.mean);
+    ura_table_cell(t, "%.6g", m->st.sd);
+    ura_table_cell(t, "%.6g", lo);
+    ura_table_cell(t, "%.6g", hi);
+    for (int j = 0; j < rs->nquant; j++) ura_table_cell(t, "%.6g", qv[j]);
   }
   ura_table_print(c, t);
   return 0;

@@ -221,6 +221,55 @@ static void sora_flag_notes(uraTable* t, const soraFlags* fl, int nsamples) {
   }
 }
 
+/* the design that m2_baseline design:NAME names, or NULL with one line listing the kept ones */
+static const uraState* named_design(uraCtx* c, const char* name) {
+  const uraState* ds = ura_designs_state(c, name);
+  if (!ds) {
+    char names[uraERRLEN / 2];
+    ura_designs_names(c, names, sizeof names);
+    ura_fail(c,
+             "sora: m2_baseline design:%s: no design '%s'; saved designs: %s ('design save NAME' "
+             "keeps the live case)",
+             name, name, names);
+  }
+  return ds;
+}
+
+/* the named design's Q mixed over the deployment branches (q[0]) and its Annex F area mixed
+   over the parachute (q[1]), as run_branches computes the live design's: its model, devices and
+   drone at the live wind, face, altitude, step and risk settings (p_chute, p_bag, h_chute_min);
+   the live state is restored */
+static int named_figures(uraCtx* c, const uraState* ds, double q[2]) {
+  uraState* keep = malloc(2 * sizeof *keep);
+  if (!keep) return ura_fail(c, "sora: out of memory");
+  uraState* ns = keep + 1;
+  *keep = c->st;
+  *ns = *ds;
+  ns->descent.wind = keep->descent.wind;
+  ns->descent.altitude = keep->descent.altitude;
+  ns->face = keep->face;
+  ns->step = keep->step;
+  ns->risk = keep->risk;
+  ns->threads = keep->threads;
+  ns->format = keep->format;
+  ns->pager = keep->pager;
+  branches b;
+  int rc = ura_model_state(c, ns, "sora");
+  if (rc == 0) rc = run_branches(c, "sora", &b);
+  char err[uraERRLEN];
+  snprintf(err, sizeof err, "%s", c->err);
+  if (ura_model_state(c, keep, "sora") && rc == 0)
+    rc = -1;
+  else
+    snprintf(c->err, sizeof c->err, "%s", err);
+  free(keep);
+  if (rc) return -1;
+  double pc = ur_deploy_chute(&b.dep);
+  q[0] = b.mixed;
+  q[1] = pc * b.ca[1] + (1 - pc) * b.ca[0];
+  return 0;
+}
+
 /* a figure without interval */
 static uraSoraFig fixed(double ca, double red) {
   uraSoraFig f = {ca, ca, ca, red, red, red};
@@ -238,7 +287,11 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
   int mitigated;
   char note[600];
   branches b;
-  double unmit_speed = 0;
+  double unmit_speed = 0, named[2];
+  const char* dname = NULL;
+  const uraState* ds = NULL;
+  if (ura_m2_baseline(&c->st.risk, &dname) == uraM2_DESIGN && !(ds = named_design(c, dname)))
+    return -1;
   if (argc == 2) {
     if (ura_mc_sora(c, fig, &mitigated, note, sizeof note)) return -1;
     if (unmitigated_speed(c, &unmit_speed)) return -1;
@@ -296,7 +349,10 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
   sora_flag_notes(t, &fl, nsamples);
   ura_sora25_notes(t, &s25);
   ura_table_print(c, t);
-  if (mitigated && ura_sora25_m2_table(c, &s25, fig, c->st.casename, argc == 2)) return -1;
+  if (ds && named_figures(c, ds, named)) return -1;
+  if ((mitigated || ds) &&
+      ura_sora25_m2_table(c, &s25, fig, c->st.casename, argc == 2, ds ? named : NULL))
+    return -1;
   const char* lab[2] = {c->st.casename, "C"};
   double q[2] = {fig[2].ca, fig[0].ca}, lo[2] = {fig[2].lo, fig[0].lo},
          hi[2] = {fig[2].hi, fig[0].hi};

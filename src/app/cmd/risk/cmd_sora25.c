@@ -1,10 +1,10 @@
 /* cmd_sora25.c: what sora and risk print for a submission under SORA 2.5 (include/uasimpact/
  * sora25.h): the iGRC from Table 2 by characteristic dimension and maximum speed beside the
  * quantitative iGRC from a critical area (clamped into the table with a note), the M2 evidence
- * (the reduction factor of Q and of the Annex F area against the unmitigated drone or Table B.8,
- * its interval, the integrity level it reaches and what a simulation cannot show), and the
- * paper's eq. (1.1): expected fatalities per flight hour per population density band against the
- * target. cmd_risk.c calls these; the tables' columns are documented in uasimpact(1), SORA FIGURES.
+ * (the reduction factor of Q and of the Annex F area against the unmitigated drone, a design
+ * kept by 'design save' (m2_baseline design:NAME) or Table B.8, its interval, the integrity
+ * level it reaches and what a simulation cannot show), and the paper's eq. (1.1): expected
+ * fatalities per flight hour per population density band against the target. cmd_risk.c calls these; the tables' columns are documented in uasimpact(1), SORA FIGURES.
  */
 #include <math.h>
 #include <stdio.h>
@@ -83,12 +83,25 @@ void ura_sora25_notes(uraTable* t, const uraSora25* s) {
 static const char* const level_names[] = {"none", "medium", "high"};
 
 int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], const char* design,
-                        int from_mc) {
+                        int from_mc, const double* named) {
   static const char* const cols[] = {"quantity",     "baseline", "design",     "factor",
                                      "lo95",         "hi95",     "orders",     "reduction_pct",
                                      "m2_integrity", "m2_lo95",  "grc_credit", "final_grc"};
   const uraRiskSet* r = &c->st.risk;
-  int b8 = r->m2_baseline == 1;
+  const char* dname = "";
+  int kind = ura_m2_baseline(r, &dname), b8 = kind == uraM2_TABLE_B8, nd = named != NULL;
+  char base_text[200];
+  if (b8)
+    snprintf(base_text, sizeof base_text,
+             "Annex B Table B.8's critical area of the Table 2 column");
+  else if (nd)
+    snprintf(base_text, sizeof base_text,
+             "design %s (its grids under the live deployment mixture, wind, face, altitude and "
+             "step)",
+             dname);
+  else
+    snprintf(base_text, sizeof base_text,
+             "the unmitigated drone (no parachute, no airbag: case C)");
   if (b8 && s->col < 0) {
     return ura_fail(c,
                     "sora: m2_baseline table_b8 needs a Table 2 column; the drone (%g m, %g m/s) "
@@ -105,11 +118,18 @@ int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], 
                  "factor = baseline / design: %s over case %s%s; lo95..hi95 %s; m2_lo95 the level "
                  "its lower bound reaches; final_grc = igrc_sora25 + grc_credit, not below the "
                  "column's controlled-area value (Annex B Table B.1 #8), M1 not applied",
-                 b8 ? "Annex B Table B.8's critical area of the Table 2 column"
-                    : "the unmitigated drone (no parachute, no airbag: case C)",
-                 design, b8 ? "" : " with its deployment mixture (p_chute, p_bag, h_chute_min)",
+                 base_text, design,
+                 b8 ? "" : " with its deployment mixture (p_chute, p_bag, h_chute_min)",
                  from_mc ? "its 95 % interval from the last montecarlo (delta method)"
                          : "equal to it (deterministic: 'sora mc' gives the interval)");
+  if (nd && from_mc) {
+    ura_table_note(t,
+                   "baseline design %s: deterministic, its grids at the live wind %g m/s and face "
+                   "%g deg, not drawn with the montecarlo's inputs; lo95..hi95 carry the live "
+                   "design's interval only ('sora' without mc compares both at the same "
+                   "conditions)",
+                   dname, c->st.descent.wind, c->st.face);
+  }
   if (b8) {
     ura_table_note(t,
                    "warning: with the Table B.8 baseline a critical area already matched to a "
@@ -120,10 +140,11 @@ int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], 
   for (int k = 0; k < 2; k++) {
     const uraSoraFig* u = &fig[k]; /* unmitigated */
     const uraSoraFig* d = &fig[2 + k];
-    double base = b8 ? ur_sora25_ca[s->col] : u->ca;
+    double base = b8 ? ur_sora25_ca[s->col] : nd ? named[k] : u->ca;
     urM2 m, mlo;
     int ok = ur_sora25_m2(base, d->ca, &m) == 0;
-    double lo = b8 ? base / d->hi : d->red_lo, hi = b8 ? base / d->lo : d->red_hi;
+    /* a fixed baseline over the design's interval; the unmitigated one is paired (delta method) */
+    double lo = b8 || nd ? base / d->hi : d->red_lo, hi = b8 || nd ? base / d->lo : d->red_hi;
     if (!from_mc) lo = hi = ok ? m.factor : NAN;
     int oklo = ok && lo > 0 && ur_sora25_m2(lo, 1, &mlo) == 0;
     ura_table_cell(t, "%s", k ? "annex_f" : "q");
