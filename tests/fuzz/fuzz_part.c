@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../src/app/scale.h"
+#include "../../src/app/scale/scale.h"
 
 /* what merge relies on in an accepted part; abort() when it does not hold */
 static void check_accepted(const uraPartFile* p) {
