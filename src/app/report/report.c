@@ -8,6 +8,8 @@
  * text is escaped by the library; figures are data: images (report_fig.c); no script, no link
  * outside the file; print styles for a clean PDF. */
 #include <libxml/HTMLtree.h>
+#include <libxml/xmlerror.h>
+#include <libxml/xmlstring.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -40,8 +42,49 @@ static const char* const css =
 
 /* ---- tree helpers: every text goes through libxml2 ---- */
 
+/* text as XML can hold it: well-formed UTF-8 and the tab, line feed and carriage return kept,
+   any other control byte or byte that is not UTF-8 (a model file in Latin-1) replaced by U+FFFD;
+   NULL when text needs no change, else a new string the caller frees */
+static char* xml_clean(const char* text) {
+  int ok = 1;
+  for (const unsigned char* p = (const unsigned char*)text; *p && ok; p++) {
+    ok = *p >= 0x20 || *p == '\t' || *p == '\n' || *p == '\r';
+  }
+  if (ok && xmlCheckUTF8(X(text))) {
+    return NULL;
+  }
+  size_t n = strlen(text);
+  char* out = malloc(3 * n + 1);
+  if (!out) {
+    return NULL;
+  }
+  size_t k = 0;
+  const unsigned char* p = (const unsigned char*)text;
+  while (*p) {
+    int len = (int)strlen((const char*)p);
+    int c = *p < 0x80 ? *p : xmlGetUTF8Char(p, &len);
+    if (*p < 0x80) {
+      len = 1;
+    }
+    if (c < 0 || (c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) {
+      memcpy(out + k, "\xef\xbf\xbd", 3); // U+FFFD
+      k += 3;
+      p += c < 0 ? 1 : len;
+      continue;
+    }
+    memcpy(out + k, p, (size_t)len);
+    k += (size_t)len;
+    p += len;
+  }
+  out[k] = 0;
+  return out;
+}
+
 static xmlNodePtr el(xmlNodePtr parent, const char* tag, const char* text) {
-  return xmlNewTextChild(parent, NULL, X(tag), text ? X(text) : NULL);
+  char* c = text ? xml_clean(text) : NULL;
+  xmlNodePtr n = xmlNewTextChild(parent, NULL, X(tag), text ? X(c ? c : text) : NULL);
+  free(c);
+  return n;
 }
 
 static xmlNodePtr elf(xmlNodePtr parent, const char* tag, const char* fmt, ...)
@@ -56,7 +99,9 @@ static xmlNodePtr elf(xmlNodePtr parent, const char* tag, const char* fmt, ...) 
 }
 
 static void attr(xmlNodePtr n, const char* name, const char* value) {
-  xmlNewProp(n, X(name), X(value));
+  char* c = xml_clean(value);
+  xmlNewProp(n, X(name), X(c ? c : value));
+  free(c);
 }
 
 static void attrf(xmlNodePtr n, const char* name, const char* fmt, ...)
@@ -565,6 +610,13 @@ static void appendix(uraCtx* c, xmlNodePtr body, const uraReport* r) {
   for (int k = 0; (src = ura_report_source(k)); k++) el(ol, "li", src);
 }
 
+/* libxml2's generic error handler while the report is serialised: silent (the texts are
+   cleaned to UTF-8 before they enter the tree; a failure shows as no memory) */
+static void quiet(void* ctx, const char* msg, ...) {
+  (void)ctx;
+  (void)msg;
+}
+
 int ura_cmd_report(uraCtx* c, int argc, char** argv) {
   if (ura_dry(c, "report")) return -1;
   uraReport empty;
@@ -595,7 +647,9 @@ int ura_cmd_report(uraCtx* c, int argc, char** argv) {
 
   xmlChar* mem = NULL;
   int size = 0;
+  xmlSetGenericErrorFunc(NULL, quiet); // a serializer message would land on the prompt
   htmlDocDumpMemoryFormat(doc, &mem, &size, 1);
+  xmlSetGenericErrorFunc(NULL, NULL);
   xmlFreeDoc(doc);
   if (!mem) return ura_fail(c, "report: out of memory");
   uraAtomic a;

@@ -56,6 +56,12 @@ printf '# a part with <script>alert(1)</script> & "quotes" in a comment\nparam e
 run -c "model load $TMP/x.urm; set step 0.3; grid; report $TMP/x.html"
 check escaped cond '[ "$RC" -eq 0 ] && grep -q "&lt;script&gt;alert(1)&lt;/script&gt; &amp;" "$TMP/x.html" &&
   ! grep -qi "<script" "$TMP/x.html"'
+# text that is not UTF-8 (a model file in Latin-1, a control byte): each bad byte becomes U+FFFD,
+# nothing from libxml2 reaches the terminal, the rest of the text stays
+printf '# caf\351 au lait \001 in Latin-1\nparam extra_y 1 m\n' >"$TMP/l1.urm"
+run -c "model load $TMP/l1.urm; report $TMP/l1.html"
+check latin1 cond '[ "$RC" -eq 0 ] && grep -q "caf&#65533; au lait &#65533; in Latin-1" "$TMP/l1.html" &&
+  ! grep -qi "error" "$TMP/err"'
 # warnings gathered: a grid on set extents
 run -c "set step 0.3; set along_min -0.3; grid; report $TMP/w.html"
 check warnings cond '[ "$RC" -eq 0 ] && grep -q "<li>grid: extents set: Q covers only" "$TMP/w.html" &&
