@@ -36,6 +36,10 @@ typedef struct {
 
 extern const uraCmd ura_cmds[];
 const uraCmd* ura_cmd_find(const char* name);
+/* the command NAME stands for: its full name, a short form (q) or a prefix only one command
+   begins with (abbrev.c); NULL otherwise, with the commands it begins (ambiguous: "descent,
+   design") in cands (n bytes; empty when none begins with it; cands may be NULL) */
+const uraCmd* ura_cmd_resolve(const char* name, char* cands, size_t n);
 
 /* run one command line (may hold several commands separated by ';'); 0 or -1 */
 int ura_run_line(uraCtx* c, const char* line);

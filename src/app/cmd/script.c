@@ -56,7 +56,12 @@ static int split_words(char* s, char** argv, uraCtx* c) {
 /* run one command given as words */
 static int run_words(uraCtx* c, int argc, char** argv) {
   char name[128];
-  const uraCmd* cmd = ura_cmd_find(argv[0]);
+  char cands[400];
+  const uraCmd* cmd = ura_cmd_resolve(argv[0], cands, sizeof cands);
+  if (!cmd && *cands) {
+    printable(argv[0], name, sizeof name);
+    return ura_fail(c, "ambiguous command '%s': %s? type more of the name", name, cands);
+  }
   if (!cmd) {
     uraSuggest sg;
     char dym[120];
@@ -66,6 +71,10 @@ static int run_words(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "unknown command '%s'%s; type 'help' for the list of commands", name,
                     ura_suggest_text(&sg, dym, sizeof dym));
   }
+  /* the handlers, the report and the guard see the full name (a prefix typed, q) */
+  char full[64];
+  snprintf(full, sizeof full, "%s", cmd->name);
+  argv[0] = full;
   int nargs = argc - 1;
   if (nargs < cmd->minargs || (cmd->maxargs >= 0 && nargs > cmd->maxargs)) {
     return ura_fail(c, "%s: wrong number of arguments (%d); usage: %s", cmd->name, nargs,
