@@ -31,6 +31,11 @@ int ura_parse_list(const char* s, double* v, int max);
 int ura_parse_list_why(const char* s, double* v, int max, char* why, size_t n);
 /* the number of values a comma-separated list holds (its commas plus one) */
 int ura_list_count(const char* s);
+/* a speed unit: m/s, km/h or kt (exactly so); 0 with the factor to m/s, or -1 (speedunit.c) */
+int ura_speed_unit(const char* unit, double* to_si);
+/* v in a unit ura_speed_unit accepts, in m/s (v * 1852 / 3600 for kt: 36 km/h is 10 m/s exactly) */
+double ura_speed_to_si(const char* unit, double v);
+#define uraSPEED_UNITS "m/s, km/h or kt"
 
 /* ---- hashing (fnv.c) ---- */
 

@@ -358,6 +358,12 @@ const char* ura_design_mark(uraCtx* c, const char* name, char* buf, size_t n);
    cannot take for a pipe; both can be written back by save session */
 int ura_terminal_check(uraCtx* c, const char* value, char* norm, size_t n);
 int ura_output_check(uraCtx* c, const char* value, char* norm, size_t n);
+/* a speed parameter's value or list typed in UNIT (km/h, kt, m/s) as text in m/s into out (n
+   bytes), for ura_param_set; 0, or -1 with a message that starts with who (speed.c) */
+int ura_speed_convert(uraCtx* c, const char* who, const uraParam* p, const char* value,
+                      const char* unit, char* out, size_t n);
+/* the terminal names set terminal accepts, after "default" (completion; plot_term.c) */
+extern const char* const ura_term_choices[];
 /* what a gnuplot terminal draws on (plot_term.c) */
 enum {
   uraTERM_WINDOW = 0,

@@ -357,11 +357,14 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
                     name, value);
   }
   char si[urNAMELEN];
-  if (unit && ur_unit_parse(unit, &f, si, sizeof si)) {
+  /* km/h and kt for a parameter in m/s (the model language's units have no hour) */
+  int speed = unit && strcmp(unit, "m/s") && !ura_speed_unit(unit, &f);
+  if (speed) snprintf(si, sizeof si, "m/s");
+  if (unit && !speed && ur_unit_parse(unit, &f, si, sizeof si)) {
     return ura_fail(c,
                     "set %s: unknown unit '%s'; accepted: the units of uasimpact-model(5) "
                     "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L), or several "
-                    "joined by * and / (N*m/rad)",
+                    "joined by * and / (N*m/rad); speeds also km/h and kt",
                     name, unit);
   }
   int k = ura_model_param_find(c, name);

@@ -112,6 +112,15 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "sweep %s: needs a list of values, e.g. 'sweep %s %s'", argv[1], argv[1],
                     is_wind ? "0,4,10" : "0,90,180");
   }
+  /* sweep wind LIST km/h|kt: the list in m/s from here on (sweeps keep m/s) */
+  char si[4096];
+  if (is_wind && argc == 4) {
+    if (ura_speed_convert(c, "sweep wind", ura_param_find("winds"), argv[2], argv[3], si,
+                          sizeof si))
+      return -1;
+    argv[2] = si;
+    argc = 3;
+  }
   if ((!is_wind && !is_face) || argc != 3) {
     return ura_fail(c,
                     "sweep: '%s' is not accepted; accepted: sweep wind LIST, sweep face "

@@ -90,6 +90,35 @@ static void add_params(void) {
   for (int i = 0; m && i < m->nparam; i++) add(m->param[i].name);
 }
 
+/* what sweep NAME takes: wind and face, then every number parameter of the case and the model
+   (show and clear come from the usage's keywords) */
+static void add_sweepable(void) {
+  keywords(ura_cmd_find("sweep")->usage + strlen("sweep "), NULL);
+  for (int i = 0; ura_params[i].name; i++)
+    if (ura_params[i].kind == uraP_NUM) add(ura_params[i].name);
+  const urModel* m = repl_ctx ? ura_model(repl_ctx) : NULL;
+  for (int i = 0; m && i < m->nparam; i++) add(m->param[i].name);
+}
+
+/* what plot sweep NAME draws: wind and face when such sweeps are kept, the parameters swept */
+static void add_kept_sweeps(void) {
+  if (!repl_ctx) return;
+  int wind = 0, face = 0;
+  for (int i = 0; i < repl_ctx->nsweep; i++) {
+    if (repl_ctx->sweep[i].over_face)
+      face = 1;
+    else
+      wind = 1;
+  }
+  if (wind) add("wind");
+  if (face) add("face");
+  for (int i = 0; i < repl_ctx->npsweep; i++) {
+    int seen = 0;
+    for (int j = 0; j < ncand; j++) seen |= !strcmp(cand[j], repl_ctx->psweep[i].param);
+    if (!seen) add(repl_ctx->psweep[i].param);
+  }
+}
+
 static char** complete(const char* text, int start, int end) {
   /* the words before the one being completed, in the last command of the line */
   char words[4][64] = {"", "", "", ""};
@@ -110,7 +139,7 @@ static char** complete(const char* text, int start, int end) {
   /* first word: commands; then what the command's table entry says */
   ncand = 0;
   rl_attempted_completion_over = 1;
-  const uraCmd* cmd = nw ? ura_cmd_find(words[0]) : NULL;
+  const uraCmd* cmd = nw ? ura_cmd_resolve(words[0], NULL, 0) : NULL;
   const char* args = cmd ? cmd->usage + strlen(cmd->name) : "";
   while (*args == ' ') args++;
   if (nw == 0) {
@@ -134,6 +163,13 @@ static char** complete(const char* text, int start, int end) {
     case uraC_FILE: break;
     case uraC_NONE: keywords(args, NULL); break;
     }
+  } else if (nw == 2 && !strcmp(cmd->name, "set") && !strcmp(words[1], "output")) {
+    rl_attempted_completion_over = 0; /* set output FILE: readline's file names */
+    return NULL;
+  } else if (nw == 2 && !strcmp(cmd->name, "sweep")) {
+    add_sweepable(); /* sweep NAME LIST: wind, face and the numeric parameters */
+  } else if (nw == 2 && !strcmp(cmd->name, "plot") && !strcmp(words[1], "sweep")) {
+    add_kept_sweeps(); /* plot sweep NAME: the kept sweeps */
   } else if (nw == 2 && cmd->compl == uraC_PARAM && !strcmp(cmd->name, "set")) {
     const uraParam* p = ura_param_find(words[1]);
     for (int i = 0;
@@ -234,6 +270,10 @@ int ura_repl(uraCtx* c) {
   rl_signal_event_hook = on_signal;
   if (hist) history_load(hist);
   c->interactive = 1;
+
+  /* one line on how to go on, as gnuplot and python greet (the version: what a report of a
+     problem needs first) */
+  fprintf(c->msg, "%s; type help for the commands, q to quit\n", ura_version());
 
   /* read, run, report; errors never end the session */
   while (!c->quit) {
