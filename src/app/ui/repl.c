@@ -20,8 +20,12 @@ static char cand[MAXCAND][64];
 static int ncand;
 static uraCtx* repl_ctx; /* for the model's parameter names */
 
+/* one candidate, once (wind is both a sweep keyword and a parameter) */
 static void add(const char* name) {
-  if (ncand < MAXCAND && name && strlen(name) < sizeof cand[0]) strcpy(cand[ncand++], name);
+  if (!name || strlen(name) >= sizeof cand[0]) return;
+  for (int i = 0; i < ncand; i++)
+    if (!strcmp(cand[i], name)) return;
+  if (ncand < MAXCAND) strcpy(cand[ncand++], name);
 }
 
 /* generator over the candidates that start with text */
@@ -112,11 +116,7 @@ static void add_kept_sweeps(void) {
   }
   if (wind) add("wind");
   if (face) add("face");
-  for (int i = 0; i < repl_ctx->npsweep; i++) {
-    int seen = 0;
-    for (int j = 0; j < ncand; j++) seen |= !strcmp(cand[j], repl_ctx->psweep[i].param);
-    if (!seen) add(repl_ctx->psweep[i].param);
-  }
+  for (int i = 0; i < repl_ctx->npsweep; i++) add(repl_ctx->psweep[i].param);
 }
 
 static char** complete(const char* text, int start, int end) {
