@@ -42,6 +42,7 @@ static void parts_changed(uraCtx* c, int keep_stances) {
 }
 
 void ura_models_free(uraCtx* c) {
+  ura_undo_free(c);
   parts_changed(c, 0);
   parts_free(c->part, c->npart);
   c->npart = 0;

@@ -17,8 +17,14 @@ const uraCmd ura_cmds[] = {
      "print the live case state with units, or one parameter; derived values say so"},
     {"case", ura_cmd_case, 1, 1, uraC_CASE, "case NAME",
      "load a preset of the model (the RA3's: A, B, C, A1, A2; 'model show' lists their preset lines); wind, "
-     "face, step, recall and the output settings keep their values"},
-    {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
+     "face, step, recall and the output settings keep their values; a note names the settings "
+     "of yours it drops (undo brings them back)"},
+    {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset",
+     "restore every default (says which of your settings it drops; undo brings them back)"},
+    {"undo", ura_cmd_undo, 0, 0, uraC_NONE, "undo",
+     "restore the settings as they were before the last command that changed them (set, case, "
+     "reset, design load, dist, source ...); up to 32 levels; grids, sweeps, designs and loaded "
+     "model files stay"},
     {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
      "impact speed and descent angle for each wind in 'winds' (paper Table 2); "
      "columns case,wind,speed,angle"},
@@ -365,10 +371,29 @@ int ura_cmd_case(uraCtx* c, int argc, char** argv) {
 }
 
 int ura_cmd_reset(uraCtx* c, int argc, char** argv) {
+  /* what the user set: against the defaults under the live case's preset */
+  uraState base, before = c->st;
+  int known = ura_case_baseline(c, 0, &base) == 0;
+  uraUndo* undo = c->undo; /* the undo levels outlive the reset (undo goes back before it) */
+  c->undo = NULL;
   ura_models_free(c);
+  c->undo = undo;
   ura_state_defaults(&c->st);
   if (ura_models_init(c)) return -1;
-  return ura_case_default(c);
+  if (ura_case_default(c)) return -1;
+  char list[1500] = "";
+  if (known) ura_dropped(c, &before, &base, &c->st, list, sizeof list);
+  ura_dropped_note(c, "reset", list);
+  return 0;
+}
+
+int ura_cmd_undo(uraCtx* c, int argc, char** argv) {
+  char what[64];
+  if (ura_undo_pop(c, what, sizeof what)) return -1;
+  int left = ura_undo_levels(c);
+  fprintf(c->msg, "undo: the settings as before '%s' (%d more level%s to undo, at most %d kept)\n",
+          what, left, left == 1 ? "" : "s", uraUNDO_LEVELS);
+  return 0;
 }
 
 int ura_cmd_quit(uraCtx* c, int argc, char** argv) {

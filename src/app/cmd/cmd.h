@@ -54,6 +54,7 @@ int ura_run_stream(uraCtx* c, FILE* f, const char* name);
 int ura_cmd_help(uraCtx* c, int argc, char** argv);
 int ura_cmd_set(uraCtx* c, int argc, char** argv);
 int ura_cmd_show(uraCtx* c, int argc, char** argv);
+int ura_cmd_undo(uraCtx* c, int argc, char** argv);
 int ura_cmd_reset(uraCtx* c, int argc, char** argv);
 int ura_cmd_case(uraCtx* c, int argc, char** argv);
 int ura_cmd_source(uraCtx* c, int argc, char** argv);

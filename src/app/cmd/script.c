@@ -83,7 +83,21 @@ static int run_words(uraCtx* c, int argc, char** argv) {
   if (c->guard && c->guard(c, argc, argv)) return -1;
   int paged = ura_pager_begin(c, cmd->name);
   if (c->rep_begin) c->rep_begin(c, argc, argv); /* report/ keeps what it prints */
+  /* the settings before a command typed or read (a sourced file is one command), for undo */
+  uraState* before = NULL;
+  if (c->undo_nest == 0 && strcmp(cmd->name, "undo") && (before = malloc(sizeof *before)))
+    memcpy(before, &c->st, sizeof *before);
+  c->undo_nest++;
   int rc = cmd->fn(c, argc, argv);
+  c->undo_nest--;
+  if (before && memcmp(before, &c->st, sizeof *before)) {
+    char what[64];
+    size_t k = 0;
+    for (int i = 0; i < argc && k < sizeof what; i++)
+      k += (size_t)snprintf(what + k, sizeof what - k, "%s%s", i ? " " : "", argv[i]);
+    ura_undo_push(c, before, what);
+  }
+  free(before);
   if (c->rep_end) c->rep_end(c, rc);
   if (paged) ura_pager_end(c);
 

@@ -271,9 +271,10 @@ int ura_repl(uraCtx* c) {
   if (hist) history_load(hist);
   c->interactive = 1;
 
-  /* one line on how to go on, as gnuplot and python greet (the version: what a report of a
-     problem needs first) */
-  fprintf(c->msg, "%s; type help for the commands, q to quit\n", ura_version());
+  /* one line on how to go on, as gnuplot and python greet a person (the version: what a report
+     of a problem needs first); not when the lines come from a pipe (-i < FILE) */
+  if (isatty(STDIN_FILENO))
+    fprintf(c->msg, "%s; type help for the commands, q to quit\n", ura_version());
 
   /* read, run, report; errors never end the session */
   while (!c->quit) {
