@@ -47,6 +47,10 @@ int ura_run_line(uraCtx* c, const char* line);
 void ura_locate(uraCtx* c, const char* name, int lineno);
 /* run a script file; errors are reported as FILE:LINE: message; 0 or -1 */
 int ura_run_file(uraCtx* c, const char* path);
+/* the start-up file (init.c): its path into buf (n bytes; -1: no HOME nor XDG_CONFIG_HOME);
+   run it, if it exists, with only the commands that set things (0, or -1 after printing why) */
+int ura_init_path(char* buf, size_t n);
+int ura_run_init(uraCtx* c);
 /* run a script from an open stream, naming it name in messages */
 int ura_run_stream(uraCtx* c, FILE* f, const char* name);
 
