@@ -31,6 +31,13 @@ int ura_parse_list(const char* s, double* v, int max);
 int ura_parse_list_why(const char* s, double* v, int max, char* why, size_t n);
 /* the number of values a comma-separated list holds (its commas plus one) */
 int ura_list_count(const char* s);
+/* the installed data folder (PREFIX/share/uasimpact beside the program's PREFIX/bin) into buf;
+   0, or -1 when there is none (datadir.c) */
+int ura_data_dir(char* buf, size_t n);
+/* open path for reading; a relative name that is not in the current folder is looked for in the
+   data folder, its sessions/ and their subfolders; the name opened into found (n bytes); NULL
+   with errno of the first attempt when none (datadir.c) */
+FILE* ura_data_open(const char* path, char* found, size_t n);
 /* a speed unit: m/s, km/h or kt (exactly so); 0 with the factor to m/s, or -1 (speedunit.c) */
 int ura_speed_unit(const char* unit, double* to_si);
 /* v in a unit ura_speed_unit accepts, in m/s (v * 1852 / 3600 for kt: 36 km/h is 10 m/s exactly) */

@@ -441,11 +441,14 @@ static int model_load(uraCtx* c, const char* path) {
                     "neither uasimpact nor a shell expands",
                     path);
   }
-  FILE* f = fopen(path, "r");
+  /* the current folder first, then the installed example models (model load quad.urm) */
+  char found[4096];
+  FILE* f = ura_data_open(path, found, sizeof found);
   if (!f && ura_interrupted()) {
     return ura_fail(c, "model load: interrupted (Ctrl-C) while opening '%s'", path);
   }
   if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+  path = found;
   ura_input_seen(c, f, path); /* a shard's part may not replace it */
 
   /* the whole text, bounded (a device never ends), read errors named */

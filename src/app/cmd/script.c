@@ -199,9 +199,12 @@ int ura_run_file(uraCtx* c, const char* path) {
     return ura_fail(c, "source: nesting deeper than %d (does a script source itself?)", MAXDEPTH);
   }
   if (ura_dry(c, "source")) return -1;
-  FILE* f = fopen(path, "r");
+  /* the current folder first, then the installed sessions (source tour.ses) */
+  char found[4096];
+  FILE* f = ura_data_open(path, found, sizeof found);
   if (!f && ura_interrupted()) return ura_fail(c, "interrupted (Ctrl-C) while opening '%s'", path);
   if (!f) return ura_fail(c, "cannot open '%s': %s", path, strerror(errno));
+  path = found;
   struct stat sb;
   if (fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode)) {
     fclose(f);
