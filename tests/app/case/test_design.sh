@@ -67,6 +67,16 @@ run -c "set format csv; case B; set angle 0; set speed 8; impact aim head 0 0; c
 check aim_horizontal_head cond '[ $RC -eq 0 ] && grep -q "^[a-z_0-9]*,head_cranium," "$TMP/out"'
 check aim_contacts_note has "$TMP/out" '^# impact aimed at the head, up and side (0, 0) m: '
 
+# level flight takes a declared cruise speed: the descent's derived speed (C's 39.7 m/s fall)
+# is refused with the way out; declared in km/h it runs
+run -c 'case C; set angle 0; impact aim head 0 0'
+check level_needs_speed cond '[ $RC -eq 1 ] && has "$TMP/err" "impact aim: a flight at angle 0 deg needs a declared cruise speed; the derived 39.7 m/s is the descent.s fall" &&
+  has "$TMP/err" "set speed V"'
+run -c 'case C; set angle 0; set speed 54 km/h; set format csv; impact aim head 0 0'
+check level_declared cond '[ $RC -eq 0 ] && grep -q "^0,0," "$TMP/out"'
+run -c 'case C; set angle 30; set format csv; impact aim head 0 0'
+check descent_speed_at_angle cond '[ $RC -eq 0 ]'
+
 run -c 'case B; set angle 0; impact 0 0'
 check offset_refused_at_angle0 has "$TMP/err" "angle 0 deg: an offset Delta needs a descent.*impact aim head UP SIDE"
 run -c 'case B; set angle 0; set step 0.3; grid'
