@@ -166,6 +166,13 @@ FILE* ura_pager_release(FILE* msg);
 void ura_progress_label(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 void ura_progress_start(void);
 void ura_progress_line(const char* what, long done, long total, const char* noun);
+/* a run of n pieces of work (a sweep's grids), piece i (0 first: the run's clock starts) now
+   running; n 0 ends the run. The line then says how long is left of all of them */
+void ura_progress_run(int i, int n);
+/* the line's text (what ura_progress_line prints after the label and before clearing the rest):
+   el seconds since this piece began; piece i of runs (0: not a run) begun el_run seconds ago */
+void ura_progress_text(char* buf, size_t n, const char* what, long done, long total,
+                       const char* noun, double el, int i, int runs, double el_run);
 /* "uasimpact VERSION (commit HASH[-dirty])" (version.c) */
 const char* ura_version(void);
 /* "did you mean" (suggest.c): the edit distance of two names; the nearest name offered for a

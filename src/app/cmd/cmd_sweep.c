@@ -189,10 +189,12 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
       c->st.descent.wind = v[i];
     else
       c->st.face = v[i];
+    ura_progress_run(i, n);
     ura_progress_label("sweep %s %g %s (%d of %d): ", argv[1], v[i], is_wind ? "m/s" : "deg", i + 1,
                        n);
     rc = ura_grid_run(c, 0);
     ura_progress_label(NULL);
+    ura_progress_run(0, 0);
     if (rc && ura_interrupted()) {
       snprintf(why, sizeof why, "%s", c->err);
       ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", argv[1],
