@@ -41,4 +41,9 @@ run -c 'set step 0.3; sweep wind 0,3.6 km/h'
 check sweep_kmh cond '[ "$RC" -eq 0 ] && awk "NR==2{a=\$2} NR==3{b=\$2} END{exit !(a==0 && b==1)}" "$TMP/out"'
 run -c 'sweep wind 0,4 mph'
 check sweep_unit has "$TMP/err" "sweep wind: unknown unit 'mph'"
+# SORA's maximum speed in knots; unset, show says what sora derives (not a grid extent)
+run -c 'show ua_max_speed; show ua_dimension; set ua_max_speed 20 kt; show ua_max_speed'
+check sora_speed_show cond 'sed -n 1p "$TMP/out" | grep -q "^ua_max_speed  *auto m/s  (derived at sora: the unmitigated drone.s impact speed)$" &&
+  sed -n 2p "$TMP/out" | grep -q "^ua_dimension  *1.3 m  (derived: the larger of the drone.s width and length)$" &&
+  sed -n 3p "$TMP/out" | grep -q "^ua_max_speed  *10.28888888888889 m/s  (set)$"'
 finish
