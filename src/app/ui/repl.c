@@ -104,19 +104,11 @@ static void add_sweepable(void) {
   for (int i = 0; m && i < m->nparam; i++) add(m->param[i].name);
 }
 
-/* what plot sweep NAME draws: wind and face when such sweeps are kept, the parameters swept */
-static void add_kept_sweeps(void) {
-  if (!repl_ctx) return;
-  int wind = 0, face = 0;
-  for (int i = 0; i < repl_ctx->nsweep; i++) {
-    if (repl_ctx->sweep[i].over_face)
-      face = 1;
-    else
-      wind = 1;
-  }
-  if (wind) add("wind");
-  if (face) add("face");
-  for (int i = 0; i < repl_ctx->npsweep; i++) add(repl_ctx->psweep[i].param);
+/* what plot sweep NAME draws: its keywords (wind, face), then the parameters of the kept
+   sweeps */
+static void add_kept_sweeps(const char* args) {
+  keywords(args, "sweep");
+  for (int i = 0; repl_ctx && i < repl_ctx->npsweep; i++) add(repl_ctx->psweep[i].param);
 }
 
 static char** complete(const char* text, int start, int end) {
@@ -169,7 +161,7 @@ static char** complete(const char* text, int start, int end) {
   } else if (nw == 2 && !strcmp(cmd->name, "sweep")) {
     add_sweepable(); /* sweep NAME LIST: wind, face and the numeric parameters */
   } else if (nw == 2 && !strcmp(cmd->name, "plot") && !strcmp(words[1], "sweep")) {
-    add_kept_sweeps(); /* plot sweep NAME: the kept sweeps */
+    add_kept_sweeps(args); /* plot sweep NAME: wind, face, the kept parameter sweeps */
   } else if (nw == 2 && cmd->compl == uraC_PARAM && !strcmp(cmd->name, "set")) {
     const uraParam* p = ura_param_find(words[1]);
     for (int i = 0;

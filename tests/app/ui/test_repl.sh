@@ -59,11 +59,11 @@ keys r3 -l 'sweep fa'
 keys r3 Tab
 check complete_sweep_name wait_for r3 'uasimpact\[A\]> sweep face$'
 keys r3 C-u
-line r3 'set step 0.3; sweep face 0,90'
-wait_for r3 '^ *A +0 +90 ' 30
-keys r3 -l 'plot sweep '
+line r3 'set step 0.3; sweep drone_size 1,1.1'
+wait_for r3 '^ *A +1.1 ' 30
+keys r3 -l 'plot sweep dr'
 keys r3 Tab
-check complete_kept_sweep wait_for r3 'uasimpact\[A\]> plot sweep face$'
+check complete_kept_sweep wait_for r3 'uasimpact\[A\]> plot sweep drone_size$'
 keys r3 C-u
 line r3 q
 check q_ends ended r3
