@@ -3,7 +3,8 @@
 # folder (source tour.ses, model load quad.urm found under PREFIX/share/uasimpact after the
 # current folder); a program built on the installed headers, pkg-config file and shared library
 # runs and needs the library by its soname; DESTDIR stages the same tree with the final PREFIX
-# in the pkg-config file; uninstall leaves nothing behind.
+# in the pkg-config file; uninstall leaves nothing behind; make run and make check build in
+# parallel.
 . tests/lib.sh
 
 P=$TMP/prefix
@@ -80,6 +81,12 @@ make -s install PREFIX=/usr DESTDIR="$TMP/stage" >"$TMP/make" 2>&1
 check destdir cond '[ -x "$TMP/stage/usr/bin/uasimpact" ] &&
   grep -qx "prefix=/usr" "$TMP/stage/usr/lib/pkgconfig/uasimpact.pc" &&
   grep -qx "libdir=/usr/lib" "$TMP/stage/usr/lib/pkgconfig/uasimpact.pc"'
+
+# make run and make check build with one job per processor, unless -j was given
+N=$(nproc 2>/dev/null || echo 2)
+check run_parallel cond 'make -n run 2>/dev/null | grep -q -- "-j$N all\$" &&
+  make -n check 2>/dev/null | grep -q -- "-j$N all mpi "'
+check given_j_kept cond 'make -n -j3 run 2>/dev/null | grep -q "directory  *all\$"'
 
 # uninstall: nothing of ours is left (empty folders install made for others may stay)
 make -s uninstall PREFIX="$P" >"$TMP/make" 2>&1
