@@ -368,7 +368,8 @@ void ura_dropped_note(uraCtx* c, const char* who, const char* list);
 typedef struct uraUndo uraUndo;
 void ura_undo_push(uraCtx* c, const uraState* before, const char* what);
 /* the newest state made live again (the model compiled for it) and popped; what the command
-   that left it was into what; 0, or -1 with a message (nothing to undo, the model refuses) */
+   that left it was into what; 0, or -1 with a message (nothing to undo; the model, its parts
+   changed since, refuses it: that level is dropped all the same) */
 int ura_undo_pop(uraCtx* c, char* what, size_t n);
 int ura_undo_levels(const uraCtx* c);
 void ura_undo_free(uraCtx* c);

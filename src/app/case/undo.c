@@ -42,10 +42,17 @@ int ura_undo_pop(uraCtx* c, char* what, size_t n) {
   int at = (u->head + uraUNDO_LEVELS - 1) % uraUNDO_LEVELS;
   uraState back;
   memcpy(&back, &u->st[at], sizeof back);
-  if (ura_model_state(c, &back, "undo")) return -1;
   snprintf(what, n, "%s", u->what[at]);
   u->head = at;
   u->n--;
+  /* a level the model no longer takes (its parts changed since) is dropped, not kept in the
+     way of the levels before it */
+  if (ura_model_state(c, &back, "undo")) {
+    char why[uraERRLEN];
+    snprintf(why, sizeof why, "%s", c->err);
+    return ura_fail(c, "%.700s; the settings before '%s' are dropped (%d more level%s to undo)",
+                    why, what, u->n, u->n == 1 ? "" : "s");
+  }
   return 0;
 }
 

@@ -46,6 +46,13 @@ run -c "set yaw 7; source $TMP/s.ses; undo; show pitch; show roll; show yaw"
 check source_one_level cond 'grep -q "^pitch  *0 deg" "$TMP/out" && grep -q "^roll  *0 deg" "$TMP/out" &&
   grep -q "^yaw  *7 deg" "$TMP/out"'
 
+# a level the model no longer takes (its parts changed since: the airbags' parameters are gone)
+# is dropped with the reason, one at a time, and the live settings stay as they are
+prompt 'set bag_p0 1.1 atm; set pitch 5; model drop airbags; undo; show pitch; undo; show pitch'
+check undo_level_dropped cond 'grep -q "^error: undo: refused, the model does not accept it: .*; the settings before .model drop airbags. are dropped (2 more levels to undo)$" "$TMP/err" &&
+  grep -q "the settings before .set pitch 5. are dropped (1 more level to undo)$" "$TMP/err" &&
+  [ "$(grep -c "^pitch  *5 deg" "$TMP/out")" -eq 2 ]'
+
 # a sweep is not a setting: undo leaves it kept
 run -c 'set step 0.3; sweep face 0,90; undo; sweep show'
 check undo_keeps_sweep cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^ *A " "$TMP/out")" -ge 4 ]'
