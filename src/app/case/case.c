@@ -53,9 +53,9 @@ int ura_case_load(uraCtx* c, const char* name) {
   /* what the user set that the case does not keep, told once the case is live */
   char list[1500] = "";
   if (ura_case_baseline(c, 1, &base) == 0) ura_dropped(c, &c->st, &base, &ns, list, sizeof list);
-  if (ura_model_state(c, &ns, "case")) return -1;
-  char who[48];
+  char who[48]; /* (pr lives in the model, which the new state may free) */
   snprintf(who, sizeof who, "case %s", pr->name);
+  if (ura_model_state(c, &ns, "case")) return -1;
   ura_dropped_note(c, who, list);
   return 0;
 }
