@@ -107,6 +107,8 @@ typedef struct uraPSweep {
                                     command's length */
 } uraPSweep;
 int ura_sweep_param(uraCtx* c, int argc, char** argv);
+/* a sweep's table printed when rows > 0; else let go unprinted (no header without rows) */
+void ura_sweep_table(uraCtx* c, uraTable* t, int rows);
 void ura_sweep_param_rows(uraCtx* c, uraTable* t);
 void ura_sweep_param_clear(uraCtx* c);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);

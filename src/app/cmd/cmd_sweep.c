@@ -93,6 +93,23 @@ static int sweep_show(uraCtx* c) {
   return 0;
 }
 
+void ura_sweep_table(uraCtx* c, uraTable* t, int rows) {
+  if (rows > 0) {
+    ura_table_print(c, t);
+    return;
+  }
+  /* no grid finished (stopped, or failed, at the first value): no empty header; the table is
+     let go through a stream nobody reads */
+  char* buf = NULL;
+  size_t n = 0;
+  FILE* f = open_memstream(&buf, &n);
+  if (f) {
+    ura_table_write(f, t, 0, 0);
+    fclose(f);
+  }
+  free(buf);
+}
+
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"case", "wind", "face", "speed", "angle", "q"};
   if (argc == 2 && !strcmp(argv[1], "show")) return sweep_show(c);
@@ -257,7 +274,7 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
                    "this session and were not simulated again ('set recall off' recomputes)",
                    argv[1], recalled);
   }
-  ura_table_print(c, t);
+  ura_sweep_table(c, t, s->n);
 
   /* keep what finished (a sweep that stopped keeps the values before the failure) */
   int kept = 0;

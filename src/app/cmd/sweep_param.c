@@ -157,7 +157,7 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   snprintf(err, sizeof err, "%s", c->err);
   ura_model_state(c, &saved, "sweep");
   snprintf(c->err, sizeof c->err, "%s", err);
-  ura_table_print(c, t);
+  ura_sweep_table(c, t, s->n);
   if (s->n > 0) {
     if (keep(c, s)) {
       rc = -1;
