@@ -138,6 +138,8 @@ static char** complete(const char* text, int start, int end) {
     for (int i = 0; ura_cmds[i].name; i++) add(ura_cmds[i].name);
   } else if (!cmd) {
     return NULL;
+  } else if (nw == 1 && !strcmp(cmd->name, "sweep")) {
+    add_sweepable(); /* sweep NAME LIST: wind, face, show, clear and the numeric parameters */
   } else if (nw == 1) {
     switch (cmd->compl ) {
     case uraC_COMMAND:
@@ -158,8 +160,6 @@ static char** complete(const char* text, int start, int end) {
   } else if (nw == 2 && !strcmp(cmd->name, "set") && !strcmp(words[1], "output")) {
     rl_attempted_completion_over = 0; /* set output FILE: readline's file names */
     return NULL;
-  } else if (nw == 2 && !strcmp(cmd->name, "sweep")) {
-    add_sweepable(); /* sweep NAME LIST: wind, face and the numeric parameters */
   } else if (nw == 2 && !strcmp(cmd->name, "plot") && !strcmp(words[1], "sweep")) {
     add_kept_sweeps(args); /* plot sweep NAME: wind, face, the kept parameter sweeps */
   } else if (nw == 2 && cmd->compl == uraC_PARAM && !strcmp(cmd->name, "set")) {

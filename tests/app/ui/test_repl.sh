@@ -59,6 +59,14 @@ keys r3 -l 'sweep fa'
 keys r3 Tab
 check complete_sweep_name wait_for r3 'uasimpact\[A\]> sweep face$'
 keys r3 C-u
+keys r3 -l 'sweep drone_si'
+keys r3 Tab
+check complete_sweep_param wait_for r3 'uasimpact\[A\]> sweep drone_size$'
+keys r3 C-u
+keys r3 -l 'sweep wind drone_si'
+keys r3 Tab
+check no_names_in_list cond '! wait_for r3 "sweep wind drone_siz" 1 >/dev/null'
+keys r3 C-u
 line r3 'set step 0.3; sweep drone_size 1,1.1'
 wait_for r3 '^ *A +1.1 ' 30
 keys r3 -l 'plot sweep dr'
