@@ -56,7 +56,7 @@ check velocity_level has "$TMP/out" '^angle  *0 deg  (set)$'
 run -c "set format csv; case B; set velocity 8,0; impact aim head 0 0.05; set speed 8; set angle 0; impact aim head 0 0.05"
 check velocity_same_impact cond '[ "$(grep -c "^0,0.05," "$TMP/out")" -eq 2 ] && [ "$(grep "^0,0.05," "$TMP/out" | sort -u | wc -l)" -eq 1 ]'
 run -c 'set velocity -1,2'
-check velocity_refused has "$TMP/err" "set velocity: '-1,2' is not accepted; accepted: VH,VD in m/s"
+check velocity_refused has "$TMP/err" "set velocity: '-1,2' is not accepted; accepted: VH,VD (the horizontal speed along the course and the downward speed, each >= 0) in m/s, or followed by km/h or kt"
 
 # the cases are the model's presets; an unknown one lists them
 run -c 'case Z'

@@ -41,6 +41,12 @@ run -c 'set step 0.3; sweep wind 0,3.6 km/h'
 check sweep_kmh cond '[ "$RC" -eq 0 ] && awk "NR==2{a=\$2} NR==3{b=\$2} END{exit !(a==0 && b==1)}" "$TMP/out"'
 run -c 'sweep wind 0,4 mph'
 check sweep_unit has "$TMP/err" "sweep wind: unknown unit 'mph'"
+# set velocity VH,VD in km/h: both components converted (36 km/h level: 10 m/s at 0 deg)
+run -c 'set velocity 36,0 km/h; show speed; show angle; set velocity 1,1 mph'
+check velocity_kmh cond 'sed -n 1p "$TMP/out" | grep -q "^speed  *10 m/s  (set)$" &&
+  sed -n 2p "$TMP/out" | grep -q "^angle  *0 deg  (set)$" &&
+  has "$TMP/err" "set velocity: .1,1 mph. is not accepted; .* in m/s, or followed by km/h or kt"'
+
 # SORA's maximum speed in knots; unset, show says what sora derives (not a grid extent)
 run -c 'show ua_max_speed; show ua_dimension; set ua_max_speed 20 kt; show ua_max_speed'
 check sora_speed_show cond 'sed -n 1p "$TMP/out" | grep -q "^ua_max_speed  *auto m/s  (derived at sora: the unmitigated drone.s impact speed)$" &&
