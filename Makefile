@@ -23,7 +23,11 @@
 #                 interrupted by SIGINT in the middle (scripts/check-tsan.sh)
 #   make format   apply the house style (.clang-format, clang-format 14) to every C source
 #                 (scripts/format-files.sh); make check fails when a file would change
-#   make install PREFIX=/usr/local
+#   make install PREFIX=/usr/local [DESTDIR=staging] [LIBDIR=PREFIX/lib]: the programs
+#                 (uasimpact-mpi when built), libuasimpact as a shared library with a soname and
+#                 as an archive, its pkg-config file and headers, the man pages, and the sessions
+#                 and example models under PREFIX/share/uasimpact (the program looks there after
+#                 the current folder); make uninstall removes them
 
 PREFIX  ?= /usr/local
 CC      ?= cc
@@ -58,7 +62,8 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasimpact.a
 APPLIB  = $(BUILD)/libuasimpact-app.a
 
-.PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz \
+.PHONY: all deps run check test bench reproduce calibrate sensitivity install uninstall clean \
+  check-san fuzz \
   membrane-convergence \
   check-tsan mpi mpideps format
 all: $(BIN) $(LIB)
@@ -133,10 +138,15 @@ $(BUILD)/mpi/scale_mpi.o: src/app/scale/scale_mpi.c $(FLAGS) | mpideps
 $(MPI_BIN): $(BUILD)/src/app/main.o $(BUILD)/mpi/scale_mpi.o $(APPLIB) $(LIB) | mpideps
 	$(MPICC) $(LDFLAGS) -o $@ $^ $(APP_LIBS) $(CORE_LIBS)
 
-run: all
+# make run and make check build with one job per processor unless -j was given
+NPROC := $(shell nproc 2>/dev/null || echo 2)
+JOBS = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
+run:
+	@$(MAKE) --no-print-directory $(JOBS) all
 	@if [ -t 0 ]; then ./uasimpact; else ./uasimpact sessions/demo.ses; fi
 
-check: all mpi $(TEST_BIN) $(BUILD)/calibrate
+check:
+	@$(MAKE) --no-print-directory $(JOBS) all mpi $(TEST_BIN) $(BUILD)/calibrate
 	@sh scripts/runtests.sh $(TEST_BIN)
 
 test: check
@@ -230,15 +240,56 @@ $(BUILD)/fuzz/%: tests/fuzz/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -fsanitize=fuzzer -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/uasimpact \
-	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
-	install -m 755 uasimpact $(DESTDIR)$(PREFIX)/bin/
-	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/
-	install -m 644 include/uasimpact/*.h $(DESTDIR)$(PREFIX)/include/uasimpact/
-	install -m 644 man/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
-	for f in man/*.5; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man5/; done; true
-	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(PREFIX)/share/man/man7/; done; true
+# the shared library: the core again as position-independent code (built for install only, so
+# that make and make run compile the core once); the soname carries the major version
+SO_MAJOR = 0
+SONAME   = libuasimpact.so.$(SO_MAJOR)
+SHLIB    = $(BUILD)/pic/libuasimpact.so.$(VERSION)
+PIC_OBJ  = $(CORE_SRC:%.c=$(BUILD)/pic/%.o) $(if $(MODELS),$(BUILD)/pic/models/builtin.o)
+$(BUILD)/pic/src/%.o: src/%.c $(FLAGS) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC -c $< -o $@
+$(BUILD)/pic/models/builtin.o: $(BUILD)/models/builtin.c $(FLAGS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC -c $< -o $@
+$(SHLIB): $(PIC_OBJ)
+	$(CC) -shared -Wl,-soname,$(SONAME) $(LDFLAGS) -o $@ $^ $(CORE_LIBS)
+
+# where install puts things (Debian's layout under PREFIX; LIBDIR may be PREFIX/lib/TRIPLET)
+LIBDIR  ?= $(PREFIX)/lib
+DATADIR  = $(PREFIX)/share/uasimpact
+MANDIR   = $(PREFIX)/share/man
+D        = $(DESTDIR)
+# the data: every session and what they load (the example quadcopter, the paper's grids)
+DATA     = $(shell find sessions -type f 2>/dev/null | LC_ALL=C sort)
+
+install: all $(SHLIB)
+	install -d $(D)$(PREFIX)/bin $(D)$(LIBDIR)/pkgconfig $(D)$(PREFIX)/include/uasimpact \
+	  $(D)$(MANDIR)/man1 $(D)$(MANDIR)/man5 $(D)$(MANDIR)/man7 $(D)$(DATADIR)
+	install -m 755 uasimpact $(D)$(PREFIX)/bin/
+	if [ -x $(MPI_BIN) ]; then install -m 755 $(MPI_BIN) $(D)$(PREFIX)/bin/; fi
+	install -m 644 $(LIB) $(D)$(LIBDIR)/
+	install -m 644 $(SHLIB) $(D)$(LIBDIR)/
+	ln -sf libuasimpact.so.$(VERSION) $(D)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(D)$(LIBDIR)/libuasimpact.so
+	printf 'prefix=%s\nlibdir=%s\nincludedir=%s\n\nName: uasimpact\nDescription: %s\nVersion: %s\nLibs: -L$${libdir} -luasimpact\nLibs.private: %s\nCflags: -I$${includedir}\n' \
+	  '$(PREFIX)' '$(LIBDIR)' '$(PREFIX)/include' \
+	  'drone-on-person impact simulation and risk (Q = A_impact P{F|impact})' '$(VERSION)' \
+	  '$(CORE_LIBS)' >$(D)$(LIBDIR)/pkgconfig/uasimpact.pc
+	install -m 644 include/uasimpact/*.h $(D)$(PREFIX)/include/uasimpact/
+	install -m 644 man/*.1 $(D)$(MANDIR)/man1/
+	for f in man/*.5; do [ -e "$$f" ] && install -m 644 "$$f" $(D)$(MANDIR)/man5/; done; true
+	for f in man/*.7; do [ -e "$$f" ] && install -m 644 "$$f" $(D)$(MANDIR)/man7/; done; true
+	for f in $(DATA); do install -D -m 644 "$$f" "$(D)$(DATADIR)/$$f" || exit 1; done
+
+# what install put there, and the folders it made that are then empty
+uninstall:
+	rm -f $(D)$(PREFIX)/bin/uasimpact $(D)$(PREFIX)/bin/$(MPI_BIN) \
+	  $(D)$(LIBDIR)/libuasimpact.a $(D)$(LIBDIR)/libuasimpact.so.$(VERSION) \
+	  $(D)$(LIBDIR)/$(SONAME) $(D)$(LIBDIR)/libuasimpact.so $(D)$(LIBDIR)/pkgconfig/uasimpact.pc
+	rm -rf $(D)$(PREFIX)/include/uasimpact $(D)$(DATADIR)
+	for f in man/*.[157]; do rm -f "$(D)$(MANDIR)/man$${f##*.}/$${f##*/}"; done
+	-rmdir $(D)$(LIBDIR)/pkgconfig 2>/dev/null; true
 
 # the house style on every source; the transitional list of sources not yet formatted goes
 CLANG_FORMAT ?= clang-format

@@ -1,4 +1,4 @@
-/* main.c: command line: uasimpact [-i] [-c COMMANDS] [FILE]... (-h, -V) */
+/* main.c: command line: uasimpact [-i] [-n] [-c COMMANDS] [FILE]... (-h, -V) */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -10,13 +10,14 @@
 
 static void usage(FILE* f) {
   fprintf(f,
-          "usage: uasimpact [-i] [-c COMMANDS] [FILE]...\n"
+          "usage: uasimpact [-i] [-n] [-c COMMANDS] [FILE]...\n"
           "       uasimpact --shard I/N --part OUT [-c COMMANDS] [FILE]...\n"
           "       uasimpact merge [-c COMMANDS] [--script FILE]... PART...\n"
           "  with no arguments: interactive on a terminal, else replay standard input\n"
           "  FILE         replay a session script\n"
           "  -c COMMANDS  run commands (separated by ';')\n"
           "  -i           stay interactive after the scripts and commands\n"
+          "  -n           do not read the start-up file (~/.config/uasimpact/init)\n"
           "  -h, --help   this text; see uasimpact(1)\n"
           "  -V, --version  the version and the commit it was built from\n");
 }
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
   if (st) return done(st);
 
   /* options first: -i anywhere, help */
-  int stay = 0, work = 0;
+  int stay = 0, work = 0, noinit = 0;
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
       usage(stdout);
@@ -73,6 +74,8 @@ int main(int argc, char** argv) {
       return done(0);
     } else if (!strcmp(argv[i], "-i")) {
       stay = 1;
+    } else if (!strcmp(argv[i], "-n")) {
+      noinit = 1;
     } else if (!strcmp(argv[i], "-c")) {
       if (i + 1 >= argc) {
         fprintf(stderr, "uasimpact: -c needs the commands as its argument\n");
@@ -89,10 +92,18 @@ int main(int argc, char** argv) {
     }
   }
 
+  /* an interactive session starts from one's start-up file (a script alone never reads it: it
+     gives the same results on every machine); a failing line is reported, the session goes on */
+  int interactive = stay || (!work && isatty(STDIN_FILENO));
+  if (interactive && !noinit) {
+    ura_run_init(c);
+    ura_undo_free(c); /* undo goes back no further than the start-up state */
+  }
+
   /* scripts and -c commands in the order given; the first failure ends the run */
   for (int i = 1; i < argc && !c->quit; i++) {
     int rc = 0;
-    if (!strcmp(argv[i], "-i")) continue;
+    if (!strcmp(argv[i], "-i") || !strcmp(argv[i], "-n")) continue;
     if (!strcmp(argv[i], "-c")) {
       rc = ura_run_line(c, argv[++i]);
       if (rc) ura_locate(c, "-c", 1);

@@ -31,6 +31,18 @@ int ura_parse_list(const char* s, double* v, int max);
 int ura_parse_list_why(const char* s, double* v, int max, char* why, size_t n);
 /* the number of values a comma-separated list holds (its commas plus one) */
 int ura_list_count(const char* s);
+/* the installed data folder (PREFIX/share/uasimpact beside the program's PREFIX/bin) into buf;
+   0, or -1 when there is none (datadir.c) */
+int ura_data_dir(char* buf, size_t n);
+/* open path for reading; a relative name that is not in the current folder is looked for in the
+   data folder, its sessions/ and their subfolders; the name opened into found (n bytes); NULL
+   with errno of the first attempt when none (datadir.c) */
+FILE* ura_data_open(const char* path, char* found, size_t n);
+/* a speed unit: m/s, km/h or kt (exactly so); 0 with the factor to m/s, or -1 (speedunit.c) */
+int ura_speed_unit(const char* unit, double* to_si);
+/* v in a unit ura_speed_unit accepts, in m/s (v * 1852 / 3600 for kt: 36 km/h is 10 m/s exactly) */
+double ura_speed_to_si(const char* unit, double v);
+#define uraSPEED_UNITS "m/s, km/h or kt"
 
 /* ---- hashing (fnv.c) ---- */
 
@@ -154,6 +166,13 @@ FILE* ura_pager_release(FILE* msg);
 void ura_progress_label(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 void ura_progress_start(void);
 void ura_progress_line(const char* what, long done, long total, const char* noun);
+/* a run of n pieces of work (a sweep's grids), piece i (0 first: the run's clock starts) now
+   running; n 0 ends the run. The line then says how long is left of all of them */
+void ura_progress_run(int i, int n);
+/* the line's text (what ura_progress_line prints after the label and before clearing the rest):
+   el seconds since this piece began; piece i of runs (0: not a run) begun el_run seconds ago */
+void ura_progress_text(char* buf, size_t n, const char* what, long done, long total,
+                       const char* noun, double el, int i, int runs, double el_run);
 /* "uasimpact VERSION (commit HASH[-dirty])" (version.c) */
 const char* ura_version(void);
 /* "did you mean" (suggest.c): the edit distance of two names; the nearest name offered for a

@@ -48,9 +48,16 @@ int ura_case_load(uraCtx* c, const char* name) {
     ura_preset_names(c, names, sizeof names);
     return ura_fail(c, "case: unknown case '%s'; accepted: %s", name, names);
   }
-  uraState ns;
+  uraState ns, base;
   if (ura_preset_state(c, pr, c->model, &ns)) return -1;
-  return ura_model_state(c, &ns, "case");
+  /* what the user set that the case does not keep, told once the case is live */
+  char list[1500] = "";
+  if (ura_case_baseline(c, 1, &base) == 0) ura_dropped(c, &c->st, &base, &ns, list, sizeof list);
+  char who[48]; /* (pr lives in the model, which the new state may free) */
+  snprintf(who, sizeof who, "case %s", pr->name);
+  if (ura_model_state(c, &ns, "case")) return -1;
+  ura_dropped_note(c, who, list);
+  return 0;
 }
 
 int ura_case_default(uraCtx* c) {
@@ -105,4 +112,29 @@ void ura_impact_keep(uraCtx* c, const char* casename, double wind, const urImpac
            casename && *casename ? casename : "?", w, cond->face, cond->speed, cond->angle,
            cond->aim ? "aimed at the head, up" : "at dpar", dpar, cond->aim ? "side" : "dperp",
            dperp, r->inj.hic15.hic, r->inj.nij.nij, r->contact ? r->p : 0.0);
+}
+
+int ura_case_baseline(uraCtx* c, int keep_live, uraState* base) {
+  const urPreset* pr = ura_preset_find(c, c->st.casename);
+  uraState keep;
+  if (keep_live)
+    keep = c->st;
+  else
+    ura_state_defaults(&keep);
+  if (!pr) {
+    /* no preset by that name (a model without presets): the defaults with the kept settings */
+    *base = keep;
+    return c->model && c->model->npreset ? -1 : 0;
+  }
+  char err[uraERRLEN];
+  memcpy(err, c->err, sizeof err);
+  int rc = ura_preset_state_from(c, pr, c->model, &keep, base);
+  memcpy(c->err, err, sizeof err); /* a note that cannot be made is no failure */
+  return rc;
+}
+
+void ura_dropped_note(uraCtx* c, const char* who, const char* list) {
+  if (c->mute || !c->interactive || !*list) return; /* at the prompt; a script stays quiet */
+  fprintf(c->msg, "%s: drops %s (settings of yours it does not keep; undo brings them back)\n", who,
+          list);
 }

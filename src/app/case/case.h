@@ -243,6 +243,8 @@ typedef struct uraCtx {
   void (*scale_input)(struct uraCtx* c, FILE* f, const char* path);
   int mute;              /* results, notes, files and plots go nowhere (scale.h) */
   struct uraReport* rep; /* the results kept for report (report.h; NULL: none yet) */
+  struct uraUndo* undo;  /* the states undo goes back to (undo.c; NULL: none yet) */
+  int undo_nest;         /* commands running inside a command (source): recorded as one */
   /* the report's hooks (ura_report_install; the report layer sits above the commands): around
      each command (script.c), and each printed table (output.c); NULL: nothing is kept */
   void (*rep_begin)(struct uraCtx* c, int argc, char** argv);
@@ -346,6 +348,31 @@ int ura_case_default(uraCtx* c);
 const urPreset* ura_preset_find(uraCtx* c, const char* name);
 void ura_preset_names(uraCtx* c, char* buf, size_t n);
 int ura_preset_state(uraCtx* c, const urPreset* pr, const urModel* m, uraState* ns);
+/* the same, keeping those settings from keep rather than from the live state */
+int ura_preset_state_from(uraCtx* c, const urPreset* pr, const urModel* m, const uraState* keep,
+                          uraState* ns);
+/* what a case or reset drops (dropped.c): the settings of state now that differ from base (the
+   state its case starts with: what the user changed) and from next (what comes), as "name value
+   unit, ..." into buf (n bytes); the length (0: nothing dropped) */
+size_t ura_dropped(uraCtx* c, const uraState* now, const uraState* base, const uraState* next,
+                   char* buf, size_t n);
+/* the state the live case starts with: its preset on the defaults; keep_live: the settings a
+   case keeps (wind, face, step, ...) as they are live, else their defaults (case.c) */
+int ura_case_baseline(uraCtx* c, int keep_live, uraState* base);
+/* the note of what a case or reset dropped (list from ura_dropped; empty: none) on c->msg at
+   the prompt (a script stays quiet): "WHO: drops LIST (...; undo brings them back)" */
+void ura_dropped_note(uraCtx* c, const char* who, const char* list);
+
+/* undo (undo.c): the states before the last commands that changed the settings */
+#define uraUNDO_LEVELS 32
+typedef struct uraUndo uraUndo;
+void ura_undo_push(uraCtx* c, const uraState* before, const char* what);
+/* the newest state made live again (the model compiled for it) and popped; what the command
+   that left it was into what; 0, or -1 with a message (nothing to undo; the model, its parts
+   changed since, refuses it: that level is dropped all the same) */
+int ura_undo_pop(uraCtx* c, char* what, size_t n);
+int ura_undo_levels(const uraCtx* c);
+void ura_undo_free(uraCtx* c);
 /* design parameters: mass also as the multibody drone's total (its role mass= parameter, as an
    override of ns; user: set by the user; preset.c), the models a setting changes (design.c) */
 int ura_design_mass(const urModel* m, uraState* ns, double mass, int user);
@@ -358,6 +385,12 @@ const char* ura_design_mark(uraCtx* c, const char* name, char* buf, size_t n);
    cannot take for a pipe; both can be written back by save session */
 int ura_terminal_check(uraCtx* c, const char* value, char* norm, size_t n);
 int ura_output_check(uraCtx* c, const char* value, char* norm, size_t n);
+/* a speed parameter's value or list typed in UNIT (km/h, kt, m/s) as text in m/s into out (n
+   bytes), for ura_param_set; 0, or -1 with a message that starts with who (speed.c) */
+int ura_speed_convert(uraCtx* c, const char* who, const uraParam* p, const char* value,
+                      const char* unit, char* out, size_t n);
+/* the terminal names set terminal accepts, after "default" (completion; plot_term.c) */
+extern const char* const ura_term_choices[];
 /* what a gnuplot terminal draws on (plot_term.c) */
 enum {
   uraTERM_WINDOW = 0,

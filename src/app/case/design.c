@@ -85,15 +85,17 @@ const char* ura_design_mark(uraCtx* c, const char* name, char* buf, size_t n) {
 /* set velocity VH,VD: the speed vector in the course's vertical plane (horizontal along the
    course, downward; m/s) as the speed and angle it makes, both set */
 static int set_velocity(uraCtx* c, const char* value, const char* unit) {
-  double v[3];
+  double v[3], f = 1;
   int n = ura_parse_list(value, v, 3);
-  if (unit || n != 2 || !(v[0] >= 0) || !(v[1] >= 0)) {
+  if ((unit && ura_speed_unit(unit, &f)) || n != 2 || !(v[0] >= 0) || !(v[1] >= 0)) {
     return ura_fail(c,
-                    "set velocity: '%s%s%s' is not accepted; accepted: VH,VD in m/s (the "
-                    "horizontal speed along the course and the downward speed, each >= 0; no "
-                    "unit)",
+                    "set velocity: '%s%s%s' is not accepted; accepted: VH,VD (the horizontal "
+                    "speed along the course and the downward speed, each >= 0) in m/s, or "
+                    "followed by km/h or kt",
                     value, unit ? " " : "", unit ? unit : "");
   }
+  v[0] = unit ? ura_speed_to_si(unit, v[0]) : v[0]; /* km/h, kt: to m/s */
+  v[1] = unit ? ura_speed_to_si(unit, v[1]) : v[1];
   char sp[64], an[64];
   snprintf(sp, sizeof sp, "%.17g", hypot(v[0], v[1]));
   snprintf(an, sizeof an, "%.17g", atan2(v[1], v[0]) * 180 / M_PI);

@@ -632,11 +632,14 @@ int ura_grid_load(uraCtx* c, const char* path) {
   int rc = -1;
 
   if (ura_dry(c, "grid load")) return -1;
-  r.f = fopen(path, "r");
+  /* the current folder first, then the installed data (the paper's grids) */
+  char found[4096];
+  r.f = ura_data_open(path, found, sizeof found);
   if (!r.f && ura_interrupted()) {
     return ura_fail(c, "grid load: interrupted (Ctrl-C) while opening '%s'", path);
   }
   if (!r.f) return ura_fail(c, "grid load: cannot open '%s': %s", path, strerror(errno));
+  path = r.path = found;
   ura_input_seen(c, r.f, path); /* a shard's part may not replace it */
 
   /* comments (conditions), then the header that tells the format */

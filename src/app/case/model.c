@@ -42,6 +42,7 @@ static void parts_changed(uraCtx* c, int keep_stances) {
 }
 
 void ura_models_free(uraCtx* c) {
+  ura_undo_free(c);
   parts_changed(c, 0);
   parts_free(c->part, c->npart);
   c->npart = 0;
@@ -357,11 +358,14 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
                     name, value);
   }
   char si[urNAMELEN];
-  if (unit && ur_unit_parse(unit, &f, si, sizeof si)) {
+  /* km/h and kt for a parameter in m/s (the model language's units have no hour) */
+  int speed = unit && strcmp(unit, "m/s") && !ura_speed_unit(unit, &f);
+  if (speed) snprintf(si, sizeof si, "m/s");
+  if (unit && !speed && ur_unit_parse(unit, &f, si, sizeof si)) {
     return ura_fail(c,
                     "set %s: unknown unit '%s'; accepted: the units of uasimpact-model(5) "
                     "(m mm cm kg g s ms N kN Pa kPa MPa GPa atm bar deg rad J L), or several "
-                    "joined by * and / (N*m/rad)",
+                    "joined by * and / (N*m/rad); speeds also km/h and kt",
                     name, unit);
   }
   int k = ura_model_param_find(c, name);
@@ -437,11 +441,14 @@ static int model_load(uraCtx* c, const char* path) {
                     "neither uasimpact nor a shell expands",
                     path);
   }
-  FILE* f = fopen(path, "r");
+  /* the current folder first, then the installed example models (model load quad.urm) */
+  char found[4096];
+  FILE* f = ura_data_open(path, found, sizeof found);
   if (!f && ura_interrupted()) {
     return ura_fail(c, "model load: interrupted (Ctrl-C) while opening '%s'", path);
   }
   if (!f) return ura_fail(c, "model load: cannot open '%s': %s", path, strerror(errno));
+  path = found;
   ura_input_seen(c, f, path); /* a shard's part may not replace it */
 
   /* the whole text, bounded (a device never ends), read errors named */

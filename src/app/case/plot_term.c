@@ -18,6 +18,12 @@ static const char* const term_text[] = {"dumb",       "caca",  "sixelgd", "kitty
 static const char* const term_file[] = {"png",      "pngcairo", "jpeg",       "gif",    "svg",
                                         "pdfcairo", "epscairo", "postscript", "canvas", NULL};
 
+/* what completion offers after set terminal: gnuplot's default, then every accepted name */
+const char* const ura_term_choices[] = {
+    "default",    "png",        "pngcairo", "jpeg", "gif",  "svg",     "pdfcairo",
+    "epscairo",   "postscript", "canvas",   "dumb", "caca", "sixelgd", "kittygd",
+    "kittycairo", "block",      "qt",       "wxt",  "x11",  NULL};
+
 static int in_list(const char* const* list, const char* w, size_t n) {
   for (int i = 0; list[i]; i++)
     if (strlen(list[i]) == n && !strncmp(list[i], w, n)) return 1;

@@ -36,9 +36,13 @@ static int preset_setting(uraCtx* c, uraState* ns, const char* preset, const cha
 }
 
 int ura_preset_state(uraCtx* c, const urPreset* pr, const urModel* m, uraState* ns) {
+  return ura_preset_state_from(c, pr, m, &c->st, ns);
+}
+
+int ura_preset_state_from(uraCtx* c, const urPreset* pr, const urModel* m, const uraState* keep,
+                          uraState* ns) {
   /* keep the live wind, face, lists, grid step, recall, descent source, tau and output settings;
      everything else from the defaults and the preset */
-  const uraState* keep = &c->st;
   ura_state_defaults(ns);
   ns->descent.wind = keep->descent.wind;
   ns->face = keep->face;

@@ -197,8 +197,9 @@ const uraParam ura_params[] = {
      "unset); never in scripts, -c or pipes",
      onoff_names},
     {"terminal", uraP_STR, OFF(terminal), 0, "", 0, 64,
-     "gnuplot terminal for plot (png, svg, pdfcairo, ...); 'default' for gnuplot's own", NULL,
-     ura_terminal_check},
+     "gnuplot terminal for plot (png, svg, pdfcairo, ...) and its options, the rest of the line "
+     "as in gnuplot (set terminal png size 1000,700); 'default' for gnuplot's own",
+     ura_term_choices, ura_terminal_check},
     {"output", uraP_STR, OFF(output), 0, "", 0, 512,
      "file that plot writes (with a file terminal); 'none' for a window", NULL, ura_output_check},
     {NULL, 0, 0, 0, NULL, 0, 0, NULL, NULL}};

@@ -9,15 +9,22 @@
 const uraCmd ura_cmds[] = {
     {"help", ura_cmd_help, 0, 1, uraC_COMMAND, "help [COMMAND]",
      "list the commands, or explain one"},
-    {"set", ura_cmd_set, 2, 3, uraC_PARAM, "set NAME VALUE [UNIT]",
+    {"set", ura_cmd_set, 2, -1, uraC_PARAM, "set NAME VALUE [UNIT]",
      "change a parameter of the live case (see 'show' for names, units and ranges); model "
-     "parameters take an optional unit"},
+     "parameters take an optional unit, speeds m/s, km/h or kt; set terminal takes the rest of "
+     "the line (set terminal png size 1000,700)"},
     {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
      "print the live case state with units, or one parameter; derived values say so"},
     {"case", ura_cmd_case, 1, 1, uraC_CASE, "case NAME",
      "load a preset of the model (the RA3's: A, B, C, A1, A2; 'model show' lists their preset lines); wind, "
-     "face, step, recall and the output settings keep their values"},
-    {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset", "restore every default"},
+     "face, step, recall and the output settings keep their values; a note names the settings "
+     "of yours it drops (undo brings them back)"},
+    {"reset", ura_cmd_reset, 0, 0, uraC_NONE, "reset",
+     "restore every default (says which of your settings it drops; undo brings them back)"},
+    {"undo", ura_cmd_undo, 0, 0, uraC_NONE, "undo",
+     "restore the settings as they were before the last command that changed them (set, case, "
+     "reset, design load, dist, source ...); up to 32 levels; grids, sweeps, designs and loaded "
+     "model files stay"},
     {"descent", ura_cmd_descent, 0, 0, uraC_NONE, "descent",
      "impact speed and descent angle for each wind in 'winds' (paper Table 2); "
      "columns case,wind,speed,angle"},
@@ -28,8 +35,8 @@ const uraCmd ura_cmds[] = {
      "run the offset grid of the live case (summary row), print it as coloured text (show), "
      "every cell (cells), or load a grid CSV (the paper's tables) as the last grid"},
     {"sweep", ura_cmd_sweep, 1, 3, uraC_NONE,
-     "sweep wind LIST|face LIST|NAME LIST [UNIT]|show|clear",
-     "one grid per wind speed (m/s) or face direction (deg) of LIST, columns "
+     "sweep wind LIST [UNIT]|face LIST|NAME LIST [UNIT]|show|clear",
+     "one grid per wind speed (m/s, or km/h or kt as UNIT) or face direction (deg) of LIST, columns "
      "case,wind,face,speed,angle,q; or per value of any numeric parameter NAME (a model "
      "parameter in UNIT), columns case,NAME,wind,face,speed,angle,q; the sweeps are kept for plot "
      "sweep and export sweep (show lists them, clear forgets them)"},
@@ -101,7 +108,7 @@ const uraCmd ura_cmds[] = {
      "write a script that recreates the live state exactly (replay: uasimpact FILE, or source)"},
     {"source", ura_cmd_source, 1, 1, uraC_FILE, "source FILE",
      "run the commands of a session script; errors name the file and line"},
-    {"quit", ura_cmd_quit, 0, 0, uraC_NONE, "quit", "leave uasimpact (also: exit, Ctrl-D)"},
+    {"quit", ura_cmd_quit, 0, 0, uraC_NONE, "quit", "leave uasimpact (also: q, exit, Ctrl-D)"},
     {"exit", ura_cmd_quit, 0, 0, uraC_NONE, "exit", "leave uasimpact"},
     {NULL, NULL, 0, 0, uraC_NONE, NULL, NULL}};
 
@@ -115,7 +122,11 @@ const uraCmd* ura_cmd_find(const char* name) {
 int ura_cmd_help(uraCtx* c, int argc, char** argv) {
   /* one command in detail */
   if (argc == 2) {
-    const uraCmd* k = ura_cmd_find(argv[1]);
+    char cands[400];
+    const uraCmd* k = ura_cmd_resolve(argv[1], cands, sizeof cands);
+    if (!k && *cands) {
+      return ura_fail(c, "help: ambiguous command '%s': %s? type more of the name", argv[1], cands);
+    }
     if (!k) {
       uraSuggest sg;
       char dym[120];
@@ -143,8 +154,35 @@ int ura_cmd_help(uraCtx* c, int argc, char** argv) {
 
 static int set_one(uraCtx* c, int argc, char** argv);
 
+/* set terminal NAME OPTION...: the words joined again as gnuplot reads the rest of its line;
+   a word that was quoted (it holds a blank or a comma after font or background) is quoted again,
+   so that ura_terminal_check sees what was typed */
+static int set_terminal_words(uraCtx* c, int argc, char** argv) {
+  char line[512];
+  size_t k = 0;
+  for (int i = 2; i < argc && k < sizeof line; i++) {
+    int q = strpbrk(argv[i], " \t") ||
+            (i > 2 && (!strcmp(argv[i - 1], "font") || !strcmp(argv[i - 1], "background")));
+    const char* quote = !q ? "" : strchr(argv[i], '\'') ? "\"" : "'";
+    k += (size_t)snprintf(line + k, sizeof line - k, "%s%s%s%s", i > 2 ? " " : "", quote, argv[i],
+                          quote);
+  }
+  if (k >= sizeof line) {
+    return ura_fail(c, "set terminal: the line is too long; accepted: a terminal and its options");
+  }
+  char* av[3] = {argv[0], argv[1], line};
+  return ura_cmd_set(c, 3, av);
+}
+
 /* set, then at the prompt the models the setting changes (design.c) */
 int ura_cmd_set(uraCtx* c, int argc, char** argv) {
+  if (argc > 3 && !strcmp(argv[1], "terminal")) return set_terminal_words(c, argc, argv);
+  if (argc > 4) {
+    return ura_fail(c,
+                    "set %s: wrong number of arguments (%d); usage: set NAME VALUE [UNIT] (only "
+                    "set terminal takes more words: its options)",
+                    argv[1], argc - 1);
+  }
   int rc = ura_design_set(c, argv[1], argv[2], argc == 4 ? argv[3] : NULL);
   if (rc == 1) rc = set_one(c, argc, argv);
   const char* reach = rc ? NULL : ura_design_reach(c, argv[1]);
@@ -181,8 +219,21 @@ static int set_one(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "set: unknown parameter '%s'%s; 'show' lists the parameters", argv[1],
                     ura_suggest_text(&sg, dym, sizeof dym));
   }
+  /* a speed in km/h or kt (set wind 10 kt, set winds 0,10,20 km/h): converted to m/s here */
+  double f;
+  if (argc == 4 && p && !strcmp(p->unit, "m/s") && strcmp(argv[3], "m/s") &&
+      !ura_speed_unit(argv[3], &f)) {
+    char si[1024], who[80];
+    snprintf(who, sizeof who, "set %s", p->name);
+    if (ura_speed_convert(c, who, p, argv[2], argv[3], si, sizeof si)) return -1;
+    return ura_param_set(c, p, si);
+  }
   /* a unit is accepted when it is the parameter's own (set wind 3 m/s) */
   if (argc == 4 && !(p && *p->unit && !strcmp(argv[3], p->unit))) {
+    if (p && !strcmp(p->unit, "m/s")) {
+      return ura_fail(c, "set %s: unknown unit '%s'; accepted: %s", argv[1], argv[3],
+                      uraSPEED_UNITS);
+    }
     return ura_fail(c, "set %s: takes no unit but its own (it is in %s)", argv[1],
                     p && *p->unit ? p->unit : "the unit 'show' prints");
   }
@@ -197,6 +248,17 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
   const char* note = "";
   if (p->setoff && !*(const int*)((const char*)&c->st + p->setoff)) {
     double one[4] = {0, 0, 0, 0}, *v = ext ? ext : one;
+    if (!strcmp(p->name, "ua_dimension")) {
+      /* SORA's inputs when not set: what sora takes (cmd_sora25.c) */
+      fprintf(c->out, "%-16s %.6g m  (derived: the larger of the drone's width and length)\n",
+              p->name, c->st.para.width > c->st.para.length ? c->st.para.width : c->st.para.length);
+      return 0;
+    }
+    if (!strcmp(p->name, "ua_max_speed")) {
+      fprintf(c->out, "%-16s auto m/s  (derived at sora: the unmitigated drone's impact speed)\n",
+              p->name);
+      return 0;
+    }
     if (!strcmp(p->name, "speed") || !strcmp(p->name, "angle")) {
       if (ura_impact_conditions(c, &v[0], &v[1])) {
         if (!ext) return -1;
@@ -320,10 +382,29 @@ int ura_cmd_case(uraCtx* c, int argc, char** argv) {
 }
 
 int ura_cmd_reset(uraCtx* c, int argc, char** argv) {
+  /* what the user set: against the defaults under the live case's preset */
+  uraState base, before = c->st;
+  int known = ura_case_baseline(c, 0, &base) == 0;
+  uraUndo* undo = c->undo; /* the undo levels outlive the reset (undo goes back before it) */
+  c->undo = NULL;
   ura_models_free(c);
+  c->undo = undo;
   ura_state_defaults(&c->st);
   if (ura_models_init(c)) return -1;
-  return ura_case_default(c);
+  if (ura_case_default(c)) return -1;
+  char list[1500] = "";
+  if (known) ura_dropped(c, &before, &base, &c->st, list, sizeof list);
+  ura_dropped_note(c, "reset", list);
+  return 0;
+}
+
+int ura_cmd_undo(uraCtx* c, int argc, char** argv) {
+  char what[64];
+  if (ura_undo_pop(c, what, sizeof what)) return -1;
+  int left = ura_undo_levels(c);
+  fprintf(c->msg, "undo: the settings as before '%s' (%d more level%s to undo, at most %d kept)\n",
+          what, left, left == 1 ? "" : "s", uraUNDO_LEVELS);
+  return 0;
 }
 
 int ura_cmd_quit(uraCtx* c, int argc, char** argv) {

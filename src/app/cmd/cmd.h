@@ -36,6 +36,10 @@ typedef struct {
 
 extern const uraCmd ura_cmds[];
 const uraCmd* ura_cmd_find(const char* name);
+/* the command NAME stands for: its full name, a short form (q) or a prefix only one command
+   begins with (abbrev.c); NULL otherwise, with the commands it begins (ambiguous: "descent,
+   design") in cands (n bytes; empty when none begins with it; cands may be NULL) */
+const uraCmd* ura_cmd_resolve(const char* name, char* cands, size_t n);
 
 /* run one command line (may hold several commands separated by ';'); 0 or -1 */
 int ura_run_line(uraCtx* c, const char* line);
@@ -43,6 +47,10 @@ int ura_run_line(uraCtx* c, const char* line);
 void ura_locate(uraCtx* c, const char* name, int lineno);
 /* run a script file; errors are reported as FILE:LINE: message; 0 or -1 */
 int ura_run_file(uraCtx* c, const char* path);
+/* the start-up file (init.c): its path into buf (n bytes; -1: no HOME nor XDG_CONFIG_HOME);
+   run it, if it exists, with only the commands that set things (0, or -1 after printing why) */
+int ura_init_path(char* buf, size_t n);
+int ura_run_init(uraCtx* c);
 /* run a script from an open stream, naming it name in messages */
 int ura_run_stream(uraCtx* c, FILE* f, const char* name);
 
@@ -50,6 +58,7 @@ int ura_run_stream(uraCtx* c, FILE* f, const char* name);
 int ura_cmd_help(uraCtx* c, int argc, char** argv);
 int ura_cmd_set(uraCtx* c, int argc, char** argv);
 int ura_cmd_show(uraCtx* c, int argc, char** argv);
+int ura_cmd_undo(uraCtx* c, int argc, char** argv);
 int ura_cmd_reset(uraCtx* c, int argc, char** argv);
 int ura_cmd_case(uraCtx* c, int argc, char** argv);
 int ura_cmd_source(uraCtx* c, int argc, char** argv);
@@ -98,6 +107,8 @@ typedef struct uraPSweep {
                                     command's length */
 } uraPSweep;
 int ura_sweep_param(uraCtx* c, int argc, char** argv);
+/* a sweep's table printed when rows > 0; else let go unprinted (no header without rows) */
+void ura_sweep_table(uraCtx* c, uraTable* t, int rows);
 void ura_sweep_param_rows(uraCtx* c, uraTable* t);
 void ura_sweep_param_clear(uraCtx* c);
 int ura_cmd_export(uraCtx* c, int argc, char** argv);

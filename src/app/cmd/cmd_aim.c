@@ -32,6 +32,15 @@ int ura_impact_aim(uraCtx* c, int argc, char** argv) {
   memset(&cond, 0, sizeof cond);
   const urImpactSetup* s = ura_setup(c);
   if (!s || ura_impact_conditions(c, &cond.speed, &cond.angle)) return -1;
+  /* a flight (below the angles of a descent) at the descent's derived speed would be a fall's
+     speed flown level: the cruise speed must be declared */
+  if (cond.angle < uraANGLE_DELTA && !c->st.speed_set) {
+    return ura_fail(c,
+                    "impact aim: a flight at angle %g deg needs a declared cruise speed; the "
+                    "derived %.3g m/s is the descent's fall, not a cruise; accepted: 'set speed "
+                    "V' (m/s, km/h or kt) or 'set velocity VH,VD' first",
+                    cond.angle, cond.speed);
+  }
   cond.face = c->st.face;
   cond.pitch = c->st.pitch;
   cond.roll = c->st.roll;

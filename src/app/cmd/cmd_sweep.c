@@ -93,6 +93,23 @@ static int sweep_show(uraCtx* c) {
   return 0;
 }
 
+void ura_sweep_table(uraCtx* c, uraTable* t, int rows) {
+  if (rows > 0) {
+    ura_table_print(c, t);
+    return;
+  }
+  /* no grid finished (stopped, or failed, at the first value): no empty header; the table is
+     let go through a stream nobody reads */
+  char* buf = NULL;
+  size_t n = 0;
+  FILE* f = open_memstream(&buf, &n);
+  if (f) {
+    ura_table_write(f, t, 0, 0);
+    fclose(f);
+  }
+  free(buf);
+}
+
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"case", "wind", "face", "speed", "angle", "q"};
   if (argc == 2 && !strcmp(argv[1], "show")) return sweep_show(c);
@@ -111,6 +128,15 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
   if ((is_wind || is_face) && argc == 2) {
     return ura_fail(c, "sweep %s: needs a list of values, e.g. 'sweep %s %s'", argv[1], argv[1],
                     is_wind ? "0,4,10" : "0,90,180");
+  }
+  /* sweep wind LIST km/h|kt: the list in m/s from here on (sweeps keep m/s) */
+  char si[4096];
+  if (is_wind && argc == 4) {
+    if (ura_speed_convert(c, "sweep wind", ura_param_find("winds"), argv[2], argv[3], si,
+                          sizeof si))
+      return -1;
+    argv[2] = si;
+    argc = 3;
   }
   if ((!is_wind && !is_face) || argc != 3) {
     return ura_fail(c,
@@ -180,10 +206,12 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
       c->st.descent.wind = v[i];
     else
       c->st.face = v[i];
+    ura_progress_run(i, n);
     ura_progress_label("sweep %s %g %s (%d of %d): ", argv[1], v[i], is_wind ? "m/s" : "deg", i + 1,
                        n);
     rc = ura_grid_run(c, 0);
     ura_progress_label(NULL);
+    ura_progress_run(0, 0);
     if (rc && ura_interrupted()) {
       snprintf(why, sizeof why, "%s", c->err);
       ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", argv[1],
@@ -246,7 +274,7 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
                    "this session and were not simulated again ('set recall off' recomputes)",
                    argv[1], recalled);
   }
-  ura_table_print(c, t);
+  ura_sweep_table(c, t, s->n);
 
   /* keep what finished (a sweep that stopped keeps the values before the failure) */
   int kept = 0;

@@ -56,7 +56,12 @@ static int split_words(char* s, char** argv, uraCtx* c) {
 /* run one command given as words */
 static int run_words(uraCtx* c, int argc, char** argv) {
   char name[128];
-  const uraCmd* cmd = ura_cmd_find(argv[0]);
+  char cands[400];
+  const uraCmd* cmd = ura_cmd_resolve(argv[0], cands, sizeof cands);
+  if (!cmd && *cands) {
+    printable(argv[0], name, sizeof name);
+    return ura_fail(c, "ambiguous command '%s': %s? type more of the name", name, cands);
+  }
   if (!cmd) {
     uraSuggest sg;
     char dym[120];
@@ -66,6 +71,10 @@ static int run_words(uraCtx* c, int argc, char** argv) {
     return ura_fail(c, "unknown command '%s'%s; type 'help' for the list of commands", name,
                     ura_suggest_text(&sg, dym, sizeof dym));
   }
+  /* the handlers, the report and the guard see the full name (a prefix typed, q) */
+  char full[64];
+  snprintf(full, sizeof full, "%s", cmd->name);
+  argv[0] = full;
   int nargs = argc - 1;
   if (nargs < cmd->minargs || (cmd->maxargs >= 0 && nargs > cmd->maxargs)) {
     return ura_fail(c, "%s: wrong number of arguments (%d); usage: %s", cmd->name, nargs,
@@ -74,7 +83,21 @@ static int run_words(uraCtx* c, int argc, char** argv) {
   if (c->guard && c->guard(c, argc, argv)) return -1;
   int paged = ura_pager_begin(c, cmd->name);
   if (c->rep_begin) c->rep_begin(c, argc, argv); /* report/ keeps what it prints */
+  /* the settings before a command typed or read (a sourced file is one command), for undo */
+  uraState* before = NULL;
+  if (c->undo_nest == 0 && strcmp(cmd->name, "undo") && (before = malloc(sizeof *before)))
+    memcpy(before, &c->st, sizeof *before);
+  c->undo_nest++;
   int rc = cmd->fn(c, argc, argv);
+  c->undo_nest--;
+  if (before && memcmp(before, &c->st, sizeof *before)) {
+    char what[64];
+    size_t k = 0;
+    for (int i = 0; i < argc && k < sizeof what; i++)
+      k += (size_t)snprintf(what + k, sizeof what - k, "%s%s", i ? " " : "", argv[i]);
+    ura_undo_push(c, before, what);
+  }
+  free(before);
   if (c->rep_end) c->rep_end(c, rc);
   if (paged) ura_pager_end(c);
 
@@ -176,9 +199,12 @@ int ura_run_file(uraCtx* c, const char* path) {
     return ura_fail(c, "source: nesting deeper than %d (does a script source itself?)", MAXDEPTH);
   }
   if (ura_dry(c, "source")) return -1;
-  FILE* f = fopen(path, "r");
+  /* the current folder first, then the installed sessions (source tour.ses) */
+  char found[4096];
+  FILE* f = ura_data_open(path, found, sizeof found);
   if (!f && ura_interrupted()) return ura_fail(c, "interrupted (Ctrl-C) while opening '%s'", path);
   if (!f) return ura_fail(c, "cannot open '%s': %s", path, strerror(errno));
+  path = found;
   struct stat sb;
   if (fstat(fileno(f), &sb) == 0 && S_ISDIR(sb.st_mode)) {
     fclose(f);

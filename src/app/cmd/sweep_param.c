@@ -122,10 +122,12 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   for (int i = 0; i < n && rc == 0; i++) {
     snprintf(val, sizeof val, "%.17g", v[i]);
     rc = ura_cmd_set(c, unit ? 4 : 3, av);
+    ura_progress_run(i, n);
     ura_progress_label("sweep %s %g%s%s (%d of %d): ", name, v[i], *s->unit ? " " : "", s->unit,
                        i + 1, n);
     if (rc == 0) rc = ura_grid_run(c, 0);
     ura_progress_label(NULL);
+    ura_progress_run(0, 0);
     if (rc && ura_interrupted()) {
       snprintf(why, sizeof why, "%s", c->err);
       ura_fail(c, "sweep: interrupted (Ctrl-C) at %s %g; %d of %d grids finished (%.900s)", name,
@@ -155,7 +157,7 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   snprintf(err, sizeof err, "%s", c->err);
   ura_model_state(c, &saved, "sweep");
   snprintf(c->err, sizeof c->err, "%s", err);
-  ura_table_print(c, t);
+  ura_sweep_table(c, t, s->n);
   if (s->n > 0) {
     if (keep(c, s)) {
       rc = -1;

@@ -20,8 +20,12 @@ static char cand[MAXCAND][64];
 static int ncand;
 static uraCtx* repl_ctx; /* for the model's parameter names */
 
+/* one candidate, once (wind is both a sweep keyword and a parameter) */
 static void add(const char* name) {
-  if (ncand < MAXCAND && name && strlen(name) < sizeof cand[0]) strcpy(cand[ncand++], name);
+  if (!name || strlen(name) >= sizeof cand[0]) return;
+  for (int i = 0; i < ncand; i++)
+    if (!strcmp(cand[i], name)) return;
+  if (ncand < MAXCAND) strcpy(cand[ncand++], name);
 }
 
 /* generator over the candidates that start with text */
@@ -90,6 +94,23 @@ static void add_params(void) {
   for (int i = 0; m && i < m->nparam; i++) add(m->param[i].name);
 }
 
+/* what sweep NAME takes: wind and face, then every number parameter of the case and the model
+   (show and clear come from the usage's keywords) */
+static void add_sweepable(void) {
+  keywords(ura_cmd_find("sweep")->usage + strlen("sweep "), NULL);
+  for (int i = 0; ura_params[i].name; i++)
+    if (ura_params[i].kind == uraP_NUM) add(ura_params[i].name);
+  const urModel* m = repl_ctx ? ura_model(repl_ctx) : NULL;
+  for (int i = 0; m && i < m->nparam; i++) add(m->param[i].name);
+}
+
+/* what plot sweep NAME draws: its keywords (wind, face), then the parameters of the kept
+   sweeps */
+static void add_kept_sweeps(const char* args) {
+  keywords(args, "sweep");
+  for (int i = 0; repl_ctx && i < repl_ctx->npsweep; i++) add(repl_ctx->psweep[i].param);
+}
+
 static char** complete(const char* text, int start, int end) {
   /* the words before the one being completed, in the last command of the line */
   char words[4][64] = {"", "", "", ""};
@@ -110,13 +131,15 @@ static char** complete(const char* text, int start, int end) {
   /* first word: commands; then what the command's table entry says */
   ncand = 0;
   rl_attempted_completion_over = 1;
-  const uraCmd* cmd = nw ? ura_cmd_find(words[0]) : NULL;
+  const uraCmd* cmd = nw ? ura_cmd_resolve(words[0], NULL, 0) : NULL;
   const char* args = cmd ? cmd->usage + strlen(cmd->name) : "";
   while (*args == ' ') args++;
   if (nw == 0) {
     for (int i = 0; ura_cmds[i].name; i++) add(ura_cmds[i].name);
   } else if (!cmd) {
     return NULL;
+  } else if (nw == 1 && !strcmp(cmd->name, "sweep")) {
+    add_sweepable(); /* sweep NAME LIST: wind, face, show, clear and the numeric parameters */
   } else if (nw == 1) {
     switch (cmd->compl ) {
     case uraC_COMMAND:
@@ -134,6 +157,11 @@ static char** complete(const char* text, int start, int end) {
     case uraC_FILE: break;
     case uraC_NONE: keywords(args, NULL); break;
     }
+  } else if (nw == 2 && !strcmp(cmd->name, "set") && !strcmp(words[1], "output")) {
+    rl_attempted_completion_over = 0; /* set output FILE: readline's file names */
+    return NULL;
+  } else if (nw == 2 && !strcmp(cmd->name, "plot") && !strcmp(words[1], "sweep")) {
+    add_kept_sweeps(args); /* plot sweep NAME: wind, face, the kept parameter sweeps */
   } else if (nw == 2 && cmd->compl == uraC_PARAM && !strcmp(cmd->name, "set")) {
     const uraParam* p = ura_param_find(words[1]);
     for (int i = 0;
@@ -234,6 +262,11 @@ int ura_repl(uraCtx* c) {
   rl_signal_event_hook = on_signal;
   if (hist) history_load(hist);
   c->interactive = 1;
+
+  /* one line on how to go on, as gnuplot and python greet a person (the version: what a report
+     of a problem needs first); not when the lines come from a pipe (-i < FILE) */
+  if (isatty(STDIN_FILENO))
+    fprintf(c->msg, "%s; type help for the commands, q to quit\n", ura_version());
 
   /* read, run, report; errors never end the session */
   while (!c->quit) {

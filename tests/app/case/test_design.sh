@@ -56,7 +56,7 @@ check velocity_level has "$TMP/out" '^angle  *0 deg  (set)$'
 run -c "set format csv; case B; set velocity 8,0; impact aim head 0 0.05; set speed 8; set angle 0; impact aim head 0 0.05"
 check velocity_same_impact cond '[ "$(grep -c "^0,0.05," "$TMP/out")" -eq 2 ] && [ "$(grep "^0,0.05," "$TMP/out" | sort -u | wc -l)" -eq 1 ]'
 run -c 'set velocity -1,2'
-check velocity_refused has "$TMP/err" "set velocity: '-1,2' is not accepted; accepted: VH,VD in m/s"
+check velocity_refused has "$TMP/err" "set velocity: '-1,2' is not accepted; accepted: VH,VD (the horizontal speed along the course and the downward speed, each >= 0) in m/s, or followed by km/h or kt"
 
 # the cases are the model's presets; an unknown one lists them
 run -c 'case Z'
@@ -66,6 +66,16 @@ check case_unknown_lists_presets has "$TMP/err" "unknown case 'Z'; accepted: A, 
 run -c "set format csv; case B; set angle 0; set speed 8; impact aim head 0 0; contacts"
 check aim_horizontal_head cond '[ $RC -eq 0 ] && grep -q "^[a-z_0-9]*,head_cranium," "$TMP/out"'
 check aim_contacts_note has "$TMP/out" '^# impact aimed at the head, up and side (0, 0) m: '
+
+# level flight takes a declared cruise speed: the descent's derived speed (C's 39.7 m/s fall)
+# is refused with the way out; declared in km/h it runs
+run -c 'case C; set angle 0; impact aim head 0 0'
+check level_needs_speed cond '[ $RC -eq 1 ] && has "$TMP/err" "impact aim: a flight at angle 0 deg needs a declared cruise speed; the derived 39.7 m/s is the descent.s fall" &&
+  has "$TMP/err" "set speed V"'
+run -c 'case C; set angle 0; set speed 54 km/h; set format csv; impact aim head 0 0'
+check level_declared cond '[ $RC -eq 0 ] && grep -q "^0,0," "$TMP/out"'
+run -c 'case C; set angle 30; set format csv; impact aim head 0 0'
+check descent_speed_at_angle cond '[ $RC -eq 0 ]'
 
 run -c 'case B; set angle 0; impact 0 0'
 check offset_refused_at_angle0 has "$TMP/err" "angle 0 deg: an offset Delta needs a descent.*impact aim head UP SIDE"

@@ -384,6 +384,33 @@ static void dry_mode(void** state) {
   assert_false(f->c.have_setup);
 }
 
+/* set terminal takes the rest of the line as gnuplot does, checked as one value; quoted forms
+   (the old way) still work; other settings still take VALUE [UNIT] only */
+static void set_terminal_rest(void** state) {
+  fixture* f = *state;
+  run(f, "set terminal png size 1000,700", 0);
+  assert_string_equal(f->c.st.terminal, "png size 1000,700");
+  run(f, "set terminal pngcairo font 'Arial Bold,10' size 800,600 mono", 0);
+  assert_string_equal(f->c.st.terminal, "pngcairo font 'Arial Bold,10' size 800,600 mono");
+  run(f, "set terminal svg background '#ffffff'", 0);
+  assert_string_equal(f->c.st.terminal, "svg background rgb '#ffffff'");
+  run(f, "set terminal \"dumb size 90,30\"", 0);
+  assert_string_equal(f->c.st.terminal, "dumb size 90,30");
+  run(f, "set terminal png", 0);
+  assert_string_equal(f->c.st.terminal, "png");
+
+  /* still checked: an option gnuplot would take that plot does not, a size without H */
+  run(f, "set terminal png size 1000", -1);
+  assert_non_null(strstr(f->c.err, "set terminal: option 'size': size needs W,H"));
+  run(f, "set terminal png; set terminal png size 800,600 set output x", -1);
+  assert_non_null(strstr(f->c.err, "option 'set': not an option plot accepts"));
+  run(f, "set terminal png size 800,600; system 'ls'", -1);
+  assert_string_equal(f->c.st.terminal, "png size 800,600");
+  assert_non_null(strstr(f->c.err, "unknown command 'system'"));
+  run(f, "set step 0.1 0.2 0.3", -1);
+  assert_non_null(strstr(f->c.err, "set step: wrong number of arguments (4)"));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_setup_teardown(dry_mode, setup, teardown),
@@ -399,6 +426,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(table_format, setup, teardown),
       cmocka_unit_test_setup_teardown(line_syntax, setup, teardown),
       cmocka_unit_test_setup_teardown(help_from_table, setup, teardown),
+      cmocka_unit_test_setup_teardown(set_terminal_rest, setup, teardown),
       cmocka_unit_test_setup_teardown(show_set_roundtrip, setup, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
