@@ -41,7 +41,9 @@ CORE_LIBS = -lgsl -lgslcblas -lm
 # libxml2 (the report's HTML tree and serializer, src/app/report/report.c)
 XML_CFLAGS := $(shell pkg-config --cflags libxml-2.0 2>/dev/null || echo -I/usr/include/libxml2)
 XML_LIBS   := $(shell pkg-config --libs libxml-2.0 2>/dev/null || echo -lxml2)
-APP_LIBS  = -lreadline -lncursesw -ltinfo $(XML_LIBS)
+# libjansson (JSON: set format json, the .meta.json beside an exported CSV; src/app/base/table.c)
+JSON_LIBS  := $(shell pkg-config --libs jansson 2>/dev/null || echo -ljansson)
+APP_LIBS  = -lreadline -lncursesw -ltinfo $(XML_LIBS) $(JSON_LIBS)
 TEST_LIBS = -lcmocka
 
 CORE_SRC  = $(sort $(wildcard src/core/*/*.c))

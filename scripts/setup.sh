@@ -1,5 +1,6 @@
 #!/bin/sh
 # setup.sh: install the Debian packages uasimpact needs, only those that are missing.
+# python3-pandas is for the tests (pandas.read_csv reads every export with default arguments).
 # Called by the Makefile (make deps, run, check); safe to run again; prints nothing when all is there.
 # 'setup.sh fuzz' adds what make fuzz needs (clang, libFuzzer); 'setup.sh san' what make
 # check-san needs (valgrind; the sanitizer runtimes come with gcc); 'setup.sh tsan' the
@@ -9,7 +10,7 @@
 # (skipped without it).
 set -e
 
-pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev libxml2-dev gnuplot-nox tmux"
+pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev libxml2-dev libjansson-dev gnuplot-nox tmux python3-pandas"
 case "$1" in
   fuzz) pkgs="$pkgs clang libclang-rt-dev" ;;
   san) pkgs="$pkgs valgrind" ;;
