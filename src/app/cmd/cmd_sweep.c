@@ -246,7 +246,10 @@ int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {
                    "this session and were not simulated again ('set recall off' recomputes)",
                    argv[1], recalled);
   }
-  ura_table_print(c, t);
+  if (ura_table_rows(t)) /* stopped before the first value: no empty header */
+    ura_table_print(c, t);
+  else
+    ura_table_free(t);
 
   /* keep what finished (a sweep that stopped keeps the values before the failure) */
   int kept = 0;

@@ -155,7 +155,10 @@ int ura_sweep_param(uraCtx* c, int argc, char** argv) {
   snprintf(err, sizeof err, "%s", c->err);
   ura_model_state(c, &saved, "sweep");
   snprintf(c->err, sizeof c->err, "%s", err);
-  ura_table_print(c, t);
+  if (ura_table_rows(t)) /* stopped before the first value: no empty header */
+    ura_table_print(c, t);
+  else
+    ura_table_free(t);
   if (s->n > 0) {
     if (keep(c, s)) {
       rc = -1;

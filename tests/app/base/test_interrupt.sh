@@ -68,6 +68,7 @@ check sweep_status [ "$RC" -eq 130 ]
 check sweep_prompt [ "$MS" -lt 1000 ]
 check sweep_message cond '[ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "s.ses:6: sweep: interrupted (Ctrl-C) at wind 0; 0 of 2 grids finished (grid: interrupted"'
+check sweep_no_empty_header cond '! grep -q "^case  *wind  *face" "$TMP/out"'
 
 # ---- the settling of the stance (a fine settling step makes it long): stops at its next step ----
 printf 'set dt 1e-5\nset settle_dt 1e-5\nsave session %s/ready.ses\nimpact 0 0\n' "$TMP" >"$TMP/st.ses"
