@@ -100,7 +100,7 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   }
   fprintf(f, "EOD\n");
   char q[256], title[800];
-  ura_grid_qtext(g, q, sizeof q);
+  ura_grid_qtext(g, rg->diff, q, sizeof q);
   snprintf(title, sizeof title, "%s\n%s%s", rg->title,
            rg->diff ? "difference P_b - P_a in %; " : "P{F|Delta} in %; ", q);
   ura_plot_text(f, "title", title);
