@@ -484,9 +484,9 @@ static int export_row(reader* r, const int* col, xrow* x) {
     return bad(r, r->line, "p is %g, outside [0, 1]%s", cl->p,
                cl->p < 0 && cl->p >= -1
                    ? "; a difference grid (p = P_b - P_a in [-1, 1], "
-                     "'design compare') is marked by a comment '# ... " DIFF_MARK
-                     " ...' before the header, as 'export "
-                     "grid' writes it"
+                     "'design compare') is marked by a note '... " DIFF_MARK
+                     " ...' in FILE.meta.json beside it, as 'export grid' writes it (or a "
+                     "comment '# ...' before the header)"
                    : "");
   }
 

@@ -191,7 +191,7 @@ const uraParam ura_params[] = {
      "output of tabular commands: aligned table (at a terminal rows fit 80 columns: impact "
      "prints its main columns, notes wrap, wider tables fold), CSV (a header line and rows, "
      "the notes as '# ' lines before it; export writes plain CSV), wide (an aligned table with every column, also at a "
-     "terminal) or json (one object per table and line: columns, rows, notes; show too)",
+     "terminal) or json (one object per table and line: columns, rows, notes; show as a table too)",
      format_names},
     {"pager", uraP_ENUM, OFF(pager), 0, "", 0, 0,
      "on: at a terminal, output taller than the screen goes through $PAGER (less -FRSX when "

@@ -44,11 +44,14 @@ const uraCmd ura_cmds[] = {
      "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
      "q returns"},
     {"plot", ura_cmd_plot, 1, -1, uraC_NONE,
-     "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",
-     "send curves to gnuplot: the PoF curves, the last grid as a heat map, the last impact's "
-     "membrane airbags at first contact and peak pressure, time histories of "
-     "the last impact, Q of the kept sweeps, the last montecarlo's Q distribution or its "
-     "variance shares (set terminal/output to write files)"},
+     "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face|NAME]|montecarlo|tornado",
+     "send curves to gnuplot: the PoF curves; the last grid as a heat map (a difference grid of "
+     "design compare, P_b - P_a, on a diverging palette); the last impact's membrane airbags at first "
+     "contact and peak pressure; time histories of the last impact (history all: every "
+     "channel); Q of the kept sweeps (plot sweep: every kind kept, a panel each; plot sweep "
+     "wind, face or NAME: that kind alone, one unit per axis); the last montecarlo's Q "
+     "distribution (montecarlo) or its variance shares (tornado) (set terminal/output to write "
+     "files)"},
     {"impact", ura_cmd_impact, 2, 5, uraC_NONE, "impact DPAR DPERP|aim head UP SIDE",
      "simulate one impact at the offset (along, across the course; m) of the live case, or (aim) "
      "with the drone's line of travel UP and SIDE (m) from the head's centre, at any angle 0-90 "
@@ -189,7 +192,7 @@ static int set_one(uraCtx* c, int argc, char** argv) {
   return p ? ura_param_set(c, p, argv[2]) : ura_injury_set(c, i, argv[2]);
 }
 
-/* show in CSV or JSON: one row per setting (name, value, unit, source) gathered here and
+/* show in JSON: one row per setting (name, value, unit, source) gathered here and
    printed as one table; NULL: show prints its aligned lines */
 static uraTable* show_tab;
 
@@ -309,10 +312,10 @@ static int show_prefix(uraCtx* c, const char* prefix) {
 
 static int show_lines(uraCtx* c, int argc, char** argv);
 
-/* show [NAME|PREFIX]: aligned lines, or in format csv or json one table (name, value, unit,
-   source) */
+/* show [NAME|PREFIX]: aligned lines (also in format csv: scripts read them so), or in format
+   json one table (name, value, unit, source) */
 int ura_cmd_show(uraCtx* c, int argc, char** argv) {
-  if (c->st.format != uraFMT_CSV && c->st.format != uraFMT_JSON) return show_lines(c, argc, argv);
+  if (c->st.format != uraFMT_JSON) return show_lines(c, argc, argv);
   static const char* const cols[] = {"name", "value", "unit", "source"};
   show_tab = ura_table_new(4, cols);
   int rc = show_lines(c, argc, argv);

@@ -205,7 +205,7 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
   ura_suggest_init(&sg, what);
   ura_suggest_keywords(&sg, ura_cmd_find("plot")->usage + strlen("plot "));
   return ura_fail(c,
-                  "plot: unknown plot '%s'%s; accepted: pof, grid, history SIGNAL..., sweep "
-                  "[wind|face], montecarlo, tornado, bag",
+                  "plot: unknown plot '%s'%s; accepted: pof, grid, history [SIGNAL...|all], "
+                  "sweep [wind|face|NAME], montecarlo, tornado, bag",
                   what, ura_suggest_text(&sg, dym, sizeof dym));
 }

@@ -210,9 +210,10 @@ static void draw_legend(viewer* v, int y) {
   int x = 0;
   int diff = v->c->last.diff;
   char what[32];
-  snprintf(what, sizeof what, "%sP:", ura_delta());
+  snprintf(what, sizeof what, "%sP = P_b - P_a:", ura_delta());
   put(stdscr, y, x, A_NORMAL, diff ? what : "P{F|Delta}:");
-  x += 12;
+  /* the columns the label takes (the UTF-8 delta is two bytes in one column) */
+  x += diff ? (int)strlen(what) + 2 - (int)strlen(ura_delta()) : 12;
   for (int r = uraROLE_NONE; r <= (diff ? uraROLE_RISKIER2 : uraROLE_PENDING) && x < COLS; r++) {
     if (diff && r > uraROLE_NONE && r < uraROLE_SAFER2) continue;
     if (r == uraROLE_FAILED && !v->g->nfailed) continue;
