@@ -206,6 +206,19 @@ static void layout(viewer* v) {
               (v->note[0] ? 1 : ura_split_fields(KEYS, COLS, lines, 3));
 }
 
+/* a cell without colour: its band's glyph right before its number ("  #19.9"), never after the
+   number of the cell to its left: at least one blank leads, so a number of five characters
+   (100.0, -31.5) is shown without its decimal ("@100", "+-31") */
+static void mono_cell(char* buf, size_t n, char glyph, const urCell* cl, const char* t) {
+  char num[16];
+  const char* s = t + strspn(t, " ");
+  if (strlen(s) > CELL_W - 2 && cl->status != urCELL_FAILED && cl->status != urCELL_PENDING)
+    snprintf(num, sizeof num, "%.0f", cl->p * 100.0);
+  else
+    snprintf(num, sizeof num, "%s", s);
+  snprintf(buf, n, "%*s%c%s", (int)(CELL_W - 1 - strlen(num)), "", glyph, num);
+}
+
 static void draw_legend(viewer* v, int y) {
   int x = 0;
   int diff = v->c->last.diff;
@@ -279,8 +292,10 @@ static void draw_grid(viewer* v) {
       uraRole r = ura_grid_role(v->c->last.diff, cl);
       char t[8];
       ura_cell_text(cl, t);
-      char glyph = v->scheme == uraSCHEME_MONO ? ura_style(v->scheme, r)->glyph : ' ';
-      snprintf(buf, sizeof buf, "%c%s", glyph, t);
+      if (v->scheme == uraSCHEME_MONO)
+        mono_cell(buf, sizeof buf, ura_style(v->scheme, r)->glyph, cl, t);
+      else
+        snprintf(buf, sizeof buf, " %s", t);
       chtype a = v->role_attr[r];
       if (i == v->row && j == v->col) {
         a = (a & A_REVERSE) ? (a & ~A_REVERSE) | A_UNDERLINE | A_BOLD : a | A_REVERSE | A_BOLD;
