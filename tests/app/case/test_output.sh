@@ -116,4 +116,22 @@ print("numeric")' "$TMP/g.csv" >"$TMP/pd" 2>&1
 else
   skip pandas_read_csv "python3-pandas cannot be imported by /usr/bin/python3"
 fi
+
+# at the prompt (tmux, 80 columns): the sora table folds to fit (no row wraps), and an export's
+# notes are shown on standard error while the file stays plain
+if command -v tmux >/dev/null 2>&1; then
+  . tests/lib_tmux.sh
+  start t1 80 60
+  check tty_prompt wait_for t1 'uasimpact'
+  line t1 'set pager off; set step 0.3; sora'
+  check tty_sora wait_for t1 'igrc_quant' 20
+  grab t1 -J
+  check tty_sora_fits awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/screen"
+  check tty_sora_folded cond '[ "$(grep -c "^ *case " "$TMP/screen")" -ge 2 ]'
+  line t1 "grid; export grid $TMP/tty.csv"
+  check tty_export_notes wait_for t1 '^# grid of case A, wind 0 m/s' 20
+  check tty_export_plain cond '[ -s "$TMP/tty.csv" ] && ! grep -q "^#" "$TMP/tty.csv"'
+else
+  skip tty_output "tmux is not installed"
+fi
 finish
