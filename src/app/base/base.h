@@ -60,6 +60,9 @@ enum {
 void ura_table_write(FILE* f, FILE* nf, uraTable* t, int how, int width);
 /* the table as a new JSON object (the form ura_table_write writes), for a caller that keeps it */
 json_t* ura_table_json(const uraTable* t);
+/* the unit of column col, kept for the sidecar of an export (unit NULL: none); what was given */
+void ura_table_unit(uraTable* t, int col, const char* unit);
+const char* ura_table_unit_of(const uraTable* t, int col);
 /* free t unwritten */
 void ura_table_free(uraTable* t);
 /* how many rows t holds */

@@ -21,6 +21,7 @@ struct uraTable {
   int ncell, cap;
   char** notes; /* '# ...' lines printed before the header */
   int nnote;
+  char** units; /* ncol, NULL until a unit is given: each column's unit or NULL */
 };
 
 static char* vfmt(const char* fmt, va_list ap) {
@@ -168,7 +169,20 @@ void ura_table_write(FILE* f, FILE* nf, uraTable* t, int how, int width) {
   ura_table_free(t);
 }
 
+void ura_table_unit(uraTable* t, int col, const char* unit) {
+  if (col < 0 || col >= t->ncol) return;
+  if (!t->units) t->units = calloc(t->ncol, sizeof(char*));
+  free(t->units[col]);
+  t->units[col] = unit ? strdup(unit) : NULL;
+}
+
+const char* ura_table_unit_of(const uraTable* t, int col) {
+  return t->units && col >= 0 && col < t->ncol ? t->units[col] : NULL;
+}
+
 void ura_table_free(uraTable* t) {
+  for (int j = 0; t->units && j < t->ncol; j++) free(t->units[j]);
+  free(t->units);
   for (int j = 0; j < t->ncol; j++) free(t->names[j]);
   for (int k = 0; k < t->ncell; k++) free(t->cells[k]);
   for (int i = 0; i < t->nnote; i++) free(t->notes[i]);

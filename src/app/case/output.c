@@ -68,7 +68,8 @@ static json_t* table_meta(const uraTable* t) {
   size_t i;
   json_t* v;
   json_array_foreach(json_object_get(o, "columns"), i, v) {
-    const char* unit = ura_column_unit(json_string_value(v));
+    const char* unit = ura_table_unit_of(t, (int)i);
+    if (!unit) unit = ura_column_unit(json_string_value(v));
     json_t* col = json_pack("{s:s}", "name", json_string_value(v));
     json_object_set_new(col, "unit", unit ? json_string(unit) : json_null());
     json_array_append_new(cols, col);

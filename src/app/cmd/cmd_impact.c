@@ -186,6 +186,8 @@ int ura_history_samples(uraCtx* c, double from, double to) {
     names[1 + j] = strdup(buf);
   }
   uraTable* t = ura_table_new(ncol, (const char* const*)names);
+  ura_table_unit(t, 0, "s"); /* each channel's unit, for the sidecar of export history */
+  for (int j = 0; j < m->nsensordata; j++) ura_table_unit(t, 1 + j, channel_unit(m, j));
   ura_table_note(t,
                  "impact %s (%g, %g) m; t in s from tau; SI units; engine frames "
                  "(uasimpact-model(5))",
