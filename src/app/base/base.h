@@ -56,7 +56,8 @@ enum {
    columns folded into blocks that fit width (0: neither wrapped nor folded). CSV: the header
    line and the rows only, the notes to nf as '# ' lines (nf NULL: not written). JSON:
    {"columns":[...],"rows":[{column:value,...}],"notes":[...]} (numbers as numbers, empty cells
-   null) and a newline */
+   null) and a newline. A cell "-" (no value) is an empty field in CSV and null in JSON, so that
+   a numeric column stays numeric */
 void ura_table_write(FILE* f, FILE* nf, uraTable* t, int how, int width);
 /* the table as a new JSON object (the form ura_table_write writes), for a caller that keeps it */
 json_t* ura_table_json(const uraTable* t);

@@ -107,10 +107,11 @@ static void csv_field(FILE* f, const char* s) {
   fputc('"', f);
 }
 
-/* a cell as JSON: a number when the whole cell is one (finite), null when empty, else a string */
+/* a cell as JSON: a number when the whole cell is one (finite), null when empty or "-" (the
+   aligned table's mark of no value), else a string */
 static json_t* json_cell(const char* s) {
   char* end;
-  if (!*s) return json_null();
+  if (!*s || !strcmp(s, "-")) return json_null();
   double v = strtod(s, &end);
   if (*end || end == s || !isfinite(v) || strchr(s, 'x') || strchr(s, 'X')) return json_string(s);
   if (!strpbrk(s, ".eE") && fabs(v) < 9e15) return json_integer((json_int_t)v);
@@ -152,8 +153,9 @@ void ura_table_write(FILE* f, FILE* nf, uraTable* t, int how, int width) {
     fputc('\n', f);
     for (int r = 0; r < nrow; r++) {
       for (int j = 0; j < t->ncol; j++) {
+        const char* v = t->cells[r * t->ncol + j];
         if (j) fputc(',', f);
-        csv_field(f, t->cells[r * t->ncol + j]);
+        csv_field(f, strcmp(v, "-") ? v : ""); /* no value: an empty field (NA) */
       }
       fputc('\n', f);
     }

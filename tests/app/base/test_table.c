@@ -1,7 +1,7 @@
 /* test_table.c: tables as src/app/base/table.c writes them: aligned, folded into blocks of
  * columns led by the first when a row is wider than the width (never past it), plain CSV with
- * the notes on their own stream and fields holding a comma or quote quoted, and JSON with
- * numbers as numbers, empty cells null and text escaped by the library */
+ * the notes on their own stream, fields holding a comma or quote quoted and "-" (no value) empty,
+ * and JSON with numbers as numbers, empty and "-" cells null and text escaped by the library */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -79,9 +79,11 @@ static void csv_plain(void** state) {
   ura_table_cell(t, "%s", "50,500");
   ura_table_cell(t, "%s", "say \"hi\"");
   ura_table_cell(t, "%s", "1");
+  ura_table_cell(t, "%s", "none");
+  ura_table_cell(t, "%s", "-");
   char* notes = NULL;
   char* s = written(t, uraTAB_CSV, 80, &notes);
-  assert_string_equal(s, "name,value\npop,\"50,500\"\n\"say \"\"hi\"\"\",1\n");
+  assert_string_equal(s, "name,value\npop,\"50,500\"\n\"say \"\"hi\"\"\",1\nnone,\n");
   assert_string_equal(notes, "# units: none\n");
   free(s);
   free(notes);
@@ -89,19 +91,20 @@ static void csv_plain(void** state) {
 
 static void json_typed(void** state) {
   (void)state;
-  static const char* const cols[] = {"case", "q", "n", "why", "hex"};
-  uraTable* t = ura_table_new(5, cols);
+  static const char* const cols[] = {"case", "q", "n", "why", "hex", "na"};
+  uraTable* t = ura_table_new(6, cols);
   ura_table_note(t, "quote \" and\ttab");
   ura_table_cell(t, "%s", "A");
   ura_table_cell(t, "%s", "0.0407");
   ura_table_cell(t, "%s", "12");
   ura_table_cell(t, "%s", "");
   ura_table_cell(t, "%s", "0x10");
+  ura_table_cell(t, "%s", "-");
   char* s = written(t, uraTAB_JSON, 80, NULL);
   assert_string_equal(s,
-                      "{\"columns\":[\"case\",\"q\",\"n\",\"why\",\"hex\"],\"rows\":[{\"case\":"
-                      "\"A\",\"q\":0.0407,\"n\":12,\"why\":null,\"hex\":\"0x10\"}],\"notes\":["
-                      "\"quote \\\" and\\ttab\"]}\n");
+                      "{\"columns\":[\"case\",\"q\",\"n\",\"why\",\"hex\",\"na\"],\"rows\":[{"
+                      "\"case\":\"A\",\"q\":0.0407,\"n\":12,\"why\":null,\"hex\":\"0x10\","
+                      "\"na\":null}],\"notes\":[\"quote \\\" and\\ttab\"]}\n");
   free(s);
 }
 
