@@ -88,6 +88,19 @@ for line in open(sys.argv[1]):
   check json_show has "$TMP/py" '^4 [1-9][0-9][0-9]* name$'
   check json_show_one has "$TMP/py" '^4 1 name$'
 fi
+# the listings that are tables too: model params, model parts, dist
+run -c "set format json; model params bag_p; model parts; dist wind weibull 5 2; dist"
+if [ -x "$PY" ]; then
+  "$PY" -c '
+import json, sys
+for line in open(sys.argv[1]):
+    o = json.loads(line)
+    print(" ".join(o["columns"]), len(o["rows"]))
+' "$TMP/out" >"$TMP/py" 2>&1
+  check json_listings cond '[ "$(lines "$TMP/py")" -eq 3 ] && has "$TMP/py" "^name value unit set_by [1-9]" &&
+    has "$TMP/py" "^part origin [1-9]" && has "$TMP/py" "^input distribution 1$"'
+fi
+run -c "set format json; descent; show; show wind; grid load $TMP/g.csv; grid"
 check json_numbers_are_numbers has "$TMP/out" '"wind":4,"speed":8\.482'
 check json_null_for_empty has "$TMP/out" '"source":null'
 
