@@ -62,7 +62,7 @@ APPLIB  = $(BUILD)/libuasimpact-app.a
 
 .PHONY: all deps run check test bench reproduce calibrate sensitivity install clean check-san fuzz \
   membrane-convergence \
-  check-tsan mpi mpideps format
+  check-tsan mpi mpideps testdeps format
 all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -138,7 +138,10 @@ $(MPI_BIN): $(BUILD)/src/app/main.o $(BUILD)/mpi/scale_mpi.o $(APPLIB) $(LIB) | 
 run: all
 	@if [ -t 0 ]; then ./uasimpact; else ./uasimpact sessions/demo.ses; fi
 
-check: all mpi $(TEST_BIN) $(BUILD)/calibrate
+# what the tests need beyond the build (scripts/setup.sh test: python3-pandas)
+testdeps:
+	@sh scripts/setup.sh test
+check: testdeps all mpi $(TEST_BIN) $(BUILD)/calibrate
 	@sh scripts/runtests.sh $(TEST_BIN)
 
 test: check
