@@ -38,6 +38,9 @@ print("note", "grid of case C" in t["notes"][0])
 hm = json.load(open(d + "/h.csv.meta.json"))
 hu = {c["name"]: c["unit"] for c in hm["tables"][0]["columns"]}
 print("history", hu["t"], hu["head_acc_x"], hu["neck_load_my"])
+mm = json.load(open(d + "/m.csv.meta.json"))
+mu = {c["name"]: c["unit"] for c in mm["tables"][0]["columns"]}
+print("montecarlo", mu["wind"], mu["q"], mu["mean"], mu["p95"], repr(mu["sample"]))
 dm = json.load(open(d + "/d.csv.meta.json"))
 print("diffnote", any("difference P_b - P_a" in n for n in dm["tables"][0]["notes"]))
 PYEOF
@@ -47,6 +50,7 @@ PYEOF
   check sidecar_rows cond '[ "$(sed -n "s/^rows //p" "$TMP/py")" -eq "$(($(lines "$TMP/g.csv") - 1))" ]'
   check sidecar_notes has "$TMP/py" '^note True$'
   check sidecar_history_units has "$TMP/py" '^history s m/s^2 N m$'
+  check sidecar_montecarlo_units has "$TMP/py" "^montecarlo m/s m^2 m^2 m^2 ''$"
   check sidecar_diff_note has "$TMP/py" '^diffnote True$'
 else
   skip sidecar_json "no /usr/bin/python3"
