@@ -45,7 +45,9 @@ CORE_LIBS = -lgsl -lgslcblas -lm
 # libxml2 (the report's HTML tree and serializer, src/app/report/report.c)
 XML_CFLAGS := $(shell pkg-config --cflags libxml-2.0 2>/dev/null || echo -I/usr/include/libxml2)
 XML_LIBS   := $(shell pkg-config --libs libxml-2.0 2>/dev/null || echo -lxml2)
-APP_LIBS  = -lreadline -lncursesw -ltinfo $(XML_LIBS)
+# libjansson (JSON: set format json, the .meta.json beside an exported CSV; src/app/base/table.c)
+JSON_LIBS  := $(shell pkg-config --libs jansson 2>/dev/null || echo -ljansson)
+APP_LIBS  = -lreadline -lncursesw -ltinfo $(XML_LIBS) $(JSON_LIBS)
 TEST_LIBS = -lcmocka
 
 CORE_SRC  = $(sort $(wildcard src/core/*/*.c))
@@ -65,7 +67,7 @@ APPLIB  = $(BUILD)/libuasimpact-app.a
 .PHONY: all deps run check test bench reproduce calibrate sensitivity install uninstall clean \
   check-san fuzz \
   membrane-convergence \
-  check-tsan mpi mpideps format
+  check-tsan mpi mpideps testdeps format
 all: $(BIN) $(LIB)
 
 # install missing Debian packages (quick no-op when all are there)
@@ -145,7 +147,10 @@ run:
 	@$(MAKE) --no-print-directory $(JOBS) all
 	@if [ -t 0 ]; then ./uasimpact; else ./uasimpact sessions/demo.ses; fi
 
-check:
+# what the tests need beyond the build (scripts/setup.sh test: python3-pandas)
+testdeps:
+	@sh scripts/setup.sh test
+check: testdeps
 	@$(MAKE) --no-print-directory $(JOBS) all mpi $(TEST_BIN) $(BUILD)/calibrate
 	@sh scripts/runtests.sh $(TEST_BIN)
 

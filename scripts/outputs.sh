@@ -16,8 +16,9 @@ set -u
 
 # the wall-clock fields masked and the output directory's path taken out
 mask() { # FILE DIR
-  awk -F, -v OFS=, '/,seconds$/ { n = NF; print; next }
-    n && NF == n && !/^#/ { $NF = "S"; print; next }
+  awk -F, -v OFS=, '/,seconds(,complete)?$/ { n = NF; s = $NF == "complete" ? NF - 1 : NF
+      print; next }
+    n && NF == n && !/^#/ { $s = "S"; print; next }
     { n = 0; sub(/^# time: .*/, "# time: T"); print }' "$1" |
     sed "s|$2|DIR|g; s/uasrisk/uasimpact/g"
 }

@@ -46,7 +46,7 @@ hdr ~ /^case,wind,speed,angle,planform,/ {
   put("pof_rcc", $1, $2, "", $8); put("pof_bc", $1, $2, "", $9); put("pof_awke", $1, $2, "", $10)
   next
 }
-hdr ~ /,q,seconds$/ {
+hdr ~ /,q,seconds(,complete)?$/ {
   # case,wind,speed,angle,face,step,cells,contact_cells,q,seconds
   put(TTOP ? "qtop" : "q", $1, $2, $5, $9)
   speedrow($1, $2, $3, $4, TPAPER)

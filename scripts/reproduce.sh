@@ -63,7 +63,7 @@ grids_of() {
 # grids finished so far: data rows under the headers of grid, sweep and compare
 grids_done() {
   awk '/^#/ { next } /^(case|dpar),/ { h = $0; next }
-       h ~ /,q,seconds$/ || h == "case,wind,face,speed,angle,q" || h ~ /^case,wind,p_centre,/ { n++ }
+       h ~ /,q,seconds(,complete)?$/ || h == "case,wind,face,speed,angle,q" || h ~ /^case,wind,p_centre,/ { n++ }
        END { print n + 0 }' "$1"
 }
 

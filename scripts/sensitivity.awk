@@ -30,7 +30,7 @@ BEGIN {
 /^#variant / { v = substr($0, 10); RAN[v] = 1; next }
 /^#/ { next }
 /^case,/ { hdr = $0; next }
-hdr ~ /,q,seconds$/ && v != "" { Q[v, $1 "@" ($2 + 0)] = $9; SEC[v] += $10; next }
+hdr ~ /,q,seconds(,complete)?$/ && v != "" { Q[v, $1 "@" ($2 + 0)] = $9; SEC[v] += $10; next }
 
 END {
   csv = out "/sensitivity.csv"

@@ -1,5 +1,7 @@
 #!/bin/sh
 # setup.sh: install the Debian packages uasimpact needs, only those that are missing.
+# 'setup.sh test' adds what make check needs beyond the build: python3-pandas
+# (tests/app/case/test_output.sh reads every export with pandas.read_csv's default arguments).
 # Called by the Makefile (make deps, run, check); safe to run again; prints nothing when all is there.
 # 'setup.sh fuzz' adds what make fuzz needs (clang, libFuzzer); 'setup.sh san' what make
 # check-san needs (valgrind; the sanitizer runtimes come with gcc); 'setup.sh tsan' the
@@ -9,13 +11,14 @@
 # (skipped without it).
 set -e
 
-pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev libxml2-dev gnuplot-nox tmux"
+pkgs="gcc make pkg-config libgsl-dev libncurses-dev libreadline-dev libcmocka-dev libxml2-dev libjansson-dev gnuplot-nox tmux"
 case "$1" in
   fuzz) pkgs="$pkgs clang libclang-rt-dev" ;;
   san) pkgs="$pkgs valgrind" ;;
   tsan) pkgs="$pkgs libtsan2" ;;
   mpi) pkgs="$pkgs libopenmpi-dev openmpi-bin" ;;
   browser) pkgs="$pkgs chromium" ;;
+  test) pkgs="$pkgs python3-pandas" ;;
 esac
 [ -n "$UASIMPACT_EXTRA_PKGS" ] && pkgs="$pkgs $UASIMPACT_EXTRA_PKGS"
 

@@ -19,9 +19,9 @@ check "15 rows per variant, shipped always run" cond '[ "$(grep -c "^shipped," "
 
 # the shipped variant's Q is the plain grid's, at the paper's Table 2 speeds
 q=$("$UASIMPACT" -c 'set format csv; set descent paper; set step 0.2; set wind 4; case B; grid' |
-  awk -F, 'NF == 10 && $1 == "B" { print $9 }')
+  awk -F, 'NF == 11 && $1 == "B" { print $9 }')
 q10=$("$UASIMPACT" -c 'set format csv; set descent paper; set step 0.2; set wind 10; case A2; grid' |
-  awk -F, 'NF == 10 && $1 == "A2" { print $9 }')
+  awk -F, 'NF == 11 && $1 == "A2" { print $9 }')
 check "shipped is the plain grids' Q" cond '[ -n "$q" ] && [ -n "$q10" ] &&
   grep -q "^shipped,B,4,$q,0.382," "$C" && grep -q "^shipped,A2,10,$q10,0.452," "$C"'
 

@@ -10,6 +10,7 @@
 #ifndef UASIMPACT_BASE_H
 #define UASIMPACT_BASE_H
 
+#include <jansson.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stddef.h>
@@ -57,9 +58,28 @@ typedef struct uraTable uraTable;
 uraTable* ura_table_new(int ncol, const char* const* names);
 void ura_table_cell(uraTable* t, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
 void ura_table_note(uraTable* t, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
-/* print (aligned table when width allows and !csv, or CSV) to f and free; notes first as comment
-   lines, wrapped at width (0: not wrapped) */
-void ura_table_write(FILE* f, uraTable* t, int csv, int width);
+/* how a table is written: aligned for people, plain CSV, or one JSON object on one line */
+enum {
+  uraTAB_TEXT,
+  uraTAB_CSV,
+  uraTAB_JSON
+};
+/* write t to f as how says and free it. Text: notes first as '# ' lines wrapped at width, the
+   columns folded into blocks that fit width (0: neither wrapped nor folded). CSV: the header
+   line and the rows only, the notes to nf as '# ' lines (nf NULL: not written). JSON:
+   {"columns":[...],"rows":[{column:value,...}],"notes":[...]} (numbers as numbers, empty cells
+   null) and a newline. A cell "-" (no value) is an empty field in CSV and null in JSON, so that
+   a numeric column stays numeric */
+void ura_table_write(FILE* f, FILE* nf, uraTable* t, int how, int width);
+/* the table as a new JSON object (the form ura_table_write writes), for a caller that keeps it */
+json_t* ura_table_json(const uraTable* t);
+/* the unit of column col, kept for the sidecar of an export (unit NULL: none); what was given */
+void ura_table_unit(uraTable* t, int col, const char* unit);
+const char* ura_table_unit_of(const uraTable* t, int col);
+/* free t unwritten */
+void ura_table_free(uraTable* t);
+/* how many rows t holds */
+int ura_table_rows(const uraTable* t);
 /* what a table holds, for a reader that keeps it (the report): its column names, cells (row by
    row) and notes, owned by the table */
 void ura_table_parts(const uraTable* t, int* ncol, char* const** names, int* ncell,

@@ -34,11 +34,13 @@
 
 /* ---- live case state ---- */
 
-/* table: rows fit 80 columns at a terminal, every column elsewhere; wide: every column always */
+/* table: rows fit 80 columns at a terminal, every column elsewhere; wide: every column always;
+   csv: CSV, its notes as '# ' lines before the header; json: one JSON object per table (JSON Lines) */
 typedef enum {
   uraFMT_TABLE = 0,
   uraFMT_CSV,
-  uraFMT_WIDE
+  uraFMT_WIDE,
+  uraFMT_JSON
 } uraFormat;
 /* where a derived impact speed and descent angle come from (set descent) */
 typedef enum {
@@ -250,6 +252,10 @@ typedef struct uraCtx {
   void (*rep_begin)(struct uraCtx* c, int argc, char** argv);
   void (*rep_end)(struct uraCtx* c, int rc);
   void (*rep_table)(struct uraCtx* c, const struct uraTable* t);
+  /* while export writes a file: a JSON array that each printed table's columns (with units),
+     notes and row count are appended to, for the FILE.meta.json beside it (NULL: none) */
+  json_t* export_meta;
+  int export_notes; /* with export_meta: the notes go to c->msg too (an export at the prompt) */
 } uraCtx;
 
 /* record a failure message; always returns -1 */
@@ -477,8 +483,17 @@ int ura_at_terminal(const uraCtx* c);
 int ura_text_width(const uraCtx* c);
 int ura_pager_begin(uraCtx* c, const char* cmd);
 void ura_pager_end(uraCtx* c);
-/* print a table (aligned, or CSV per the format setting) to c->out and free it */
+/* print a table (aligned, CSV or JSON per the format setting) to c->out and free it; in CSV
+   the notes as '# ' lines before the header, but during an export to c->export_meta (and at
+   the prompt to c->msg) */
 void ura_table_print(uraCtx* c, uraTable* t);
+/* the unit of a column the workbench writes, by its name ("" dimensionless or a count; NULL
+   not one unit: a text or a column whose unit depends on the table) */
+const char* ura_column_unit(const char* name);
+/* write the sidecar PATH.meta.json of an exported file (only when PATH is a regular file): the
+   program, the command, the case and tables (the JSON array export gathered in
+   c->export_meta); 0, or -1 with c->err */
+int ura_export_meta(uraCtx* c, const char* path, const char* what, json_t* tables);
 /* files written atomically (atomic.c) for a command: refused in dry mode, to /dev/null when
    muted (a shard, an MPI rank but 0); a failure recorded in c->err */
 int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);

@@ -3,6 +3,9 @@
  * export (dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,p over the full plane, p in 0..1;
  * the difference grid of 'design compare', marked by DIFF_MARK in a comment, p = P_b - P_a in
  * -1..1). Parsing is strict: the first problem gives FILE:LINE: message and the last grid is kept.
+ * The conditions (case, wind, face, the difference mark) come from the notes of the sidecar
+ * FILE.meta.json that export writes beside a plain CSV, and from '#' comment lines before the
+ * header, as exports before the sidecar wrote them (both still read).
  */
 #include <ctype.h>
 #include <errno.h>
@@ -202,6 +205,22 @@ static void meta_parse(meta* m, const char* s) {
       return;
     }
   }
+}
+
+/* the notes of the sidecar path.meta.json, when there is one, as comments (a sidecar that is
+   not JSON is no sidecar: the grid's own comments still count) */
+static void meta_sidecar(meta* m, const char* path) {
+  char name[4096];
+  if (snprintf(name, sizeof name, "%s.meta.json", path) >= (int)sizeof name) return;
+  json_t* o = json_load_file(name, 0, NULL);
+  size_t i, k;
+  json_t *tab, *note;
+  json_array_foreach(json_object_get(o, "tables"), i, tab) {
+    json_array_foreach(json_object_get(tab, "notes"), k, note) {
+      if (json_is_string(note)) meta_parse(m, json_string_value(note));
+    }
+  }
+  json_decref(o);
 }
 
 /* an empty grid with every cell pending at its lattice offset */
@@ -465,9 +484,9 @@ static int export_row(reader* r, const int* col, xrow* x) {
     return bad(r, r->line, "p is %g, outside [0, 1]%s", cl->p,
                cl->p < 0 && cl->p >= -1
                    ? "; a difference grid (p = P_b - P_a in [-1, 1], "
-                     "'design compare') is marked by a comment '# ... " DIFF_MARK
-                     " ...' before the header, as 'export "
-                     "grid' writes it"
+                     "'design compare') is marked by a note '... " DIFF_MARK
+                     " ...' in FILE.meta.json beside it, as 'export grid' writes it (or a "
+                     "comment '# ...' before the header)"
                    : "");
   }
 
@@ -641,6 +660,7 @@ int ura_grid_load(uraCtx* c, const char* path) {
   if (!r.f) return ura_fail(c, "grid load: cannot open '%s': %s", path, strerror(errno));
   path = r.path = found;
   ura_input_seen(c, r.f, path); /* a shard's part may not replace it */
+  meta_sidecar(&m, path);
 
   /* comments (conditions), then the header that tells the format */
   int got;

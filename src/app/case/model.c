@@ -564,9 +564,12 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
 /* parameters of the model (those whose names start with prefix): name, SI value, unit, and who
    set it */
 static int model_params(uraCtx* c, const char* prefix) {
+  static const char* const cols[] = {"name", "value", "unit", "set_by"};
   const urModel* m = ura_model(c);
   if (!m) return -1;
   int found = 0;
+  /* in format json one table (name, value, unit, set_by), else aligned lines */
+  uraTable* t = c->st.format == uraFMT_JSON ? ura_table_new(4, cols) : NULL;
   for (int i = 0; i < m->nparam; i++) {
     if (strncmp(m->param[i].name, prefix, strlen(prefix))) continue;
     found++;
@@ -575,9 +578,17 @@ static int model_params(uraCtx* c, const char* prefix) {
       if (!strcmp(c->st.ov_name[k], m->param[i].name)) who = c->st.ov_user[k] ? "set" : "case";
     }
     const char* u = m->param[i].unit;
-    fprintf(c->out, "%-16s %.10g%s%s  (%s)\n", m->param[i].name, m->param[i].value, *u ? " " : "",
-            u, who);
+    if (t) {
+      ura_table_cell(t, "%s", m->param[i].name);
+      ura_table_cell(t, "%.10g", m->param[i].value);
+      ura_table_cell(t, "%s", u);
+      ura_table_cell(t, "%s", who);
+    } else {
+      fprintf(c->out, "%-16s %.10g%s%s  (%s)\n", m->param[i].name, m->param[i].value, *u ? " " : "",
+              u, who);
+    }
   }
+  if (t && !found) ura_table_free(t);
   if (!found) {
     return ura_fail(c,
                     "model params: no model parameter starts with '%s'; accepted: a prefix of "
@@ -592,14 +603,20 @@ static int model_params(uraCtx* c, const char* prefix) {
     const urMembrane* mb = b->mem;
     double mass = 0;
     for (int k = 0; k < mb->nn; k++) mass += mb->mass[k];
-    fprintf(c->out,
-            "# membrane %s: %d nodes, %d triangles, %d mount nodes, fabric %.3g kg; stable step "
-            "%.3g us: %d sub-step%s per %.3g us step; inflated %.4g L at %.6g Pa (gauge %.4g "
-            "Pa), largest yarn strain %.3g %%\n",
-            b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
-            b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt, 1e3 * mb->vref, mb->pref,
-            mb->pref - mb->spec.patm, 100 * mb->strain0);
+    char line[600];
+    snprintf(line, sizeof line,
+             "membrane %s: %d nodes, %d triangles, %d mount nodes, fabric %.3g kg; stable step "
+             "%.3g us: %d sub-step%s per %.3g us step; inflated %.4g L at %.6g Pa (gauge %.4g "
+             "Pa), largest yarn strain %.3g %%",
+             b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
+             b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt, 1e3 * mb->vref, mb->pref,
+             mb->pref - mb->spec.patm, 100 * mb->strain0);
+    if (t)
+      ura_table_note(t, "%s", line);
+    else
+      fprintf(c->out, "# %s\n", line);
   }
+  if (t) ura_table_print(c, t);
   return 0;
 }
 
@@ -613,9 +630,17 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
   if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "drop")) return model_drop(c, argv[2]);
   if (argc == 2 && !strcmp(argv[1], "parts")) {
+    static const char* const cols[] = {"part", "origin"};
+    uraTable* t = c->st.format == uraFMT_JSON ? ura_table_new(2, cols) : NULL;
     for (int i = 0; i < c->npart; i++) {
-      fprintf(c->out, "%-12s %s\n", c->part[i].name, c->part[i].origin);
+      if (t) {
+        ura_table_cell(t, "%s", c->part[i].name);
+        ura_table_cell(t, "%s", c->part[i].origin);
+      } else {
+        fprintf(c->out, "%-12s %s\n", c->part[i].name, c->part[i].origin);
+      }
     }
+    if (t) ura_table_print(c, t);
     return 0;
   }
   return ura_fail(c,

@@ -4,10 +4,13 @@
  * format, and files written atomically for a command (refused in dry mode, nowhere when muted).
  * The base layer knows nothing of a session; this is where the session's settings meet it. And
  * the session's failure message (ura_fail: every failure of the layers above lands in c->err
- * through it) and the dry mode's refusal. The bottom of the case layer: it calls only the base. */
+ * through it) and the dry mode's refusal. What an exported file's sidecar FILE.meta.json says
+ * (its columns' units, the notes, the program and case it came from) is written here too, with
+ * libjansson. The bottom of the case layer: it calls only the base. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "case.h"
 
@@ -35,9 +38,86 @@ void ura_pager_end(uraCtx* c) {
   if (out) c->out = out;
 }
 
+/* the units of the columns the workbench writes, by name; then by prefix (history channels) */
+static const char* const column_units[][2] = {
+    {"dpar", "m"},       {"dperp", "m"},        {"contact", ""},         {"hic15", ""},
+    {"nij", ""},         {"vc_thorax", "m/s"},  {"vc_abdomen", "m/s"},   {"vc_th", "m/s"},
+    {"vc_ab", "m/s"},    {"defl", "m"},         {"chest_defl", "m"},     {"abd_defl", "m"},
+    {"p", ""},           {"p_hic", ""},         {"p_nij", ""},           {"p_vc", ""},
+    {"wind", "m/s"},     {"face", "deg"},       {"speed", "m/s"},        {"angle", "deg"},
+    {"step", "m"},       {"q", "m^2"},          {"q_a", "m^2"},          {"q_b", "m^2"},
+    {"complete", ""},    {"cells", ""},         {"contact_cells", ""},   {"seconds", "s"},
+    {"t", "s"},          {"first", "s"},        {"last", "s"},           {"peak_time", "s"},
+    {"peak_force", "N"}, {"head_acc", "m/s^2"}, {"q_parametric", "m^2"}, {"ratio", ""},
+    {"p_centre", ""},    {"sample", ""},        {"defl_thorax", "m"},    {"p_defl", ""},
+    {NULL, NULL}};
+
+const char* ura_column_unit(const char* name) {
+  for (int i = 0; column_units[i][0]; i++) {
+    if (!strcmp(name, column_units[i][0])) return column_units[i][1];
+  }
+  if (!strncmp(name, "neck_f", 6)) return "N";
+  if (!strncmp(name, "neck_m", 6)) return "N m";
+  return NULL;
+}
+
+/* what the sidecar keeps of one table: its columns with their units, notes, and row count */
+static json_t* table_meta(const uraTable* t) {
+  json_t* o = ura_table_json(t);
+  json_t* cols = json_array();
+  size_t i;
+  json_t* v;
+  json_array_foreach(json_object_get(o, "columns"), i, v) {
+    const char* unit = ura_table_unit_of(t, (int)i);
+    if (!unit) unit = ura_column_unit(json_string_value(v));
+    json_t* col = json_pack("{s:s}", "name", json_string_value(v));
+    json_object_set_new(col, "unit", unit ? json_string(unit) : json_null());
+    json_array_append_new(cols, col);
+  }
+  json_t* meta = json_pack("{s:o,s:i,s:O}", "columns", cols, "rows",
+                           (int)json_array_size(json_object_get(o, "rows")), "notes",
+                           json_object_get(o, "notes"));
+  json_decref(o);
+  return meta;
+}
+
 void ura_table_print(uraCtx* c, uraTable* t) {
   if (c->rep_table) c->rep_table(c, t); /* kept for report before it is printed and freed */
-  ura_table_write(c->out, t, c->st.format == uraFMT_CSV, ura_text_width(c));
+  int how = c->st.format == uraFMT_CSV    ? uraTAB_CSV
+            : c->st.format == uraFMT_JSON ? uraTAB_JSON
+                                          : uraTAB_TEXT;
+  /* printed CSV keeps its notes as '# ' lines before the header (the scripts that read a
+     session's output in order rely on it); an exported file is plain: its notes go to the
+     sidecar, and at the prompt to c->msg */
+  FILE* nf = c->out;
+  if (c->export_meta) {
+    json_array_append_new(c->export_meta, table_meta(t));
+    nf = c->export_notes && !c->mute ? c->msg : NULL;
+  }
+  ura_table_write(c->out, nf, t, how, ura_text_width(c));
+}
+
+int ura_export_meta(uraCtx* c, const char* path, const char* what, json_t* tables) {
+  char name[4096];
+  struct stat st;
+  /* only beside a regular file (not /dev/stdout, a FIFO or a device); none when muted */
+  if (c->mute || stat(path, &st) || !S_ISREG(st.st_mode)) return 0;
+  if (snprintf(name, sizeof name, "%s.meta.json", path) >= (int)sizeof name) {
+    return ura_fail(c, "export: the file name '%.200s...' is too long for its .meta.json", path);
+  }
+  const char* slash = strrchr(path, '/');
+  json_t* o = json_pack("{s:s,s:s,s:s,s:s,s:s,s:O}", "file", slash ? slash + 1 : path, "format",
+                        "csv", "program", ura_version(), "command", what, "case", c->st.casename,
+                        "tables", tables);
+  uraAtomic a;
+  if (ura_atomic_open(c, &a, name, "export")) {
+    json_decref(o);
+    return -1;
+  }
+  int ok = json_dumpf(o, a.f, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(15)) == 0;
+  if (ok) fputc('\n', a.f);
+  json_decref(o);
+  return ura_atomic_close(c, &a, ok, "export");
 }
 
 void ura_input_seen(uraCtx* c, FILE* f, const char* path) {

@@ -136,6 +136,18 @@ int ura_cmd_dist(uraCtx* c, int argc, char** argv) {
   uraRiskSet* r = &c->st.risk;
   if (argc == 1) {
     char buf[1200];
+    if (c->st.format == uraFMT_JSON) { /* one table: input, distribution */
+      static const char* const cols[] = {"input", "distribution"};
+      uraTable* t = ura_table_new(2, cols);
+      if (!r->ndist) ura_table_note(t, "no input distribution declared");
+      for (int i = 0; i < r->ndist; i++) {
+        ura_dist_format(&r->dist[i], buf, sizeof buf);
+        ura_table_cell(t, "%s", r->dist[i].name);
+        ura_table_cell(t, "%s", buf);
+      }
+      ura_table_print(c, t);
+      return 0;
+    }
     if (!r->ndist)
       fprintf(c->out,
               "# no input distribution declared (montecarlo draws only the "

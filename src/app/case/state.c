@@ -16,7 +16,7 @@
 
 #define OFF(f) offsetof(uraState, f)
 
-static const char* const format_names[] = {"table", "csv", "wide", NULL};
+static const char* const format_names[] = {"table", "csv", "wide", "json", NULL};
 static const char* const onoff_names[] = {"off", "on", NULL};
 static const char* const descent_names[] = {"model", "paper", NULL};
 static const char* const tau_names[] = {"rmax", "top", NULL};
@@ -189,8 +189,9 @@ const uraParam ura_params[] = {
      "Annex F critical area with the obstacle factor 0.6 (for 1 < width < 40 m)", onoff_names},
     {"format", uraP_ENUM, OFF(format), 0, "", 0, 0,
      "output of tabular commands: aligned table (at a terminal rows fit 80 columns: impact "
-     "prints its main columns, notes wrap), CSV with one header line, or wide (an aligned table "
-     "with every column, also at a terminal)",
+     "prints its main columns, notes wrap, wider tables fold), CSV (a header line and rows, "
+     "the notes as '# ' lines before it; export writes plain CSV), wide (an aligned table with every column, also at a "
+     "terminal) or json (one object per table and line: columns, rows, notes; show as a table too)",
      format_names},
     {"pager", uraP_ENUM, OFF(pager), 0, "", 0, 0,
      "on: at a terminal, output taller than the screen goes through $PAGER (less -FRSX when "

@@ -51,11 +51,14 @@ const uraCmd ura_cmds[] = {
      "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
      "q returns"},
     {"plot", ura_cmd_plot, 1, -1, uraC_NONE,
-     "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",
-     "send curves to gnuplot: the PoF curves, the last grid as a heat map, the last impact's "
-     "membrane airbags at first contact and peak pressure, time histories of "
-     "the last impact, Q of the kept sweeps, the last montecarlo's Q distribution or its "
-     "variance shares (set terminal/output to write files)"},
+     "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face|NAME]|montecarlo|tornado",
+     "send curves to gnuplot: the PoF curves; the last grid as a heat map (a difference grid of "
+     "design compare, P_b - P_a, on a diverging palette); the last impact's membrane airbags at first "
+     "contact and peak pressure; time histories of the last impact (history all: every "
+     "channel); Q of the kept sweeps (plot sweep: every kind kept, a panel each; plot sweep "
+     "wind, face or NAME: that kind alone, one unit per axis); the last montecarlo's Q "
+     "distribution (montecarlo) or its variance shares (tornado) (set terminal/output to write "
+     "files)"},
     {"impact", ura_cmd_impact, 2, 5, uraC_NONE, "impact DPAR DPERP|aim head UP SIDE",
      "simulate one impact at the offset (along, across the course; m) of the live case, or (aim) "
      "with the drone's line of travel UP and SIDE (m) from the head's centre, at any angle 0-90 "
@@ -240,6 +243,28 @@ static int set_one(uraCtx* c, int argc, char** argv) {
   return p ? ura_param_set(c, p, argv[2]) : ura_injury_set(c, i, argv[2]);
 }
 
+/* show in JSON: one row per setting (name, value, unit, source) gathered here and
+   printed as one table; NULL: show prints its aligned lines */
+static uraTable* show_tab;
+
+/* one setting as show prints it: an aligned line, or a row of show_tab; note is the source in
+   the line's form ("  (set)", "  (derived: ...)") */
+static void show_line(uraCtx* c, const char* name, const char* val, const char* unit,
+                      const char* note) {
+  if (!show_tab) {
+    fprintf(c->out, "%-16s %s%s%s%s\n", name, val, *unit ? " " : "", unit, note);
+    return;
+  }
+  char src[1024];
+  snprintf(src, sizeof src, "%s", note + strspn(note, " ("));
+  size_t n = strlen(src);
+  if (n && src[n - 1] == ')') src[n - 1] = 0;
+  ura_table_cell(show_tab, "%s", name);
+  ura_table_cell(show_tab, "%s", val);
+  ura_table_cell(show_tab, "%s", unit);
+  ura_table_cell(show_tab, "%s", src);
+}
+
 /* one line of show: name, value, unit, and where a derived value comes from; ext (NULL: one
    parameter alone) keeps the derived grid extents across the lines of a listing (ext[3]: 0 not
    sized yet, 1 sized, -1 not available) */
@@ -263,7 +288,9 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
       if (ura_impact_conditions(c, &v[0], &v[1])) {
         if (!ext) return -1;
         /* the whole listing still prints (e.g. the paper's Table 2 at an unprinted wind) */
-        fprintf(c->out, "%-16s auto %s  (derived: not available: %s)\n", p->name, p->unit, c->err);
+        char why[uraERRLEN + 40];
+        snprintf(why, sizeof why, "  (derived: not available: %s)", c->err);
+        show_line(c, p->name, "auto", p->unit, why);
         c->err[0] = 0;
         return 0;
       }
@@ -284,7 +311,7 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
         if (!ext) return -1;
         /* the whole listing still prints (e.g. in dry mode): the value is left to the grid */
         c->err[0] = 0;
-        fprintf(c->out, "%-16s auto %s  (derived at the next grid)\n", p->name, p->unit);
+        show_line(c, p->name, "auto", p->unit, "  (derived at the next grid)");
         return 0;
       }
       double x = !strcmp(p->name, "along_min") ? v[0] : !strcmp(p->name, "along_max") ? v[1] : v[2];
@@ -298,7 +325,7 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
     else
       note = ura_design_mark(c, p->name, src, sizeof src);
   }
-  fprintf(c->out, "%-16s %s%s%s%s\n", p->name, val, *p->unit ? " " : "", p->unit, note);
+  show_line(c, p->name, val, p->unit, note);
   return 0;
 }
 
@@ -307,13 +334,21 @@ static void show_injury(uraCtx* c, int i) {
   const char* name;
   char val[128];
   ur_injury_param_info(i, &name, NULL, NULL);
-  ura_injury_line(c, i, val, sizeof val, 1);
-  fprintf(c->out, "%-16s %s\n", name, val);
+  ura_injury_line(c, i, val, sizeof val, !show_tab);
+  if (show_tab) {
+    const char* unit;
+    ur_injury_param_info(i, &name, &unit, NULL);
+    show_line(c, name, val, unit ? unit : "", "  (injury criteria)");
+  } else {
+    fprintf(c->out, "%-16s %s\n", name, val);
+  }
 }
 
 /* one model parameter: name, SI value, its unit */
 static void show_model_param(uraCtx* c, const urParam* p) {
-  fprintf(c->out, "%-16s %.10g%s%s\n", p->name, p->value, *p->unit ? " " : "", p->unit);
+  char val[64];
+  snprintf(val, sizeof val, "%.10g", p->value);
+  show_line(c, p->name, val, p->unit, show_tab ? "  (model parameter, SI)" : "");
 }
 
 /* show PREFIX: every parameter whose name starts with it, in the order of the full listing */
@@ -337,7 +372,27 @@ static int show_prefix(uraCtx* c, const char* prefix) {
   return found;
 }
 
+static int show_lines(uraCtx* c, int argc, char** argv);
+
+/* show [NAME|PREFIX]: aligned lines (also in format csv: scripts read them so), or in format
+   json one table (name, value, unit, source) */
 int ura_cmd_show(uraCtx* c, int argc, char** argv) {
+  if (c->st.format != uraFMT_JSON) return show_lines(c, argc, argv);
+  static const char* const cols[] = {"name", "value", "unit", "source"};
+  show_tab = ura_table_new(4, cols);
+  int rc = show_lines(c, argc, argv);
+  uraTable* t = show_tab;
+  show_tab = NULL;
+  if (rc == 0) {
+    ura_table_print(c, t);
+  } else {
+    ura_table_free(t);
+  }
+  return rc;
+}
+
+/* show's lines (or rows of show_tab) */
+static int show_lines(uraCtx* c, int argc, char** argv) {
   if (argc == 2) {
     const uraParam* p = ura_param_find(argv[1]);
     int i = p ? -1 : ura_injury_find(argv[1]);
@@ -366,14 +421,25 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
   for (const uraParam* p = ura_params; p->name; p++) {
     if (show_one(c, p, ext)) return -1;
   }
-  fprintf(c->out, "# injury criteria (uasimpact-injury(7))\n");
+  if (!show_tab) fprintf(c->out, "# injury criteria (uasimpact-injury(7))\n");
   for (int i = 0; i < ur_injury_param_count(); i++) show_injury(c, i);
-  fprintf(c->out,
-          "# model parameters, SI units (uasimpact-model(5); 'model params' says who set "
-          "them)\n");
+  if (!show_tab) {
+    fprintf(c->out,
+            "# model parameters, SI units (uasimpact-model(5); 'model params' says who set "
+            "them)\n");
+  }
   const urModel* m = ura_model(c);
   for (int i = 0; m && i < m->nparam; i++) show_model_param(c, &m->param[i]);
-  ura_dist_show(c);
+  if (!show_tab) {
+    ura_dist_show(c);
+  } else {
+    const uraRiskSet* r = &c->st.risk;
+    char buf[1200];
+    for (int i = 0; i < r->ndist; i++) {
+      ura_dist_format(&r->dist[i], buf, sizeof buf);
+      show_line(c, r->dist[i].name, buf, "", "  (input distribution of montecarlo: dist)");
+    }
+  }
   return 0;
 }
 

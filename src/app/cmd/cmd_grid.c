@@ -299,13 +299,17 @@ int ura_grid_run(uraCtx* c, int quiet) {
 
 /* the summary row of the last grid */
 static int grid_summary(uraCtx* c) {
-  static const char* const cols[] = {"case", "wind",  "speed",         "angle", "face",
-                                     "step", "cells", "contact_cells", "q",     "seconds"};
+  /* complete last: the columns before it keep their places of the earlier versions */
+  static const char* const cols[] = {"case", "wind",    "speed",   "angle",
+                                     "face", "step",    "cells",   "contact_cells",
+                                     "q",    "seconds", "complete"};
   urGrid* g = c->last.g;
-  uraTable* t = ura_table_new(10, cols);
+  uraTable* t = ura_table_new(11, cols);
   if (!g->complete) {
-    ura_table_note(t, "PARTIAL grid: %d cells failed, %d not computed; q is not given", g->nfailed,
-                   g->npending);
+    ura_table_note(t,
+                   "PARTIAL grid (complete 0): %d cells failed, %d not computed; q sums the "
+                   "finished cells only, a lower bound of Q",
+                   g->nfailed, g->npending);
   }
   ura_table_note(t,
                  "Q = sum of P{F|Delta} x %g m x %g m over the %s (eq. 4.5); "
@@ -338,11 +342,9 @@ static int grid_summary(uraCtx* c) {
   ura_table_cell(t, "%g", g->step);
   ura_table_cell(t, "%d", g->nrow * g->ncol);
   ura_table_cell(t, "%d", g->ncontact);
-  if (g->complete)
-    ura_table_cell(t, "%.4f", g->q);
-  else
-    ura_table_cell(t, "%s", "partial");
+  ura_table_cell(t, "%.4f", g->q); /* numeric always; complete says whether it is Q */
   ura_table_cell(t, "%.2f", g->seconds);
+  ura_table_cell(t, "%d", g->complete ? 1 : 0);
   ura_table_print(c, t);
   for (int k = 0; k < g->nrow * g->ncol; k++) {
     if (g->cell[k].status == urCELL_FAILED && !g->cell[k].mirrored) {

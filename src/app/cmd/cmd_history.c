@@ -136,9 +136,12 @@ static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double
     }
   }
   uraTable* t = ura_table_new(nsel + 1, cols);
+  ura_table_unit(t, 0, "s");
+  for (int s = 0; s < nsel && tr->units; s++) ura_table_unit(t, s + 1, tr->units[sel[s]]);
   ura_table_note(t, "impact %s (%g, %g) m; t in s from tau; units: %s",
                  c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar, c->last_dperp,
-                 "head_acc m/s^2, neck forces N, moments N m, deflections m, sensor channels SI");
+                 "head_acc m/s^2, neck forces N, moments N m, deflections m, sensor channels SI "
+                 "(their units: history)");
   for (int i = 0; i < tr->n; i++) {
     if (tr->t[i] < from || tr->t[i] > to) continue;
     ura_table_cell(t, "%.9g", tr->t[i]);

@@ -145,6 +145,31 @@ static void channel_name(const urModel* m, int j, char* buf, size_t n) {
   }
 }
 
+/* the unit of sensor channel j by its sensor's kind and component (urSensorType, engine.h) */
+static const char* channel_unit(const urModel* m, int j) {
+  for (int i = 0; i < m->nsensor; i++) {
+    const urSensor* sn = m->sensor + i;
+    int k = j - sn->adr, lin;
+    if (k < 0 || k >= sn->dim) continue;
+    switch (sn->type) {
+    case urSENS_ACCEL: return "m/s^2";
+    case urSENS_JOINTLOAD: return k < 3 ? "N" : "N m";
+    case urSENS_JOINTPOS:
+    case urSENS_JOINTVEL:
+      /* translation: a prismatic joint, or the first three dof of a free one */
+      lin = m->body[sn->obj].jtype == urJNT_PRISMATIC ||
+            (m->body[sn->obj].jtype == urJNT_FREE && sn->dof < 3);
+      if (sn->type == urSENS_JOINTPOS) return lin ? "m" : "rad";
+      return lin ? "m/s" : "rad/s";
+    case urSENS_CONTACT: return k == 1 ? "m" : "N";
+    case urSENS_AIRBAG: return k == 0 ? "Pa" : k == 1 ? "m^3" : k == 2 ? "N" : "";
+    case urSENS_BODYPOS: return "m";
+    case urSENS_BODYVEL: return "m/s";
+    }
+  }
+  return "";
+}
+
 /* every sensor channel of the last impact, one row per sample from from to to (s) */
 int ura_history_samples(uraCtx* c, double from, double to) {
   if (!c->have_impact) return ura_fail(c, "history: no impact yet; run 'impact DPAR DPERP'");
@@ -161,6 +186,8 @@ int ura_history_samples(uraCtx* c, double from, double to) {
     names[1 + j] = strdup(buf);
   }
   uraTable* t = ura_table_new(ncol, (const char* const*)names);
+  ura_table_unit(t, 0, "s"); /* each channel's unit, for the sidecar of export history */
+  for (int j = 0; j < m->nsensordata; j++) ura_table_unit(t, 1 + j, channel_unit(m, j));
   ura_table_note(t,
                  "impact %s (%g, %g) m; t in s from tau; SI units; engine frames "
                  "(uasimpact-model(5))",
@@ -251,7 +278,7 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
     char buf[80];
     channel_name(m, j, buf, sizeof buf);
     c->trace.names[NDERIVED + j] = strdup(buf);
-    c->trace.units[NDERIVED + j] = "SI";
+    c->trace.units[NDERIVED + j] = channel_unit(m, j);
     for (int i = 0; i < n; i++) {
       c->trace.v[(size_t)(NDERIVED + j) * n + i] = d->hist[(size_t)i * stride + 1 + j];
     }

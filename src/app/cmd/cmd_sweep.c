@@ -94,20 +94,12 @@ static int sweep_show(uraCtx* c) {
 }
 
 void ura_sweep_table(uraCtx* c, uraTable* t, int rows) {
-  if (rows > 0) {
+  /* no grid finished (stopped, or failed, at the first value): no empty header */
+  if (rows > 0 && ura_table_rows(t)) {
     ura_table_print(c, t);
-    return;
+  } else {
+    ura_table_free(t);
   }
-  /* no grid finished (stopped, or failed, at the first value): no empty header; the table is
-     let go through a stream nobody reads */
-  char* buf = NULL;
-  size_t n = 0;
-  FILE* f = open_memstream(&buf, &n);
-  if (f) {
-    ura_table_write(f, t, 0, 0);
-    fclose(f);
-  }
-  free(buf);
 }
 
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv) {

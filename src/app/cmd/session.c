@@ -68,8 +68,10 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   return ura_atomic_close(c, &a, 1, "save session");
 }
 
-/* export grid|history|sweep|contacts FILE: the same rows as 'grid cells', 'history', 'sweep show'
-   or 'contacts', always CSV, written to a temporary file beside FILE and renamed when complete */
+/* export grid|history|sweep|contacts|montecarlo FILE: the same rows as 'grid cells', 'history',
+   'sweep show', 'contacts' or 'montecarlo samples', always plain CSV (header and rows), written to
+   a temporary file beside FILE and renamed when complete; the notes, units and provenance to
+   FILE.meta.json beside it (and at the prompt to standard error) */
 int ura_cmd_export(uraCtx* c, int argc, char** argv) {
   int grid = !strcmp(argv[1], "grid"), hist = !strcmp(argv[1], "history");
   int sweep = !strcmp(argv[1], "sweep"), cont = !strcmp(argv[1], "contacts");
@@ -87,19 +89,30 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
                     "(or 'sweep NAME LIST [UNIT]')");
   }
   uraAtomic a;
+  int notes = ura_at_terminal(c); /* the notes at the prompt also to standard error */
   if (ura_atomic_open(c, &a, argv[2], "export")) return -1;
 
-  /* print into the file in CSV */
+  /* print into the file in plain CSV, the notes and units gathered for the sidecar */
   FILE* out = c->out;
   int fmt = c->st.format;
   c->out = a.f;
   c->st.format = uraFMT_CSV;
+  c->export_meta = json_array();
+  c->export_notes = notes;
   char* av[2] = {argv[1], grid ? "cells" : mc ? "samples" : "show"};
   /* the commands' own writers, through the command table (grid cells, sweep show, montecarlo
      samples, contacts) */
   const uraCmd* k = hist ? NULL : ura_cmd_find(argv[1]);
   int rc = hist ? ura_history_samples(c, -INFINITY, INFINITY) : k->fn(c, cont ? 1 : 2, av);
+  json_t* tables = c->export_meta;
+  c->export_meta = NULL;
+  c->export_notes = 0;
   c->out = out;
   c->st.format = fmt;
-  return ura_atomic_close(c, &a, rc == 0, "export");
+  char what[64];
+  snprintf(what, sizeof what, "export %s", argv[1]);
+  rc = ura_atomic_close(c, &a, rc == 0, "export") || rc;
+  if (rc == 0) rc = ura_export_meta(c, argv[2], what, tables);
+  json_decref(tables);
+  return rc ? -1 : 0;
 }

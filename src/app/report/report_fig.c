@@ -100,9 +100,14 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   }
   fprintf(f, "EOD\n");
   char q[256], title[800];
-  ura_grid_qtext(g, q, sizeof q);
+  /* the report is UTF-8 whatever the locale: a difference says ΔP and ΔQ */
+  if (rg->diff)
+    snprintf(q, sizeof q, "\u0394Q = Q_b \u2212 Q_a = %.4f m^2%s", g->q,
+             g->complete ? "" : " (finished cells only: partial grid)");
+  else
+    ura_grid_qtext(g, 0, q, sizeof q);
   snprintf(title, sizeof title, "%s\n%s%s", rg->title,
-           rg->diff ? "difference P_b - P_a in %; " : "P{F|Delta} in %; ", q);
+           rg->diff ? "difference \u0394P = P_b \u2212 P_a in %; " : "P{F|Delta} in %; ", q);
   ura_plot_text(f, "title", title);
   double h = g->step / 2;
   fprintf(f, "set xlabel \"cross offset dperp (m)\" noenhanced\n");
@@ -113,10 +118,11 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   fprintf(f, "set tics out\nset grid front lc rgb '#999999'\n");
   if (rg->diff) {
     if (big < 1) big = 1;
-    fprintf(f,
-            "set palette defined (-1 '#2166ac', -0.5 '#92c5de', 0 '#f7f7f7', 0.5 '#f4a582', 1 "
-            "'#b2182b')\nset cbrange [%.9g:%.9g]\nset cblabel \"P_b - P_a (%%)\" noenhanced\n",
-            -big, big);
+    fprintf(
+        f,
+        "set palette defined (-1 '#2166ac', -0.5 '#92c5de', 0 '#f7f7f7', 0.5 '#f4a582', 1 "
+        "'#b2182b')\nset cbrange [%.9g:%.9g]\nset cblabel \"\u0394P = P_b \u2212 P_a (%%)\" noenhanced\n",
+        -big, big);
   } else {
     fprintf(f,
             "set palette defined (0 '#ffffff', 0.001 '#fff3b0', %g '#fff3b0', %g '#ffe000', "

@@ -1,9 +1,13 @@
 /* gridshow.c: the last grid as text in the paper's layout: rows along offset descending,
  * columns cross offset, P in percent, each cell coloured by its band on a terminal (plain text
- * otherwise or with NO_COLOR), then the legend and a line with the conditions and Q.
+ * otherwise or with NO_COLOR), then the legend and a line with the conditions and Q. A
+ * difference grid (design compare) says so: "ΔP = P_b - P_a" and "ΔQ" (Δ as "d" where the
+ * locale is not UTF-8), on the diverging bands (blue: b safer, red: b riskier).
  */
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "ui.h"
@@ -42,8 +46,25 @@ void ura_grid_conditions(const struct uraCtx* c, char* buf, size_t n) {
   if (k < n && r->tau == urTAU_TOP) snprintf(buf + k, n - k, ", tau top");
 }
 
-void ura_grid_qtext(const urGrid* g, char* buf, size_t n) {
-  if (g->complete) {
+const char* ura_delta(void) {
+  const char* v = getenv("LC_ALL");
+  if (!v || !*v) v = getenv("LC_CTYPE");
+  if (!v || !*v) v = getenv("LANG");
+  char low[64];
+  size_t k = 0;
+  for (; v && v[k] && k < sizeof low - 1; k++) low[k] = (char)tolower((unsigned char)v[k]);
+  low[k] = 0;
+  return strstr(low, "utf-8") || strstr(low, "utf8") ? "\u0394" : "d";
+}
+
+void ura_grid_qtext(const urGrid* g, int diff, char* buf, size_t n) {
+  const char* d = ura_delta();
+  if (diff && g->complete) {
+    snprintf(buf, n, "%sQ = Q_b - Q_a = %.4f m^2", d, g->q);
+  } else if (diff) {
+    snprintf(buf, n, "%sQ = %.4f m^2 over the finished cells, partial grid (%d failed, %d pending)",
+             d, g->q, g->nfailed, g->npending);
+  } else if (g->complete) {
     snprintf(buf, n, "Q = %.4f m^2", g->q);
   } else {
     /* not a Q: a lower bound, since the cells not counted have p >= 0 */
@@ -91,7 +112,10 @@ int ura_grid_show(uraCtx* c) {
   /* title and column header: cross offsets */
   ura_grid_conditions(c, buf, sizeof buf);
   int diff = c->last.diff;
-  fprintf(f, "%s in %%: %s\n", diff ? "P_b - P_a" : "P{F|Delta}", buf);
+  if (diff)
+    fprintf(f, "%sP = P_b - P_a in %%: %s\n", ura_delta(), buf);
+  else
+    fprintf(f, "P{F|Delta} in %%: %s\n", buf);
   fprintf(f,
           "rows: dpar m (+ ahead); columns: dperp m (+ left of course); the paper's layout\n"
           "%s",
@@ -139,7 +163,7 @@ int ura_grid_show(uraCtx* c) {
   /* conditions and Q */
   char q[256];
   ura_grid_conditions(c, buf, sizeof buf);
-  ura_grid_qtext(g, q, sizeof q);
+  ura_grid_qtext(g, diff, q, sizeof q);
   fprintf(f, "%s: %s over the %s (%d x %d cells of %g m); source %s\n", buf, q,
           c->last.extents_set ? "set extents only" : "full plane", g->nrow, g->ncol, g->step,
           c->last.source[0] ? c->last.source : "?");

@@ -1,6 +1,7 @@
 /* plot_cmd.c: the plot command: which kind of plot its words ask for (grid, pof, history,
  * sweep, montecarlo, tornado), and the two kinds drawn here, the last grid as a heat map in the
- * band colours and the PoF curves. Every kind goes through the runner of plot.c. */
+ * band colours (a difference grid of design compare on a diverging palette centred on 0, its
+ * title and colour bar saying ΔP = P_b − P_a and ΔQ) and the PoF curves. Every kind goes through the runner of plot.c. */
 #include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -34,9 +35,20 @@ static void band_palette(FILE* f) {
           uraBAND_SEVERE);
 }
 
+/* a difference grid's palette: diverging, white at 0, blue where b is safer (P_b < P_a), red
+   where it is riskier, symmetric over +-m % */
+static void diff_palette(FILE* f, double m) {
+  fprintf(f,
+          "set palette defined (-1 '#2166ac', -0.5 '#92c5de', 0 '#f7f7f7', 0.5 '#f4a582', "
+          "1 '#b2182b')\n");
+  fprintf(f, "set cbrange [%.9g:%.9g]\n", -m, m);
+}
+
 static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   const urGrid* g = c->last.g;
+  int diff = c->last.diff;
   char cond[256], q[256], title[600];
+  double pmax = 0; /* the largest |P| of a difference grid, %: its colour range */
 
   /* the data: one scan line per along offset; unfinished cells are NaN */
   fprintf(f, "$D << EOD\n");
@@ -49,6 +61,7 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
       ura_plot_num(f, g->par_max - i * g->step);
       fputc(' ', f);
       ura_plot_num(f, fin ? cl->p * 100.0 : NAN);
+      if (fin) pmax = fmax(pmax, fabs(cl->p * 100.0));
       fputc('\n', f);
     }
     fputc('\n', f);
@@ -57,8 +70,15 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
 
   /* axes in metres, square cells, the band palette */
   ura_grid_conditions(c, cond, sizeof cond);
-  ura_grid_qtext(g, q, sizeof q);
-  snprintf(title, sizeof title, "P{F|Delta} in %%; %s", q);
+  /* gnuplot's text is UTF-8 here: a difference says ΔP and ΔQ with a true minus sign */
+  if (diff) {
+    snprintf(q, sizeof q, "\u0394Q = Q_b \u2212 Q_a = %.4f m^2%s", g->q,
+             g->complete ? "" : " (finished cells only: partial grid)");
+    snprintf(title, sizeof title, "\u0394P = P_b \u2212 P_a in %%; %s", q);
+  } else {
+    ura_grid_qtext(g, 0, q, sizeof q);
+    snprintf(title, sizeof title, "P{F|Delta} in %%; %s", q);
+  }
   double h = g->step / 2;
   double width = (g->ncol - 1) * g->step;
   fprintf(f, "set title ");
@@ -71,12 +91,21 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
           "set xlabel \"cross offset dperp (m), + left of the course (the paper's layout)\" "
           "noenhanced\n");
   fprintf(f, "set ylabel \"along offset dpar (m), + ahead\" noenhanced\n");
-  fprintf(f, "set cblabel \"P{F|Delta} (%%)\" noenhanced\n");
+  if (diff) {
+    fprintf(f,
+            "set cblabel \"\u0394P = P_b \u2212 P_a (%%): blue b safer, red b riskier\" "
+            "noenhanced\n");
+  } else {
+    fprintf(f, "set cblabel \"P{F|Delta} (%%)\" noenhanced\n");
+  }
   fprintf(f, "set size ratio -1\nset xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", g->perp_min - h,
           g->perp_min + (g->ncol - 1) * g->step + h, g->par_max - (g->nrow - 1) * g->step - h,
           g->par_max + h);
   fprintf(f, "set tics out\nset grid front lc rgb '#999999'\n");
-  band_palette(f);
+  if (diff)
+    diff_palette(f, pmax > 0 ? ceil(pmax) : 1);
+  else
+    band_palette(f);
   fprintf(f, "plot $D using 1:2:3 with image notitle\n");
   return 0;
 }
@@ -176,7 +205,7 @@ int ura_cmd_plot(uraCtx* c, int argc, char** argv) {
   ura_suggest_init(&sg, what);
   ura_suggest_keywords(&sg, ura_cmd_find("plot")->usage + strlen("plot "));
   return ura_fail(c,
-                  "plot: unknown plot '%s'%s; accepted: pof, grid, history SIGNAL..., sweep "
-                  "[wind|face], montecarlo, tornado, bag",
+                  "plot: unknown plot '%s'%s; accepted: pof, grid, history [SIGNAL...|all], "
+                  "sweep [wind|face|NAME], montecarlo, tornado, bag",
                   what, ura_suggest_text(&sg, dym, sizeof dym));
 }

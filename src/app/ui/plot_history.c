@@ -1,7 +1,8 @@
 /* plot_history.c: the time histories of one impact as gnuplot panels (plot history): one panel
  * per signal against time in ms, head acceleration in g with its HIC15 window shaded,
- * deflections in mm, noise channels left out of 'plot history all'. The script goes to gnuplot
- * through plot.c. */
+ * deflections in mm, every sensor channel in its own unit; 'plot history all' leaves out the
+ * channels at noise level and those that repeat a derived signal (one panel per quantity).
+ * Legends are plain text (no gnuplot subscripts). The script goes to gnuplot through plot.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -133,11 +134,13 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
     }
     fprintf(f, "plot $T using 1:%d with lines lw 2 title ", s + 2);
     ura_plot_quote(f, describe(tr->names[k]));
+    fprintf(f, " noenhanced"); /* names hold '_': no subscripts */
     if (hic) {
       char key[128];
       snprintf(key, sizeof key, "HIC15 window %.2f-%.2f ms", a->t1 * 1e3, a->t2 * 1e3);
       fprintf(f, ", keyentry with boxes fc rgb '#ffd580' fs solid 0.6 noborder title ");
       ura_plot_quote(f, key);
+      fprintf(f, " noenhanced");
     }
     fprintf(f, "\n");
   }
@@ -164,6 +167,27 @@ static int noise(const uraTrace* tr, int k) {
   return peak < 1e-9 || peak < 1e-9 * ref;
 }
 
+/* a sensor channel that repeats a derived signal (the same samples, or their negatives: the
+   neck loads and deflections the injury criteria read in their own signs), which 'plot history
+   all' leaves out so that each quantity is drawn once */
+static int duplicate(const uraTrace* tr, int k) {
+  if (describe(tr->names[k]) != tr->names[k] && ura_trace_find(tr, tr->names[k]) == k) return 0;
+  for (int d = 0; d < tr->nsig; d++) {
+    if (d == k || describe(tr->names[d]) == tr->names[d] || ura_trace_find(tr, tr->names[d]) != d)
+      continue;
+    for (int sign = -1; sign <= 1; sign += 2) {
+      double peak = 0, off = 0;
+      for (int i = 0; i < tr->n; i++) {
+        double a = tr->v[(size_t)k * tr->n + i], b = tr->v[(size_t)d * tr->n + i];
+        peak = fmax(peak, fabs(b));
+        off = fmax(off, fabs(a - sign * b));
+      }
+      if (peak > 0 && off <= 1e-9 * peak) return 1;
+    }
+  }
+  return 0;
+}
+
 int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* const* names, double t1,
                        double t2) {
   const char* who = "plot history";
@@ -186,16 +210,24 @@ int ura_plot_trace_hic(uraCtx* c, const uraTrace* tr, int nsel, const char* cons
   }
   if (every || n == 0) {
     for (int k = 0; k < tr->nsig && nsel == 0; k++) sel[n++] = k;
-    int left = 0;
+    int left = 0, dup = 0;
     for (int k = 0; k < tr->nsig && every; k++) {
       if (noise(tr, k))
         left++;
+      else if (duplicate(tr, k))
+        dup++;
       else
         sel[n++] = k;
     }
     if (left && c->interactive) {
       fprintf(c->msg, "%s all: %d channel%s that stay at noise level (|value| < 1e-9) left out\n",
               who, left, left == 1 ? "" : "s");
+    }
+    if (dup && c->interactive) {
+      fprintf(c->msg,
+              "%s all: %d sensor channel%s that repeat a derived signal (the same or "
+              "opposite sign) left out\n",
+              who, dup, dup == 1 ? "" : "s");
     }
   }
   for (int s = 0; s < nsel && !every; s++) {

@@ -1,6 +1,7 @@
 /* plot_mc.c: plot montecarlo (the distribution of Q over the last montecarlo's samples: a
  * histogram with the mean, the 95 % interval of the mean and the samples' 2.5-97.5 % range) and
- * plot tornado (the first-order variance shares of its inputs, largest on top) */
+ * plot tornado (the first-order variance shares of its inputs, largest on top); their titles
+ * on two lines, so that they fit the default 640-pixel canvas */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,8 +41,8 @@ static int write_hist(uraCtx* c, FILE* f) {
   double ymax = gsl_histogram_max_val(h) / n;
   gsl_histogram_free(h);
   fprintf(f,
-          "set title \"Q over %d samples of case %s (seed %.0f): mean %.4g m^2, 95 %% "
-          "interval of the mean %.4g..%.4g\" noenhanced\n",
+          "set title \"Q over %d samples of case %s (seed %.0f)\\nmean %.4g m^2, 95 %% "
+          "interval of the mean %.4g..%.4g m^2\" noenhanced\n",
           n, casename, seed, st->mean, st->lo95, st->hi95);
   fprintf(f,
           "set xlabel \"Q (m^2)\" noenhanced\nset ylabel \"fraction of the samples\" "
@@ -101,11 +102,11 @@ static int write_tornado(uraCtx* c, FILE* f) {
   }
   fprintf(f, "EOD\n");
   fprintf(f,
-          "set title \"Variance shares of Q (first-order), case %s, %d samples; sum %.3g\" "
-          "noenhanced\n",
+          "set title \"Variance shares of Q (first-order)\\ncase %s, %d samples; the shares "
+          "sum to %.3g\" noenhanced\n",
           casename, n, sum);
   fprintf(f,
-          "set xlabel \"share of the variance of Q\" noenhanced\nset xrange [0:1]\n"
+          "set xlabel \"share of the variance of Q\" noenhanced\nset xrange [0:1]\nset rmargin 8\n"
           "set yrange [%d.5:-0.5]\nset grid xtics\nunset key\nset ytics (",
           k - 1);
   for (int i = 0; i < k; i++) {
@@ -119,7 +120,8 @@ static int write_tornado(uraCtx* c, FILE* f) {
   fprintf(f,
           ") noenhanced\nset style fill solid 0.7 border -1\n"
           "plot $S using ($2/2):1:($2/2):(0.35) with boxxyerror lc rgb '#0072b2', "
-          "$S using 2:1:(sprintf(\"%%.3f\", $2)) with labels left offset 0.5,0\n");
+          "$S using 2:1:(sprintf(\"%%.3f\", abs($2) < 5e-4 ? 0 : $2)) with labels left "
+          "offset 0.5,0\n");
   return 0;
 }
 

@@ -111,7 +111,10 @@ void ura_cell_text(const urCell* cell, char buf[8]);
 /* "case C, wind 0 m/s, face 0 deg" (? for what is unknown) */
 void ura_grid_conditions(const uraCtx* c, char* buf, size_t n);
 
-/* "Q = 0.8469 m^2", with "(partial: N failed, M pending)" when the grid is not complete */
-void ura_grid_qtext(const urGrid* g, char* buf, size_t n);
+/* "Q = 0.8469 m^2", with "(partial: N failed, M pending)" when the grid is not complete; of a
+   difference grid (diff) "ΔQ = Q_b - Q_a = ..." */
+void ura_grid_qtext(const urGrid* g, int diff, char* buf, size_t n);
+/* the Greek capital delta in UTF-8 when the locale (LC_ALL, LC_CTYPE, LANG) is UTF-8, else "d" */
+const char* ura_delta(void);
 
 #endif

@@ -10,6 +10,7 @@
  * on the way out, so the application's SIGINT handling is as before.
  * ncurses keeps its own global screen state (stdscr, COLORS, ESCDELAY); we keep none.
  */
+#include <locale.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -198,18 +199,34 @@ static void draw_cursor_line(viewer* v, int y) {
 static void layout(viewer* v) {
   char title[1200], cond[256], q[256], lines[4][256];
   ura_grid_conditions(v->c, cond, sizeof cond);
-  ura_grid_qtext(v->g, q, sizeof q);
+  ura_grid_qtext(v->g, v->c->last.diff, q, sizeof q);
   snprintf(title, sizeof title, "%s  %s  [%s]", cond, q, v->c->last.source);
   head_rows = 2 + ura_split_fields(title, COLS, lines, 2);
   foot_rows = 1 + (COLS >= STATUS_ONE_LINE ? 1 : 2) +
               (v->note[0] ? 1 : ura_split_fields(KEYS, COLS, lines, 3));
 }
 
+/* a cell without colour: its band's glyph right before its number ("  #19.9"), never after the
+   number of the cell to its left: at least one blank leads, so a number of five characters
+   (100.0, -31.5) is shown without its decimal ("@100", "+-31") */
+static void mono_cell(char* buf, size_t n, char glyph, const urCell* cl, const char* t) {
+  char num[16];
+  const char* s = t + strspn(t, " ");
+  if (strlen(s) > CELL_W - 2 && cl->status != urCELL_FAILED && cl->status != urCELL_PENDING)
+    snprintf(num, sizeof num, "%.0f", cl->p * 100.0);
+  else
+    snprintf(num, sizeof num, "%s", s);
+  snprintf(buf, n, "%*s%c%s", (int)(CELL_W - 1 - strlen(num)), "", glyph, num);
+}
+
 static void draw_legend(viewer* v, int y) {
   int x = 0;
   int diff = v->c->last.diff;
-  put(stdscr, y, x, A_NORMAL, diff ? "P_b - P_a:" : "P{F|Delta}:");
-  x += 12;
+  char what[32];
+  snprintf(what, sizeof what, "%sP = P_b - P_a:", ura_delta());
+  put(stdscr, y, x, A_NORMAL, diff ? what : "P{F|Delta}:");
+  /* the columns the label takes (the UTF-8 delta is two bytes in one column) */
+  x += diff ? (int)strlen(what) + 2 - (int)strlen(ura_delta()) : 12;
   for (int r = uraROLE_NONE; r <= (diff ? uraROLE_RISKIER2 : uraROLE_PENDING) && x < COLS; r++) {
     if (diff && r > uraROLE_NONE && r < uraROLE_SAFER2) continue;
     if (r == uraROLE_FAILED && !v->g->nfailed) continue;
@@ -233,15 +250,18 @@ static void draw_grid(viewer* v) {
   /* title: conditions, Q, source (two lines when one does not fit) */
   char lines[4][256];
   ura_grid_conditions(v->c, cond, sizeof cond);
-  ura_grid_qtext(v->g, q, sizeof q);
+  ura_grid_qtext(v->g, v->c->last.diff, q, sizeof q);
   snprintf(buf, sizeof buf, "%s  %s  [%s]", cond, q, v->c->last.source);
   int nt = ura_split_fields(buf, COLS, lines, 2);
   for (int k = 0; k < nt; k++) put(stdscr, k, 0, v->role_attr[uraROLE_TITLE], lines[k]);
 
   /* axis caption with the orientation (the paper's layout: uasimpact(1), ORIENTATION), cross
      offset labels; along offset labels at the left */
-  const char* what =
-      v->c->last.diff ? "P_b - P_a in % (blue: B safer, red: B riskier)" : "P{F|Delta} in %";
+  char dwhat[80], dshort[32];
+  snprintf(dwhat, sizeof dwhat, "%sP = P_b - P_a in %% (blue: b safer, red: b riskier)",
+           ura_delta());
+  snprintf(dshort, sizeof dshort, "%sP %%", ura_delta());
+  const char* what = v->c->last.diff ? dwhat : "P{F|Delta} in %";
   snprintf(buf, sizeof buf,
            "%s; columns: dperp (m, + left of the course), rows: dpar (m, + "
            "ahead); the paper's layout",
@@ -251,7 +271,7 @@ static void draw_grid(viewer* v) {
   }
   if ((int)strlen(buf) > COLS - LABEL_W) {
     snprintf(buf, sizeof buf, "%s; cols dperp m (+ left of course), rows dpar m (+ ahead)",
-             v->c->last.diff ? "P_b - P_a %" : "P %");
+             v->c->last.diff ? dshort : "P %");
   }
   put(stdscr, HEAD_ROWS - 2, (int)strlen(buf) > COLS - LABEL_W ? 0 : LABEL_W, A_NORMAL, buf);
   put(stdscr, HEAD_ROWS - 1, 0, v->role_attr[uraROLE_AXIS], "  dpar");
@@ -272,8 +292,10 @@ static void draw_grid(viewer* v) {
       uraRole r = ura_grid_role(v->c->last.diff, cl);
       char t[8];
       ura_cell_text(cl, t);
-      char glyph = v->scheme == uraSCHEME_MONO ? ura_style(v->scheme, r)->glyph : ' ';
-      snprintf(buf, sizeof buf, "%c%s", glyph, t);
+      if (v->scheme == uraSCHEME_MONO)
+        mono_cell(buf, sizeof buf, ura_style(v->scheme, r)->glyph, cl, t);
+      else
+        snprintf(buf, sizeof buf, " %s", t);
       chtype a = v->role_attr[r];
       if (i == v->row && j == v->col) {
         a = (a & A_REVERSE) ? (a & ~A_REVERSE) | A_UNDERLINE | A_BOLD : a | A_REVERSE | A_BOLD;
@@ -622,6 +644,7 @@ int ura_cmd_view(uraCtx* c, int argc, char** argv) {
 
   /* a screen of our own on the terminal, raw (Ctrl-C is a key), keypad, no cursor */
   fflush(c->out);
+  setlocale(LC_CTYPE, ""); /* the terminal's characters (a difference grid's Δ); numbers stay C */
   SCREEN* scr = newterm(NULL, c->out, stdin);
   if (!scr) {
     for (int i = 0; i < 4; i++) sigaction(sigs[i], &saved[i], NULL);

@@ -12,7 +12,7 @@ recalls() { awk '/^# recalled: / { r[n + 1] = 1 } /^case,wind,speed,angle,face,s
                  END { for (i = 1; i <= n; i++) printf "%d", r[i] + 0 }' "$TMP/out"; }
 # the summary rows without their seconds, and the cells of the last grid
 rows() { grep -A1 '^case,wind,speed,angle,face,step,' "$TMP/out" | grep -v '^case,\|^--' |
-         sed 's/,[0-9.]*$//'; }
+         sed 's/,[0-9.]*,[01]$//'; }
 cells() { sed -n '/^# grid of case/,$p' "$TMP/out"; }
 
 # a fresh computation of case A's grid, in a process of its own

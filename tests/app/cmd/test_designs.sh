@@ -17,7 +17,7 @@ check list_changes has "$TMP/out" '^bag,A,0,0,bag_p0=121590$'
 
 # each Q is the design's own grid; the difference cell by cell
 run -c "$S; case B; grid; grid cells"
-qB=$(awk -F, '$1=="B" && NF==10 {print $9; exit}' "$TMP/out")
+qB=$(awk -F, '$1=="B" && NF==11 {print $9; exit}' "$TMP/out")
 awk -F, 'NF==8 && $1 ~ /^[-0-9]/ {print $1","$2","$8}' "$TMP/out" | sort >"$TMP/pa"
 check q_a_is_grid cond '[ -n "$qa" ] && [ "$qB" = "$qa" ]'
 run -c "$S; case A; set bag_p0 1.2 atm; grid; grid cells"
@@ -37,29 +37,30 @@ check session_designs cond '[ $RC -eq 0 ] && grep -q "^plain,B," "$TMP/out" && g
 
 # the difference grid in grid show: its title and the diverging legend
 run -c "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag; grid show"
-check show_diff_title has "$TMP/out" '^P_b - P_a in %: '
+check show_diff_title has "$TMP/out" '^\(d\|Δ\)P = P_b - P_a in %: '
 check show_diff_legend has "$TMP/out" '^legend: none 0 / no contact; safer <=-30 %; safer -30-0 %; riskier 0-30 %; riskier >=30 %$'
 
 # issue 30: an exported difference grid loads back as a difference grid (grid show the same,
 # Q = q_b - q_a, its note keeps the mark so that it exports and loads again unchanged)
 run -c "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag; grid show; export grid $TMP/d.csv"
-sed -n '/^P_b - P_a in %/,/^legend/p' "$TMP/out" >"$TMP/show0"
-q0=$(sed -n 's/.*: Q = \(-*[0-9.]*\) m^2 over.*/\1/p' "$TMP/out")
+sed -n '/P = P_b - P_a in %/,/^legend/p' "$TMP/out" >"$TMP/show0"
+q0=$(sed -n 's/.*Q = Q_b - Q_a = \(-*[0-9.]*\) m^2 over.*/\1/p' "$TMP/out")
 run -c "grid load $TMP/d.csv; grid show; export grid $TMP/d2.csv; grid load $TMP/d2.csv; grid show"
 check diff_loads cond '[ "$RC" -eq 0 ] && [ ! -s "$TMP/err" ]'
-sed -n '/^P_b - P_a in %/,/^legend/p' "$TMP/out" | head -n "$(lines "$TMP/show0")" >"$TMP/show1"
+sed -n '/P = P_b - P_a in %/,/^legend/p' "$TMP/out" | head -n "$(lines "$TMP/show0")" >"$TMP/show1"
 check diff_load_same_show cond '[ -s "$TMP/show0" ] && cmp -s "$TMP/show0" "$TMP/show1"'
-check diff_load_q cond '[ -n "$q0" ] && [ "$(grep -c ": Q = $q0 m^2 over .*source difference P_b - P_a loaded from" "$TMP/out")" -eq 2 ]'
+check diff_load_q cond '[ -n "$q0" ] && [ "$(grep -c "Q = Q_b - Q_a = $q0 m^2 over .*source difference P_b - P_a loaded from" "$TMP/out")" -eq 2 ]'
 check diff_load_negative_q cond 'echo "$q0" | grep -q "^-0\.[0-9]"'
-check diff_round_trip cond '[ "$(grep -v "^#" "$TMP/d.csv")" = "$(grep -v "^#" "$TMP/d2.csv")" ] &&
-  grep -q "^# grid of case A, .*(difference P_b - P_a loaded from .*d.csv)" "$TMP/d2.csv"'
+check diff_round_trip cond 'cmp -s "$TMP/d.csv" "$TMP/d2.csv" &&
+  grep -q "\"grid of case A, .*(difference P_b - P_a loaded from .*d.csv)" "$TMP/d2.csv.meta.json"'
 # without the mark a negative p is refused, saying what makes a difference grid
 grep -v "^#" "$TMP/d.csv" >"$TMP/nomark.csv"
 run -c "grid load $TMP/nomark.csv"
 check diff_unmarked cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
-  has "$TMP/err" "nomark.csv:[0-9]*: p is -[0-9.e-]*, outside \[0, 1\]; a difference grid (p = P_b - P_a in \[-1, 1\], .design compare.) is marked by a comment .# ... difference P_b - P_a .... before the header, as .export grid. writes it$"'
+  has "$TMP/err" "nomark.csv:[0-9]*: p is -[0-9.e-]*, outside \[0, 1\]; a difference grid (p = P_b - P_a in \[-1, 1\], .design compare.) is marked by a note .... difference P_b - P_a .... in FILE.meta.json beside it, as .export grid. writes it (or a comment .# .... before the header)$"'
 # a marked grid still refuses p outside [-1, 1]
 sed 's/^\(0\.000,0\.000,1,.*,\)[^,]*$/\1-1.5/' "$TMP/d.csv" >"$TMP/big.csv"
+cp "$TMP/d.csv.meta.json" "$TMP/big.csv.meta.json"
 run -c "grid load $TMP/big.csv"
 check diff_range has "$TMP/err" "big.csv:[0-9]*: p is -1.5, outside \[-1, 1\] (a difference P_b - P_a)$"
 
@@ -84,8 +85,8 @@ check d_prompt wait_for d1 'uasimpact\[A\]>'
 line d1 "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag"
 check d_compare wait_for d1 'plain +B +0\.[0-9]+ +bag' 20
 line d1 "view"
-check d_caption wait_for d1 'P_b - P_a in % \(blue: B safer, red: B riskier\)'
-check d_legend wait_for d1 'P_b - P_a: .*<=-30 %.*-30-0 %.*0-30 %.*>=30 %'
+check d_caption wait_for d1 'P = P_b - P_a in % \(blue: b safer, red: b riskier\)'
+check d_legend wait_for d1 'P = P_b - P_a: .*<=-30 %.*-30-0 %.*0-30 %.*>=30 %'
 # the cursor line holds the differences the grid keeps, and no Nij mode (it has no difference)
 check d_cursor_diff wait_for d1 '^dpar 0\.00 m  dperp 0\.00 m  dP -?[0-9.]+ %  dHIC15 -?[0-9.]+  dNij -?[0-9.]+ *$'
 grab d1 -e

@@ -12,9 +12,9 @@ check grid_failed_count cond '[ -n "$nfail" ] && [ "$nfail" -gt 0 ]'
 check grid_failed_listed cond '[ "$listed" -gt 0 ] && [ "$listed" -le "$nfail" ]'
 check grid_failed_reason has "$TMP/err" \
   '^grid: cell (.*) failed: \(velocity .* beyond vmax\|non-finite .*\) .* at t = [0-9.e-]* s$'
-check grid_partial_note has "$TMP/out" "^# PARTIAL grid: $nfail cells failed, 0 not computed; q is not given$"
-check grid_no_q cond 'grep -A1 "^case  *wind .* q  *seconds$" "$TMP/out" | tail -1 |
-  grep -q "^ *C  *0 .* partial  *[0-9.]*$"'
+check grid_partial_note has "$TMP/out" "^# PARTIAL grid (complete 0): $nfail cells failed, 0 not computed; q sums the finished cells only, a lower bound of Q$"
+check grid_no_q cond 'grep -A1 "^case  *wind .* q  *seconds  *complete$" "$TMP/out" | tail -1 |
+  grep -q "^ *C  *0 .* [0-9.]*  *[0-9.]*  *0$"'
 
 # interactively: shown as failed, no Q; compare refuses; exported and loaded back it is partial
 printf 'case C\nset vmax 20\nset step 0.2\ngrid\ngrid show\ncompare\nexport grid %s/f.csv\ngrid load %s/f.csv\ngrid show\n' \

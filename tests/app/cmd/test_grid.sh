@@ -7,8 +7,8 @@
 # the acceptance command as given: case C, zero wind, 0.05 m pitch
 run -c 'set format csv; case C; grid'
 check grid_c_status [ "$RC" -eq 0 ]
-check grid_c_header has "$TMP/out" '^case,wind,speed,angle,face,step,cells,contact_cells,q,seconds$'
-check grid_c_q awk -F, '$1 == "C" { n++; if (NF != 10 || $9 !~ /^[0-9]+\.[0-9]+$/ || !($9 > 0.1 && $9 < 3)) bad = 1 }
+check grid_c_header has "$TMP/out" '^case,wind,speed,angle,face,step,cells,contact_cells,q,seconds,complete$'
+check grid_c_q awk -F, '$1 == "C" { n++; if (NF != 11 || $11 != 1 || $9 !~ /^[0-9]+\.[0-9]+$/ || !($9 > 0.1 && $9 < 3)) bad = 1 }
   END { exit !(n == 1 && !bad) }' "$TMP/out"
 
 # 1 and 2 threads on a coarse grid under wind at face 45 (both sides simulated): identical cells

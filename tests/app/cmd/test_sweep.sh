@@ -125,7 +125,7 @@ check show_none fails_with "sweep show: no sweep yet; run 'sweep wind LIST' or '
 run -c "export sweep $TMP/none.csv"
 check export_none cond 'fails_with "export sweep: no sweep yet" && [ ! -e "$TMP/none.csv" ]'
 run -c 'plot sweep'
-check plot_none fails_with "plot sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST'"
+check plot_none fails_with "plot sweep: no sweep yet; run 'sweep wind LIST', 'sweep face LIST' or 'sweep NAME LIST \[UNIT\]'"
 run -c 'plot sweep sideways'
 check plot_bad_kind fails_with "plot sweep: unknown 'sideways'; accepted: plot sweep, plot sweep wind"
 run -c 'sweep wind'

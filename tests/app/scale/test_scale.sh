@@ -16,11 +16,12 @@ U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 MPI=$(cd "$(dirname "$UASIMPACT")" && pwd)/uasimpact-mpi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 
-# the wall-clock fields masked: the last column of rows under a header ending in ',seconds',
-# and montecarlo's '# time:' note
+# the wall-clock fields masked: the seconds column of rows under a header ending in ',seconds'
+# (or ',seconds,complete'), and montecarlo's '# time:' note
 mask() {
-  awk -F, -v OFS=, '/,seconds$/ { n = NF; print; next }
-    n && NF == n && !/^#/ { $NF = "S"; print; next }
+  awk -F, -v OFS=, '/,seconds(,complete)?$/ { n = NF; s = $NF == "complete" ? NF - 1 : NF
+      print; next }
+    n && NF == n && !/^#/ { $s = "S"; print; next }
     { n = 0; sub(/^# time: .*/, "# time: T"); print }' "$1"
 }
 

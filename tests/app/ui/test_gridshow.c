@@ -1,6 +1,7 @@
 /* test_gridshow.c: grid show prints the paper's layout: plain text without a terminal (no
  * escape sequences), ANSI colours by band on a terminal (a pseudo-terminal here) unless
- * NO_COLOR is set, the legend with the thresholds and the line with case, wind, face and Q;
+ * NO_COLOR is set, the legend with the thresholds and the line with case, wind, face and Q (of
+ * a difference grid ΔP and ΔQ);
  * and the colour roles: band thresholds, SGR sequences */
 #define _XOPEN_SOURCE 700 /* posix_openpt, grantpt, unlockpt, ptsname */
 #include <errno.h>
@@ -250,6 +251,24 @@ static void sgr(void** state) {
   }
 }
 
+/* a difference grid (design compare) says ΔP = P_b - P_a and ΔQ = Q_b - Q_a, as "d" where the
+   locale is not UTF-8; Q = 0.0025 x 572 / 100 m^2 of the small grid read as a difference */
+static void difference(void** state) {
+  fixture* f = *state;
+  assert_int_equal(ura_grid_load(&f->c, f->path), 0);
+  f->c.last.diff = 1;
+  setenv("LC_ALL", "C", 1);
+  const char* out = show(f);
+  assert_non_null(strstr(out, "dP = P_b - P_a in %: case B"));
+  assert_non_null(strstr(out, ": dQ = Q_b - Q_a = 0.0143 m^2 over"));
+  assert_null(strstr(out, ": Q = "));
+  setenv("LC_ALL", "C.UTF-8", 1);
+  out = show(f);
+  assert_non_null(strstr(out, "\u0394P = P_b - P_a in %: case B"));
+  assert_non_null(strstr(out, ": \u0394Q = Q_b - Q_a = 0.0143 m^2 over"));
+  unsetenv("LC_ALL");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_setup_teardown(no_grid, setup, teardown),
@@ -257,6 +276,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(paper_table6, setup, teardown),
       cmocka_unit_test_setup_teardown(full_plane_partial, setup, teardown),
       cmocka_unit_test_setup_teardown(colour_on_terminal, setup, teardown),
+      cmocka_unit_test_setup_teardown(difference, setup, teardown),
       cmocka_unit_test(bands),
       cmocka_unit_test(sgr),
   };

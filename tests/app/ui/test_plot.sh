@@ -101,7 +101,7 @@ run -c 'plot grid'
 check grid_needs_grid cond '[ "$RC" -eq 1 ] && has "$TMP/err" "plot grid: no grid yet"'
 run -c 'plot bogus'
 check unknown_plot fails_with \
-  "plot: unknown plot .bogus.; accepted: pof, grid, history SIGNAL..., sweep"
+  "plot: unknown plot .bogus.; accepted: pof, grid, history \[SIGNAL...|all\], sweep \[wind|face|NAME\]"
 run -c 'plot history head_acc'
 check history_not_yet cond '[ "$RC" -eq 1 ] && has "$TMP/err" "plot history: no impact yet"'
 run -c 'plot sweep'

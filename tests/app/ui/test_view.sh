@@ -130,7 +130,10 @@ check nc_show_plain cond '! coloured v3'
 line v3 "view"
 check nc_view wait_for v3 'Enter inspect'
 check nc_view_plain cond '! coloured v3'
-check nc_glyphs wait_for v3 '@100.0'
+# the glyph right before its own number, a blank before it (not '19.9# 74.3')
+check nc_glyphs wait_for v3 ' @100 '
+check nc_glyph_prefix wait_for v3 ' [.:#@][0-9]+\.[0-9] +[.:#@ ][0-9]'
+check nc_glyph_not_suffix cond '! grep -Eq "[0-9][.:#@] " "$TMP/screen"'
 check nc_legend wait_for v3 '  0 / no contact . 0-5 % : 5-30 % # 30-90 % @ >=90 %'
 keys v3 q
 

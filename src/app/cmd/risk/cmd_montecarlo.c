@@ -858,6 +858,19 @@ static int mc_samples(uraCtx* c) {
   cols[nc++] = "hi95";
   for (int j = 0; j < rs->nquant; j++) cols[nc++] = qname[j];
   uraTable* t = ura_table_new(nc, cols);
+  /* the units for the sidecar of export montecarlo: Q, the critical areas and the summary of Q
+     in m^2, each drawn input in its parameter's unit, a deployment outcome 0/1 */
+  for (int j = 0; j < nc; j++) {
+    const char* u = ura_column_unit(cols[j]);
+    if (j > 0 && j <= m->nin) {
+      const uraParam* p = ura_param_find(cols[j]);
+      int k = p ? -1 : ura_model_param_find(c, cols[j]);
+      u = p ? p->unit : k >= 0 ? c->model->param[k].unit : "";
+    } else if (j > m->nin + 1) {
+      u = "m^2";
+    }
+    if (u) ura_table_unit(t, j, u);
+  }
   ura_table_note(t,
                  "the %d samples of the last montecarlo of case %s (seed %.0f): drawn inputs, "
                  "deployment outcomes (1 deployed), the branch, Q (m^2), Q without any device, "

@@ -1,0 +1,103 @@
+# test_plot_kinds.sh: every kind of plot rendered to PNG through the real gnuplot (plot.c and
+# plot_cmd.c, plot_sweep.c, plot_history.c, plot_mc.c, plot_bag.c): a wrapper named gnuplot
+# first in PATH keeps the script it is sent and runs the real gnuplot on it, so that each test
+# checks both the PNG (its signature, not empty) and the labels the script gives it: the
+# difference grid's diverging palette and its ΔP, ΔQ; one unit per sweep axis (kPa drawn in
+# atm) and a panel for every kind of sweep kept; history's real units, plain legends and one
+# channel per quantity; titles of montecarlo and tornado on two lines. Skipped without gnuplot.
+. tests/lib.sh
+
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
+REAL=$(command -v gnuplot)
+if [ -z "$REAL" ]; then
+  skip plot_kinds "gnuplot is not installed (Debian: gnuplot-nox)"
+  finish
+fi
+mkdir -p "$TMP/bin" "$TMP/gp"
+cat >"$TMP/bin/gnuplot" <<EOS
+#!/bin/sh
+n=\$(ls "$TMP/gp" | wc -l)
+cat >"$TMP/gp/\$n.gp"
+cp "$TMP/gp/\$n.gp" "$TMP/gp/last.gp.txt"
+if [ "\$1" = -persist ]; then exec "$REAL" -persist "$TMP/gp/\$n.gp"; fi
+exec "$REAL" "$TMP/gp/\$n.gp"
+EOS
+chmod +x "$TMP/bin/gnuplot"
+png_ok() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] &&
+  [ "$(wc -c <"$1")" -gt 3000 ]; }
+# run the commands, then plot KIND into $TMP/NAME.png; the script sent is $TMP/NAME.gp
+plot_png() {
+  pn=$1; pre=$2; what=$3 # (not 'name': check sets it)
+  rm -f "$TMP/gp/last.gp.txt"
+  PATH="$TMP/bin:$PATH" "$U" -c "$pre; set terminal png; set output $TMP/$pn.png; plot $what" \
+    >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+  cp "$TMP/gp/last.gp.txt" "$TMP/$pn.gp" 2>/dev/null || : >"$TMP/$pn.gp"
+  check "${pn}_png" cond '[ "$RC" -eq 0 ] && png_ok "$TMP/$pn.png"'
+}
+gp() { grep -q -- "$2" "$TMP/$1.gp"; }
+
+T6=sessions/paper/grids/table06_caseC_wind0.csv
+check paper_grid_present [ -r "$T6" ]
+
+# pof: four panels with their titles
+plot_png pof "set step 0.3" pof
+check pof_panels cond 'gp pof "HIC15 -> P_HIC" && gp pof "Nij -> P_NI" && gp pof "VC -> P_VC"'
+
+# grid: the band palette over 0..100 %, P{F|Delta} and Q in the title
+plot_png grid "grid load $T6" grid
+check grid_labels cond 'gp grid "P{F|Delta} in %; Q = 0.8469 m^2" && gp grid "set cbrange \[0:100\]" &&
+  gp grid "set cblabel \"P{F|Delta} (%)\""'
+
+# a difference grid: diverging palette symmetric about 0, ΔP = P_b − P_a and ΔQ in title and bar
+D="set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag"
+plot_png diff "$D" grid
+check diff_palette cond 'gp diff "set palette defined (-1 .#2166ac., .*0 .#f7f7f7., .*1 .#b2182b.)" &&
+  gp diff "set cbrange \[-[0-9.]*:[0-9.]*\]" && ! gp diff "set cbrange \[0:100\]"'
+cbr=$(sed -n 's/^set cbrange \[\(.*\)\]$/\1/p' "$TMP/diff.gp")
+check diff_range_symmetric cond '[ "${cbr%%:*}" = "-${cbr#*:}" ]'
+check diff_title cond 'gp diff "ΔP = P_b − P_a in %; ΔQ = Q_b − Q_a = -[0-9.]* m^2" &&
+  gp diff "set cblabel \"ΔP = P_b − P_a (%)"'
+
+# history: the six derived signals, units in the labels, legends noenhanced
+plot_png history "impact 0 0" history
+check history_units cond 'gp history "head_acc (g)" && gp history "neck_fz (N)" &&
+  gp history "neck_my (N m)" && gp history "chest_defl (mm)"'
+check history_plain_legends cond '[ "$(grep -c "^plot .* title .*noenhanced" "$TMP/history.gp")" -eq 6 ]'
+
+# history all: every channel with its real unit (none "(SI)"), no quantity twice
+plot_png history_all "impact 0 0" "history all"
+check history_all_no_si cond '! gp history_all "(SI)" && gp history_all "head_acc_x (m/s^2)" &&
+  gp history_all "bag_bottom_p_p (Pa)"'
+check history_all_no_duplicate cond '! gp history_all "neck_load_fz" && ! gp history_all "neck_load_my" &&
+  [ "$(grep -c "set ylabel .chest_defl " "$TMP/history_all.gp")" -eq 1 ]'
+check history_all_plain_legends cond '! grep "^plot " "$TMP/history_all.gp" | grep -v -q "noenhanced"'
+
+# sweep: wind, face and a parameter entered in atm and in kPa: a panel each, one axis in atm
+S="set step 0.3; sweep wind 0,4; sweep face 0,90; sweep bag_p0 1.0,1.1 atm; sweep bag_p0 105 kPa"
+plot_png sweep_all "$S" sweep
+check sweep_all_panels cond 'gp sweep_all "set multiplot layout 1,3" &&
+  gp sweep_all "Q against horizontal wind" && gp sweep_all "Q against face direction" &&
+  gp sweep_all "Q against bag_p0"'
+plot_png sweep_param "$S" "sweep bag_p0"
+check sweep_param_axis cond 'gp sweep_param "set xlabel .bag_p0 (atm)." && gp sweep_param "swept in kPa"'
+# 105 kPa drawn at 1.036 atm on the atm axis (105000 / 101325)
+check sweep_param_converted awk '$1 ~ /^1\.036/ { n++ } END { exit !(n == 1) }' "$TMP/sweep_param.gp"
+plot_png sweep_wind "$S" "sweep wind"
+check sweep_wind_alone cond '! gp sweep_wind multiplot && gp sweep_wind "horizontal wind speed (m/s)"'
+
+# montecarlo and tornado: two-line titles
+M="set step 0.3; dist wind uniform 0 4; set surface_nodes 3; montecarlo 12"
+plot_png montecarlo "$M" montecarlo
+check montecarlo_title cond 'gp montecarlo "set title \"Q over 12 samples of case A (seed [0-9]*)\\\\nmean "'
+plot_png tornado "$M" tornado
+check tornado_title cond 'gp tornado "set title \"Variance shares of Q (first-order)\\\\ncase A, 12 samples"'
+
+# bag: the membrane airbag at first contact and at peak pressure
+plot_png bag "case A; set bag_model membrane; impact 0 0" bag
+check bag_panels cond 'gp bag "at first contact" && gp bag "at peak pressure"'
+
+ls "$TMP"/*.png | sed 's|.*/|  (rendered: |; s|$|)|'
+# KEEP_PNG=DIR keeps the PNGs for a person to look at
+[ -n "$KEEP_PNG" ] && mkdir -p "$KEEP_PNG" && cp "$TMP"/*.png "$KEEP_PNG"/
+finish
