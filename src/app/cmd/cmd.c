@@ -275,13 +275,14 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
     double one[4] = {0, 0, 0, 0}, *v = ext ? ext : one;
     if (!strcmp(p->name, "ua_dimension")) {
       /* SORA's inputs when not set: what sora takes (cmd_sora25.c) */
-      fprintf(c->out, "%-16s %.6g m  (derived: the larger of the drone's width and length)\n",
-              p->name, c->st.para.width > c->st.para.length ? c->st.para.width : c->st.para.length);
+      snprintf(val, sizeof val, "%.6g",
+               c->st.para.width > c->st.para.length ? c->st.para.width : c->st.para.length);
+      show_line(c, p->name, val, "m", "  (derived: the larger of the drone's width and length)");
       return 0;
     }
     if (!strcmp(p->name, "ua_max_speed")) {
-      fprintf(c->out, "%-16s auto m/s  (derived at sora: the unmitigated drone's impact speed)\n",
-              p->name);
+      show_line(c, p->name, "auto", "m/s",
+                "  (derived at sora: the unmitigated drone's impact speed)");
       return 0;
     }
     if (!strcmp(p->name, "speed") || !strcmp(p->name, "angle")) {
