@@ -87,6 +87,10 @@ typedef struct {
   double* mass;      /* nn: lumped node mass, kg */
   double* invm;      /* nn: 1/mass, 0 for mount nodes */
   int* fix;          /* nfix: the mount nodes */
+  int ntb;           /* blocks of 4 triangles (the last one padded) */
+  int* tri4;         /* 12 ntb: node indices by blocks, tri4[12 b + 4 k + l] = node k of
+                        triangle 4 b + l (padding: node 0) */
+  double* tk4;       /* 24 ntb: per block Dm^-1 (4 rows), area0, beta, each 4 lanes (padding 0) */
   double* xshape;    /* 3 nn: the declared shape, carrier body frame */
   double* x0;        /* 3 nn: the inflated state, carrier body frame */
   double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */
@@ -140,7 +144,7 @@ void ur_mem_free(urMembrane* mb);
 
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
-   scalars (urMEMS_N, after 18 nn) */
+   scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->
