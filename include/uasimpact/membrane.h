@@ -91,6 +91,9 @@ typedef struct {
   int* tri4;         /* 12 ntb: node indices by blocks, tri4[12 b + 4 k + l] = node k of
                         triangle 4 b + l (padding: node 0) */
   double* tk4;       /* 24 ntb: per block Dm^-1 (4 rows), area0, beta, each 4 lanes (padding 0) */
+  int* adj0;         /* nn + 1: node i's triangle corners are adj[adj0[i] .. adj0[i + 1]) */
+  int* adj;          /* 3 nt: the corners by node in triangle order, as offsets of their force
+                        in the force pass's scratch */
   double* xshape;    /* 3 nn: the declared shape, carrier body frame */
   double* x0;        /* 3 nn: the inflated state, carrier body frame */
   double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */

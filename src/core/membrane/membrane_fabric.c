@@ -203,7 +203,8 @@ void ur_mem_tri_state(const urMembrane* mb, const double* x, int t, double e[3],
 
 /* the scratch of a block of 4 triangles, 4 lanes of each: the nodal forces' fabric parts h0
    and h1 (node 2 gets -h0, node 3 -h1, node 1 h0 + h1) and the normal d1 x d2 (twice the area),
-   3 components each (urMembrane.ntb blocks: ur_mem_state_size's 36 ntb) */
+   3 components each (urMembrane.ntb blocks: ur_mem_state_size's 36 ntb); tri_forces then turns them into the
+   three nodes' forces */
 enum {
   urmH0 = 0,
   urmH1 = 3,
@@ -314,32 +315,50 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
 }
 
 
+/* each triangle's nodal forces at the gas pressure's pg6 = (p - patm) / 6, in place of its
+   scratch: node 1's force fp + h0 + h1 (fp = pg6 d1 x d2) where the normal was, node 2's fp - h0
+   where h0 was, node 3's fp - h1 where h1 was (the offsets membrane_mesh.c's adj names) */
+static urmCLONES void tri_forces(const urMembrane* mb, double pg6, double* sc) {
+  urm4 pg = bc4(pg6);
+  for (int b = 0; b < mb->ntb; b++) {
+    double* o = sc + 4 * urmSCR * b;
+    for (int c = 0; c < 3; c++) {
+      urm4 h0 = *(urm4u*)(o + 4 * (urmH0 + c)), h1 = *(urm4u*)(o + 4 * (urmH1 + c));
+      urm4 fp = pg * *(urm4u*)(o + 4 * (urmNRM + c));
+      *(urm4u*)(o + 4 * (urmH0 + c)) = fp - h0;
+      *(urm4u*)(o + 4 * (urmH1 + c)) = fp - h1;
+      *(urm4u*)(o + 4 * (urmNRM + c)) = fp + h0 + h1;
+    }
+  }
+}
+
+
 void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info) {
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   const double *x = st, *v = st + 3 * nn;
   double *sc = st + 18 * nn, *scr = sc + urMEMS_N;
-  memset(f, 0, 3 * (size_t)nn * sizeof(double));
 
   // the fabric of every triangle, the enclosed volume (divergence theorem, ur_mem_volume's sum)
   double V, wsum, emax;
   tri_pass(mb, x, v, scr, &V, &wsum, &emax);
   V /= 6;
 
-  // gas: the pressure of the remaining mass; then every triangle's forces in triangle order
+  // gas: the pressure of the remaining mass; each triangle's nodal forces, summed on every node
+  // in triangle order
   double p = ur_mem_pressure(mb, V, sc[urMEMS_MGAS]);
-  double pg6 = (p - s->patm) / 6;
-  for (int t = 0; t < mb->nt; t++) {
-    const int* n3 = mb->tri + 3 * t;
-    const double* o = scr + 4 * urmSCR * (t / 4) + (t % 4);
-    double *f1 = f + 3 * n3[0], *f2 = f + 3 * n3[1], *f3 = f + 3 * n3[2];
-    for (int k = 0; k < 3; k++) {
-      double h0 = o[4 * (urmH0 + k)], h1 = o[4 * (urmH1 + k)];
-      double fp = pg6 * o[4 * (urmNRM + k)];
-      f2[k] += fp - h0;
-      f3[k] += fp - h1;
-      f1[k] += fp + h0 + h1;
+  tri_forces(mb, (p - s->patm) / 6, scr);
+  for (int i = 0; i < nn; i++) {
+    double a0 = 0, a1 = 0, a2 = 0;
+    for (int j = mb->adj0[i]; j < mb->adj0[i + 1]; j++) {
+      const double* o = scr + mb->adj[j];
+      a0 += o[0];
+      a1 += o[4];
+      a2 += o[8];
     }
+    f[3 * i] = a0;
+    f[3 * i + 1] = a1;
+    f[3 * i + 2] = a2;
   }
   sc[urMEMS_P] = p;
   sc[urMEMS_V] = V;
