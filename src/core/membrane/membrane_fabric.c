@@ -203,17 +203,18 @@ void ur_mem_tri_state(const urMembrane* mb, const double* x, int t, double e[3],
 
 /* the scratch of a block of 4 triangles, 4 lanes of each: the nodal forces' fabric parts h0
    and h1 (node 2 gets -h0, node 3 -h1, node 1 h0 + h1) and the normal d1 x d2 (twice the area),
-   3 components each, which tri_forces turns into the three nodes' forces; on the way the
-   deformation gradient F (6) and the strain, then the stress (3) (urMembrane.ntb blocks:
-   ur_mem_state_size's 72 ntb) */
+   3 components each, which tri_forces turns into the three nodes' forces (urMembrane.ntb
+   blocks: ur_mem_state_size's 36 ntb) */
 enum {
   urmH0 = 0,
   urmH1 = 3,
   urmNRM = 6,
-  urmF = 9,
-  urmE = 15,
-  urmSCR = 18
+  urmSCR = 9
 };
+
+/* blocks per chunk of the triangle pass: its deformation gradients and strains (9 x 4 doubles a
+   block) stay in the first-level cache between the chunk's three loops */
+#define urmCHUNK 8
 
 /* the positions (or velocities) of 4 nodes, coordinate by coordinate: each node's 3 doubles read
    as 4 (the fourth belongs to the next node or, for the last, to the next array of the state),
@@ -233,120 +234,112 @@ AI void rows3(const double* x, const int* n, urm4 o[3]) {
 
 /* the fabric of every triangle, 4 at a time, in triangle order: the scratch (sc, urmSCR doubles
    of 4 lanes per block), the volume sum *vol and energy sum *wsum in triangle order (as one
-   triangle at a time would add them), the largest yarn strain in *emax. Three loops (geometry,
-   law, forces): short enough for the next blocks' work to overlap the law's square root and
-   division. */
+   triangle at a time would add them), the largest yarn strain in *emax. By chunks of blocks,
+   three loops each (geometry, law, forces): short enough for the next blocks' work to overlap
+   the law's square root and division. */
 static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const double* v, double* sc,
                                double* vol, double* wsum, double* emax) {
   const urMemSpec* s = &mb->spec;
-  int nb = mb->ntb;
-
-  // deformation gradient and Green strain (tri_strain), the normal, the volume term
-  double V = 0;
-  for (int b = 0; b < nb; b++) {
-    const int* n4 = mb->tri4 + 12 * b;
-    const double* k4 = mb->tk4 + 24 * b;
-    double* o = sc + 4 * urmSCR * b;
-    urm4 X[3][3]; /* node, coordinate */
-    for (int j = 0; j < 3; j++) {
-      rows3(x, n4 + 4 * j, X[j]);
-    }
-    urm4 Di[4];
-    for (int j = 0; j < 4; j++) {
-      Di[j] = *(const urm4u*)(k4 + 4 * j);
-    }
-    urm4 d1[3], d2[3], F[6];
-    for (int c = 0; c < 3; c++) {
-      d1[c] = X[1][c] - X[0][c];
-      d2[c] = X[2][c] - X[0][c];
-    }
-    for (int c = 0; c < 3; c++) {
-      F[c] = d1[c] * Di[0] + d2[c] * Di[2];
-      F[3 + c] = d1[c] * Di[1] + d2[c] * Di[3];
-    }
-    for (int c = 0; c < 6; c++) {
-      *(urm4u*)(o + 4 * (urmF + c)) = F[c];
-    }
-    *(urm4u*)(o + 4 * urmE) = bc4(0.5) * ((F[0] * F[0] + F[1] * F[1] + F[2] * F[2]) - bc4(1));
-    *(urm4u*)(o + 4 * urmE + 4) = bc4(0.5) * ((F[3] * F[3] + F[4] * F[4] + F[5] * F[5]) - bc4(1));
-    *(urm4u*)(o + 4 * urmE + 8) = F[0] * F[3] + F[1] * F[4] + F[2] * F[5];
-    *(urm4u*)(o + 4 * urmNRM) = d1[1] * d2[2] - d1[2] * d2[1];
-    *(urm4u*)(o + 4 * urmNRM + 4) = d1[2] * d2[0] - d1[0] * d2[2];
-    *(urm4u*)(o + 4 * urmNRM + 8) = d1[0] * d2[1] - d1[1] * d2[0];
-    urm4 c0 = X[1][1] * X[2][2] - X[1][2] * X[2][1];
-    urm4 c1 = X[1][2] * X[2][0] - X[1][0] * X[2][2];
-    urm4 c2 = X[1][0] * X[2][1] - X[1][1] * X[2][0];
-    urm4 vt = X[0][0] * c0 + X[0][1] * c1 + X[0][2] * c2;
-    int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4; /* the padding's lanes left out */
-    for (int l = 0; l < nl; l++) {
-      V += vt[l];
-    }
-  }
-
-  // the law: the stress in place of the strain, the energy, the largest yarn strain
   lawk lk = law_constants(s);
-  double W = 0;
+  double V = 0, W = 0;
   urm4 em = bc4(0);
-  for (int b = 0; b < nb; b++) {
-    double* o = sc + 4 * urmSCR * b;
-    urm4 e[3], S[3], w;
-    for (int c = 0; c < 3; c++) {
-      e[c] = *(urm4u*)(o + 4 * (urmE + c));
-    }
-    stress4(s, &lk, e, S, &w);
-    for (int c = 0; c < 3; c++) {
-      *(urm4u*)(o + 4 * (urmE + c)) = S[c];
-    }
-    urm4 wa = w * *(const urm4u*)(mb->tk4 + 24 * b + 16);
-    em = sel4(e[0] > em, e[0], em);
-    em = sel4(e[1] > em, e[1], em);
-    int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4;
-    for (int l = 0; l < nl; l++) {
-      W += wa[l];
-    }
-  }
+  for (int b0 = 0; b0 < mb->ntb; b0 += urmCHUNK) {
+    int nb = mb->ntb - b0 < urmCHUNK ? mb->ntb - b0 : urmCHUNK;
+    urm4 Fc[urmCHUNK][6], Ec[urmCHUNK][3]; /* deformation gradients; strains, then stresses */
 
-  // material damping where beta > 0, the nodal forces' fabric parts
-  for (int b = 0; b < nb; b++) {
-    const int* n4 = mb->tri4 + 12 * b;
-    const double* k4 = mb->tk4 + 24 * b;
-    double* o = sc + 4 * urmSCR * b;
-    urm4 Vn[3][3], Di[4], F[6], S[3];
-    for (int j = 0; j < 3; j++) {
-      rows3(v, n4 + 4 * j, Vn[j]);
+    // deformation gradient and Green strain (tri_strain), the normal, the volume term
+    for (int q = 0; q < nb; q++) {
+      int b = b0 + q;
+      const int* n4 = mb->tri4 + 12 * b;
+      const double* k4 = mb->tk4 + 24 * b;
+      double* o = sc + 4 * urmSCR * b;
+      urm4 X[3][3]; /* node, coordinate */
+      for (int j = 0; j < 3; j++) {
+        rows3(x, n4 + 4 * j, X[j]);
+      }
+      urm4 Di[4];
+      for (int j = 0; j < 4; j++) {
+        Di[j] = *(const urm4u*)(k4 + 4 * j);
+      }
+      urm4 d1[3], d2[3], *F = Fc[q];
+      for (int c = 0; c < 3; c++) {
+        d1[c] = X[1][c] - X[0][c];
+        d2[c] = X[2][c] - X[0][c];
+      }
+      for (int c = 0; c < 3; c++) {
+        F[c] = d1[c] * Di[0] + d2[c] * Di[2];
+        F[3 + c] = d1[c] * Di[1] + d2[c] * Di[3];
+      }
+      Ec[q][0] = bc4(0.5) * ((F[0] * F[0] + F[1] * F[1] + F[2] * F[2]) - bc4(1));
+      Ec[q][1] = bc4(0.5) * ((F[3] * F[3] + F[4] * F[4] + F[5] * F[5]) - bc4(1));
+      Ec[q][2] = F[0] * F[3] + F[1] * F[4] + F[2] * F[5];
+      *(urm4u*)(o + 4 * urmNRM) = d1[1] * d2[2] - d1[2] * d2[1];
+      *(urm4u*)(o + 4 * urmNRM + 4) = d1[2] * d2[0] - d1[0] * d2[2];
+      *(urm4u*)(o + 4 * urmNRM + 8) = d1[0] * d2[1] - d1[1] * d2[0];
+      urm4 c0 = X[1][1] * X[2][2] - X[1][2] * X[2][1];
+      urm4 c1 = X[1][2] * X[2][0] - X[1][0] * X[2][2];
+      urm4 c2 = X[1][0] * X[2][1] - X[1][1] * X[2][0];
+      urm4 vt = X[0][0] * c0 + X[0][1] * c1 + X[0][2] * c2;
+      int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4; /* the padding's lanes left out */
+      for (int l = 0; l < nl; l++) {
+        V += vt[l];
+      }
     }
-    for (int j = 0; j < 4; j++) {
-      Di[j] = *(const urm4u*)(k4 + 4 * j);
+
+    // the law: the stress in place of the strain, the energy, the largest yarn strain
+    for (int q = 0; q < nb; q++) {
+      int b = b0 + q;
+      urm4 S[3], w;
+      stress4(s, &lk, Ec[q], S, &w);
+      em = sel4(Ec[q][0] > em, Ec[q][0], em);
+      em = sel4(Ec[q][1] > em, Ec[q][1], em);
+      for (int c = 0; c < 3; c++) {
+        Ec[q][c] = S[c];
+      }
+      urm4 wa = w * *(const urm4u*)(mb->tk4 + 24 * b + 16);
+      int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4;
+      for (int l = 0; l < nl; l++) {
+        W += wa[l];
+      }
     }
-    for (int c = 0; c < 6; c++) {
-      F[c] = *(urm4u*)(o + 4 * (urmF + c));
-    }
-    for (int c = 0; c < 3; c++) {
-      S[c] = *(urm4u*)(o + 4 * (urmE + c));
-    }
-    urm4 A0 = *(const urm4u*)(k4 + 16), bt = *(const urm4u*)(k4 + 20);
-    urm4 dv1[3], dv2[3], L[6];
-    for (int c = 0; c < 3; c++) {
-      dv1[c] = Vn[1][c] - Vn[0][c];
-      dv2[c] = Vn[2][c] - Vn[0][c];
-    }
-    for (int c = 0; c < 3; c++) {
-      L[c] = dv1[c] * Di[0] + dv2[c] * Di[2];
-      L[3 + c] = dv1[c] * Di[1] + dv2[c] * Di[3];
-    }
-    urm4i damped = bt > bc4(0);
-    urm4 FL = F[0] * L[0] + F[1] * L[1] + F[2] * L[2];
-    urm4 FL33 = F[3] * L[3] + F[4] * L[4] + F[5] * L[5];
-    urm4 FL03 = F[0] * L[3] + F[1] * L[4] + F[2] * L[5];
-    urm4 FL30 = F[3] * L[0] + F[4] * L[1] + F[5] * L[2];
-    S[0] = sel4(damped, S[0] + bt * bc4(s->e1t) * FL, S[0]);
-    S[1] = sel4(damped, S[1] + bt * bc4(s->e2t) * FL33, S[1]);
-    S[2] = sel4(damped, S[2] + bt * bc4(s->gtt) * (FL03 + FL30), S[2]);
-    for (int c = 0; c < 3; c++) {
-      urm4 P0 = A0 * (F[c] * S[0] + F[3 + c] * S[2]);
-      urm4 P1 = A0 * (F[c] * S[2] + F[3 + c] * S[1]);
-      *(urm4u*)(o + 4 * (urmH0 + c)) = P0 * Di[0] + P1 * Di[1];
-      *(urm4u*)(o + 4 * (urmH1 + c)) = P0 * Di[2] + P1 * Di[3];
+
+    // material damping where beta > 0, the nodal forces' fabric parts
+    for (int q = 0; q < nb; q++) {
+      int b = b0 + q;
+      const int* n4 = mb->tri4 + 12 * b;
+      const double* k4 = mb->tk4 + 24 * b;
+      double* o = sc + 4 * urmSCR * b;
+      urm4 Vn[3][3], Di[4], *F = Fc[q], *S = Ec[q];
+      for (int j = 0; j < 3; j++) {
+        rows3(v, n4 + 4 * j, Vn[j]);
+      }
+      for (int j = 0; j < 4; j++) {
+        Di[j] = *(const urm4u*)(k4 + 4 * j);
+      }
+      urm4 A0 = *(const urm4u*)(k4 + 16), bt = *(const urm4u*)(k4 + 20);
+      urm4 dv1[3], dv2[3], L[6];
+      for (int c = 0; c < 3; c++) {
+        dv1[c] = Vn[1][c] - Vn[0][c];
+        dv2[c] = Vn[2][c] - Vn[0][c];
+      }
+      for (int c = 0; c < 3; c++) {
+        L[c] = dv1[c] * Di[0] + dv2[c] * Di[2];
+        L[3 + c] = dv1[c] * Di[1] + dv2[c] * Di[3];
+      }
+      urm4i damped = bt > bc4(0);
+      urm4 FL = F[0] * L[0] + F[1] * L[1] + F[2] * L[2];
+      urm4 FL33 = F[3] * L[3] + F[4] * L[4] + F[5] * L[5];
+      urm4 FL03 = F[0] * L[3] + F[1] * L[4] + F[2] * L[5];
+      urm4 FL30 = F[3] * L[0] + F[4] * L[1] + F[5] * L[2];
+      S[0] = sel4(damped, S[0] + bt * bc4(s->e1t) * FL, S[0]);
+      S[1] = sel4(damped, S[1] + bt * bc4(s->e2t) * FL33, S[1]);
+      S[2] = sel4(damped, S[2] + bt * bc4(s->gtt) * (FL03 + FL30), S[2]);
+      for (int c = 0; c < 3; c++) {
+        urm4 P0 = A0 * (F[c] * S[0] + F[3 + c] * S[2]);
+        urm4 P1 = A0 * (F[c] * S[2] + F[3 + c] * S[1]);
+        *(urm4u*)(o + 4 * (urmH0 + c)) = P0 * Di[0] + P1 * Di[1];
+        *(urm4u*)(o + 4 * (urmH1 + c)) = P0 * Di[2] + P1 * Di[3];
+      }
     }
   }
   double m = 0;

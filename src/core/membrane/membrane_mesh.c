@@ -187,7 +187,7 @@ double ur_mem_stable_dt(const urMembrane* mb) {
 /* the triangles' nodes and constants by blocks of 4 for the force pass (ur_mem_forces): lanes
    of one quantity side by side, the last block padded with node 0 and zeros; and each node's
    triangle corners in triangle order (the scratch offset of the corner's force, x component:
-   block b's corners 1, 2, 3 at 72 b + 24, 72 b, 72 b + 12, plus the lane: tri_forces in
+   block b's corners 1, 2, 3 at 36 b + 24, 36 b, 36 b + 12, plus the lane: tri_forces in
    membrane_fabric.c); 0 or -1 */
 static int blocks(urMembrane* mb) {
   int nb = (mb->nt + 3) / 4, nn = mb->nn;
@@ -209,7 +209,7 @@ static int blocks(urMembrane* mb) {
   for (int t = 0; t < mb->nt; t++) {
     for (int k = 0; k < 3; k++) {
       int i = mb->tri[3 * t + k], j = mb->adj0[i]++;
-      mb->adj[j] = 72 * (t / 4) + slot[k] + t % 4;
+      mb->adj[j] = 36 * (t / 4) + slot[k] + t % 4;
     }
   }
   for (int i = nn; i > 0; i--) {
@@ -395,7 +395,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 18 * (size_t)mb->nn + urMEMS_N + 72 * (size_t)mb->ntb;
+  return 18 * (size_t)mb->nn + urMEMS_N + 36 * (size_t)mb->ntb;
 }
 
 
