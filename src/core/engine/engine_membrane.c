@@ -191,7 +191,11 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       double r = mb->rbound + m->geom[g].rbound + 0.05;
       near = urm_dot(dc, dc) < r * r;
     }
-    ur_mem_state_init(mb, st, R, c, vc, w);
+    // placed on the carrier when the run starts and when it goes live (its nodes are not read
+    // while it rides rigidly: no need to move them with the carrier every step)
+    if (!bd->placed || near) {
+      ur_mem_state_init(mb, st, R, c, vc, w);
+    }
     bd->placed = 1;
     bd->live = near;
     if (!near) {
