@@ -301,7 +301,8 @@ typedef struct {
   double u[urMAXBAGTGT][3];  /* warm-start directions */
   int active;                /* 1 if some target indents the bag */
   double strain;             /* membrane: largest yarn strain (Green, warp or weft) (Green) */
-  int placed;                /* membrane: state placed on the carrier (0 after a reset) */
+  int placed;                /* membrane: state initialised (0 after a reset); its nodes are
+                                placed on the carrier again when it goes live */
   int live;                  /* membrane: integrated (a target came near), else carried
                                       rigidly in its inflated state */
 } urBagData;

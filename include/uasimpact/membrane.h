@@ -87,6 +87,13 @@ typedef struct {
   double* mass;      /* nn: lumped node mass, kg */
   double* invm;      /* nn: 1/mass, 0 for mount nodes */
   int* fix;          /* nfix: the mount nodes */
+  int ntb;           /* blocks of 4 triangles (the last one padded) */
+  int* tri4;         /* 12 ntb: node indices by blocks, tri4[12 b + 4 k + l] = node k of
+                        triangle 4 b + l (padding: node 0) */
+  double* tk4;       /* 24 ntb: per block Dm^-1 (4 rows), area0, beta, each 4 lanes (padding 0) */
+  int* adj0;         /* nn + 1: node i's triangle corners are adj[adj0[i] .. adj0[i + 1]) */
+  int* adj;          /* 3 nt: the corners by node in triangle order, as offsets of their force
+                        in the force pass's scratch */
   double* xshape;    /* 3 nn: the declared shape, carrier body frame */
   double* x0;        /* 3 nn: the inflated state, carrier body frame */
   double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */
@@ -140,7 +147,7 @@ void ur_mem_free(urMembrane* mb);
 
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
-   scalars (urMEMS_N, after 18 nn) */
+   scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->
@@ -159,7 +166,8 @@ double ur_mem_pressure(const urMembrane* mb, double V, double mgas);
 double ur_mem_gas_energy(const urMembrane* mb, double p, double V);
 
 /* fabric and gas forces on every node at the state (x, v) of st into f (3 nn, overwritten);
-   info may be NULL; scalars of st updated (pressure, volume, strain, energy) */
+   info may be NULL; scalars of st updated (pressure, volume, strain, energy). st is a whole run
+   state of ur_mem_state_size() doubles: the evaluation's scratch is its end */
 void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info);
 
 /* Green strain (E11, E22, 2 E12, warp/weft axes) and stress resultant (N/m, after the tension-

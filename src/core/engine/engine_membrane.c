@@ -102,17 +102,21 @@ static void bodymotion(const urData* d, int b, double R[9], double c[3], double 
 
 
 /* penalty contact of the free nodes with ellipsoid g; forces added to f and fc, reactions on
-   g's body; the normal force sum and deepest penetration returned */
+   g's body; the normal force sum and deepest penetration returned. Only when g's bounding
+   sphere reaches the free nodes' box (lo, hi): no node can touch g otherwise. */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           const double bc[3], double br, double* depth) {
+                           const double lo[3], const double hi[3], double* depth) {
   const urMembrane* mb = b->mem;
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
   const double* gc = d->gxpos + 3 * g;
-  double rg = m->geom[g].rbound, dc[3];
-  urm_sub(dc, gc, bc);
+  double rg = m->geom[g].rbound, q = 0;
   *depth = -1;
-  if (urm_dot(dc, dc) > (br + rg) * (br + rg)) {
+  for (int k = 0; k < 3; k++) {
+    double u = gc[k] < lo[k] ? lo[k] - gc[k] : gc[k] > hi[k] ? gc[k] - hi[k] : 0;
+    q += u * u;
+  }
+  if (q >= rg * rg) {
     return 0;
   }
   urEllipsoid e;
@@ -176,7 +180,6 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   for (int k = 0; k < 3; k++) {
     bc[k] = c[k] + R[3 * k] * cb0[0] + R[3 * k + 1] * cb0[1] + R[3 * k + 2] * cb0[2];
   }
-  double br = 1.5 * mb->rbound + 0.01;
 
   // carried rigidly until a target comes near its bound
   if (!bd->placed || !bd->live) {
@@ -188,7 +191,11 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       double r = mb->rbound + m->geom[g].rbound + 0.05;
       near = urm_dot(dc, dc) < r * r;
     }
-    ur_mem_state_init(mb, st, R, c, vc, w);
+    // placed on the carrier when the run starts and when it goes live (its nodes are not read
+    // while it rides rigidly: no need to move them with the carrier every step)
+    if (!bd->placed || near) {
+      ur_mem_state_init(mb, st, R, c, vc, w);
+    }
     bd->placed = 1;
     bd->live = near;
     if (!near) {
@@ -215,12 +222,22 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
     }
   }
 
-  // fabric and gas, then contacts
+  // fabric and gas, then contacts (near the free nodes' box)
   ur_mem_forces(mb, st, f, NULL);
   memset(fc, 0, 3 * (size_t)nn * sizeof(double));
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (int i = 0; i < nn; i++) {
+    if (mb->invm[i] != 0) {
+      for (int k = 0; k < 3; k++) {
+        double u = x[3 * i + k];
+        lo[k] = u < lo[k] ? u : lo[k];
+        hi[k] = u > hi[k] ? u : hi[k];
+      }
+    }
+  }
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
-    double fs = contact_geom(m, d, b, st, b->target[t], bc, br, &dep);
+    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, &dep);
     bd->depth[t] = dep;
     bd->ftgt[t] = fs;
     bd->force += fs;
@@ -230,7 +247,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->nsupport; t++) {
     double dep;
-    contact_geom(m, d, b, st, b->support[t], bc, br, &dep);
+    contact_geom(m, d, b, st, b->support[t], lo, hi, &dep);
   }
 
   // the mount patch's forces on the carrier

@@ -22,6 +22,11 @@ double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, con
   for (int k = 0; k < 3; k++) {
     xl[k] = (e->R[k] * d[0] + e->R[3 + k] * d[1] + e->R[6 + k] * d[2]) / e->r[k];
   }
+  // outside the box around the shape: its gauge is at least the largest |xl| (what follows would
+  // find s >= 1 too; this spares a superellipsoid's powers)
+  if (fabs(xl[0]) >= 1 || fabs(xl[1]) >= 1 || fabs(xl[2]) >= 1) {
+    return 0;
+  }
   double p = e->p > 2 ? e->p : 2, sg;
   if (p == 2) {
     sg = sqrt(urm_dot(xl, xl));

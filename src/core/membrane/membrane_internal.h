@@ -31,6 +31,11 @@ static inline void urm_sub(double o[3], const double a[3], const double b[3]) {
    reduction; the elastic energy density (J/m^2) of the reduced state in *w (may be NULL) */
 void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w);
 
+/* urm_fabric_stress's law over 4 strains at once (the force pass's vector law), lanes side by
+   side: e[4 j + l] is component j of lane l, S likewise, w the 4 energy densities; each lane's
+   bits are urm_fabric_stress's */
+void urm_fabric_stress4(const urMemSpec* s, const double e[12], double S[12], double w[4]);
+
 /* the Green strain (E11, E22, 2 E12) and the deformation gradient F (3x2, column-major: F[0..2]
    the first column) of triangle t at positions x */
 void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], double e[3]);

@@ -166,6 +166,10 @@ void ur_mem_free(urMembrane* mb) {
   free(mb->mass);
   free(mb->fix);
   free(mb->xshape);
+  free(mb->tri4);
+  free(mb->tk4);
+  free(mb->adj0);
+  free(mb->adj);
   free(mb);
 }
 
@@ -177,6 +181,54 @@ double ur_mem_stable_dt(const urMembrane* mb) {
   double nu21 = s->nu12 * s->e2t / s->e1t;
   double c = sqrt(fmax(s->e1t, s->e2t) / ((1 - s->nu12 * nu21) * s->rhot));
   return mb->lmin / c;
+}
+
+
+/* the triangles' nodes and constants by blocks of 4 for the force pass (ur_mem_forces): lanes
+   of one quantity side by side, the last block padded with node 0 and zeros; and each node's
+   triangle corners in triangle order (the scratch offset of the corner's force, x component:
+   block b's corners 1, 2, 3 at 36 b + 24, 36 b, 36 b + 12, plus the lane: tri_forces in
+   membrane_fabric.c); 0 or -1 */
+static int blocks(urMembrane* mb) {
+  int nb = (mb->nt + 3) / 4, nn = mb->nn;
+  mb->ntb = nb;
+  mb->tri4 = calloc(12 * (size_t)nb, sizeof(int));
+  mb->tk4 = calloc(24 * (size_t)nb, sizeof(double));
+  mb->adj0 = calloc((size_t)nn + 1, sizeof(int));
+  mb->adj = malloc(3 * (size_t)mb->nt * sizeof(int));
+  if (!mb->tri4 || !mb->tk4 || !mb->adj0 || !mb->adj) {
+    return -1;
+  }
+  static const int slot[3] = {24, 0, 12};
+  for (int t = 0; t < 3 * mb->nt; t++) {
+    mb->adj0[mb->tri[t] + 1]++;
+  }
+  for (int i = 0; i < nn; i++) {
+    mb->adj0[i + 1] += mb->adj0[i];
+  }
+  for (int t = 0; t < mb->nt; t++) {
+    for (int k = 0; k < 3; k++) {
+      int i = mb->tri[3 * t + k], j = mb->adj0[i]++;
+      mb->adj[j] = 36 * (t / 4) + slot[k] + t % 4;
+    }
+  }
+  for (int i = nn; i > 0; i--) {
+    mb->adj0[i] = mb->adj0[i - 1];
+  }
+  mb->adj0[0] = 0;
+  for (int t = 0; t < mb->nt; t++) {
+    int b = t / 4, l = t % 4;
+    for (int k = 0; k < 3; k++) {
+      mb->tri4[12 * b + 4 * k + l] = mb->tri[3 * t + k];
+    }
+    double* k4 = mb->tk4 + 24 * b;
+    for (int j = 0; j < 4; j++) {
+      k4[4 * j + l] = mb->dminv[4 * t + j];
+    }
+    k4[16 + l] = mb->area0[t];
+    k4[20 + l] = mb->beta[t];
+  }
+  return 0;
 }
 
 
@@ -325,6 +377,11 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     mb->invm[mb->fix[k]] = 0;
   }
   free(xref);
+  if (blocks(mb)) {
+    ur_mem_free(mb);
+    snprintf(err, n, "out of memory");
+    return NULL;
+  }
   mb->dt_stable = s->dt_factor * ur_mem_stable_dt(mb);
 
   // not inflated yet: the declared shape, the gas at p0 in its volume
@@ -338,7 +395,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 18 * (size_t)mb->nn + urMEMS_N;
+  return 18 * (size_t)mb->nn + urMEMS_N + 36 * (size_t)mb->ntb;
 }
 
 

@@ -10,6 +10,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdlib.h>
+#include <string.h>
 #include <cmocka.h>
 
 #include "../../../src/core/membrane/membrane_internal.h"
@@ -162,11 +163,162 @@ static void test_vent_flow(void** state) {
 }
 
 
+/* a deterministic uniform number in [lo, hi) (64-bit LCG) */
+static double uni(unsigned long long* r, double lo, double hi) {
+  *r = *r * 6364136223846793005ULL + 1442695040888963407ULL;
+  return lo + (hi - lo) * (double)(*r >> 11) / 9007199254740992.0;
+}
+
+
+static void test_stress4_bitwise(void** state) {
+  // the force pass's vector law gives every lane the scalar law's bits, in each of its regimes:
+  // taut, wrinkled, slack, shear before and after the lock (of both signs), no strain
+  urMemSpec s;
+  ur_mem_spec_default(&s);
+  double nu21 = s.nu12 * s.e2t / s.e1t, q = 1 / (1 - s.nu12 * nu21), gl = sin(s.lock);
+  unsigned long long r = 12345;
+  int seen[3] = {0, 0, 0}, locked = 0, lin = 0;
+  for (int it = 0; it < 4000; it++) {
+    double e[12], S4[12], w4[4];
+    for (int l = 0; l < 4; l++) {
+      e[l] = uni(&r, -0.02, 0.03);
+      e[4 + l] = uni(&r, -0.02, 0.03);
+      e[8 + l] = uni(&r, -1, 1) * (it % 2 ? 1 : 0.1);
+    }
+    if (it == 0) {
+      e[0] = e[4] = e[8] = 0;
+    }
+    urm_fabric_stress4(&s, e, S4, w4);
+    for (int l = 0; l < 4; l++) {
+      double el[3] = {e[l], e[4 + l], e[8 + l]}, S[3], w;
+      urm_fabric_stress(&s, el, S, &w);
+      for (int j = 0; j < 3; j++) {
+        assert_memory_equal(&S[j], &S4[4 * j + l], sizeof(double));
+      }
+      assert_memory_equal(&w, &w4[l], sizeof(double));
+      // the regime of the taut law's principal stresses
+      double s1 = q * s.e1t * (el[0] + nu21 * el[1]), s2 = q * s.e2t * (el[1] + s.nu12 * el[0]);
+      double ag = fabs(el[2]);
+      double s3 = ag <= gl ? s.g0t * ag : s.g0t * gl + s.gtt * (ag - gl);
+      double m = 0.5 * (s1 + s2), h = 0.5 * (s1 - s2), rr = sqrt(h * h + s3 * s3);
+      seen[m + rr <= 0 ? 2 : m - rr < 0 ? 1 : 0]++;
+      if (fabs(el[2]) > gl) {
+        locked++;
+      } else {
+        lin++;
+      }
+    }
+  }
+  assert_true(seen[0] > 100 && seen[1] > 100 && seen[2] > 100 && locked > 100 && lin > 100);
+}
+
+
+/* the forces as the triangle loop computed them one triangle at a time (the reference the
+   force pass must match bit for bit): volume, pressure, then each triangle's strain, law,
+   damping and nodal forces added in triangle order */
+static void forces_ref(const urMembrane* mb, const double* st, double* f, urMemInfo* info) {
+  const urMemSpec* s = &mb->spec;
+  int nn = mb->nn;
+  const double *x = st, *v = st + 3 * nn, *sc = st + 18 * nn;
+  memset(f, 0, 3 * (size_t)nn * sizeof(double));
+  double V = ur_mem_volume(mb, x);
+  double p = ur_mem_pressure(mb, V, sc[urMEMS_MGAS]), pg6 = (p - s->patm) / 6;
+  double emax = 0, wsum = 0;
+  for (int t = 0; t < mb->nt; t++) {
+    const int* n3 = mb->tri + 3 * t;
+    const double* Di = mb->dminv + 4 * t;
+    double F[6], e[3], S[3], w;
+    urm_tri_strain(mb, x, t, F, e);
+    urm_fabric_stress(s, e, S, &w);
+    wsum += w * mb->area0[t];
+    double e1 = fmax(e[0], e[1]);
+    if (e1 > emax) {
+      emax = e1;
+    }
+    if (mb->beta[t] > 0) {
+      double dv1[3], dv2[3], L[6];
+      urm_sub(dv1, v + 3 * n3[1], v + 3 * n3[0]);
+      urm_sub(dv2, v + 3 * n3[2], v + 3 * n3[0]);
+      for (int k = 0; k < 3; k++) {
+        L[k] = dv1[k] * Di[0] + dv2[k] * Di[2];
+        L[3 + k] = dv1[k] * Di[1] + dv2[k] * Di[3];
+      }
+      double b = mb->beta[t];
+      S[0] += b * s->e1t * urm_dot(F, L);
+      S[1] += b * s->e2t * urm_dot(F + 3, L + 3);
+      S[2] += b * s->gtt * (urm_dot(F, L + 3) + urm_dot(F + 3, L));
+    }
+    double A0 = mb->area0[t], P0[3], P1[3], d1[3], d2[3], nrm[3];
+    for (int k = 0; k < 3; k++) {
+      P0[k] = A0 * (F[k] * S[0] + F[3 + k] * S[2]);
+      P1[k] = A0 * (F[k] * S[2] + F[3 + k] * S[1]);
+    }
+    urm_sub(d1, x + 3 * n3[1], x + 3 * n3[0]);
+    urm_sub(d2, x + 3 * n3[2], x + 3 * n3[0]);
+    urm_cross(nrm, d1, d2);
+    for (int k = 0; k < 3; k++) {
+      double h0 = P0[k] * Di[0] + P1[k] * Di[1], h1 = P0[k] * Di[2] + P1[k] * Di[3];
+      double fp = pg6 * nrm[k];
+      f[3 * n3[1] + k] += fp - h0;
+      f[3 * n3[2] + k] += fp - h1;
+      f[3 * n3[0] + k] += fp + h0 + h1;
+    }
+  }
+  *info = (urMemInfo){p, V, emax, wsum};
+}
+
+
+static void test_forces_bitwise(void** state) {
+  // the force pass (4 triangles at a time, sums and nodal forces in triangle order) against the
+  // one-triangle-at-a-time reference, bit for bit: a bag stretched, squeezed and sheared at
+  // random (every regime of the law), moving at random, with damping and without
+  for (int damp = 0; damp < 2; damp++) {
+    urMemSpec s;
+    char err[200];
+    ur_mem_spec_default(&s);
+    s.mesh = 3;
+    s.damp = damp ? 0.05 : 0;
+    urMembrane* mb = ur_mem_build(&s, err, sizeof err);
+    assert_non_null(mb);
+    int nn = mb->nn;
+    double* st = calloc(ur_mem_state_size(mb), sizeof(double));
+    double *f = malloc(3 * (size_t)nn * sizeof(double)),
+           *g = malloc(3 * (size_t)nn * sizeof(double));
+    assert_true(st && f && g);
+    unsigned long long r = 777 + damp;
+    for (int it = 0; it < 20; it++) {
+      double sx = uni(&r, 0.9, 1.1), sz = uni(&r, 0.5, 1.5);
+      for (int i = 0; i < nn; i++) {
+        const double* p = mb->x0 + 3 * i;
+        st[3 * i] = 2 + sx * p[0] + uni(&r, -3e-3, 3e-3);
+        st[3 * i + 1] = -1 + p[1] / sx + uni(&r, -3e-3, 3e-3) + 0.1 * p[0];
+        st[3 * i + 2] = 1.5 + sz * p[2] + uni(&r, -3e-3, 3e-3);
+        for (int k = 0; k < 3; k++) {
+          st[3 * nn + 3 * i + k] = uni(&r, -2, 2);
+        }
+      }
+      st[18 * nn + urMEMS_MGAS] = mb->mref * uni(&r, 0.9, 1.1);
+      urMemInfo a, b;
+      ur_mem_forces(mb, st, f, &a);
+      forces_ref(mb, st, g, &b);
+      assert_memory_equal(f, g, 3 * (size_t)nn * sizeof(double));
+      assert_memory_equal(&a, &b, sizeof a);
+      assert_true(a.strain > 0 && a.efabric > 0 && a.volume > 0);
+    }
+    free(f);
+    free(g);
+    free(st);
+    ur_mem_free(mb);
+  }
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_mesh_closed),   cmocka_unit_test(test_laplace_sphere),
-      cmocka_unit_test(test_tension_field), cmocka_unit_test(test_shear_lock),
-      cmocka_unit_test(test_gas_law),       cmocka_unit_test(test_vent_flow),
+      cmocka_unit_test(test_mesh_closed),     cmocka_unit_test(test_laplace_sphere),
+      cmocka_unit_test(test_tension_field),   cmocka_unit_test(test_shear_lock),
+      cmocka_unit_test(test_gas_law),         cmocka_unit_test(test_vent_flow),
+      cmocka_unit_test(test_stress4_bitwise), cmocka_unit_test(test_forces_bitwise),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
