@@ -597,7 +597,8 @@ int ur_model_compile(urModel* m) {
     if (b->jtype != urJNT_FREE && (r[0].active || r[1].active || r[2].active)) {
       m->rstb[m->nrstb++] = i;
     }
-    if (b->jtype != urJNT_FREE && (r[0].load.n > 0 || r[1].load.n > 0 || r[2].load.n > 0)) {
+    if (b->jtype != urJNT_FREE && (r[0].load.n > 0 || r[1].load.n > 0 || r[2].load.n > 0 ||
+                                   r[0].mp > 0 || r[1].mp > 0 || r[2].mp > 0)) {
       m->hyst[m->nhyst++] = i;
     }
     if (b->react) {

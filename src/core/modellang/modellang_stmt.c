@@ -442,6 +442,9 @@ int url_st_restraint(Parser* p, const Bound* b) {
   r.kstop = url_num(b, "kstop", 0);
   r.cstop = url_num(b, "cstop", 0);
   r.x0 = url_num(b, "x0", 0);
+  if (url_hinge(p, b, &r) < 0) {
+    return -1;
+  }
 
   /* curves */
   const Val* vl = url_get(b, "load");
@@ -507,14 +510,14 @@ int url_st_ellipsoid(Parser* p, const Bound* b) {
   if (g < 0 || (vd->set && ur_model_set_degree(m, g, vd->v[0]))) {
     return url_fail(p, b->line, "ellipsoid '%s': %s", b->name, m->err);
   }
-  return 0;
+  return url_geom_material(p, b, g);
 }
 
 
 /* ellipsoid g, named name, must have degree 2 in its role (a foam pair's a, an airbag target) */
 /* a pair under a Hertz law without radii: both ellipsoids of degree 2 (their curvature) */
-int url_curv2(Parser* p, int law, int g, const char* name, int line, const char* what) {
-  if (g < 0 || p->law[law].type != urLAW_HERTZ || p->law[law].radius != urHERTZ_CURVATURE ||
+int url_curv2(Parser* p, const urLaw* law, int g, const char* name, int line, const char* what) {
+  if (g < 0 || law->type != urLAW_HERTZ || law->radius != urHERTZ_CURVATURE ||
       p->m->geom[g].degree == 2) {
     return 0;
   }

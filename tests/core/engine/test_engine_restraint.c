@@ -137,6 +137,75 @@ static void test_hysteresis(void** state) {
 }
 
 
+// an elastic-plastic hinge (k 1000 N m/rad, mp 50 N m, kh 10 N m/rad): the bilinear law
+// M = mp + kh (x - mp/k) while loading, elastic unloading with slope k from the permanent set,
+// reverse yield at beta xp - mp (kinematic hardening, beta = k kh / (k - kh)), fracture at
+// mfrac, after which the hinge carries no moment
+static urModel* plastic_hinge(double mfrac) {
+  urRestraint r = {0};
+  r.k = 1000;
+  r.mp = 50;
+  r.kh = 10;
+  r.c = 0.5;
+  r.mfrac = mfrac;
+  return hinge_with(&r);
+}
+
+
+static void test_plastic_hinge(void** state) {
+  urModel* m = plastic_hinge(0);
+  urData* d = ur_data_new(m);
+  assert_true(fabs(moment(m, d, 0.03, 0) - 30) < 1e-12);
+  assert_true(fabs(moment(m, d, 0.1, 0) - 50.5) < 1e-12); /* not yet committed: same value */
+
+  // load to 0.1 (accepted), unload: slope k from (0.1, 50.5); permanent set 0.1 - 50.5/k
+  d->qpos[0] = 0.1;
+  d->qvel[0] = 0;
+  ur_step(m, d);
+  double xp = 0.1 - 50.5 / 1000;
+  print_message("plastic hinge: M(0.06) %.6f (exact %.6f), set %.6f\n", moment(m, d, 0.06, 0),
+                1000 * (0.06 - xp), xp);
+  assert_true(fabs(moment(m, d, 0.06, 0) - 1000 * (0.06 - xp)) < 1e-9);
+  assert_true(fabs(moment(m, d, xp, 0)) < 1e-9);
+  assert_true(fabs(moment(m, d, 0.12, 0) - (50 + 10 * (0.12 - 0.05))) < 1e-9);
+
+  // reverse yield: at beta xp - mp, then the hardening slope
+  double beta = 1000.0 * 10 / 990, mr = beta * xp - 50, xr = xp + mr / 1000;
+  assert_true(fabs(moment(m, d, xr + 1e-6, 0) - 1000 * (xr + 1e-6 - xp)) < 1e-9);
+  double x2 = xr - 0.05, m2 = mr - 10 * 0.05;
+  print_message("plastic hinge: reverse yield at %.6f N m, M(%.4f) %.6f (exact %.6f)\n", mr, x2,
+                moment(m, d, x2, 0), m2);
+  assert_true(fabs(moment(m, d, x2, 0) - m2) < 1e-9);
+
+  // the elastic energy is that of x - xp
+  d->qpos[0] = 0.06;
+  assert_true(fabs(ur_energy_potential(m, d) - 0.5 * 1000 * (0.06 - xp) * (0.06 - xp)) < 1e-9);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+static void test_fracture(void** state) {
+  urModel* m = plastic_hinge(52); /* reached at 0.05 + 2 / 10 = 0.25 */
+  urData* d = ur_data_new(m);
+  d->qpos[0] = 0.2;
+  ur_step(m, d);
+  double h0, hb;
+  assert_int_equal(ur_hinge_state(m, d, 0, 0, &h0, &hb), 0);
+  assert_true(hb == 0);
+  assert_true(fabs(moment(m, d, 0.2, 0) - 51.5) < 1e-9);
+  d->qpos[0] = 0.26;
+  ur_step(m, d);
+  assert_int_equal(ur_hinge_state(m, d, 0, 0, &h0, &hb), 0);
+  print_message("fracture: broken at t = %g s, moment after %g\n", hb, moment(m, d, 0.3, 2));
+  assert_true(hb > 0);
+  assert_true(moment(m, d, 0.3, 2) == 0 && moment(m, d, -0.3, -2) == 0);
+  assert_int_equal(ur_hinge_state(m, d, 0, 1, &h0, &hb), -1); /* no such dof */
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
 // spherical joint with a linear restraint: KE + k |theta|^2 / 2 conserved at large angles
 static void test_spherical_energy(void** state) {
   urModel* m = ur_model_new();
@@ -206,7 +275,8 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_curve_stops),      cmocka_unit_test(test_hysteresis),
       cmocka_unit_test(test_saturation),       cmocka_unit_test(test_spherical_energy),
-      cmocka_unit_test(test_implicit_damping),
+      cmocka_unit_test(test_implicit_damping), cmocka_unit_test(test_plastic_hinge),
+      cmocka_unit_test(test_fracture),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -26,7 +26,7 @@ static const struct {
   const char* msg; /* the whole message, or its start when it ends in '*' */
 } bad[] = {
     {PRE "bdy c parent=world\n",
-     "x.urm:4: unknown keyword 'bdy'; expected one of param, option, curve, body, restraint, "
+     "x.urm:4: unknown keyword 'bdy'; expected one of param, option, curve, material, section, layer, body, restraint, "
      "ellipsoid, law, pair, pairs, airbag, sensor, part, role, preset"},
     {PRE BODY_C "mass=\n", "x.urm:4: missing value for key 'mass'; expected mass=VALUE"},
     {PRE BODY_C "mass=1 colour=red\n",
