@@ -48,8 +48,8 @@ static const KeySpec spec_restraint[] = {{"dof", K_INT, 1, 0, 1, NULL},
 static const KeySpec spec_ellipsoid[] = {
     NAMER("body"), VEC3R("pos"),     VEC3R("size"),   QUAT,  ROT,
     NUM("degree"), NAME("material"), NAME("section"), ENABLE};
-static const KeySpec spec_material[] = {NUMR("E"),     NUMR("nu"),      NUMR("density"),
-                                        NUMR("yield"), NUM("ultimate"), NUM("fracture_strain"),
+static const KeySpec spec_material[] = {NUMR("E"),    NUMR("nu"),      NUMR("density"),
+                                        NUM("yield"), NUM("ultimate"), NUM("fracture_strain"),
                                         ENABLE};
 static const KeySpec spec_section[] = {{"shape", K_ENUM, 1, 0, 1, "tube|plate|solid|shell"},
                                        NUM("D"),

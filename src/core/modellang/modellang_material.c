@@ -32,10 +32,10 @@ void url_note(Parser* p, const char* fmt, ...) {
 }
 
 
-/* material NAME E= nu= density= yield= [ultimate=] [fracture_strain=] */
+/* material NAME E= nu= density= [yield=] [ultimate=] [fracture_strain=] */
 int url_st_material(Parser* p, const Bound* b) {
   double nu = url_num(b, "nu", 0), sy = url_num(b, "yield", 0);
-  if (url_nonneg(p, b, "E", 1) || url_nonneg(p, b, "density", 1) || url_nonneg(p, b, "yield", 1) ||
+  if (url_nonneg(p, b, "E", 1) || url_nonneg(p, b, "density", 1) || url_nonneg(p, b, "yield", 0) ||
       url_nonneg(p, b, "ultimate", 0) || url_nonneg(p, b, "fracture_strain", 0)) {
     return -1;
   }
@@ -238,6 +238,12 @@ int url_hinge(Parser* p, const Bound* b, urRestraint* r) {
   if (sec < 0 || url_nonneg(p, b, "length", 1)) {
     return -1;
   }
+  if (!(p->mat[mat].sy > 0)) {
+    return url_fail(p, vm->line,
+                    "restraint '%s': material '%s' gives no yield stress; a hinge from beam "
+                    "theory needs yield= (its plastic moment)",
+                    b->name, vm->raw);
+  }
   urHinge h;
   if (ur_hinge_from_beam(p->mat + mat, p->sec + sec, vl->v[0], &h)) {
     return url_fail(p, vs->line,
@@ -277,8 +283,8 @@ static double section_radius(const Parser* p, const urlGeomMat* gm) {
 
 
 /* the law of a pair of ellipsoids ga, gb (gb -1: the ground): law (>= 0) as declared, or, with
-   law < 0, derived from a layer on one side and a material on the other. A declared law where
-   one could be derived is an override, and noted. */
+   law < 0, derived from a layer on one side and a material on the other. A declared law on a
+   layer (a drone file's own scalp law) is an override, and noted once per statement. */
 int url_pair_law(Parser* p, const char* what, int ga, int gb, int law, int line, urLaw* out) {
   const urlGeomMat *a = geommat_of(p, ga), *b = geommat_of(p, gb);
   const urlGeomMat* lay = a && a->layer >= 0 ? a : b && b->layer >= 0 ? b : NULL;
@@ -286,11 +292,13 @@ int url_pair_law(Parser* p, const char* what, int ga, int gb, int law, int line,
   int derivable = lay && part && part->mat >= 0;
   if (law >= 0) {
     *out = p->law[law];
-    if (derivable && !strstr(p->m->note, what)) { /* once per statement */
+    if (lay && !strstr(p->m->note, what)) { /* once per statement */
+      int gl = lay == a ? ga : gb, go = lay == a ? gb : ga;
       url_note(p,
-               "%s: its declared law overrides the one the materials give (the layer of '%s', "
-               "the material of '%s'; uasimpact-model(5), MATERIALS)",
-               what, p->m->geom[lay == a ? ga : gb].name, p->m->geom[lay == a ? gb : ga].name);
+               "%s: its declared law overrides the layer of '%s'%s%s%s (uasimpact-model(5), "
+               "MATERIALS)",
+               what, p->m->geom[gl].name, derivable ? " and the material of '" : "",
+               derivable ? p->m->geom[go].name : "", derivable ? "'" : "");
     }
     return 0;
   }

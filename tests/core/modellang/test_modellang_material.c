@@ -91,8 +91,8 @@ static void test_pair_law(void** state) {
   ur_model_free(m);
 }
 
-/* a declared law where one could be derived: kept as declared, and noted; an old drone with no
-   materials: kept, no note */
+/* a declared law on a layer: kept as declared, and noted (with the material when the drone part
+   has one: an old drone file's own scalp law is noted too) */
 static void test_override(void** state) {
   char err[256];
   const char* law =
@@ -108,7 +108,9 @@ static void test_override(void** state) {
   assert_near(l->radius, 0.0875, 0);
   assert_near(l->layer_h, 0, 0);
   print_message("note: %s\n", m->note);
-  assert_non_null(strstr(m->note, "pair 'fh': its declared law overrides"));
+  assert_non_null(strstr(m->note,
+                         "pair 'fh': its declared law overrides the layer of "
+                         "'cranium' and the material of 'frame'"));
   ur_model_free(m);
 
   snprintf(text, sizeof text, "%s%s%s", HEAD,
@@ -117,6 +119,17 @@ static void test_override(void** state) {
            law);
   strcat(text, "pair fh a=cranium b=e law=frame_head\n");
   m = parse1(text, NULL, 0, err);
+  assert_non_null(m);
+  assert_string_equal(m->note,
+                      "pair 'fh': its declared law overrides the layer of 'cranium' "
+                      "(uasimpact-model(5), MATERIALS)");
+  ur_model_free(m);
+
+  // a drone without a layer on the other side: nothing to note
+  m = parse1(DRONE
+             "law t type=hertz E1=1e9 nu1=0.3 E2=1e9 nu2=0.3 R1=0.1 R2=0.1\n"
+             "pair x a=tube b=ground law=t\n",
+             NULL, 0, err);
   assert_non_null(m);
   assert_string_equal(m->note, "");
   ur_model_free(m);
@@ -136,6 +149,9 @@ static void test_errors(void** state) {
        "fracture=1 needs the material's ultimate stress or fracture_strain"},
       {DRONE "restraint arm dof=0 material=cf section=wall length=0.4\n",
        "section 'wall' has no bending law"},
+      {"material soft E=1e6 nu=0.45 density=1100\n" DRONE
+       "restraint arm dof=0 material=soft section=arm_t length=0.4\n",
+       "material 'soft' gives no yield stress"},
       {"section s shape=tube D=0.02\n", "a tube needs D,t (m)"},
       {"section s shape=plate t=0.002 D=0.1\n", "a plate takes t (and b, its width), not D"},
       {"section s shape=tube D=0.02 t=0.01\n", "must be thinner than half its diameter"},
