@@ -206,6 +206,65 @@ static void test_fracture(void** state) {
 }
 
 
+// a drone's frame (free) with one tube arm on a universal joint whose hinge breaks: spun
+// about the root without gravity, the arm bends, yields, fractures and swings on freely; the
+// linear and angular momentum of the whole stay what they were (the hinge's moments are
+// internal) while the arm's relative rate no longer decays towards the frame's
+static void test_fracture_momentum(void** state) {
+  urModel* m = ur_model_new();
+  double If[6] = {0.5, 0.4, 0.8, 0, 0, 0}, Ia[6] = {0.001, 0.002, 0.003, 0, 0, 0};
+  int f = ur_model_add_body(m, "frame", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, f, 10, NULL, If);
+  int a = ur_model_add_body(m, "arm", f, urJNT_UNIVERSAL, (double[3]){0.16, 0, 0}, NULL);
+  ur_model_set_inertia(m, a, 0.5, (double[3]){0.3, 0, 0}, Ia);
+  ur_model_set_joint(m, a, NULL, (double[3]){0, 1, 0}, (double[3]){0, 0, 1});
+  urRestraint r = {0};
+  r.k = 6949; /* the 30 x 2 carbon tube on 0.41 m (test_contact_material.c) */
+  r.mp = 93.1;
+  r.kh = 69.49;
+  r.c = 0.5;
+  r.mfrac = 100;
+  ur_model_set_restraint(m, a, 0, &r);
+  ur_model_set_restraint(m, a, 1, &r);
+  m->opt.gravity[2] = 0;
+  m->opt.dt = 1e-5;
+  m->opt.integrator = urINT_RK4; /* the chain's momentum drifts O(dt) under semi-implicit Euler */
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+  double v[3] = {1, -0.5, 2}, w[3] = {0, 0, 0};
+  ur_set_free(m, d, f, NULL, NULL, v, w);
+  d->qvel[m->body[a].vadr] = 60; /* the arm whipped about its root: 0.06 kg m^2 at 60 rad/s */
+  ur_forward(m, d);
+  double p0[3], L0[3], p1[3], L1[3], xp, tb = 0;
+  ur_momentum(m, d, p0, L0);
+  for (int i = 0; i < 20000 && tb == 0; i++) {
+    ur_step(m, d);
+    ur_hinge_state(m, d, a, 0, &xp, &tb);
+  }
+  print_message("fracture: broke at %.5f s after a plastic set of %.4f rad\n", tb, xp);
+  assert_true(tb > 0 && fabs(xp) > 0.001);
+  for (int i = 0; i < 5000; i++) {
+    ur_step(m, d);
+  }
+  ur_forward(m, d);
+  ur_momentum(m, d, p1, L1);
+  double dp = 0, dl = 0, np = 0, nl = 0;
+  for (int k = 0; k < 3; k++) {
+    dp = fmax(dp, fabs(p1[k] - p0[k]));
+    dl = fmax(dl, fabs(L1[k] - L0[k]));
+    np = fmax(np, fabs(p0[k]));
+    nl = fmax(nl, fabs(L0[k]));
+  }
+  print_message(
+      "fracture: |dp| %.2e of %.3g kg m/s, |dL| %.2e of %.3g kg m^2/s; arm rate %.3g "
+      "rad/s\n",
+      dp, np, dl, nl, d->qvel[m->body[a].vadr]);
+  assert_true(dp <= 1e-10 * np && dl <= 1e-10 * nl); /* RK4 at 1e-5 s: ~1e-11 */
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
 // spherical joint with a linear restraint: KE + k |theta|^2 / 2 conserved at large angles
 static void test_spherical_energy(void** state) {
   urModel* m = ur_model_new();
@@ -276,7 +335,7 @@ int main(void) {
       cmocka_unit_test(test_curve_stops),      cmocka_unit_test(test_hysteresis),
       cmocka_unit_test(test_saturation),       cmocka_unit_test(test_spherical_energy),
       cmocka_unit_test(test_implicit_damping), cmocka_unit_test(test_plastic_hinge),
-      cmocka_unit_test(test_fracture),
+      cmocka_unit_test(test_fracture),         cmocka_unit_test(test_fracture_momentum),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
