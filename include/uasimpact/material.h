@@ -33,7 +33,8 @@ typedef enum {
   urSEC_TUBE = 0, /* round tube, outer diameter D, wall t */
   urSEC_PLATE,    /* rectangular plate of thickness t, width b (bending about its width) */
   urSEC_SOLID,    /* solid round bar of diameter D */
-  urSEC_SHELL     /* thin shell wall of thickness t and radius of curvature R (hollow parts) */
+  urSEC_SHELL,    /* thin shell wall of thickness t and radius of curvature R (hollow parts) */
+  urSEC_BOX       /* rectangular tube b wide, h high (bent about its width), wall t */
 } urSectionType;
 
 /* one cross-section */
@@ -43,6 +44,7 @@ typedef struct {
   double t; /* wall or plate thickness, m (tube, plate, shell) */
   double b; /* plate width, m */
   double R; /* shell radius of curvature, m */
+  double h; /* box height, m */
 } urSection;
 
 /* properties of a section in bending */
@@ -54,8 +56,9 @@ typedef struct {
 } urSectionProps;
 
 /* Bending properties of a section (tube: I = pi (D^4 - d^4)/64, Zp = (D^3 - d^3)/6,
-   d = D - 2t; solid: d = 0; plate: I = b t^3/12, Zp = b t^2/4). Returns 0, or -1 for a shell
-   or a section whose sizes are not positive (a tube's wall must be thinner than D/2). */
+   d = D - 2t; solid: d = 0; plate: I = b t^3/12, Zp = b t^2/4; box: I = (b h^3 - bi hi^3)/12,
+   Zp = (b h^2 - bi hi^2)/4, bi = b - 2t, hi = h - 2t). Returns 0, or -1 for a shell or a
+   section whose sizes are not positive (a tube's or box's wall must leave a hollow). */
 int ur_section_props(const urSection* s, urSectionProps* out);
 
 /* a hinge's moment-angle law derived from beam theory */

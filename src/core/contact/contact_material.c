@@ -28,6 +28,17 @@ int ur_section_props(const urSection* s, urSectionProps* out) {
     out->Zp = s->b * s->t * s->t / 4;
     return 0;
   }
+
+  // rectangular tube bent about its width
+  if (s->type == urSEC_BOX) {
+    double bi = s->b - 2 * s->t, hi = s->h - 2 * s->t;
+    if (!(s->t > 0 && bi > 0 && hi > 0)) return -1;
+    out->A = s->b * s->h - bi * hi;
+    out->I = (s->b * s->h * s->h * s->h - bi * hi * hi * hi) / 12;
+    out->Ze = 2 * out->I / s->h;
+    out->Zp = (s->b * s->h * s->h - bi * hi * hi) / 4;
+    return 0;
+  }
   return -1;
 }
 

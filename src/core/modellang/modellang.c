@@ -51,11 +51,12 @@ static const KeySpec spec_ellipsoid[] = {
 static const KeySpec spec_material[] = {NUMR("E"),    NUMR("nu"),      NUMR("density"),
                                         NUM("yield"), NUM("ultimate"), NUM("fracture_strain"),
                                         ENABLE};
-static const KeySpec spec_section[] = {{"shape", K_ENUM, 1, 0, 1, "tube|plate|solid|shell"},
+static const KeySpec spec_section[] = {{"shape", K_ENUM, 1, 0, 1, "tube|plate|solid|shell|box"},
                                        NUM("D"),
                                        NUM("t"),
                                        NUM("b"),
                                        NUM("R"),
+                                       NUM("h"),
                                        ENABLE};
 static const KeySpec spec_layer[] = {{"on", K_NAMES, MAXLIST, 1, 1, NULL},
                                      NAMER("material"),

@@ -70,12 +70,12 @@ int url_st_material(Parser* p, const Bound* b) {
 }
 
 
-/* section NAME shape=tube D= t= | plate t= [b=] | solid D= | shell t= R= */
+/* section NAME shape=tube D= t= | plate t= [b=] | solid D= | shell t= R= | box b= h= t= */
 int url_st_section(Parser* p, const Bound* b) {
-  static const char* const need[] = {"D,t", "t", "D", "t,R"};
-  static const char* const keys = "DtbR";
-  static const char* const uses[] = {"Dt", "tb", "D", "tR"};
-  static const char* const shape[] = {"tube", "plate", "solid", "shell"};
+  static const char* const need[] = {"D,t", "t", "D", "t,R", "b,h,t"};
+  static const char* const keys = "DtbRh";
+  static const char* const uses[] = {"Dt", "tb", "D", "tR", "bht"};
+  static const char* const shape[] = {"tube", "plate", "solid", "shell", "box"};
   int sh = url_get(b, "shape")->e;
   for (const char* k = keys; *k; k++) {
     char key[2] = {*k, 0};
@@ -98,6 +98,13 @@ int url_st_section(Parser* p, const Bound* b) {
   s.t = url_num(b, "t", 0);
   s.b = url_num(b, "b", 0);
   s.R = url_num(b, "R", 0);
+  s.h = url_num(b, "h", 0);
+  if (sh == 4 && !(2 * s.t < s.b && 2 * s.t < s.h)) {
+    return url_fail(p, url_get(b, "t")->line,
+                    "section '%s': a box's wall t (%g m) must be thinner than half its width b "
+                    "(%g m) and height h (%g m); a full bar is shape=plate with b",
+                    b->name, s.t, s.b, s.h);
+  }
   if (sh == 0 && !(2 * s.t < s.D)) {
     return url_fail(p, url_get(b, "t")->line,
                     "section '%s': a tube's wall t (%g m) must be thinner than half its "
@@ -248,7 +255,7 @@ int url_hinge(Parser* p, const Bound* b, urRestraint* r) {
   if (ur_hinge_from_beam(p->mat + mat, p->sec + sec, vl->v[0], &h)) {
     return url_fail(p, vs->line,
                     "restraint '%s': section '%s' has no bending law (a shell, or a plate "
-                    "without its width b); expected a tube, a solid bar or a plate with b",
+                    "without its width b); expected a tube, a box, a solid bar or a plate with b",
                     b->name, vs->raw);
   }
   int fracture = vf->set && vf->v[0] != 0;
@@ -277,6 +284,7 @@ static double section_radius(const Parser* p, const urlGeomMat* gm) {
   case urSEC_TUBE:
   case urSEC_SOLID: return s->D / 2;
   case urSEC_SHELL: return s->R;
+  case urSEC_BOX: return -1; /* its edges: the ellipsoids' curvature */
   default: return 0;
   }
 }

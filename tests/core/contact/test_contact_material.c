@@ -25,7 +25,7 @@ static void near_(double a, double b, double tol, const char* what, const char* 
 
 /* a round tube D x t */
 static urSection tube(double D, double t) {
-  urSection s = {urSEC_TUBE, D, t, 0, 0};
+  urSection s = {urSEC_TUBE, D, t, 0, 0, 0};
   return s;
 }
 
@@ -50,15 +50,25 @@ static void test_tube_section(void** state) {
   }
 
   // a solid bar is the tube with d = 0; a plate's Zp/Ze is 1.5
-  urSection bar = {urSEC_SOLID, 0.01, 0, 0, 0}, plate = {urSEC_PLATE, 0, 0.002, 0.03, 0};
+  urSection bar = {urSEC_SOLID, 0.01, 0, 0, 0, 0}, plate = {urSEC_PLATE, 0, 0.002, 0.03, 0, 0};
   urSectionProps p;
   assert_int_equal(ur_section_props(&bar, &p), 0);
   assert_near(p.Zp, 1e-6 / 6, 1e-18);
   assert_int_equal(ur_section_props(&plate, &p), 0);
   assert_near(p.Zp / p.Ze, 1.5, 1e-12);
 
+  // a box: the quad's 25 x 20 mm plastic arm with 2 mm walls, I = 9.5e-9 m^4 (quad.urm)
+  urSection box = {urSEC_BOX, 0, 0.002, 0.025, 0, 0.020};
+  assert_int_equal(ur_section_props(&box, &p), 0);
+  double I = (0.025 * 0.02 * 0.02 * 0.02 - 0.021 * 0.016 * 0.016 * 0.016) / 12;
+  assert_near(p.I, I, 1e-12 * I);
+  assert_near(p.I, 9.5e-9, 0.05e-9);
+  assert_near(p.Zp, (0.025 * 0.02 * 0.02 - 0.021 * 0.016 * 0.016) / 4, 1e-18);
+  urSection thick = {urSEC_BOX, 0, 0.01, 0.025, 0, 0.020};
+  assert_int_equal(ur_section_props(&thick, &p), -1);
+
   // no bending law: a shell, a wall as thick as the radius
-  urSection shell = {urSEC_SHELL, 0, 0.002, 0, 0.1}, full = tube(0.02, 0.01);
+  urSection shell = {urSEC_SHELL, 0, 0.002, 0, 0.1, 0}, full = tube(0.02, 0.01);
   assert_int_equal(ur_section_props(&shell, &p), -1);
   assert_int_equal(ur_section_props(&full, &p), -1);
 }
@@ -111,7 +121,7 @@ static void test_estar(void** state) {
    2421 kN/m at R 0.1 and 0.2 m; ABS E 2.3 GPa, nu 0.4: 230 kN/m at R 0.1) */
 static void test_shell(void** state) {
   urMaterial cfrp = {50e9, 0.3, 1600, 600e6, 0, 0}, abs_ = {2.3e9, 0.4, 1050, 40e6, 0, 0};
-  urSection s1 = {urSEC_SHELL, 0, 0.002, 0, 0.1}, s2 = {urSEC_SHELL, 0, 0.002, 0, 0.2};
+  urSection s1 = {urSEC_SHELL, 0, 0.002, 0, 0.1, 0}, s2 = {urSEC_SHELL, 0, 0.002, 0, 0.2, 0};
   assert_near(ur_shell_stiffness(&cfrp, &s1), 4842e3, 1e3);
   assert_near(ur_shell_stiffness(&cfrp, &s2), 2421e3, 1e3);
   assert_near(ur_shell_stiffness(&abs_, &s1), 231.8e3, 0.1e3);
