@@ -156,8 +156,8 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
 
 /* the largest depth a law's data covers (m): a table law's last loading abscissa, a foam law's
    thickness times its stress curve's last strain (HUGE_VAL with a lock strain: the backing
-   takes over), a layered Hertz law's layer thickness (beyond it the layer has bottomed and the
-   bone takes over: a run notes it), HUGE_VAL for Hertz; beyond it the law is extrapolated */
+   takes over), a layered Hertz law's layer thickness (plus the shell's share, F(h)/shell_k, with a shell in
+   series; beyond it the layer has bottomed and the bone takes over: a run notes it), HUGE_VAL for Hertz; beyond it the law is extrapolated */
 double ur_law_range(const urLaw* law);
 
 /* Hertz constants of a law: K = 4/3 E* sqrt(R) (N/m^1.5), Jackson-Green yield onset depth dy

@@ -79,7 +79,13 @@ double ur_law_range(const urLaw* law) {
   case urLAW_FOAM:
     if (law->lock > 0 || law->stress.n <= 0) return HUGE_VAL;
     return law->thickness * law->stress.x[law->stress.n - 1];
-  case urLAW_HERTZ: return law->layer_h > 0 ? law->layer_h : HUGE_VAL;
+  case urLAW_HERTZ: {
+    // the total depth at which the layer itself is pressed through (a shell in series
+    // takes F(h) / shell_k of it)
+    if (!(law->layer_h > 0)) return HUGE_VAL;
+    double h = law->layer_h, K = 4.0 / 3.0 * law->estar * sqrt(law->radius);
+    return law->shell_k > 0 ? h + K * h * sqrt(h) / law->shell_k : h;
+  }
   default: return HUGE_VAL;
   }
 }

@@ -34,7 +34,7 @@ int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len) {
         snprintf(msg, (size_t)len,
                  "pair %s at depth %.4g m bottomed its %.4g m layer: the bone's stiffness "
                  "took over",
-                 m->pair[i].name, dm, r);
+                 m->pair[i].name, dm, m->pair[i].law.layer_h);
       } else if (len > 0) {
         snprintf(msg, (size_t)len, "pair %s at depth %.4g m, its law's data end at %.4g m",
                  m->pair[i].name, dm, r);

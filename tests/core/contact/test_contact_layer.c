@@ -86,6 +86,14 @@ static void test_series_shell(void** state) {
     assert_near(K * D[i] * sqrt(D[i]), H[i], 0.01 * H[i]);
   }
 
+  // on a layer: bottomed where the contact's own depth reaches the thickness
+  l.layer_h = 0.006;
+  l.bone_k = 4.023e6;
+  double dh = 0.006 + K * 0.006 * sqrt(0.006) / l.shell_k;
+  assert_near(ur_law_range(&l), dh, 1e-15);
+  assert_near(ur_law_force(&l, &s, dh, 0, 0), K * 0.006 * sqrt(0.006), 1e-6);
+  l.layer_h = 0;
+
   // a stiff shell tends to Hertz alone; the shell alone bounds the force
   l.shell_k = 1e12;
   assert_near(ur_law_force(&l, &s, 0.005, 0, 0), K * 0.005 * sqrt(0.005), 1e-5 * 3388);
