@@ -47,16 +47,12 @@ for f in "$PAPER_VALUES" "$GRID4"; do
 done
 
 # the shipped values the variants start from, read from the binary (the calibration may move them)
-shown=$("$UASIMPACT" -c 'show arm_t; show arm_c; show nij_rescale; show nij_order; show pof_ais2;
+shown=$("$UASIMPACT" -c 'show arm_k; show arm_c; show nij_rescale; show nij_order; show pof_ais2;
   show pof_ais3; show pof_ais4' 2>&1)
 shipped() { echo "$shown" | awk -v n="$1" '$1 == n { print $2; exit }'; }
-ARM_T=$(shipped arm_t) ARM_C=$(shipped arm_c)
-# the arms' elastic slope k = 3EI/L of ra3.urm's carbon tube (E 54.8 GPa, D 0.06 m, L 0.41 m,
-# wall arm_t; uasimpact-model(5), MATERIALS)
-ARM_K=$(awk -v t="$ARM_T" 'BEGIN { D = 0.06; d = D - 2 * t
-  printf "%.0f", 3 * 54.8e9 * 3.141592653589793 * (D^4 - d^4) / 64 / 0.41 }') RESCALE=$(shipped nij_rescale)
+ARM_K=$(shipped arm_k) ARM_C=$(shipped arm_c) RESCALE=$(shipped nij_rescale)
 ORDER=$(shipped nij_order) AIS2=$(shipped pof_ais2) AIS3=$(shipped pof_ais3) AIS4=$(shipped pof_ais4)
-if [ -z "$ARM_T" ] || [ -z "$RESCALE" ] || [ -z "$ORDER" ] || [ -z "$AIS4" ]; then
+if [ -z "$ARM_K" ] || [ -z "$RESCALE" ] || [ -z "$ORDER" ] || [ -z "$AIS4" ]; then
   echo "sensitivity: could not read the shipped settings from $UASIMPACT: $shown" >&2
   exit 1
 fi
@@ -81,7 +77,7 @@ foam_r_01|set foam_r 0.1|contact sheet 3.2: foam unloading residual strain r 0.1
 foam_r_03|set foam_r 0.3|contact sheet 3.2: residual strain r 0.1-0.3
 foam_p_3|set foam_p 3|contact sheet 3.2: unloading exponent p 3-6 (shipped 4)
 foam_p_6|set foam_p 6|contact sheet 3.2: unloading exponent p 3-6
-arm_zeta_05|set arm_c $(arm_c 0.05)|contact sheet 5: damping ratio 0.05-0.2, c = 2 zeta sqrt(k I) with k = 3EI/L $ARM_K of the arm tube, I 0.07 kg m^2 (shipped arm_c $ARM_C, zeta $ZETA)
+arm_zeta_05|set arm_c $(arm_c 0.05)|contact sheet 5: damping ratio 0.05-0.2, c = 2 zeta sqrt(k I) with k = arm_k $ARM_K, I 0.07 kg m^2 (shipped arm_c $ARM_C, zeta $ZETA)
 arm_zeta_20|set arm_c $(arm_c 0.2)|contact sheet 5: damping ratio 0.05-0.2 (upper end)
 arm_stops_tight|set arm_stop_v 0.5; set arm_stop_h 0.66|contact sheet 5 (a stop only keeps an arm out of the drone): the first touch in ra3.urm's geometry, an arm at +-30 deg bent down onto the cargo box (0.5 rad), two neighbours bent towards each other (0.66 rad); shipped 1.4 / 0.9
 arm_stops_off|set arm_stop_v 3.1; set arm_stop_h 3.1|contact sheet 5: nothing in the paper gives a stop short of the frame; stops out of reach, the arm law alone
@@ -129,7 +125,7 @@ fi
 awk -f scripts/table17.awk -f scripts/sensitivity.awk -v out="$out" -v values="$PAPER_VALUES" \
     -v grid4="$GRID4" -v variants="$out/variants.txt" -v step="$step" -v wall="$wall" \
     -v commit="$commit" -v date="$(date -u '+%Y-%m-%d %H:%M UTC')" \
-    -v shipped="arm_t $ARM_T (k $ARM_K), arm_c $ARM_C (zeta $ZETA), nij_rescale $RESCALE, nij_order $ORDER, pof_ais2-4 $AIS2, $AIS3, $AIS4" \
+    -v shipped="arm_k $ARM_K, arm_c $ARM_C (zeta $ZETA), nij_rescale $RESCALE, nij_order $ORDER, pof_ais2-4 $AIS2, $AIS3, $AIS4" \
     "$out/raw.csv" || exit 1
 if [ -s "$out/err.txt" ]; then echo "sensitivity: messages in $out/err.txt" >&2; cat "$out/err.txt" >&2; fi
 cat "$out/sensitivity.md"

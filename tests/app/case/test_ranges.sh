@@ -36,7 +36,7 @@ for f in human ra3 airbags; do
 done >"$TMP/params"
 check ranges_shipped cond '[ "$(grep -c "range=" "$TMP/params")" -ge 30 ] &&
   ! grep "range=" "$TMP/params" | grep -qv "why="'
-for n in drone_size frame_a frame_b thorax_k abdomen_k neck_k_flex neck_k_ext spine_k arm_t; do
+for n in drone_size frame_a frame_b thorax_k abdomen_k neck_k_flex neck_k_ext spine_k arm_k; do
   grep -q "^ *param $n .*range=.*why=" "$TMP/params" || echo "$n" >>"$TMP/unranged"
 done
 check issue_params_ranged [ ! -s "$TMP/unranged" ]
@@ -84,7 +84,7 @@ run -c "model drop airbags; model load $TMP/nopairs.urm"
 check no_pairs_refused one_error "part 'ra3' does not fit the model: the model has no contact pair between the drone and the person (every impact would pass through the person and give P = 0); accepted: "
 
 # ---- a person ellipsoid above the head top: noted once, impacts still run ----
-printf 'part hat\nellipsoid hat body=head pos=0,0,0.3 size=0.05,0.05,0.05\npair hat_frame a=hat b=frame law=foam_backing\n' >"$TMP/hat.urm"
+printf 'part hat\nellipsoid hat body=head pos=0,0,0.3 size=0.05,0.05,0.05\npair hat_frame a=hat b=frame law=frame_head\n' >"$TMP/hat.urm"
 run -c "case B; model load $TMP/hat.urm; impact 0 0; impact 0.1 0"
 check overlap_noted_once cond '[ "$RC" -eq 0 ] && [ "$(grep -c "note: ellipsoid .hat. of the person reaches 0.1[0-9]* m above the top of the head" "$TMP/err")" -eq 1 ]'
 run -c 'case B; impact 0 0'
