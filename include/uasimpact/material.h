@@ -79,6 +79,11 @@ int ur_hinge_from_beam(const urMaterial* mat, const urSection* sec, double L, ur
 /* Effective modulus of two materials in contact, Pa: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2. */
 double ur_hertz_estar(const urMaterial* a, const urMaterial* b);
 
+/* Compressive stress of a foam at strain e in [0, 1) by the Avalle-Belingardi-Ibba law (Avalle,
+   Belingardi & Ibba 2007; contact sheet 3.2): p = {A, E, m, B, n},
+   sigma = A (1 - exp(-(E/A) e (1 - e)^m)) + B (e / (1 - e))^n (Pa with A, E, B in Pa). */
+double ur_foam_abi(const double p[5], double e);
+
 /* Local indentation stiffness of a thin shell under a point load, N/m (Reissner):
    k = 4 E t^2 / (R sqrt(3 (1 - nu^2))); 0 for a section that is not a shell. */
 double ur_shell_stiffness(const urMaterial* mat, const urSection* sec);

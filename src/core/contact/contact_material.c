@@ -65,6 +65,12 @@ double ur_hertz_estar(const urMaterial* a, const urMaterial* b) {
   return 1.0 / ((1 - a->nu * a->nu) / a->E + (1 - b->nu * b->nu) / b->E);
 }
 
+double ur_foam_abi(const double p[5], double e) {
+  // elastic-plateau term and densification term (Avalle, Belingardi & Ibba 2007)
+  double A = p[0], E = p[1], m = p[2], B = p[3], n = p[4];
+  return A * (1 - exp(-(E / A) * e * pow(1 - e, m))) + B * pow(e / (1 - e), n);
+}
+
 double ur_shell_stiffness(const urMaterial* mat, const urSection* sec) {
   // Reissner's shallow spherical shell under a point load (sheet E.3)
   if (sec->type != urSEC_SHELL || !(sec->t > 0 && sec->R > 0)) return 0;

@@ -11,7 +11,8 @@
 #include "modellang_internal.h"
 
 static const KeySpec spec_curve[] = {{"x", K_LIST, urMAXCURVE, 2, 1, NULL},
-                                     {"y", K_LIST, urMAXCURVE, 2, 1, NULL},
+                                     {"y", K_LIST, urMAXCURVE, 2, 0, NULL},
+                                     {"abi", K_VEC, 5, 0, 0, NULL},
                                      NUM("xscale"),
                                      NUM("yscale"),
                                      ENABLE};

@@ -135,6 +135,29 @@ static void test_override(void** state) {
   ur_model_free(m);
 }
 
+/* a foam curve from the Avalle-Belingardi-Ibba law at the strains given, scaled */
+static void test_foam_curve(void** state) {
+  char err[256];
+  urModel* m = parse1(
+      "curve f x=0,0.1,0.5,0.8 abi=1,30,2,0.3,1.6 yscale=4e5\n"
+      "law foam type=foam stress=f thickness=0.03 unload_r=0.2 unload_p=4\n"
+      "body a parent=world joint=free pos=0,0,1 mass=1 inertia=0.1,0.1,0.1\n"
+      "ellipsoid e body=a pos=0,0,0 size=0.1,0.1,0.1\n"
+      "pair p a=e b=ground law=foam\n",
+      NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urCurve* c = &m->pair[0].law.stress;
+  static const double X[4] = {0, 0.1, 0.5, 0.8};
+  assert_int_equal(c->n, 4);
+  for (int i = 0; i < 4; i++) {
+    double e = X[i];
+    double s = 4e5 * ((1 - exp(-30 * e * (1 - e) * (1 - e))) + 0.3 * pow(e / (1 - e), 1.6));
+    assert_near(c->y[i], s, 1e-9 * s + 1e-12);
+  }
+  ur_model_free(m);
+}
+
 /* one clear error per mistake */
 static void test_errors(void** state) {
   static const struct {
@@ -152,6 +175,9 @@ static void test_errors(void** state) {
       {"material soft E=1e6 nu=0.45 density=1100\n" DRONE
        "restraint arm dof=0 material=soft section=arm_t length=0.4\n",
        "material 'soft' gives no yield stress"},
+      {"curve c x=0,0.5 y=0,1 abi=1,30,2,0.3,1.6\n", "give y=LIST or abi=A,E,m,B,n"},
+      {"curve c x=0,1 abi=1,30,2,0.3,1.6\n", "the foam law takes strains in [0, 1)"},
+      {"curve c x=0,0.5 abi=0,30,2,0.3,1.6\n", "abi=A,E,m,B,n needs A > 0"},
       {"section s shape=tube D=0.02\n", "a tube needs D,t (m)"},
       {"section s shape=plate t=0.002 D=0.1\n", "a plate takes t (and b, its width), not D"},
       {"section s shape=tube D=0.02 t=0.01\n", "must be thinner than half its diameter"},
@@ -177,9 +203,8 @@ static void test_errors(void** state) {
 int main(void) {
   (void)model_text; /* the fixture's model: not used here */
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_hinge),
-      cmocka_unit_test(test_pair_law),
-      cmocka_unit_test(test_override),
+      cmocka_unit_test(test_hinge),    cmocka_unit_test(test_pair_law),
+      cmocka_unit_test(test_override), cmocka_unit_test(test_foam_curve),
       cmocka_unit_test(test_errors),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
