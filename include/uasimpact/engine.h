@@ -73,7 +73,9 @@ typedef enum {
                                       the targets N, largest yarn strain (Green, warp or weft) (Green;
                                       membrane bags, else 0) */
   urSENS_BODYPOS,   /* 3: world position of a body point, m */
-  urSENS_BODYVEL    /* 3: world velocity of a body point, m/s */
+  urSENS_BODYVEL,   /* 3: world velocity of a body point, m/s */
+  urSENS_HINGE      /* 2: an elastic-plastic hinge on joint dof: its plastic deflection (rad
+                                      or m) and the time it broke (s; 0 intact) */
 } urSensorType;
 
 typedef enum {

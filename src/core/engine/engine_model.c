@@ -400,6 +400,10 @@ int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj
     ok = obj >= 0 && obj < m->nbody && dof >= 0;
     dim = 1;
     break;
+  case urSENS_HINGE:
+    ok = obj >= 0 && obj < m->nbody && dof >= 0 && dof < 3 && m->body[obj].rst[dof].mp > 0;
+    dim = 2;
+    break;
   case urSENS_CONTACT:
     ok = obj >= 0 && obj < m->npair;
     dim = 3;

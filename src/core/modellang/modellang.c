@@ -123,7 +123,8 @@ static const KeySpec spec_airbag[] = {NAMER("geom"),
                                       NUM("dt_factor"),
                                       {"support", K_NAMES, urMAXBAGTGT, 1, 0, NULL}};
 static const KeySpec spec_sensor[] = {
-    {"type", K_ENUM, 1, 0, 1, "accel|jointload|jointpos|jointvel|contact|airbag|bodypos|bodyvel"},
+    {"type", K_ENUM, 1, 0, 1,
+     "accel|jointload|jointpos|jointvel|contact|airbag|bodypos|bodyvel|hinge"},
     NAMER("obj"),
     {"dof", K_INT, 1, 0, 0, NULL},
     VEC3("pos"),

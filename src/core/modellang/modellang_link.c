@@ -321,13 +321,14 @@ int url_st_sensor(Parser* p, const Bound* b) {
   const Val* vp = url_get(b, "pos");
   const Val* vq = url_get(b, "quat")->set ? url_get(b, "quat") : url_get(b, "rot");
   int onbody = type == urSENS_ACCEL || type == urSENS_BODYPOS || type == urSENS_BODYVEL;
-  int onjoint = type == urSENS_JOINTLOAD || type == urSENS_JOINTPOS || type == urSENS_JOINTVEL;
-  int hasdof = type == urSENS_JOINTPOS || type == urSENS_JOINTVEL;
+  int onjoint = type == urSENS_JOINTLOAD || type == urSENS_JOINTPOS || type == urSENS_JOINTVEL ||
+                type == urSENS_HINGE;
+  int hasdof = type == urSENS_JOINTPOS || type == urSENS_JOINTVEL || type == urSENS_HINGE;
 
   /* keys that apply */
   if (vd->set && !hasdof) {
-    return url_fail(p, vd->line, "sensor '%s': key 'dof' applies only to jointpos and jointvel",
-                    b->name);
+    return url_fail(p, vd->line,
+                    "sensor '%s': key 'dof' applies only to jointpos, jointvel and hinge", b->name);
   }
   if (vp->set && !onbody) {
     return url_fail(p, vp->line,
@@ -372,6 +373,13 @@ int url_st_sensor(Parser* p, const Bound* b) {
                                                 "prismatic joint)"
                                               : "");
     }
+  }
+  if (type == urSENS_HINGE &&
+      !(dof < 3 && m->body[obj].jtype != urJNT_FREE && m->body[obj].rst[dof].mp > 0)) {
+    return url_fail(p, vd->set ? vd->line : b->line,
+                    "sensor '%s': joint '%s' dof %d has no hinge from beam theory; expected a "
+                    "'restraint ... material= section= length=' on it above",
+                    b->name, m->body[obj].jname, dof);
   }
   double q[4];
   if (url_orientation(p, b, q) || url_declare(p, SYM_SENSOR, b->name, b->line, m->nsensor, 1)) {

@@ -40,7 +40,8 @@ static void test_hinge(void** state) {
   urModel* m = parse1(DRONE
                       "restraint arm dof=0 material=cf section=arm_t length=0.41 c=4 "
                       "lo=-1.4 hi=1.4 kstop=5e4 cstop=20 fracture=1\n"
-                      "restraint arm dof=1 material=cf section=arm_t length=0.41\n",
+                      "restraint arm dof=1 material=cf section=arm_t length=0.41\n"
+                      "sensor arm_h type=hinge obj=arm dof=0\n",
                       NULL, 0, err);
   if (!m) print_error("%s\n", err);
   assert_non_null(m);
@@ -56,6 +57,16 @@ static void test_hinge(void** state) {
   assert_near(r[1].mfrac, 0, 0); /* fracture is asked per restraint */
   assert_near(r[1].sat, 0, 0);
   assert_string_equal(m->note, "");
+
+  // its sensor: plastic deflection and the time it broke, 0 and 0 at rest
+  int s = ur_name_sensor(m, "arm_h");
+  assert_true(s >= 0);
+  assert_int_equal(m->sensor[s].dim, 2);
+  urData* dd = ur_data_new(m);
+  ur_forward(m, dd);
+  assert_near(dd->sensordata[m->sensor[s].adr], 0, 0);
+  assert_near(dd->sensordata[m->sensor[s].adr + 1], 0, 0);
+  ur_data_free(dd);
   ur_model_free(m);
 }
 
@@ -178,6 +189,8 @@ static void test_errors(void** state) {
       {"curve c x=0,0.5 y=0,1 abi=1,30,2,0.3,1.6\n", "give y=LIST or abi=A,E,m,B,n"},
       {"curve c x=0,1 abi=1,30,2,0.3,1.6\n", "the foam law takes strains in [0, 1)"},
       {"curve c x=0,0.5 abi=0,30,2,0.3,1.6\n", "abi=A,E,m,B,n needs A > 0"},
+      {DRONE "restraint arm dof=0 k=100\nsensor h type=hinge obj=arm dof=0\n",
+       "joint 'arm' dof 0 has no hinge from beam theory"},
       {"section s shape=tube D=0.02\n", "a tube needs D,t (m)"},
       {"section s shape=plate t=0.002 D=0.1\n", "a plate takes t (and b, its width), not D"},
       {"section s shape=tube D=0.02 t=0.01\n", "must be thinner than half its diameter"},
