@@ -164,8 +164,10 @@ int url_findsym(const Parser* p, int kind, const char* name, int enabled) {
 
 /* keyword that defines a kind of name */
 static const char* kindword(int kind) {
-  static const char* const kw[] = {"param", "curve",  "law",    "body", NULL,    "ellipsoid",
-                                   "pair",  "airbag", "sensor", "part", "preset"};
+  static const char* const kw[] = {"param",     "curve",    "law",     "body",   NULL,
+                                   "ellipsoid", "pair",     "airbag",  "sensor", "part",
+                                   "preset",    "material", "section", "layer"};
+  _Static_assert(sizeof kw / sizeof kw[0] == SYM_NKIND, "a kind of name without its keyword");
   return kw[kind];
 }
 
