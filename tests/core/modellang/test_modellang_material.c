@@ -191,6 +191,14 @@ static void test_errors(void** state) {
       {"curve c x=0,0.5 abi=0,30,2,0.3,1.6\n", "abi=A,E,m,B,n needs A > 0"},
       {DRONE "restraint arm dof=0 k=100\nsensor h type=hinge obj=arm dof=0\n",
        "joint 'arm' dof 0 has no hinge from beam theory"},
+      {"section s shape=tube D=0.06 t=0.002\nrestraint x dof=0 material=cf section=s\n"
+       "material cf E=1e9 nu=0.3 density=1000 yield=1e7\n",
+       "dangling reference to body 'x'"},
+      {"body b parent=world joint=free pos=0,0,1 mass=1 inertia=0.1,0.1,0.1\n"
+       "ellipsoid e body=b pos=0,0,0 size=0.1,0.1,0.1\n"
+       "layer l on=e material=late thickness=0.006 bone_k=1e6\n"
+       "material late E=1e6 nu=0.4 density=1000\n",
+       "dangling reference to material 'late' (defined later, at t.urm:4; define it before use)"},
       {"section s shape=tube D=0.02\n", "a tube needs D,t (m)"},
       {"section s shape=plate t=0.002 D=0.1\n", "a plate takes t (and b, its width), not D"},
       {"section s shape=tube D=0.02 t=0.01\n", "must be thinner than half its diameter"},
