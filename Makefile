@@ -4,6 +4,7 @@
 #   make check    set up, build, run every test
 #   make bench    benchmarks (not part of check; tests/bench_scale.sh: 2 MPI ranks against 1);
 #                 REPRODUCE=0 leaves out the timing of reproduce
+#   make headdrop the 49 CFR 572.32 head drop on the person's scalp layer (a benchmark)
 #   make reproduce  run sessions/paper.ses, report against the paper in build/reproduce/
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
@@ -64,8 +65,8 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasimpact.a
 APPLIB  = $(BUILD)/libuasimpact-app.a
 
-.PHONY: all deps run check test bench reproduce calibrate sensitivity install uninstall clean \
-  check-san fuzz \
+.PHONY: all deps run check test bench headdrop reproduce calibrate sensitivity install uninstall \
+  clean check-san fuzz \
   membrane-convergence \
   check-tsan mpi mpideps testdeps format
 all: $(BIN) $(LIB)
@@ -165,6 +166,10 @@ bench: all mpi $(BENCH_BIN)
 	  sh scripts/reproduce.sh >$(BUILD)/reproduce.log 2>&1 || { cat $(BUILD)/reproduce.log; exit 1; }; \
 	  echo "bench: make reproduce: $$(($$(date +%s) - t0)) s wall (target 120 s; report in $(BUILD)/reproduce/report.md)"; \
 	else echo "bench: make reproduce not timed (REPRODUCE=0)"; fi
+
+# the head drop of 49 CFR 572.32 on the person's scalp layer (issue 33; a benchmark)
+headdrop: $(BUILD)/tests/bench_headdrop
+	@$<
 
 # the membrane airbag's convergence (issue 32): mesh 6 -> 12, dt halved, at case A's centre and
 # over its zero-wind grid (STEP, default 0.05)

@@ -89,11 +89,17 @@ typedef enum {
 typedef struct {
   urLawType type;
   /* Hertz / Brake */
-  double estar;  /* effective modulus E*, Pa */
-  double radius; /* effective radius, m */
-  double sy;     /* yield strength of the softer body, Pa */
-  double nu;     /* Poisson ratio of the yielding body */
-  int plastic;   /* 1: JG loading beyond yield and Brake elastic unloading */
+  double estar;   /* effective modulus E*, Pa */
+  double radius;  /* effective radius, m */
+  double sy;      /* yield strength of the softer body, Pa */
+  double nu;      /* Poisson ratio of the yielding body */
+  int plastic;    /* 1: JG loading beyond yield and Brake elastic unloading */
+  double layer_h; /* > 0: the softer body is a layer of this thickness (m) over bone: beyond
+                     it the bone's stiffness takes over, F = F(layer_h) + bone_k (d - layer_h)
+                     (uasimpact-model(5), layer) */
+  double bone_k;  /* stiffness of the bone under the layer, N/m */
+  double shell_k; /* > 0: a hollow part's local shell stiffness (N/m) in series with the
+                     contact: d = d_contact(F) + F / shell_k */
   /* tabulated (urLAW_TABLE): force (N) against penetration (m) */
   urCurve load;
   urCurve unload; /* empty: unload along the loading curve (elastic) */
@@ -150,7 +156,8 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
 
 /* the largest depth a law's data covers (m): a table law's last loading abscissa, a foam law's
    thickness times its stress curve's last strain (HUGE_VAL with a lock strain: the backing
-   takes over), HUGE_VAL for Hertz; beyond it the law is extrapolated */
+   takes over), a layered Hertz law's layer thickness (plus the shell's share, F(h)/shell_k, with a shell in
+   series; beyond it the layer has bottomed and the bone takes over: a run notes it), HUGE_VAL for Hertz; beyond it the law is extrapolated */
 double ur_law_range(const urLaw* law);
 
 /* Hertz constants of a law: K = 4/3 E* sqrt(R) (N/m^1.5), Jackson-Green yield onset depth dy

@@ -35,10 +35,11 @@
 extern "C" {
 #endif
 
-#define urNAMELEN   32  /* bytes in a name, including the terminating 0 */
-#define urMAXBAGTGT 32  /* target ellipsoids per airbag */
-#define urMSGLEN    160 /* bytes in error / status messages */
-#define urWHYLEN    160 /* bytes in the reason of a parameter's range */
+#define urNAMELEN   32   /* bytes in a name, including the terminating 0 */
+#define urMAXBAGTGT 32   /* target ellipsoids per airbag */
+#define urMSGLEN    160  /* bytes in error / status messages */
+#define urNOTELEN   1024 /* bytes of a model's notes */
+#define urWHYLEN    160  /* bytes in the reason of a parameter's range */
 
 //---------------------------------- enums ---------------------------------------------------------
 
@@ -72,7 +73,9 @@ typedef enum {
                                       the targets N, largest yarn strain (Green, warp or weft) (Green;
                                       membrane bags, else 0) */
   urSENS_BODYPOS,   /* 3: world position of a body point, m */
-  urSENS_BODYVEL    /* 3: world velocity of a body point, m/s */
+  urSENS_BODYVEL,   /* 3: world velocity of a body point, m/s */
+  urSENS_HINGE      /* 2: an elastic-plastic hinge on joint dof: its plastic deflection (rad
+                                      or m) and the time it broke (s; 0 intact) */
 } urSensorType;
 
 typedef enum {
@@ -113,6 +116,13 @@ typedef struct {
   double lo, hi;       /* end stops (lo < hi; lo == hi: none), rad or m */
   double kstop, cstop; /* stop stiffness and damping beyond lo/hi */
   double x0;           /* neutral position (deflection = q - x0) */
+  double mp;           /* > 0: elastic-plastic hinge in place of k, sat and the curves: the
+                                      moment k (x - xp) yields at mp (plastic moment, N m) and
+                                      hardens kinematically with slope kh; xp, the plastic
+                                      deflection, is kept per run (uasimpact-model(5), hinge) */
+  double kh;           /* hardening slope beyond mp, N m/rad (< k) */
+  double mfrac;        /* > 0 (with mp): the hinge breaks when |M| reaches mfrac (N m): from
+                                      then on it carries no moment (fracture) */
 } urRestraint;
 
 typedef struct {
@@ -268,7 +278,10 @@ typedef struct {
   // (react)
   int *grav, *rstb, *hyst, *reactb;
   int ngrav, nrstb, nhyst, nreactb;
-  char err[urMSGLEN]; /* last builder / compile error */
+  char err[urMSGLEN];   /* last builder / compile error */
+  char note[urNOTELEN]; /* what the model language notes without failing (e.g. a drone's own law
+                           overriding the one derived from the materials), lines joined by
+                           '\n'; "" none; a host shows it when the model loads */
 } urModel;
 
 //---------------------------------- data ----------------------------------------------------------
@@ -517,6 +530,12 @@ double ur_energy_kinetic(const urModel* m, const urData* d);
 /* Potential energy of gravity and of the linear part (k) of the restraints (positions of the
    last ur_forward or ur_kinematics), J. */
 double ur_energy_potential(const urModel* m, const urData* d);
+
+/* The state of an elastic-plastic hinge (a restraint with mp > 0) on dof of body: its plastic
+   deflection (rad or m) and the time it broke (s; 0: intact). Returns 0, or -1 when that dof
+   has no such hinge. */
+int ur_hinge_state(const urModel* m, const urData* d, int body, int dof, double* xp,
+                   double* tbreak);
 
 /* Total linear (3) and angular (3, about the world origin) momentum at the last ur_forward. */
 void ur_momentum(const urModel* m, const urData* d, double p[3], double L[3]);

@@ -79,6 +79,13 @@ double ur_law_range(const urLaw* law) {
   case urLAW_FOAM:
     if (law->lock > 0 || law->stress.n <= 0) return HUGE_VAL;
     return law->thickness * law->stress.x[law->stress.n - 1];
+  case urLAW_HERTZ: {
+    // the total depth at which the layer itself is pressed through (a shell in series
+    // takes F(h) / shell_k of it)
+    if (!(law->layer_h > 0)) return HUGE_VAL;
+    double h = law->layer_h, K = 4.0 / 3.0 * law->estar * sqrt(law->radius);
+    return law->shell_k > 0 ? h + K * h * sqrt(h) / law->shell_k : h;
+  }
   default: return HUGE_VAL;
   }
 }
@@ -116,9 +123,37 @@ static double jackson_green(const urLaw* law, double d, double dy, double fy) {
                4 * hs / C * (1 - exp(-pow(w, 5.0 / 9.0) / 25)) * w);
 }
 
+/* Hertz on a layer over bone: beyond the layer's thickness the bone's stiffness takes over
+   (materials-membrane sheet F.2: bottoming) */
+static double hertz_layer(const urLaw* law, double d, double K) {
+  if (!(law->layer_h > 0) || d <= law->layer_h) return K * d * sqrt(d);
+  double h = law->layer_h;
+  return K * h * sqrt(h) + law->bone_k * (d - h);
+}
+
+/* the contact's force at contact depth d (elastic loading: Hertz, or the layer) */
+static double contact_force(const urLaw* law, double d, double K) {
+  return law->layer_h > 0 ? hertz_layer(law, d, K) : K * d * sqrt(d);
+}
+
+/* the force of the contact in series with a shell spring at total depth d: the root of
+   d = dc(F) + F / ks, dc the inverse of contact_force (increasing), by bisection on the
+   contact depth (60 halvings: to the last bits of d) */
+static double series_shell(const urLaw* law, double d, double K) {
+  double lo = 0, hi = d;
+  for (int i = 0; i < 60; i++) {
+    double x = 0.5 * (lo + hi);
+    if (x + contact_force(law, x, K) / law->shell_k > d)
+      hi = x;
+    else
+      lo = x;
+  }
+  return contact_force(law, 0.5 * (lo + hi), K);
+}
+
 /* Hertz loading curve, with the JG branch blended in over [1.9, 2.2] dy when plastic */
 static double hertz_load(const urLaw* law, double d, double K, double dy, double fy) {
-  double fh = K * d * sqrt(d);
+  double fh = law->shell_k > 0 ? series_shell(law, d, K) : contact_force(law, d, K);
   if (!law->plastic || d <= JG_LO * dy) return fh;
 
   // smoothstep blend removes the ~1% jump of the JG fit at 1.9 dy
@@ -143,7 +178,8 @@ static double elastic_force(const urLaw* law, const urLawState* s, double d, dou
   case urLAW_HERTZ: {
     double K, dy, fy;
     ur_law_hertz_params(law, &K, &dy, &fy);
-    if (!law->plastic) return K * d * sqrt(d);
+    if (law->shell_k > 0) return series_shell(law, d, K);
+    if (!law->plastic) return contact_force(law, d, K);
     if (d >= s->dmax) return hertz_load(law, d, K, dy, fy);
 
     // Brake (2015) unloading: F = 4/3 E* sqrt(Ru) (d - dr)^1.5 with
@@ -215,7 +251,9 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
     case urLAW_HERTZ: {
       double K, dy, fy;
       ur_law_hertz_params(law, &K, &dy, &fy);
-      s->fmax = law->plastic ? hertz_load(law, d, K, dy, fy) : K * d * sqrt(d);
+      s->fmax = law->plastic                           ? hertz_load(law, d, K, dy, fy)
+                : law->shell_k > 0 || law->layer_h > 0 ? elastic_force(law, s, d, area)
+                                                       : K * d * sqrt(d);
 
       // Brake (2015): dr = dm (1 - Fm / (K dm^1.5)), 0 for Hertzian loading (sheet §1.4)
       double dr = d * (1 - s->fmax / (K * d * sqrt(d)));

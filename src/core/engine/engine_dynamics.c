@@ -115,7 +115,12 @@ double ur_energy_potential(const urModel* m, const urData* d) {
       for (int k = 0; k < b->nv; k++) {
         const urRestraint* r = b->rst + k;
         double xk = x[k] - r->x0;
-        if (r->active && r->sat > 0 && r->k > 0) {
+        const double* st = d->rst + 2 * (b->vadr + k);
+        if (r->active && r->mp > 0) {
+          // plastic hinge: the elastic part k (x - xp)^2 / 2, none once broken
+          double xe = xk - st[0];
+          e += st[1] != 0 ? 0 : 0.5 * r->k * xe * xe;
+        } else if (r->active && r->sat > 0 && r->k > 0) {
           e += r->sat * r->sat / r->k * log(cosh(r->k * xk / r->sat));
         } else if (r->active) {
           e += 0.5 * r->k * xk * xk;

@@ -400,6 +400,10 @@ int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj
     ok = obj >= 0 && obj < m->nbody && dof >= 0;
     dim = 1;
     break;
+  case urSENS_HINGE:
+    ok = obj >= 0 && obj < m->nbody && dof >= 0 && dof < 3 && m->body[obj].rst[dof].mp > 0;
+    dim = 2;
+    break;
   case urSENS_CONTACT:
     ok = obj >= 0 && obj < m->npair;
     dim = 3;
@@ -597,7 +601,8 @@ int ur_model_compile(urModel* m) {
     if (b->jtype != urJNT_FREE && (r[0].active || r[1].active || r[2].active)) {
       m->rstb[m->nrstb++] = i;
     }
-    if (b->jtype != urJNT_FREE && (r[0].load.n > 0 || r[1].load.n > 0 || r[2].load.n > 0)) {
+    if (b->jtype != urJNT_FREE && (r[0].load.n > 0 || r[1].load.n > 0 || r[2].load.n > 0 ||
+                                   r[0].mp > 0 || r[1].mp > 0 || r[2].mp > 0)) {
       m->hyst[m->nhyst++] = i;
     }
     if (b->react) {

@@ -1,6 +1,7 @@
 /* engine_range.c: laws and restraint curves used beyond their data. A tabulated curve is
  * extrapolated linearly past its ends (contact.h), which is a guess, not data: a run says when it
- * went there, so that a result resting on it is not taken for a measured one. */
+ * went there, so that a result resting on it is not taken for a measured one. A soft layer
+ * pressed through its thickness (bottomed: the bone took over) is noted the same way. */
 #include <math.h>
 #include <stdio.h>
 #include "engine_internal.h"
@@ -29,7 +30,12 @@ int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len) {
     n++;
     if (dm / r > worst) {
       worst = dm / r;
-      if (len > 0) {
+      if (len > 0 && m->pair[i].law.layer_h > 0) {
+        snprintf(msg, (size_t)len,
+                 "pair %s at depth %.4g m bottomed its %.4g m layer: the bone's stiffness "
+                 "took over",
+                 m->pair[i].name, dm, m->pair[i].law.layer_h);
+      } else if (len > 0) {
         snprintf(msg, (size_t)len, "pair %s at depth %.4g m, its law's data end at %.4g m",
                  m->pair[i].name, dm, r);
       }

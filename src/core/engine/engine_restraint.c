@@ -1,6 +1,7 @@
 /* engine_restraint.c: joint restraints: per-dof spring-damper with a tabulated nonlinear
  * load-deflection curve, optional hysteresis (unloading curve scaled through the largest
- * deflection reached), and end stops. Spherical joints use the rotation-vector components of
+ * deflection reached), end stops, or an elastic-plastic hinge (kinematic hardening, optional
+ * fracture, after which the hinge carries no moment). Spherical joints use the rotation-vector components of
  * the relative rotation, with the exact map to body-frame torques. */
 #include <math.h>
 #include <string.h>
@@ -20,8 +21,33 @@ static double curve(const urCurve* c, double x) {
 }
 
 
+// kinematic hardening's back-moment slope: the tangent beyond mp is k b / (k + b) = kh
+static double back_slope(const urRestraint* r) {
+  return r->kh > 0 && r->kh < r->k ? r->k * r->kh / (r->k - r->kh) : 0;
+}
+
+
+// elastic-plastic hinge moment at deflection x from the committed plastic deflection xp
+// (return mapping of 1-D linear kinematic hardening: |M - b xp| <= mp); *dxp: the plastic
+// increment this deflection would commit
+static double plastic(const urRestraint* r, double x, double xp, double* dxp) {
+  double b = back_slope(r), m = r->k * (x - xp), over = fabs(m - b * xp) - r->mp;
+  *dxp = 0;
+  if (over > 0) {
+    *dxp = (m - b * xp > 0 ? over : -over) / (r->k + b);
+    m = r->k * (x - xp - *dxp);
+  }
+  return m;
+}
+
+
 // elastic generalised force at deflection x with extremes st = (max, min) reached so far
+// (a plastic hinge: st = (plastic deflection, broken))
 static double elastic(const urRestraint* r, double x, const double st[2]) {
+  if (r->mp > 0) {
+    double dxp;
+    return st[1] != 0 ? 0 : plastic(r, x, st[0], &dxp);
+  }
   double f = r->sat > 0 ? r->sat * tanh(r->k * x / r->sat) : r->k * x;
   if (r->load.n <= 0) {
     return f;
@@ -44,7 +70,7 @@ static double elastic(const urRestraint* r, double x, const double st[2]) {
 
 // total restraint force on one dof at deflection x, rate xd
 static double rforce(const urRestraint* r, double x, double xd, const double st[2]) {
-  double f = elastic(r, x, st) + r->c * xd;
+  double f = elastic(r, x, st) + (r->mp > 0 && st[1] != 0 ? 0 : r->c * xd);
   if (r->hi > r->lo) {
     if (x > r->hi) {
       f += r->kstop * (x - r->hi) + r->cstop * xd;
@@ -118,7 +144,9 @@ void ur_restraints(const urModel* m, urData* d) {
       double t[3];
       uru_mulmat3tvec(t, xs + 3, f);
       for (int k = 0; k < 3; k++) {
-        f[k] = t[k] + (b->rst[k].active ? b->rst[k].c * qd[k] : 0);
+        const double* st = d->rst + 2 * (b->vadr + k);
+        int broken = b->rst[k].mp > 0 && st[1] != 0;
+        f[k] = t[k] + (b->rst[k].active && !broken ? b->rst[k].c * qd[k] : 0);
       }
     }
     for (int k = 0; k < n; k++) {
@@ -138,6 +166,16 @@ void ur_restraints_commit(const urModel* m, urData* d) {
     int n = deflection(m, d, i, x);
     for (int k = 0; k < n; k++) {
       double* st = d->rst + 2 * (b->vadr + k);
+      const urRestraint* r = b->rst + k;
+      if (r->active && r->mp > 0 && st[1] == 0) {
+        // plastic hinge: commit the plastic deflection; fracture once |M| reaches mfrac
+        double dxp, mo = plastic(r, x[k], st[0], &dxp);
+        st[0] += dxp;
+        if (r->mfrac > 0 && fabs(mo) >= r->mfrac) {
+          st[1] = d->time > 0 ? d->time : 1e-300;
+        }
+        continue;
+      }
       if (b->rst[k].active && b->rst[k].load.n > 0) {
         if (x[k] > st[0]) {
           st[0] = x[k];
@@ -148,4 +186,18 @@ void ur_restraints_commit(const urModel* m, urData* d) {
       }
     }
   }
+}
+
+
+int ur_hinge_state(const urModel* m, const urData* d, int body, int dof, double* xp,
+                   double* tbreak) {
+  if (body < 0 || body >= m->nbody || dof < 0 || dof >= m->body[body].nv || dof > 2 ||
+      m->body[body].jtype == urJNT_FREE || !m->body[body].rst[dof].active ||
+      !(m->body[body].rst[dof].mp > 0)) {
+    return -1;
+  }
+  const double* st = d->rst + 2 * (m->body[body].vadr + dof);
+  *xp = st[0];
+  *tbreak = st[1];
+  return 0;
 }

@@ -34,6 +34,12 @@ void ur_sensors(const urModel* m, urData* d) {
       out[2] = pd->ft;
       break;
     }
+    case urSENS_HINGE: {
+      const double* st = d->rst + 2 * (b->vadr + s->dof);
+      out[0] = st[0];
+      out[1] = st[1];
+      break;
+    }
     case urSENS_AIRBAG:
       out[0] = d->bag[s->obj].pressure;
       out[1] = d->bag[s->obj].volume;

@@ -198,9 +198,9 @@ struct urStance {
    its put_ function below too (urOption: stance_new); sizes of LP64 targets (amd64, arm64) */
 #define urLP64_SIZE(T, n)                                                                          \
   _Static_assert(sizeof(void*) != 8 || sizeof(T) == (n), #T " changed: update its put_ function")
-urLP64_SIZE(urRestraint, 1624);
-urLP64_SIZE(urLaw, 2448);
-urLP64_SIZE(urBody, 5624);
+urLP64_SIZE(urRestraint, 1648);
+urLP64_SIZE(urLaw, 2472);
+urLP64_SIZE(urBody, 5696);
 urLP64_SIZE(urGeom, 208);
 urLP64_SIZE(urOption, 112);
 
@@ -245,6 +245,11 @@ static void put_restraint(urStance* st, const urRestraint* r) {
   PUT(st, r->kstop);
   PUT(st, r->cstop);
   PUT(st, r->x0);
+  if (r->mp > 0) { // hinges only: a model without them keeps its stance key
+    PUT(st, r->mp);
+    PUT(st, r->kh);
+    PUT(st, r->mfrac);
+  }
 }
 
 static void put_law(urStance* st, const urLaw* l) {
@@ -267,6 +272,11 @@ static void put_law(urStance* st, const urLaw* l) {
   PUT(st, l->chi);
   PUT(st, l->mu);
   PUT(st, l->v_eps);
+  if (l->layer_h > 0 || l->shell_k > 0) { // layered or shell laws only: old keys stay
+    PUT(st, l->layer_h);
+    PUT(st, l->bone_k);
+    PUT(st, l->shell_k);
+  }
 }
 
 static void put_body(urStance* st, const urModel* m, int b) {

@@ -11,7 +11,8 @@
 #include "modellang_internal.h"
 
 static const KeySpec spec_curve[] = {{"x", K_LIST, urMAXCURVE, 2, 1, NULL},
-                                     {"y", K_LIST, urMAXCURVE, 2, 1, NULL},
+                                     {"y", K_LIST, urMAXCURVE, 2, 0, NULL},
+                                     {"abi", K_VEC, 5, 0, 0, NULL},
                                      NUM("xscale"),
                                      NUM("yscale"),
                                      ENABLE};
@@ -40,9 +41,32 @@ static const KeySpec spec_restraint[] = {{"dof", K_INT, 1, 0, 1, NULL},
                                          NUM("kstop"),
                                          NUM("cstop"),
                                          NUM("x0"),
+                                         NAME("material"),
+                                         NAME("section"),
+                                         NUM("length"),
+                                         FLAG("fracture"),
                                          ENABLE};
-static const KeySpec spec_ellipsoid[] = {NAMER("body"), VEC3R("pos"),  VEC3R("size"), QUAT,
-                                         ROT,           NUM("degree"), ENABLE};
+static const KeySpec spec_ellipsoid[] = {
+    NAMER("body"), VEC3R("pos"),     VEC3R("size"),   QUAT,  ROT,
+    NUM("degree"), NAME("material"), NAME("section"), ENABLE};
+static const KeySpec spec_material[] = {NUMR("E"),    NUMR("nu"),      NUMR("density"),
+                                        NUM("yield"), NUM("ultimate"), NUM("fracture_strain"),
+                                        ENABLE};
+static const KeySpec spec_section[] = {{"shape", K_ENUM, 1, 0, 1, "tube|plate|solid|shell|box"},
+                                       NUM("D"),
+                                       NUM("t"),
+                                       NUM("b"),
+                                       NUM("R"),
+                                       NUM("h"),
+                                       ENABLE};
+static const KeySpec spec_layer[] = {{"on", K_NAMES, MAXLIST, 1, 1, NULL},
+                                     NAMER("material"),
+                                     NUMR("thickness"),
+                                     NUMR("bone_k"),
+                                     NUM("radius"),
+                                     NUM("mu"),
+                                     NUM("v_eps"),
+                                     ENABLE};
 #define LAWTYPE                                                                                    \
   { "type", K_ENUM, 1, 0, 1, "hertz|table|foam" }
 static const KeySpec spec_hertz[] = {LAWTYPE,         NUMR("E1"),      NUMR("nu1"), NUM("R1"),
@@ -52,9 +76,9 @@ static const KeySpec spec_table[] = {LAWTYPE, NAMER("load"), NAME("unload"), FRI
 static const KeySpec spec_foam[] = {LAWTYPE,          NAMER("stress"),  NUMR("thickness"),
                                     NUMR("unload_r"), NUMR("unload_p"), NUM("lock"),
                                     NAME("backing"),  FRICTION,         ENABLE};
-static const KeySpec spec_pair[] = {NAMER("a"), NAMER("b"), NAMER("law"), ENABLE};
+static const KeySpec spec_pair[] = {NAMER("a"), NAMER("b"), NAME("law"), ENABLE};
 static const KeySpec spec_pairs[] = {
-    {"a", K_NAMES, MAXLIST, 1, 1, NULL}, {"b", K_NAMES, MAXLIST, 1, 1, NULL}, NAMER("law"), ENABLE};
+    {"a", K_NAMES, MAXLIST, 1, 1, NULL}, {"b", K_NAMES, MAXLIST, 1, 1, NULL}, NAME("law"), ENABLE};
 static const KeySpec spec_airbag[] = {NAMER("geom"),
                                       NUMR("p0"),
                                       NUMR("patm"),
@@ -99,7 +123,8 @@ static const KeySpec spec_airbag[] = {NAMER("geom"),
                                       NUM("dt_factor"),
                                       {"support", K_NAMES, urMAXBAGTGT, 1, 0, NULL}};
 static const KeySpec spec_sensor[] = {
-    {"type", K_ENUM, 1, 0, 1, "accel|jointload|jointpos|jointvel|contact|airbag|bodypos|bodyvel"},
+    {"type", K_ENUM, 1, 0, 1,
+     "accel|jointload|jointpos|jointvel|contact|airbag|bodypos|bodyvel|hinge"},
     NAMER("obj"),
     {"dof", K_INT, 1, 0, 0, NULL},
     VEC3("pos"),
@@ -114,9 +139,10 @@ static int statement(Parser* p, const urlStmt* st) {
   static const struct {
     const char* kw;
     int kind;
-  } elem[] = {{"curve", SYM_CURVE},         {"body", SYM_BODY},     {"restraint", -1},
-              {"ellipsoid", SYM_ELLIPSOID}, {"law", SYM_LAW},       {"pair", SYM_PAIR},
-              {"airbag", SYM_AIRBAG},       {"sensor", SYM_SENSOR}, {"pairs", -1}};
+  } elem[] = {{"curve", SYM_CURVE},         {"body", SYM_BODY},       {"restraint", -1},
+              {"ellipsoid", SYM_ELLIPSOID}, {"law", SYM_LAW},         {"pair", SYM_PAIR},
+              {"airbag", SYM_AIRBAG},       {"sensor", SYM_SENSOR},   {"pairs", -1},
+              {"material", SYM_MATERIAL},   {"section", SYM_SECTION}, {"layer", SYM_LAYER}};
   const char* kw = url_word(&p->lx, st->word);
   Bound b;
   b.kw = kw;
@@ -201,6 +227,18 @@ static int statement(Parser* p, const urlStmt* st) {
     spec = spec_pairs;
     nspec = NKEY(spec_pairs);
     break;
+  case 9:
+    spec = spec_material;
+    nspec = NKEY(spec_material);
+    break;
+  case 10:
+    spec = spec_section;
+    nspec = NKEY(spec_section);
+    break;
+  case 11:
+    spec = spec_layer;
+    nspec = NKEY(spec_layer);
+    break;
   default: {
     const char* t = NULL;
     for (int w = 2; w < st->nword; w++) {
@@ -263,6 +301,9 @@ static int statement(Parser* p, const urlStmt* st) {
   case 5: return url_st_pair(p, &b);
   case 6: return url_st_airbag(p, &b);
   case 7: return url_st_sensor(p, &b);
+  case 9: return url_st_material(p, &b);
+  case 10: return url_st_section(p, &b);
+  case 11: return url_st_layer(p, &b);
   default: return url_st_pairs(p, &b);
   }
 }
@@ -307,6 +348,10 @@ static void release(Parser* p) {
   free(p->curve);
   free(p->law);
   free(p->pval);
+  free(p->mat);
+  free(p->sec);
+  free(p->layer);
+  free(p->gmat);
 }
 
 

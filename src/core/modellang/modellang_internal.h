@@ -48,6 +48,7 @@ const char* url_word(const urlLex* lx, int i);
 //---------------------------------- the parser (modellang*.c) -------------------------------------
 
 #include <stdio.h>
+#include "uasimpact/material.h"
 #include "uasimpact/modellang.h"
 
 #define MAXKEY  44  /* keys of one statement kind */
@@ -69,7 +70,11 @@ enum {
   SYM_AIRBAG,
   SYM_SENSOR,
   SYM_PART,
-  SYM_PRESET
+  SYM_PRESET,
+  SYM_MATERIAL,
+  SYM_SECTION,
+  SYM_LAYER,
+  SYM_NKIND /* the number of kinds */
 };
 
 /* kinds of values */
@@ -129,6 +134,21 @@ typedef struct {
   int next; /* the symbol before it in its hash chain, or -1 */
 } Sym;
 
+/* a soft layer over bone on some of a person's ellipsoids (statement 'layer') */
+typedef struct {
+  int mat;       /* its material */
+  double h;      /* thickness, m */
+  double bone_k; /* stiffness of the bone behind it, N/m */
+  double radius; /* Hertz radius of the part under it, m; 0: the ellipsoids' curvature */
+  double mu;     /* friction coefficient against a drone part */
+  double v_eps;  /* friction regularisation speed, m/s */
+} urlLayer;
+
+/* what an ellipsoid is made of: indices into the parser's tables, -1 none */
+typedef struct {
+  int mat, sec, layer;
+} urlGeomMat;
+
 /* one parsed value */
 typedef struct {
   int set;              /* key given */
@@ -161,15 +181,23 @@ typedef struct {
   urModel* m;
   Sym* sym;
   int nsym, capsym;
-  int* chain;                /* capsym chain heads: the last symbol of each hash */
-  int count[SYM_PRESET + 1]; /* enabled elements of each kind (limits) */
-  const _Atomic int* stop;   /* a stop request (Ctrl-C), polled between statements */
+  int* chain;              /* capsym chain heads: the last symbol of each hash */
+  int count[SYM_NKIND];    /* enabled elements of each kind (limits) */
+  const _Atomic int* stop; /* a stop request (Ctrl-C), polled between statements */
   urCurve* curve;
   int ncurve, capcurve;
   urLaw* law;
   int nlaw, caplaw;
   double* pval;
   int npval, cappval;
+  urMaterial* mat; /* materials (modellang_material.c) */
+  int nmat, capmat;
+  urSection* sec; /* sections */
+  int nsec, capsec;
+  urlLayer* layer; /* soft-tissue layers */
+  int nlayer, caplayer;
+  urlGeomMat* gmat; /* per ellipsoid: its material, section, layer (ngeom of them, grown) */
+  int ngmat, capgmat;
   char msg[MSGLEN];
 } Parser;
 
@@ -182,9 +210,9 @@ typedef struct {
 extern const char* const url_keywords;
 extern const char* const url_expect_num;
 extern const char* const url_expect_name;
-extern const char* const url_symkind[SYM_PRESET + 1];
-extern const char* const url_symkinds[SYM_PRESET + 1];
-extern const int url_limit[SYM_PRESET + 1];
+extern const char* const url_symkind[SYM_NKIND];
+extern const char* const url_symkinds[SYM_NKIND];
+extern const int url_limit[SYM_NKIND];
 
 /* the helpers each file of the parser offers the others */
 void url_unit_names(char* list, size_t len);
@@ -197,7 +225,7 @@ int url_apply_design(Parser* p);
 int url_bind(Parser* p, const urlStmt* st, int first, const KeySpec* spec, int nspec, Bound* b);
 int url_checkname(Parser* p, const char* s, size_t n, int line, const char* what);
 int url_count(const char* s);
-int url_curv2(Parser* p, int law, int g, const char* name, int line, const char* what);
+int url_curv2(Parser* p, const urLaw* law, int g, const char* name, int line, const char* what);
 int url_declare(Parser* p, int kind, const char* name, int line, int id, int enabled);
 int url_degree2(Parser* p, int g, const char* name, int line, const char* what, const char* role);
 int url_fail(Parser* p, int line, const char* fmt, ...);
@@ -223,6 +251,13 @@ int url_st_param(Parser* p, const urlStmt* st);
 int url_st_part(Parser* p, const urlStmt* st);
 int url_st_preset(Parser* p, const urlStmt* st);
 int url_st_restraint(Parser* p, const Bound* b);
+int url_st_material(Parser* p, const Bound* b);
+int url_st_section(Parser* p, const Bound* b);
+int url_st_layer(Parser* p, const Bound* b);
+int url_hinge(Parser* p, const Bound* b, urRestraint* r);
+int url_geom_material(Parser* p, const Bound* b, int g);
+int url_pair_law(Parser* p, const char* pair, int ga, int gb, int law, int line, urLaw* out);
+void url_note(Parser* p, const char* fmt, ...);
 int url_st_role(Parser* p, const urlStmt* st, Bound* b);
 int url_st_sensor(Parser* p, const Bound* b);
 size_t url_decimal_prefix(const char* s, size_t n);

@@ -12,7 +12,7 @@
 static const KeySpec spec_role[] = {NAME("drone"),    NAME("head"),  NAME("head_acc"), NAME("neck"),
                                     NAME("head_pos"), NAME("chest"), NAME("abdomen"),  NUM("mass"),
                                     NUM("size"),      ENABLE};
-/* pair NAME a= b=|ground law= */
+/* pair NAME a= b=|ground [law=]: without law=, the law is derived from the materials */
 int url_st_pair(Parser* p, const Bound* b) {
   urModel* m = p->m;
   const Val* va = url_get(b, "a");
@@ -26,8 +26,8 @@ int url_st_pair(Parser* p, const Bound* b) {
   if (strcmp(vb->raw, "ground") && (gb = url_ref(p, SYM_ELLIPSOID, vb->raw, vb->line, NULL)) < 0) {
     return -1;
   }
-  int law = url_ref(p, SYM_LAW, vl->raw, vl->line, NULL);
-  if (law < 0) {
+  int law = -1;
+  if (vl->set && (law = url_ref(p, SYM_LAW, vl->raw, vl->line, NULL)) < 0) {
     return -1;
   }
   if (gb >= 0 && m->geom[ga].body == m->geom[gb].body) {
@@ -38,21 +38,24 @@ int url_st_pair(Parser* p, const Bound* b) {
   }
   char what[urNAMELEN + 16];
   snprintf(what, sizeof(what), "pair '%s'", b->name);
-  if ((p->law[law].type == urLAW_FOAM &&
+  urLaw lw;
+  if (url_pair_law(p, what, ga, gb, law, vl->set ? vl->line : b->line, &lw)) {
+    return -1;
+  }
+  if ((lw.type == urLAW_FOAM &&
        url_degree2(p, ga, va->raw, va->line, what, "a, under a foam law,")) ||
-      url_curv2(p, law, ga, va->raw, va->line, what) ||
-      url_curv2(p, law, gb, vb->raw, vb->line, what)) {
+      url_curv2(p, &lw, ga, va->raw, va->line, what) ||
+      url_curv2(p, &lw, gb, vb->raw, vb->line, what)) {
     return -1;
   }
   if (url_declare(p, SYM_PAIR, b->name, b->line, m->npair, 1)) {
     return -1;
   }
-  if (ur_model_add_pair(m, b->name, ga, gb, p->law + law) < 0) {
+  if (ur_model_add_pair(m, b->name, ga, gb, &lw) < 0) {
     return url_fail(p, b->line, "pair '%s': %s", b->name, m->err);
   }
   return 0;
 }
-
 
 /* name NAME_A_B of a generated pair; -1 if too long */
 static int pairname(char out[urNAMELEN], const char* name, const char* a, const char* b) {
@@ -67,8 +70,8 @@ int url_st_pairs(Parser* p, const Bound* b) {
   const Val* va = url_get(b, "a");
   const Val* vb = url_get(b, "b");
   const Val* vl = url_get(b, "law");
-  int law = url_ref(p, SYM_LAW, vl->raw, vl->line, NULL);
-  if (law < 0) {
+  int law = -1;
+  if (vl->set && (law = url_ref(p, SYM_LAW, vl->raw, vl->line, NULL)) < 0) {
     return -1;
   }
   for (int i = 0; i < va->n; i++) {
@@ -80,11 +83,6 @@ int url_st_pairs(Parser* p, const Bound* b) {
     }
     char what[urNAMELEN + 16];
     snprintf(what, sizeof(what), "pairs '%s'", b->name);
-    if ((p->law[law].type == urLAW_FOAM &&
-         url_degree2(p, ga, na, va->line, what, "each a, under a foam law,")) ||
-        url_curv2(p, law, ga, na, va->line, what)) {
-      return -1;
-    }
     for (int j = 0; j < vb->n; j++) {
       char nb[urNAMELEN];
       url_item(vb->raw, j, nb, sizeof(nb));
@@ -92,7 +90,13 @@ int url_st_pairs(Parser* p, const Bound* b) {
       if (strcmp(nb, "ground") && (gb = url_ref(p, SYM_ELLIPSOID, nb, vb->line, NULL)) < 0) {
         return -1;
       }
-      if (url_curv2(p, law, gb, nb, vb->line, what)) {
+      urLaw lw;
+      if (url_pair_law(p, what, ga, gb, law, vl->set ? vl->line : b->line, &lw)) {
+        return -1;
+      }
+      if ((lw.type == urLAW_FOAM &&
+           url_degree2(p, ga, na, va->line, what, "each a, under a foam law,")) ||
+          url_curv2(p, &lw, ga, na, va->line, what) || url_curv2(p, &lw, gb, nb, vb->line, what)) {
         return -1;
       }
       if (pairname(pn, b->name, na, nb)) {
@@ -111,7 +115,7 @@ int url_st_pairs(Parser* p, const Bound* b) {
       if (url_declare(p, SYM_PAIR, pn, b->line, m->npair, 1)) {
         return -1;
       }
-      if (ur_model_add_pair(m, pn, ga, gb, p->law + law) < 0) {
+      if (ur_model_add_pair(m, pn, ga, gb, &lw) < 0) {
         return url_fail(p, b->line, "pairs '%s': %s", b->name, m->err);
       }
     }
@@ -317,13 +321,14 @@ int url_st_sensor(Parser* p, const Bound* b) {
   const Val* vp = url_get(b, "pos");
   const Val* vq = url_get(b, "quat")->set ? url_get(b, "quat") : url_get(b, "rot");
   int onbody = type == urSENS_ACCEL || type == urSENS_BODYPOS || type == urSENS_BODYVEL;
-  int onjoint = type == urSENS_JOINTLOAD || type == urSENS_JOINTPOS || type == urSENS_JOINTVEL;
-  int hasdof = type == urSENS_JOINTPOS || type == urSENS_JOINTVEL;
+  int onjoint = type == urSENS_JOINTLOAD || type == urSENS_JOINTPOS || type == urSENS_JOINTVEL ||
+                type == urSENS_HINGE;
+  int hasdof = type == urSENS_JOINTPOS || type == urSENS_JOINTVEL || type == urSENS_HINGE;
 
   /* keys that apply */
   if (vd->set && !hasdof) {
-    return url_fail(p, vd->line, "sensor '%s': key 'dof' applies only to jointpos and jointvel",
-                    b->name);
+    return url_fail(p, vd->line,
+                    "sensor '%s': key 'dof' applies only to jointpos, jointvel and hinge", b->name);
   }
   if (vp->set && !onbody) {
     return url_fail(p, vp->line,
@@ -368,6 +373,13 @@ int url_st_sensor(Parser* p, const Bound* b) {
                                                 "prismatic joint)"
                                               : "");
     }
+  }
+  if (type == urSENS_HINGE &&
+      !(dof < 3 && m->body[obj].jtype != urJNT_FREE && m->body[obj].rst[dof].mp > 0)) {
+    return url_fail(p, vd->set ? vd->line : b->line,
+                    "sensor '%s': joint '%s' dof %d has no hinge from beam theory; expected a "
+                    "'restraint ... material= section= length=' on it above",
+                    b->name, m->body[obj].jname, dof);
   }
   double q[4];
   if (url_orientation(p, b, q) || url_declare(p, SYM_SENSOR, b->name, b->line, m->nsensor, 1)) {

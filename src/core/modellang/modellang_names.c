@@ -10,25 +10,26 @@
 #include "modellang_internal.h"
 
 const char* const url_keywords =
-    "param, option, curve, body, restraint, ellipsoid, law, pair, pairs, airbag, sensor, part, "
-    "role, preset";
+    "param, option, curve, material, section, layer, body, restraint, ellipsoid, law, pair, "
+    "pairs, airbag, sensor, part, role, preset";
 const char* const url_expect_num =
     "expected a decimal number such as 12, -0.5 or 2.5e-3, or $param";
 const char* const url_expect_name =
     "expected letters, digits, '_' or '.', starting with a letter or '_', at most 31 characters";
 
-const char* const url_symkind[SYM_PRESET + 1] = {"parameter", "curve",     "law",   "body",
-                                                 "joint",     "ellipsoid", "pair",  "airbag",
-                                                 "sensor",    "part",      "preset"};
-const char* const url_symkinds[SYM_PRESET + 1] = {"parameters", "curves",     "laws",   "bodies",
-                                                  "joints",     "ellipsoids", "pairs",  "airbags",
-                                                  "sensors",    "parts",      "presets"};
+const char* const url_symkind[SYM_NKIND] = {"parameter", "curve",    "law",     "body",   "joint",
+                                            "ellipsoid", "pair",     "airbag",  "sensor", "part",
+                                            "preset",    "material", "section", "layer"};
+const char* const url_symkinds[SYM_NKIND] = {
+    "parameters", "curves",  "laws",  "bodies",  "joints",    "ellipsoids", "pairs",
+    "airbags",    "sensors", "parts", "presets", "materials", "sections",   "layers"};
 
 /* the most elements of each kind a model may have (uasimpact-model(5), LIMITS): a model of the
    person and a drone has tens of bodies and a few hundred pairs; the limits keep the largest
    model parsing and compiling within about a second (the builder checks each new name among
    the elements of its kind) */
-const int url_limit[SYM_PRESET + 1] = {4000, 4000, 4000, 1000, 0, 2000, 5000, 64, 1000, 256, 64};
+const int url_limit[SYM_NKIND] = {4000, 4000, 4000, 1000, 0,   2000, 5000,
+                                  64,   1000, 256,  64,   256, 256,  64};
 _Static_assert(sizeof url_limit / sizeof url_limit[0] ==
                        sizeof url_symkind / sizeof url_symkind[0] &&
                    sizeof url_symkinds / sizeof url_symkinds[0] ==
@@ -163,8 +164,10 @@ int url_findsym(const Parser* p, int kind, const char* name, int enabled) {
 
 /* keyword that defines a kind of name */
 static const char* kindword(int kind) {
-  static const char* const kw[] = {"param", "curve",  "law",    "body", NULL,    "ellipsoid",
-                                   "pair",  "airbag", "sensor", "part", "preset"};
+  static const char* const kw[] = {"param",     "curve",    "law",     "body",   NULL,
+                                   "ellipsoid", "pair",     "airbag",  "sensor", "part",
+                                   "preset",    "material", "section", "layer"};
+  _Static_assert(sizeof kw / sizeof kw[0] == SYM_NKIND, "a kind of name without its keyword");
   return kw[kind];
 }
 

@@ -236,11 +236,50 @@ int url_st_option(Parser* p, const urlStmt* st, Bound* b) {
 }
 
 
-/* curve NAME x=.. y=.. */
+/* the y of curve b from the Avalle-Belingardi-Ibba foam law abi=A,E,m,B,n at its x (strains) */
+static int curve_abi(Parser* p, const Bound* b, double* y) {
+  const Val* x = url_get(b, "x");
+  const Val* va = url_get(b, "abi");
+  const double* a = va->v;
+  if (!(a[0] > 0 && a[1] > 0 && a[2] >= 0 && a[3] >= 0 && a[4] > 0)) {
+    return url_fail(p, va->line,
+                    "curve '%s': abi=A,E,m,B,n needs A > 0, E > 0, m >= 0, B >= 0, n > 0 (got "
+                    "%g,%g,%g,%g,%g)",
+                    b->name, a[0], a[1], a[2], a[3], a[4]);
+  }
+  for (int i = 0; i < x->n; i++) {
+    if (!(x->v[i] >= 0 && x->v[i] < 1)) {
+      return url_fail(p, x->line,
+                      "curve '%s': the foam law takes strains in [0, 1) (x[%d] = %g); the foam "
+                      "is solid at 1",
+                      b->name, i + 1, x->v[i]);
+    }
+    y[i] = ur_foam_abi(a, x->v[i]);
+  }
+  return 0;
+}
+
+
+/* curve NAME x=.. y=.. | abi=A,E,m,B,n */
 int url_st_curve(Parser* p, const Bound* b) {
   const Val* x = url_get(b, "x");
   const Val* y = url_get(b, "y");
-  if (x->n != y->n) {
+  const Val* va = url_get(b, "abi");
+  double ys[urMAXCURVE];
+  if (y->set == va->set) {
+    return url_fail(p, b->line,
+                    "curve '%s': give y=LIST or abi=A,E,m,B,n (the Avalle-Belingardi-Ibba foam "
+                    "law at the strains x), one of them",
+                    b->name);
+  }
+  if (va->set) {
+    if (curve_abi(p, b, ys)) {
+      return -1;
+    }
+  } else {
+    memcpy(ys, y->v, (size_t)y->n * sizeof(double));
+  }
+  if (y->set && x->n != y->n) {
     return url_fail(p, y->line, "curve '%s': x has %d points but y has %d; expected the same count",
                     b->name, x->n, y->n);
   }
@@ -269,7 +308,7 @@ int url_st_curve(Parser* p, const Bound* b) {
   c->n = x->n;
   for (int i = 0; i < x->n; i++) {
     c->x[i] = sx * x->v[i];
-    c->y[i] = sy * y->v[i];
+    c->y[i] = sy * ys[i];
   }
   return 0;
 }
@@ -442,6 +481,9 @@ int url_st_restraint(Parser* p, const Bound* b) {
   r.kstop = url_num(b, "kstop", 0);
   r.cstop = url_num(b, "cstop", 0);
   r.x0 = url_num(b, "x0", 0);
+  if (url_hinge(p, b, &r) < 0) {
+    return -1;
+  }
 
   /* curves */
   const Val* vl = url_get(b, "load");
@@ -507,14 +549,14 @@ int url_st_ellipsoid(Parser* p, const Bound* b) {
   if (g < 0 || (vd->set && ur_model_set_degree(m, g, vd->v[0]))) {
     return url_fail(p, b->line, "ellipsoid '%s': %s", b->name, m->err);
   }
-  return 0;
+  return url_geom_material(p, b, g);
 }
 
 
 /* ellipsoid g, named name, must have degree 2 in its role (a foam pair's a, an airbag target) */
 /* a pair under a Hertz law without radii: both ellipsoids of degree 2 (their curvature) */
-int url_curv2(Parser* p, int law, int g, const char* name, int line, const char* what) {
-  if (g < 0 || p->law[law].type != urLAW_HERTZ || p->law[law].radius != urHERTZ_CURVATURE ||
+int url_curv2(Parser* p, const urLaw* law, int g, const char* name, int line, const char* what) {
+  if (g < 0 || law->type != urLAW_HERTZ || law->radius != urHERTZ_CURVATURE ||
       p->m->geom[g].degree == 2) {
     return 0;
   }

@@ -137,6 +137,138 @@ static void test_hysteresis(void** state) {
 }
 
 
+// an elastic-plastic hinge (k 1000 N m/rad, mp 50 N m, kh 10 N m/rad): the bilinear law
+// M = mp + kh (x - mp/k) while loading, elastic unloading with slope k from the permanent set,
+// reverse yield at beta xp - mp (kinematic hardening, beta = k kh / (k - kh)), fracture at
+// mfrac, after which the hinge carries no moment
+static urModel* plastic_hinge(double mfrac) {
+  urRestraint r = {0};
+  r.k = 1000;
+  r.mp = 50;
+  r.kh = 10;
+  r.c = 0.5;
+  r.mfrac = mfrac;
+  return hinge_with(&r);
+}
+
+
+static void test_plastic_hinge(void** state) {
+  urModel* m = plastic_hinge(0);
+  urData* d = ur_data_new(m);
+  assert_true(fabs(moment(m, d, 0.03, 0) - 30) < 1e-12);
+  assert_true(fabs(moment(m, d, 0.1, 0) - 50.5) < 1e-12); /* not yet committed: same value */
+
+  // load to 0.1 (accepted), unload: slope k from (0.1, 50.5); permanent set 0.1 - 50.5/k
+  d->qpos[0] = 0.1;
+  d->qvel[0] = 0;
+  ur_step(m, d);
+  double xp = 0.1 - 50.5 / 1000;
+  print_message("plastic hinge: M(0.06) %.6f (exact %.6f), set %.6f\n", moment(m, d, 0.06, 0),
+                1000 * (0.06 - xp), xp);
+  assert_true(fabs(moment(m, d, 0.06, 0) - 1000 * (0.06 - xp)) < 1e-9);
+  assert_true(fabs(moment(m, d, xp, 0)) < 1e-9);
+  assert_true(fabs(moment(m, d, 0.12, 0) - (50 + 10 * (0.12 - 0.05))) < 1e-9);
+
+  // reverse yield: at beta xp - mp, then the hardening slope
+  double beta = 1000.0 * 10 / 990, mr = beta * xp - 50, xr = xp + mr / 1000;
+  assert_true(fabs(moment(m, d, xr + 1e-6, 0) - 1000 * (xr + 1e-6 - xp)) < 1e-9);
+  double x2 = xr - 0.05, m2 = mr - 10 * 0.05;
+  print_message("plastic hinge: reverse yield at %.6f N m, M(%.4f) %.6f (exact %.6f)\n", mr, x2,
+                moment(m, d, x2, 0), m2);
+  assert_true(fabs(moment(m, d, x2, 0) - m2) < 1e-9);
+
+  // the elastic energy is that of x - xp
+  d->qpos[0] = 0.06;
+  assert_true(fabs(ur_energy_potential(m, d) - 0.5 * 1000 * (0.06 - xp) * (0.06 - xp)) < 1e-9);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+static void test_fracture(void** state) {
+  urModel* m = plastic_hinge(52); /* reached at 0.05 + 2 / 10 = 0.25 */
+  urData* d = ur_data_new(m);
+  d->qpos[0] = 0.2;
+  ur_step(m, d);
+  double h0, hb;
+  assert_int_equal(ur_hinge_state(m, d, 0, 0, &h0, &hb), 0);
+  assert_true(hb == 0);
+  assert_true(fabs(moment(m, d, 0.2, 0) - 51.5) < 1e-9);
+  d->qpos[0] = 0.26;
+  ur_step(m, d);
+  assert_int_equal(ur_hinge_state(m, d, 0, 0, &h0, &hb), 0);
+  print_message("fracture: broken at t = %g s, moment after %g\n", hb, moment(m, d, 0.3, 2));
+  assert_true(hb > 0);
+  assert_true(moment(m, d, 0.3, 2) == 0 && moment(m, d, -0.3, -2) == 0);
+  assert_int_equal(ur_hinge_state(m, d, 0, 1, &h0, &hb), -1); /* no such dof */
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
+// a drone's frame (free) with one tube arm on a universal joint whose hinge breaks: spun
+// about the root without gravity, the arm bends, yields, fractures and swings on freely; the
+// linear and angular momentum of the whole stay what they were (the hinge's moments are
+// internal) while the arm's relative rate no longer decays towards the frame's
+static void test_fracture_momentum(void** state) {
+  urModel* m = ur_model_new();
+  double If[6] = {0.5, 0.4, 0.8, 0, 0, 0}, Ia[6] = {0.001, 0.002, 0.003, 0, 0, 0};
+  int f = ur_model_add_body(m, "frame", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, f, 10, NULL, If);
+  int a = ur_model_add_body(m, "arm", f, urJNT_UNIVERSAL, (double[3]){0.16, 0, 0}, NULL);
+  ur_model_set_inertia(m, a, 0.5, (double[3]){0.3, 0, 0}, Ia);
+  ur_model_set_joint(m, a, NULL, (double[3]){0, 1, 0}, (double[3]){0, 0, 1});
+  urRestraint r = {0};
+  r.k = 6949; /* the 30 x 2 carbon tube on 0.41 m (test_contact_material.c) */
+  r.mp = 93.1;
+  r.kh = 69.49;
+  r.c = 0.5;
+  r.mfrac = 100;
+  ur_model_set_restraint(m, a, 0, &r);
+  ur_model_set_restraint(m, a, 1, &r);
+  int hs = ur_model_add_sensor(m, "hinge", urSENS_HINGE, a, 0, NULL, NULL);
+  assert_true(hs >= 0);
+  m->opt.gravity[2] = 0;
+  m->opt.dt = 1e-5;
+  m->opt.integrator = urINT_RK4; /* the chain's momentum drifts O(dt) under semi-implicit Euler */
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+  double v[3] = {1, -0.5, 2}, w[3] = {0, 0, 0};
+  ur_set_free(m, d, f, NULL, NULL, v, w);
+  d->qvel[m->body[a].vadr] = 60; /* the arm whipped about its root: 0.06 kg m^2 at 60 rad/s */
+  ur_forward(m, d);
+  double p0[3], L0[3], p1[3], L1[3], xp, tb = 0;
+  ur_momentum(m, d, p0, L0);
+  for (int i = 0; i < 20000 && tb == 0; i++) {
+    ur_step(m, d);
+    ur_hinge_state(m, d, a, 0, &xp, &tb);
+  }
+  print_message("fracture: broke at %.5f s after a plastic set of %.4f rad\n", tb, xp);
+  assert_true(tb > 0 && fabs(xp) > 0.001);
+  ur_forward(m, d); /* the sensor reads the same */
+  assert_true(d->sensordata[m->sensor[hs].adr] == xp && d->sensordata[m->sensor[hs].adr + 1] == tb);
+  for (int i = 0; i < 5000; i++) {
+    ur_step(m, d);
+  }
+  ur_forward(m, d);
+  ur_momentum(m, d, p1, L1);
+  double dp = 0, dl = 0, np = 0, nl = 0;
+  for (int k = 0; k < 3; k++) {
+    dp = fmax(dp, fabs(p1[k] - p0[k]));
+    dl = fmax(dl, fabs(L1[k] - L0[k]));
+    np = fmax(np, fabs(p0[k]));
+    nl = fmax(nl, fabs(L0[k]));
+  }
+  print_message(
+      "fracture: |dp| %.2e of %.3g kg m/s, |dL| %.2e of %.3g kg m^2/s; arm rate %.3g "
+      "rad/s\n",
+      dp, np, dl, nl, d->qvel[m->body[a].vadr]);
+  assert_true(dp <= 1e-10 * np && dl <= 1e-10 * nl); /* RK4 at 1e-5 s: ~1e-11 */
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
+
 // spherical joint with a linear restraint: KE + k |theta|^2 / 2 conserved at large angles
 static void test_spherical_energy(void** state) {
   urModel* m = ur_model_new();
@@ -206,7 +338,8 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_curve_stops),      cmocka_unit_test(test_hysteresis),
       cmocka_unit_test(test_saturation),       cmocka_unit_test(test_spherical_energy),
-      cmocka_unit_test(test_implicit_damping),
+      cmocka_unit_test(test_implicit_damping), cmocka_unit_test(test_plastic_hinge),
+      cmocka_unit_test(test_fracture),         cmocka_unit_test(test_fracture_momentum),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -26,7 +26,7 @@ static const struct {
   const char* msg; /* the whole message, or its start when it ends in '*' */
 } bad[] = {
     {PRE "bdy c parent=world\n",
-     "x.urm:4: unknown keyword 'bdy'; expected one of param, option, curve, body, restraint, "
+     "x.urm:4: unknown keyword 'bdy'; expected one of param, option, curve, material, section, layer, body, restraint, "
      "ellipsoid, law, pair, pairs, airbag, sensor, part, role, preset"},
     {PRE BODY_C "mass=\n", "x.urm:4: missing value for key 'mass'; expected mass=VALUE"},
     {PRE BODY_C "mass=1 colour=red\n",
@@ -151,7 +151,7 @@ static const struct {
      "x.urm:4: sensor 's': dof 0 does not exist on joint "
      "'b' (jointpos needs a revolute, universal or prismatic joint)"},
     {PRE "sensor s type=accel obj=b dof=1\n",
-     "x.urm:4: sensor 's': key 'dof' applies only to jointpos and jointvel"},
+     "x.urm:4: sensor 's': key 'dof' applies only to jointpos, jointvel and hinge"},
     {PRE "sensor s type=contact obj=b\n", "x.urm:4: dangling reference to pair 'b'"},
     {PRE "body c parent=world joint=free pos=0,0,0 mass=1 inertia=1,1,1\n"
          "ellipsoid f body=c pos=0,0,0 size=1,1,1\ncurve k x=0,1 y=0,1\nlaw l type=table load=k\n"

@@ -1,0 +1,232 @@
+/* test_modellang_material.c: the statements material, section and layer, and what the model
+ * language derives from them: an arm's hinge from beam theory (3EI/L, sigma_y Zp, hardening,
+ * fracture moment), the law between a drone part and a person's layer (Hertz's combination of
+ * both materials and radii, the layer's thickness and bone, a shell in series), a declared law
+ * that overrides a derivable one (kept, and noted), and the errors of each statement.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "modellang_fixture.h"
+
+/* a head with a scalp layer, and a drone whose arm is a carbon tube on a universal joint */
+#define HEAD                                                                                       \
+  "material scalp E=2.23e7 nu=0.29 density=1100 yield=3.42e6\n"                                    \
+  "body head parent=world joint=free pos=0,0,1.7 mass=4.5 inertia=0.02,0.02,0.015\n"               \
+  "ellipsoid cranium body=head pos=0,0,0 size=0.1,0.077,0.1\n"                                     \
+  "layer scalp_l on=cranium material=scalp thickness=0.006 bone_k=4.023e6 radius=0.0875 "          \
+  "mu=0.3 v_eps=0.01\n"
+#define DRONE                                                                                      \
+  "material cf E=5.48e10 nu=0.34 density=1600 yield=5.93e7 ultimate=6e8\n"                         \
+  "material abs E=2.3e9 nu=0.4 density=1050 yield=4e7\n"                                           \
+  "section arm_t shape=tube D=0.03 t=0.002\n"                                                      \
+  "section wall shape=shell t=0.002 R=0.1\n"                                                       \
+  "body main parent=world joint=free pos=0,0,3 mass=10 inertia=0.5,0.4,0.8\n"                      \
+  "body arm parent=main joint=universal pos=0.16,0,0 axis=0,1,0 axis2=0,0,1 mass=0.5 "             \
+  "com=0.3,0,0 inertia=0.001,0.002,0.003\n"                                                        \
+  "ellipsoid tube body=arm pos=0.22,0,0 size=0.22,0.015,0.015 material=cf section=arm_t\n"         \
+  "ellipsoid shell body=main pos=0,0,-0.1 size=0.2,0.2,0.1 material=abs section=wall\n"            \
+  "ellipsoid frame body=main pos=0,0,0 size=0.3,0.3,0.05 material=cf\n"
+
+/* the hinge derived from beam theory */
+static void test_hinge(void** state) {
+  char err[256];
+  urModel* m = parse1(DRONE
+                      "restraint arm dof=0 material=cf section=arm_t length=0.41 c=4 "
+                      "lo=-1.4 hi=1.4 kstop=5e4 cstop=20 fracture=1\n"
+                      "restraint arm dof=1 material=cf section=arm_t length=0.41\n"
+                      "sensor arm_h type=hinge obj=arm dof=0\n",
+                      NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urRestraint* r = m->body[ur_name_body(m, "arm")].rst;
+  double D = 0.03, d = 0.026, I = M_PI * (pow(D, 4) - pow(d, 4)) / 64;
+  double Zp = (pow(D, 3) - pow(d, 3)) / 6;
+  assert_near(r[0].k, 3 * 5.48e10 * I / 0.41, 1e-9 * r[0].k);
+  assert_near(r[0].mp, 5.93e7 * Zp, 1e-9 * r[0].mp);
+  assert_near(r[0].kh, r[0].k / 100, 1e-9 * r[0].k);
+  assert_near(r[0].mfrac, 6e8 * Zp, 1e-9 * r[0].mfrac);
+  assert_near(r[0].c, 4, 0);
+  assert_near(r[0].hi, 1.4, 0);
+  assert_near(r[1].mfrac, 0, 0); /* fracture is asked per restraint */
+  assert_near(r[1].sat, 0, 0);
+  assert_string_equal(m->note, "");
+
+  // its sensor: plastic deflection and the time it broke, 0 and 0 at rest
+  int s = ur_name_sensor(m, "arm_h");
+  assert_true(s >= 0);
+  assert_int_equal(m->sensor[s].dim, 2);
+  urData* dd = ur_data_new(m);
+  ur_forward(m, dd);
+  assert_near(dd->sensordata[m->sensor[s].adr], 0, 0);
+  assert_near(dd->sensordata[m->sensor[s].adr + 1], 0, 0);
+  ur_data_free(dd);
+  ur_model_free(m);
+}
+
+/* the drone-person law: Hertz's combination of both materials and radii, the layer's thickness
+   and bone, friction from the layer; a shell section in series */
+static void test_pair_law(void** state) {
+  char err[256];
+  urModel* m = parse1(HEAD DRONE "pairs dp a=cranium b=tube,shell,frame\n", NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  double es = 1 / ((1 - 0.29 * 0.29) / 2.23e7 + (1 - 0.34 * 0.34) / 5.48e10);
+  const urLaw* l = &m->pair[ur_name_pair(m, "dp_cranium_tube")].law;
+  assert_int_equal(l->type, urLAW_HERTZ);
+  assert_near(l->estar, es, 1e-9 * es);
+  assert_near(l->radius, 1 / (1 / 0.0875 + 1 / 0.015), 1e-15);
+  assert_near(l->layer_h, 0.006, 0);
+  assert_near(l->bone_k, 4.023e6, 0);
+  assert_near(l->mu, 0.3, 0);
+  assert_near(l->shell_k, 0, 0);
+  assert_int_equal(l->plastic, 0);
+
+  // the shell: ABS on scalp, radius in series with the shell's, Reissner's stiffness
+  l = &m->pair[ur_name_pair(m, "dp_cranium_shell")].law;
+  double ea = 1 / ((1 - 0.29 * 0.29) / 2.23e7 + (1 - 0.4 * 0.4) / 2.3e9);
+  assert_near(l->estar, ea, 1e-9 * ea);
+  assert_near(l->radius, 1 / (1 / 0.0875 + 1 / 0.1), 1e-15);
+  assert_near(l->shell_k, 4 * 2.3e9 * 0.002 * 0.002 / (0.1 * sqrt(3 * (1 - 0.16))), 1e-6);
+
+  // no section: the ellipsoids' curvature gives the radius
+  l = &m->pair[ur_name_pair(m, "dp_cranium_frame")].law;
+  assert_near(l->radius, urHERTZ_CURVATURE, 0);
+  assert_string_equal(m->note, "");
+  ur_model_free(m);
+}
+
+/* a declared law on a layer: kept as declared, and noted (with the material when the drone part
+   has one: an old drone file's own scalp law is noted too) */
+static void test_override(void** state) {
+  char err[256];
+  const char* law =
+      "law frame_head type=hertz E1=2.23e7 nu1=0.29 R1=0.0875 E2=5.48e10 "
+      "nu2=0.34 R2=0 mu=0.3 v_eps=0.01\n";
+  char text[4096];
+  snprintf(text, sizeof text, "%s%s%s", HEAD DRONE, law,
+           "pair fh a=cranium b=frame law=frame_head\n");
+  urModel* m = parse1(text, NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urLaw* l = &m->pair[ur_name_pair(m, "fh")].law;
+  assert_near(l->radius, 0.0875, 0);
+  assert_near(l->layer_h, 0, 0);
+  print_message("note: %s\n", m->note);
+  assert_non_null(strstr(m->note,
+                         "pair 'fh': its declared law overrides the layer of "
+                         "'cranium' and the material of 'frame'"));
+  ur_model_free(m);
+
+  snprintf(text, sizeof text, "%s%s%s", HEAD,
+           "body d parent=world joint=free pos=0,0,3 mass=1 inertia=0.1,0.1,0.1\n"
+           "ellipsoid e body=d pos=0,0,0 size=0.1,0.1,0.1\n",
+           law);
+  strcat(text, "pair fh a=cranium b=e law=frame_head\n");
+  m = parse1(text, NULL, 0, err);
+  assert_non_null(m);
+  assert_string_equal(m->note,
+                      "pair 'fh': its declared law overrides the layer of 'cranium' "
+                      "(uasimpact-model(5), MATERIALS)");
+  ur_model_free(m);
+
+  // a drone without a layer on the other side: nothing to note
+  m = parse1(DRONE
+             "law t type=hertz E1=1e9 nu1=0.3 E2=1e9 nu2=0.3 R1=0.1 R2=0.1\n"
+             "pair x a=tube b=ground law=t\n",
+             NULL, 0, err);
+  assert_non_null(m);
+  assert_string_equal(m->note, "");
+  ur_model_free(m);
+}
+
+/* a foam curve from the Avalle-Belingardi-Ibba law at the strains given, scaled */
+static void test_foam_curve(void** state) {
+  char err[256];
+  urModel* m = parse1(
+      "curve f x=0,0.1,0.5,0.8 abi=1,30,2,0.3,1.6 yscale=4e5\n"
+      "law foam type=foam stress=f thickness=0.03 unload_r=0.2 unload_p=4\n"
+      "body a parent=world joint=free pos=0,0,1 mass=1 inertia=0.1,0.1,0.1\n"
+      "ellipsoid e body=a pos=0,0,0 size=0.1,0.1,0.1\n"
+      "pair p a=e b=ground law=foam\n",
+      NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urCurve* c = &m->pair[0].law.stress;
+  static const double X[4] = {0, 0.1, 0.5, 0.8};
+  assert_int_equal(c->n, 4);
+  for (int i = 0; i < 4; i++) {
+    double e = X[i];
+    double s = 4e5 * ((1 - exp(-30 * e * (1 - e) * (1 - e))) + 0.3 * pow(e / (1 - e), 1.6));
+    assert_near(c->y[i], s, 1e-9 * s + 1e-12);
+  }
+  ur_model_free(m);
+}
+
+/* one clear error per mistake */
+static void test_errors(void** state) {
+  static const struct {
+    const char* text;
+    const char* msg;
+  } bad[] = {
+      {DRONE "restraint arm dof=0 material=cf section=arm_t length=0.4 k=100\n",
+       "k is an explicit law and material= derives one"},
+      {DRONE "restraint arm dof=0 material=cf section=arm_t\n",
+       "needs material=, section= and length= (m) together"},
+      {DRONE "restraint arm dof=0 material=abs section=arm_t length=0.4 fracture=1\n",
+       "fracture=1 needs the material's ultimate stress or fracture_strain"},
+      {DRONE "restraint arm dof=0 material=cf section=wall length=0.4\n",
+       "section 'wall' has no bending law"},
+      {"material soft E=1e6 nu=0.45 density=1100\n" DRONE
+       "restraint arm dof=0 material=soft section=arm_t length=0.4\n",
+       "material 'soft' gives no yield stress"},
+      {"curve c x=0,0.5 y=0,1 abi=1,30,2,0.3,1.6\n", "give y=LIST or abi=A,E,m,B,n"},
+      {"curve c x=0,1 abi=1,30,2,0.3,1.6\n", "the foam law takes strains in [0, 1)"},
+      {"curve c x=0,0.5 abi=0,30,2,0.3,1.6\n", "abi=A,E,m,B,n needs A > 0"},
+      {DRONE "restraint arm dof=0 k=100\nsensor h type=hinge obj=arm dof=0\n",
+       "joint 'arm' dof 0 has no hinge from beam theory"},
+      {"section s shape=tube D=0.06 t=0.002\nrestraint x dof=0 material=cf section=s\n"
+       "material cf E=1e9 nu=0.3 density=1000 yield=1e7\n",
+       "dangling reference to body 'x'"},
+      {"body b parent=world joint=free pos=0,0,1 mass=1 inertia=0.1,0.1,0.1\n"
+       "ellipsoid e body=b pos=0,0,0 size=0.1,0.1,0.1\n"
+       "layer l on=e material=late thickness=0.006 bone_k=1e6\n"
+       "material late E=1e6 nu=0.4 density=1000\n",
+       "dangling reference to material 'late' (defined later, at t.urm:4; define it before use)"},
+      {"section s shape=tube D=0.02\n", "a tube needs D,t (m)"},
+      {"section s shape=plate t=0.002 D=0.1\n", "a plate takes t (and b, its width), not D"},
+      {"section s shape=tube D=0.02 t=0.01\n", "must be thinner than half its diameter"},
+      {"material m E=1e9 nu=0.5 density=1000 yield=1e7\n", "nu must be in [0, 0.5)"},
+      {"material m E=1e9 nu=0.3 density=1000 yield=1e7 ultimate=5e6\n", "must not be below yield"},
+      {HEAD "layer again on=cranium material=scalp thickness=0.005 bone_k=1e6\n",
+       "ellipsoid 'cranium' already has a layer"},
+      {HEAD DRONE "pair p a=tube b=frame\n", "no law= and nothing to derive one from"},
+      {HEAD "layer l2 on=cranium material=skin thickness=0.01 bone_k=1e6\n",
+       "dangling reference to material 'skin'"},
+  };
+  for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+    char err[256] = "";
+    urModel* m = parse1(bad[i].text, NULL, 0, err);
+    if (m || !strstr(err, bad[i].msg)) {
+      print_error("case %zu: got '%s', expected '%s'\n", i, err, bad[i].msg);
+    }
+    assert_null(m);
+    assert_non_null(strstr(err, bad[i].msg));
+  }
+}
+
+int main(void) {
+  (void)model_text; /* the fixture's model: not used here */
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_hinge),    cmocka_unit_test(test_pair_law),
+      cmocka_unit_test(test_override), cmocka_unit_test(test_foam_curve),
+      cmocka_unit_test(test_errors),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
