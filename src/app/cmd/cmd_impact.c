@@ -165,6 +165,10 @@ static const char* channel_unit(const urModel* m, int j) {
     case urSENS_AIRBAG: return k == 0 ? "Pa" : k == 1 ? "m^3" : k == 2 ? "N" : "";
     case urSENS_BODYPOS: return "m";
     case urSENS_BODYVEL: return "m/s";
+    case urSENS_HINGE:
+      /* plastic deflection (a prismatic hinge's in m), the time it broke */
+      if (k == 1) return "s";
+      return m->body[sn->obj].jtype == urJNT_PRISMATIC ? "m" : "rad";
     }
   }
   return "";
