@@ -272,6 +272,7 @@ static int show_prefix(uraCtx* c, const char* prefix) {
   for (int i = 0; m && i < m->nparam; i++) {
     if (!strncmp(m->param[i].name, prefix, n)) show_model_param(c, &m->param[i]), found++;
   }
+  if (found && !strncmp("bag", prefix, n < 3 ? n : 3)) ura_bag_derived(c, c->out);
   return found;
 }
 
@@ -311,6 +312,7 @@ int ura_cmd_show(uraCtx* c, int argc, char** argv) {
           "them)\n");
   const urModel* m = ura_model(c);
   for (int i = 0; m && i < m->nparam; i++) show_model_param(c, &m->param[i]);
+  ura_bag_derived(c, c->out);
   ura_dist_show(c);
   return 0;
 }

@@ -145,6 +145,19 @@ static void channel_name(const urModel* m, int j, char* buf, size_t n) {
   }
 }
 
+/* unit of sensor channel j: an airbag's Pa (absolute), m^3, N and 1 (Green strain); other
+   channels "SI" (their units: uasimpact-model(5), SENSORS) */
+static const char* channel_unit(const urModel* m, int j) {
+  static const char* const bag[] = {"Pa", "m^3", "N", "1"};
+  for (int i = 0; i < m->nsensor; i++) {
+    const urSensor* sn = m->sensor + i;
+    int k = j - sn->adr;
+    if (k < 0 || k >= sn->dim) continue;
+    if (sn->type == urSENS_AIRBAG && k < 4) return bag[k];
+  }
+  return "SI";
+}
+
 /* every sensor channel of the last impact, one row per sample from from to to (s) */
 int ura_history_samples(uraCtx* c, double from, double to) {
   if (!c->have_impact) return ura_fail(c, "history: no impact yet; run 'impact DPAR DPERP'");
@@ -251,7 +264,7 @@ int ura_last_trace(uraCtx* c, uraTrace* tr) {
     char buf[80];
     channel_name(m, j, buf, sizeof buf);
     c->trace.names[NDERIVED + j] = strdup(buf);
-    c->trace.units[NDERIVED + j] = "SI";
+    c->trace.units[NDERIVED + j] = channel_unit(m, j);
     for (int i = 0; i < n; i++) {
       c->trace.v[(size_t)(NDERIVED + j) * n + i] = d->hist[(size_t)i * stride + 1 + j];
     }
