@@ -41,7 +41,7 @@ const uraCmd ura_cmds[] = {
      "designs, or compare two (a grid each): columns design_a,case_a,q_a,design_b,case_b,q_b,"
      "ratio (q_b/q_a); the last grid becomes the difference P_b - P_a (view shows it)"},
     {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
-     "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
+     "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, b its airbag, "
      "q returns"},
     {"plot", ura_cmd_plot, 1, -1, uraC_NONE,
      "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face]|montecarlo|tornado",

@@ -110,7 +110,7 @@ check compare_fits fits80 p1
 
 # the viewer at 80x24: title, values and keys all on screen
 line p1 "view"
-check view_keys wait_for p1 '^c centre  Enter inspect  p plot  q back'
+check view_keys wait_for p1 '^c centre  Enter inspect  p plot  b bag  q back'
 check view_values cond 'grep -q "^dpar [-0-9.]* m  dperp [-0-9.]* m  P " "$TMP/screen" &&
   grep -q "^VC thorax [-0-9.]* m/s abdomen [-0-9.]* m/s" "$TMP/screen"'
 check view_orientation cond 'grep -q "dperp m (+ left of course), rows dpar m (+ ahead)" "$TMP/screen"'
