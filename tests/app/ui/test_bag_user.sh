@@ -80,6 +80,10 @@ check show_derived has "$TMP/out" '^# derived, membrane bag_bottom: 218 nodes, 4
 check params_who has "$TMP/out" '^bag_e1t  *132000 N/m  (model)$'
 run -c 'case A; set bag_model analytic; show bag'
 check show_analytic has "$TMP/out" '^# derived, airbag bag_bottom: analytic uniform-pressure bag (bag_model analytic: fast, less faithful'
+# A2's front bag is a membrane too
+run -c 'case A2; set bag_model membrane; model params bag'
+check a2_two_membranes cond 'has "$TMP/out" "^# derived, membrane bag_bottom: 218 nodes" &&
+  has "$TMP/out" "^# derived, membrane bag_front: 218 nodes"'
 run -c 'case B; show bag'
 check show_no_bag cond '[ $RC -eq 0 ] && ! grep -q "^# derived" "$TMP/out"'
 finish
