@@ -56,8 +56,8 @@ const uraCmd ura_cmds[] = {
      "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
      "p_vc,p (with 'set use_defl 1' also defl_thorax after vc_abdomen and p_defl after p_vc)"},
     {"history", ura_cmd_history, 0, -1, uraC_NONE, "history [all|CHANNEL...] [FROM:TO]",
-     "the last impact at a glance: the peak of each derived signal and its time, the injury "
-     "criteria and P; all: every sensor channel's samples (time and every channel, as export "
+     "the last impact at a glance: the peak of each derived signal and its time, each airbag's "
+     "pressure, volume, force and strain, the injury criteria and P; all: every sensor channel's samples (time and every channel, as export "
      "history writes them); CHANNEL...: those signals' samples; FROM:TO: only the samples from "
      "FROM to TO ms after tau"},
     {"contacts", ura_cmd_contacts, 0, 0, uraC_NONE, "contacts",
