@@ -87,17 +87,8 @@ run -c "model load $TMP/parts.urm"
 check too_many_parts fails_with "parts.urm:257: more than 256 parts"
 
 # ---- Ctrl-C while a load waits (a FIFO nobody writes) ----
-# the signal is sent once the program waits in the kernel (/proc/PID/wchan: opening a FIFO,
-# reading a pipe), not after a fixed time: starting up compiles the default case, whose membrane
-# airbag is inflated first (0.7 s of CPU, more on a loaded machine); where /proc does not say,
-# after 0.5 s as before
-waiting_in() { n=0
-  while [ "$n" -lt 600 ]; do
-    w=$(cat "/proc/$1/wchan" 2>/dev/null) || { sleep 0.5; return 0; }
-    echo "$w" | grep -Eqx "$2" && return 0
-    sleep 0.1; n=$((n + 1))
-  done
-}
+# the signal is sent once the program waits in the kernel (waiting_in, tests/lib.sh), not after
+# a fixed time: starting up compiles the default case, whose membrane airbag is inflated first
 mkfifo "$TMP/fifo"
 "$U" -c "model load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
 waiting_in $PID 'wait_for_partner|fifo_open'
