@@ -2,8 +2,9 @@
  * semantic colour pairs (glyphs and attributes without colour or with NO_COLOR), axes in metres,
  * a legend, the conditions and Q, the values under the cursor; Enter inspects a cell (its peak
  * values, its airbags at a glance and head acceleration drawn in the terminal), p sends its
- * histories to gnuplot, b its membrane airbags (plot bag), q or Esc returns to the prompt. The terminal is in raw mode, so Ctrl-C is a key here, not SIGINT:
- * while Enter's impact or p's gnuplot runs, a thread watches the keys (keywatch.c), so that
+ * histories to gnuplot, b its membrane airbags (plot bag), q or Esc returns to the prompt.
+ * The terminal is in raw mode, so Ctrl-C is a key here, not SIGINT: while Enter's impact or
+ * p's or b's gnuplot runs, a thread watches the keys (keywatch.c), so that
  * Ctrl-C stops the work and q stops it and leaves, within 0.2 s.
  * The window size is polled (TIOCGWINSZ) as well as taken from KEY_RESIZE: ncurses only
  * catches SIGWINCH when nobody else does. The signal dispositions ncurses installs are undone
