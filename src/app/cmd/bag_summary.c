@@ -1,10 +1,10 @@
 /* bag_summary.c: the airbags of the last impact as a few lines of text, for the viewer's cell
- * inspection (view.c) and whoever wants them at a glance: four lines per bag, its model (membrane or
- * analytic), the peak gauge pressure and its time, the volume lost at the smallest volume, the
- * peak fabric strain (membrane), the peak normal force on the person, and whether the drone
- * reached the person through the bag (bottoming: a part of the bag's carrier body touched the
- * person). The values come from the bag's sensor (type=airbag) in the impact's histories and
- * from the impact's contact records, as 'history' and 'contacts' print them. */
+ * inspection (view.c) and whoever wants them at a glance: four lines per bag, its model
+ * (membrane or analytic), the peak gauge pressure and its time, the volume lost at the smallest
+ * volume, the peak fabric strain (membrane), the peak normal force on the person, and whether
+ * the drone reached the person through the bag (bottoming: a part of the bag's carrier body
+ * touched the person). The values come from the bag's sensor (type=airbag) in the impact's
+ * histories and from the impact's contact records, as 'history' and 'contacts' print them. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
