@@ -24,6 +24,18 @@ skip() {
 run() { "$UASIMPACT" "$@" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
 run_in() { f=$1; shift; "$UASIMPACT" "$@" <"$f" >"$TMP/out" 2>"$TMP/err"; RC=$?; }
 
+# waiting_in PID RE: wait (up to 60 s) until process PID sleeps in a kernel function matching
+# the extended regular expression RE (/proc/PID/wchan: wait_for_partner opening a FIFO,
+# anon_pipe_read or pipe_read reading one), so that a signal meets it there and not while it
+# starts up; where /proc does not say, 0.5 s
+waiting_in() { _n=0
+  while [ "$_n" -lt 600 ]; do
+    _w=$(cat "/proc/$1/wchan" 2>/dev/null) || { sleep 0.5; return 0; }
+    echo "$_w" | grep -Eqx "$2" && return 0
+    sleep 0.1; _n=$((_n + 1))
+  done
+}
+
 # a compound condition, evaluated in the caller's variables: check NAME cond '[ a ] && [ b ]'
 cond() { eval "$1"; }
 lines() { wc -l <"$1" | tr -d ' '; }

@@ -436,6 +436,10 @@ void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
 /* a model parameter's value for messages, six digits and its SI unit: "1e+20 N*m/rad" */
 void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
+/* the values the compiled model derives for its airbags (not parameters: set none of them),
+   one '#' line per bag: which bag model, and for a membrane its mesh, fabric mass, stable step
+   and sub-steps, inflated volume and pressure, strain (show, model params) */
+void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t);
 /* the live state becomes ns if the model compiles with its parameter overrides (unchanged
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
 int ura_model_state(uraCtx* c, const uraState* ns, const char* who);

@@ -595,29 +595,39 @@ static int model_params(uraCtx* c, const char* prefix) {
                     "the names 'model params' lists",
                     prefix);
   }
-  /* the compiled membrane bags: mesh, time step (sub-steps), inflated state */
-  for (int i = 0; i < m->nbag && !strncmp("bag", prefix, strlen(prefix) < 3 ? strlen(prefix) : 3);
-       i++) {
+  if (!strncmp("bag", prefix, strlen(prefix) < 3 ? strlen(prefix) : 3))
+    ura_bag_derived(c, c->out, t);
+  if (t) ura_table_print(c, t);
+  return 0;
+}
+
+void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t) {
+  const urModel* m = ura_model(c);
+  for (int i = 0; m && i < m->nbag; i++) {
     const urAirbag* b = m->bag + i;
-    if (b->type != urBAG_MEMBRANE || !b->mem) continue;
-    const urMembrane* mb = b->mem;
-    double mass = 0;
-    for (int k = 0; k < mb->nn; k++) mass += mb->mass[k];
     char line[600];
-    snprintf(line, sizeof line,
-             "membrane %s: %d nodes, %d triangles, %d mount nodes, fabric %.3g kg; stable step "
-             "%.3g us: %d sub-step%s per %.3g us step; inflated %.4g L at %.6g Pa (gauge %.4g "
-             "Pa), largest yarn strain %.3g %%",
-             b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
-             b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt, 1e3 * mb->vref, mb->pref,
-             mb->pref - mb->spec.patm, 100 * mb->strain0);
+    if (b->type != urBAG_MEMBRANE || !b->mem) {
+      snprintf(line, sizeof line,
+               "derived, airbag %s: analytic uniform-pressure bag (bag_model analytic: fast, "
+               "less faithful; 'set bag_model membrane' for the finite-element bag)",
+               b->name);
+    } else {
+      const urMembrane* mb = b->mem;
+      double mass = 0;
+      for (int k = 0; k < mb->nn; k++) mass += mb->mass[k];
+      snprintf(line, sizeof line,
+               "derived, membrane %s: %d nodes, %d triangles, %d mount nodes, fabric %.3g kg; "
+               "stable step %.3g us: %d sub-step%s per %.3g us step; inflated %.4g L at %.6g Pa "
+               "(gauge %.4g Pa), largest yarn strain %.3g %%",
+               b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
+               b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt, 1e3 * mb->vref, mb->pref,
+               mb->pref - mb->spec.patm, 100 * mb->strain0);
+    }
     if (t)
       ura_table_note(t, "%s", line);
     else
-      fprintf(c->out, "# %s\n", line);
+      fprintf(f, "# %s\n", line);
   }
-  if (t) ura_table_print(c, t);
-  return 0;
 }
 
 int ura_cmd_model(uraCtx* c, int argc, char** argv) {

@@ -48,7 +48,7 @@ const uraCmd ura_cmds[] = {
      "designs, or compare two (a grid each): columns design_a,case_a,q_a,design_b,case_b,q_b,"
      "ratio (q_b/q_a); the last grid becomes the difference P_b - P_a (view shows it)"},
     {"view", ura_cmd_view, 0, 0, uraC_NONE, "view",
-     "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, "
+     "browse the last grid in colour (ncurses): arrows move, Enter inspects a cell, p plots it, b its airbag, "
      "q returns"},
     {"plot", ura_cmd_plot, 1, -1, uraC_NONE,
      "plot pof|grid|bag|history [SIGNAL...|all]|sweep [wind|face|NAME]|montecarlo|tornado",
@@ -66,8 +66,8 @@ const uraCmd ura_cmds[] = {
      "dpar,dperp,contact,hic15,nij,nij_tf,nij_te,nij_cf,nij_ce,vc_thorax,vc_abdomen,p_hic,p_nij,"
      "p_vc,p (with 'set use_defl 1' also defl_thorax after vc_abdomen and p_defl after p_vc)"},
     {"history", ura_cmd_history, 0, -1, uraC_NONE, "history [all|CHANNEL...] [FROM:TO]",
-     "the last impact at a glance: the peak of each derived signal and its time, the injury "
-     "criteria and P; all: every sensor channel's samples (time and every channel, as export "
+     "the last impact at a glance: the peak of each derived signal and its time, each airbag's "
+     "pressure, volume, force and strain, the injury criteria and P; all: every sensor channel's samples (time and every channel, as export "
      "history writes them); CHANNEL...: those signals' samples; FROM:TO: only the samples from "
      "FROM to TO ms after tau"},
     {"contacts", ura_cmd_contacts, 0, 0, uraC_NONE, "contacts",
@@ -370,6 +370,7 @@ static int show_prefix(uraCtx* c, const char* prefix) {
   for (int i = 0; m && i < m->nparam; i++) {
     if (!strncmp(m->param[i].name, prefix, n)) show_model_param(c, &m->param[i]), found++;
   }
+  if (found && !strncmp("bag", prefix, n < 3 ? n : 3)) ura_bag_derived(c, c->out, show_tab);
   return found;
 }
 
@@ -431,6 +432,7 @@ static int show_lines(uraCtx* c, int argc, char** argv) {
   }
   const urModel* m = ura_model(c);
   for (int i = 0; m && i < m->nparam; i++) show_model_param(c, &m->param[i]);
+  ura_bag_derived(c, c->out, show_tab);
   if (!show_tab) {
     ura_dist_show(c);
   } else {

@@ -142,6 +142,11 @@ void ura_cond_notes(uraTable* t, const char* casename, double wind, int paper, i
                     double shift);
 int ura_last_trace(uraCtx* c, uraTrace* tr); /* histories of the last impact; -1: none */
 int ura_inspect_cell(uraCtx* c, urCell* cell, uraTrace* tr);
+/* the airbags of the last impact in at most max lines of text, four per bag (bag_summary.c):
+   model, peak gauge pressure, volume lost, peak fabric strain, peak force on the person,
+   bottoming (a part of the bag's carrier touched the person); 0 lines without an impact or
+   bag */
+int ura_bag_summary(uraCtx* c, char (*lines)[160], int max);
 /* run one impact in a work space of its own, which becomes c->work only when it finishes: a
    failed or interrupted impact leaves the last one (histories, contacts) as it was; 0, or -1
    with r->status and r->reason */

@@ -30,6 +30,39 @@ static int parse_range(uraCtx* c, const char* word, double* from, double* to) {
   return 1;
 }
 
+/* each airbag's channels (its sensor type=airbag): peak pressure (absolute), smallest volume,
+   peak normal force on the person, peak fabric strain (membrane bags; 0 for analytic ones) */
+static void bag_rows(uraCtx* c, const uraTrace* tr, uraTable* t) {
+  static const char* const sfx[] = {"p", "v", "f", "strain"};
+  const urModel* m = c->setup.m;
+  int nbag = 0;
+  for (int i = 0; m && i < m->nsensor; i++) {
+    const urSensor* sn = m->sensor + i;
+    if (sn->type != urSENS_AIRBAG) continue;
+    for (int q = 0; q < 4; q++) {
+      char name[96];
+      snprintf(name, sizeof name, "%s_%s", sn->name, sfx[q]);
+      int k = ura_trace_find(tr, name);
+      if (k < 0) continue;
+      const double* v = tr->v + (size_t)k * tr->n;
+      int at = 0;
+      for (int j = 1; j < tr->n; j++) {
+        if (q == 1 ? v[j] < v[at] : fabs(v[j]) > fabs(v[at])) at = j;
+      }
+      ura_table_cell(t, "%s", name);
+      ura_table_cell(t, "%.6g", v[at]);
+      ura_table_cell(t, "%s", tr->units[k]);
+      ura_table_cell(t, "%.2f", 1e3 * tr->t[at]);
+    }
+    nbag++;
+  }
+  if (nbag) {
+    ura_table_note(t,
+                   "airbag channels: _p absolute pressure, _v gas volume (its smallest), _f "
+                   "normal force on the person, _strain largest fabric yarn strain (Green)");
+  }
+}
+
 /* the peak of each derived signal, then the criteria; how to see the samples */
 static int summary(uraCtx* c, const uraTrace* tr) {
   static const char* const cols[] = {"signal", "peak", "unit", "t_ms"};
@@ -53,6 +86,7 @@ static int summary(uraCtx* c, const uraTrace* tr) {
     ura_table_cell(t, "%s", tr->units[k]);
     ura_table_cell(t, "%.2f", 1e3 * tr->t[at]);
   }
+  bag_rows(c, tr, t);
   ura_table_print(c, t);
 
   static const char* const ccols[] = {"criterion", "value", "at", "p"};
@@ -140,8 +174,9 @@ static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double
   for (int s = 0; s < nsel && tr->units; s++) ura_table_unit(t, s + 1, tr->units[sel[s]]);
   ura_table_note(t, "impact %s (%g, %g) m; t in s from tau; units: %s",
                  c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar, c->last_dperp,
-                 "head_acc m/s^2, neck forces N, moments N m, deflections m, sensor channels SI "
-                 "(their units: history)");
+                 "head_acc m/s^2, neck forces N, moments N m, deflections m, airbag channels "
+                 "_p Pa (absolute), _v m^3, _f N, _strain 1 (Green), other sensor channels in "
+                 "the units 'history' lists");
   for (int i = 0; i < tr->n; i++) {
     if (tr->t[i] < from || tr->t[i] > to) continue;
     ura_table_cell(t, "%.9g", tr->t[i]);

@@ -162,7 +162,7 @@ static const char* channel_unit(const urModel* m, int j) {
       if (sn->type == urSENS_JOINTPOS) return lin ? "m" : "rad";
       return lin ? "m/s" : "rad/s";
     case urSENS_CONTACT: return k == 1 ? "m" : "N";
-    case urSENS_AIRBAG: return k == 0 ? "Pa" : k == 1 ? "m^3" : k == 2 ? "N" : "";
+    case urSENS_AIRBAG: return k == 0 ? "Pa" : k == 1 ? "m^3" : k == 2 ? "N" : "1";
     case urSENS_BODYPOS: return "m";
     case urSENS_BODYVEL: return "m/s";
     case urSENS_HINGE:

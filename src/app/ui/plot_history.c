@@ -61,6 +61,25 @@ static const char* describe(const char* name) {
   return name;
 }
 
+/* the legend of signal k: a derived signal's description; an airbag channel (a sensor channel
+   SENSOR_p, _v, _f, _strain in Pa, m^3, N, 1) its name and what it is; others their name */
+static void legend(const uraTrace* tr, int k, char* buf, size_t n) {
+  static const char* const d[][3] = {{"_p", "Pa", "airbag gas pressure, absolute"},
+                                     {"_v", "m^3", "airbag gas volume"},
+                                     {"_f", "N", "airbag normal force on the person"},
+                                     {"_strain", "1", "largest fabric yarn strain (Green)"}};
+  const char* name = tr->names[k];
+  const char* u = tr->units ? tr->units[k] : NULL;
+  size_t len = strlen(name);
+  snprintf(buf, n, "%s", describe(name));
+  for (int i = 0; i < 4 && u; i++) {
+    size_t sl = strlen(d[i][0]);
+    if (len > sl && !strcmp(name + len - sl, d[i][0]) && !strcmp(u, d[i][1])) {
+      snprintf(buf, n, "%s: %s", name, d[i][2]);
+    }
+  }
+}
+
 static int write_trace(uraCtx* c, FILE* f, const void* arg) {
   const traceargs* a = arg;
   const uraTrace* tr = a->tr;
@@ -132,8 +151,10 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
               "fc rgb '#ffd580' fs solid 0.6 noborder\n",
               a->t1 * 1e3, a->t2 * 1e3);
     }
+    char what[160];
+    legend(tr, k, what, sizeof what);
     fprintf(f, "plot $T using 1:%d with lines lw 2 title ", s + 2);
-    ura_plot_quote(f, describe(tr->names[k]));
+    ura_plot_quote(f, what);
     fprintf(f, " noenhanced"); /* names hold '_': no subscripts */
     if (hic) {
       char key[128];

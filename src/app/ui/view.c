@@ -1,9 +1,10 @@
 /* view.c: the ncurses viewer of the last grid (htop-like): cells coloured by band through
  * semantic colour pairs (glyphs and attributes without colour or with NO_COLOR), axes in metres,
  * a legend, the conditions and Q, the values under the cursor; Enter inspects a cell (its peak
- * values and head acceleration drawn in the terminal), p sends its histories to gnuplot, q or
- * Esc returns to the prompt. The terminal is in raw mode, so Ctrl-C is a key here, not SIGINT:
- * while Enter's impact or p's gnuplot runs, a thread watches the keys (keywatch.c), so that
+ * values, its airbags at a glance and head acceleration drawn in the terminal), p sends its
+ * histories to gnuplot, b its membrane airbags (plot bag), q or Esc returns to the prompt.
+ * The terminal is in raw mode, so Ctrl-C is a key here, not SIGINT: while Enter's impact or
+ * p's or b's gnuplot runs, a thread watches the keys (keywatch.c), so that
  * Ctrl-C stops the work and q stops it and leaves, within 0.2 s.
  * The window size is polled (TIOCGWINSZ) as well as taken from KEY_RESIZE: ncurses only
  * catches SIGWINCH when nobody else does. The signal dispositions ncurses installs are undone
@@ -36,7 +37,7 @@ static int head_rows = 3, foot_rows = 3;
 #define STATUS_ONE_LINE 104 /* narrower: the cursor values take two lines */
 #define KEYS                                                                                       \
   "arrows/hjkl move  PgUp/PgDn page  Home/End first/last row  0/$ first/last column"               \
-  "  c centre  Enter inspect  p plot  q back"
+  "  c centre  Enter inspect  p plot  b bag  q back"
 
 typedef struct {
   uraCtx* c;
@@ -400,6 +401,16 @@ static void draw_panel(viewer* v) {
   snprintf(buf, sizeof buf, "p     %.4f (%.1f %%)", cl->p, cl->p * 100);
   put(w, y, 2, v->role_attr[ura_grid_role(v->c->last.diff, cl)], buf);
 
+  /* the airbags of the cell's impact: pressure, volume, strain, force, bottoming */
+  if (v->have_trace) {
+    /* four lines a bag, as many as leave the trace its three rows (and a blank line) */
+    char bl[8][160];
+    int room = (ph - 10 - y) / 4 * 4;
+    int nb = room >= 4 ? ura_bag_summary(v->c, bl, room > 8 ? 8 : room) : 0;
+    if (nb > 0) y++;
+    for (int k = 0; k < nb; k++) put(w, ++y, 2, A_NORMAL, bl[k]);
+  }
+
   /* the head acceleration, or why there is none */
   y += 2;
   if (!v->c->inspect) {
@@ -412,7 +423,7 @@ static void draw_panel(viewer* v) {
       put(w, y + 1, 2, A_DIM, "(enlarge the window to see the trace)");
     }
   }
-  put(w, ph - 2, 2, A_DIM, "p plot in gnuplot   any other key closes");
+  put(w, ph - 2, 2, A_DIM, "p plot in gnuplot   b bag plot   any other key closes");
   wnoutrefresh(stdscr);
   wnoutrefresh(w);
   doupdate();
@@ -557,6 +568,32 @@ static void plot(viewer* v) {
     snprintf(v->note, sizeof v->note, "plot: histories sent to gnuplot");
 }
 
+/* b: the cell's membrane airbags at first contact and peak pressure to gnuplot (plot bag) */
+static void plot_bag(viewer* v) {
+  if (!v->c->inspect) {
+    snprintf(v->note, sizeof v->note, "bag: impact simulation not available for this cell");
+    return;
+  }
+  if (!v->have_trace || v->trow != v->row || v->tcol != v->col) {
+    inspect(v, 0);
+    if (v->gone || !v->have_trace) return;
+  }
+  quiet q;
+  uraKeyWatch kw;
+  waiting("plotting the airbag in gnuplot...");
+  quiet_begin(v->c, &q);
+  ura_keywatch_start(&kw, v->in);
+  int rc = ura_plot_bag(v->c);
+  watched(v, &kw);
+  quiet_end(v->c, &q, NULL, 0);
+  if (rc)
+    snprintf(v->note, sizeof v->note, "%s", v->c->err);
+  else if (v->c->st.output[0])
+    snprintf(v->note, sizeof v->note, "plot bag: wrote %s", v->c->st.output);
+  else
+    snprintf(v->note, sizeof v->note, "plot bag: the airbag sent to gnuplot");
+}
+
 /* follow the terminal's size; 1 when it changed */
 static int follow_size(viewer* v) {
   struct winsize ws;
@@ -580,15 +617,17 @@ static void run(viewer* v) {
     dirty = 1;
     if (ch == KEY_RESIZE) continue;
 
-    /* the panel takes p, and any other key closes it */
+    /* the panel takes p and b, and any other key closes it */
     if (v->panel) {
       v->panel = 0;
       if (ch == 'p') plot(v);
-      if (ch == 'q' || ch == 27 || ch == 'p' || ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
+      if (ch == 'b') plot_bag(v);
+      if (ch == 'q' || ch == 27 || ch == 'p' || ch == 'b' || ch == '\n' || ch == '\r' ||
+          ch == KEY_ENTER) {
         continue;
       }
     }
-    if (ch != 'p') v->note[0] = 0;
+    if (ch != 'p' && ch != 'b') v->note[0] = 0;
     if (COLS < MIN_W || LINES < MIN_H) {
       if (ch == 'q' || ch == 27) return;
       continue;
@@ -622,6 +661,7 @@ static void run(viewer* v) {
     case '\r':
     case KEY_ENTER: inspect(v, 1); break;
     case 'p': plot(v); break;
+    case 'b': plot_bag(v); break;
     case 3:
       snprintf(v->note, sizeof v->note, "Ctrl-C does not stop the viewer; q returns to the prompt");
       break;

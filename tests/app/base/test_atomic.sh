@@ -106,12 +106,12 @@ check stdout_pipe [ "$(cat "$TMP/n")" -ge 10 ]
 
 # a FIFO: written in place when a reader comes; without one, Ctrl-C stops the wait
 mkfifo "$TMP/fifo"
-timeout 10 cat "$TMP/fifo" >"$TMP/fifo.out" &
+timeout 120 cat "$TMP/fifo" >"$TMP/fifo.out" & # long: start-up inflates case A's airbag
 run -c "grid load $TMP/small.csv; export grid $TMP/fifo"
 wait
 check fifo_written cond '[ "$RC" -eq 0 ] && [ -p "$TMP/fifo" ] && grep -q "^dpar,dperp" "$TMP/fifo.out"'
 "$U" -c "grid load $TMP/small.csv; export grid $TMP/fifo" >/dev/null 2>"$TMP/err" & PID=$!
-sleep 0.5; t0=$(date +%s%N); kill -INT $PID; wait $PID; RC=$?
+waiting_in $PID 'wait_for_partner|fifo_open'; t0=$(date +%s%N); kill -INT $PID; wait $PID; RC=$?
 MS=$(( ($(date +%s%N) - t0) / 1000000 )); echo "  (SIGINT while a writer waits for a FIFO reader: ended after $MS ms)"
 check fifo_wait_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
   has "$TMP/err" "export: interrupted (Ctrl-C) while opening"'

@@ -80,14 +80,14 @@ check settle_stopped cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
 # ---- a read that blocks (a FIFO nobody writes): interrupted, not hung ----
 mkfifo "$TMP/fifo"
 "$U" -c "source $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
-sleep 0.5
+waiting_in $PID 'wait_for_partner|fifo_open' # once it waits there (start-up inflates the bag)
 interrupt
 check fifo_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "interrupted (Ctrl-C) while opening"'
 
 # ... and a grid file that is a FIFO nobody writes
 "$U" -c "grid load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
-sleep 0.5
+waiting_in $PID 'wait_for_partner|fifo_open'
 interrupt
 check fifo_grid_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
   has "$TMP/err" "grid load: interrupted (Ctrl-C) while opening"'

@@ -76,7 +76,7 @@ keys v1 Enter
 check panel_open wait_for v1 'impact simulation not available|head acceleration vs time' 60
 check panel_values wait_for v1 'HIC15 .*window .* ms'
 keys v1 Escape
-check panel_closed wait_for v1 'Enter inspect  p plot  q back'
+check panel_closed wait_for v1 'Enter inspect  p plot  b bag  q back'
 
 # Ctrl-C is a key here: the viewer stays
 keys v1 C-c
@@ -85,16 +85,16 @@ check ctrl_c_alive cond '[ "$(TM display -p -t v1 "#{pane_dead}")" = 0 ]'
 
 # q: back at the prompt, the state intact
 keys v1 q
-check q_leaves wait_gone v1 'Enter inspect  p plot  q back'
+check q_leaves wait_gone v1 'Enter inspect  p plot  b bag  q back'
 line v1 "show case"
 check q_prompt wait_for v1 '^case +A$'
 line v1 "grid show"
 check q_grid_kept wait_for v1 'case C, wind 0 m/s, face 0 deg, .*: Q = 0.8469 m'
 # view again, then Esc leaves as well
 line v1 "view"
-check view_again wait_for v1 'Enter inspect  p plot  q back'
+check view_again wait_for v1 'Enter inspect  p plot  b bag  q back'
 keys v1 Escape
-check esc_leaves wait_gone v1 'Enter inspect  p plot  q back'
+check esc_leaves wait_gone v1 'Enter inspect  p plot  b bag  q back'
 line v1 "show wind"
 check esc_prompt wait_for v1 '^wind +0 m/s$'
 # a plot without a display fails with one message and the session goes on
@@ -171,7 +171,7 @@ gp_gone() { [ -s "$TMP/gp.pids" ] && for p in $(cat "$TMP/gp.pids"); do
 start v5 160 50 "PATH=$TMP/bin:/usr/bin:/bin"
 check wait_prompt wait_for v5 'uasimpact\[A\]>'
 line v5 "grid load $T6; set terminal png; set output $TMP/pl/h.png; view"
-check wait_view wait_for v5 'Enter inspect  p plot  q back'
+check wait_view wait_for v5 'Enter inspect  p plot  b bag  q back'
 keys v5 p
 check wait_plotting wait_for v5 'plotting in gnuplot\.\.\. \(Ctrl-C stops it, q stops it and leaves\)' 30
 t0=$(now_ms); keys v5 C-c
@@ -192,7 +192,7 @@ line v5 "show case"
 check wait_plot_q_prompt wait_for v5 '^case +A$'
 # a slow impact: the settling of the stance with a 10 us step
 line v5 "set dt 1e-5; set settle_dt 1e-5; view"
-check wait_view_again wait_for v5 'Enter inspect  p plot  q back'
+check wait_view_again wait_for v5 'Enter inspect  p plot  b bag  q back'
 keys v5 Enter
 check wait_running wait_for v5 'running the impact of this cell\.\.\. \(Ctrl-C stops it' 5
 t0=$(now_ms); keys v5 C-c

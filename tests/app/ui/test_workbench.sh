@@ -34,9 +34,9 @@ keys w1 c Enter
 check view_inspect wait_for w1 'HIC15 .*window .* ms' 60
 check view_trace wait_for w1 'head acceleration vs time, HIC15 window shaded'
 keys w1 Escape
-check view_panel_closed wait_for w1 'Enter inspect  p plot  q back'
+check view_panel_closed wait_for w1 'Enter inspect  p plot  b bag  q back'
 keys w1 q
-check view_left wait_gone w1 'Enter inspect  p plot  q back'
+check view_left wait_gone w1 'Enter inspect  p plot  b bag  q back'
 line w1 "show case"
 check state_case wait_for w1 '^case +B$'
 line w1 "show step"
