@@ -94,18 +94,21 @@ static double uniaxial(const lawk* k, const double E[3], double c, double sn, do
 /* the wrinkled state of Green strain e (one positive principal strain, the taut stress not
    positive): the relaxed energy W_r(E) = min over D >= 0 of W(E + D) (Pipkin 1986), by duality
    the maximum over stresses S >= 0 of G(S) = S:E - W*(S) (W* the taut law's complementary
-   energy). The maximum lies on the uniaxial stresses S = u u^T: the best of nine directions
-   (the major principal strain's and every 22.5 deg, each with its best sigma), then Newton on u
+   energy). The maximum lies on the uniaxial stresses S = u u^T: the best of five directions
+   (the major principal strain's, the yarns', the bias, each with its best sigma), then Newton on u
    (2 unknowns, kept ascending) until G is stationary, i.e. (E - E_m) u = 0 with E_m the
    gradient of W* at S, the fabric's own strain (E_m - E = a n n^T, n normal to u: the wrinkles'
    slack). S is the gradient of W_r (envelope theorem), W_r = G(S). */
 static void wrinkled(const lawk* k, const double e[3], double S[3], double* w) {
-  static const double cj[8] = {1, 0.92387953251128674,  0.70710678118654752,  0.38268343236508977,
-                               0, -0.38268343236508977, -0.70710678118654752, -0.92387953251128674};
+  // candidates: the yarns, the bias directions and the major principal strain (half-angle
+  // formulas: no trigonometry)
   double E[3] = {e[0], e[1], 0.5 * e[2]}, sig, best = -1, bc = 1, bs = 0;
-  double th = 0.5 * atan2(2 * E[2], E[0] - E[1]);
-  for (int j = 0; j < 9; j++) {
-    double c = j < 8 ? cj[j] : cos(th), sn = j < 8 ? cj[abs(j - 4)] : sin(th);
+  double hd = 0.5 * (E[0] - E[1]), rr = sqrt(hd * hd + E[2] * E[2]), c2 = rr > 0 ? hd / rr : 1;
+  double cp = sqrt(0.5 * (1 + c2)), sp = copysign(sqrt(fmax(0, 0.5 * (1 - c2))), E[2]);
+  const double h2 = 0.70710678118654752;
+  const double cand[5][2] = {{cp, sp}, {1, 0}, {0, 1}, {h2, h2}, {h2, -h2}};
+  for (int j = 0; j < 5; j++) {
+    double c = cand[j][0], sn = cand[j][1];
     double g = uniaxial(k, E, c, sn, &sig);
     if (g > best) {
       best = g;
@@ -152,7 +155,7 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w) {
     u1 += t * d1;
     u2 += t * d2;
     G = Gn;
-    if (t * t * (d1 * d1 + d2 * d2) <= 1e-28 * (u1 * u1 + u2 * u2)) {
+    if (t * t * (d1 * d1 + d2 * d2) <= 1e-20 * (u1 * u1 + u2 * u2)) {
       break;
     }
   }
