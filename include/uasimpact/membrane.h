@@ -112,7 +112,8 @@ enum {
   urMEMS_PPEAK,    /* that peak absolute pressure, Pa */
   urMEMS_HFIRST,   /* 3: the head ellipsoid's centre at the first snapshot (world) */
   urMEMS_HPEAK = urMEMS_HFIRST + 3, /* 3: and at the peak snapshot */
-  urMEMS_N = urMEMS_HPEAK + 3
+  urMEMS_ECONT = urMEMS_HPEAK + 3,  /* energy in the contact penalty springs, J */
+  urMEMS_N
 };
 
 /* forces and diagnostics of one evaluation */

@@ -72,14 +72,9 @@ static double bag_bottom(const urModel* m) {
 static double energy(const urModel* m, const urData* d) {
   const urMembrane* mb = m->bag[0].mem;
   const double* st = d->mem + m->bag[0].madr;
-  const double *fc = st + 9 * mb->nn, *sc = st + 18 * mb->nn;
-  // the penalty springs' energy |f|^2 / 2k (undamped, frictionless: f = k depth)
-  double dk = fmax(m->opt.dt, mb->spec.kc_dt), ep = 0;
-  for (int i = 0; i < mb->nn; i++) {
-    double k = mb->spec.kc_alpha * mb->mass[i] / (dk * dk);
-    const double* f = fc + 3 * i;
-    ep += (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / (2 * k);
-  }
+  const double* sc = st + 18 * mb->nn;
+  // the penalty springs' energy k depth^2 / 2 (nodes and centroids)
+  double ep = sc[urMEMS_ECONT];
   return ur_energy_kinetic(m, d) + ur_mem_kinetic(mb, st) +
          ur_mem_gas_energy(mb, sc[urMEMS_P], sc[urMEMS_V]) + sc[urMEMS_EFAB] + ep;
 }

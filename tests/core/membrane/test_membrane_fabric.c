@@ -76,6 +76,8 @@ static void test_laplace_sphere(void** state) {
     es += 0.5 * (e[0] + e[1]) * a;
     as += a;
   }
+  print_message("laplace: mean tension / (p R / 2) - 1 = %+.5f, mean strain / law's - 1 = %+.5f\n",
+                ts / as / T - 1, es / as / green - 1);
   assert_true(fabs(ts / as / T - 1) < 0.01);
   assert_true(fabs(es / as / green - 1) < 0.01);
   // the gas kept its declared gauge pressure within 1 %
