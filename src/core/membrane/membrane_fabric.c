@@ -139,29 +139,33 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w) {
       break;
     }
     double d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
-    // backtrack while G falls
-    double t = 1, Gn = G;
-    for (int b = 0; b < 30; b++, t *= 0.5) {
+    // a step this small is converged (Newton: the next would be ~1e-12 of u); else backtrack
+    // while G falls (beyond rounding)
+    if (d1 * d1 + d2 * d2 <= 1e-12 * (u1 * u1 + u2 * u2)) {
+      u1 += d1;
+      u2 += d2;
+      break;
+    }
+    double t = 1, Gn = G, tol = 1e-13 * fabs(G);
+    for (int b = 0; b < 12; b++, t *= 0.5) {
       double v1 = u1 + t * d1, v2 = u2 + t * d2;
       Gn = v1 * v1 * E[0] + v2 * v2 * E[1] + 2 * v1 * v2 * E[2] -
            wstar(k, v1 * v1, v2 * v2, v1 * v2);
-      if (Gn >= G) {
+      if (Gn >= G - tol) {
         break;
       }
     }
-    if (!(Gn >= G)) {
+    if (!(Gn >= G - tol)) {
       break;
     }
     u1 += t * d1;
     u2 += t * d2;
     G = Gn;
-    if (t * t * (d1 * d1 + d2 * d2) <= 1e-20 * (u1 * u1 + u2 * u2)) {
-      break;
-    }
   }
   S[0] = u1 * u1;
   S[1] = u2 * u2;
   S[2] = u1 * u2;
+  G = S[0] * E[0] + S[1] * E[1] + 2 * S[2] * E[2] - wstar(k, S[0], S[1], S[2]);
   *w = fmax(G, 0);
 }
 
