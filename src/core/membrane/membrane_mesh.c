@@ -425,6 +425,7 @@ void ur_mem_state_init(const urMembrane* mb, double* st, const double R[9], cons
   sc[urMEMS_EFAB] = 0;
   sc[urMEMS_TFIRST] = sc[urMEMS_TPEAK] = -1;
   sc[urMEMS_PPEAK] = 0;
+  sc[urMEMS_ECONT] = 0;
 }
 
 
