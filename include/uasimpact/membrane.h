@@ -148,7 +148,8 @@ void ur_mem_free(urMembrane* mb);
 
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
-   scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb) */
+   scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb), then each
+   triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->

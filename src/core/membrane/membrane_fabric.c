@@ -99,15 +99,31 @@ static double uniaxial(const lawk* k, const double E[3], double c, double sn, do
    (the major principal strain's, the yarns', the bias, each with its best sigma), then Newton on u
    (2 unknowns, kept ascending) until G is stationary, i.e. (E - E_m) u = 0 with E_m the
    gradient of W* at S, the fabric's own strain (E_m - E = a n n^T, n normal to u: the wrinkles'
-   slack). S is the gradient of W_r (envelope theorem), W_r = G(S). */
-static void wrinkled(const lawk* k, const double e[3], double S[3], double* w) {
-  // candidates: the yarns, the bias directions and the major principal strain (half-angle
-  // formulas: no trigonometry)
+   slack). S is the gradient of W_r (envelope theorem), W_r = G(S).
+   Warm start: uw (may be NULL) holds the triangle's u of its last wrinkled evaluation (0, 0 if
+   none), a sixth candidate: the strain moves little between sub-steps, so from it Newton
+   usually takes one step, already below the tolerance. (Alone, without the five, it can climb
+   to a lower local maximum when the strain has moved far: test_warm_start.) The converged u is
+   written back. Any start ends at the same tolerance, a Newton step below 1e-6 of |u| (then
+   taken: ~1e-12 of u left), 40 steps at most. */
+static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, double* uw) {
+  // candidates: the warm start, then the major principal strain (half-angle formulas: no
+  // trigonometry), the yarns and the bias directions
   double E[3] = {e[0], e[1], 0.5 * e[2]}, sig, best = -1, bc = 1, bs = 0;
   double hd = 0.5 * (E[0] - E[1]), rr = sqrt(hd * hd + E[2] * E[2]), c2 = rr > 0 ? hd / rr : 1;
   double cp = sqrt(0.5 * (1 + c2)), sp = copysign(sqrt(fmax(0, 0.5 * (1 - c2))), E[2]);
   const double h2 = 0.70710678118654752;
   const double cand[5][2] = {{cp, sp}, {1, 0}, {0, 1}, {h2, h2}, {h2, -h2}};
+  if (uw && (uw[0] != 0 || uw[1] != 0)) {
+    double v1 = uw[0], v2 = uw[1];
+    double g =
+        v1 * v1 * E[0] + v2 * v2 * E[1] + 2 * v1 * v2 * E[2] - wstar(k, v1 * v1, v2 * v2, v1 * v2);
+    if (g > best) {
+      best = g;
+      bc = v1;
+      bs = v2;
+    }
+  }
   for (int j = 0; j < 5; j++) {
     double c = cand[j][0], sn = cand[j][1];
     double g = uniaxial(k, E, c, sn, &sig);
@@ -163,6 +179,10 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w) {
     u2 += t * d2;
     G = Gn;
   }
+  if (uw) {
+    uw[0] = u1;
+    uw[1] = u2;
+  }
   S[0] = u1 * u1;
   S[1] = u2 * u2;
   S[2] = u1 * u2;
@@ -173,9 +193,10 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w) {
 
 /* the fabric's stress resultant S (S11, S22, S12) and energy density *w at Green strain e (E11,
    E22, 2 E12): re times the taut law plus 1 - re times its relaxed energy's gradient (tension
-   field: taut, wrinkled or slack, never a compressive principal stress) */
+   field: taut, wrinkled or slack, never a compressive principal stress); uw: the triangle's
+   warm start (wrinkled(), may be NULL) */
 static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], double S[3],
-                          double* w) {
+                          double* w, double* uw) {
   double ws;
   S[0] = k->c11 * e[0] + k->c12 * e[1];
   S[1] = k->c12 * e[0] + k->c22 * e[1];
@@ -191,7 +212,7 @@ static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], 
   double Sr[3] = {0, 0, 0}, wr = 0;
   double me = 0.5 * (e[0] + e[1]), he = 0.5 * (e[0] - e[1]);
   if (me + sqrt(he * he + 0.25 * e[2] * e[2]) > 0) {
-    wrinkled(k, e, Sr, &wr); // else slack: no stress, no energy
+    wrinkled(k, e, Sr, &wr, uw); // else slack: no stress, no energy
   }
   double re = k->re;
   S[0] = re * S[0] + (1 - re) * Sr[0];
@@ -202,9 +223,15 @@ static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], 
 
 
 void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w) {
+  urm_fabric_stress_warm(s, e, S, w, NULL);
+}
+
+
+void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], double* w,
+                            double* uw) {
   lawk k = law_constants(s);
   double ww;
-  stress(s, &k, e, S, &ww);
+  stress(s, &k, e, S, &ww, uw);
   if (w) {
     *w = ww;
   }
@@ -262,7 +289,8 @@ AI urm4 shear4(const lawk* k, urm4 g, urm4* w) {
 
 /* stress() over 4 lanes: the taut law on all 4, then each lane not taut (wrinkled or slack,
    rare enough to branch on) by the scalar stress(), which recomputes the same taut law bits */
-AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], urm4* w) {
+AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], urm4* w,
+                double* uw) {
   urm4 ws;
   S[0] = bc4(k->c11) * e[0] + bc4(k->c12) * e[1];
   S[1] = bc4(k->c12) * e[0] + bc4(k->c22) * e[1];
@@ -274,7 +302,7 @@ AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], u
   for (int l = 0; l < 4; l++) {
     if (!taut[l]) {
       double el[3] = {e[0][l], e[1][l], e[2][l]}, Sl[3], wl;
-      stress(s, k, el, Sl, &wl);
+      stress(s, k, el, Sl, &wl, uw ? uw + 2 * l : NULL);
       S[0][l] = Sl[0];
       S[1][l] = Sl[1];
       S[2][l] = Sl[2];
@@ -290,7 +318,7 @@ void urm_fabric_stress4(const urMemSpec* s, const double e[12], double S[12], do
   for (int j = 0; j < 3; j++) {
     ev[j] = *(const urm4u*)(e + 4 * j);
   }
-  stress4(s, &k, ev, Sv, &wv);
+  stress4(s, &k, ev, Sv, &wv, NULL);
   for (int j = 0; j < 3; j++) {
     *(urm4u*)(S + 4 * j) = Sv[j];
   }
@@ -375,7 +403,7 @@ AI void rows3(const double* x, const int* n, urm4 o[3]) {
    three loops each (geometry, law, forces): short enough for the next blocks' work to overlap
    the law's square root and division. */
 static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const double* v, double* sc,
-                               double* vol, double* wsum, double* emax) {
+                               double* uw, double* vol, double* wsum, double* emax) {
   const urMemSpec* s = &mb->spec;
   lawk lk = law_constants(s);
   double V = 0, W = 0;
@@ -427,7 +455,7 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
     for (int q = 0; q < nb; q++) {
       int b = b0 + q;
       urm4 S[3], w;
-      stress4(s, &lk, Ec[q], S, &w);
+      stress4(s, &lk, Ec[q], S, &w, uw + 8 * b);
       em = sel4(Ec[q][0] > em, Ec[q][0], em);
       em = sel4(Ec[q][1] > em, Ec[q][1], em);
       for (int c = 0; c < 3; c++) {
@@ -517,7 +545,7 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
 
   // the fabric of every triangle, the enclosed volume (divergence theorem, ur_mem_volume's sum)
   double V, wsum, emax;
-  tri_pass(mb, x, v, scr, &V, &wsum, &emax);
+  tri_pass(mb, x, v, scr, scr + 36 * (size_t)mb->ntb, &V, &wsum, &emax);
   V /= 6;
 
   // gas: the pressure of the remaining mass; each triangle's nodal forces, summed on every node

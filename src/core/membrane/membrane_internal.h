@@ -32,6 +32,12 @@ static inline void urm_sub(double o[3], const double a[3], const double b[3]) {
    NULL) */
 void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w);
 
+/* the same with the triangle's warm start uw (2 doubles of the run's state, ur_mem_state_size:
+   read, then the wrinkled state's solution written; 0, 0 for none): the same law to the
+   wrinkled Newton's tolerance, not bit for bit the cold one */
+void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], double* w,
+                            double* uw);
+
 /* urm_fabric_stress's law over 4 strains at once (the force pass's vector law), lanes side by
    side: e[4 j + l] is component j of lane l, S likewise, w the 4 energy densities; each lane's
    bits are urm_fabric_stress's */

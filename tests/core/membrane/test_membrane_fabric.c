@@ -11,6 +11,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
@@ -381,8 +382,9 @@ static void test_stress4_bitwise(void** state) {
 
 /* the forces as the triangle loop computed them one triangle at a time (the reference the
    force pass must match bit for bit): volume, pressure, then each triangle's strain, law,
-   damping and nodal forces added in triangle order */
-static void forces_ref(const urMembrane* mb, const double* st, double* f, urMemInfo* info) {
+   damping and nodal forces added in triangle order; each triangle's law warm-started from its
+   slot of st (2 doubles a triangle after the scratch), which it updates */
+static void forces_ref(const urMembrane* mb, double* st, double* f, urMemInfo* info) {
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   const double *x = st, *v = st + 3 * nn, *sc = st + 18 * nn;
@@ -395,7 +397,7 @@ static void forces_ref(const urMembrane* mb, const double* st, double* f, urMemI
     const double* Di = mb->dminv + 4 * t;
     double F[6], e[3], S[3], w;
     urm_tri_strain(mb, x, t, F, e);
-    urm_fabric_stress(s, e, S, &w);
+    urm_fabric_stress_warm(s, e, S, &w, st + 18 * nn + urMEMS_N + 36 * mb->ntb + 2 * t);
     wsum += w * mb->area0[t];
     double e1 = fmax(e[0], e[1]);
     if (e1 > emax) {
@@ -437,7 +439,8 @@ static void forces_ref(const urMembrane* mb, const double* st, double* f, urMemI
 static void test_forces_bitwise(void** state) {
   // the force pass (4 triangles at a time, sums and nodal forces in triangle order) against the
   // one-triangle-at-a-time reference, bit for bit: a bag stretched, squeezed and sheared at
-  // random (every regime of the law), moving at random, with damping and without
+  // random (every regime of the law), moving at random, with damping and without; the first
+  // evaluation cold, the next ones warm-started from the previous random state's solution
   for (int damp = 0; damp < 2; damp++) {
     urMemSpec s;
     char err[200];
@@ -448,9 +451,10 @@ static void test_forces_bitwise(void** state) {
     assert_non_null(mb);
     int nn = mb->nn;
     double* st = calloc(ur_mem_state_size(mb), sizeof(double));
+    size_t ns = ur_mem_state_size(mb);
     double *f = malloc(3 * (size_t)nn * sizeof(double)),
-           *g = malloc(3 * (size_t)nn * sizeof(double));
-    assert_true(st && f && g);
+           *g = malloc(3 * (size_t)nn * sizeof(double)), *st2 = malloc(ns * sizeof(double));
+    assert_true(st && f && g && st2);
     unsigned long long r = 777 + damp;
     for (int it = 0; it < 20; it++) {
       double sx = uni(&r, 0.9, 1.1), sz = uni(&r, 0.5, 1.5);
@@ -465,17 +469,54 @@ static void test_forces_bitwise(void** state) {
       }
       st[18 * nn + urMEMS_MGAS] = mb->mref * uni(&r, 0.9, 1.1);
       urMemInfo a, b;
+      memcpy(st2, st, ns * sizeof(double));
       ur_mem_forces(mb, st, f, &a);
-      forces_ref(mb, st, g, &b);
+      forces_ref(mb, st2, g, &b);
       assert_memory_equal(f, g, 3 * (size_t)nn * sizeof(double));
       assert_memory_equal(&a, &b, sizeof a);
+      size_t w0 = 18 * (size_t)nn + urMEMS_N + 36 * (size_t)mb->ntb;
+      assert_memory_equal(st + w0, st2 + w0, 2 * (size_t)mb->nt * sizeof(double));
       assert_true(a.strain > 0 && a.efabric > 0 && a.volume > 0);
     }
     free(f);
     free(g);
     free(st);
+    free(st2);
     ur_mem_free(mb);
   }
+}
+
+
+static void test_warm_start(void** state) {
+  // the wrinkled law warm-started (from the solution at a nearby strain, as between sub-steps,
+  // and from one at an unrelated strain) gives the cold law's stress and energy to the Newton's
+  // tolerance
+  urMemSpec s;
+  ur_mem_spec_default(&s);
+  unsigned long long r = 4242;
+  int nw = 0;
+  double far[2] = {0, 0}, dmax = 0;
+  for (int it = 0; it < 3000; it++) {
+    double e[3] = {uni(&r, -0.02, 0.03), uni(&r, -0.02, 0.03), uni(&r, -1, 1) * 0.3};
+    double S[3], w, Sw[3], ww, Sf[3], wf, u[2] = {0, 0};
+    urm_fabric_stress(&s, e, S, &w);
+    double en[3] = {e[0] * (1 + 1e-3), e[1] - 1e-5, e[2] + 1e-4}, Sn[3], wn;
+    urm_fabric_stress_warm(&s, en, Sn, &wn, u); // u: the solution near e, or 0, 0 if not wrinkled
+    double u0[2] = {u[0], u[1]};
+    urm_fabric_stress_warm(&s, e, Sw, &ww, u);
+    urm_fabric_stress_warm(&s, e, Sf, &wf, far);
+    double sc = fabs(S[0]) + fabs(S[1]) + fabs(S[2]) + 1e-3;
+    for (int j = 0; j < 3; j++) {
+      dmax = fmax(dmax, fmax(fabs(Sw[j] - S[j]), fabs(Sf[j] - S[j])) / sc);
+    }
+    assert_true(fabs(ww - w) <= 1e-9 * (fabs(w) + 1e-6) && fabs(wf - w) <= 1e-9 * (fabs(w) + 1e-6));
+    if (u0[0] != 0 || u0[1] != 0) {
+      nw++;
+    }
+  }
+  printf("warm start: %d of 3000 strains wrinkled; largest stress difference %.2e of |S|\n", nw,
+         dmax);
+  assert_true(nw > 300 && dmax <= 1e-9);
 }
 
 
@@ -486,6 +527,7 @@ int main(void) {
       cmocka_unit_test(test_force_gradient),  cmocka_unit_test(test_shear_lock),
       cmocka_unit_test(test_gas_law),         cmocka_unit_test(test_vent_flow),
       cmocka_unit_test(test_stress4_bitwise), cmocka_unit_test(test_forces_bitwise),
+      cmocka_unit_test(test_warm_start),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
