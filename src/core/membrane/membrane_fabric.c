@@ -92,48 +92,52 @@ static double uniaxial(const lawk* k, const double E[3], double c, double sn, do
 }
 
 
-/* the wrinkled state of Green strain e (one positive principal strain, the taut stress not
-   positive): the relaxed energy W_r(E) = min over D >= 0 of W(E + D) (Pipkin 1986), by duality
-   the maximum over stresses S >= 0 of G(S) = S:E - W*(S) (W* the taut law's complementary
-   energy). The maximum lies on the uniaxial stresses S = u u^T: the best of five directions
-   (the major principal strain's, the yarns', the bias, each with its best sigma), then Newton on u
-   (2 unknowns, kept ascending) until G is stationary, i.e. (E - E_m) u = 0 with E_m the
-   gradient of W* at S, the fabric's own strain (E_m - E = a n n^T, n normal to u: the wrinkles'
-   slack). S is the gradient of W_r (envelope theorem), W_r = G(S).
-   Warm start: uw (may be NULL) holds the triangle's u of its last wrinkled evaluation (0, 0 if
-   none), a sixth candidate: the strain moves little between sub-steps, so from it Newton
-   usually takes one step, already below the tolerance. (Alone, without the five, it can climb
-   to a lower local maximum when the strain has moved far: test_warm_start.) The converged u is
-   written back. Any start ends at the same tolerance, a Newton step below 1e-6 of |u| (then
-   taken: ~1e-12 of u left), 40 steps at most. */
-static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, double* uw) {
-  // candidates: the warm start, then the major principal strain (half-angle formulas: no
-  // trigonometry), the yarns and the bias directions
-  double E[3] = {e[0], e[1], 0.5 * e[2]}, sig, best = -1, bc = 1, bs = 0;
+/* the five candidates of wrinkled(): the major principal strain's direction (half-angle
+   formulas: no trigonometry), the yarns', the bias directions, each with its best sigma; u and
+   its G replaced where one beats *G */
+static void candidates(const lawk* k, const double E[3], double* u1, double* u2, double* G) {
+  double sig;
   double hd = 0.5 * (E[0] - E[1]), rr = sqrt(hd * hd + E[2] * E[2]), c2 = rr > 0 ? hd / rr : 1;
   double cp = sqrt(0.5 * (1 + c2)), sp = copysign(sqrt(fmax(0, 0.5 * (1 - c2))), E[2]);
   const double h2 = 0.70710678118654752;
   const double cand[5][2] = {{cp, sp}, {1, 0}, {0, 1}, {h2, h2}, {h2, -h2}};
-  if (uw && (uw[0] != 0 || uw[1] != 0)) {
-    double v1 = uw[0], v2 = uw[1];
-    double g =
-        v1 * v1 * E[0] + v2 * v2 * E[1] + 2 * v1 * v2 * E[2] - wstar(k, v1 * v1, v2 * v2, v1 * v2);
-    if (g > best) {
-      best = g;
-      bc = v1;
-      bs = v2;
-    }
-  }
   for (int j = 0; j < 5; j++) {
     double c = cand[j][0], sn = cand[j][1];
     double g = uniaxial(k, E, c, sn, &sig);
-    if (g > best) {
-      best = g;
-      bc = sqrt(sig) * c;
-      bs = sqrt(sig) * sn;
+    if (g > *G) {
+      *G = g;
+      *u1 = sqrt(sig) * c;
+      *u2 = sqrt(sig) * sn;
     }
   }
-  double u1 = bc, u2 = bs, G = best;
+}
+
+
+/* the wrinkled state of Green strain e (one positive principal strain, the taut stress not
+   positive): the relaxed energy W_r(E) = min over D >= 0 of W(E + D) (Pipkin 1986), by duality
+   the maximum over stresses S >= 0 of G(S) = S:E - W*(S) (W* the taut law's complementary
+   energy). The maximum lies on the uniaxial stresses S = u u^T: the best of five directions
+   (candidates()), then Newton on u (2 unknowns, kept ascending) until G is stationary, i.e.
+   (E - E_m) u = 0 with E_m the gradient of W* at S, the fabric's own strain (E_m - E = a n n^T,
+   n normal to u: the wrinkles' slack). S is the gradient of W_r (envelope theorem), W_r = G(S).
+   Warm start: uw (may be NULL) holds the triangle's u of its last wrinkled evaluation (0, 0 if
+   none). Newton starts there; when its first step is within 1 % of |u| (the strain moved
+   little, as between sub-steps: the same maximum, moved a little) the candidates are skipped,
+   else they are tried against it (from a strain far away the warm start alone can climb to a
+   lower local maximum: test_warm_start). The converged u is written back. Every start ends at
+   the same tolerance, a Newton step below 1e-6 of |u| (then taken: ~1e-12 of u left), 40 steps
+   at most. */
+static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, double* uw) {
+  double E[3] = {e[0], e[1], 0.5 * e[2]}, u1 = 1, u2 = 0, G = -1;
+  int tried = 0; /* the candidates tried (or not needed) */
+  if (uw && (uw[0] != 0 || uw[1] != 0)) {
+    u1 = uw[0];
+    u2 = uw[1];
+    G = u1 * u1 * E[0] + u2 * u2 * E[1] + 2 * u1 * u2 * E[2] - wstar(k, u1 * u1, u2 * u2, u1 * u2);
+  } else {
+    candidates(k, E, &u1, &u2, &G);
+    tried = 1;
+  }
   for (int it = 0; it < 40; it++) {
     double S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk;
     double Em11 = k->a11 * S11 + k->a12 * S22, Em22 = k->a12 * S11 + k->a22 * S22;
@@ -152,10 +156,21 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, d
       M22 -= lmax + 1e-3 * tr;
     }
     double det = M11 * M22 - M12 * M12;
+    double d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
+    if (!tried) {
+      // the warm start: kept alone when Newton stays near it
+      tried = 1;
+      if (!(det > 0 && d1 * d1 + d2 * d2 <= 1e-4 * (u1 * u1 + u2 * u2))) {
+        double G0 = G;
+        candidates(k, E, &u1, &u2, &G);
+        if (G > G0) {
+          continue;
+        }
+      }
+    }
     if (!(det > 0)) {
       break;
     }
-    double d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
     // a step this small is converged (Newton: the next would be ~1e-12 of u); else backtrack
     // while G falls (beyond rounding)
     if (d1 * d1 + d2 * d2 <= 1e-12 * (u1 * u1 + u2 * u2)) {
