@@ -178,11 +178,13 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     double xc[3], vc[3], r[3];
     for (int c = 0; c < 3; c++) {
       xc[c] = (x[3 * n3[0] + c] + x[3 * n3[1] + c] + x[3 * n3[2] + c]) / 3;
-      vc[c] = (v[3 * n3[0] + c] + v[3 * n3[1] + c] + v[3 * n3[2] + c]) / 3;
     }
     urm_sub(r, xc, gc);
     if (urm_dot(r, r) >= rg * rg) {
       continue;
+    }
+    for (int c = 0; c < 3; c++) {
+      vc[c] = (v[3 * n3[0] + c] + v[3 * n3[1] + c] + v[3 * n3[2] + c]) / 3;
     }
     double mc = 0.5 * mb->spec.rhot * mb->area0[t];
     fsum += contact_point(m, d, mb, &e, body, o, vo, w, xc, vc, mc, n3, 3, f, fc, &dep, &ep);
