@@ -10,7 +10,8 @@
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
 #                 zero-wind grids; src/models/calibrate.spec, uasimpact-model(5)); build/calibration/
 #   make membrane-convergence  the membrane airbag's mesh and time-step convergence on case A
-#                 (scripts/membrane-convergence.sh; minutes of grids, not part of check)
+#                 (scripts/membrane-convergence.sh; minutes of grids; its centre impacts are in
+#                 make check: tests/test_membrane_convergence.sh)
 #   make sensitivity  how far Table 17 moves with one unknown the calibration does not set
 #                 moved in its public range, at the shipped models (scripts/sensitivity.sh;
 #                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
@@ -171,7 +172,7 @@ bench: all mpi $(BENCH_BIN)
 headdrop: $(BUILD)/tests/bench_headdrop
 	@$<
 
-# the membrane airbag's convergence (issue 32): mesh 6 -> 12, dt halved, at case A's centre and
+# the membrane airbag's convergence (issue 32): mesh N -> 2N, dt halved, at case A's centre and
 # over its zero-wind grid (STEP, default 0.05)
 membrane-convergence: all
 	@sh scripts/membrane-convergence.sh $(STEP)

@@ -2,7 +2,7 @@
  * gas). A bag is a closed triangulated fabric surface made of two panels of a plan shape
  * (ellipse or rounded rectangle) sewn at their edge; constant-strain triangles, total
  * Lagrangian, orthotropic woven fabric (warp along the plan's x axis) with a locking shear law,
- * tension only (wrinkling), optional material damping; a uniform-pressure adiabatic gas,
+ * tension only (wrinkling: the tension-field relaxed energy), optional material damping; a uniform-pressure adiabatic gas,
  * optional vents and fabric leakage. Sources of every law and value: uasimpact-model(5), BAGS.
  *
  * Split like the engine: urMembrane is constant once built and inflated (mesh topology,
@@ -56,7 +56,7 @@ typedef struct {
   double nu12;     /* Poisson ratio (warp strain -> weft) */
   double g0t, gtt; /* shear stiffness before and after locking, N/m */
   double lock;     /* locking shear angle, rad */
-  double re;       /* compressive principal stress factor (wrinkling), 0..1 */
+  double re;       /* share of the taut law kept beside the relaxed (wrinkling) energy, 0..1 */
   double rhot;     /* areal density, kg/m^2 */
   double damp;     /* material damping: fraction of critical at the element frequency */
   /* gas */
@@ -119,14 +119,15 @@ enum {
   urMEMS_PPEAK,    /* that peak absolute pressure, Pa */
   urMEMS_HFIRST,   /* 3: the head ellipsoid's centre at the first snapshot (world) */
   urMEMS_HPEAK = urMEMS_HFIRST + 3, /* 3: and at the peak snapshot */
-  urMEMS_N = urMEMS_HPEAK + 3
+  urMEMS_ECONT = urMEMS_HPEAK + 3,  /* energy in the contact penalty springs, J */
+  urMEMS_N
 };
 
 /* forces and diagnostics of one evaluation */
 typedef struct {
   double pressure, volume; /* absolute Pa, m^3 */
   double strain;           /* largest yarn strain (Green, warp or weft) */
-  double efabric;          /* elastic strain energy of the fabric (taut law), J */
+  double efabric;          /* elastic strain energy of the fabric (the potential of its law), J */
 } urMemInfo;
 
 /* the default bag: nylon-6,6 woven fabric and air (uasimpact-model(5), BAGS) */
@@ -147,7 +148,8 @@ void ur_mem_free(urMembrane* mb);
 
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
-   scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb) */
+   scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb), then each
+   triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->
@@ -167,11 +169,12 @@ double ur_mem_gas_energy(const urMembrane* mb, double p, double V);
 
 /* fabric and gas forces on every node at the state (x, v) of st into f (3 nn, overwritten);
    info may be NULL; scalars of st updated (pressure, volume, strain, energy). st is a whole run
-   state of ur_mem_state_size() doubles: the evaluation's scratch is its end */
+   state of ur_mem_state_size() doubles: the evaluation's scratch is its end, and its wrinkled
+   triangles' warm starts are read and updated there */
 void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info);
 
-/* Green strain (E11, E22, 2 E12, warp/weft axes) and stress resultant (N/m, after the tension-
-   field reduction, no damping) of triangle t at positions x */
+/* Green strain (E11, E22, 2 E12, warp/weft axes) and stress resultant (N/m, the tension-field
+   law, no damping) of triangle t at positions x */
 void ur_mem_tri_state(const urMembrane* mb, const double* x, int t, double e[3], double S[3]);
 
 /* gas leaving through the vents and the fabric in dt at the state's pressure (kg), >= 0 */

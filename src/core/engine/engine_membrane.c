@@ -101,14 +101,46 @@ static void bodymotion(const urData* d, int b, double R[9], double c[3], double 
 }
 
 
-/* penalty contact of the free nodes with ellipsoid g; forces added to f and fc, reactions on
-   g's body; the normal force sum and deepest penetration returned. Only when g's bounding
-   sphere reaches the free nodes' box (lo, hi): no node can touch g otherwise. */
+/* one contact point (a node, or a triangle's centroid spread over its three nodes n3) of mass
+   share mp against ellipsoid e of body; forces added to f and fc, the reaction on the body, the
+   penalty spring's energy to *ep; the normal force returned, the depth in *dep */
+static double contact_point(const urModel* m, urData* d, const urMembrane* mb, const urEllipsoid* e,
+                            int body, const double o[3], const double vo[3], const double w[3],
+                            const double xp[3], const double vp[3], double mp, const int* n3,
+                            int nn3, double* f, double* fc, double* dep, double* ep) {
+  double fi[3];
+  *dep = urm_contact_node(&mb->spec, m->opt.dt, e, o, vo, w, xp, vp, mp, fi);
+  if (fi[0] == 0 && fi[1] == 0 && fi[2] == 0) {
+    return 0;
+  }
+  double dk = fmax(m->opt.dt, mb->spec.kc_dt), k = mb->spec.kc_alpha * mp / (dk * dk);
+  *ep += 0.5 * k * *dep * *dep;
+  double rf[3] = {-fi[0], -fi[1], -fi[2]};
+  for (int j = 0; j < nn3; j++) {
+    for (int c = 0; c < 3; c++) {
+      f[3 * n3[j] + c] += fi[c] / nn3;
+      fc[3 * n3[j] + c] += fi[c] / nn3;
+    }
+  }
+  ur_apply_force(m, d, body, rf, xp);
+  // normal part: along the outward normal, i.e. the force's projection on it; friction is
+  // at most mu of it, so the norm bounds it within 1 + mu
+  return sqrt(urm_dot(fi, fi)) / sqrt(1 + mb->spec.mu * mb->spec.mu);
+}
+
+
+/* penalty contact of the free nodes and of the triangles' centroids with ellipsoid g (each set
+   carries half the fabric's mass, so the penalty per area is alpha rhot / dt^2 as with nodes
+   alone, while the facets between nodes no longer sink into a curved body by their sagitta:
+   materials-membrane C.4's midpoint checks); forces added to f and fc, reactions on g's body;
+   the normal force sum and deepest penetration returned. Only when g's bounding sphere reaches
+   the free nodes' box (lo, hi): no node, and no centroid (inside the box too), can touch g
+   otherwise. */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
                            const double lo[3], const double hi[3], double* depth) {
   const urMembrane* mb = b->mem;
   int nn = mb->nn;
-  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
   const double* gc = d->gxpos + 3 * g;
   double rg = m->geom[g].rbound, q = 0;
   *depth = -1;
@@ -122,7 +154,7 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   urEllipsoid e;
   ur_geom_ellipsoid(m, d, g, &e);
   int body = m->geom[g].body;
-  double R[9], o[3], vo[3], w[3], fsum = 0;
+  double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0, dep;
   bodymotion(d, body, R, o, vo, w);
   for (int i = 0; i < nn; i++) {
     if (mb->invm[i] == 0) {
@@ -134,25 +166,31 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     if (urm_dot(r, r) >= rg * rg) {
       continue;
     }
-    double fi[3];
-    double dep =
-        urm_contact_node(&mb->spec, m->opt.dt, &e, o, vo, w, xi, v + 3 * i, mb->mass[i], fi);
-    if (dep > *depth) {
-      *depth = dep;
-    }
-    if (fi[0] == 0 && fi[1] == 0 && fi[2] == 0) {
+    fsum += contact_point(m, d, mb, &e, body, o, vo, w, xi, v + 3 * i, 0.5 * mb->mass[i], &i, 1, f,
+                          fc, &dep, &ep);
+    *depth = fmax(*depth, dep);
+  }
+  for (int t = 0; t < mb->nt; t++) {
+    const int* n3 = mb->tri + 3 * t;
+    if (mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0) {
       continue;
     }
-    double rf[3] = {-fi[0], -fi[1], -fi[2]};
-    for (int k = 0; k < 3; k++) {
-      f[3 * i + k] += fi[k];
-      fc[3 * i + k] += fi[k];
+    double xc[3], vc[3], r[3];
+    for (int c = 0; c < 3; c++) {
+      xc[c] = (x[3 * n3[0] + c] + x[3 * n3[1] + c] + x[3 * n3[2] + c]) / 3;
     }
-    ur_apply_force(m, d, body, rf, xi);
-    // normal part: along the outward normal, i.e. the force's projection on it; friction is
-    // at most mu of it, so the norm bounds it within 1 + mu
-    fsum += sqrt(urm_dot(fi, fi)) / sqrt(1 + mb->spec.mu * mb->spec.mu);
+    urm_sub(r, xc, gc);
+    if (urm_dot(r, r) >= rg * rg) {
+      continue;
+    }
+    for (int c = 0; c < 3; c++) {
+      vc[c] = (v[3 * n3[0] + c] + v[3 * n3[1] + c] + v[3 * n3[2] + c]) / 3;
+    }
+    double mc = 0.5 * mb->spec.rhot * mb->area0[t];
+    fsum += contact_point(m, d, mb, &e, body, o, vo, w, xc, vc, mc, n3, 3, f, fc, &dep, &ep);
+    *depth = fmax(*depth, dep);
   }
+  sc[urMEMS_ECONT] += ep;
   return fsum;
 }
 
@@ -225,6 +263,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   // fabric and gas, then contacts (near the free nodes' box)
   ur_mem_forces(mb, st, f, NULL);
   memset(fc, 0, 3 * (size_t)nn * sizeof(double));
+  sc[urMEMS_ECONT] = 0;
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   for (int i = 0; i < nn; i++) {
     if (mb->invm[i] != 0) {

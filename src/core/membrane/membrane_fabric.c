@@ -1,77 +1,252 @@
 /* membrane_fabric.c: the fabric's constant-strain triangles (total Lagrangian): Green strain in
  * the warp/weft axes of the reference metric, the orthotropic plane-stress law (membrane
  * stiffnesses E t), the woven fabric's shear (soft until the locking angle, stiff after:
- * the shape of the paper's Fig. 5, bilinear as OpenRadioss LAW58 without its curve option), the
- * tension-field reduction of the compressive principal stress (wrinkling, LAW19's rule with the
- * factor RE), stiffness-proportional material damping; and the uniform gas pressure on every
- * triangle. Sources: materials-membrane sheet C.1, C.2, A.3, C.3. */
+ * the shape of the paper's Fig. 5, bilinear as OpenRadioss LAW58 without its curve option),
+ * wrinkling by the tension-field theory's relaxed energy (Pipkin 1986, "The relaxed energy
+ * density for isotropic elastic membranes", IMA J. Appl. Math. 36:85-99; Steigmann 1990, Proc.
+ * R. Soc. A 429:141-173): W_r(E) = min over D >= 0 of W(E + D), taut, wrinkled (uniaxial stress)
+ * or slack, never a compressive principal stress, and its stress is exactly dW_r/dE, so the
+ * undamped bag conserves energy; a share RE of the taut law is kept (a potential too),
+ * stiffness-proportional material damping; and the uniform gas pressure on every triangle.
+ * Sources: materials-membrane sheet C.1, C.2, A.3, C.3. */
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "membrane_internal.h"
 
 //---------------------------------- law -----------------------------------------------------------
 
-/* shear resultant and energy density at engineering Green shear g = 2 E12 (= sin of the
-   warp-weft angle change for unstretched yarns): G0 until sin(lock), GT beyond */
-static double shear(const urMemSpec* s, double gl, double g, double* w) {
-  double ag = fabs(g);
-  if (ag <= gl) {
-    *w = 0.5 * s->g0t * g * g;
-    return s->g0t * g;
-  }
-  double d = ag - gl;
-  *w = 0.5 * s->g0t * gl * gl + s->g0t * gl * d + 0.5 * s->gtt * d * d;
-  return copysign(s->g0t * gl + s->gtt * d, g);
-}
-
-
-/* the law's constants, computed once per force evaluation */
+/* the law's constants, computed once per force evaluation: the taut law's stiffnesses, its
+   compliance (for the wrinkled state), the shear law (stiffnesses kept above 1e-6 of the tensile
+   one so that its inverse exists) */
 typedef struct {
-  double c11, c12, c21, c22; /* S11 = c11 E11 + c12 E22, S22 = c21 E11 + c22 E22 */
-  double gl;                 /* sine of the lock angle */
+  double c11, c12, c22; /* S11 = c11 E11 + c12 E22, S22 = c12 E11 + c22 E22 */
+  double a11, a12, a22; /* and back: E11 = a11 S11 + a12 S22, E22 = a12 S11 + a22 S22 */
+  double g0, gt, gl;    /* shear stiffness before and after the lock, sine of the lock angle */
+  double re;            /* share of the taut law kept (its compression) */
 } lawk;
 
 static lawk law_constants(const urMemSpec* s) {
   double nu21 = s->nu12 * s->e2t / s->e1t, q = 1 / (1 - s->nu12 * nu21);
-  return (lawk){q * s->e1t, q * s->e1t * nu21, q * s->e2t * s->nu12, q * s->e2t, sin(s->lock)};
+  double gmin = 1e-6 * fmax(s->e1t, s->e2t);
+  return (lawk){q * s->e1t, q * s->e1t * nu21,  q * s->e2t,         1 / s->e1t,   -s->nu12 / s->e1t,
+                1 / s->e2t, fmax(s->g0t, gmin), fmax(s->gtt, gmin), sin(s->lock), s->re};
 }
 
 
-/* the taut orthotropic law, then the tension field; the energy density in *w */
+/* shear resultant and energy density at engineering Green shear g = 2 E12 (= sin of the
+   warp-weft angle change for unstretched yarns): G0 until sin(lock), GT beyond */
+static inline double shear(const lawk* k, double g, double* w) {
+  double ag = fabs(g), gl = k->gl;
+  if (ag <= gl) {
+    *w = 0.5 * k->g0 * g * g;
+    return k->g0 * g;
+  }
+  double d = ag - gl;
+  *w = 0.5 * k->g0 * gl * gl + k->g0 * gl * d + 0.5 * k->gt * d * d;
+  return copysign(k->g0 * gl + k->gt * d, g);
+}
+
+
+/* the shear law's inverse: the engineering shear strain at shear resultant tau, its slope in *c */
+static inline double shear_inv(const lawk* k, double tau, double* c) {
+  double at = fabs(tau), tl = k->g0 * k->gl;
+  if (at <= tl) {
+    *c = 1 / k->g0;
+    return tau / k->g0;
+  }
+  *c = 1 / k->gt;
+  return copysign(k->gl + (at - tl) / k->gt, tau);
+}
+
+
+/* the complementary energy W*(S) of the taut law (S11, S22, S12) */
+static inline double wstar(const lawk* k, double S11, double S22, double S12) {
+  double w = 0.5 * (k->a11 * S11 * S11 + 2 * k->a12 * S11 * S22 + k->a22 * S22 * S22);
+  double at = fabs(S12), tl = k->g0 * k->gl;
+  if (at <= tl) {
+    return w + 0.5 * S12 * S12 / k->g0;
+  }
+  return w + 0.5 * tl * k->gl + k->gl * (at - tl) + 0.5 * (at - tl) * (at - tl) / k->gt;
+}
+
+
+/* the largest S:E - W*(S) over the uniaxial stresses S = sigma m m^T along m = (c, sn): sigma in
+   *sig (the strain along m, lam, equals the fabric's own there) */
+static double uniaxial(const lawk* k, const double E[3], double c, double sn, double* sig) {
+  double lam = c * c * E[0] + sn * sn * E[1] + 2 * c * sn * E[2];
+  if (!(lam > 0)) {
+    *sig = 0;
+    return 0;
+  }
+  double cs = fabs(c * sn), c2 = c * c, s2 = sn * sn;
+  double q = c2 * c2 * k->a11 + 2 * c2 * s2 * k->a12 + s2 * s2 * k->a22;
+  double sg = lam / (q + cs * cs / k->g0);
+  if (sg * cs > k->g0 * k->gl) {
+    sg = (lam - cs * k->gl + cs * k->g0 * k->gl / k->gt) / (q + cs * cs / k->gt);
+  }
+  *sig = sg;
+  return sg * lam - wstar(k, sg * c2, sg * s2, sg * c * sn);
+}
+
+
+/* the five candidates of wrinkled(): the major principal strain's direction (half-angle
+   formulas: no trigonometry), the yarns', the bias directions, each with its best sigma; u and
+   its G replaced where one beats *G */
+static void candidates(const lawk* k, const double E[3], double* u1, double* u2, double* G) {
+  double sig;
+  double hd = 0.5 * (E[0] - E[1]), rr = sqrt(hd * hd + E[2] * E[2]), c2 = rr > 0 ? hd / rr : 1;
+  double cp = sqrt(0.5 * (1 + c2)), sp = copysign(sqrt(fmax(0, 0.5 * (1 - c2))), E[2]);
+  const double h2 = 0.70710678118654752;
+  const double cand[5][2] = {{cp, sp}, {1, 0}, {0, 1}, {h2, h2}, {h2, -h2}};
+  for (int j = 0; j < 5; j++) {
+    double c = cand[j][0], sn = cand[j][1];
+    double g = uniaxial(k, E, c, sn, &sig);
+    if (g > *G) {
+      *G = g;
+      *u1 = sqrt(sig) * c;
+      *u2 = sqrt(sig) * sn;
+    }
+  }
+}
+
+
+/* the wrinkled state of Green strain e (one positive principal strain, the taut stress not
+   positive): the relaxed energy W_r(E) = min over D >= 0 of W(E + D) (Pipkin 1986), by duality
+   the maximum over stresses S >= 0 of G(S) = S:E - W*(S) (W* the taut law's complementary
+   energy). The maximum lies on the uniaxial stresses S = u u^T: the best of five directions
+   (candidates()), then Newton on u (2 unknowns, kept ascending) until G is stationary, i.e.
+   (E - E_m) u = 0 with E_m the gradient of W* at S, the fabric's own strain (E_m - E = a n n^T,
+   n normal to u: the wrinkles' slack). S is the gradient of W_r (envelope theorem), W_r = G(S).
+   Warm start: uw (may be NULL) holds the triangle's u of its last wrinkled evaluation (0, 0 if
+   none). Newton starts there; when its first step is within 1 % of |u| (the strain moved
+   little, as between sub-steps: the same maximum, moved a little) the candidates are skipped,
+   else they are tried against it (from a strain far away the warm start alone can climb to a
+   lower local maximum: test_warm_start). The converged u is written back. Every start ends at
+   the same tolerance, a Newton step below 1e-6 of |u| (then taken: ~1e-12 of u left), 40 steps
+   at most. */
+static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, double* uw) {
+  double E[3] = {e[0], e[1], 0.5 * e[2]}, u1 = 1, u2 = 0, G = -1;
+  int tried = 0; /* the candidates tried (or not needed) */
+  if (uw && (uw[0] != 0 || uw[1] != 0)) {
+    u1 = uw[0];
+    u2 = uw[1];
+    G = u1 * u1 * E[0] + u2 * u2 * E[1] + 2 * u1 * u2 * E[2] - wstar(k, u1 * u1, u2 * u2, u1 * u2);
+  } else {
+    candidates(k, E, &u1, &u2, &G);
+    tried = 1;
+  }
+  for (int it = 0; it < 40; it++) {
+    double S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk;
+    double Em11 = k->a11 * S11 + k->a12 * S22, Em22 = k->a12 * S11 + k->a22 * S22;
+    double Em12 = 0.5 * shear_inv(k, S12, &kk);
+    // half the gradient, (E - E_m) u, and half the Hessian, E - J (J: d(E_m u)/du)
+    double r1 = (E[0] - Em11) * u1 + (E[2] - Em12) * u2;
+    double r2 = (E[2] - Em12) * u1 + (E[1] - Em22) * u2;
+    double M11 = E[0] - (Em11 + 2 * k->a11 * S11 + 0.5 * kk * S22);
+    double M12 = E[2] - (Em12 + (2 * k->a12 + 0.5 * kk) * S12);
+    double M22 = E[1] - (Em22 + 2 * k->a22 * S22 + 0.5 * kk * S11);
+    // not concave here: shift the Hessian (Levenberg) so that the step ascends
+    double mm = 0.5 * (M11 + M22), hh = 0.5 * (M11 - M22);
+    double lmax = mm + sqrt(hh * hh + M12 * M12), tr = fabs(M11) + fabs(M22);
+    if (lmax > -1e-3 * tr) {
+      M11 -= lmax + 1e-3 * tr;
+      M22 -= lmax + 1e-3 * tr;
+    }
+    double det = M11 * M22 - M12 * M12;
+    double d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
+    if (!tried) {
+      // the warm start: kept alone when Newton stays near it
+      tried = 1;
+      if (!(det > 0 && d1 * d1 + d2 * d2 <= 1e-4 * (u1 * u1 + u2 * u2))) {
+        double G0 = G;
+        candidates(k, E, &u1, &u2, &G);
+        if (G > G0) {
+          continue;
+        }
+      }
+    }
+    if (!(det > 0)) {
+      break;
+    }
+    // a step this small is converged (Newton: the next would be ~1e-12 of u); else backtrack
+    // while G falls (beyond rounding)
+    if (d1 * d1 + d2 * d2 <= 1e-12 * (u1 * u1 + u2 * u2)) {
+      u1 += d1;
+      u2 += d2;
+      break;
+    }
+    double t = 1, Gn = G, tol = 1e-13 * fabs(G);
+    for (int b = 0; b < 12; b++, t *= 0.5) {
+      double v1 = u1 + t * d1, v2 = u2 + t * d2;
+      Gn = v1 * v1 * E[0] + v2 * v2 * E[1] + 2 * v1 * v2 * E[2] -
+           wstar(k, v1 * v1, v2 * v2, v1 * v2);
+      if (Gn >= G - tol) {
+        break;
+      }
+    }
+    if (!(Gn >= G - tol)) {
+      break;
+    }
+    u1 += t * d1;
+    u2 += t * d2;
+    G = Gn;
+  }
+  if (uw) {
+    uw[0] = u1;
+    uw[1] = u2;
+  }
+  S[0] = u1 * u1;
+  S[1] = u2 * u2;
+  S[2] = u1 * u2;
+  G = S[0] * E[0] + S[1] * E[1] + 2 * S[2] * E[2] - wstar(k, S[0], S[1], S[2]);
+  *w = fmax(G, 0);
+}
+
+
+/* the fabric's stress resultant S (S11, S22, S12) and energy density *w at Green strain e (E11,
+   E22, 2 E12): re times the taut law plus 1 - re times its relaxed energy's gradient (tension
+   field: taut, wrinkled or slack, never a compressive principal stress); uw: the triangle's
+   warm start (wrinkled(), may be NULL) */
 static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], double S[3],
-                          double* w) {
+                          double* w, double* uw) {
   double ws;
   S[0] = k->c11 * e[0] + k->c12 * e[1];
-  S[1] = k->c21 * e[0] + k->c22 * e[1];
-  S[2] = shear(s, k->gl, e[2], &ws);
-  double wn = 0.5 * (S[0] * e[0] + S[1] * e[1]);
+  S[1] = k->c12 * e[0] + k->c22 * e[1];
+  S[2] = shear(k, e[2], &ws);
+  double wt = 0.5 * (S[0] * e[0] + S[1] * e[1]) + ws;
+  *w = wt;
 
-  // tension field: scale the compressive principal stress by RE, keep the axes
+  // taut when the taut stress has no compressive principal stress
   double m = 0.5 * (S[0] + S[1]), h = 0.5 * (S[0] - S[1]);
-  double r = sqrt(h * h + S[2] * S[2]), p1 = m - r, p2 = m + r;
-  double f = 1;
-  if (p2 <= 0) {
-    S[0] *= s->re;
-    S[1] *= s->re;
-    S[2] *= s->re;
-    f = s->re;
-  } else if (p1 < 0) {
-    double beta = 0.5 * ((1 - s->re) * m / r + 1 + s->re);
-    S[0] = beta * (S[0] - p2) + p2;
-    S[1] = beta * (S[1] - p2) + p2;
-    S[2] = beta * S[2];
-    f = 0.5 * (1 + s->re);
+  if (m >= 0 && m * m >= h * h + S[2] * S[2]) {
+    return;
   }
-  *w = f * (wn + ws);
+  double Sr[3] = {0, 0, 0}, wr = 0;
+  double me = 0.5 * (e[0] + e[1]), he = 0.5 * (e[0] - e[1]);
+  if (me + sqrt(he * he + 0.25 * e[2] * e[2]) > 0) {
+    wrinkled(k, e, Sr, &wr, uw); // else slack: no stress, no energy
+  }
+  double re = k->re;
+  S[0] = re * S[0] + (1 - re) * Sr[0];
+  S[1] = re * S[1] + (1 - re) * Sr[1];
+  S[2] = re * S[2] + (1 - re) * Sr[2];
+  *w = re * wt + (1 - re) * wr;
 }
 
 
 void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w) {
+  urm_fabric_stress_warm(s, e, S, w, NULL);
+}
+
+
+void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], double* w,
+                            double* uw) {
   lawk k = law_constants(s);
   double ww;
-  stress(s, &k, e, S, &ww);
+  stress(s, &k, e, S, &ww, uw);
   if (w) {
     *w = ww;
   }
@@ -80,10 +255,11 @@ void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], doubl
 
 //---------------------------------- law over 4 triangles ------------------------------------------
 
-// the same law as stress() over 4 triangles at once (GCC vector extensions), branch-free: both
-// sides of each branch computed and the lane's side selected, every operation the scalar one's
-// in the same order, so each lane's bits are stress()'s (test_membrane_fabric checks it; a
-// change of the law goes into both). ISO C mode: no contraction into FMA in either.
+// the same law as stress() over 4 triangles at once (GCC vector extensions): the taut law
+// branch-free, both sides of the shear's branch computed and the lane's side selected, every
+// operation the scalar one's in the same order; a lane that is not taut goes through the scalar
+// stress() itself. So each lane's bits are stress()'s (test_membrane_fabric checks it; a change
+// of the taut law goes into both). ISO C mode: no contraction into FMA in either.
 #pragma GCC diagnostic ignored "-Wpsabi"
 typedef double urm4 __attribute__((vector_size(32)));
 typedef long long urm4i __attribute__((vector_size(32)));
@@ -114,36 +290,40 @@ AI urm4 sqrt4(urm4 x) {
 }
 
 /* shear() over 4 lanes */
-AI urm4 shear4(const urMemSpec* s, double gl, urm4 g, urm4* w) {
+AI urm4 shear4(const lawk* k, urm4 g, urm4* w) {
+  double gl = k->gl;
   urm4 ag = fabs4(g);
   urm4i lin = ag <= bc4(gl);
-  urm4 wl = bc4(0.5 * s->g0t) * g * g, sl = bc4(s->g0t) * g;
+  urm4 wl = bc4(0.5) * bc4(k->g0) * g * g, sl = bc4(k->g0) * g;
   urm4 d = ag - bc4(gl);
-  urm4 wk = bc4(0.5 * s->g0t * gl * gl) + bc4(s->g0t * gl) * d + bc4(0.5 * s->gtt) * d * d;
-  urm4 sk = copysign4(bc4(s->g0t * gl) + bc4(s->gtt) * d, g);
+  urm4 wk = bc4(0.5 * k->g0 * gl * gl) + bc4(k->g0 * gl) * d + bc4(0.5) * bc4(k->gt) * d * d;
+  urm4 sk = copysign4(bc4(k->g0 * gl) + bc4(k->gt) * d, g);
   *w = sel4(lin, wl, wk);
   return sel4(lin, sl, sk);
 }
 
-/* stress() over 4 lanes */
-AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], urm4* w) {
+/* stress() over 4 lanes: the taut law on all 4, then each lane not taut (wrinkled or slack,
+   rare enough to branch on) by the scalar stress(), which recomputes the same taut law bits */
+AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], urm4* w,
+                double* uw) {
   urm4 ws;
   S[0] = bc4(k->c11) * e[0] + bc4(k->c12) * e[1];
-  S[1] = bc4(k->c21) * e[0] + bc4(k->c22) * e[1];
-  S[2] = shear4(s, k->gl, e[2], &ws);
-  urm4 wn = bc4(0.5) * (S[0] * e[0] + S[1] * e[1]);
+  S[1] = bc4(k->c12) * e[0] + bc4(k->c22) * e[1];
+  S[2] = shear4(k, e[2], &ws);
+  *w = bc4(0.5) * (S[0] * e[0] + S[1] * e[1]) + ws;
 
   urm4 m = bc4(0.5) * (S[0] + S[1]), h = bc4(0.5) * (S[0] - S[1]);
-  urm4 r = sqrt4(h * h + S[2] * S[2]), p1 = m - r, p2 = m + r;
-  urm4i slack = p2 <= bc4(0), wrinkled = ~slack & (p1 < bc4(0));
-  urm4 re = bc4(s->re);
-  urm4 beta = bc4(0.5) * (bc4(1 - s->re) * m / r + bc4(1) + re);
-  urm4 f = sel4(slack, re, sel4(wrinkled, bc4(0.5 * (1 + s->re)), bc4(1)));
-  for (int j = 0; j < 2; j++) {
-    S[j] = sel4(slack, S[j] * re, sel4(wrinkled, beta * (S[j] - p2) + p2, S[j]));
+  urm4i taut = (m >= bc4(0)) & (m * m >= h * h + S[2] * S[2]);
+  for (int l = 0; l < 4; l++) {
+    if (!taut[l]) {
+      double el[3] = {e[0][l], e[1][l], e[2][l]}, Sl[3], wl;
+      stress(s, k, el, Sl, &wl, uw ? uw + 2 * l : NULL);
+      S[0][l] = Sl[0];
+      S[1][l] = Sl[1];
+      S[2][l] = Sl[2];
+      (*w)[l] = wl;
+    }
   }
-  S[2] = sel4(slack, S[2] * re, sel4(wrinkled, beta * S[2], S[2]));
-  *w = f * (wn + ws);
 }
 
 
@@ -153,7 +333,7 @@ void urm_fabric_stress4(const urMemSpec* s, const double e[12], double S[12], do
   for (int j = 0; j < 3; j++) {
     ev[j] = *(const urm4u*)(e + 4 * j);
   }
-  stress4(s, &k, ev, Sv, &wv);
+  stress4(s, &k, ev, Sv, &wv, NULL);
   for (int j = 0; j < 3; j++) {
     *(urm4u*)(S + 4 * j) = Sv[j];
   }
@@ -238,7 +418,7 @@ AI void rows3(const double* x, const int* n, urm4 o[3]) {
    three loops each (geometry, law, forces): short enough for the next blocks' work to overlap
    the law's square root and division. */
 static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const double* v, double* sc,
-                               double* vol, double* wsum, double* emax) {
+                               double* uw, double* vol, double* wsum, double* emax) {
   const urMemSpec* s = &mb->spec;
   lawk lk = law_constants(s);
   double V = 0, W = 0;
@@ -290,7 +470,7 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
     for (int q = 0; q < nb; q++) {
       int b = b0 + q;
       urm4 S[3], w;
-      stress4(s, &lk, Ec[q], S, &w);
+      stress4(s, &lk, Ec[q], S, &w, uw + 8 * b);
       em = sel4(Ec[q][0] > em, Ec[q][0], em);
       em = sel4(Ec[q][1] > em, Ec[q][1], em);
       for (int c = 0; c < 3; c++) {
@@ -380,7 +560,7 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
 
   // the fabric of every triangle, the enclosed volume (divergence theorem, ur_mem_volume's sum)
   double V, wsum, emax;
-  tri_pass(mb, x, v, scr, &V, &wsum, &emax);
+  tri_pass(mb, x, v, scr, scr + 36 * (size_t)mb->ntb, &V, &wsum, &emax);
   V /= 6;
 
   // gas: the pressure of the remaining mass; each triangle's nodal forces, summed on every node

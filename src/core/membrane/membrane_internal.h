@@ -27,9 +27,16 @@ static inline void urm_sub(double o[3], const double a[3], const double b[3]) {
 }
 
 /* the stress resultant (N/m: S11, S22, S12 in the material axes) of Green strain e (E11, E22,
-   2 E12) by the taut orthotropic law with the locking shear law, then the tension-field
-   reduction; the elastic energy density (J/m^2) of the reduced state in *w (may be NULL) */
+   2 E12) by the orthotropic law with the locking shear law relaxed for wrinkling (tension
+   field), plus re of the taut law; the energy density (J/m^2) whose gradient it is in *w (may be
+   NULL) */
 void urm_fabric_stress(const urMemSpec* s, const double e[3], double S[3], double* w);
+
+/* the same with the triangle's warm start uw (2 doubles of the run's state, ur_mem_state_size:
+   read, then the wrinkled state's solution written; 0, 0 for none): the same law to the
+   wrinkled Newton's tolerance, not bit for bit the cold one */
+void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], double* w,
+                            double* uw);
 
 /* urm_fabric_stress's law over 4 strains at once (the force pass's vector law), lanes side by
    side: e[4 j + l] is component j of lane l, S likewise, w the 4 energy densities; each lane's

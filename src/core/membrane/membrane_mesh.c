@@ -395,7 +395,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 18 * (size_t)mb->nn + urMEMS_N + 36 * (size_t)mb->ntb;
+  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb;
 }
 
 
@@ -425,6 +425,9 @@ void ur_mem_state_init(const urMembrane* mb, double* st, const double R[9], cons
   sc[urMEMS_EFAB] = 0;
   sc[urMEMS_TFIRST] = sc[urMEMS_TPEAK] = -1;
   sc[urMEMS_PPEAK] = 0;
+  sc[urMEMS_ECONT] = 0;
+  // no warm start for the wrinkled law yet (after the force pass's scratch)
+  memset(sc + urMEMS_N + 36 * (size_t)mb->ntb, 0, 8 * (size_t)mb->ntb * sizeof(double));
 }
 
 

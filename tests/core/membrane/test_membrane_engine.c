@@ -1,10 +1,9 @@
 /* test_membrane_engine.c: the membrane airbag inside the multibody engine: a rigid sphere thrown
- * at a bag carried by a fixed body. Without damping (fabric, contact, friction) and without the
- * tension-field reduction the total energy (the sphere's kinetic energy, the fabric's kinetic and
- * strain energy, the gas energy, the contact springs' energy) stays within 1 % of the sphere's initial kinetic energy (the
- * wrinkling rule scales stresses without a potential: with it the balance drifts by about 8 % of
- * the kinetic energy at 4 m/s, which is why it is off here); with damping (and wrinkling) the
- * total never rises above its start;
+ * at a bag carried by a fixed body. Without damping (fabric, contact, friction), with the
+ * default wrinkling (the tension-field relaxed energy plus re of the taut law, a potential) the
+ * total energy (the sphere's kinetic energy, the fabric's kinetic and strain energy, the gas
+ * energy, the contact springs' energy) stays within 1 % of the sphere's initial kinetic energy;
+ * with damping the total never rises above its start;
  * the sphere is stopped and thrown back; runs stepped in lock-step lanes are bit for bit the runs
  * stepped alone (membrane state included). */
 #include <math.h>
@@ -47,7 +46,6 @@ static urModel* bagmodel(int damped) {
     s->damp = 0;
     s->zeta_c = 0;
     s->mu = 0;
-    s->re = 1; // the tension-field rule is not derived from a potential (see the header)
   }
   int ib = ur_model_add_airbag(m, &bag);
   assert_true(ib >= 0);
@@ -74,14 +72,9 @@ static double bag_bottom(const urModel* m) {
 static double energy(const urModel* m, const urData* d) {
   const urMembrane* mb = m->bag[0].mem;
   const double* st = d->mem + m->bag[0].madr;
-  const double *fc = st + 9 * mb->nn, *sc = st + 18 * mb->nn;
-  // the penalty springs' energy |f|^2 / 2k (undamped, frictionless: f = k depth)
-  double dk = fmax(m->opt.dt, mb->spec.kc_dt), ep = 0;
-  for (int i = 0; i < mb->nn; i++) {
-    double k = mb->spec.kc_alpha * mb->mass[i] / (dk * dk);
-    const double* f = fc + 3 * i;
-    ep += (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / (2 * k);
-  }
+  const double* sc = st + 18 * mb->nn;
+  // the penalty springs' energy k depth^2 / 2 (nodes and centroids)
+  double ep = sc[urMEMS_ECONT];
   return ur_energy_kinetic(m, d) + ur_mem_kinetic(mb, st) +
          ur_mem_gas_energy(mb, sc[urMEMS_P], sc[urMEMS_V]) + sc[urMEMS_EFAB] + ep;
 }
@@ -196,12 +189,23 @@ static double hull_area(double* p, int n) {
 
 
 /* the bag squeezed slowly between the carrier's flat plate (a support) and a plate below it on a
-   prismatic joint (80 mm), then held: P V^gamma constant to 1e-6, and the plate force between
-   the gauge pressure times the two bounds of the contact area the mesh gives: the triangles
-   wholly in contact (the hull of the contact nodes) and the nodes in contact with a third of
-   their triangles' area. (The issue's 3 % against one area is not met: at mesh 6 the force is
-   17 % above the first and 25 % below the second, and the gap did not close at mesh 10 and 14:
-   the contact edge is resolved by whole elements.) */
+   prismatic joint (80 mm), then held: P V^gamma constant to 1e-6, and the plate force against
+   the gauge pressure times the contact area measured from the mesh: the projected area inside
+   the zero-gap contour (the gap to the plate interpolated linearly over the triangles), between
+   the crude bounds of the triangles wholly in contact (the hull of the contact nodes) and of the
+   nodes in contact with a third of their triangles' area.
+   The issue's 3 % is not met, and finer meshes do not meet it (issue 32, measured with this
+   test's setup): force / (gauge x zero-gap area) - 1 = +11.9 % at mesh 6, -8.2 % at mesh 10,
+   -14.2 % at 14, -9.5 % at 20, while force / gauge converges (0.0368, 0.0337, 0.0327, 0.0351 m^2:
+   equivalent radius 108, 104, 102, 106 mm). Two reasons, both of the penalty contact at the
+   nodes, not of the gas or the fabric: (1) the penalty is a soft foundation (per area
+   alpha rhot / kc_dt^2 = 1.85e7 N/m^3: 1.1 mm deep at 21 kPa), the membrane enters it with a
+   slope of about gauge / sqrt(T k), so its tension carries a share of the gauge load at the
+   detachment line (T sin(alpha) x perimeter, estimated at 130 N of 780 here) that does not shrink
+   with the mesh; (2) the rings next to the detachment line hover a fraction of a millimetre
+   above the plate, so the linear zero-gap contour moves by up to a ring width as the rings
+   fall, +-h / r. With kc_dt = 0 (6.25 times stiffer here) the ratio was +20 % at mesh 10 and
+   -12 % at 14: the second reason dominates until h / r is a few per cent (mesh > 60). */
 static void test_plates(void** state) {
   urModel* m = ur_model_new();
   double I[6] = {0.01, 0.01, 0.01, 0, 0, 0};
@@ -311,13 +315,49 @@ static void test_plates(void** state) {
   free(na);
   double expect = (P - mb->spec.patm) * area;
   double dp = P - mb->spec.patm;
+  // the contact area from the mesh: the projected area where the gap to the plate's face,
+  // interpolated linearly over each triangle of the lower half, is <= 0 (the detachment line
+  // is its zero contour, interpolated along the edges)
+  double ptop = d->qpos[0] + 0.05, a0 = 0;
+  for (int t = 0; t < mb->nt; t++) {
+    const int* v = mb->tri + 3 * t;
+    double g[3], poly[4][2];
+    int np2 = 0, low = 1;
+    for (int k = 0; k < 3; k++) {
+      g[k] = x[3 * v[k] + 2] - ptop;
+      low &= x[3 * v[k] + 2] < zmid;
+    }
+    for (int k = 0; k < 3 && low; k++) {
+      int l = (k + 1) % 3;
+      const double *pk = x + 3 * v[k], *pl = x + 3 * v[l];
+      if (g[k] <= 0) {
+        poly[np2][0] = pk[0], poly[np2][1] = pk[1], np2++;
+      }
+      if ((g[k] <= 0) != (g[l] <= 0)) {
+        double u = g[k] / (g[k] - g[l]);
+        poly[np2][0] = pk[0] + u * (pl[0] - pk[0]);
+        poly[np2][1] = pk[1] + u * (pl[1] - pk[1]);
+        np2++;
+      }
+    }
+    double a = 0;
+    for (int k = 0; k < np2; k++) {
+      int l = (k + 1) % np2;
+      a += poly[k][0] * poly[l][1] - poly[l][0] * poly[k][1];
+    }
+    a0 += 0.5 * fabs(a);
+  }
   print_message(
       "plates: P %.0f Pa, V %.5f m^3 (from %.5f), force %.1f N; gauge times the area "
-      "of the nodes in contact %.1f N, of the triangles wholly in contact %.1f N\n",
-      P, V, mb->vref, force, expect, dp * ah);
+      "of the nodes in contact %.1f N, of the triangles wholly in contact %.1f N, inside the "
+      "zero-gap contour %.1f N (force / that - 1 = %+.4f)\n",
+      P, V, mb->vref, force, expect, dp * ah, dp * a0, force / (dp * a0) - 1);
   assert_true(V < 0.95 * mb->vref);
   assert_true(fabs(a3 / ah - 1) < 0.05);
   assert_true(force > dp * ah && force < expect);
+  assert_true(a0 > ah && a0 < area);
+  // the issue's 3 % is not met (measured +11.9 % at mesh 6; see the comment above the test)
+  assert_true(fabs(force / (dp * a0) - 1) < 0.15);
   ur_data_free(d);
   ur_model_free(m);
 }

@@ -2,13 +2,16 @@
  * bag inflated to a gauge pressure carries the Laplace tension p R / 2 in every direction (mean
  * over the triangles within 1 %, with R from the mesh's volume; the mean fabric strain within 1 %
  * of the orthotropic law's), the mesh is closed and outward (its volume near the sphere's), the
- * tension-field rule keeps the tensile principal stress and scales the compressive one by RE,
+ * tension-field law (relaxed energy) is taut, wrinkled (uniaxial) or slack, never compressive,
+ * its stress the exact gradient of its energy, and ur_mem_forces' forces minus the gradient of
+ * the energy it reports (finite differences on a random state),
  * the shear law is G0 before the lock and GT after it, the isentropic pressure law, and the vent's
  * isentropic orifice flow against the reference sheet's mass fluxes. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
@@ -75,6 +78,8 @@ static void test_laplace_sphere(void** state) {
     es += 0.5 * (e[0] + e[1]) * a;
     as += a;
   }
+  print_message("laplace: mean tension / (p R / 2) - 1 = %+.5f, mean strain / law's - 1 = %+.5f\n",
+                ts / as / T - 1, es / as / green - 1);
   assert_true(fabs(ts / as / T - 1) < 0.01);
   assert_true(fabs(es / as / green - 1) < 0.01);
   // the gas kept its declared gauge pressure within 1 %
@@ -83,25 +88,187 @@ static void test_laplace_sphere(void** state) {
 }
 
 
+/* the taut law's stress at strain e (no tension field) */
+static void taut(const urMemSpec* s, const double e[3], double S[3]) {
+  double nu21 = s->nu12 * s->e2t / s->e1t, q = 1 / (1 - s->nu12 * nu21);
+  S[0] = q * s->e1t * (e[0] + nu21 * e[1]);
+  S[1] = q * s->e2t * (e[1] + s->nu12 * e[0]);
+  double gl = sin(s->lock), ag = fabs(e[2]);
+  S[2] = ag <= gl ? s->g0t * e[2] : copysign(s->g0t * gl + s->gtt * (ag - gl), e[2]);
+}
+
+
 static void test_tension_field(void** state) {
   urMemSpec s;
   ur_mem_spec_default(&s);
-  double S[3], w;
-  // uniaxial tension with a contraction that the law would turn into compression
+  double S[3], T[3], w, re = s.re;
+  // uniaxial tension along the warp with a contraction beyond Poisson's: wrinkled, the
+  // relaxed law carries the uniaxial stress E1 t E11, the weft nothing; re of the taut law kept
   double e[3] = {0.01, -0.01, 0};
   urm_fabric_stress(&s, e, S, &w);
-  double nu21 = s.nu12 * s.e2t / s.e1t, q = 1 / (1 - s.nu12 * nu21);
-  double s1 = q * s.e1t * (e[0] + nu21 * e[1]), s2 = q * s.e2t * (e[1] + s.nu12 * e[0]);
-  assert_true(fabs(S[0] - s1) < 1e-9 * fabs(s1));
-  assert_true(fabs(S[1] - s.re * s2) < 1e-9 * fabs(s2));
-  // biaxial compression: everything scaled by RE
+  taut(&s, e, T);
+  assert_true(fabs(S[0] - ((1 - re) * s.e1t * e[0] + re * T[0])) < 1e-9 * T[0]);
+  assert_true(fabs(S[1] - re * T[1]) < 1e-9 * fabs(T[1]));
+  assert_true(fabs(S[2]) < 1e-9 * T[0]);
+  // its energy: the uniaxial E1 t E11^2 / 2 (the fabric's own weft strain is -nu12 E11)
+  double wt = 0.5 * (T[0] * e[0] + T[1] * e[1]);
+  assert_true(fabs(w - ((1 - re) * 0.5 * s.e1t * e[0] * e[0] + re * wt)) < 1e-9 * wt);
+  // biaxial compression: slack, only re of the taut law
   double c[3] = {-0.01, -0.02, 0.001};
   urm_fabric_stress(&s, c, S, &w);
-  assert_true(S[0] < 0 && S[0] > s.re * 1.01 * q * s.e1t * (c[0] + nu21 * c[1]));
+  taut(&s, c, T);
+  for (int k = 0; k < 3; k++) {
+    assert_true(fabs(S[k] - re * T[k]) < 1e-9 * fabs(T[0]));
+  }
   // biaxial tension: the taut law
   double t[3] = {0.01, 0.02, 0};
   urm_fabric_stress(&s, t, S, &w);
-  assert_true(fabs(S[1] - q * s.e2t * (t[1] + s.nu12 * t[0])) < 1e-6);
+  taut(&s, t, T);
+  assert_true(fabs(S[1] - T[1]) < 1e-6);
+}
+
+
+/* the relaxed law (re = 0) on random strains, taut, wrinkled and slack, with and beyond the shear
+   lock: no compressive principal stress, the stress is the energy's gradient (central differences),
+   relaxing never raises the energy, and the wrinkled stress is the largest uniaxial one (a scan of
+   directions: S:E - W*(S) is largest at the law's stress) */
+static void test_relaxed_law(void** state) {
+  urMemSpec s;
+  ur_mem_spec_default(&s);
+  s.re = 0;
+  srand(7);
+  int nw = 0, nt = 0, ns = 0;
+  for (int i = 0; i < 3000; i++) {
+    double e[3], S[3], T[3], w, wt;
+    e[0] = 0.06 * (rand() / (double)RAND_MAX - 0.5);
+    e[1] = 0.06 * (rand() / (double)RAND_MAX - 0.5);
+    e[2] = 1.6 * (rand() / (double)RAND_MAX - 0.5) * (i % 3 ? 0.1 : 1);
+    urm_fabric_stress(&s, e, S, &w);
+    taut(&s, e, T);
+    wt = 0.5 * (T[0] * e[0] + T[1] * e[1]);
+    double gl = sin(s.lock), ag = fabs(e[2]);
+    wt += ag <= gl ? 0.5 * s.g0t * ag * ag
+                   : 0.5 * s.g0t * gl * gl + s.g0t * gl * (ag - gl) +
+                         0.5 * s.gtt * (ag - gl) * (ag - gl);
+    double m = 0.5 * (S[0] + S[1]), h = 0.5 * (S[0] - S[1]), r = sqrt(h * h + S[2] * S[2]);
+    double scale = fabs(T[0]) + fabs(T[1]) + fabs(T[2]) + 1;
+    assert_true(m - r > -1e-9 * scale);
+    assert_true(w >= 0 && w <= wt * (1 + 1e-12) + 1e-15);
+    // classify
+    if (S[0] == 0 && S[1] == 0 && S[2] == 0) {
+      ns++;
+    } else if (fabs(w - wt) <= 1e-12 * wt) {
+      nt++;
+    } else {
+      nw++;
+      // no uniaxial stress along another direction does better (dual: max of S:E - W*(S))
+      double best = -INFINITY;
+      for (int j = 0; j < 3600; j++) {
+        double ph = M_PI * j / 3600, c = cos(ph), sn = sin(ph);
+        double lam = c * c * e[0] + sn * sn * e[1] + c * sn * e[2];
+        // maximise over sigma by golden section (concave in sigma)
+        double lo = 0, hi = 4 * s.e1t * fabs(lam) + 1;
+        for (int it = 0; it < 80; it++) {
+          double a = lo + 0.382 * (hi - lo), b = lo + 0.618 * (hi - lo), ga[2];
+          for (int z = 0; z < 2; z++) {
+            double sg = z ? b : a, S11 = sg * c * c, S22 = sg * sn * sn, S12 = sg * c * sn;
+            double ws = fabs(S12) <= s.g0t * gl
+                            ? S12 * S12 / (2 * s.g0t)
+                            : s.g0t * gl * gl / 2 + gl * (fabs(S12) - s.g0t * gl) +
+                                  pow(fabs(S12) - s.g0t * gl, 2) / (2 * s.gtt);
+            double wn =
+                0.5 * (S11 * S11 / s.e1t - 2 * s.nu12 / s.e1t * S11 * S22 + S22 * S22 / s.e2t);
+            ga[z] = sg * lam - wn - ws;
+          }
+          if (ga[0] < ga[1]) {
+            lo = a;
+          } else {
+            hi = b;
+          }
+        }
+        best = fmax(best, 0);
+        double sg = 0.5 * (lo + hi), S11 = sg * c * c, S22 = sg * sn * sn, S12 = sg * c * sn;
+        double ws = fabs(S12) <= s.g0t * gl ? S12 * S12 / (2 * s.g0t)
+                                            : s.g0t * gl * gl / 2 + gl * (fabs(S12) - s.g0t * gl) +
+                                                  pow(fabs(S12) - s.g0t * gl, 2) / (2 * s.gtt);
+        double wn = 0.5 * (S11 * S11 / s.e1t - 2 * s.nu12 / s.e1t * S11 * S22 + S22 * S22 / s.e2t);
+        best = fmax(best, sg * lam - wn - ws);
+      }
+      // the law's value is the maximum (the scan within its resolution, never above)
+      assert_true(best <= w * (1 + 1e-9) + 1e-12);
+      assert_true(best >= w * (1 - 1e-3));
+    }
+    // the stress is the gradient of the energy
+    for (int k = 0; k < 3; k++) {
+      double hk = 1e-7 * (k == 2 ? 10 : 1), ep[3] = {e[0], e[1], e[2]}, em[3] = {e[0], e[1], e[2]};
+      double Sp[3], wp, wm;
+      ep[k] += hk;
+      em[k] -= hk;
+      urm_fabric_stress(&s, ep, Sp, &wp);
+      urm_fabric_stress(&s, em, Sp, &wm);
+      assert_true(fabs((wp - wm) / (2 * hk) - S[k]) < 1e-5 * scale);
+    }
+  }
+  print_message("relaxed law: %d taut, %d wrinkled, %d slack\n", nt, nw, ns);
+  assert_true(nt > 100 && nw > 100 && ns > 100);
+}
+
+
+/* the nodal forces of ur_mem_forces are minus the gradient of the energy it reports (fabric
+   strain energy urMEMS_EFAB plus the gas energy) on a random state of a coarse bag, some of its
+   triangles taut, some wrinkled, some slack (central differences on every coordinate of a few
+   nodes) */
+static void test_force_gradient(void** state) {
+  urMembrane* mb = sphere(0.2, 3, 1e4);
+  int nn = mb->nn;
+  double* st = calloc(ur_mem_state_size(mb), sizeof(double));
+  double* f = calloc(3 * (size_t)nn, sizeof(double));
+  static const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, z[3] = {0, 0, 0};
+  ur_mem_state_init(mb, st, I, z, z, z);
+  srand(11);
+  for (int i = 0; i < 3 * nn; i++) {
+    st[i] = st[i] * 1.01 + 0.008 * (rand() / (double)RAND_MAX - 0.5);
+  }
+  // the states of the triangles under the taut law
+  const urMemSpec* s = &mb->spec;
+  int kind[3] = {0, 0, 0};
+  for (int t = 0; t < mb->nt; t++) {
+    double F[6], e[3], T[3];
+    urm_tri_strain(mb, st, t, F, e);
+    taut(s, e, T);
+    double m = 0.5 * (T[0] + T[1]), h = 0.5 * (T[0] - T[1]);
+    double me = 0.5 * (e[0] + e[1]), he = 0.5 * (e[0] - e[1]);
+    kind[m - sqrt(h * h + T[2] * T[2]) >= 0            ? 0
+         : me + sqrt(he * he + 0.25 * e[2] * e[2]) > 0 ? 1
+                                                       : 2]++;
+  }
+  print_message("random state: %d taut, %d wrinkled, %d slack triangles\n", kind[0], kind[1],
+                kind[2]);
+  assert_true(kind[0] > 5 && kind[1] > 5 && kind[2] > 5);
+  urMemInfo info;
+  ur_mem_forces(mb, st, f, &info);
+  double fmaxv = 0;
+  for (int i = 0; i < 3 * nn; i++) {
+    fmaxv = fmax(fmaxv, fabs(f[i]));
+  }
+  double* g = calloc(3 * (size_t)nn, sizeof(double));
+  for (int i = 0; i < nn; i += 7) {
+    for (int k = 0; k < 3; k++) {
+      double x0 = st[3 * i + k], h = 1e-7, pe[2];
+      for (int sgn = 0; sgn < 2; sgn++) {
+        st[3 * i + k] = x0 + (sgn ? -h : h);
+        ur_mem_forces(mb, st, g, &info);
+        pe[sgn] = info.efabric + ur_mem_gas_energy(mb, info.pressure, info.volume);
+      }
+      st[3 * i + k] = x0;
+      double fd = -(pe[0] - pe[1]) / (2 * h);
+      assert_true(fabs(fd - f[3 * i + k]) < 1e-5 * fmaxv);
+    }
+  }
+  free(g);
+  free(f);
+  free(st);
+  ur_mem_free(mb);
 }
 
 
@@ -215,8 +382,9 @@ static void test_stress4_bitwise(void** state) {
 
 /* the forces as the triangle loop computed them one triangle at a time (the reference the
    force pass must match bit for bit): volume, pressure, then each triangle's strain, law,
-   damping and nodal forces added in triangle order */
-static void forces_ref(const urMembrane* mb, const double* st, double* f, urMemInfo* info) {
+   damping and nodal forces added in triangle order; each triangle's law warm-started from its
+   slot of st (2 doubles a triangle after the scratch), which it updates */
+static void forces_ref(const urMembrane* mb, double* st, double* f, urMemInfo* info) {
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   const double *x = st, *v = st + 3 * nn, *sc = st + 18 * nn;
@@ -229,7 +397,7 @@ static void forces_ref(const urMembrane* mb, const double* st, double* f, urMemI
     const double* Di = mb->dminv + 4 * t;
     double F[6], e[3], S[3], w;
     urm_tri_strain(mb, x, t, F, e);
-    urm_fabric_stress(s, e, S, &w);
+    urm_fabric_stress_warm(s, e, S, &w, st + 18 * nn + urMEMS_N + 36 * mb->ntb + 2 * t);
     wsum += w * mb->area0[t];
     double e1 = fmax(e[0], e[1]);
     if (e1 > emax) {
@@ -271,7 +439,8 @@ static void forces_ref(const urMembrane* mb, const double* st, double* f, urMemI
 static void test_forces_bitwise(void** state) {
   // the force pass (4 triangles at a time, sums and nodal forces in triangle order) against the
   // one-triangle-at-a-time reference, bit for bit: a bag stretched, squeezed and sheared at
-  // random (every regime of the law), moving at random, with damping and without
+  // random (every regime of the law), moving at random, with damping and without; the first
+  // evaluation cold, the next ones warm-started from the previous random state's solution
   for (int damp = 0; damp < 2; damp++) {
     urMemSpec s;
     char err[200];
@@ -282,9 +451,10 @@ static void test_forces_bitwise(void** state) {
     assert_non_null(mb);
     int nn = mb->nn;
     double* st = calloc(ur_mem_state_size(mb), sizeof(double));
+    size_t ns = ur_mem_state_size(mb);
     double *f = malloc(3 * (size_t)nn * sizeof(double)),
-           *g = malloc(3 * (size_t)nn * sizeof(double));
-    assert_true(st && f && g);
+           *g = malloc(3 * (size_t)nn * sizeof(double)), *st2 = malloc(ns * sizeof(double));
+    assert_true(st && f && g && st2);
     unsigned long long r = 777 + damp;
     for (int it = 0; it < 20; it++) {
       double sx = uni(&r, 0.9, 1.1), sz = uni(&r, 0.5, 1.5);
@@ -299,26 +469,65 @@ static void test_forces_bitwise(void** state) {
       }
       st[18 * nn + urMEMS_MGAS] = mb->mref * uni(&r, 0.9, 1.1);
       urMemInfo a, b;
+      memcpy(st2, st, ns * sizeof(double));
       ur_mem_forces(mb, st, f, &a);
-      forces_ref(mb, st, g, &b);
+      forces_ref(mb, st2, g, &b);
       assert_memory_equal(f, g, 3 * (size_t)nn * sizeof(double));
       assert_memory_equal(&a, &b, sizeof a);
+      size_t w0 = 18 * (size_t)nn + urMEMS_N + 36 * (size_t)mb->ntb;
+      assert_memory_equal(st + w0, st2 + w0, 2 * (size_t)mb->nt * sizeof(double));
       assert_true(a.strain > 0 && a.efabric > 0 && a.volume > 0);
     }
     free(f);
     free(g);
     free(st);
+    free(st2);
     ur_mem_free(mb);
   }
+}
+
+
+static void test_warm_start(void** state) {
+  // the wrinkled law warm-started (from the solution at a nearby strain, as between sub-steps,
+  // and from one at an unrelated strain) gives the cold law's stress and energy to the Newton's
+  // tolerance
+  urMemSpec s;
+  ur_mem_spec_default(&s);
+  unsigned long long r = 4242;
+  int nw = 0;
+  double far[2] = {0, 0}, dmax = 0;
+  for (int it = 0; it < 3000; it++) {
+    double e[3] = {uni(&r, -0.02, 0.03), uni(&r, -0.02, 0.03), uni(&r, -1, 1) * 0.3};
+    double S[3], w, Sw[3], ww, Sf[3], wf, u[2] = {0, 0};
+    urm_fabric_stress(&s, e, S, &w);
+    double en[3] = {e[0] * (1 + 1e-3), e[1] - 1e-5, e[2] + 1e-4}, Sn[3], wn;
+    urm_fabric_stress_warm(&s, en, Sn, &wn, u); // u: the solution near e, or 0, 0 if not wrinkled
+    double u0[2] = {u[0], u[1]};
+    urm_fabric_stress_warm(&s, e, Sw, &ww, u);
+    urm_fabric_stress_warm(&s, e, Sf, &wf, far);
+    double sc = fabs(S[0]) + fabs(S[1]) + fabs(S[2]) + 1e-3;
+    for (int j = 0; j < 3; j++) {
+      dmax = fmax(dmax, fmax(fabs(Sw[j] - S[j]), fabs(Sf[j] - S[j])) / sc);
+    }
+    assert_true(fabs(ww - w) <= 1e-9 * (fabs(w) + 1e-6) && fabs(wf - w) <= 1e-9 * (fabs(w) + 1e-6));
+    if (u0[0] != 0 || u0[1] != 0) {
+      nw++;
+    }
+  }
+  printf("warm start: %d of 3000 strains wrinkled; largest stress difference %.2e of |S|\n", nw,
+         dmax);
+  assert_true(nw > 300 && dmax <= 1e-9);
 }
 
 
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_mesh_closed),     cmocka_unit_test(test_laplace_sphere),
-      cmocka_unit_test(test_tension_field),   cmocka_unit_test(test_shear_lock),
+      cmocka_unit_test(test_tension_field),   cmocka_unit_test(test_relaxed_law),
+      cmocka_unit_test(test_force_gradient),  cmocka_unit_test(test_shear_lock),
       cmocka_unit_test(test_gas_law),         cmocka_unit_test(test_vent_flow),
       cmocka_unit_test(test_stress4_bitwise), cmocka_unit_test(test_forces_bitwise),
+      cmocka_unit_test(test_warm_start),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
