@@ -8,6 +8,8 @@
 # covering it and the new inputs. Prints the executions each target reached; a crash, a timeout,
 # a leak or a sanitizer report fails, its input kept beside BIN. Paths are given to libFuzzer
 # absolute: a target may work in a folder of its own (fuzz_run works in a scratch folder).
+# FUZZ_TIMEOUT (s, default 20): an input running longer counts as a hang; on a machine shared
+# with other jobs a slow input can pass 20 s without hanging (fuzz_run's grid and report scripts).
 set -u
 runs=$1; secs=$2; shift 2
 status=0
@@ -21,7 +23,7 @@ for bin in "$@"; do
   mkdir -p "$new" "$corpus"
   dict=""; [ -r "tests/fuzz/$name.dict" ] && dict="-dict=$root/tests/fuzz/$name.dict"
   start=$(date +%s)
-  "$bin" -runs="$runs" -max_total_time="$secs" -timeout=20 -rss_limit_mb=2048 \
+  "$bin" -runs="$runs" -max_total_time="$secs" -timeout=${FUZZ_TIMEOUT:-20} -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$dir/$t-" $dict "$new" "$corpus" >"$log" 2>&1
   rc=$?
   took=$(( $(date +%s) - start ))
