@@ -40,10 +40,10 @@ double ura_trace_scale(const uraTrace* tr, int k, const char** unit) {
 }
 
 /* a round tic spacing that gives about four intervals over [lo, hi] */
-static double tic_step(double lo, double hi) {
+static double tic_step(double lo, double hi, int n) {
   double span = hi - lo;
   if (!(span > 0) || !isfinite(span)) return 0;
-  double raw = span / 4, p = pow(10, floor(log10(raw))), m = raw / p;
+  double raw = span / n, p = pow(10, floor(log10(raw))), m = raw / p;
   return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
 }
 
@@ -113,6 +113,9 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
       fprintf(f, " noenhanced");
     }
     fprintf(f, "\nset lmargin 12\nset key font \",9\"\n");
+    /* many rows (history all): small type, so that labels and tic marks of neighbouring panels
+       do not run into each other */
+    if (rows > 4) fprintf(f, "set tics font \",8\"\nset key font \",8\"\n");
   } else if (tr->title) {
     ura_plot_text(f, "title", tr->title);
   }
@@ -124,12 +127,12 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
     snprintf(label, sizeof label, "%s%s%s%s", tr->names[k], *unit ? " (" : "", unit,
              *unit ? ")" : "");
     ura_plot_text(f, "ylabel", label);
+    if (rows > 4) fprintf(f, "set ylabel font \",8\"\n");
     if (a->nsel == 1 || s >= a->nsel - cols)
-      fprintf(f, "set xlabel \"t (ms from tau)\"\n");
+      fprintf(f, "set xlabel \"t (ms from tau)\"%s\n", rows > 4 ? " font \",9\"" : "");
     else
       fprintf(f, "unset xlabel\n");
 
-    /* in small panels, about four tic intervals */
     for (int i = 0; i < tr->n; i++) {
       double v = tr->v[(size_t)k * tr->n + i] * sc;
       if (isfinite(v)) {
@@ -137,7 +140,8 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
         hi = fmax(hi, v);
       }
     }
-    double dy = a->nsel > 1 ? tic_step(lo, hi) : 0;
+    /* in small panels about four tic intervals, in the many rows of history all two */
+    double dy = a->nsel > 1 ? tic_step(lo, hi, rows > 4 ? 2 : 4) : 0;
     if (dy > 0)
       fprintf(f, "set ytics %.9g\n", dy);
     else
