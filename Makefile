@@ -154,7 +154,7 @@ testdeps:
 	@sh scripts/setup.sh test
 check: testdeps
 	@$(MAKE) --no-print-directory $(JOBS) all mpi $(TEST_BIN) $(BUILD)/calibrate
-	@sh scripts/runtests.sh $(TEST_BIN)
+	@TEST_TIMES=$(BUILD)/test-times sh scripts/runtests.sh $(TEST_BIN)
 
 test: check
 

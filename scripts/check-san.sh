@@ -18,7 +18,7 @@ export ASAN_OPTIONS UBSAN_OPTIONS
 t0=$(date +%s)
 tests=$(find "$b"/tests -name 'test_*' -type f ! -name '*.d' | LC_ALL=C sort)
 # shellcheck disable=SC2086
-UASIMPACT=$b/uasimpact CALIBRATE=$b/calibrate sh scripts/runtests.sh $tests || status=1
+UASIMPACT=$b/uasimpact CALIBRATE=$b/calibrate TEST_TIMES=$b/test-times sh scripts/runtests.sh $tests || status=1
 t1=$(date +%s)
 echo "check-san: sanitized test suite: $((t1 - t0)) s"
 

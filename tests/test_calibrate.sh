@@ -49,7 +49,7 @@ check "every free parameter declared in uasimpact-model(5)" [ "$ok" -eq 1 ]
 if command -v make >/dev/null 2>&1; then
   env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -nB check-san >"$TMP/san" 2>&1
   check "check-san builds its calibrate" grep -q -- " -o build-san/calibrate src/tools/calibrate.c " "$TMP/san"
-  check "check-san runs the tests on it" grep -q '^UASIMPACT=$b/uasimpact CALIBRATE=$b/calibrate sh scripts/runtests.sh' scripts/check-san.sh
+  check "check-san runs the tests on it" grep -q '^UASIMPACT=$b/uasimpact CALIBRATE=$b/calibrate TEST_TIMES=$b/test-times sh scripts/runtests.sh' scripts/check-san.sh
 else
   skip "check-san builds its calibrate" "make is not installed"
 fi

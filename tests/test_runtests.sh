@@ -3,7 +3,9 @@
 # the closing lines "skipped (not run on this machine):" and "N passed, N failed, N skipped"; a
 # skip alone does not fail the suite unless NOSKIP=1; a failure or a crash does. It runs on a
 # made-up tests/ folder of its own (the runner picks up every tests/test_*.sh of the folder it
-# runs in).
+# runs in). Tests run TEST_JOBS at a time: two tests that each wait for the other pass together
+# with 2 and not with 1, and the report keeps the tests' order; TEST_TIMES keeps each test's
+# time.
 . tests/lib.sh
 
 W=$TMP/w
@@ -65,4 +67,24 @@ printf '. tests/lib.sh\ncheck deep true\nfinish\n' >"$W/tests/app/base/test_c.sh
 (cd "$W" && sh scripts/runtests.sh) >"$TMP/out" 2>&1; RC=$?
 check subfolders_found cond '[ "$RC" -eq 0 ] && has "$TMP/out" "^== tests/app/base/test_c.sh$" &&
   [ "$(tail -1 "$TMP/out")" = "1 passed, 0 failed, 0 skipped" ]'
+
+# two at a time: each of two tests waits (up to 10 s) for the other to have started
+rm "$W/tests/app/base/test_c.sh"
+for me in x y; do
+  other=$([ $me = x ] && echo y || echo x)
+  cat >"$W/tests/test_$me.sh" <<EOF
+. tests/lib.sh
+touch "$TMP/started_$me"
+n=0; while [ ! -e "$TMP/started_$other" ] && [ \$n -lt 100 ]; do sleep 0.1; n=\$((n + 1)); done
+check together [ -e "$TMP/started_$other" ]
+finish
+EOF
+done
+(cd "$W" && TEST_JOBS=2 TEST_TIMES="$TMP/times" sh scripts/runtests.sh) >"$TMP/out" 2>&1; RC=$?
+check two_at_a_time cond '[ "$RC" -eq 0 ] && [ "$(tail -1 "$TMP/out")" = "2 passed, 0 failed, 0 skipped" ]'
+check report_order cond '[ "$(grep "^== " "$TMP/out" | tr "\n" " ")" = "== tests/test_x.sh == tests/test_y.sh " ]'
+check times_kept cond '[ "$(wc -l <"$TMP/times")" -eq 2 ] && grep -q "^[0-9.]* tests/test_y.sh$" "$TMP/times"'
+rm -f "$TMP"/started_*
+(cd "$W" && TEST_JOBS=1 TEST_TIMES="$TMP/times" sh scripts/runtests.sh) >"$TMP/out" 2>&1; RC=$?
+check one_at_a_time cond '[ "$RC" -eq 1 ] && [ "$(tail -1 "$TMP/out")" = "1 passed, 1 failed, 0 skipped" ]'
 finish
