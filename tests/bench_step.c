@@ -144,11 +144,14 @@ static void lap(unsigned long long* prof, int k, unsigned long long* t0) {
   *t0 = t;
 }
 
-/* one semi-implicit Euler step of ur_step (engine_run.c) with its stages timed into prof */
+/* one semi-implicit Euler step of ur_step (engine_run.c: ur_forward_pre's stages, ur_forward_loads
+   stage by stage, the ABA, ur_forward_post, ur_step_euler) with its stages timed into prof */
 static void step_alone(const urModel* m, urData* d, unsigned long long* prof) {
   if (ur_step_begin(m, d) < 0) return;
   unsigned long long t0 = ticks();
-  ur_kinematics(m, d);
+  ur_kinematics_bodies(m, d);
+  ur_kinematics_gpos(m, d);
+  memset(d->gmat_ok, 0, (size_t)m->ngeom);
   ur_velocities(m, d);
   lap(prof, A_KIN, &t0);
   ur_restraints_kin(m, d);
