@@ -364,8 +364,9 @@ typedef struct {
                                       a touching history), then the active ones (supersets once
                                       pairs are reset) */
   int npcommit, npactive; /* lengths of the two lists */
-  unsigned char* gmat_ok; /* ngeom: gxmat is current (lane runs compute an ellipsoid's
-                                      orientation on first use: ur_geom_xmat) */
+  unsigned char* gmat_ok; /* ngeom: gxmat is current (steps, alone or in lanes, compute an
+                                      ellipsoid's orientation on first use: ur_geom_xmat;
+                                      ur_kinematics computes all) */
   // sensors and outputs
   double* sensordata; /* nsensordata: values at the last ur_forward */
   double* peakmax;    /* nsensordata: largest value since the run start */

@@ -63,21 +63,64 @@ double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]) 
 }
 
 
+// |diag(r) R^T u| of ellipsoid g: its half-width along unit u when it is an ellipsoid, and a
+// lower bound of it when it is a superellipsoid (the q-norm of ur_halfwidth_local, q <= 2, is at
+// least the 2-norm)
+static double halfwidth2(const urModel* m, urData* d, int g, const double u[3]) {
+  const double* R = ur_geom_xmat(m, d, g);
+  const double* r = m->geom[g].size;
+  double w[3];
+  uru_mulmat3tvec(w, R, u);
+  w[0] *= r[0];
+  w[1] *= r[1];
+  w[2] *= r[2];
+  return uru_norm3(w);
+}
+
+
 // cheap upper bound on the signed depth of ellipsoids ga, gb: the support-function gap
 // f(u) = (cA - cB).u + hA(u) + hB(u) >= min f = depth, at the centre line and at the warm
-// start u (if set); a negative bound proves separation without the narrow phase
+// start u (if set); a negative bound proves separation without the narrow phase. With a
+// superellipsoid (whose half-width costs calls of pow) f at the two directions is bounded from
+// below by the 2-norms first: the direction whose bound lies clearly above the other's value
+// cannot be the smaller and is not evaluated (the same minimum, bit for bit)
 double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]) {
   const double* ca = d->gxpos + 3 * ga;
   const double* cb = d->gxpos + 3 * gb;
   double dc[3] = {ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]}, c[3];
   double L = uru_norm3(dc), f = INFINITY;
+  int hasu = u[0] != 0 || u[1] != 0 || u[2] != 0;
+  if (L > 0 && hasu && (m->geom[ga].degree > 2 || m->geom[gb].degree > 2)) {
+    c[0] = -dc[0] / L;
+    c[1] = -dc[1] / L;
+    c[2] = -dc[2] / L;
+    double du = uru_dot3(dc, u);
+    double lc = -L + halfwidth2(m, d, ga, c) + halfwidth2(m, d, gb, c);
+    double lu = du + halfwidth2(m, d, ga, u) + halfwidth2(m, d, gb, u);
+    // far above the rounding of either side (a few ulp of these magnitudes)
+    double margin = 1e-9 * (L + fabs(du) + m->geom[ga].rbound + m->geom[gb].rbound);
+    if (lu >= lc) {
+      double fc = -L + ur_geom_halfwidth(m, d, ga, c) + ur_geom_halfwidth(m, d, gb, c);
+      f = fc;
+      if (!(lu - margin > fc)) {
+        f = fmin(f, du + ur_geom_halfwidth(m, d, ga, u) + ur_geom_halfwidth(m, d, gb, u));
+      }
+    } else {
+      double fu = du + ur_geom_halfwidth(m, d, ga, u) + ur_geom_halfwidth(m, d, gb, u);
+      if (!(lc - margin > fu)) {
+        f = -L + ur_geom_halfwidth(m, d, ga, c) + ur_geom_halfwidth(m, d, gb, c);
+      }
+      f = fmin(f, fu);
+    }
+    return f;
+  }
   if (L > 0) {
     c[0] = -dc[0] / L;
     c[1] = -dc[1] / L;
     c[2] = -dc[2] / L;
     f = -L + ur_geom_halfwidth(m, d, ga, c) + ur_geom_halfwidth(m, d, gb, c);
   }
-  if (u[0] != 0 || u[1] != 0 || u[2] != 0) {
+  if (hasu) {
     f = fmin(f, uru_dot3(dc, u) + ur_geom_halfwidth(m, d, ga, u) + ur_geom_halfwidth(m, d, gb, u));
   }
   return f;

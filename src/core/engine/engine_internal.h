@@ -119,7 +119,26 @@ typedef struct {
   int* outb;     // the bodies whose Xe, Xr, cacc, freact a run reads (joint
   int nout;      // loads: urBody.react; acceleration sensors)
   void* mem;
+  // NULL, or urLANE_NPROF tick counters that ur_step_lanes adds each stage's time to (make
+  // bench: the per-stage split; the ticks are the processor's time-stamp counter on x86-64,
+  // nanoseconds elsewhere); set after ur_lanes_init, owned by the caller
+  unsigned long long* prof;
 } urLanes;
+
+// the stages of ur_step_lanes that urLanes.prof times
+enum {
+  urLANE_KIN,     // state gathered, poses, ellipsoid centres, velocities (vectors)
+  urLANE_BROAD,   // broad phase (vectors)
+  urLANE_RKIN,    // restraint kinematics (vectors)
+  urLANE_COPYKIN, // poses, velocities, depths, restraint kinematics back to each run
+  urLANE_LOADS,   // applied forces: gravity, restraints, narrow phase, airbags (per run)
+  urLANE_COPYF,   // the forces into the vectors, the accelerations back (4x4 transposes)
+  urLANE_ABA,     // articulated-body algorithm (vectors)
+  urLANE_POST,    // joint loads, sensors, histories, contact bookkeeping (per run)
+  urLANE_EULER,   // the update (vectors) and the state back to each run
+  urLANE_END,     // time, state checks and the end of each run (per run)
+  urLANE_NPROF
+};
 
 int ur_lanes_init(const urModel* m, urLanes* L);
 // uru_sincos and uru_atan2q of urNLANE arguments at once over the vectors (tests)

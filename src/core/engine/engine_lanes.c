@@ -454,6 +454,32 @@ static void scatter_state(const urModel* m, urLanes* L, urData* const* d, int n,
 
 //---------------------------------- lock-step -----------------------------------------------------
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <x86intrin.h>
+#else
+#include <time.h>
+#endif
+
+// a tick of the stage timer: the time-stamp counter, or nanoseconds where there is none
+static inline unsigned long long ticks(void) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  return __rdtsc();
+#else
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return (unsigned long long)t.tv_sec * 1000000000ull + (unsigned long long)t.tv_nsec;
+#endif
+}
+
+// the time since *t0 to stage k of L->prof (when it is set), and *t0 to now
+static inline void lap(urLanes* L, int k, unsigned long long* t0) {
+  if (L->prof) {
+    unsigned long long t = ticks();
+    L->prof[k] += t - *t0;
+    *t0 = t;
+  }
+}
+
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   // more runs than lanes: urNLANE at a time
   if (n > urNLANE) {
@@ -485,21 +511,30 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
 
   // ur_forward_pre's stages: poses, velocities, broad phase and restraint kinematics for all
   // lanes at once, the applied forces lane by lane
+  unsigned long long t0 = L->prof ? ticks() : 0;
   gather_state(m, L, run, k);
   urv_kinematics_bodies(m, L);
   urv_kinematics_gpos(m, L);
   urv_velocities(m, L);
+  lap(L, urLANE_KIN, &t0);
   broad4(m, L);
+  lap(L, urLANE_BROAD, &t0);
   restraints_kin4(m, L);
+  lap(L, urLANE_RKIN, &t0);
   scatter_kin(m, L, run, k);
+  lap(L, urLANE_COPYKIN, &t0);
   for (int l = 0; l < k; l++) {
     ur_forward_loads(m, run[l]);
   }
+  lap(L, urLANE_LOADS, &t0);
 
   // accelerations for all lanes at once
   gather_forces(m, L, run, k);
+  lap(L, urLANE_COPYF, &t0);
   urv_aba(m, L);
+  lap(L, urLANE_ABA, &t0);
   scatter_acc(m, L, run, k);
+  lap(L, urLANE_COPYF, &t0);
 
   // the rest of each step: joint loads, sensors and bookkeeping lane by lane, the update over
   // the vectors (ur_step_euler), the end checks lane by lane
@@ -510,12 +545,15 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
       ok |= 1 << l;
     }
   }
+  lap(L, urLANE_POST, &t0);
   euler4(m, L);
   scatter_state(m, L, run, k, ok);
+  lap(L, urLANE_EULER, &t0);
   for (int l = 0; l < k; l++) {
     if (ok & (1 << l)) {
       ur_step_end(m, run[l]);
     }
   }
+  lap(L, urLANE_END, &t0);
   return 0;
 }

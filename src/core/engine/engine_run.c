@@ -11,8 +11,12 @@
 // the forward pipeline up to the accelerations: positions, velocities, the restraint kinematics
 // and the contacts' broad phase, the applied forces (gravity compensation, restraints, contacts,
 // airbags). The lanes run the same stages: the first four over vectors, then ur_forward_loads.
+// As in the lanes, the ellipsoids' orientations are computed where first used (ur_geom_xmat):
+// the bounding spheres cull most of them in most steps.
 void ur_forward_pre(const urModel* m, urData* d) {
-  ur_kinematics(m, d);
+  ur_kinematics_bodies(m, d);
+  ur_kinematics_gpos(m, d);
+  memset(d->gmat_ok, 0, (size_t)m->ngeom);
   ur_velocities(m, d);
   ur_restraints_kin(m, d);
   ur_contacts_broad(m, d);
