@@ -258,9 +258,11 @@ void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], 
 
 // the same law as stress() over 4 triangles at once (GCC vector extensions): the taut law
 // branch-free, both sides of the shear's branch computed and the lane's side selected, every
-// operation the scalar one's in the same order; a lane that is not taut goes through the scalar
-// stress() itself. So each lane's bits are stress()'s (test_membrane_fabric checks it; a change
-// of the taut law goes into both). ISO C mode: no contraction into FMA in either.
+// operation the scalar one's in the same order; the wrinkled lanes through wrinkled4(), the
+// warm-started Newton of wrinkled() masked lane by lane; a lane off its path (and every lane
+// without warm starts) goes through the scalar stress() itself. So each lane's bits are
+// stress()'s (test_membrane_fabric checks it; a change of the law goes into both). ISO C mode:
+// no contraction into FMA in either.
 #pragma GCC diagnostic ignored "-Wpsabi"
 typedef double urm4 __attribute__((vector_size(32)));
 typedef long long urm4i __attribute__((vector_size(32)));
