@@ -135,9 +135,10 @@ static double contact_point(const urModel* m, urData* d, const urMembrane* mb, c
    materials-membrane C.4's midpoint checks); forces added to f and fc, reactions on g's body;
    the normal force sum and deepest penetration returned. Only when g's bounding sphere reaches
    the free nodes' box (lo, hi): no node, and no centroid (inside the box too), can touch g
-   otherwise. */
+   otherwise. xcen: the triangles' centroids (centroids()). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           const double lo[3], const double hi[3], double* depth) {
+                           const double lo[3], const double hi[3], const double* xcen,
+                           double* depth) {
   const urMembrane* mb = b->mem;
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
@@ -172,16 +173,11 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   }
   for (int t = 0; t < mb->nt; t++) {
     const int* n3 = mb->tri + 3 * t;
-    if (mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0) {
-      continue;
-    }
-    double xc[3], vc[3], r[3];
-    for (int c = 0; c < 3; c++) {
-      xc[c] = (x[3 * n3[0] + c] + x[3 * n3[1] + c] + x[3 * n3[2] + c]) / 3;
-    }
+    const double* xc = xcen + 3 * t;
+    double vc[3], r[3];
     urm_sub(r, xc, gc);
     if (urm_dot(r, r) >= rg * rg) {
-      continue;
+      continue; /* a triangle on the mount patch too: its centroid is infinitely far */
     }
     for (int c = 0; c < 3; c++) {
       vc[c] = (v[3 * n3[0] + c] + v[3 * n3[1] + c] + v[3 * n3[2] + c]) / 3;
@@ -192,6 +188,21 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   }
   sc[urMEMS_ECONT] += ep;
   return fsum;
+}
+
+
+/* the centroids of the triangles of positions x into xc (3 nt doubles), once a step for every
+   geometry's contact: infinitely far for a triangle with a node on the mount patch (no contact
+   there) */
+static void centroids(const urMembrane* mb, const double* x, double* xc) {
+  for (int t = 0; t < mb->nt; t++) {
+    const int* n3 = mb->tri + 3 * t;
+    int fixed = mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0;
+    for (int c = 0; c < 3; c++) {
+      xc[3 * t + c] =
+          fixed ? INFINITY : (x[3 * n3[0] + c] + x[3 * n3[1] + c] + x[3 * n3[2] + c]) / 3;
+    }
+  }
 }
 
 
@@ -274,9 +285,12 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       }
     }
   }
+  // the centroids in the force pass's scratch (free until the next force evaluation)
+  double* xcen = sc + urMEMS_N;
+  centroids(mb, x, xcen);
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
-    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, &dep);
+    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, xcen, &dep);
     bd->depth[t] = dep;
     bd->ftgt[t] = fs;
     bd->force += fs;
@@ -286,7 +300,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->nsupport; t++) {
     double dep;
-    contact_geom(m, d, b, st, b->support[t], lo, hi, &dep);
+    contact_geom(m, d, b, st, b->support[t], lo, hi, xcen, &dep);
   }
 
   // the mount patch's forces on the carrier

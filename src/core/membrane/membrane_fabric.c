@@ -98,7 +98,8 @@ static double uniaxial(const lawk* k, const double E[3], double c, double sn, do
 static void candidates(const lawk* k, const double E[3], double* u1, double* u2, double* G) {
   double sig;
   double hd = 0.5 * (E[0] - E[1]), rr = sqrt(hd * hd + E[2] * E[2]), c2 = rr > 0 ? hd / rr : 1;
-  double cp = sqrt(0.5 * (1 + c2)), sp = copysign(sqrt(fmax(0, 0.5 * (1 - c2))), E[2]);
+  double s2 = 0.5 * (1 - c2); /* fmax(0, s2) without the libm call */
+  double cp = sqrt(0.5 * (1 + c2)), sp = copysign(sqrt(s2 > 0 ? s2 : 0), E[2]);
   const double h2 = 0.70710678118654752;
   const double cand[5][2] = {{cp, sp}, {1, 0}, {0, 1}, {h2, h2}, {h2, -h2}};
   for (int j = 0; j < 5; j++) {
@@ -202,7 +203,7 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, d
   S[1] = u2 * u2;
   S[2] = u1 * u2;
   G = S[0] * E[0] + S[1] * E[1] + 2 * S[2] * E[2] - wstar(k, S[0], S[1], S[2]);
-  *w = fmax(G, 0);
+  *w = G > 0 ? G : 0; /* fmax(G, 0) without the libm call (the same bits) */
 }
 
 
@@ -257,9 +258,11 @@ void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], 
 
 // the same law as stress() over 4 triangles at once (GCC vector extensions): the taut law
 // branch-free, both sides of the shear's branch computed and the lane's side selected, every
-// operation the scalar one's in the same order; a lane that is not taut goes through the scalar
-// stress() itself. So each lane's bits are stress()'s (test_membrane_fabric checks it; a change
-// of the taut law goes into both). ISO C mode: no contraction into FMA in either.
+// operation the scalar one's in the same order; the wrinkled lanes through wrinkled4(), the
+// warm-started Newton of wrinkled() masked lane by lane; a lane off its path (and every lane
+// without warm starts) goes through the scalar stress() itself. So each lane's bits are
+// stress()'s (test_membrane_fabric checks it; a change of the law goes into both). ISO C mode:
+// no contraction into FMA in either.
 #pragma GCC diagnostic ignored "-Wpsabi"
 typedef double urm4 __attribute__((vector_size(32)));
 typedef long long urm4i __attribute__((vector_size(32)));
@@ -302,8 +305,111 @@ AI urm4 shear4(const lawk* k, urm4 g, urm4* w) {
   return sel4(lin, sl, sk);
 }
 
-/* stress() over 4 lanes: the taut law on all 4, then each lane not taut (wrinkled or slack,
-   rare enough to branch on) by the scalar stress(), which recomputes the same taut law bits */
+/* 1 where any lane of the mask is set */
+AI int any4(urm4i m) {
+  return (m[0] | m[1] | m[2] | m[3]) != 0;
+}
+
+/* shear_inv() over 4 lanes */
+AI urm4 shear_inv4(const lawk* k, urm4 tau, urm4* c) {
+  urm4 at = fabs4(tau), tl = bc4(k->g0 * k->gl);
+  urm4i lin = at <= tl;
+  *c = sel4(lin, bc4(1 / k->g0), bc4(1 / k->gt));
+  urm4 rl = tau / bc4(k->g0);
+  urm4 rk = copysign4(bc4(k->gl) + (at - tl) / bc4(k->gt), tau);
+  return sel4(lin, rl, rk);
+}
+
+/* wstar() over 4 lanes */
+AI urm4 wstar4(const lawk* k, urm4 S11, urm4 S22, urm4 S12) {
+  urm4 w =
+      bc4(0.5) * (bc4(k->a11) * S11 * S11 + bc4(2 * k->a12) * S11 * S22 + bc4(k->a22) * S22 * S22);
+  urm4 at = fabs4(S12), tl = bc4(k->g0 * k->gl);
+  urm4i lin = at <= tl;
+  urm4 wl = w + bc4(0.5) * S12 * S12 / bc4(k->g0);
+  urm4 wk = w + bc4(0.5 * (k->g0 * k->gl) * k->gl) + bc4(k->gl) * (at - tl) +
+            bc4(0.5) * (at - tl) * (at - tl) / bc4(k->gt);
+  return sel4(lin, wl, wk);
+}
+
+/* G(u) = u^T E u - W*(u u^T) over 4 lanes, as wrinkled() writes it */
+AI urm4 gdual4(const lawk* k, const urm4 E[3], urm4 u1, urm4 u2) {
+  return u1 * u1 * E[0] + u2 * u2 * E[1] + bc4(2) * u1 * u2 * E[2] -
+         wstar4(k, u1 * u1, u2 * u2, u1 * u2);
+}
+
+/* wrinkled() over the 4 lanes of mask act, for the path it takes on nearly every call between
+   sub-steps: a warm start (uw: lane l's u at uw[2 l]) whose first Newton step is within 1 % of
+   |u|, then full Newton steps that raise G, until a step below 1e-6 of |u| (or 40 steps, or a
+   Hessian that is not negative definite). Every lane runs the scalar code's operations in its
+   order (masked as it finishes), so its bits are wrinkled()'s. A lane off that path (no warm
+   start, the candidates wanted, a step to backtrack) is left to the scalar wrinkled(): its bit
+   in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the lanes
+   not done here); uw updated for the lanes done. */
+AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* wr, double* uw) {
+  urm4 E[3] = {e[0], e[1], bc4(0.5) * e[2]};
+  urm4 u1 = {uw[0], uw[2], uw[4], uw[6]}, u2 = {uw[1], uw[3], uw[5], uw[7]};
+  urm4i warm = (u1 != bc4(0)) | (u2 != bc4(0));
+  urm4i fb = act & ~warm, live = act & warm;
+  urm4 G = gdual4(k, E, u1, u2);
+  for (int it = 0; it < 40 && any4(live); it++) {
+    urm4 S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk;
+    urm4 Em11 = bc4(k->a11) * S11 + bc4(k->a12) * S22, Em22 = bc4(k->a12) * S11 + bc4(k->a22) * S22;
+    urm4 Em12 = bc4(0.5) * shear_inv4(k, S12, &kk);
+    urm4 r1 = (E[0] - Em11) * u1 + (E[2] - Em12) * u2;
+    urm4 r2 = (E[2] - Em12) * u1 + (E[1] - Em22) * u2;
+    urm4 M11 = E[0] - (Em11 + bc4(2) * bc4(k->a11) * S11 + bc4(0.5) * kk * S22);
+    urm4 M12 = E[2] - (Em12 + (bc4(2) * bc4(k->a12) + bc4(0.5) * kk) * S12);
+    urm4 M22 = E[1] - (Em22 + bc4(2) * bc4(k->a22) * S22 + bc4(0.5) * kk * S11);
+    urm4 mm = bc4(0.5) * (M11 + M22), hh = bc4(0.5) * (M11 - M22);
+    urm4 lmax = mm + sqrt4(hh * hh + M12 * M12), tr = fabs4(M11) + fabs4(M22);
+    urm4i shift = lmax > bc4(-1e-3) * tr;
+    urm4 sh = lmax + bc4(1e-3) * tr;
+    M11 = sel4(shift, M11 - sh, M11);
+    M22 = sel4(shift, M22 - sh, M22);
+    urm4 det = M11 * M22 - M12 * M12;
+    urm4 d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
+    urm4 dd = d1 * d1 + d2 * d2, uu = u1 * u1 + u2 * u2;
+    urm4i pd = det > bc4(0);
+    if (it == 0) {
+      // the warm start kept alone only when Newton stays near it; else the scalar code
+      urm4i near = pd & (dd <= bc4(1e-4) * uu);
+      fb |= live & ~near;
+      live &= near;
+    }
+    live &= pd; /* not concave even shifted: the scalar code stops there */
+    urm4i conv = live & (dd <= bc4(1e-12) * uu);
+    u1 = sel4(conv, u1 + d1, u1);
+    u2 = sel4(conv, u2 + d2, u2);
+    live &= ~conv;
+    // the full step (t = 1) taken when G does not fall beyond rounding; else the scalar code
+    urm4 v1 = u1 + d1, v2 = u2 + d2;
+    urm4 Gn = gdual4(k, E, v1, v2), tol = bc4(1e-13) * fabs4(G);
+    urm4i up = Gn >= G - tol;
+    fb |= live & ~up;
+    live &= up;
+    u1 = sel4(live, v1, u1);
+    u2 = sel4(live, v2, u2);
+    G = sel4(live, Gn, G);
+  }
+  urm4i done = act & ~fb;
+  for (int l = 0; l < 4; l++) {
+    if (done[l]) {
+      uw[2 * l] = u1[l];
+      uw[2 * l + 1] = u2[l];
+    }
+  }
+  Sr[0] = sel4(done, u1 * u1, bc4(0));
+  Sr[1] = sel4(done, u2 * u2, bc4(0));
+  Sr[2] = sel4(done, u1 * u2, bc4(0));
+  urm4 Gf = Sr[0] * E[0] + Sr[1] * E[1] + bc4(2) * Sr[2] * E[2] - wstar4(k, Sr[0], Sr[1], Sr[2]);
+  *wr = sel4(done & (Gf > bc4(0)), Gf, bc4(0));
+  return fb;
+}
+
+/* stress() over 4 lanes: the taut law on all 4, the wrinkled lanes by wrinkled4() when uw is
+   given, each lane left over (no warm start, off wrinkled4's path) by the scalar stress(),
+   which recomputes the same taut law bits */
 AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], urm4* w,
                 double* uw) {
   urm4 ws;
@@ -314,8 +420,22 @@ AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], u
 
   urm4 m = bc4(0.5) * (S[0] + S[1]), h = bc4(0.5) * (S[0] - S[1]);
   urm4i taut = (m >= bc4(0)) & (m * m >= h * h + S[2] * S[2]);
+  if (!any4(~taut)) {
+    return;
+  }
+  urm4i slow = ~taut;
+  if (uw) {
+    urm4 me = bc4(0.5) * (e[0] + e[1]), he = bc4(0.5) * (e[0] - e[1]);
+    urm4i pos = me + sqrt4(he * he + bc4(0.25) * e[2] * e[2]) > bc4(0);
+    urm4 Sr[3], wr, re = bc4(k->re), re1 = bc4(1 - k->re);
+    slow = wrinkled4(k, e, ~taut & pos, Sr, &wr, uw);
+    for (int j = 0; j < 3; j++) {
+      S[j] = sel4(taut, S[j], re * S[j] + re1 * Sr[j]);
+    }
+    *w = sel4(taut, *w, re * *w + re1 * wr);
+  }
   for (int l = 0; l < 4; l++) {
-    if (!taut[l]) {
+    if (slow[l]) {
       double el[3] = {e[0][l], e[1][l], e[2][l]}, Sl[3], wl;
       stress(s, k, el, Sl, &wl, uw ? uw + 2 * l : NULL);
       S[0][l] = Sl[0];
@@ -334,6 +454,21 @@ void urm_fabric_stress4(const urMemSpec* s, const double e[12], double S[12], do
     ev[j] = *(const urm4u*)(e + 4 * j);
   }
   stress4(s, &k, ev, Sv, &wv, NULL);
+  for (int j = 0; j < 3; j++) {
+    *(urm4u*)(S + 4 * j) = Sv[j];
+  }
+  *(urm4u*)w = wv;
+}
+
+
+void urm_fabric_stress4_warm(const urMemSpec* s, const double e[12], double S[12], double w[4],
+                             double uw[8]) {
+  lawk k = law_constants(s);
+  urm4 ev[3], Sv[3], wv;
+  for (int j = 0; j < 3; j++) {
+    ev[j] = *(const urm4u*)(e + 4 * j);
+  }
+  stress4(s, &k, ev, Sv, &wv, uw);
   for (int j = 0; j < 3; j++) {
     *(urm4u*)(S + 4 * j) = Sv[j];
   }

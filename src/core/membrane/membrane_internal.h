@@ -43,6 +43,12 @@ void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], 
    bits are urm_fabric_stress's */
 void urm_fabric_stress4(const urMemSpec* s, const double e[12], double S[12], double w[4]);
 
+/* the same with the 4 triangles' warm starts (uw[2 l], uw[2 l + 1]: lane l's, as
+   urm_fabric_stress_warm's): the force pass's path, each lane's bits and warm start those of
+   urm_fabric_stress_warm */
+void urm_fabric_stress4_warm(const urMemSpec* s, const double e[12], double S[12], double w[4],
+                             double uw[8]);
+
 /* the Green strain (E11, E22, 2 E12) and the deformation gradient F (3x2, column-major: F[0..2]
    the first column) of triangle t at positions x */
 void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], double e[3]);

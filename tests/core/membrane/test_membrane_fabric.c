@@ -380,6 +380,48 @@ static void test_stress4_bitwise(void** state) {
 }
 
 
+static void test_stress4_warm_bitwise(void** state) {
+  // the vector wrinkled Newton (wrinkled4: lanes masked as they converge, the scalar code for
+  // a lane off its path) against the scalar warm-started law, bit for bit, stress, energy and
+  // the warm start written back: strains near the ones the warm starts came from (as between
+  // sub-steps: the vector path), far from them (the candidates: the scalar path), and none
+  urMemSpec s;
+  ur_mem_spec_default(&s);
+  unsigned long long r = 999;
+  int nwarm = 0;
+  for (int it = 0; it < 3000; it++) {
+    double e0[12], e[12], u[8] = {0}, u4[8], S4[12], w4[4];
+    double jump = it % 3 == 0 ? 1 : it % 3 == 1 ? 1e-3 : 1e-5;
+    for (int l = 0; l < 4; l++) {
+      e0[l] = uni(&r, -0.02, 0.03);
+      e0[4 + l] = uni(&r, -0.02, 0.03);
+      e0[8 + l] = uni(&r, -1, 1) * (it % 2 ? 0.3 : 0.05);
+      for (int j = 0; j < 3; j++) {
+        e[4 * j + l] = e0[4 * j + l] + jump * uni(&r, -0.01, 0.01);
+      }
+      double el[3] = {e0[l], e0[4 + l], e0[8 + l]}, S[3], w;
+      if (it % 7) {
+        urm_fabric_stress_warm(&s, el, S, &w, u + 2 * l); // the warm start near e0
+      }
+    }
+    memcpy(u4, u, sizeof u);
+    urm_fabric_stress4_warm(&s, e, S4, w4, u4);
+    for (int l = 0; l < 4; l++) {
+      double el[3] = {e[l], e[4 + l], e[8 + l]}, S[3], w;
+      nwarm += (u[2 * l] != 0 || u[2 * l + 1] != 0) && jump < 1;
+      urm_fabric_stress_warm(&s, el, S, &w, u + 2 * l);
+      for (int j = 0; j < 3; j++) {
+        assert_memory_equal(&S[j], &S4[4 * j + l], sizeof(double));
+      }
+      assert_memory_equal(&w, &w4[l], sizeof(double));
+      assert_memory_equal(u + 2 * l, u4 + 2 * l, 2 * sizeof(double));
+    }
+  }
+  print_message("vector wrinkled law: %d lanes warm-started near their strain\n", nwarm);
+  assert_true(nwarm > 1000);
+}
+
+
 /* the forces as the triangle loop computed them one triangle at a time (the reference the
    force pass must match bit for bit): volume, pressure, then each triangle's strain, law,
    damping and nodal forces added in triangle order; each triangle's law warm-started from its
@@ -526,8 +568,8 @@ int main(void) {
       cmocka_unit_test(test_tension_field),   cmocka_unit_test(test_relaxed_law),
       cmocka_unit_test(test_force_gradient),  cmocka_unit_test(test_shear_lock),
       cmocka_unit_test(test_gas_law),         cmocka_unit_test(test_vent_flow),
-      cmocka_unit_test(test_stress4_bitwise), cmocka_unit_test(test_forces_bitwise),
-      cmocka_unit_test(test_warm_start),
+      cmocka_unit_test(test_stress4_bitwise), cmocka_unit_test(test_stress4_warm_bitwise),
+      cmocka_unit_test(test_forces_bitwise),  cmocka_unit_test(test_warm_start),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
