@@ -101,44 +101,63 @@ static void bodymotion(const urData* d, int b, double R[9], double c[3], double 
 }
 
 
-/* one contact point (a node, or a triangle's centroid spread over its three nodes n3) of mass
-   share mp against ellipsoid e of body; forces added to f and fc, the reaction on the body, the
-   penalty spring's energy to *ep; the normal force returned, the depth in *dep */
-static double contact_point(const urModel* m, urData* d, const urMembrane* mb, const urEllipsoid* e,
-                            int body, const double o[3], const double vo[3], const double w[3],
-                            const double xp[3], const double vp[3], double mp, const int* n3,
-                            int nn3, double* f, double* fc, double* dep, double* ep) {
-  double fi[3];
-  *dep = urm_contact_node(&mb->spec, m->opt.dt, e, o, vo, w, xp, vp, mp, fi);
-  if (fi[0] == 0 && fi[1] == 0 && fi[2] == 0) {
-    return 0;
-  }
-  double dk = fmax(m->opt.dt, mb->spec.kc_dt), k = mb->spec.kc_alpha * mp / (dk * dk);
-  *ep += 0.5 * k * *dep * *dep;
-  double rf[3] = {-fi[0], -fi[1], -fi[2]};
-  for (int j = 0; j < nn3; j++) {
-    for (int c = 0; c < 3; c++) {
-      f[3 * n3[j] + c] += fi[c] / nn3;
-      fc[3 * n3[j] + c] += fi[c] / nn3;
+/* the contact pressure on sub-triangle corners q (of a triangle with nodes n3; corners 0-2 the
+   nodes, 3-5 the midpoints of edges 01, 12, 20) of area a: the depths dq, normals nq, positions
+   xq and velocities vq of the six points; forces added to f and fc (a midpoint's to its edge's
+   nodes, half each), reactions on the body, the penalty energy to *ep; the normal force
+   returned */
+static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int body,
+                          const double o[3], const double vo[3], const double w[3], const int* n3,
+                          const int q[3], const double dq[6], double nq[6][3], double xq[6][3],
+                          double vq[6][3], double a, double* f, double* fc, double* ep) {
+  static const int edge[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  const urMemSpec* s = &mb->spec;
+  double dd[3] = {dq[q[0]], dq[q[1]], dq[q[2]]}, I[3], A[3], E, fsum = 0;
+  urm_contact_clip(dd, I, A, &E);
+  double dk = fmax(m->opt.dt, s->kc_dt), ka = s->kc_alpha * s->rhot / (dk * dk);
+  *ep += 0.5 * ka * E * a;
+  for (int u = 0; u < 3; u++) {
+    if (!(A[u] > 0)) {
+      continue;
     }
+    int p = q[u];
+    double r[3], wr[3], vr[3], fi[3];
+    urm_sub(r, xq[p], o);
+    urm_cross(wr, w, r);
+    for (int k = 0; k < 3; k++) {
+      vr[k] = vq[p][k] - vo[k] - wr[k];
+    }
+    double fn = urm_contact_force(s, m->opt.dt, nq[p], vr, I[u] * a, A[u] * a, fi);
+    if (!(fn > 0)) {
+      continue;
+    }
+    fsum += fn;
+    int nodes[2] = {p < 3 ? n3[p] : n3[edge[p - 3][0]], p < 3 ? -1 : n3[edge[p - 3][1]]};
+    double share = p < 3 ? 1 : 0.5;
+    for (int j = 0; j < 2 && nodes[j] >= 0; j++) {
+      for (int k = 0; k < 3; k++) {
+        f[3 * nodes[j] + k] += share * fi[k];
+        fc[3 * nodes[j] + k] += share * fi[k];
+      }
+    }
+    double rf[3] = {-fi[0], -fi[1], -fi[2]};
+    ur_apply_force(m, d, body, rf, xq[p]);
   }
-  ur_apply_force(m, d, body, rf, xp);
-  // normal part: along the outward normal, i.e. the force's projection on it; friction is
-  // at most mu of it, so the norm bounds it within 1 + mu
-  return sqrt(urm_dot(fi, fi)) / sqrt(1 + mb->spec.mu * mb->spec.mu);
+  return fsum;
 }
 
 
-/* penalty contact of the free nodes and of the triangles' centroids with ellipsoid g (each set
-   carries half the fabric's mass, so the penalty per area is alpha rhot / dt^2 as with nodes
-   alone, while the facets between nodes no longer sink into a curved body by their sagitta:
-   materials-membrane C.4's midpoint checks); forces added to f and fc, reactions on g's body;
-   the normal force sum and deepest penetration returned. Only when g's bounding sphere reaches
-   the free nodes' box (lo, hi): no node, and no centroid (inside the box too), can touch g
-   otherwise. xcen: the triangles' centroids (centroids()). */
+/* face contact of the bag's triangles (those of free nodes) with ellipsoid g: each triangle is
+   split at its edges' midpoints into four, the depth is evaluated at the nodes and midpoints and
+   interpolated linearly over each quarter, and the penalty pressure acts on the penetrated part
+   of each quarter (membrane_contact.c); the midpoints keep a triangle from sinking into a curved
+   body by its sagitta (materials-membrane C.4's midpoint checks) to a quarter of it. Forces
+   added to f and fc, reactions on g's body; the normal force sum and deepest penetration
+   returned. Only when g's bounding sphere reaches the free nodes' box (lo, hi): no point of the
+   bag can touch g otherwise. */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           const double lo[3], const double hi[3], const double* xcen,
-                           double* depth) {
+                           const double lo[3], const double hi[3], double* depth) {
+  static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   const urMembrane* mb = b->mem;
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
@@ -155,54 +174,97 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   urEllipsoid e;
   ur_geom_ellipsoid(m, d, g, &e);
   int body = m->geom[g].body;
-  double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0, dep;
+  double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0;
   bodymotion(d, body, R, o, vo, w);
+  // each free node's depth and normal, 4 doubles a node in the force pass's scratch (free until
+  // the next pass: 36 ntb >= 4 nn): -INFINITY outside g's sphere or the shape (not evaluated)
+  double* gn = sc + urMEMS_N;
   for (int i = 0; i < nn; i++) {
+    gn[4 * i] = -INFINITY;
     if (mb->invm[i] == 0) {
       continue;
     }
-    const double* xi = x + 3 * i;
     double r[3];
-    urm_sub(r, xi, gc);
-    if (urm_dot(r, r) >= rg * rg) {
-      continue;
+    urm_sub(r, x + 3 * i, gc);
+    if (urm_dot(r, r) < rg * rg) {
+      gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
+      *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
     }
-    fsum += contact_point(m, d, mb, &e, body, o, vo, w, xi, v + 3 * i, 0.5 * mb->mass[i], &i, 1, f,
-                          fc, &dep, &ep);
-    *depth = fmax(*depth, dep);
   }
   for (int t = 0; t < mb->nt; t++) {
     const int* n3 = mb->tri + 3 * t;
-    const double* xc = xcen + 3 * t;
-    double vc[3], r[3];
-    urm_sub(r, xc, gc);
-    if (urm_dot(r, r) >= rg * rg) {
-      continue; /* a triangle on the mount patch too: its centroid is infinitely far */
+    if (mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0) {
+      continue;
     }
-    for (int c = 0; c < 3; c++) {
-      vc[c] = (v[3 * n3[0] + c] + v[3 * n3[1] + c] + v[3 * n3[2] + c]) / 3;
+    double dq[6], nq[6][3], xq[6][3], vq[6][3];
+    int any = 0;
+    for (int k = 0; k < 3; k++) {
+      dq[k] = gn[4 * n3[k]];
+      any |= dq[k] > 0;
     }
-    double mc = 0.5 * mb->spec.rhot * mb->area0[t];
-    fsum += contact_point(m, d, mb, &e, body, o, vo, w, xc, vc, mc, n3, 3, f, fc, &dep, &ep);
-    *depth = fmax(*depth, dep);
+    for (int k = 0; k < 3; k++) {
+      const double *xa = x + 3 * n3[k], *xb = x + 3 * n3[(k + 1) % 3];
+      double r[3];
+      for (int c = 0; c < 3; c++) {
+        xq[3 + k][c] = 0.5 * (xa[c] + xb[c]);
+      }
+      urm_sub(r, xq[3 + k], gc);
+      dq[3 + k] = -INFINITY;
+      if (urm_dot(r, r) < rg * rg) {
+        dq[3 + k] = urm_contact_gap(&e, xq[3 + k], 0, nq[3 + k]);
+        *depth = fmax(*depth, fmax(dq[3 + k], 0));
+      }
+      any |= dq[3 + k] > 0;
+    }
+    if (!any) {
+      continue;
+    }
+    for (int k = 0; k < 3; k++) {
+      const double *va = v + 3 * n3[k], *vb = v + 3 * n3[(k + 1) % 3];
+      for (int c = 0; c < 3; c++) {
+        xq[k][c] = x[3 * n3[k] + c];
+        vq[k][c] = v[3 * n3[k] + c];
+        nq[k][c] = gn[4 * n3[k] + 1 + c];
+        vq[3 + k][c] = 0.5 * (va[c] + vb[c]);
+      }
+    }
+    // the points not evaluated beside a penetrating one: their gap, for the zero contour
+    for (int j = 0; j < 4; j++) {
+      const int* qj = sub[j];
+      if (!(dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0)) {
+        continue;
+      }
+      for (int u = 0; u < 3; u++) {
+        int p = qj[u];
+        if (dq[p] == -INFINITY) {
+          dq[p] = urm_contact_gap(&e, xq[p], 1, nq[p]);
+          if (dq[p] == -INFINITY) {
+            dq[p] = -1; /* no gradient there: far outside */
+            nq[p][0] = nq[p][1] = 0, nq[p][2] = 1;
+          }
+          if (p < 3) {
+            gn[4 * n3[p]] = dq[p];
+            for (int c = 0; c < 3; c++) {
+              gn[4 * n3[p] + 1 + c] = nq[p][c];
+            }
+          }
+        }
+      }
+    }
+    double e1[3], e2[3], cr[3];
+    urm_sub(e1, xq[1], xq[0]);
+    urm_sub(e2, xq[2], xq[0]);
+    urm_cross(cr, e1, e2);
+    double a = 0.125 * sqrt(urm_dot(cr, cr)); /* a quarter of the triangle's area */
+    for (int j = 0; j < 4; j++) {
+      const int* qj = sub[j];
+      if (dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0) {
+        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, &ep);
+      }
+    }
   }
   sc[urMEMS_ECONT] += ep;
   return fsum;
-}
-
-
-/* the centroids of the triangles of positions x into xc (3 nt doubles), once a step for every
-   geometry's contact: infinitely far for a triangle with a node on the mount patch (no contact
-   there) */
-static void centroids(const urMembrane* mb, const double* x, double* xc) {
-  for (int t = 0; t < mb->nt; t++) {
-    const int* n3 = mb->tri + 3 * t;
-    int fixed = mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0;
-    for (int c = 0; c < 3; c++) {
-      xc[3 * t + c] =
-          fixed ? INFINITY : (x[3 * n3[0] + c] + x[3 * n3[1] + c] + x[3 * n3[2] + c]) / 3;
-    }
-  }
 }
 
 
@@ -285,12 +347,9 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       }
     }
   }
-  // the centroids in the force pass's scratch (free until the next force evaluation)
-  double* xcen = sc + urMEMS_N;
-  centroids(mb, x, xcen);
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
-    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, xcen, &dep);
+    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, &dep);
     bd->depth[t] = dep;
     bd->ftgt[t] = fs;
     bd->force += fs;
@@ -300,7 +359,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->nsupport; t++) {
     double dep;
-    contact_geom(m, d, b, st, b->support[t], lo, hi, xcen, &dep);
+    contact_geom(m, d, b, st, b->support[t], lo, hi, &dep);
   }
 
   // the mount patch's forces on the carrier

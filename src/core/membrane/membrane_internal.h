@@ -53,6 +53,23 @@ void urm_fabric_stress4_warm(const urMemSpec* s, const double e[12], double S[12
    the first column) of triangle t at positions x */
 void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], double e[3]);
 
+/* the signed first-order distance of point x into shape e ((1 - s) / |grad s|: > 0 inside, the
+   depth; < 0 outside, the gap) and the outward unit normal in n; unless full, -INFINITY for a
+   point outside the shape (or outside its box: the cheap test), n then unset */
+double urm_contact_gap(const urEllipsoid* e, const double x[3], int full, double n[3]);
+
+/* the contact force on a share of the fabric: the penalty pressure's integral I = int depth N
+   (m^3) and the penetrated area A = int N (m^2) over the share, the outward normal n and the
+   velocity vr relative to the body's surface; force (normal, damping, friction) in f, the
+   normal force returned (0 and f zero when the damped pressure does not push) */
+double urm_contact_force(const urMemSpec* s, double dt, const double n[3], const double vr[3],
+                         double I, double A, double f[3]);
+
+/* the penetrated part of a triangle of unit area whose depth d (its corners' values) is linear
+   over it: I[u] = int max(d, 0) N_u, A[u] = int over d > 0 of N_u, E = int max(d, 0)^2 (times
+   the triangle's area for its own) */
+void urm_contact_clip(const double d[3], double I[3], double A[3], double* E);
+
 /* the penalty contact of a node (position x, velocity v, mass m) with ellipsoid e moving with
    the rigid velocity (vo at point o, angular w): force on the node in f (3), returns the
    penetration (> 0 in contact, else the force is zero) */

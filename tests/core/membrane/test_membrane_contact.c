@@ -3,7 +3,10 @@
  * semi-axis the depth is the first-order distance (1 - s) r and the force is the penalty
  * k = alpha m / max(dt, kc_dt)^2 times it along the axis (at rest, no friction); a node on or
  * beyond a face of the shape's box, or in the box's corner but outside the rounded shape, is
- * outside: no force, depth 0; a rotated, moved shape gives the same in its own frame. */
+ * outside: no force, depth 0; a rotated, moved shape gives the same in its own frame; the gap
+ * outside on an axis is the first-order distance (s - 1) r; the clipped integrals of a linear
+ * depth over a triangle (the face contact's pressure on its penetrated part) against the closed
+ * forms of the whole triangle and of a corner cut at its edges' midpoints. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -78,10 +81,62 @@ static void test_outside(void** state) {
 }
 
 
+static void test_gap_outside(void** state) {
+  // at 1.01 of each semi-axis, evaluated in full: the gap -0.01 r, the normal along the axis;
+  // not in full: -INFINITY
+  static const double P[3] = {2, 4, 8};
+  for (int ip = 0; ip < 3; ip++) {
+    urEllipsoid e = shape(P[ip]);
+    for (int a = 0; a < 3; a++) {
+      double loc[3] = {0, 0, 0}, x[3], n[3];
+      loc[a] = 1.01;
+      world(&e, loc[0], loc[1], loc[2], x);
+      assert_true(urm_contact_gap(&e, x, 0, n) == -INFINITY);
+      double g = urm_contact_gap(&e, x, 1, n);
+      assert_true(fabs(g + 0.01 * e.r[a]) < 1e-12);
+      assert_true(fabs(n[0] - e.R[a]) + fabs(n[1] - e.R[3 + a]) + fabs(n[2] - e.R[6 + a]) < 1e-12);
+    }
+  }
+}
+
+
+static void test_clip(void** state) {
+  // all corners in: int d N_u = (2 d_u + d_v + d_w) / 12, int N_u = 1/3,
+  // int d^2 = (sum d^2 + sum d_u d_v) / 6 (unit area)
+  double d[3] = {1, 2, 4}, I[3], A[3], E;
+  urm_contact_clip(d, I, A, &E);
+  for (int u = 0; u < 3; u++) {
+    assert_true(fabs(I[u] - (d[u] + 7) / 12) < 1e-15);
+    assert_true(fabs(A[u] - 1.0 / 3) < 1e-15);
+  }
+  assert_true(fabs(E - (1 + 4 + 16 + 2 + 8 + 4) / 6.0) < 1e-14);
+  // one corner in, the others at minus its depth: the zero contour joins the edges' midpoints,
+  // the penetrated part a quarter of the area; int d = 1/4 x the mean 1/3 of the corner values
+  // (1, 0, 0); int d^2 = 1/4 x 1/6; the corner's shape function on that part: int N_0 =
+  // 1/4 (1 + 1/2 + 1/2) / 3 = 1/6, the others 1/24 each
+  double d1[3] = {-1, 1, -1};
+  urm_contact_clip(d1, I, A, &E);
+  assert_true(fabs(I[0] + I[1] + I[2] - 1.0 / 12) < 1e-15);
+  assert_true(fabs(A[1] - 1.0 / 6) < 1e-15 && fabs(A[0] - 1.0 / 24) < 1e-15 &&
+              fabs(A[2] - 1.0 / 24) < 1e-15);
+  assert_true(fabs(E - 1.0 / 24) < 1e-15);
+  // two corners in (the complement of a corner cut at the midpoints): the area 3/4
+  double d2[3] = {1, 1, -1};
+  urm_contact_clip(d2, I, A, &E);
+  assert_true(fabs(A[0] + A[1] + A[2] - 0.75) < 1e-15);
+  // none in: nothing
+  double d3[3] = {-1, -2, 0};
+  urm_contact_clip(d3, I, A, &E);
+  assert_true(I[0] == 0 && I[1] == 0 && I[2] == 0 && A[0] + A[1] + A[2] == 0 && E == 0);
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_axis_depth),
       cmocka_unit_test(test_outside),
+      cmocka_unit_test(test_gap_outside),
+      cmocka_unit_test(test_clip),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

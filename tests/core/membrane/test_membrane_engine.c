@@ -161,51 +161,31 @@ static void test_lanes_bitwise(void** state) {
 }
 
 
-/* area of the convex hull of n points (x, y) (monotone chain; p is sorted in place) */
-static int cmp2(const void* a, const void* b) {
-  const double *p = a, *q = b;
-  return p[0] < q[0] ? -1 : p[0] > q[0] ? 1 : p[1] < q[1] ? -1 : p[1] > q[1];
-}
-static double cross2(const double* o, const double* a, const double* b) {
-  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-}
-static double hull_area(double* p, int n) {
-  qsort(p, (size_t)n, 2 * sizeof(double), cmp2);
-  double* h = malloc((size_t)(2 * n + 1) * 2 * sizeof(double));
-  int k = 0;
-  for (int i = 0; i < n; i++) {
-    while (k >= 2 && cross2(h + 2 * (k - 2), h + 2 * (k - 1), p + 2 * i) <= 0) k--;
-    h[2 * k] = p[2 * i], h[2 * k + 1] = p[2 * i + 1], k++;
-  }
-  for (int i = n - 2, t = k + 1; i >= 0; i--) {
-    while (k >= t && cross2(h + 2 * (k - 2), h + 2 * (k - 1), p + 2 * i) <= 0) k--;
-    h[2 * k] = p[2 * i], h[2 * k + 1] = p[2 * i + 1], k++;
-  }
-  double a = 0;
-  for (int i = 0; i + 1 < k; i++) a += h[2 * i] * h[2 * i + 3] - h[2 * i + 2] * h[2 * i + 1];
-  free(h);
-  return 0.5 * fabs(a);
-}
-
-
 /* the bag squeezed slowly between the carrier's flat plate (a support) and a plate below it on a
    prismatic joint (80 mm), then held: P V^gamma constant to 1e-6, and the plate force against
-   the gauge pressure times the contact area measured from the mesh: the projected area inside
-   the zero-gap contour (the gap to the plate interpolated linearly over the triangles), between
-   the crude bounds of the triangles wholly in contact (the hull of the contact nodes) and of the
-   nodes in contact with a third of their triangles' area.
-   The issue's 3 % is not met, and finer meshes do not meet it (issue 32, measured with this
-   test's setup): force / (gauge x zero-gap area) - 1 = +11.9 % at mesh 6, -8.2 % at mesh 10,
-   -14.2 % at 14, -9.5 % at 20, while force / gauge converges (0.0368, 0.0337, 0.0327, 0.0351 m^2:
-   equivalent radius 108, 104, 102, 106 mm). Two reasons, both of the penalty contact at the
-   nodes, not of the gas or the fabric: (1) the penalty is a soft foundation (per area
-   alpha rhot / kc_dt^2 = 1.85e7 N/m^3: 1.1 mm deep at 21 kPa), the membrane enters it with a
-   slope of about gauge / sqrt(T k), so its tension carries a share of the gauge load at the
-   detachment line (T sin(alpha) x perimeter, estimated at 130 N of 780 here) that does not shrink
-   with the mesh; (2) the rings next to the detachment line hover a fraction of a millimetre
-   above the plate, so the linear zero-gap contour moves by up to a ring width as the rings
-   fall, +-h / r. With kc_dt = 0 (6.25 times stiffer here) the ratio was +20 % at mesh 10 and
-   -12 % at 14: the second reason dominates until h / r is a few per cent (mesh > 60). */
+   the gauge pressure times the contact area measured from the mesh: the projected area where
+   the gap to the plate's face, linear over each triangle, is <= 0 (the face contact's pressure
+   acts exactly there: membrane_contact.c clips each quarter triangle at that zero contour).
+   The issue's 3 % is not met at any mesh or penalty tried (issue 32; this test's setup, face
+   contact): force / (gauge x that area) - 1 =
+     default penalty (alpha rhot / kc_dt^2 = 1.85e7 N/m^3): mesh 6 +5.5 %, 10 -8.0 %, 14 -12.1 %
+     25 times stiffer (kc_dt 0, dt 1e-5):                    mesh 6 +21.6 %, 10 +21.8 %, 14 -7.1 %
+   while force / gauge converges (0.0363, 0.0345, 0.0340 m^2; stiff 0.0385, 0.0349, 0.0332).
+   Two reasons, with numbers. (1) The penalty is a foundation of stiffness k_a: the fabric,
+   under tension T (1.3 kN/m: the mean resultant of the lower triangles 80-130 mm from the
+   axis, meshes 6 and 10), enters it with the slope gauge / sqrt(T k_a) = 0.14 and carries
+   gauge x L per unit length of the contact's edge, L = sqrt(T / k_a) = 8.4 mm:
+   force = gauge (area - L x perimeter), a deficit 2 L / r = 16 % of a contact of radius
+   r = 0.105 m; it is the penalty's physics (a Winkler foundation under a membrane), gone only
+   as k_a grows, and k_a is bounded by the explicit step (materials-membrane C.4: 3 % needs
+   L < 1.6 mm, 27 times the default, alpha 5.5 at the model's 5e-5 s, beyond the stable 1).
+   (2) Flat triangles cannot leave the plate tangentially: the detachment line falls inside a
+   ring of elements (ring width h = 27 mm at mesh 10 against r = 0.105 m), the first hovering ring
+   rises by kappa h^2 / 2 (kappa about 20 /m: 7 mm) and the linear zero contour then sits at the
+   last ring in contact, so the area moves by up to 2 h / r = 50 % of itself as the rings fall:
+   with the stiff penalty the contour snaps to the last ring in contact (+22 %). The two add
+   with opposite signs; neither shrinks with alpha < 1 and meshes up to 14. What holds is
+   asserted: 7 % at mesh 6 with the default penalty (measured +5.5 %). */
 static void test_plates(void** state) {
   urModel* m = ur_model_new();
   double I[6] = {0.01, 0.01, 0.01, 0, 0, 0};
@@ -260,61 +240,13 @@ static void test_plates(void** state) {
   double P = sc[urMEMS_P], V = sc[urMEMS_V];
   assert_true(fabs(P * pow(V, 1.4) / (mb->pref * pow(mb->vref, 1.4)) - 1) < 1e-6);
 
-  // contact area on the lower plate (nodes below the bag's middle pushed upwards)
-  double area = 0, force = 0, zmid = 0.5 * bag_bottom(m);
-  double* na = calloc((size_t)nn, sizeof(double));
-  for (int t = 0; t < mb->nt; t++) {
-    const int* v = mb->tri + 3 * t;
-    double d1[3], d2[3], c[3];
-    for (int k = 0; k < 3; k++) {
-      d1[k] = x[3 * v[1] + k] - x[3 * v[0] + k];
-      d2[k] = x[3 * v[2] + k] - x[3 * v[0] + k];
-    }
-    c[0] = d1[1] * d2[2] - d1[2] * d2[1];
-    c[1] = d1[2] * d2[0] - d1[0] * d2[2];
-    c[2] = d1[0] * d2[1] - d1[1] * d2[0];
-    for (int k = 0; k < 3; k++) {
-      na[v[k]] += sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / 6;
-    }
-  }
-  double a3 = 0;
+  // the plate's force: the contact forces of the nodes below the bag's middle
+  double force = 0, zmid = 0.5 * bag_bottom(m), dp = P - mb->spec.patm;
   for (int i = 0; i < nn; i++) {
-    if (x[3 * i + 2] < zmid && fc[3 * i + 2] > 0) {
-      area += na[i];
+    if (x[3 * i + 2] < zmid) {
       force += fc[3 * i + 2];
     }
   }
-  for (int t = 0; t < mb->nt; t++) {
-    const int* v = mb->tri + 3 * t;
-    int in = 0;
-    for (int k = 0; k < 3; k++) in += x[3 * v[k] + 2] < zmid && fc[3 * v[k] + 2] > 0;
-    if (in == 3) {
-      double d1[3], d2[3], c[3];
-      for (int k = 0; k < 3; k++) {
-        d1[k] = x[3 * v[1] + k] - x[3 * v[0] + k];
-        d2[k] = x[3 * v[2] + k] - x[3 * v[0] + k];
-      }
-      c[0] = d1[1] * d2[2] - d1[2] * d2[1];
-      c[1] = d1[2] * d2[0] - d1[0] * d2[2];
-      c[2] = d1[0] * d2[1] - d1[1] * d2[0];
-      a3 += 0.5 * sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    }
-  }
-  double* pts = malloc(2 * (size_t)nn * sizeof(double));
-  int np = 0;
-  for (int i = 0; i < nn; i++) {
-    if (x[3 * i + 2] < zmid && fc[3 * i + 2] > 0) {
-      pts[2 * np] = x[3 * i];
-      pts[2 * np + 1] = x[3 * i + 1];
-      np++;
-    }
-  }
-  double ah = hull_area(pts, np);
-  free(pts);
-
-  free(na);
-  double expect = (P - mb->spec.patm) * area;
-  double dp = P - mb->spec.patm;
   // the contact area from the mesh: the projected area where the gap to the plate's face,
   // interpolated linearly over each triangle of the lower half, is <= 0 (the detachment line
   // is its zero contour, interpolated along the edges)
@@ -348,16 +280,13 @@ static void test_plates(void** state) {
     a0 += 0.5 * fabs(a);
   }
   print_message(
-      "plates: P %.0f Pa, V %.5f m^3 (from %.5f), force %.1f N; gauge times the area "
-      "of the nodes in contact %.1f N, of the triangles wholly in contact %.1f N, inside the "
-      "zero-gap contour %.1f N (force / that - 1 = %+.4f)\n",
-      P, V, mb->vref, force, expect, dp * ah, dp * a0, force / (dp * a0) - 1);
+      "plates: P %.0f Pa, V %.5f m^3 (from %.5f), force %.1f N, force / gauge %.4f m^2; "
+      "gauge times the area inside the zero-gap contour %.1f N (force / that - 1 = "
+      "%+.4f)\n",
+      P, V, mb->vref, force, force / dp, dp * a0, force / (dp * a0) - 1);
   assert_true(V < 0.95 * mb->vref);
-  assert_true(fabs(a3 / ah - 1) < 0.05);
-  assert_true(force > dp * ah && force < expect);
-  assert_true(a0 > ah && a0 < area);
-  // the issue's 3 % is not met (measured +11.9 % at mesh 6; see the comment above the test)
-  assert_true(fabs(force / (dp * a0) - 1) < 0.15);
+  // the issue's 3 % is not met (measured +5.5 % at mesh 6; the reasons above the test)
+  assert_true(fabs(force / (dp * a0) - 1) < 0.07);
   ur_data_free(d);
   ur_model_free(m);
 }
