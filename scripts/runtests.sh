@@ -5,7 +5,7 @@
 # test failed or a test program crashed, and, with NOSKIP=1 in the environment ('make check
 # NOSKIP=1'), when any test was skipped.
 # Tests run TEST_JOBS at a time (default: the number of processors), each into a log of its own;
-# the logs are then printed in the tests' order, each with its time. With TEST_TIMES=FILE the
+# the logs are printed in the tests' order as they finish, each with its time. With TEST_TIMES=FILE the
 # times are kept there and the next run starts the slowest tests first (the order of the report
 # does not change). Every test is written to run beside others: its own temporary directory, its
 # own tmux server.
@@ -32,40 +32,53 @@ else
   cp "$dir/list" "$dir/order"
 fi
 
-# run: each test into DIR/K.log, its status into DIR/K.rc, its seconds into DIR/K.time
+# report in order, each test as soon as it has finished (in the background: the tests run in
+# the foreground, where a background job's ignored SIGINT cannot reach them)
+report() {
+  : >"$dir/times"
+  while read -r k t; do
+    log=$dir/$k.log
+    while [ ! -e "$dir/$k.time" ] && [ ! -e "$dir/done" ]; do sleep 0.2; done
+    echo "== $t"
+    cat "$log" 2>/dev/null
+    rc=$(cat "$dir/$k.rc" 2>/dev/null || echo 1)
+    secs=$(cat "$dir/$k.time" 2>/dev/null || echo 0)
+    echo "   ($secs s)"
+    echo "$secs $t" >>"$dir/times"
+    p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" 2>/dev/null | tail -1)
+    f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test(s), listed below.*/\1/p' "$log" 2>/dev/null | tail -1)
+    s=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test(s), listed below.*/\1/p' "$log" 2>/dev/null | tail -1)
+    p=${p:-0}; f=${f:-0}; s=${s:-0}
+    if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+      echo "runtests: $t exited with status $rc"; f=1
+    fi
+    if [ "$s" -gt 0 ]; then
+      # the names after the count line (cmocka prints each skipped test once there)
+      sed -n '/^\[  SKIPPED \] [0-9]* test(s), listed below/,$s/^\[  SKIPPED \] \(.*\)/\1/p' \
+        "$log" | sed 1d | head -n "$s" | sed "s|^|  $t: |" >>"$skips"
+    fi
+    passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + s))
+  done <"$dir/list"
+  echo "$passed $failed $skipped" >"$dir/totals"
+}
+: >"$skips"
+report &
+reporter=$!
+
+# run: each test into DIR/K.log, its status into DIR/K.rc, its seconds into DIR/K.time (written
+# last, whole)
 export dir
 xargs -P "$jobs" -L 1 sh -c '
   s=$(date +%s.%N)
   case "$1" in *.sh) sh "$1" ;; *) "$1" ;; esac >"$dir/$0.log" 2>&1
   echo $? >"$dir/$0.rc"
   e=$(date +%s.%N)
-  echo "$s $e" | awk "{ printf \"%.1f\n\", \$2 - \$1 }" >"$dir/$0.time"
+  echo "$s $e" | awk "{ printf \"%.1f\n\", \$2 - \$1 }" >"$dir/$0.t"
+  mv "$dir/$0.t" "$dir/$0.time"
 ' <"$dir/order"
-
-# report in order
-: >"$dir/times"
-while read -r k t; do
-  log=$dir/$k.log
-  echo "== $t"
-  cat "$log"
-  rc=$(cat "$dir/$k.rc" 2>/dev/null || echo 1)
-  secs=$(cat "$dir/$k.time" 2>/dev/null || echo 0)
-  echo "   ($secs s)"
-  echo "$secs $t" >>"$dir/times"
-  p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -1)
-  f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test(s), listed below.*/\1/p' "$log" | tail -1)
-  s=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test(s), listed below.*/\1/p' "$log" | tail -1)
-  p=${p:-0}; f=${f:-0}; s=${s:-0}
-  if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
-    echo "runtests: $t exited with status $rc"; f=1
-  fi
-  if [ "$s" -gt 0 ]; then
-    # the names after the count line (cmocka prints each skipped test once there)
-    sed -n '/^\[  SKIPPED \] [0-9]* test(s), listed below/,$s/^\[  SKIPPED \] \(.*\)/\1/p' \
-      "$log" | sed 1d | head -n "$s" | sed "s|^|  $t: |" >>"$skips"
-  fi
-  passed=$((passed + p)); failed=$((failed + f)); skipped=$((skipped + s))
-done <"$dir/list"
+touch "$dir/done"
+wait "$reporter"
+read -r passed failed skipped <"$dir/totals" || { passed=0; failed=1; skipped=0; }
 if [ -n "${TEST_TIMES:-}" ]; then
   cp "$dir/times" "$TEST_TIMES" 2>/dev/null || true
 fi
