@@ -121,8 +121,9 @@ typedef struct {
                                       hardens kinematically with slope kh; xp, the plastic
                                       deflection, is kept per run (uasimpact-model(5), hinge) */
   double kh;           /* hardening slope beyond mp, N m/rad (< k) */
-  double mfrac;        /* > 0 (with mp): the hinge breaks when |M| reaches mfrac (N m): from
-                                      then on it carries no moment (fracture) */
+  double mfrac;        /* > 0 (with mp): the hinge breaks when |M| reaches mfrac (N m): at
+                                      the next step its joint releases and the body flies
+                                      on free (fracture; ur_data_model) */
 } urRestraint;
 
 typedef struct {
