@@ -121,8 +121,9 @@ typedef struct {
                                       hardens kinematically with slope kh; xp, the plastic
                                       deflection, is kept per run (uasimpact-model(5), hinge) */
   double kh;           /* hardening slope beyond mp, N m/rad (< k) */
-  double mfrac;        /* > 0 (with mp): the hinge breaks when |M| reaches mfrac (N m): from
-                                      then on it carries no moment (fracture) */
+  double mfrac;        /* > 0 (with mp): the hinge breaks when |M| reaches mfrac (N m): at
+                                      the next step its joint releases and the body flies
+                                      on free (fracture; ur_data_model) */
 } urRestraint;
 
 typedef struct {
@@ -147,6 +148,8 @@ typedef struct {
   double sinert[36]; /* spatial inertia at the body origin, body frame (6x6) */
   double iinv[9];    /* inverse of the inertia about the CoM (3x3) */
   double bmat[9];    /* rotation matrix of quat */
+  int fqadr, fvadr;  /* a joint that can break (a hinge with fracture): its free joint's block
+                        in qpos (7) and qvel (6), used once it breaks; -1: none */
 } urBody;
 
 typedef struct {
@@ -273,6 +276,7 @@ typedef struct {
   int npreset;
   double* qpos0; /* nq: reference configuration */
   int nmemd;     /* doubles of the membrane bags' run states (urData.mem) */
+  int nfrac;     /* joints that can break (urBody.fqadr; 0: a run's topology never changes) */
   // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
   // an active restraint, with a load curve (its extremes are tracked), whose reaction is needed
   // (react)
@@ -388,6 +392,10 @@ typedef struct {
   int clear_hint;     /* the pair or airbag target that last kept the projectile
                                       from being proved clear (tried first) */
   double energy;      /* kinetic energy at the last ur_forward, J */
+  // topology (models with urModel.nfrac > 0)
+  urModel* topo; /* the run's own copy of the model once a joint has broken (the broken
+                    bodies fly free: ur_data_model), allocated with the data */
+  int nreleased; /* joints released so far (0: the run steps with the model itself) */
   // integrator scratch
   double* scratch; /* 2 nq + 8 nv */
   // memory
@@ -537,6 +545,12 @@ double ur_energy_potential(const urModel* m, const urData* d);
    has no such hinge. */
 int ur_hinge_state(const urModel* m, const urData* d, int body, int dof, double* xp,
                    double* tbreak);
+
+/* The model a run steps with: m itself, or once a hinge with fracture has broken, the run's own
+   copy in which each broken body is a free body of the world (its joint released: it flies on
+   with the velocity it had; its qpos and qvel at urBody.fqadr, fvadr of m). Poses computed for
+   that run (ur_kinematics, drawing) use it; its sizes and names are m's. */
+const urModel* ur_data_model(const urModel* m, const urData* d);
 
 /* Total linear (3) and angular (3, about the world origin) momentum at the last ur_forward. */
 void ur_momentum(const urModel* m, const urData* d, double p[3], double L[3]);

@@ -210,6 +210,22 @@ int ura_history_samples(uraCtx* c, double from, double to) {
 
 /* the pairs through which the drone touched the person in the last impact, in order of first
    touch: drone part (ellipsoid, or airbag), person part, first and last touch, peak force */
+/* a note for each hinge that broke in the impact: its joint released there and the arm flew on
+   as a free body (uasimpact-model(5), restraint fracture) */
+static void contacts_fractures(const urModel* m, const urData* d, uraTable* t) {
+  for (int b = 0; b < m->nbody; b++) {
+    for (int k = 0; k < 3; k++) {
+      double xp, tb;
+      if (ur_hinge_state(m, d, b, k, &xp, &tb) == 0 && tb != 0) {
+        ura_table_note(t,
+                       "joint %s (dof %d) broke at %.4f s after a plastic set of %.4g: released, "
+                       "the arm flew on free",
+                       m->body[b].jname, k, tb, xp);
+      }
+    }
+  }
+}
+
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
   if (!c->have_impact) return ura_fail(c, "contacts: no impact yet; run 'impact DPAR DPERP'");
   const urImpactSetup* s = &c->setup;
@@ -235,6 +251,7 @@ int ura_cmd_contacts(uraCtx* c, int argc, char** argv) {
   ura_table_note(t, "impact %s (%g, %g) m: %d pair%s touched; t in s from tau, force in N",
                  c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar, c->last_dperp,
                  n, n == 1 ? "" : "s");
+  contacts_fractures(m, c->work.d, t);
   for (int i = 0; i < n; i++) {
     int k = idx[i], src = s->cand_src[k];
     const char* drone =

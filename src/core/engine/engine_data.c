@@ -90,6 +90,15 @@ urData* ur_data_new(const urModel* m) {
     free(d);
     return NULL;
   }
+  if (m->nfrac > 0) {
+    // the run's own topology once a joint breaks (engine_fracture.c)
+    d->topo = malloc(sizeof(urModel) + (size_t)m->nbody * sizeof(urBody));
+    if (!d->topo) {
+      free(d->buffer);
+      free(d);
+      return NULL;
+    }
+  }
   carve(m, d);
   ur_data_reset(m, d);
   return d;
@@ -103,6 +112,7 @@ void ur_data_free(urData* d) {
   if (d->hist_own) {
     free(d->hist);
   }
+  free(d->topo);
   free(d->buffer);
   free(d);
 }
@@ -136,6 +146,7 @@ void ur_data_reset(const urModel* m, urData* d) {
   d->t_calm = 0;
   d->clear_hint = 0;
   d->energy = 0;
+  d->nreleased = 0;
   ur_kinematics(m, d);
 }
 
@@ -145,9 +156,19 @@ void ur_data_copy(const urModel* m, urData* dst, const urData* src) {
   void* buf = dst->buffer;
   double* hist = dst->hist;
   int cap = dst->nhist_cap, own = dst->hist_own;
+  urModel* topo = dst->topo;
   memcpy(buf, src->buffer, buffersize(m));
   *dst = *src;
   dst->buffer = buf;
+  dst->topo = topo;
+  if (src->nreleased > 0 && topo && src->topo) {
+    // the released joints too (the copy's body array follows its model)
+    *topo = *src->topo;
+    topo->body = (urBody*)(topo + 1);
+    memcpy(topo->body, src->topo->body, (size_t)m->nbody * sizeof(urBody));
+  } else {
+    dst->nreleased = 0;
+  }
   carve(m, dst);
   dst->hist = hist;
   dst->nhist_cap = cap;

@@ -97,6 +97,7 @@ double ur_energy_kinetic(const urModel* m, const urData* d) {
 
 
 double ur_energy_potential(const urModel* m, const urData* d) {
+  m = ur_data_model(m, d); // a run whose joint broke: its own topology
   double e = 0;
   for (int i = 0; i < m->nbody; i++) {
     const urBody* b = m->body + i;

@@ -148,6 +148,12 @@ void ur_lanes_free(urLanes* L);
 // one step of each of the runs d[0..n-1] (urNLANE at a time), bitwise as ur_step on each
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
+/* joints that break (engine_fracture.c) */
+void ur_fracture_compile(urModel* m);                       /* reserve the free blocks */
+void ur_fracture_qpos0(const urModel* m, double* qpos0);    /* their reference coordinates */
+int ur_fracture_pending(const urModel* m, const urData* d); /* 1: the run steps alone */
+int ur_fracture_release(const urModel* m, urData* d);       /* release the broken joints */
+
 int ur_tree_active(const urModel* m, const urData* d, int tree);
 double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]);
 double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]);

@@ -34,6 +34,7 @@ static void axisrot(double R[9], const double a[3], double ang) {
 //---------------------------------- world poses ---------------------------------------------------
 
 void ur_kinematics(const urModel* m, urData* d) {
+  m = ur_data_model(m, d); // a run whose joint broke: its own topology
   ur_kinematics_bodies(m, d);
   ur_kinematics_geoms(m, d);
 }

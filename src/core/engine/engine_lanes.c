@@ -501,7 +501,9 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   urData* run[urNLANE];
   int k = 0;
   for (int l = 0; l < n; l++) {
-    if (ur_step_begin(m, d[l]) >= 0) {
+    if (ur_fracture_pending(m, d[l])) {
+      ur_step(m, d[l]); // a joint broke: its topology is its own (engine_fracture.c)
+    } else if (ur_step_begin(m, d[l]) >= 0) {
       run[k++] = d[l];
     }
   }

@@ -527,6 +527,7 @@ int ur_model_compile(urModel* m) {
     }
   }
 
+  ur_fracture_compile(m);
   for (int g = 0; g < m->ngeom; g++) {
     uru_quat2mat(m->geom[g].gmat, m->geom[g].quat);
   }
@@ -552,6 +553,7 @@ int ur_model_compile(urModel* m) {
       q[0] = 1;
     }
   }
+  ur_fracture_qpos0(m, m->qpos0);
 
   // sensor addresses
   m->nsensordata = 0;

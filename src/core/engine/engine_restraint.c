@@ -1,7 +1,7 @@
 /* engine_restraint.c: joint restraints: per-dof spring-damper with a tabulated nonlinear
  * load-deflection curve, optional hysteresis (unloading curve scaled through the largest
  * deflection reached), end stops, or an elastic-plastic hinge (kinematic hardening, optional
- * fracture, after which the hinge carries no moment). Spherical joints use the rotation-vector components of
+ * fracture, after which the hinge carries no moment and its joint releases: engine_fracture.c). Spherical joints use the rotation-vector components of
  * the relative rotation, with the exact map to body-frame torques. */
 #include <math.h>
 #include <string.h>

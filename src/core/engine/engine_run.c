@@ -62,6 +62,7 @@ int ur_forward_post(const urModel* m, urData* d) {
 
 
 int ur_forward(const urModel* m, urData* d) {
+  m = ur_data_model(m, d); // a run whose joint broke: its own topology
   if (d->status < 0) {
     return d->status;
   }
@@ -285,6 +286,11 @@ int ur_step_euler(const urModel* m, urData* d) {
 
 
 int ur_step(const urModel* m, urData* d) {
+  // a hinge that broke in the last step releases its joint: from here on the run's own model
+  if (m->nfrac > 0 && d->status >= 0) {
+    ur_fracture_release(m, d);
+    m = ur_data_model(m, d);
+  }
   double h = m->opt.dt;
   int nv = m->nv, nq = m->nq;
   if (ur_step_begin(m, d) < 0) {

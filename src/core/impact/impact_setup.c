@@ -200,7 +200,7 @@ struct urStance {
   _Static_assert(sizeof(void*) != 8 || sizeof(T) == (n), #T " changed: update its put_ function")
 urLP64_SIZE(urRestraint, 1648);
 urLP64_SIZE(urLaw, 2472);
-urLP64_SIZE(urBody, 5696);
+urLP64_SIZE(urBody, 5704);
 urLP64_SIZE(urGeom, 208);
 urLP64_SIZE(urOption, 112);
 
@@ -299,6 +299,8 @@ static void put_body(urStance* st, const urModel* m, int b) {
   PUT(st, bd->qadr);
   PUT(st, bd->nq);
   PUT(st, bd->vadr);
+  PUT(st, bd->fqadr);
+  PUT(st, bd->fvadr);
   PUT(st, bd->nv);
   for (int k = 0; k < 3; k++) put_restraint(st, bd->rst + k);
   PUT(st, bd->sinert);
