@@ -70,11 +70,11 @@ int url_st_material(Parser* p, const Bound* b) {
 }
 
 
-/* section NAME shape=tube D= t= | plate t= [b=] | solid D= | shell t= R= | box b= h= t= */
+/* section NAME shape=tube D= t= | plate t= [b=] | solid D= | shell t= R= [h=] | box b= h= t= */
 int url_st_section(Parser* p, const Bound* b) {
   static const char* const need[] = {"D,t", "t", "D", "t,R", "b,h,t"};
   static const char* const keys = "DtbRh";
-  static const char* const uses[] = {"Dt", "tb", "D", "tR", "bht"};
+  static const char* const uses[] = {"Dt", "tb", "D", "tRh", "bht"};
   static const char* const shape[] = {"tube", "plate", "solid", "shell", "box"};
   int sh = url_get(b, "shape")->e;
   for (const char* k = keys; *k; k++) {
@@ -82,7 +82,11 @@ int url_st_section(Parser* p, const Bound* b) {
     const Val* v = url_get(b, key);
     if (v->set && !strchr(uses[sh], *k)) {
       return url_fail(p, v->line, "section '%s': a %s takes %s%s, not %s", b->name, shape[sh],
-                      need[sh], sh == 1 ? " (and b, its width)" : "", key);
+                      need[sh],
+                      sh == 1   ? " (and b, its width)"
+                      : sh == 3 ? " (and h, its depth to bottoming)"
+                                : "",
+                      key);
     }
     if (strchr(need[sh], *k) && !v->set) {
       return url_fail(p, b->line, "section '%s': a %s needs %s (m)", b->name, shape[sh], need[sh]);
@@ -332,6 +336,8 @@ int url_pair_law(Parser* p, const char* what, int ga, int gb, int law, int line,
   out->v_eps = l->v_eps;
   if (part->sec >= 0) {
     out->shell_k = ur_shell_stiffness(mp, p->sec + part->sec);
+    out->crush_f = out->shell_k > 0 ? ur_shell_crush_force(mp, p->sec + part->sec) : 0;
+    out->crush_h = out->crush_f > 0 ? ur_shell_crush_depth(p->sec + part->sec) : 0;
   }
   return 0;
 }
