@@ -282,6 +282,9 @@ typedef struct {
   char note[urNOTELEN]; /* what the model language notes without failing (e.g. a drone's own law
                            overriding the one derived from the materials), lines joined by
                            '\n'; "" none; a host shows it when the model loads */
+  char* derived;        /* the values the model language derived from materials and sections (hinges
+                    from beam theory, contact laws, layers, shell springs and crush loads), one
+                    line each with its formula and inputs, joined by '\n'; NULL: none */
 } urModel;
 
 //---------------------------------- data ----------------------------------------------------------
