@@ -554,7 +554,8 @@ void ur_point_pos(const urModel* m, const urData* d, int body, const double p[3]
 void ur_point_vel(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
 
 /* Laws and restraint curves used beyond their data in the run so far (a pair's largest depth
-   beyond ur_law_range, a curve restraint's extreme deflection beyond its curve's abscissae):
+   beyond ur_law_range, a crushing shell that bottomed, a curve restraint's extreme deflection
+   beyond its curve's abscissae):
    the count, and in msg (if len > 0) the one furthest beyond, as a phrase. */
 int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len);
 
