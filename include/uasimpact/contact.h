@@ -100,6 +100,10 @@ typedef struct {
   double bone_k;  /* stiffness of the bone under the layer, N/m */
   double shell_k; /* > 0: a hollow part's local shell stiffness (N/m) in series with the
                      contact: d = d_contact(F) + F / shell_k */
+  double crush_f; /* > 0: the shell's crush load (N): its spring's force is capped there and
+                     the depth it yields beyond is kept (urLawState.crush); 0: elastic shell */
+  double crush_h; /* the crushed depth (m) at which the shell bottoms on its contents: beyond
+                     it the contact alone carries the force above crush_f */
   /* tabulated (urLAW_TABLE): force (N) against penetration (m) */
   urCurve load;
   urCurve unload; /* empty: unload along the loading curve (elastic) */
@@ -125,6 +129,7 @@ typedef struct {
   double dmax;  /* largest depth reached */
   double fmax;  /* elastic (rate-free) force at dmax */
   double dres;  /* residual depth after unloading (permanent set) */
+  double crush; /* a crushing shell's crushed (plastic) depth, m, at most crush_h */
 } urLawState;
 
 /* the Hertz radius of ellipsoids a and b (NULL: the ground plane) from their curvature at the
@@ -156,8 +161,10 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
 
 /* the largest depth a law's data covers (m): a table law's last loading abscissa, a foam law's
    thickness times its stress curve's last strain (HUGE_VAL with a lock strain: the backing
-   takes over), a layered Hertz law's layer thickness (plus the shell's share, F(h)/shell_k, with a shell in
-   series; beyond it the layer has bottomed and the bone takes over: a run notes it), HUGE_VAL for Hertz; beyond it the law is extrapolated */
+   takes over), a layered Hertz law's layer thickness (plus the shell's share, F(h)/shell_k, with
+   a shell in series, or crush_h + crush_f/shell_k when the shell crushes before the layer
+   bottoms; beyond it the layer has bottomed and the bone takes over: a run notes it), HUGE_VAL
+   for Hertz; beyond it the law is extrapolated */
 double ur_law_range(const urLaw* law);
 
 /* Hertz constants of a law: K = 4/3 E* sqrt(R) (N/m^1.5), Jackson-Green yield onset depth dy

@@ -286,6 +286,9 @@ typedef struct {
   char note[urNOTELEN]; /* what the model language notes without failing (e.g. a drone's own law
                            overriding the one derived from the materials), lines joined by
                            '\n'; "" none; a host shows it when the model loads */
+  char* derived;        /* the values the model language derived from materials and sections (hinges
+                    from beam theory, contact laws, layers, shell springs and crush loads), one
+                    line each with its formula and inputs, joined by '\n'; NULL: none */
 } urModel;
 
 //---------------------------------- data ----------------------------------------------------------
@@ -565,7 +568,8 @@ void ur_point_pos(const urModel* m, const urData* d, int body, const double p[3]
 void ur_point_vel(const urModel* m, const urData* d, int body, const double p[3], double out[3]);
 
 /* Laws and restraint curves used beyond their data in the run so far (a pair's largest depth
-   beyond ur_law_range, a curve restraint's extreme deflection beyond its curve's abscissae):
+   beyond ur_law_range, a crushing shell that bottomed, a curve restraint's extreme deflection
+   beyond its curve's abscissae):
    the count, and in msg (if len > 0) the one furthest beyond, as a phrase. */
 int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len);
 

@@ -44,7 +44,7 @@ typedef struct {
   double t; /* wall or plate thickness, m (tube, plate, shell) */
   double b; /* plate width, m */
   double R; /* shell radius of curvature, m */
-  double h; /* box height, m */
+  double h; /* box height, m; a shell's depth to bottoming (0: R) */
 } urSection;
 
 /* properties of a section in bending */
@@ -87,6 +87,16 @@ double ur_foam_abi(const double p[5], double e);
 /* Local indentation stiffness of a thin shell under a point load, N/m (Reissner):
    k = 4 E t^2 / (R sqrt(3 (1 - nu^2))); 0 for a section that is not a shell. */
 double ur_shell_stiffness(const urMaterial* mat, const urSection* sec);
+
+/* Crush load of a thin shell wall under a concentrated load, N: the rigid-plastic collapse load
+   of a plate under a point load, P = 2 pi M0 with M0 = sy t^2 / 4 (Tresca; Hopkins & Prager
+   1953; Jones, Structural Impact, 2nd ed. 2012, ch. 2), i.e. pi sy t^2 / 2, independent of the
+   wall's span; a lower bound for a curved wall, whose membrane action adds to it. 0 for a
+   section that is not a shell or a material without a yield stress. */
+double ur_shell_crush_force(const urMaterial* mat, const urSection* sec);
+
+/* The crushed depth at which a shell bottoms on its contents, m: its section's h, else R. */
+double ur_shell_crush_depth(const urSection* sec);
 
 #ifdef __cplusplus
 }

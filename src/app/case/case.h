@@ -440,6 +440,10 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
    one '#' line per bag: which bag model, and for a membrane its mesh, fabric mass, stable step
    and sub-steps, inflated volume and pressure, strain (show, model params) */
 void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t);
+/* one line per value the model language derived from materials and sections (hinges, contact
+   laws, layers, shell springs and crush loads: formula and inputs), "# derived, ..." to f, or
+   a note of t (show, model params) */
+void ura_model_derived(uraCtx* c, FILE* f, uraTable* t);
 /* the live state becomes ns if the model compiles with its parameter overrides (unchanged
    overrides keep the model and its stance); else nothing changes and WHO: refused ... */
 int ura_model_state(uraCtx* c, const uraState* ns, const char* who);

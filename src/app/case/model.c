@@ -597,7 +597,53 @@ static int model_params(uraCtx* c, const char* prefix) {
   }
   if (!strncmp("bag", prefix, strlen(prefix) < 3 ? strlen(prefix) : 3))
     ura_bag_derived(c, c->out, t);
+  if (!*prefix) ura_model_derived(c, c->out, t);
   if (t) ura_table_print(c, t);
+  return 0;
+}
+
+void ura_model_derived(uraCtx* c, FILE* f, uraTable* t) {
+  const urModel* m = ura_model(c);
+  for (const char* s = m ? m->derived : NULL; s && *s;) {
+    size_t n = strcspn(s, "\n");
+    if (t)
+      ura_table_note(t, "derived, %.*s", (int)n, s);
+    else
+      fprintf(f, "# derived, %.*s\n", (int)n, s);
+    s += n + (s[n] == '\n');
+  }
+}
+
+/* model notes: what the model language noted when it compiled the model set (overrides of
+   derived laws, ...) and every value it derived, with its formula and inputs; columns kind
+   (note or derived) and text */
+static int model_notes(uraCtx* c) {
+  static const char* const cols[] = {"kind", "text"};
+  const urModel* m = ura_model(c);
+  if (!m) return -1;
+  uraTable* t = c->st.format == uraFMT_JSON ? ura_table_new(2, cols) : NULL;
+  const char* kind[2] = {"note", "derived"};
+  const char* text[2] = {m->note, m->derived};
+  int any = 0;
+  for (int k = 0; k < 2; k++) {
+    for (const char* s = text[k]; s && *s;) {
+      size_t n = strcspn(s, "\n");
+      any++;
+      if (t) {
+        ura_table_cell(t, "%s", kind[k]);
+        ura_table_cell(t, "%.*s", (int)n, s);
+      } else {
+        fprintf(c->out, "%-8s %.*s\n", kind[k], (int)n, s);
+      }
+      s += n + (s[n] == '\n');
+    }
+  }
+  if (t) {
+    if (!any) ura_table_note(t, "the model set has no notes and derives nothing");
+    ura_table_print(c, t);
+  } else if (!any) {
+    fprintf(c->out, "# the model set has no notes and derives nothing\n");
+  }
   return 0;
 }
 
@@ -636,6 +682,7 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
     return 0;
   }
   if (argc <= 3 && !strcmp(argv[1], "params")) return model_params(c, argc == 3 ? argv[2] : "");
+  if (argc == 2 && !strcmp(argv[1], "notes")) return model_notes(c);
   if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "drop")) return model_drop(c, argv[2]);
@@ -654,8 +701,8 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
     return 0;
   }
   return ura_fail(c,
-                  "model: usage: model show|params [PREFIX]|parts|save FILE|load FILE|drop "
-                  "PART");
+                  "model: usage: model show|params [PREFIX]|parts|notes|save FILE|load FILE|"
+                  "drop PART");
 }
 
 void ura_trace_free(uraCtx* c) {

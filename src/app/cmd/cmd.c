@@ -74,8 +74,9 @@ const uraCmd ura_cmds[] = {
      "list the drone's contacts with the person in the last impact, in order of first touch; "
      "columns drone,person,first,last,peak_force,peak_time (s from tau, N)"},
     {"model", ura_cmd_model, 1, 2, uraC_NONE,
-     "model show|params [PREFIX]|parts|save FILE|load FILE|drop PART",
-     "print, list (params: with units and who set them; PREFIX: the names starting with it), "
+     "model show|params [PREFIX]|parts|notes|save FILE|load FILE|drop PART",
+     "print, list (params: with units and who set them, and the values derived from materials; "
+     "PREFIX: the names starting with it; notes: the compiler's notes and derived values), "
      "write or load the model set (human, drone, airbags, options: uasimpact-model(5)), or drop a "
      "part (before loading another drone)"},
     {"pof", ura_cmd_pof, 1, 1, uraC_POF, "pof hic|nij|vc|vc_thorax|vc_abdomen|defl",
@@ -433,6 +434,7 @@ static int show_lines(uraCtx* c, int argc, char** argv) {
   const urModel* m = ura_model(c);
   for (int i = 0; m && i < m->nparam; i++) show_model_param(c, &m->param[i]);
   ura_bag_derived(c, c->out, show_tab);
+  ura_model_derived(c, c->out, show_tab);
   if (!show_tab) {
     ura_dist_show(c);
   } else {

@@ -21,7 +21,7 @@ static int init_guard(uraCtx* c, int argc, char** argv) {
     if (!strcmp(argv[0], ok[i])) return 0;
   if (!strcmp(argv[0], "model") && argc >= 2 &&
       (!strcmp(argv[1], "load") || !strcmp(argv[1], "drop") || !strcmp(argv[1], "params") ||
-       !strcmp(argv[1], "parts")))
+       !strcmp(argv[1], "parts") || !strcmp(argv[1], "notes")))
     return 0;
   char what[80];
   snprintf(what, sizeof what, "%s%s%s", argv[0], argc >= 2 && !strcmp(argv[0], "model") ? " " : "",

@@ -2,7 +2,9 @@
  * tabulated MADYMO-style load/unload, foam area x stress), tabulated curves and friction.
  * Sources: contact-airbag sheet §1.2-1.4 (Hertz; JG 2005 via Willert 2020 eq. 3.289-3.291;
  * Brake 2015 unloading as coded in tmd-lab SPHERE_PLASTIC_PRE.m), §3 (Chou 1994 foam model),
- * §2.6 (regularised Coulomb friction).
+ * §2.6 (regularised Coulomb friction); a hollow part's shell in series, elastic (Reissner,
+ * materials-membrane sheet E.3) up to its crush load, then crushing at that load until it
+ * bottoms (uasimpact-model(5), Hollow parts).
  */
 #include <math.h>
 
@@ -84,7 +86,10 @@ double ur_law_range(const urLaw* law) {
     // takes F(h) / shell_k of it)
     if (!(law->layer_h > 0)) return HUGE_VAL;
     double h = law->layer_h, K = 4.0 / 3.0 * law->estar * sqrt(law->radius);
-    return law->shell_k > 0 ? h + K * h * sqrt(h) / law->shell_k : h;
+    double fh = K * h * sqrt(h);
+    if (law->shell_k > 0 && law->crush_f > 0 && fh > law->crush_f)
+      return h + law->crush_h + law->crush_f / law->shell_k; // the shell bottomed first
+    return law->shell_k > 0 ? h + fh / law->shell_k : h;
   }
   default: return HUGE_VAL;
   }
@@ -151,6 +156,36 @@ static double series_shell(const urLaw* law, double d, double K) {
   return contact_force(law, 0.5 * (lo + hi), K);
 }
 
+/* the contact's depth at force f (the inverse of contact_force) */
+static double contact_depth(const urLaw* law, double f, double K) {
+  double x = pow(f / K, 2.0 / 3.0);
+  if (!(law->layer_h > 0) || x <= law->layer_h) return x;
+  double h = law->layer_h;
+  return h + (f - K * h * sqrt(h)) / law->bone_k;
+}
+
+/* the force of the contact in series with a crushing shell at total depth d, the shell crushed
+   by c so far: the elastic series on d - c up to the crush load; at it the shell crushes (the
+   plateau) until its crushed depth reaches crush_h; then it has bottomed on its contents and
+   the contact alone carries more. *cn: the crushed depth after d (never below c). */
+static double series_crush(const urLaw* law, double c, double d, double K, double* cn) {
+  *cn = c;
+  double f = d > c ? series_shell(law, d - c, K) : 0;
+  double fc = law->crush_f;
+  if (!(fc > 0) || f <= fc) return f;
+
+  // on the plateau: the crushed depth that leaves the contact and the spring at fc
+  double e = d - contact_depth(law, fc, K) - fc / law->shell_k;
+  if (e < law->crush_h) {
+    *cn = e > c ? e : c;
+    return fc;
+  }
+
+  // bottomed: the spring stays at fc, the contact takes the rest of the depth
+  *cn = law->crush_h;
+  return contact_force(law, d - law->crush_h - fc / law->shell_k, K);
+}
+
 /* Hertz loading curve, with the JG branch blended in over [1.9, 2.2] dy when plastic */
 static double hertz_load(const urLaw* law, double d, double K, double dy, double fy) {
   double fh = law->shell_k > 0 ? series_shell(law, d, K) : contact_force(law, d, K);
@@ -178,7 +213,10 @@ static double elastic_force(const urLaw* law, const urLawState* s, double d, dou
   case urLAW_HERTZ: {
     double K, dy, fy;
     ur_law_hertz_params(law, &K, &dy, &fy);
-    if (law->shell_k > 0) return series_shell(law, d, K);
+    if (law->shell_k > 0) {
+      double cn;
+      return law->crush_f > 0 ? series_crush(law, s->crush, d, K, &cn) : series_shell(law, d, K);
+    }
     if (!law->plastic) return contact_force(law, d, K);
     if (d >= s->dmax) return hertz_load(law, d, K, dy, fy);
 
@@ -242,6 +280,14 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
   if (!(d > 0)) {
     s->touching = 0;
     return;
+  }
+
+  // a crushing shell keeps the depth it crushed (no spring-back beyond its elastic part)
+  if (law->type == urLAW_HERTZ && law->shell_k > 0 && law->crush_f > 0) {
+    double K, dy, fy, cn;
+    ur_law_hertz_params(law, &K, &dy, &fy);
+    series_crush(law, s->crush, d, K, &cn);
+    s->crush = cn;
   }
 
   // new maximum depth: record the loading force and the residual depth of each law

@@ -1,7 +1,9 @@
 /* contact_material.c: the closed forms that turn materials and sections into laws (material.h):
  * section properties, a beam's hinge law, the Hertz effective modulus of two materials and the
- * local stiffness of a thin shell. Sources: materials-membrane sheet E.1, E.2, E.3, E.5;
- * EN 1993-1-5 Annex C.6 (hardening slope E/100 when the material gives no ultimate point).
+ * local stiffness and crush load of a thin shell. Sources: materials-membrane sheet E.1, E.2,
+ * E.3, E.5; EN 1993-1-5 Annex C.6 (hardening slope E/100 when the material gives no ultimate
+ * point); Hopkins & Prager 1953 and Jones, Structural Impact ch. 2 (a plate's collapse load under
+ * a point load, 2 pi M0).
  */
 #include <math.h>
 
@@ -75,4 +77,15 @@ double ur_shell_stiffness(const urMaterial* mat, const urSection* sec) {
   // Reissner's shallow spherical shell under a point load (sheet E.3)
   if (sec->type != urSEC_SHELL || !(sec->t > 0 && sec->R > 0)) return 0;
   return 4 * mat->E * sec->t * sec->t / (sec->R * sqrt(3 * (1 - mat->nu * mat->nu)));
+}
+
+double ur_shell_crush_force(const urMaterial* mat, const urSection* sec) {
+  // 2 pi M0, M0 = sy t^2 / 4: the rigid-plastic plate under a point load (Hopkins & Prager)
+  if (sec->type != urSEC_SHELL || !(sec->t > 0) || !(mat->sy > 0)) return 0;
+  return M_PI * mat->sy * sec->t * sec->t / 2;
+}
+
+double ur_shell_crush_depth(const urSection* sec) {
+  // the declared depth to the contents, else the whole radius
+  return sec->h > 0 ? sec->h : sec->R;
 }

@@ -107,6 +107,7 @@ void ur_model_free(urModel* m) {
   free(m->preset);
   free(m->qpos0);
   free(m->grav);
+  free(m->derived);
   free(m);
 }
 

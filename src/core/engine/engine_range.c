@@ -42,6 +42,24 @@ int ur_extrapolated(const urModel* m, const urData* d, char* msg, int len) {
     }
   }
 
+  // pairs: a crushing shell that bottomed on its contents (the contact alone took over): noted
+  // like a law at the end of its data, after any law run beyond it
+  for (int i = 0; i < m->npair; i++) {
+    const urLaw* l = &m->pair[i].law;
+    if (!(l->crush_f > 0) || d->pair[i].ls.crush < l->crush_h) {
+      continue;
+    }
+    n++;
+    if (!(worst > 0)) {
+      worst = 1;
+      if (len > 0) {
+        snprintf(msg, (size_t)len,
+                 "pair %s crushed its shell %.4g m to the bottom: the contact alone took over",
+                 m->pair[i].name, l->crush_h);
+      }
+    }
+  }
+
   // restraints: the extreme deflections (tracked on every dof with a curve) against the curve
   for (int j = 0; j < m->nhyst; j++) {
     const urBody* b = m->body + m->hyst[j];

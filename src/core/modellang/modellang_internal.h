@@ -258,6 +258,8 @@ int url_hinge(Parser* p, const Bound* b, urRestraint* r);
 int url_geom_material(Parser* p, const Bound* b, int g);
 int url_pair_law(Parser* p, const char* pair, int ga, int gb, int law, int line, urLaw* out);
 void url_note(Parser* p, const char* fmt, ...);
+/* append one line to the model's derived values (urModel.derived) */
+void url_derived(Parser* p, const char* fmt, ...);
 int url_st_role(Parser* p, const urlStmt* st, Bound* b);
 int url_st_sensor(Parser* p, const Bound* b);
 size_t url_decimal_prefix(const char* s, size_t n);

@@ -5,6 +5,7 @@
  * the layer bottoming on bone, a hollow part's shell in series). A law a pair names explicitly
  * is a declared override; where a derived law would exist, the model notes it. */
 #include <stdarg.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 #include "uasimpact/material.h"
@@ -29,6 +30,40 @@ void url_note(Parser* p, const char* fmt, ...) {
   if (w < 0 || (size_t)w >= sizeof p->m->note - k) {
     n[k ? k - 1 : 0] = 0; /* a note that does not fit is left out whole */
   }
+}
+
+
+/* append one line to the model's derived values (dropped without memory) */
+void url_derived(Parser* p, const char* fmt, ...) {
+  char line[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  int w = vsnprintf(line, sizeof line, fmt, ap);
+  va_end(ap);
+  if (w < 0) {
+    return;
+  }
+  size_t k = p->m->derived ? strlen(p->m->derived) : 0, n = strlen(line);
+  char* d = realloc(p->m->derived, k + n + 2);
+  if (!d) {
+    return;
+  }
+  if (k) {
+    d[k++] = '\n';
+  }
+  memcpy(d + k, line, n + 1);
+  p->m->derived = d;
+}
+
+
+/* the name of the symbol of kind with index id ("?" none) */
+static const char* symname(const Parser* p, int kind, int id) {
+  for (int i = 0; i < p->nsym; i++) {
+    if (p->sym[i].kind == kind && p->sym[i].id == id) {
+      return p->sym[i].name;
+    }
+  }
+  return "?";
 }
 
 
@@ -70,11 +105,11 @@ int url_st_material(Parser* p, const Bound* b) {
 }
 
 
-/* section NAME shape=tube D= t= | plate t= [b=] | solid D= | shell t= R= | box b= h= t= */
+/* section NAME shape=tube D= t= | plate t= [b=] | solid D= | shell t= R= [h=] | box b= h= t= */
 int url_st_section(Parser* p, const Bound* b) {
   static const char* const need[] = {"D,t", "t", "D", "t,R", "b,h,t"};
   static const char* const keys = "DtbRh";
-  static const char* const uses[] = {"Dt", "tb", "D", "tR", "bht"};
+  static const char* const uses[] = {"Dt", "tb", "D", "tRh", "bht"};
   static const char* const shape[] = {"tube", "plate", "solid", "shell", "box"};
   int sh = url_get(b, "shape")->e;
   for (const char* k = keys; *k; k++) {
@@ -82,7 +117,11 @@ int url_st_section(Parser* p, const Bound* b) {
     const Val* v = url_get(b, key);
     if (v->set && !strchr(uses[sh], *k)) {
       return url_fail(p, v->line, "section '%s': a %s takes %s%s, not %s", b->name, shape[sh],
-                      need[sh], sh == 1 ? " (and b, its width)" : "", key);
+                      need[sh],
+                      sh == 1   ? " (and b, its width)"
+                      : sh == 3 ? " (and h, its depth to bottoming)"
+                                : "",
+                      key);
     }
     if (strchr(need[sh], *k) && !v->set) {
       return url_fail(p, b->line, "section '%s': a %s needs %s (m)", b->name, shape[sh], need[sh]);
@@ -269,6 +308,26 @@ int url_hinge(Parser* p, const Bound* b, urRestraint* r) {
   r->mp = h.mp;
   r->kh = h.kh;
   r->mfrac = fracture ? (h.mu > h.mp ? h.mu : h.mp) : 0;
+
+  /* what was derived, with its formula and inputs (model params) */
+  const urMaterial* mm = p->mat + mat;
+  urSectionProps sp;
+  ur_section_props(p->sec + sec, &sp);
+  char who[urNAMELEN + 48];
+  snprintf(who, sizeof who, "restraint '%s' dof %d (%s, %s, L %g m)", b->name,
+           (int)url_get(b, "dof")->v[0], vm->raw, vs->raw, vl->v[0]);
+  url_derived(p, "%s: hinge k = 3 E I / L = %.6g N m/rad (E %.6g Pa, I %.6g m^4)", who, h.k, mm->E,
+              sp.I);
+  url_derived(p, "%s: hinge M_p = sigma_y Z_p = %.6g N m (sigma_y %.6g Pa, Z_p %.6g m^3)", who,
+              h.mp, mm->sy, sp.Zp);
+  url_derived(p, "%s: hinge k_h = k E_t / E = %.6g N m/rad (E_t %.6g Pa: %s)", who, h.kh,
+              h.kh * mm->E / h.k,
+              mm->su > mm->sy && mm->ef > mm->sy / mm->E ? "(sigma_u - sigma_y) / (e_f - sigma_y/E)"
+                                                         : "E/100, EN 1993-1-5 C.6");
+  if (r->mfrac > 0) {
+    url_derived(p, "%s: hinge fracture M_u = %.6g N m (%s)", who, r->mfrac,
+                mm->su > 0 ? "sigma_u Z_p" : "E e_f Z_e");
+  }
   return 1;
 }
 
@@ -332,6 +391,41 @@ int url_pair_law(Parser* p, const char* what, int ga, int gb, int law, int line,
   out->v_eps = l->v_eps;
   if (part->sec >= 0) {
     out->shell_k = ur_shell_stiffness(mp, p->sec + part->sec);
+    out->crush_f = out->shell_k > 0 ? ur_shell_crush_force(mp, p->sec + part->sec) : 0;
+    out->crush_h = out->crush_f > 0 ? ur_shell_crush_depth(p->sec + part->sec) : 0;
+  }
+
+  /* what was derived, with its formula and inputs (model params) */
+  char who[4 * urNAMELEN + 64];
+  snprintf(who, sizeof who, "%s, %s on %s (layer %s, material %s)", what,
+           p->m->geom[lay == a ? gb : ga].name, p->m->geom[lay == a ? ga : gb].name,
+           symname(p, SYM_LAYER, lay->layer), symname(p, SYM_MATERIAL, part->mat));
+  url_derived(p,
+              "%s: Hertz E* = 1/((1-nu1^2)/E1 + (1-nu2^2)/E2) = %.6g Pa (E1 %.6g Pa, nu1 %g; E2 "
+              "%.6g Pa, nu2 %g)",
+              who, out->estar, ml->E, ml->nu, mp->E, mp->nu);
+  if (out->radius == urHERTZ_CURVATURE) {
+    url_derived(p, "%s: Hertz R from the ellipsoids' curvature at each contact", who);
+  } else {
+    url_derived(p, "%s: Hertz R = 1/(1/R1 + 1/R2) = %.6g m (R1 %g m, R2 %g m; 0: flat)", who,
+                out->radius, l->radius, rp > 0 ? rp : 0);
+  }
+  url_derived(p, "%s: layer bottoms at h = %g m, then bone_k = %.6g N/m", who, l->h, l->bone_k);
+  if (out->shell_k > 0) {
+    const urSection* sc = p->sec + part->sec;
+    url_derived(p,
+                "%s: shell k_s = 4 E t^2 / (R sqrt(3 (1-nu^2))) = %.6g N/m (section %s: E "
+                "%.6g Pa, t %g m, R %g m, nu %g)",
+                who, out->shell_k, symname(p, SYM_SECTION, part->sec), mp->E, sc->t, sc->R, mp->nu);
+    if (out->crush_f > 0) {
+      url_derived(p,
+                  "%s: shell crush F_c = 2 pi M0 = pi sigma_y t^2 / 2 = %.6g N (sigma_y %.6g Pa, t "
+                  "%g m), bottoming after %g m of crush (%s)",
+                  who, out->crush_f, mp->sy, sc->t, out->crush_h, sc->h > 0 ? "h" : "R");
+    } else {
+      url_derived(p, "%s: shell crush none (material %s gives no yield): elastic shell", who,
+                  symname(p, SYM_MATERIAL, part->mat));
+    }
   }
   return 0;
 }

@@ -105,4 +105,54 @@ kill $W 2>/dev/null; wait $W 2>/dev/null
 check read_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
   has "$TMP/err" "model load: interrupted (Ctrl-C) while reading"'
 
+# ---- what the model language derives (issue 33): 'model notes', 'model params', 'show' ----
+# a part with a hinge from beam theory (carbon tube, Table B1's 59.3 MPa) and an ABS shell pod
+# (2 mm, R 0.1 m, yield 40 MPa) on the scalp; each value against its closed form (awk)
+cat >"$TMP/derive.urm" <<'EOF'
+part derive
+material abs E=2.3e9 nu=0.4 density=1050 yield=4e7
+material cf E=5.48e10 nu=0.34 density=1600 yield=5.93e7 ultimate=6e8
+section wall shape=shell t=0.002 R=0.1 h=0.02
+section arm_t shape=tube D=0.03 t=0.002
+body boom parent=main joint=revolute pos=0,0,0.05 mass=0.1 inertia=1e-4,1e-4,1e-4
+restraint boom dof=0 material=cf section=arm_t length=0.41 fracture=1
+ellipsoid pod body=main pos=0,0,-0.1 size=0.05,0.05,0.03 material=abs section=wall
+pair podh a=head_cranium b=pod
+EOF
+# the number after "... = " on the first derived line matching $2, against $3 to 1e-5
+derived_is() {
+  v=$(grep "^derived .*$2" "$1" | sed 's/.* = \([-0-9.e+]*\) .*/\1/' | head -n 1)
+  awk -v v="$v" -v w="$3" 'BEGIN { exit !(v != "" && (v - w) ^ 2 <= (1e-5 * w) ^ 2) }'
+}
+PI=3.141592653589793
+run -c "model load $TMP/derive.urm; model notes"
+check derived_hinge_k cond '[ "$RC" -eq 0 ] && derived_is "$TMP/out" "boom.*hinge k = 3 E I / L" \
+  "$(awk -v p=$PI "BEGIN { print 3 * 5.48e10 * p * (0.03^4 - 0.026^4) / 64 / 0.41 }")"'
+check derived_hinge_mp cond 'derived_is "$TMP/out" "boom.*hinge M_p = sigma_y Z_p" \
+  "$(awk "BEGIN { print 5.93e7 * (0.03^3 - 0.026^3) / 6 }")"'
+check derived_hertz cond 'derived_is "$TMP/out" "podh.*Hertz E\*" \
+  "$(awk "BEGIN { print 1 / ((1 - 0.29^2) / 2.23e7 + (1 - 0.4^2) / 2.3e9) }")" &&
+  derived_is "$TMP/out" "podh.*Hertz R = " "$(awk "BEGIN { print 1 / (1 / 0.0875 + 1 / 0.1) }")"'
+check derived_shell cond 'derived_is "$TMP/out" "podh.*shell k_s" \
+  "$(awk "BEGIN { print 4 * 2.3e9 * 0.002^2 / (0.1 * sqrt(3 * (1 - 0.16))) }")" &&
+  derived_is "$TMP/out" "podh.*shell crush F_c" "$(awk -v p=$PI "BEGIN { print 2 * p * 40 }")" &&
+  has "$TMP/out" "bottoming after 0.02 m of crush (h)"'
+check notes_kept cond 'has "$TMP/out" "^note  *pairs .*overrides the layer"'
+# the full listings carry them, marked derived; a prefix, which names parameters, does not
+run -c "model load $TMP/derive.urm; model params"
+check params_derived cond '[ "$(grep -c "^# derived, .*\(boom\|podh\)" "$TMP/out")" -eq 9 ]'
+run -c "model load $TMP/derive.urm; show"
+check show_derived cond '[ "$(grep -c "^# derived, .*\(boom\|podh\)" "$TMP/out")" -eq 9 ]'
+run -c "model load $TMP/derive.urm; model params arm"
+check prefix_no_derived cond '[ "$RC" -eq 0 ] && ! has "$TMP/out" "derived"'
+run -c "model load $TMP/derive.urm; set format json; model notes"
+check notes_json cond 'has "$TMP/out" "\"kind\":\"derived\",\"text\":\"pair .podh., pod on head_cranium"'
+# no yield: the shell stays elastic, and says so; the built-in models derive nothing yet
+sed 's/ yield=4e7//' "$TMP/derive.urm" >"$TMP/derive2.urm"
+run -c "model load $TMP/derive2.urm; model notes"
+check no_yield_no_crush cond 'has "$TMP/out" "podh.*shell crush none (material abs gives no yield)" &&
+  ! has "$TMP/out" "F_c ="'
+run -c "model notes"
+check builtin_derives_nothing cond '[ "$RC" -eq 0 ] && ! has "$TMP/out" "^derived"'
+
 finish

@@ -1,7 +1,8 @@
 /* test_contact_layer.c: the Hertz law on a soft layer over bone (the layer bottoms at its
  * thickness and the bone's stiffness takes over; the law's range is the thickness, so a run
  * notes it) and a hollow part's shell spring in series with the contact (the root of
- * d = (F/K)^(2/3) + F/k_s, and the sheet's numbers for a head on a 230 kN/m ABS shell).
+ * d = (F/K)^(2/3) + F/k_s, and the sheet's numbers for a head on a 230 kN/m ABS shell), capped
+ * at its crush load: the plateau, the crushed depth kept, the bottoming, the energy it takes.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -101,10 +102,108 @@ static void test_series_shell(void** state) {
   assert_true(ur_law_force(&l, &s, 0.005, 0, 0) < 1e3 * 0.005);
 }
 
+/* a head on the sheet's 230 kN/m ABS shell (2 mm, yield 40 MPa: crush load 2 pi M0 = 251.3 N),
+   bottoming after 10 mm of crush */
+static urLaw crush_law(void) {
+  urLaw l;
+  memset(&l, 0, sizeof l);
+  l.type = urLAW_HERTZ;
+  l.estar = 24.3e6;
+  l.radius = 0.0875;
+  l.shell_k = 230e3;
+  l.crush_f = 2 * M_PI * 40e6 * 0.002 * 0.002 / 4;
+  l.crush_h = 0.010;
+  return l;
+}
+
+/* loading: the elastic series (bitwise today's law) up to the crush load, then the plateau at
+   exactly that load with the crushed depth d - (Fc/K)^(2/3) - Fc/k_s, then bottomed: the
+   contact alone, K (d - h - Fc/k_s)^1.5 */
+static void test_crush_loading(void** state) {
+  urLaw l = crush_law(), e = l;
+  e.crush_f = 0;
+  double K = 4.0 / 3.0 * l.estar * sqrt(l.radius), fc = l.crush_f;
+  double d0 = pow(fc / K, 2.0 / 3.0) + fc / l.shell_k; /* where the plateau starts */
+  urLawState s = {0}, se = {0};
+  int plateau = 0, bottomed = 0;
+  for (int i = 1; i <= 400; i++) {
+    double d = i * 1e-4, f = ur_law_force(&l, &s, d, 0, 0);
+    if (d < d0) {
+      assert_true(f == ur_law_force(&e, &se, d, 0, 0));
+      assert_true(f < fc);
+    } else if (d < d0 + l.crush_h) {
+      assert_true(f == fc);
+      plateau++;
+    } else {
+      assert_near(f, K * pow(d - l.crush_h - fc / l.shell_k, 1.5), 1e-9 * f);
+      assert_true(f >= fc);
+      bottomed++;
+    }
+    ur_law_commit(&l, &s, d, 0, 0);
+    double c = d - d0;
+    assert_near(s.crush, c < 0 ? 0 : c > l.crush_h ? l.crush_h : c, 1e-12);
+  }
+  print_message("crush: plateau %.1f N from %.3f mm, %d steps on it, %d bottomed\n", fc, d0 * 1e3,
+                plateau, bottomed);
+  assert_true(plateau > 90 && bottomed > 200);
+
+  // a crush load above what the depth reaches: today's law throughout, whatever the state says
+  l.crush_f = 1e9;
+  s.crush = 0;
+  for (int i = 1; i <= 100; i++) {
+    double d = i * 1e-4;
+    assert_true(ur_law_force(&l, &s, d, 0, 0) == ur_law_force(&e, &se, d, 0, 0));
+  }
+  se.crush = 0.005;
+  assert_true(ur_law_force(&e, &se, 0.004, 0, 0) == ur_law_force(&e, &s, 0.004, 0, 0));
+}
+
+/* loading onto the plateau and unloading: the shell springs back by its elastic part only
+   (the series law shifted by the crushed depth c), clear of the head below c; reloading
+   follows the same curve back to the plateau with no new crush; the work taken over the cycle
+   is the plateau's, Fc c (trapezoids, 1 um steps), and unloading never returns more */
+static void test_crush_cycle(void** state) {
+  urLaw l = crush_law(), e = l;
+  e.crush_f = 0;
+  double fc = l.crush_f, dm = 0.006, h = 1e-6;
+  urLawState s = {0}, se = {0};
+  double wl = 0, wu = 0, fp = 0;
+  int n = (int)(dm / h + 0.5);
+  for (int i = 1; i <= n; i++) {
+    double f = ur_law_force(&l, &s, i * h, 0, 0);
+    wl += 0.5 * (f + fp) * h;
+    fp = f;
+    ur_law_commit(&l, &s, i * h, 0, 0);
+  }
+  double c = s.crush;
+  assert_true(c > 0.004 && c < l.crush_h);
+  for (int i = n - 1; i >= 0; i--) {
+    double d = i * h, f = ur_law_force(&l, &s, d, 0, 0);
+    assert_true(f <= fc);
+    assert_true(f == (d > c ? ur_law_force(&e, &se, d - c, 0, 0) : 0));
+    wu += 0.5 * (f + fp) * h;
+    fp = f;
+    ur_law_commit(&l, &s, d, 0, 0);
+    assert_true(s.crush == c);
+  }
+  print_message("crush cycle: %.4f J in, %.4f J back, Fc c = %.4f J\n", wl, wu, fc * c);
+  assert_true(wu <= wl);
+  assert_near(wl - wu, fc * c, 1e-3 * fc * c);
+
+  // reloading: no new crush below dm, at the plateau again at dm
+  for (int i = 1; i <= n; i++) {
+    ur_law_commit(&l, &s, i * h, 0, 0);
+    assert_true(s.crush == c);
+  }
+  assert_near(ur_law_force(&l, &s, dm, 0, 0), fc, 1e-9 * fc);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_bottoming),
       cmocka_unit_test(test_series_shell),
+      cmocka_unit_test(test_crush_loading),
+      cmocka_unit_test(test_crush_cycle),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -129,6 +129,22 @@ static void test_shell(void** state) {
   assert_near(ur_shell_stiffness(&cfrp, &t), 0, 0);
 }
 
+/* the crush load of a shell wall, 2 pi M0 with M0 = sy t^2 / 4 (Hopkins & Prager): ABS 2 mm,
+   yield 40 MPa: M0 = 40 N m/m, 2 pi 40 = 251.327 N; a quarter of it at half the wall; none
+   without yield or for another section; bottoming at the declared depth, else R */
+static void test_shell_crush(void** state) {
+  urMaterial abs_ = {2.3e9, 0.4, 1050, 40e6, 0, 0}, soft = {2.3e9, 0.4, 1050, 0, 0, 0};
+  urSection s1 = {urSEC_SHELL, 0, 0.002, 0, 0.1, 0}, s2 = {urSEC_SHELL, 0, 0.001, 0, 0.1, 0.03};
+  assert_near(ur_shell_crush_force(&abs_, &s1), 2 * M_PI * 40, 1e-9);
+  assert_near(ur_shell_crush_force(&abs_, &s1), 251.327, 1e-3);
+  assert_near(ur_shell_crush_force(&abs_, &s2), 2 * M_PI * 10, 1e-9);
+  assert_near(ur_shell_crush_force(&soft, &s1), 0, 0);
+  urSection t = tube(0.03, 0.002);
+  assert_near(ur_shell_crush_force(&abs_, &t), 0, 0);
+  assert_near(ur_shell_crush_depth(&s1), 0.1, 0);
+  assert_near(ur_shell_crush_depth(&s2), 0.03, 0);
+}
+
 /* the Avalle-Belingardi-Ibba foam law with the contact sheet's EPP 70 placeholder parameters
    (A 0.40 MPa, E 12 MPa, m 2, B 0.12 MPa, n 1.6) gives the sheet's 0.30, 0.37, 0.42, 0.51, 0.81
    and 1.35 MPa at 5, 10, 25, 50, 70 and 80 % strain (rounded to 0.01 MPa); 0 at 0; the written
@@ -150,7 +166,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_tube_section), cmocka_unit_test(test_hinge),
       cmocka_unit_test(test_estar),        cmocka_unit_test(test_shell),
-      cmocka_unit_test(test_foam_abi),
+      cmocka_unit_test(test_shell_crush),  cmocka_unit_test(test_foam_abi),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -95,11 +95,58 @@ static void test_pair_law(void** state) {
   assert_near(l->radius, 1 / (1 / 0.0875 + 1 / 0.1), 1e-15);
   assert_near(l->shell_k, 4 * 2.3e9 * 0.002 * 0.002 / (0.1 * sqrt(3 * (1 - 0.16))), 1e-6);
 
+  // its crush load from the ABS's yield, 2 pi M0 = pi 40 MPa (2 mm)^2 / 2; bottoming at R
+  assert_near(l->crush_f, M_PI * 4e7 * 0.002 * 0.002 / 2, 1e-9);
+  assert_near(l->crush_h, 0.1, 0);
+
   // no section: the ellipsoids' curvature gives the radius
   l = &m->pair[ur_name_pair(m, "dp_cranium_frame")].law;
   assert_near(l->radius, urHERTZ_CURVATURE, 0);
   assert_string_equal(m->note, "");
   ur_model_free(m);
+}
+
+/* a shell's crush: its declared depth to bottoming (h=); a material without yield keeps the
+   elastic shell (no crush load); h is a shell's key and a bad one is refused */
+static void test_shell_crush(void** state) {
+  char err[256], text[4096];
+  const char* drone = HEAD DRONE "pairs dp a=cranium b=shell\n";
+  char* w;
+  snprintf(text, sizeof text, "%s", drone);
+  w = strstr(text, "R=0.1\n");
+  assert_non_null(w);
+  memmove(w + 12, w + 5, strlen(w + 5) + 1);
+  memcpy(w, "R=0.1 h=0.03", 12);
+  urModel* m = parse1(text, NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urLaw* l = &m->pair[ur_name_pair(m, "dp_cranium_shell")].law;
+  assert_near(l->crush_h, 0.03, 0);
+  assert_near(l->crush_f, M_PI * 4e7 * 0.002 * 0.002 / 2, 1e-9);
+  ur_model_free(m);
+
+  // no yield: the elastic shell, as before the crush plateau
+  snprintf(text, sizeof text, "%s", drone);
+  w = strstr(text, "density=1050 yield=4e7");
+  assert_non_null(w);
+  memmove(w + 12, w + 22, strlen(w + 22) + 1);
+  m = parse1(text, NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  l = &m->pair[ur_name_pair(m, "dp_cranium_shell")].law;
+  assert_true(l->shell_k > 0);
+  assert_near(l->crush_f, 0, 0);
+  assert_near(l->crush_h, 0, 0);
+  ur_model_free(m);
+
+  // a negative depth, and h on a tube
+  snprintf(text, sizeof text, "%s%s", HEAD DRONE, "section bad shape=shell t=0.002 R=0.1 h=-1\n");
+  assert_null(parse1(text, NULL, 0, err));
+  print_message("%s\n", err);
+  snprintf(text, sizeof text, "%s%s", HEAD DRONE, "section bad shape=tube D=0.03 t=0.002 h=0.01\n");
+  assert_null(parse1(text, NULL, 0, err));
+  print_message("%s\n", err);
+  assert_non_null(strstr(err, "not h"));
 }
 
 /* a declared law on a layer: kept as declared, and noted (with the material when the drone part
@@ -226,7 +273,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_hinge),    cmocka_unit_test(test_pair_law),
       cmocka_unit_test(test_override), cmocka_unit_test(test_foam_curve),
-      cmocka_unit_test(test_errors),
+      cmocka_unit_test(test_errors),   cmocka_unit_test(test_shell_crush),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
