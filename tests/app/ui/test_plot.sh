@@ -244,9 +244,13 @@ check sigpipe_message has "$TMP/err" "plot grid: gnuplot failed (it stopped read
 # a gnuplot that hangs: Ctrl-C stops the wait (and gnuplot) within 0.2 s, not at the timeout;
 # the old file stays as it was and no temporary file is left
 printf 'OLD CONTENT\n' >"$TMP/h.png"
+rm -f "$TMP/gp.pid"
 env PATH="$TMP/bin:/usr/bin:/bin" FAKE_DIR="$TMP" FAKE_GP=hang DISPLAY= WAYLAND_DISPLAY= \
   "$U" -c "set terminal png; set output $TMP/h.png; plot pof" >"$TMP/out" 2>"$TMP/err" & PID=$!
-sleep 0.5
+# Ctrl-C once gnuplot hangs (it wrote its pid), not after a guessed delay, which a loaded machine
+# can outlast
+n=0
+while [ ! -s "$TMP/gp.pid" ] && [ "$n" -lt 1000 ]; do sleep 0.01; n=$((n + 1)); done
 t0=$(date +%s%N); kill -INT $PID; wait $PID; RC=$?; MS=$(( ($(date +%s%N) - t0) / 1000000 ))
 echo "  (SIGINT while gnuplot hangs: ended after $MS ms)"
 check hang_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
