@@ -46,16 +46,22 @@ void ur_geom_ellipsoid(const urModel* m, urData* d, int g, urEllipsoid* e) {
 }
 
 
-// half-width of ellipsoid g along unit u: |diag(r) R^T u| (superellipsoid: the q-norm,
-// contact.h)
-double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]) {
+// diag(r) R^T u of ellipsoid g into w: unit u in its frame, scaled by its semi-axes
+static void scaled_dir(const urModel* m, urData* d, int g, const double u[3], double w[3]) {
   const double* R = ur_geom_xmat(m, d, g);
   const double* r = m->geom[g].size;
-  double w[3];
   uru_mulmat3tvec(w, R, u);
   w[0] *= r[0];
   w[1] *= r[1];
   w[2] *= r[2];
+}
+
+
+// half-width of ellipsoid g along unit u: |diag(r) R^T u| (superellipsoid: the q-norm,
+// contact.h)
+double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]) {
+  double w[3];
+  scaled_dir(m, d, g, u, w);
   if (m->geom[g].degree > 2) {
     return ur_halfwidth_local(w, m->geom[g].degree);
   }
@@ -67,13 +73,8 @@ double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]) 
 // lower bound of it when it is a superellipsoid (the q-norm of ur_halfwidth_local, q <= 2, is at
 // least the 2-norm)
 static double halfwidth2(const urModel* m, urData* d, int g, const double u[3]) {
-  const double* R = ur_geom_xmat(m, d, g);
-  const double* r = m->geom[g].size;
   double w[3];
-  uru_mulmat3tvec(w, R, u);
-  w[0] *= r[0];
-  w[1] *= r[1];
-  w[2] *= r[2];
+  scaled_dir(m, d, g, u, w);
   return uru_norm3(w);
 }
 
