@@ -12,8 +12,9 @@
 # Nothing is calibrated again here: the free parameters stay at the values 'make calibrate' fitted
 # (uasimpact-model(5), CALIBRATION); fitting them again for each variant would take about half an
 # hour a variant. Every grid is at the paper's impact speeds ('set descent paper'), face 0. The
-# scoring is 'make reproduce''s (scripts/table17.awk): A at 0 m/s against the full-plane sum of
-# the paper's Table 4 grid, A1 and A2 at 0 m/s against the printed value or twice it.
+# scoring is 'make reproduce''s (scripts/table17.awk), the declared basis: against the full-plane
+# sum of the paper's grid where it prints one, else the printed value; A1 and A2 at 0 m/s not
+# counted (k of 13).
 #
 # DIR receives raw.csv (what uasimpact printed, each variant after a '#variant NAME' line), err.txt,
 # variants.txt (name|settings|source), sensitivity.csv (variant,case,wind,q,paper_q,ratio,label,
