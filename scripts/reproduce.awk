@@ -3,7 +3,7 @@
 #       -v run=DIR/run.txt -v loads=DIR/paper-load.txt DIR/raw.csv
 # Input: raw.csv, the CSV tables uasimpact printed for sessions/paper.ses (descent, parametric, grid
 # summary rows, sweeps, compare, grid cells, with their '#' notes: the paper's Table 2 as the
-# source of speed and angle, tau top); run.txt, the conditions of the run (key=value);
+# source of speed and angle, tau top in older runs); run.txt, the conditions of the run (key=value);
 # values.csv, the paper's printed numbers; paper-load.txt, "FILE Q" per paper grid CSV with the Q
 # that 'grid load' computes. Output in DIR: report.md and the CSV files listed in it.
 # Our values are taken as uasimpact printed them; a value computed twice must be printed the same
@@ -198,7 +198,7 @@ function header(    wall) {
   m("| grid pitch | " RUN["step"] " |")
   m("| grids run | " RUN["grids"] " (each session stands alone, so some grids are run more than once) |")
   m("| impact speed and descent angle | " SPEEDS " |")
-  m("| moment tau of Delta | Q, the zero-wind grids and the sweeps: rmax, the paper's text (the drone centre R_max above the head top; at zero wind the same grid as top); the 10 m/s grids compared cell by cell: top (the centre at head-top level, `set tau top`), with rmax beside them |")
+  m("| moment tau of Delta | Q, the zero-wind grids and the sweeps: rmax, the paper's text (the drone centre R_max above the head top; at zero wind the same grid as top); every grid compared cell by cell at rmax too, the 10 m/s ones after aligning the P-weighted along-course centroids (uasimpact-model(5), CALIBRATION, Scoring) |")
   m("| single grids' own timings | " (TIMES == "" ? "-" : TIMES) " (sweeps and compare print no times) |")
   m("| wall time of the run | " sprintf("%d s (%d min %02d s)", wall, int(wall / 60), wall % 60) " |")
   m("| status | " RUN["status"] " |")
@@ -225,14 +225,13 @@ function summary(    i) {
   m("")
   m("- Table 17: **" T17IN " of " T17N " Q values within a factor " TOL "** of the paper (training " T17TIN " of 3, validation " T17VIN " of " T17N - 3 "); " T17HOW "; ratios (ours / reference) " T17R ".")
   m("- Ordering C >= B >= A >= A1 >= A2 (ours, validation): " ORDS ".")
-  m("- Zero-wind grids (training), mean |Delta P| over the union footprint: " MAD0 ".")
-  m("- 10 m/s grids (validation), mean |Delta P| over the union footprint, as computed (tau rmax) -> tau top -> tau top and the best along-course shift by whole cells: " MAD10 ".")
+  m("- Zero-wind grids (training), integral of |Delta P| over the full plane / the paper's Q (goal <= 0.30 each): " IAE0 "; mean |Delta P| over the union footprint: " MAD0 ".")
+  m("- 10 m/s grids (validation), integral of |Delta P| / the paper's Q at the text's tau, after aligning the P-weighted along-course centroids (goal <= 0.40 each; unaligned beside): " IAE10 "; mean |Delta P| over the union footprint, unaligned: " MAD10 ".")
   m("- Impact speed and descent angle: " SPEEDS ".")
   m("- Q rises with wind 0 -> 4 -> 10 m/s (ours, validation): " RISE3 "; over every 2 m/s step: " RISE6 ".")
   m("- Every printed Q of the paper (all tables, repeats included, against the printed value): " QIN " of " QN " within a factor " TOL " (training " QTIN " of " QTN ", validation " QVIN " of " QVN ").")
   m("- The paper's grids: captions against the full-plane sums of the printed cells: " MISMATCH ".")
-  m("- Footprint overlap with the paper's grids (cells with P > 0 in both / in either; tau rmax at")
-  m("  0 m/s, tau top at 10 m/s; a shift is a diagnostic, not applied): " FOOT ".")
+  m("- Footprint overlap with the paper's grids (cells with P > 0 in both / in either, as computed): " FOOT ".")
   m("- Repeated computations: " REPEATS ".")
   m("")
 }
@@ -341,7 +340,7 @@ function table17_section(    f, c, w, i, j, o, pv, r, n, nin, ck, sw, rc, st, re
     if (o != "") qt = qt (qt == "" ? "" : ", ") CASES[i] " " o " (" blank(ratio(o, ours("q", CASES[i], 10, 0))) " x tau rmax)"
   }
   if (qt != "") {
-    p("The 10 m/s grids again with tau top (Delta at head-top level), for the cell-by-cell comparison:")
+    p("The run also has 10 m/s grids with tau top (Delta at head-top level; not the declared basis):")
     p("Q " qt ". The two definitions label the same paths differently, so Q differs only by where")
     p("the lattice samples the paths.")
     p("")
@@ -597,6 +596,8 @@ function grids_section(    f, fp, t, c, w, i, cap, o, full, half, k, tau, line) 
   FOOT = "not compared"
   MAD0 = "not compared"
   MAD10 = "not compared"
+  IAE0 = "not compared"
+  IAE10 = "not compared"
   if (gridstep != "" && gridstep + 0 != 0.05) {
     p("Skipped: this run used a " gridstep " m pitch, the paper's grids a 0.05 m pitch.")
     p("")
@@ -609,47 +610,47 @@ function grids_section(    f, fp, t, c, w, i, cap, o, full, half, k, tau, line) 
   p("where the drone touches the person at all. *Mean |Delta P|* (MAD), bias (ours - paper) and max")
   p("|diff| are in P (0..1) over the *union footprint*, the cells where ours or the paper's P > 0.")
   p("")
-  p("*tau* is the moment our Delta is taken (uasimpact(1), `set tau`): **rmax**, the paper's text (the")
-  p("drone centre R_max above the head top), or **top**, the centre at head-top level, R_max/tan(psi)")
-  p("further along the course. At zero wind the two are the same grid. Under wind the paper's")
-  p("printed grids behave as if taken at top, so the 10 m/s grids are compared at top (their maps,")
-  p("`cells-tableNN.csv` and `diffmap-tableNN.csv`), and at rmax as computed (`cells-tableNN-rmax.csv`,")
-  p("`diffmap-tableNN-rmax.csv`). The last columns are the best whole-row shift of our grid along the")
-  p("course (m, + = forward): the one that gives the smallest mean |Delta P|, with the footprint")
-  p("overlap and the mean |Delta P| there; a diagnostic (nothing is shifted elsewhere, and Q does not")
-  p("depend on it).")
+  p("*tau* is the moment our Delta is taken (uasimpact(1), `set tau`): every grid here is at **rmax**,")
+  p("the paper's text (the drone centre R_max above the head top). The score is the one declared in")
+  p("uasimpact-model(5), CALIBRATION, Scoring: *int |Delta P|* is the integral of |P_ours - P_paper| over")
+  p("the full plane (the Delta_perp = 0 column once, the others twice: both grids are mirror-symmetric),")
+  p("divided by the paper's Q (the full-plane sum of its printed grid). Under wind the paper's printed")
+  p("grids sit downstream of the text's tau (by about R_max/tan(psi)): a 10 m/s grid is scored after")
+  p("moving ours along the course so that the P-weighted along-course centroids of the two grids")
+  p("coincide (*shift*, m, + = forward; P between our rows interpolated linearly), with the unaligned")
+  p("figure beside it. No shift is searched for. Goals (issue 33): at most 0.30 for each zero-wind grid")
+  p("(training), at most 0.40 for each 10 m/s grid aligned (validation).")
   p("")
-  p("| table | case | wind | set | tau | both | only ours | only paper | neither | footprint overlap (both / union) | ours touch | mean abs Delta P | bias | max abs diff (at dpar, dperp) | footprint centre dpar, ours / paper | best along shift: shift (overlap, mean abs Delta P) |")
-  p("|---|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|")
+  p("Also per grid, on the paper's half plane: the footprint (cells with P > 0 in both, only ours, only")
+  p("the paper's, neither), the mean |Delta P| (MAD), bias and max |diff| over the union footprint, and")
+  p("the P-weighted along-course centroids (m).")
+  p("")
+  p("| table | case | wind | set | int abs Delta P / Q_paper | aligned (shift) | both | only ours | only paper | neither | footprint overlap (both / union) | ours touch | mean abs Delta P | bias | max abs diff (at dpar, dperp) | centroid dpar, ours / paper |")
+  p("|---|---|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|")
   fp = out "/footprint.csv"
-  csvline(fp, "table,case,wind,both,only_ours,only_paper,neither,overlap,ours_touch,mad,bias,max_abs_diff,max_at_dpar,max_at_dperp,centre_ours,centre_paper,best_shift,best_overlap,tau,set,mad_best_shift,mad_at_best_shift,overlap_at_mad_best_shift")
-  FOOT = ""; MAD0 = ""; MAD10 = ""
+  csvline(fp, "table,case,wind,both,only_ours,only_paper,neither,overlap,ours_touch,mad,bias,max_abs_diff,max_at_dpar,max_at_dperp,centroid_ours,centroid_paper,tau,set,iae,shift,iae_aligned")
+  FOOT = ""; MAD0 = ""; MAD10 = ""; IAE0 = ""; IAE10 = ""
   for (i = 1; i <= NG; i++) {
+    compare_grid(i, fp, "rmax")
     if (GW[i] + 0 == 0) {
-      compare_grid(i, fp, "rmax", 1)
-      MAD0 = MAD0 (MAD0 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " MADS["rmax"]
+      MAD0 = MAD0 (MAD0 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " MADS
+      IAE0 = IAE0 (IAE0 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " IAES
     } else {
-      compare_grid(i, fp, "top", 1)
-      compare_grid(i, fp, "rmax", 0)
-      MAD10 = MAD10 (MAD10 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " MADS["rmax"] " -> " \
-              MADS["top"] " -> " MADB["top"] " (" SHB["top"] " m)"
+      MAD10 = MAD10 (MAD10 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " MADS
+      IAE10 = IAE10 (IAE10 == "" ? "" : ", ") "Table " GT[i] " (" GC[i] ") " IAEA \
+              (IAEA == "-" ? "" : " (unaligned " IAES ", shift " SHIFTS " m)")
     }
   }
   close(fp)
   p("")
-  p("### Mean |Delta P| over the union footprint")
-  p("")
-  p("| table | case | wind | set | tau rmax (as computed) | rmax, best along shift | tau top | top, best along shift |")
-  p("|---|---|---:|---|---:|---|---:|---|")
-  for (i = 1; i <= NG; i++) p(MADROW[i])
-  p("")
   p("Under wind the drone descends at psi < 90 deg, so the along offset of one path depends on the")
   p("height at which it is taken: a footprint moved by s along the course is the footprint of")
-  p("offsets taken s tan(psi) lower. With tau rmax our 10 m/s footprints lie upstream of the paper's")
-  p("by about R_max/tan(psi); tau top takes Delta that much later, at head-top level.")
+  p("offsets taken s tan(psi) lower. With the text's tau our 10 m/s footprints lie upstream of the")
+  p("paper's by about R_max/tan(psi); the centroid alignment removes that rigid shift, which moves no")
+  p("Q. The aligned cells are in `aligned-tableNN.csv` (columns dpar,dperp,ours_p,paper_p,diff).")
   p("")
   p("Maps (paper layout: rows Delta_par from front to back, columns Delta_perp from 0 outwards;")
-  p("tau rmax at 0 m/s, tau top at 10 m/s): `=` both have P > 0 within 10 points of each other, `+` /")
+  p("as computed at 0 m/s, aligned at 10 m/s): `=` both have P > 0 within 10 points of each other, `+` /")
   p("`-` both, ours more than 10 points higher / lower, `o` only ours, `p` only the paper, `.` neither.")
   p("")
   for (i = 1; i <= NG; i++) map_grid(i)
@@ -735,56 +736,48 @@ function sortnum(v, n, dir,    i, j, x) {
   }
 }
 
-# the mean |Delta P| over the union footprint with our grid moved k rows forward (row r of ours
-# lands on row r - k); sets SHOV to the footprint overlap there; -1 if the union is empty
-function mad_shift(k,    sh, a, r, s, sum, n, nb, vo, va) {
-  sum = 0; n = 0; nb = 0
-  for (sh in FO) {
-    split(sh, a, SUBSEP)
-    r = a[1] - k; s = a[2]
-    va = ((r, s) in VA) ? VA[r, s] : 0
-    sum += VO[a[1], s] > va ? VO[a[1], s] - va : va - VO[a[1], s]
-    n++
-    if ((r, s) in FA) nb++
-  }
-  for (sh in FA) {
-    split(sh, a, SUBSEP)
-    r = a[1] + k; s = a[2]
-    if ((r, s) in FO) continue
-    vo = ((r, s) in VO) ? VO[r, s] : 0
-    sum += vo > VA[a[1], s] ? vo - VA[a[1], s] : VA[a[1], s] - vo
-    n++
-  }
-  SHOV = n ? nb / n : 0
-  return n ? sum / n : -1
+# the full-plane weight of a half-plane column: Delta_perp = 0 once, the others twice (mirror)
+function wperp(perp) { return perp + 0 == 0 ? 1 : 2 }
+
+# our P at (par, perp) of grid key, 0 outside it
+function pours(key, par, perp,    k) {
+  k = key SUBSEP lat(par) SUBSEP perp
+  return (k in OP) ? OP[k] : 0
 }
 
-# one comparison of paper grid i with our grid at tau (rmax or top); primary: its cells, map and
-# difference map are the report's main ones (else the files get a -rmax suffix and no map)
-function compare_grid(i, fp, tau, primary,    a, key, t, c, w, cf, dm, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp, co, ca, k, kb, nb, ob, sh, st, sfx, kk, km, mm, mo, v, dstep, madrow) {
+# our P moved sft forward along the course, at (x, perp): linear between our rows (pitch h)
+function pshift(key, x, perp, sft, h,    y, j, u) {
+  y = (x - sft) / h
+  j = int(y >= 0 ? y : y - 1)
+  if (j > y) j--
+  u = y - j
+  if (u < 1e-9) return pours(key, j * h, perp)
+  if (u > 1 - 1e-9) return pours(key, (j + 1) * h, perp)
+  return (1 - u) * pours(key, j * h, perp) + u * pours(key, (j + 1) * h, perp)
+}
+
+# one comparison of paper grid i with our grid at tau: the declared score (the integral of |Delta
+# P| over the full plane over the paper's Q; under wind also after aligning the P-weighted
+# along-course centroids), the footprint, MAD, bias and max |diff|, the cells and difference map,
+# and (under wind) the aligned cells; MADS, IAES, IAEA and SHIFTS hold the figures for the summary
+function compare_grid(i, fp, tau,    a, key, t, c, w, cf, dm, af, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp, co, ca, so, sa, st, dstep, iae, iaea, sft, lo, hi, x, xa, wt, q) {
   t = GT[i]; c = GC[i]; w = GW[i]
   st = setof("q", c, w)
   key = c "|" w "|0|" tau
-  sfx = primary ? "" : "-" tau
+  MADS = "-"; IAES = "-"; IAEA = "-"; SHIFTS = "-"
   if (!(key in HAVE)) {
-    p("| " t " | " c " | " w " | " st " | " tau " | no cells of ours for this case, wind and tau in the run |||||||||||")
-    MADS[tau] = "-"; MADB[tau] = "-"; SHB[tau] = "-"
-    if (primary) MADROW[i] = "| " t " | " c " | " w " | " st " | - | - | - | - |"
-    else MADROW[i] = "| " t " | " c " | " w " | " st " | - | - | " MADS["top"] " | " MADB["top"] " (" SHB["top"] " m) |"
+    p("| " t " | " c " | " w " | " st " | - | - | no cells of ours for this case, wind and tau in the run ||||||||||")
     return
   }
   lattice(i, key)
-  cf = out "/cells-" GNAME[i] sfx ".csv"
-  dm = out "/diffmap-" GNAME[i] sfx ".csv"
+  cf = out "/cells-" GNAME[i] ".csv"
+  dm = out "/diffmap-" GNAME[i] ".csv"
   csvline(cf, "dpar,dperp,ours_p,paper_p,diff,footprint")
   line = "along"
   for (s = 1; s <= NPERP; s++) line = line "," LPERP[s]
   csvline(dm, line)
-  both = oo = op = nn = 0; mad = bias = mx = 0; touch = 0; co = ca = 0
-  delete FO
-  delete FA
-  delete VO
-  delete VA
+  both = oo = op = nn = 0; mad = bias = mx = 0; touch = 0; co = ca = so = sa = 0; iae = 0
+  dstep = 0.05  # the paper's pitch: grids_section compares no other
   for (r = 1; r <= NPAR; r++) {
     par = LPAR[r]
     line = par
@@ -792,15 +785,15 @@ function compare_grid(i, fp, tau, primary,    a, key, t, c, w, cf, dm, r, s, par
       perp = LPERP[s]
       po = ((key, par, perp) in OP) ? OP[key, par, perp] : 0
       pa = ((i, par, perp) in PP) ? PP[i, par, perp] : 0
-      VO[r, s] = po
-      VA[r, s] = pa
       if (((key, par, perp) in OC) && OC[key, par, perp]) touch++
       fo = po >= 0.0005
       fa = pa > 0
       d = po - pa
-      if (primary) CH[i, r, s] = fo && fa ? (d > 0.1 ? "+" : d < -0.1 ? "-" : "=") : fo ? "o" : fa ? "p" : "."
-      if (fo) { FO[r, s] = 1; co += par }
-      if (fa) { FA[r, s] = 1; ca += par }
+      wt = wperp(perp)
+      iae += (d < 0 ? -d : d) * wt
+      co += po * par * wt; so += po * wt
+      ca += pa * par * wt; sa += pa * wt
+      if (w + 0 == 0) CH[i, r, s] = fo && fa ? (d > 0.1 ? "+" : d < -0.1 ? "-" : "=") : fo ? "o" : fa ? "p" : "."
       if (fo && fa) both++
       else if (fo) oo++
       else if (fa) op++
@@ -818,86 +811,82 @@ function compare_grid(i, fp, tau, primary,    a, key, t, c, w, cf, dm, r, s, par
   }
   close(cf)
   close(dm)
-  if (primary) {
-    GR[i] = NPAR
-    GS[i] = NPERP
-    for (r = 1; r <= NPAR; r++) MPAR[i, r] = LPAR[r]
-    for (s = 1; s <= NPERP; s++) MPERP[i, s] = LPERP[s]
-    MTAU[i] = tau
-  }
+  q = GFULL[i]
+  iae = iae * dstep * dstep
+  IAES = q > 0 ? sprintf("%.3f", iae / q) : "-"
   un = both + oo + op
-  dstep = LPAR[1] - LPAR[2]
+  MADS = un ? sprintf("%.3f", mad / un) : "-"
 
-  # diagnostic: the along shift of our footprint (whole rows) that overlaps the paper's best
-  kb = 0; ob = un ? both / un : 0
-  for (k = -60; k <= 60; k++) {
-    nb = 0
-    for (sh in FO) {
-      split(sh, a, SUBSEP)
-      if (((a[1] - k, a[2]) in FA)) nb++
+  # under wind: ours moved so that the P-weighted along-course centroids coincide
+  if (w + 0 != 0 && so > 0 && sa > 0) {
+    sft = ca / sa - co / so
+    SHIFTS = sprintf("%+.2f", sft)
+    lo = LPAR[NPAR] + (sft < 0 ? sft : 0) - dstep
+    hi = LPAR[1] + (sft > 0 ? sft : 0) + dstep
+    af = out "/aligned-" GNAME[i] ".csv"
+    csvline(af, "dpar,dperp,ours_p,paper_p,diff")
+    iaea = 0
+    GR[i] = 0
+    for (r = int(hi / dstep + 1); r * dstep >= lo - 1e-9; r--) {
+      par = lat(r * dstep)
+      GR[i]++
+      MPAR[i, GR[i]] = par
+      for (s = 1; s <= NPERP; s++) {
+        perp = LPERP[s]
+        xa = pshift(key, par, perp, sft, dstep)
+        pa = ((i, par, perp) in PP) ? PP[i, par, perp] : 0
+        d = xa - pa
+        iaea += (d < 0 ? -d : d) * wperp(perp)
+        fo = xa >= 0.0005
+        fa = pa > 0
+        CH[i, GR[i], s] = fo && fa ? (d > 0.1 ? "+" : d < -0.1 ? "-" : "=") : fo ? "o" : fa ? "p" : "."
+        if (xa > 0 || pa > 0) csvline(af, par "," perp "," sprintf("%.6g", xa) "," sprintf("%.4g", pa) "," sprintf("%.6g", d))
+      }
     }
-    if (un && nb / (oo + op + 2 * both - nb) > ob + 1e-12) { ob = nb / (oo + op + 2 * both - nb); kb = k }
+    close(af)
+    IAEA = q > 0 ? sprintf("%.3f", iaea * dstep * dstep / q) : "-"
+  } else {
+    GR[i] = NPAR
+    for (r = 1; r <= NPAR; r++) MPAR[i, r] = LPAR[r]
   }
-  sh = sprintf("%+.2f", kb * dstep)
+  GS[i] = NPERP
+  for (s = 1; s <= NPERP; s++) MPERP[i, s] = LPERP[s]
+  MTAU[i] = tau (w + 0 != 0 ? ", aligned by " SHIFTS " m" : "")
 
-  # the whole-row shift with the smallest mean |Delta P| (the smallest |shift| among equals)
-  km = 0; mm = mad_shift(0); mo = SHOV
-  for (kk = 1; kk <= 60; kk++) {
-    v = mad_shift(kk)
-    if (v >= 0 && v < mm - 1e-12) { mm = v; km = kk; mo = SHOV }
-    v = mad_shift(-kk)
-    if (v >= 0 && v < mm - 1e-12) { mm = v; km = -kk; mo = SHOV }
-  }
-  MADS[tau] = un ? sprintf("%.3f", mad / un) : "-"
-  MADB[tau] = mm >= 0 ? sprintf("%.3f", mm) : "-"
-  SHB[tau] = sprintf("%+.2f", km * dstep)
-  if (w + 0 == 0) {
-    madrow = "| " t " | " c " | " w " | " st " | " MADS[tau] " | " MADB[tau] " (" SHB[tau] " m) | = rmax | = rmax |"
-  } else if (!primary) {
-    madrow = "| " t " | " c " | " w " | " st " | " MADS["rmax"] " | " MADB["rmax"] " (" SHB["rmax"] " m) | " \
-             MADS["top"] " | " MADB["top"] " (" SHB["top"] " m) |"
-  }
-  if (madrow != "") MADROW[i] = madrow
-
-  if (primary) {
-    FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-") \
-           (kb ? " (" sprintf("%.2f", ob) " with ours moved " sh " m along" \
-                 lower(kb * dstep, GPSI[i]) ")" : "")
-  }
-  p("| " t " | " c " | " w " | " st " | " tau " | " both " | " oo " | " op " | " nn " | " \
-    (un ? sprintf("%.2f", both / un) : "-") " | " touch " | " (un ? sprintf("%.3f", mad / un) : "-") " | " \
+  FOOT = FOOT (FOOT == "" ? "" : ", ") "Table " t " " (un ? sprintf("%.2f", both / un) : "-")
+  p("| " t " | " c " | " w " | " st " | " IAES " | " (w + 0 != 0 ? IAEA " (" SHIFTS " m)" : "-") " | " \
+    both " | " oo " | " op " | " nn " | " \
+    (un ? sprintf("%.2f", both / un) : "-") " | " touch " | " MADS " | " \
     (un ? sprintf("%+.3f", bias / un) : "-") " | " sprintf("%.3f", mx) (mx > 0 ? " (" mpar ", " mperp ")" : "") " | " \
-    centre(co, both + oo) " / " centre(ca, both + op) " | " SHB[tau] " (" sprintf("%.2f", mo) ", " MADB[tau] ") |")
+    centre(co, so) " / " centre(ca, sa) " |")
   csvline(fp, t "," c "," w "," both "," oo "," op "," nn "," (un ? sprintf("%.3f", both / un) : "") "," touch "," \
           (un ? sprintf("%.4f", mad / un) : "") "," (un ? sprintf("%.4f", bias / un) : "") "," sprintf("%.4f", mx) "," mpar "," mperp "," \
-          centre(co, both + oo) "," centre(ca, both + op) "," sh "," sprintf("%.3f", ob) "," tau "," st "," \
-          SHB[tau] "," (mm >= 0 ? sprintf("%.4f", mm) : "") "," sprintf("%.3f", mo))
-}
-
-# the level difference a whole-footprint shift along the course amounts to: a drone descending
-# at psi reaches the same point of the person from dh = shift x tan(psi) lower, so a shift means
-# that the offsets are taken when the drone centre is dh below the level of tau
-function lower(shift, psi,    dh) {
-  if (psi == "" || psi + 0 >= 89.99 || shift == 0) return ""
-  dh = shift * sin(psi * 3.14159265358979 / 180) / cos(psi * 3.14159265358979 / 180)
-  return sprintf(", as if Delta were taken %.2f m %s the level of tau", dh < 0 ? -dh : dh,
-                 dh < 0 ? "above" : "below")
+          centre(co, so) "," centre(ca, sa) "," tau "," st "," (IAES == "-" ? "" : sprintf("%.4f", iae / q)) "," \
+          (SHIFTS == "-" ? "" : SHIFTS) "," (IAEA == "-" ? "" : sprintf("%.4f", iaea * dstep * dstep / q)))
 }
 
 function centre(sum, n) { return n ? sprintf("%+.2f", sum / n) : "-" }
 
-function map_grid(i,    r, s, line) {
+function map_grid(i,    r, s, line, r0, r1, dots) {
   if (!(i in GR)) return
-  p("Table " GT[i] " (case " GC[i] ", " GW[i] " m/s, tau " MTAU[i] "); columns Delta_perp = " MPERP[i, 1] " .. " MPERP[i, GS[i]] " m:")
+  # rows where neither grid has P > 0 are left out at both ends
+  dots = ""
+  for (s = 1; s <= GS[i]; s++) dots = dots "."
+  r0 = 1; r1 = GR[i]
+  while (r0 < r1 && maprow(i, r0) == dots) r0++
+  while (r1 > r0 && maprow(i, r1) == dots) r1--
+  p("Table " GT[i] " (case " GC[i] ", " GW[i] " m/s, tau " MTAU[i] "); columns Delta_perp = " MPERP[i, 1] " .. " MPERP[i, GS[i]] " m; rows " MPAR[i, r0] " .. " MPAR[i, r1] " m:")
   p("")
   p("```")
-  for (r = 1; r <= GR[i]; r++) {
-    line = sprintf("%6s ", MPAR[i, r])
-    for (s = 1; s <= GS[i]; s++) line = line CH[i, r, s]
-    p(line)
-  }
+  for (r = r0; r <= r1; r++) p(sprintf("%6s ", MPAR[i, r]) maprow(i, r))
   p("```")
   p("")
+}
+
+function maprow(i, r,    s, line) {
+  line = ""
+  for (s = 1; s <= GS[i]; s++) line = line CH[i, r, s]
+  return line
 }
 
 # ---- values computed more than once ----
