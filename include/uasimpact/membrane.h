@@ -94,6 +94,9 @@ typedef struct {
   int* adj0;         /* nn + 1: node i's triangle corners are adj[adj0[i] .. adj0[i + 1]) */
   int* adj;          /* 3 nt: the corners by node in triangle order, as offsets of their force
                         in the force pass's scratch */
+  int ne;            /* edges */
+  int* tedge;        /* 3 nt: the edges of triangle t (nodes 1-2, 2-3, 3-1), 0 .. ne - 1 */
+  int* enode;        /* 2 ne: the nodes of each edge */
   double* xshape;    /* 3 nn: the declared shape, carrier body frame */
   double* x0;        /* 3 nn: the inflated state, carrier body frame */
   double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */

@@ -154,9 +154,13 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    body by its sagitta (materials-membrane C.4's midpoint checks) to a quarter of it. Forces
    added to f and fc, reactions on g's body; the normal force sum and deepest penetration
    returned. Only when g's bounding sphere reaches the free nodes' box (lo, hi): no point of the
-   bag can touch g otherwise. */
+   bag can touch g otherwise. Each node's and each edge midpoint's depth is evaluated once (the
+   edge's two triangles share it: the same point, 0.5 (a + b) = 0.5 (b + a) bit for bit), and a
+   triangle whose three nodes lie beyond g's sphere by lh (half the longest edge now) and a
+   margin is passed over: none of its midpoints is inside the sphere either (the same triangles
+   tried, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           const double lo[3], const double hi[3], double* depth) {
+                           const double lo[3], const double hi[3], double lh, double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   const urMembrane* mb = b->mem;
   int nn = mb->nn;
@@ -176,26 +180,38 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   int body = m->geom[g].body;
   double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0;
   bodymotion(d, body, R, o, vo, w);
-  // each free node's depth and normal, 4 doubles a node in the force pass's scratch (free until
-  // the next pass: 36 ntb >= 4 nn): -INFINITY outside g's sphere or the shape (not evaluated)
-  double* gn = sc + urMEMS_N;
+  // in the force pass's scratch (free until the next pass; 36 ntb >= 5 nn + 4 ne for the ring
+  // meshes of 2 rings or more, membrane_mesh.c): each free node's depth and normal (4 doubles a
+  // node: -INFINITY outside g's sphere or the shape, not evaluated), each edge midpoint's (NAN:
+  // not yet), each node's nearness (1: within rg + lh of g's centre, a triangle's midpoints can
+  // be inside g's sphere)
+  double *gn = sc + urMEMS_N, *ge = gn + 4 * (size_t)nn, *near = ge + 4 * (size_t)mb->ne;
+  double rn = (rg + lh) * (1 + 1e-6);
   for (int i = 0; i < nn; i++) {
     gn[4 * i] = -INFINITY;
+    near[i] = 0;
     if (mb->invm[i] == 0) {
       continue;
     }
     double r[3];
     urm_sub(r, x + 3 * i, gc);
-    if (urm_dot(r, r) < rg * rg) {
+    double rr = urm_dot(r, r);
+    near[i] = rr < rn * rn;
+    if (rr < rg * rg) {
       gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
       *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
     }
   }
+  for (int j = 0; j < mb->ne; j++) {
+    ge[4 * j] = NAN;
+  }
   for (int t = 0; t < mb->nt; t++) {
     const int* n3 = mb->tri + 3 * t;
-    if (mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0) {
+    if (mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0 ||
+        !(near[n3[0]] != 0 || near[n3[1]] != 0 || near[n3[2]] != 0)) {
       continue;
     }
+    const int* e3 = mb->tedge + 3 * t;
     double dq[6], nq[6][3], xq[6][3], vq[6][3];
     int any = 0;
     for (int k = 0; k < 3; k++) {
@@ -204,15 +220,22 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     }
     for (int k = 0; k < 3; k++) {
       const double *xa = x + 3 * n3[k], *xb = x + 3 * n3[(k + 1) % 3];
-      double r[3];
+      double* gk = ge + 4 * e3[k];
       for (int c = 0; c < 3; c++) {
         xq[3 + k][c] = 0.5 * (xa[c] + xb[c]);
       }
-      urm_sub(r, xq[3 + k], gc);
-      dq[3 + k] = -INFINITY;
-      if (urm_dot(r, r) < rg * rg) {
-        dq[3 + k] = urm_contact_gap(&e, xq[3 + k], 0, nq[3 + k]);
-        *depth = fmax(*depth, fmax(dq[3 + k], 0));
+      if (isnan(gk[0])) {
+        double r[3];
+        urm_sub(r, xq[3 + k], gc);
+        gk[0] = -INFINITY;
+        if (urm_dot(r, r) < rg * rg) {
+          gk[0] = urm_contact_gap(&e, xq[3 + k], 0, gk + 1);
+          *depth = fmax(*depth, fmax(gk[0], 0));
+        }
+      }
+      dq[3 + k] = gk[0];
+      for (int c = 0; c < 3; c++) {
+        nq[3 + k][c] = gk[1 + c];
       }
       any |= dq[3 + k] > 0;
     }
@@ -228,7 +251,8 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
         vq[3 + k][c] = 0.5 * (va[c] + vb[c]);
       }
     }
-    // the points not evaluated beside a penetrating one: their gap, for the zero contour
+    // the points not evaluated beside a penetrating one: their gap, for the zero contour (kept
+    // for the node's or edge's other triangles)
     for (int j = 0; j < 4; j++) {
       const int* qj = sub[j];
       if (!(dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0)) {
@@ -242,11 +266,10 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
             dq[p] = -1; /* no gradient there: far outside */
             nq[p][0] = nq[p][1] = 0, nq[p][2] = 1;
           }
-          if (p < 3) {
-            gn[4 * n3[p]] = dq[p];
-            for (int c = 0; c < 3; c++) {
-              gn[4 * n3[p] + 1 + c] = nq[p][c];
-            }
+          double* gp = p < 3 ? gn + 4 * n3[p] : ge + 4 * e3[p - 3];
+          gp[0] = dq[p];
+          for (int c = 0; c < 3; c++) {
+            gp[1 + c] = nq[p][c];
           }
         }
       }
@@ -347,9 +370,17 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       }
     }
   }
+  double l2 = 0; /* the longest edge now, squared */
+  for (int j = 0; j < mb->ne; j++) {
+    double r[3];
+    urm_sub(r, x + 3 * mb->enode[2 * j], x + 3 * mb->enode[2 * j + 1]);
+    double rr = urm_dot(r, r);
+    l2 = rr > l2 ? rr : l2;
+  }
+  double lh = 0.5 * sqrt(l2);
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
-    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, &dep);
+    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, lh, &dep);
     bd->depth[t] = dep;
     bd->ftgt[t] = fs;
     bd->force += fs;
@@ -359,7 +390,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->nsupport; t++) {
     double dep;
-    contact_geom(m, d, b, st, b->support[t], lo, hi, &dep);
+    contact_geom(m, d, b, st, b->support[t], lo, hi, lh, &dep);
   }
 
   // the mount patch's forces on the carrier

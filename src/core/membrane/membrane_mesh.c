@@ -170,6 +170,8 @@ void ur_mem_free(urMembrane* mb) {
   free(mb->tk4);
   free(mb->adj0);
   free(mb->adj);
+  free(mb->tedge);
+  free(mb->enode);
   free(mb);
 }
 
@@ -228,6 +230,56 @@ static int blocks(urMembrane* mb) {
     k4[16 + l] = mb->area0[t];
     k4[20 + l] = mb->beta[t];
   }
+  return 0;
+}
+
+
+/* each triangle's edges numbered once (the face contact evaluates an edge's midpoint once for
+   both of its triangles): nodes a < b of an edge found among the edges already seen at a (a
+   chain per node); 0 or -1 */
+static int edges(urMembrane* mb) {
+  int nn = mb->nn, nt = mb->nt, ne = 0;
+  int* head = malloc((size_t)nn * sizeof(int));
+  int* next = malloc(3 * (size_t)nt * sizeof(int));
+  int* other = malloc(3 * (size_t)nt * sizeof(int));
+  mb->tedge = malloc(3 * (size_t)nt * sizeof(int));
+  mb->enode = malloc(6 * (size_t)nt * sizeof(int));
+  if (!head || !next || !other || !mb->tedge || !mb->enode) {
+    free(head);
+    free(next);
+    free(other);
+    return -1;
+  }
+  for (int i = 0; i < nn; i++) {
+    head[i] = -1;
+  }
+  for (int t = 0; t < nt; t++) {
+    for (int k = 0; k < 3; k++) {
+      int a = mb->tri[3 * t + k], b = mb->tri[3 * t + (k + 1) % 3];
+      if (a > b) {
+        int u = a;
+        a = b;
+        b = u;
+      }
+      int e = head[a];
+      while (e >= 0 && other[e] != b) {
+        e = next[e];
+      }
+      if (e < 0) {
+        e = ne++;
+        other[e] = b;
+        mb->enode[2 * e] = a;
+        mb->enode[2 * e + 1] = b;
+        next[e] = head[a];
+        head[a] = e;
+      }
+      mb->tedge[3 * t + k] = e;
+    }
+  }
+  mb->ne = ne;
+  free(head);
+  free(next);
+  free(other);
   return 0;
 }
 
@@ -377,7 +429,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     mb->invm[mb->fix[k]] = 0;
   }
   free(xref);
-  if (blocks(mb)) {
+  if (blocks(mb) || edges(mb)) {
     ur_mem_free(mb);
     snprintf(err, n, "out of memory");
     return NULL;

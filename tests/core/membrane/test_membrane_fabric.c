@@ -56,6 +56,24 @@ static void test_mesh_closed(void** state) {
     }
   }
   assert_true(fabs(s[0]) + fabs(s[1]) + fabs(s[2]) < 1e-12);
+  // the edge list (the face contact's shared midpoints): 18 n^2 edges (Euler: nn - ne + nt = 2),
+  // each triangle's edge k joins its nodes k and k + 1, each edge in exactly two triangles
+  assert_int_equal(mb->ne, 18 * 64);
+  int* uses = calloc((size_t)mb->ne, sizeof(int));
+  assert_non_null(uses);
+  for (int t = 0; t < mb->nt; t++) {
+    for (int k = 0; k < 3; k++) {
+      int e = mb->tedge[3 * t + k], a = mb->tri[3 * t + k], b = mb->tri[3 * t + (k + 1) % 3];
+      assert_true(e >= 0 && e < mb->ne);
+      int p = mb->enode[2 * e], q = mb->enode[2 * e + 1];
+      assert_true((p == a && q == b) || (p == b && q == a));
+      uses[e]++;
+    }
+  }
+  for (int e = 0; e < mb->ne; e++) {
+    assert_int_equal(uses[e], 2);
+  }
+  free(uses);
   ur_mem_free(mb);
 }
 
