@@ -102,7 +102,8 @@ typedef struct {
   double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */
   double mref;       /* gas mass at inflation, kg */
   double dt_stable;  /* stable explicit step of the fabric (times dt_factor), s */
-  double lmin;       /* shortest characteristic element length, m */
+  double lmin;       /* shortest characteristic length (2 A / longest edge) of the triangles
+                        with a free node, m */
   double cbound[3];  /* centre and radius of a sphere holding the inflated bag, body frame */
   double rbound;
   double strain0;     /* largest yarn strain (Green, warp or weft) of the inflated state */

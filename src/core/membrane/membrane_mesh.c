@@ -119,16 +119,22 @@ static double meridian_arc(double R, double h, double phi) {
 
 /* the unit-plan radii rho[0..n] of a panel's rings: a dome's (height h > 0) divide its meridian
    into equal arcs (the mean of the plan's half-axes as its radius: rings equally spaced on the
-   fabric, not in polar angle, which crowded them at the rim of a shallow dome), a flat panel's
-   its radius */
-static void ring_radii(const urMemSpec* s, double h, double* rho) {
-  int n = s->mesh;
+   fabric, not in polar angle, which crowded them at the rim of a shallow dome); a flat panel's
+   divide its radius evenly, or, with a mount patch of radius mount > 0, ring m (the nearest to
+   mount n, 1 .. n - 1) lies on the patch's edge and the rings divide the patch and the rest
+   evenly: the patch is the declared one at every mesh, not the last ring inside it */
+static void ring_radii(const urMemSpec* s, double h, double mount, double* rho) {
+  int n = s->mesh, m = (int)floor(mount * n + 0.5);
+  m = m < 1 ? 1 : m > n - 1 ? n - 1 : m;
   double R = 0.5 * (s->a + s->b), total = h > 0 ? meridian_arc(R, h, 0.5 * M_PI) : 0;
   rho[0] = 0;
   rho[n] = 1;
   for (int k = 1; k < n; k++) {
     if (!(h > 0)) {
-      rho[k] = (double)k / n;
+      rho[k] = !(mount > 0) ? (double)k / n
+               : k < m      ? mount * k / m
+               : k == m     ? mount
+                            : mount + (1 - mount) * (k - m) / (n - m);
       continue;
     }
     double lo = 0, hi = 0.5 * M_PI, want = total * k / n;
@@ -373,7 +379,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
   double rings[65];
   for (int panel = 0; panel < 2; panel++) {
     int flat = s->pattern == urMEM_FLAT;
-    ring_radii(s, flat ? 0 : panel == 0 ? s->top : s->depth, rings);
+    ring_radii(s, flat ? 0 : panel == 0 ? s->top : s->depth, panel == 0 ? s->mount_r : 0, rings);
     for (int k = 0; k <= r; k++) {
       if (panel == 1 && k == r) {
         break;
@@ -418,6 +424,12 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
   double c = sqrt(fmax(s->e1t, s->e2t) / ((1 - s->nu12 * nu21) * s->rhot));
   memset(mb->mass, 0, (size_t)nn * sizeof(double));
   mb->lmin = INFINITY;
+  for (int i = 0; i < nn; i++) {
+    mb->invm[i] = 1; /* for now: 0 marks a mount node */
+  }
+  for (int k = 0; k < mb->nfix; k++) {
+    mb->invm[mb->fix[k]] = 0;
+  }
   for (t = 0; t < nt; t++) {
     const int* v = mb->tri + 3 * t;
     const double *X1 = xref + 3 * v[0], *X2 = xref + 3 * v[1], *X3 = xref + 3 * v[2];
@@ -460,7 +472,9 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     mb->area0[t] = A0;
     double lmax = sqrt(fmax(urm_dot(e1, e1), fmax(urm_dot(e2, e2), urm_dot(e3, e3))));
     double lc = 2 * A0 / lmax;
-    mb->lmin = fmin(mb->lmin, lc);
+    if (mb->invm[v[0]] != 0 || mb->invm[v[1]] != 0 || mb->invm[v[2]] != 0) {
+      mb->lmin = fmin(mb->lmin, lc); /* a triangle of the mount patch alone never moves */
+    }
     mb->beta[t] = s->damp * lc / c;
     for (int k = 0; k < 3; k++) {
       mb->mass[v[k]] += s->rhot * A0 / 3;
