@@ -155,15 +155,15 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    added to f and fc, reactions on g's body; the normal force sum and deepest penetration
    returned. Only when g's bounding sphere reaches the free nodes' box (lo, hi): no point of the
    bag can touch g otherwise. Each node's and each edge midpoint's depth is evaluated once (the
-   edge's two triangles share it: the same point, 0.5 (a + b) = 0.5 (b + a) bit for bit), and a
-   triangle whose three nodes lie beyond g's sphere by lh (half the longest edge now) and a
-   margin is passed over: none of its midpoints is inside the sphere either (the same triangles
-   tried, the same bits). */
+   edge's two triangles share it: the same point, 0.5 (a + b) = 0.5 (b + a) bit for bit), and
+   only the triangles whose bounding sphere (tb: centre and radius of each triangle, from
+   urm_bag_loads, with a margin) reaches g's are tried: of the others no point is inside g's
+   sphere (the same triangles tried, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           const double lo[3], const double hi[3], double lh, double* depth) {
+                           const double lo[3], const double hi[3], double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   const urMembrane* mb = b->mem;
-  int nn = mb->nn;
+  int nn = mb->nn, nt = mb->nt;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
   const double* gc = d->gxpos + 3 * g;
   double rg = m->geom[g].rbound, q = 0;
@@ -180,37 +180,39 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   int body = m->geom[g].body;
   double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0;
   bodymotion(d, body, R, o, vo, w);
-  // in the force pass's scratch (free until the next pass; 36 ntb >= 5 nn + 4 ne for the ring
+  // in the force pass's scratch (free until the next pass; 36 ntb >= 4 nn + 4 ne for the ring
   // meshes of 2 rings or more, membrane_mesh.c): each free node's depth and normal (4 doubles a
   // node: -INFINITY outside g's sphere or the shape, not evaluated), each edge midpoint's (NAN:
-  // not yet), each node's nearness (1: within rg + lh of g's centre, a triangle's midpoints can
-  // be inside g's sphere)
-  double *gn = sc + urMEMS_N, *ge = gn + 4 * (size_t)nn, *near = ge + 4 * (size_t)mb->ne;
-  double rn = (rg + lh) * (1 + 1e-6);
-  for (int i = 0; i < nn; i++) {
-    gn[4 * i] = -INFINITY;
-    near[i] = 0;
-    if (mb->invm[i] == 0) {
-      continue;
-    }
+  // not yet); in the contact scratch after the warm starts: the triangles' spheres (4 nt) and
+  // the list of those tried (nt)
+  double *gn = sc + urMEMS_N, *ge = gn + 4 * (size_t)nn;
+  double *tb = sc + urMEMS_N + 44 * (size_t)mb->ntb, *tl = tb + 4 * (size_t)nt;
+  for (int j = 0; j < mb->nfree; j++) {
+    int i = mb->free[j];
     double r[3];
     urm_sub(r, x + 3 * i, gc);
-    double rr = urm_dot(r, r);
-    near[i] = rr < rn * rn;
-    if (rr < rg * rg) {
+    gn[4 * i] = -INFINITY;
+    if (urm_dot(r, r) < rg * rg) {
       gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
       *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
     }
   }
-  for (int j = 0; j < mb->ne; j++) {
-    ge[4 * j] = NAN;
-  }
-  for (int t = 0; t < mb->nt; t++) {
-    const int* n3 = mb->tri + 3 * t;
-    if (mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0 ||
-        !(near[n3[0]] != 0 || near[n3[1]] != 0 || near[n3[2]] != 0)) {
-      continue;
+  int ntl = 0;
+  for (int j = 0; j < mb->ntfree; j++) {
+    int t = mb->tfree[j];
+    double dx = tb[t] - gc[0], dy = tb[nt + t] - gc[1], dz = tb[2 * nt + t] - gc[2];
+    double rr = (rg + tb[3 * nt + t]) * (1 + 1e-9);
+    if (dx * dx + dy * dy + dz * dz < rr * rr) {
+      tl[ntl++] = t;
     }
+  }
+  for (int j = 0; j < ntl; j++) {
+    const int* e3 = mb->tedge + 3 * (int)tl[j];
+    ge[4 * e3[0]] = ge[4 * e3[1]] = ge[4 * e3[2]] = NAN;
+  }
+  for (int jt = 0; jt < ntl; jt++) {
+    int t = (int)tl[jt];
+    const int* n3 = mb->tri + 3 * t;
     const int* e3 = mb->tedge + 3 * t;
     double dq[6], nq[6][3], xq[6][3], vq[6][3];
     int any = 0;
@@ -370,17 +372,34 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       }
     }
   }
-  double l2 = 0; /* the longest edge now, squared */
-  for (int j = 0; j < mb->ne; j++) {
-    double r[3];
-    urm_sub(r, x + 3 * mb->enode[2 * j], x + 3 * mb->enode[2 * j + 1]);
-    double rr = urm_dot(r, r);
-    l2 = rr > l2 ? rr : l2;
+  // each triangle's bounding sphere (its centroid, the farthest node from it: every point of the
+  // triangle within), SoA for contact_geom's test
+  {
+    int nt = mb->nt;
+    double* tb = sc + urMEMS_N + 44 * (size_t)mb->ntb;
+    for (int j = 0; j < mb->ntfree; j++) {
+      int t = mb->tfree[j];
+      const int* n3 = mb->tri + 3 * t;
+      const double *a = x + 3 * n3[0], *bb = x + 3 * n3[1], *cc = x + 3 * n3[2];
+      double cg[3], r2 = 0;
+      for (int k = 0; k < 3; k++) {
+        cg[k] = (a[k] + bb[k] + cc[k]) / 3;
+      }
+      for (int k = 0; k < 3; k++) {
+        double r[3];
+        urm_sub(r, x + 3 * n3[k], cg);
+        double rr = urm_dot(r, r);
+        r2 = rr > r2 ? rr : r2;
+      }
+      tb[t] = cg[0];
+      tb[nt + t] = cg[1];
+      tb[2 * nt + t] = cg[2];
+      tb[3 * nt + t] = sqrt(r2);
+    }
   }
-  double lh = 0.5 * sqrt(l2);
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
-    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, lh, &dep);
+    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, &dep);
     bd->depth[t] = dep;
     bd->ftgt[t] = fs;
     bd->force += fs;
@@ -390,7 +409,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->nsupport; t++) {
     double dep;
-    contact_geom(m, d, b, st, b->support[t], lo, hi, lh, &dep);
+    contact_geom(m, d, b, st, b->support[t], lo, hi, &dep);
   }
 
   // the mount patch's forces on the carrier

@@ -220,6 +220,8 @@ void ur_mem_free(urMembrane* mb) {
   free(mb->adj);
   free(mb->tedge);
   free(mb->enode);
+  free(mb->free);
+  free(mb->tfree);
   free(mb);
 }
 
@@ -487,6 +489,25 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     mb->invm[mb->fix[k]] = 0;
   }
   free(xref);
+  // the free nodes and the triangles of free nodes only (the face contact's)
+  mb->free = malloc((size_t)nn * sizeof(int));
+  mb->tfree = malloc((size_t)nt * sizeof(int));
+  if (!mb->free || !mb->tfree) {
+    ur_mem_free(mb);
+    snprintf(err, n, "out of memory");
+    return NULL;
+  }
+  for (int i = 0; i < nn; i++) {
+    if (mb->invm[i] != 0) {
+      mb->free[mb->nfree++] = i;
+    }
+  }
+  for (t = 0; t < nt; t++) {
+    const int* v = mb->tri + 3 * t;
+    if (mb->invm[v[0]] != 0 && mb->invm[v[1]] != 0 && mb->invm[v[2]] != 0) {
+      mb->tfree[mb->ntfree++] = t;
+    }
+  }
   if (blocks(mb) || edges(mb)) {
     ur_mem_free(mb);
     snprintf(err, n, "out of memory");
@@ -505,7 +526,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb;
+  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt;
 }
 
 
