@@ -383,7 +383,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       const double *a = x + 3 * n3[0], *bb = x + 3 * n3[1], *cc = x + 3 * n3[2];
       double cg[3], r2 = 0;
       for (int k = 0; k < 3; k++) {
-        cg[k] = (a[k] + bb[k] + cc[k]) / 3;
+        cg[k] = (a[k] + bb[k] + cc[k]) * (1.0 / 3); /* any point near the centroid will do */
       }
       for (int k = 0; k < 3; k++) {
         double r[3];
@@ -394,7 +394,10 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
       tb[t] = cg[0];
       tb[nt + t] = cg[1];
       tb[2 * nt + t] = cg[2];
-      tb[3 * nt + t] = sqrt(r2);
+      tb[3 * nt + t] = r2;
+    }
+    for (int t = 0; t < nt; t++) {
+      tb[3 * nt + t] = sqrt(tb[3 * nt + t]); /* apart: a vector loop, no wait on each root */
     }
   }
   for (int t = 0; t < b->ntarget; t++) {
