@@ -120,12 +120,15 @@ static double meridian_arc(double R, double h, double phi) {
 /* the unit-plan radii rho[0..n] of a panel's rings: a dome's (height h > 0) divide its meridian
    into equal arcs (the mean of the plan's half-axes as its radius: rings equally spaced on the
    fabric, not in polar angle, which crowded them at the rim of a shallow dome); a flat panel's
-   divide its radius evenly, or, with a mount patch of radius mount > 0, ring m (the nearest to
-   mount n, 1 .. n - 1) lies on the patch's edge and the rings divide the patch and the rest
-   evenly: the patch is the declared one at every mesh, not the last ring inside it */
+   divide its radius evenly, or, with a mount patch of radius mount, ring m (the nearest to
+   mount n, when that is 1 .. n - 1: a patch of a ring or more, short of the seam) lies on the
+   patch's edge and the rings divide the patch and the rest evenly: the patch is the declared
+   one at every mesh, not the last ring inside it */
 static void ring_radii(const urMemSpec* s, double h, double mount, double* rho) {
   int n = s->mesh, m = (int)floor(mount * n + 0.5);
-  m = m < 1 ? 1 : m > n - 1 ? n - 1 : m;
+  if (m < 1 || m > n - 1) {
+    mount = 0; /* evenly */
+  }
   double R = 0.5 * (s->a + s->b), total = h > 0 ? meridian_arc(R, h, 0.5 * M_PI) : 0;
   rho[0] = 0;
   rho[n] = 1;
