@@ -94,12 +94,19 @@ typedef struct {
   int* adj0;         /* nn + 1: node i's triangle corners are adj[adj0[i] .. adj0[i + 1]) */
   int* adj;          /* 3 nt: the corners by node in triangle order, as offsets of their force
                         in the force pass's scratch */
+  int ne;            /* edges */
+  int* tedge;        /* 3 nt: the edges of triangle t (nodes 1-2, 2-3, 3-1), 0 .. ne - 1 */
+  int* enode;        /* 2 ne: the nodes of each edge */
+  int nfree, ntfree; /* free nodes; triangles whose three nodes are free */
+  int* free;         /* nfree: the free nodes, ascending */
+  int* tfree;        /* ntfree: those triangles, ascending */
   double* xshape;    /* 3 nn: the declared shape, carrier body frame */
   double* x0;        /* 3 nn: the inflated state, carrier body frame */
   double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */
   double mref;       /* gas mass at inflation, kg */
   double dt_stable;  /* stable explicit step of the fabric (times dt_factor), s */
-  double lmin;       /* shortest characteristic element length, m */
+  double lmin;       /* shortest characteristic length (2 A / longest edge) of the triangles
+                        with a free node, m */
   double cbound[3];  /* centre and radius of a sphere holding the inflated bag, body frame */
   double rbound;
   double strain0;     /* largest yarn strain (Green, warp or weft) of the inflated state */
@@ -149,7 +156,8 @@ void ur_mem_free(urMembrane* mb);
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
    scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb), then each
-   triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none) */
+   triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none), then the
+   engine's contact scratch (5 nt: each triangle's bounding sphere, a list of triangles) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->

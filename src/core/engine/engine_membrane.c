@@ -154,12 +154,16 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    body by its sagitta (materials-membrane C.4's midpoint checks) to a quarter of it. Forces
    added to f and fc, reactions on g's body; the normal force sum and deepest penetration
    returned. Only when g's bounding sphere reaches the free nodes' box (lo, hi): no point of the
-   bag can touch g otherwise. */
+   bag can touch g otherwise. Each node's and each edge midpoint's depth is evaluated once (the
+   edge's two triangles share it: the same point, 0.5 (a + b) = 0.5 (b + a) bit for bit), and
+   only the triangles whose bounding sphere (tb: centre and radius of each triangle, from
+   urm_bag_loads, with a margin) reaches g's are tried: of the others no point is inside g's
+   sphere (the same triangles tried, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
                            const double lo[3], const double hi[3], double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   const urMembrane* mb = b->mem;
-  int nn = mb->nn;
+  int nn = mb->nn, nt = mb->nt;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
   const double* gc = d->gxpos + 3 * g;
   double rg = m->geom[g].rbound, q = 0;
@@ -176,26 +180,40 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   int body = m->geom[g].body;
   double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0;
   bodymotion(d, body, R, o, vo, w);
-  // each free node's depth and normal, 4 doubles a node in the force pass's scratch (free until
-  // the next pass: 36 ntb >= 4 nn): -INFINITY outside g's sphere or the shape (not evaluated)
-  double* gn = sc + urMEMS_N;
-  for (int i = 0; i < nn; i++) {
-    gn[4 * i] = -INFINITY;
-    if (mb->invm[i] == 0) {
-      continue;
-    }
+  // in the force pass's scratch (free until the next pass; 36 ntb >= 4 nn + 4 ne for the ring
+  // meshes of 2 rings or more, membrane_mesh.c): each free node's depth and normal (4 doubles a
+  // node: -INFINITY outside g's sphere or the shape, not evaluated), each edge midpoint's (NAN:
+  // not yet); in the contact scratch after the warm starts: the triangles' spheres (4 nt) and
+  // the list of those tried (nt)
+  double *gn = sc + urMEMS_N, *ge = gn + 4 * (size_t)nn;
+  double *tb = sc + urMEMS_N + 44 * (size_t)mb->ntb, *tl = tb + 4 * (size_t)nt;
+  for (int j = 0; j < mb->nfree; j++) {
+    int i = mb->free[j];
     double r[3];
     urm_sub(r, x + 3 * i, gc);
+    gn[4 * i] = -INFINITY;
     if (urm_dot(r, r) < rg * rg) {
       gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
       *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
     }
   }
-  for (int t = 0; t < mb->nt; t++) {
-    const int* n3 = mb->tri + 3 * t;
-    if (mb->invm[n3[0]] == 0 || mb->invm[n3[1]] == 0 || mb->invm[n3[2]] == 0) {
-      continue;
+  int ntl = 0;
+  for (int j = 0; j < mb->ntfree; j++) {
+    int t = mb->tfree[j];
+    double dx = tb[t] - gc[0], dy = tb[nt + t] - gc[1], dz = tb[2 * nt + t] - gc[2];
+    double rr = (rg + tb[3 * nt + t]) * (1 + 1e-9);
+    if (dx * dx + dy * dy + dz * dz < rr * rr) {
+      tl[ntl++] = t;
     }
+  }
+  for (int j = 0; j < ntl; j++) {
+    const int* e3 = mb->tedge + 3 * (int)tl[j];
+    ge[4 * e3[0]] = ge[4 * e3[1]] = ge[4 * e3[2]] = NAN;
+  }
+  for (int jt = 0; jt < ntl; jt++) {
+    int t = (int)tl[jt];
+    const int* n3 = mb->tri + 3 * t;
+    const int* e3 = mb->tedge + 3 * t;
     double dq[6], nq[6][3], xq[6][3], vq[6][3];
     int any = 0;
     for (int k = 0; k < 3; k++) {
@@ -204,15 +222,22 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     }
     for (int k = 0; k < 3; k++) {
       const double *xa = x + 3 * n3[k], *xb = x + 3 * n3[(k + 1) % 3];
-      double r[3];
+      double* gk = ge + 4 * e3[k];
       for (int c = 0; c < 3; c++) {
         xq[3 + k][c] = 0.5 * (xa[c] + xb[c]);
       }
-      urm_sub(r, xq[3 + k], gc);
-      dq[3 + k] = -INFINITY;
-      if (urm_dot(r, r) < rg * rg) {
-        dq[3 + k] = urm_contact_gap(&e, xq[3 + k], 0, nq[3 + k]);
-        *depth = fmax(*depth, fmax(dq[3 + k], 0));
+      if (isnan(gk[0])) {
+        double r[3];
+        urm_sub(r, xq[3 + k], gc);
+        gk[0] = -INFINITY;
+        if (urm_dot(r, r) < rg * rg) {
+          gk[0] = urm_contact_gap(&e, xq[3 + k], 0, gk + 1);
+          *depth = fmax(*depth, fmax(gk[0], 0));
+        }
+      }
+      dq[3 + k] = gk[0];
+      for (int c = 0; c < 3; c++) {
+        nq[3 + k][c] = gk[1 + c];
       }
       any |= dq[3 + k] > 0;
     }
@@ -228,7 +253,8 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
         vq[3 + k][c] = 0.5 * (va[c] + vb[c]);
       }
     }
-    // the points not evaluated beside a penetrating one: their gap, for the zero contour
+    // the points not evaluated beside a penetrating one: their gap, for the zero contour (kept
+    // for the node's or edge's other triangles)
     for (int j = 0; j < 4; j++) {
       const int* qj = sub[j];
       if (!(dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0)) {
@@ -242,11 +268,10 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
             dq[p] = -1; /* no gradient there: far outside */
             nq[p][0] = nq[p][1] = 0, nq[p][2] = 1;
           }
-          if (p < 3) {
-            gn[4 * n3[p]] = dq[p];
-            for (int c = 0; c < 3; c++) {
-              gn[4 * n3[p] + 1 + c] = nq[p][c];
-            }
+          double* gp = p < 3 ? gn + 4 * n3[p] : ge + 4 * e3[p - 3];
+          gp[0] = dq[p];
+          for (int c = 0; c < 3; c++) {
+            gp[1 + c] = nq[p][c];
           }
         }
       }
@@ -345,6 +370,34 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
         lo[k] = u < lo[k] ? u : lo[k];
         hi[k] = u > hi[k] ? u : hi[k];
       }
+    }
+  }
+  // each triangle's bounding sphere (its centroid, the farthest node from it: every point of the
+  // triangle within), SoA for contact_geom's test
+  {
+    int nt = mb->nt;
+    double* tb = sc + urMEMS_N + 44 * (size_t)mb->ntb;
+    for (int j = 0; j < mb->ntfree; j++) {
+      int t = mb->tfree[j];
+      const int* n3 = mb->tri + 3 * t;
+      const double *a = x + 3 * n3[0], *bb = x + 3 * n3[1], *cc = x + 3 * n3[2];
+      double cg[3], r2 = 0;
+      for (int k = 0; k < 3; k++) {
+        cg[k] = (a[k] + bb[k] + cc[k]) * (1.0 / 3); /* any point near the centroid will do */
+      }
+      for (int k = 0; k < 3; k++) {
+        double r[3];
+        urm_sub(r, x + 3 * n3[k], cg);
+        double rr = urm_dot(r, r);
+        r2 = rr > r2 ? rr : r2;
+      }
+      tb[t] = cg[0];
+      tb[nt + t] = cg[1];
+      tb[2 * nt + t] = cg[2];
+      tb[3 * nt + t] = r2;
+    }
+    for (int t = 0; t < nt; t++) {
+      tb[3 * nt + t] = sqrt(tb[3 * nt + t]); /* apart: a vector loop, no wait on each root */
     }
   }
   for (int t = 0; t < b->ntarget; t++) {

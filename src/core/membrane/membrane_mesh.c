@@ -1,6 +1,7 @@
 /* membrane_mesh.c: a bag's mesh from its declaration: two panels of the plan shape (ellipse or
- * rounded rectangle) meshed in rings (ring k of 6k nodes at radii sin(pi k / 2n) of the plan on
- * a dome, evenly dividing its arc, k / n on a flat panel), sewn at the last ring; the declared shape (bottom panel a
+ * rounded rectangle) meshed in rings (ring k of 6k nodes; a dome's rings divide its meridian's
+ * arc evenly, a flat panel's its radius k / n; the strips between rings triangulated as the
+ * hexagonal lattice), sewn at the last ring; the declared shape (bottom panel a
  * half-ellipsoid of the given depth, top flat or domed), the reference metric (that shape, or
  * the flat pattern), material axes (warp along the plan's x), lumped masses from the areal
  * density, the mount patch and the stable step. Also the default fabric and gas. */
@@ -102,23 +103,73 @@ static int node_at(int n, int ntop, int panel, int k, int j) {
 }
 
 
-/* the plan point of ring k, item j of a panel of height h (0: flat): unit-plan radius rho and
-   direction; a dome's rings divide its arc evenly, a flat panel's its radius */
-static void plan_point(const urMemSpec* s, double h, int k, int j, double* rho, double xy[2]) {
-  int n = s->mesh;
-  *rho = k == n ? 1.0 : h > 0 ? sin(0.5 * M_PI * k / n) : (double)k / n;
+/* the meridian's arc length of a dome of plan radius R and height h from its pole to polar angle
+   phi (the point R sin phi, h cos phi): Simpson's rule over 256 intervals (a smooth integrand) */
+static double meridian_arc(double R, double h, double phi) {
+  const int m = 256;
+  double dp = phi / m, sum = 0;
+  for (int i = 0; i <= m; i++) {
+    double t = dp * i, c = cos(t), sn = sin(t);
+    double w = i == 0 || i == m ? 1 : i % 2 ? 4 : 2;
+    sum += w * sqrt(R * R * c * c + h * h * sn * sn);
+  }
+  return sum * dp / 3;
+}
+
+
+/* the unit-plan radii rho[0..n] of a panel's rings: a dome's (height h > 0) divide its meridian
+   into equal arcs (the mean of the plan's half-axes as its radius: rings equally spaced on the
+   fabric, not in polar angle, which crowded them at the rim of a shallow dome); a flat panel's
+   divide its radius evenly, or, with a mount patch of radius mount, ring m (the nearest to
+   mount n, when that is 1 .. n - 1: a patch of a ring or more, short of the seam) lies on the
+   patch's edge and the rings divide the patch and the rest evenly: the patch is the declared
+   one at every mesh, not the last ring inside it */
+static void ring_radii(const urMemSpec* s, double h, double mount, double* rho) {
+  int n = s->mesh, m = (int)floor(mount * n + 0.5);
+  if (m < 1 || m > n - 1) {
+    mount = 0; /* evenly */
+  }
+  double R = 0.5 * (s->a + s->b), total = h > 0 ? meridian_arc(R, h, 0.5 * M_PI) : 0;
+  rho[0] = 0;
+  rho[n] = 1;
+  for (int k = 1; k < n; k++) {
+    if (!(h > 0)) {
+      rho[k] = !(mount > 0) ? (double)k / n
+               : k < m      ? mount * k / m
+               : k == m     ? mount
+                            : mount + (1 - mount) * (k - m) / (n - m);
+      continue;
+    }
+    double lo = 0, hi = 0.5 * M_PI, want = total * k / n;
+    for (int it = 0; it < 60; it++) {
+      double mid = 0.5 * (lo + hi);
+      if (meridian_arc(R, h, mid) < want) {
+        lo = mid;
+      } else {
+        hi = mid;
+      }
+    }
+    rho[k] = sin(0.5 * (lo + hi));
+  }
+}
+
+
+/* the plan point of ring k, item j of a panel whose ring k lies at unit-plan radius rho */
+static void plan_point(const urMemSpec* s, double rho, int k, int j, double xy[2]) {
   double th = k == 0 ? 0 : 2 * M_PI * j / (6.0 * k);
   double c = cos(th), sn = sin(th), nrm = 1;
   if (s->plan == urMEM_RECT) {
     nrm = pow(pow(fabs(c), 4) + pow(fabs(sn), 4), 0.25);
   }
-  xy[0] = *rho * s->a * c / nrm;
-  xy[1] = *rho * s->b * sn / nrm;
+  xy[0] = rho * s->a * c / nrm;
+  xy[1] = rho * s->b * sn / nrm;
 }
 
 
-/* triangles of the strip between rings k-1 and k of a panel, advancing by angle; flip reverses
-   the orientation (bottom panel) */
+/* triangles of the strip between rings k-1 and k of a panel, advancing by angle (where the next
+   inner and outer nodes lie at the same angle, a sextant's corner, the inner one first: the
+   hexagonal lattice's triangulation, no skinny triangle at the corners); flip reverses the
+   orientation (bottom panel) */
 static int strip(int n, int ntop, int panel, int k, int flip, int* tri) {
   int nt = 0, a = 0, b = 0, na = 6 * (k - 1), nb = 6 * k;
   if (k == 1) {
@@ -133,12 +184,12 @@ static int strip(int n, int ntop, int panel, int k, int flip, int* tri) {
     return nt;
   }
   while (a < na || b < nb) {
-    // next angles (fractions of a turn) of the inner and outer ring
-    double ta = (a + 1.0) / na, tb = (b + 1.0) / nb;
+    // next angles (fractions of a turn) of the inner and outer ring, (a + 1) / na and
+    // (b + 1) / nb, compared exactly
     int v[3];
     v[0] = node_at(n, ntop, panel, k - 1, a);
     v[1] = node_at(n, ntop, panel, k, b);
-    if (b < nb && (a >= na || tb <= ta)) {
+    if (b < nb && (a >= na || (long)(b + 1) * na < (long)(a + 1) * nb)) {
       // inner a, outer b, outer b+1: counter-clockwise seen from +z
       v[2] = node_at(n, ntop, panel, k, b + 1);
       b++;
@@ -170,6 +221,10 @@ void ur_mem_free(urMembrane* mb) {
   free(mb->tk4);
   free(mb->adj0);
   free(mb->adj);
+  free(mb->tedge);
+  free(mb->enode);
+  free(mb->free);
+  free(mb->tfree);
   free(mb);
 }
 
@@ -232,6 +287,56 @@ static int blocks(urMembrane* mb) {
 }
 
 
+/* each triangle's edges numbered once (the face contact evaluates an edge's midpoint once for
+   both of its triangles): nodes a < b of an edge found among the edges already seen at a (a
+   chain per node); 0 or -1 */
+static int edges(urMembrane* mb) {
+  int nn = mb->nn, nt = mb->nt, ne = 0;
+  int* head = malloc((size_t)nn * sizeof(int));
+  int* next = malloc(3 * (size_t)nt * sizeof(int));
+  int* other = malloc(3 * (size_t)nt * sizeof(int));
+  mb->tedge = malloc(3 * (size_t)nt * sizeof(int));
+  mb->enode = malloc(6 * (size_t)nt * sizeof(int));
+  if (!head || !next || !other || !mb->tedge || !mb->enode) {
+    free(head);
+    free(next);
+    free(other);
+    return -1;
+  }
+  for (int i = 0; i < nn; i++) {
+    head[i] = -1;
+  }
+  for (int t = 0; t < nt; t++) {
+    for (int k = 0; k < 3; k++) {
+      int a = mb->tri[3 * t + k], b = mb->tri[3 * t + (k + 1) % 3];
+      if (a > b) {
+        int u = a;
+        a = b;
+        b = u;
+      }
+      int e = head[a];
+      while (e >= 0 && other[e] != b) {
+        e = next[e];
+      }
+      if (e < 0) {
+        e = ne++;
+        other[e] = b;
+        mb->enode[2 * e] = a;
+        mb->enode[2 * e + 1] = b;
+        next[e] = head[a];
+        head[a] = e;
+      }
+      mb->tedge[3 * t + k] = e;
+    }
+  }
+  mb->ne = ne;
+  free(head);
+  free(next);
+  free(other);
+  return 0;
+}
+
+
 urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
   if (ur_mem_spec_check(s, err, n)) {
     return NULL;
@@ -276,16 +381,18 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
                     2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
     memcpy(Q, q9, sizeof(Q));
   }
+  double rings[65];
   for (int panel = 0; panel < 2; panel++) {
+    int flat = s->pattern == urMEM_FLAT;
+    ring_radii(s, flat ? 0 : panel == 0 ? s->top : s->depth, panel == 0 ? s->mount_r : 0, rings);
     for (int k = 0; k <= r; k++) {
       if (panel == 1 && k == r) {
         break;
       }
       for (int j = 0; j < (k ? 6 * k : 1); j++) {
         int i = node_at(r, ntop, panel, k, j);
-        double rho, xy[2];
-        int flat = s->pattern == urMEM_FLAT;
-        plan_point(s, flat ? 0 : panel == 0 ? s->top : s->depth, k, j, &rho, xy);
+        double rho = rings[k], xy[2];
+        plan_point(s, rho, k, j, xy);
         double h = sqrt(fmax(0, 1 - rho * rho));
         double z = panel == 0 ? s->top * h : -s->depth * h;
         double* xs = mb->xshape + 3 * i;
@@ -322,6 +429,12 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
   double c = sqrt(fmax(s->e1t, s->e2t) / ((1 - s->nu12 * nu21) * s->rhot));
   memset(mb->mass, 0, (size_t)nn * sizeof(double));
   mb->lmin = INFINITY;
+  for (int i = 0; i < nn; i++) {
+    mb->invm[i] = 1; /* for now: 0 marks a mount node */
+  }
+  for (int k = 0; k < mb->nfix; k++) {
+    mb->invm[mb->fix[k]] = 0;
+  }
   for (t = 0; t < nt; t++) {
     const int* v = mb->tri + 3 * t;
     const double *X1 = xref + 3 * v[0], *X2 = xref + 3 * v[1], *X3 = xref + 3 * v[2];
@@ -364,7 +477,9 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     mb->area0[t] = A0;
     double lmax = sqrt(fmax(urm_dot(e1, e1), fmax(urm_dot(e2, e2), urm_dot(e3, e3))));
     double lc = 2 * A0 / lmax;
-    mb->lmin = fmin(mb->lmin, lc);
+    if (mb->invm[v[0]] != 0 || mb->invm[v[1]] != 0 || mb->invm[v[2]] != 0) {
+      mb->lmin = fmin(mb->lmin, lc); /* a triangle of the mount patch alone never moves */
+    }
     mb->beta[t] = s->damp * lc / c;
     for (int k = 0; k < 3; k++) {
       mb->mass[v[k]] += s->rhot * A0 / 3;
@@ -377,7 +492,26 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     mb->invm[mb->fix[k]] = 0;
   }
   free(xref);
-  if (blocks(mb)) {
+  // the free nodes and the triangles of free nodes only (the face contact's)
+  mb->free = malloc((size_t)nn * sizeof(int));
+  mb->tfree = malloc((size_t)nt * sizeof(int));
+  if (!mb->free || !mb->tfree) {
+    ur_mem_free(mb);
+    snprintf(err, n, "out of memory");
+    return NULL;
+  }
+  for (int i = 0; i < nn; i++) {
+    if (mb->invm[i] != 0) {
+      mb->free[mb->nfree++] = i;
+    }
+  }
+  for (t = 0; t < nt; t++) {
+    const int* v = mb->tri + 3 * t;
+    if (mb->invm[v[0]] != 0 && mb->invm[v[1]] != 0 && mb->invm[v[2]] != 0) {
+      mb->tfree[mb->ntfree++] = t;
+    }
+  }
+  if (blocks(mb) || edges(mb)) {
     ur_mem_free(mb);
     snprintf(err, n, "out of memory");
     return NULL;
@@ -395,7 +529,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb;
+  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt;
 }
 
 

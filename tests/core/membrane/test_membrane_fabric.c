@@ -56,7 +56,60 @@ static void test_mesh_closed(void** state) {
     }
   }
   assert_true(fabs(s[0]) + fabs(s[1]) + fabs(s[2]) < 1e-12);
+  // the edge list (the face contact's shared midpoints): 18 n^2 edges (Euler: nn - ne + nt = 2),
+  // each triangle's edge k joins its nodes k and k + 1, each edge in exactly two triangles
+  assert_int_equal(mb->ne, 18 * 64);
+  int* uses = calloc((size_t)mb->ne, sizeof(int));
+  assert_non_null(uses);
+  for (int t = 0; t < mb->nt; t++) {
+    for (int k = 0; k < 3; k++) {
+      int e = mb->tedge[3 * t + k], a = mb->tri[3 * t + k], b = mb->tri[3 * t + (k + 1) % 3];
+      assert_true(e >= 0 && e < mb->ne);
+      int p = mb->enode[2 * e], q = mb->enode[2 * e + 1];
+      assert_true((p == a && q == b) || (p == b && q == a));
+      uses[e]++;
+    }
+  }
+  for (int e = 0; e < mb->ne; e++) {
+    assert_int_equal(uses[e], 2);
+  }
+  free(uses);
   ur_mem_free(mb);
+}
+
+
+/* the ring mesh's shape on a shallow cushion (the RA3's bottom bag's proportions): the mount
+   patch's edge is a ring at mount_r of the plan at every mesh (its node count 1 + 3 m (m + 1),
+   m = round(mount_r n)); the shortest characteristic length 2A / l_max of the triangles with a
+   free node is at least 0.65 of the ring spacing a / n (the hexagonal lattice's strips and the
+   dome's rings even in arc: 0.73-0.76 at meshes 5-10; the first ring mesh had 0.51, skinny
+   triangles at the dome's rim and at every sextant's corner) */
+static void test_mesh_shape(void** state) {
+  const int meshes[4] = {5, 6, 10, 12};
+  for (int q = 0; q < 4; q++) {
+    urMemSpec s;
+    char err[200];
+    ur_mem_spec_default(&s);
+    s.a = 0.33;
+    s.b = 0.34;
+    s.depth = 0.14;
+    s.mount_r = 0.35;
+    s.mesh = meshes[q];
+    urMembrane* mb = ur_mem_build(&s, err, sizeof err);
+    assert_non_null(mb);
+    int m = (int)floor(0.35 * s.mesh + 0.5);
+    assert_int_equal(mb->nfix, 1 + 3 * m * (m + 1));
+    double edge = 0;
+    for (int k = 0; k < mb->nfix; k++) {
+      const double* x = mb->xshape + 3 * mb->fix[k];
+      edge = fmax(edge, sqrt(x[0] * x[0] / (s.a * s.a) + x[1] * x[1] / (s.b * s.b)));
+    }
+    print_message("mesh %d: mount patch to %.6f of the plan, L_min %.1f mm = %.3f a / n\n", s.mesh,
+                  edge, 1e3 * mb->lmin, mb->lmin / (s.a / s.mesh));
+    assert_true(fabs(edge - 0.35) < 1e-9);
+    assert_true(mb->lmin >= 0.65 * s.a / s.mesh);
+    ur_mem_free(mb);
+  }
 }
 
 
@@ -564,12 +617,19 @@ static void test_warm_start(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_mesh_closed),     cmocka_unit_test(test_laplace_sphere),
-      cmocka_unit_test(test_tension_field),   cmocka_unit_test(test_relaxed_law),
-      cmocka_unit_test(test_force_gradient),  cmocka_unit_test(test_shear_lock),
-      cmocka_unit_test(test_gas_law),         cmocka_unit_test(test_vent_flow),
-      cmocka_unit_test(test_stress4_bitwise), cmocka_unit_test(test_stress4_warm_bitwise),
-      cmocka_unit_test(test_forces_bitwise),  cmocka_unit_test(test_warm_start),
+      cmocka_unit_test(test_mesh_closed),
+      cmocka_unit_test(test_mesh_shape),
+      cmocka_unit_test(test_laplace_sphere),
+      cmocka_unit_test(test_tension_field),
+      cmocka_unit_test(test_relaxed_law),
+      cmocka_unit_test(test_force_gradient),
+      cmocka_unit_test(test_shear_lock),
+      cmocka_unit_test(test_gas_law),
+      cmocka_unit_test(test_vent_flow),
+      cmocka_unit_test(test_stress4_bitwise),
+      cmocka_unit_test(test_stress4_warm_bitwise),
+      cmocka_unit_test(test_forces_bitwise),
+      cmocka_unit_test(test_warm_start),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
