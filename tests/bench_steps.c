@@ -18,13 +18,13 @@
 
 /* the tallies of one grid */
 typedef struct {
-  long cells, sims, nocontact;           /* lattice cells, simulated, simulated without contact */
-  long pre, con, post;                   /* steps before contact, in contact, after it */
-  long nosteps;                          /* steps of the runs without contact */
-  long after_final;                      /* steps after the criteria's last final value */
-  long end[6];                           /* separated, window, passed, settled, tmax, other */
-  long window_active;                    /* runs ended by the window with contact still active */
-  double q;                              /* the grid's Q */
+  long cells, sims, nocontact; /* lattice cells, simulated, simulated without contact */
+  long pre, con, post;         /* steps before contact, in contact, after it */
+  long nosteps;                /* steps of the runs without contact */
+  long after_final;            /* steps after the criteria's last final value */
+  long end[6];                 /* separated, window, passed, settled, tmax, other */
+  long window_active;          /* runs ended by the window with contact still active */
+  double q;                    /* the grid's Q */
 } tally;
 
 /* the time by which every criterion of the fusion has its final value: the end of the HIC
@@ -93,8 +93,8 @@ static int count(uraCtx* c, const char* setup, double step, const char* more, ta
 
 static void report(const char* name, const tally* y) {
   long contact = y->sims - y->nocontact, all = y->pre + y->con + y->post + y->nosteps;
-  printf("  %-9s Q %.4f  %5ld cells, %4ld simulated (%ld without contact), %ld steps\n", name,
-         y->q, y->cells, y->sims, y->nocontact, all);
+  printf("  %-9s Q %.4f  %5ld cells, %4ld simulated (%ld without contact), %ld steps\n", name, y->q,
+         y->cells, y->sims, y->nocontact, all);
   printf(
       "            per impact with contact: %5.0f before contact, %5.0f in contact, %5.0f after "
       "separation; %5.0f after the last final value\n",
