@@ -6,6 +6,34 @@
 #include <string.h>
 #include "engine_internal.h"
 
+//---------------------------------- stage timer ---------------------------------------------------
+
+// The stage timer of a step alone (engine_internal.h): only in an object built with urSTEP_PROF
+// (make bench); otherwise urLAP and urLAP_START are nothing. Per thread: one stepping thread's
+// counters and the tick at which its current stage began.
+#ifdef urSTEP_PROF
+static _Thread_local unsigned long long* step_prof;
+static _Thread_local unsigned long long step_t0;
+
+void ur_step_prof(unsigned long long* prof) {
+  step_prof = prof;
+}
+
+// the time since the stage began to stage k, and the next stage begins now
+static void step_lap(int k) {
+  if (step_prof) {
+    unsigned long long t = uru_ticks();
+    step_prof[k] += t - step_t0;
+    step_t0 = t;
+  }
+}
+#define urLAP(k)      step_lap(k)
+#define urLAP_START() (step_t0 = step_prof ? uru_ticks() : 0)
+#else
+#define urLAP(k)      ((void)0)
+#define urLAP_START() ((void)0)
+#endif
+
 //---------------------------------- forward -------------------------------------------------------
 
 // the forward pipeline up to the accelerations: positions, velocities, the restraint kinematics
@@ -18,8 +46,11 @@ void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics_gpos(m, d);
   memset(d->gmat_ok, 0, (size_t)m->ngeom);
   ur_velocities(m, d);
+  urLAP(urSTEP_KIN);
   ur_restraints_kin(m, d);
+  urLAP(urSTEP_RKIN);
   ur_contacts_broad(m, d);
+  urLAP(urSTEP_BROAD);
   ur_forward_loads(m, d);
 }
 
@@ -38,9 +69,13 @@ void ur_forward_loads(const urModel* m, urData* d) {
     }
     ur_apply_force(m, d, i, f, d->xcom + 3 * i);
   }
+  urLAP(urSTEP_GRAV);
   ur_restraints(m, d);
+  urLAP(urSTEP_RESTR);
   ur_contacts_narrow(m, d);
+  urLAP(urSTEP_NARROW);
   ur_airbags(m, d);
+  urLAP(urSTEP_BAG);
 }
 
 
@@ -68,7 +103,10 @@ int ur_forward(const urModel* m, urData* d) {
   }
   ur_forward_pre(m, d);
   ur_aba(m, d);
-  return ur_forward_post(m, d);
+  urLAP(urSTEP_ABA);
+  int st = ur_forward_post(m, d);
+  urLAP(urSTEP_POST);
+  return st;
 }
 
 //---------------------------------- integration ---------------------------------------------------
@@ -281,7 +319,9 @@ int ur_step_euler(const urModel* m, urData* d) {
     d->qvel[k] += h * d->qacc[k];
   }
   addpos(m, d->qpos, d->qpos, d->qvel, h);
-  return ur_step_end(m, d);
+  int st = ur_step_end(m, d);
+  urLAP(urSTEP_EULER);
+  return st;
 }
 
 
@@ -296,6 +336,7 @@ int ur_step(const urModel* m, urData* d) {
   if (ur_step_begin(m, d) < 0) {
     return d->status;
   }
+  urLAP_START();
 
   // forward at the current state
   if (ur_forward(m, d) < 0) {
