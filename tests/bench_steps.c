@@ -24,6 +24,7 @@ typedef struct {
   long after_final;            /* steps after the criteria's last final value */
   long end[6];                 /* separated, window, passed, settled, tmax, other */
   long window_active;          /* runs ended by the window with contact still active */
+  long proved;                 /* runs ended by the clear proof before t_quiet */
   double q;                    /* the grid's Q */
 } tally;
 
@@ -84,6 +85,7 @@ static int count(uraCtx* c, const char* setup, double step, const char* more, ta
     y->con += con;
     y->post += d->nstep - pre - con;
     if (e == 1 && d->time - d->t_last < 1.5 * dt) y->window_active++;
+    if (e == 0 && d->time - d->t_last < s->m->opt.t_quiet - 0.5 * dt) y->proved++;
     double tf = final_time(&w, &r);
     if (d->time > tf) y->after_final += lround((d->time - tf) / dt) - 1;
   }
@@ -108,9 +110,10 @@ static void report(const char* name, const tally* y) {
       100.0 * y->pre / all, 100.0 * y->con / all, 100.0 * y->post / all,
       100.0 * y->after_final / all);
   printf(
-      "            ends: contact over %ld, window %ld (%ld in contact), passed %ld, settled %ld, "
-      "tmax %ld, other %ld\n",
-      y->end[0], y->end[1], y->window_active, y->end[2], y->end[3], y->end[4], y->end[5]);
+      "            ends: contact over %ld (%ld proved clear before t_quiet), window %ld (%ld in "
+      "contact), passed %ld, settled %ld, tmax %ld, other %ld\n",
+      y->end[0], y->proved, y->end[1], y->window_active, y->end[2], y->end[3], y->end[4],
+      y->end[5]);
 }
 
 int main(int argc, char** argv) {

@@ -148,6 +148,15 @@ void ur_lanes_free(urLanes* L);
 // one step of each of the runs d[0..n-1] (urNLANE at a time), bitwise as ur_step on each
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
+// How fast spin can widen ellipsoid ge along a fixed unit direction while its body turns at the
+// constant angular velocity wb (rad/s, in the body's frame): its half-width grows within time t
+// by at most o + k t, and by at most kr t (m, m/s; engine_run.c says why). The end-of-run proof
+// (t_clear) uses it: a sphere, or a flat round ellipsoid that yaws, hardly widens.
+typedef struct {
+  double o, k, kr;
+} urSpinBound;
+urSpinBound ur_spin_bound(const urGeom* ge, const double wb[3]);
+
 #if !(defined(__x86_64__) && defined(__GNUC__))
 #include <time.h>
 #endif

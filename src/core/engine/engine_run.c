@@ -161,12 +161,38 @@ static void checkstate(const urModel* m, urData* d) {
 }
 
 
-// centre velocity of ellipsoid g and the speed bound of its surface about the centre (spin
-// times the largest semi-axis)
-static void geomspeed(const urModel* m, const urData* d, int g, double v[3], double* w) {
+// how fast spin can widen an ellipsoid (engine_internal.h). For an ellipsoid (semi-axes a_l, in
+// a frame of its own) o = 0 and k = kr: h = |A u| and dh/dt = -w.(u x A^2 u) / |A u|, whose
+// parts about each axis are at most |w_l| |a_m - a_n| (l, m, n the three axes: |u_m u_n| /
+// |(a_m u_m, a_n u_n)| <= 1 / (a_m + a_n)), and in all at most |w| (a_max - a_min) (the part of
+// A^2 u across u is at most (a_max - a_min) |A u|: the variance of a^2 under the weights u_l^2 is
+// at most (a_max - a_min)^2 times their mean, by the Bhatia-Davis bound). A superellipsoid of
+// degree p lies between the ellipsoid E of its semi-axes and s E, s = 3^(1/q - 1/2) with q =
+// p/(p - 1) (its half-width is a q-norm, E's the 2-norm): o = (s - 1) a_max and k = s times E's
+// rate; kr = |w| rbound (the support point's speed about the centre).
+urSpinBound ur_spin_bound(const urGeom* ge, const double wb[3]) {
+  double w[3], wn = uru_norm3(wb);
+  uru_mulmat3tvec(w, ge->gmat, wb); // in the ellipsoid's frame
+  const double* a = ge->size;
+  double amax = fmax(a[0], fmax(a[1], a[2])), amin = fmin(a[0], fmin(a[1], a[2]));
+  double axes = fabs(w[0]) * fabs(a[1] - a[2]) + fabs(w[1]) * fabs(a[2] - a[0]) +
+                fabs(w[2]) * fabs(a[0] - a[1]);
+  urSpinBound b = {0, fmin(axes, wn * (amax - amin)), 0};
+  b.kr = b.k;
+  if (ge->degree > 2) {
+    double q = ge->degree / (ge->degree - 1), sc = pow(3, 1 / q - 0.5);
+    b.o = (sc - 1) * amax;
+    b.k *= sc;
+    b.kr = wn * ge->rbound;
+  }
+  return b;
+}
+
+
+// centre velocity of ellipsoid g
+static void geomvel(const urModel* m, const urData* d, int g, double v[3]) {
   const urGeom* ge = m->geom + g;
   ur_point_vel(m, d, ge->body, ge->pos, v);
-  *w = uru_norm3(d->cvel + 6 * ge->body) * ge->rbound;
 }
 
 
@@ -176,24 +202,35 @@ static int gap_holds(const urModel* m, double s, double c, double T) {
 }
 
 
+// does a gap s > 0 whose centres close at most at rate c stay open for T while spin widens the
+// two ellipsoids (their bounds summed in b: either form of ur_spin_bound)
+static int gap_spin_holds(const urModel* m, double s, double c, const urSpinBound* b, double T) {
+  return gap_holds(m, s - b->o, c + b->k, T) || gap_holds(m, s, c + b->kr, T);
+}
+
+
 // ellipsoids g1, g2 cannot touch within T (sep: a lower bound on their distance now; u: the
-// pair's last separating direction from g1 towards g2, or zero). The distance shrinks at most at
-// the relative speed of the centres plus the spin bounds w. Sharper, by separating axes: along
-// a fixed unit e the gap (c2 - c1).e - h1(e) - h2(e) (h the half-widths) bounds the distance
-// from below and shrinks at most at rate (v1 - v2).e + w1 + w2; tried along the centre line
-// with the bounding spheres (h = rbound, unchanged by spin) and with the ellipsoids, and along
-// u. Each closing rate comes with a_clear T^2/2 for the relative acceleration.
+// pair's last separating direction from g1 towards g2, or zero). The distance is the largest
+// gap (c2 - c1).e - h1(e) - h2(e) over unit e (h the half-widths): it shrinks at most at the
+// relative speed of the centres while spin widens the two (ur_spin_bound). Sharper, by separating
+// axes: along a fixed unit e that gap bounds the distance from below and its centres close at
+// most at rate (v1 - v2).e; tried along the centre line with the bounding spheres (h = rbound,
+// unchanged by spin) and with the ellipsoids, and along u. Each bound comes with a_clear T^2/2
+// for the relative acceleration.
 static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, const double u[3],
                        double T) {
-  double v1[3], v2[3], w1, w2, e[3];
+  double v1[3], v2[3], e[3];
   const double* c1 = d->gxpos + 3 * g1;
   const double* c2 = d->gxpos + 3 * g2;
   double dc[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]};
   double L = uru_norm3(dc);
-  geomspeed(m, d, g1, v1, &w1);
-  geomspeed(m, d, g2, v2, &w2);
+  geomvel(m, d, g1, v1);
+  geomvel(m, d, g2, v2);
+  urSpinBound b1 = ur_spin_bound(m->geom + g1, d->cvel + 6 * m->geom[g1].body);
+  urSpinBound b2 = ur_spin_bound(m->geom + g2, d->cvel + 6 * m->geom[g2].body);
+  urSpinBound b = {b1.o + b2.o, b1.k + b2.k, b1.kr + b2.kr};
   double dv[3] = {v1[0] - v2[0], v1[1] - v2[1], v1[2] - v2[2]};
-  if (gap_holds(m, sep, uru_norm3(dv) + w1 + w2, T)) {
+  if (gap_spin_holds(m, sep, uru_norm3(dv), &b, T)) {
     return 1;
   }
   if (L > 0) {
@@ -202,8 +239,8 @@ static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, 
     e[2] = dc[2] / L;
     double ce = uru_dot3(dv, e);
     if (gap_holds(m, L - m->geom[g1].rbound - m->geom[g2].rbound, ce, T) ||
-        gap_holds(m, L - ur_geom_halfwidth(m, d, g1, e) - ur_geom_halfwidth(m, d, g2, e),
-                  ce + w1 + w2, T)) {
+        gap_spin_holds(m, L - ur_geom_halfwidth(m, d, g1, e) - ur_geom_halfwidth(m, d, g2, e), ce,
+                       &b, T)) {
       return 1;
     }
   }
@@ -211,7 +248,7 @@ static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, 
     return 0;
   }
   double s = uru_dot3(dc, u) - ur_geom_halfwidth(m, d, g1, u) - ur_geom_halfwidth(m, d, g2, u);
-  return gap_holds(m, s, uru_dot3(dv, u) + w1 + w2, T);
+  return gap_spin_holds(m, s, uru_dot3(dv, u), &b, T);
 }
 
 

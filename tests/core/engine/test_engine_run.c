@@ -1,7 +1,7 @@
 /* test_engine_run.c: runs on a drone-on-human scene: thread safety (two threads give results
  * bitwise identical to sequential runs), failure reporting (non-finite and exploding states),
  * stop requests, free-flight jump, history sampling, builder errors and name look-up; the end
- * of a run with t_clear, on two balls. */
+ * of a run with t_clear, on two balls, and the spin bound its proof uses. */
 #include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
@@ -11,7 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
+#include "uasimpact/contact.h"
 #include "uasimpact/engine.h"
+#include "../../../src/core/engine/engine_internal.h"
 #include "test_engine_scene.h"
 
 #define ROWS 2000
@@ -375,13 +377,97 @@ static void test_clear_sliding_past(void** state) {
 }
 
 
+//---------------------------------- the spin bound ------------------------------------------------
+
+// rotation matrix of angle t about unit axis a (Rodrigues)
+static void rotm(double R[9], const double a[3], double t) {
+  double c = cos(t), s = sin(t);
+  for (int i = 0; i < 3; i++) {
+    for (int j = 0; j < 3; j++) R[3 * i + j] = (1 - c) * a[i] * a[j] + (i == j ? c : 0);
+  }
+  R[1] -= s * a[2], R[2] += s * a[1], R[3] += s * a[2];
+  R[5] -= s * a[0], R[6] -= s * a[1], R[7] += s * a[0];
+}
+
+static double urand(double lo, double hi) {
+  return lo + (hi - lo) * (rand() / (RAND_MAX + 1.0));
+}
+
+static void unit(double v[3]) {
+  do {
+    for (int k = 0; k < 3; k++) v[k] = urand(-1, 1);
+  } while (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 1 || v[0] * v[0] + v[1] * v[1] < 1e-6);
+  double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (int k = 0; k < 3; k++) v[k] /= n;
+}
+
+// half-width along world u of an ellipsoid (semi-axes a, degree p) whose frame is R
+static double hwidth(const double R[9], const double a[3], double p, const double u[3]) {
+  double w[3];
+  for (int k = 0; k < 3; k++) w[k] = a[k] * (R[k] * u[0] + R[3 + k] * u[1] + R[6 + k] * u[2]);
+  return p > 2 ? ur_halfwidth_local(w, p) : sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+}
+
+// a body turning at a constant angular velocity (its own frame): the half-width of its ellipsoid
+// along a fixed direction never grows by more than ur_spin_bound says (o + k t, and kr t), over
+// random shapes (ellipsoids, superellipsoids up to degree 8), poses, spins and directions. The
+// bound is close: some case comes within 10 % of k t. Replacing a_max - a_min by less (or
+// dropping the superellipsoid's offset o) makes this fail.
+static void test_spin_bound(void** state) {
+  srand(36);
+  double worst = 0, close = 0;
+  static const double degs[] = {2, 2, 2.0002, 2.059, 3, 8};
+  for (int n = 0; n < 20000; n++) {
+    urGeom ge;
+    memset(&ge, 0, sizeof ge);
+    ge.gmat[0] = ge.gmat[4] = ge.gmat[8] = 1;
+    for (int k = 0; k < 3; k++) ge.size[k] = urand(0.01, 0.4);
+    if (n % 4 == 0) ge.size[1] = ge.size[0]; /* round in plan */
+    ge.degree = degs[n % 6];
+    ge.rbound = ur_bound_radius(ge.size, ge.degree);
+    double ax[3], R0[9], u[3], w[3], wa[3];
+    unit(ax);
+    rotm(R0, ax, urand(0, M_PI));
+    unit(u);
+    unit(wa);
+    double wn = urand(0.1, 60);
+    for (int k = 0; k < 3; k++) w[k] = wn * wa[k];
+    urSpinBound b = ur_spin_bound(&ge, w);
+    double h0 = hwidth(R0, ge.size, ge.degree, u);
+    for (int i = 1; i <= 20; i++) {
+      double t = 0.001 * i, Rt[9], R[9];
+      rotm(Rt, wa, wn * t);
+      for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++) {
+          R[3 * r + c] = R0[3 * r] * Rt[c] + R0[3 * r + 1] * Rt[3 + c] + R0[3 * r + 2] * Rt[6 + c];
+        }
+      }
+      double grow = hwidth(R, ge.size, ge.degree, u) - h0;
+      double bound = fmin(b.o + b.k * t, b.kr * t);
+      assert_true(grow <= bound + 1e-12);
+      if (bound > 0) worst = fmax(worst, grow / bound);
+      if (ge.degree == 2 && i == 1 && b.k > 0) close = fmax(close, grow / (b.k * t));
+    }
+  }
+  print_message("spin bound: largest growth / bound %.3f; ellipsoids over 1 ms up to %.3f of k t\n",
+                worst, close);
+  assert_true(close > 0.9);
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_threads_bitwise),       cmocka_unit_test(test_symmetric_impact),
-      cmocka_unit_test(test_nonfinite_fails),       cmocka_unit_test(test_explosion_fails),
-      cmocka_unit_test(test_stop_request),          cmocka_unit_test(test_jump),
-      cmocka_unit_test(test_history_and_names),     cmocka_unit_test(test_clear_ends_early),
-      cmocka_unit_test(test_clear_keeps_recontact), cmocka_unit_test(test_clear_sliding_past),
+      cmocka_unit_test(test_threads_bitwise),
+      cmocka_unit_test(test_symmetric_impact),
+      cmocka_unit_test(test_nonfinite_fails),
+      cmocka_unit_test(test_explosion_fails),
+      cmocka_unit_test(test_stop_request),
+      cmocka_unit_test(test_jump),
+      cmocka_unit_test(test_history_and_names),
+      cmocka_unit_test(test_clear_ends_early),
+      cmocka_unit_test(test_clear_keeps_recontact),
+      cmocka_unit_test(test_clear_sliding_past),
+      cmocka_unit_test(test_spin_bound),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
