@@ -253,7 +253,10 @@ static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, 
 
 
 // is contact candidate k (ur_cand_at) across the projectile tree clear for T (1 also for
-// candidates within a tree or with the ground)
+// candidates within a tree or with the ground). A membrane airbag's target is never proved
+// clear: its fabric is not the bag's declared ellipsoid (the inflated bag hangs below it and
+// deforms), and its depth is a placeholder while the bag rides rigidly (engine_membrane.c), so
+// such a run ends by t_quiet alone.
 static int item_clear(const urModel* m, urData* d, int k, double T) {
   int tree = d->proj;
   urCand c;
@@ -263,6 +266,9 @@ static int item_clear(const urModel* m, urData* d, int k, double T) {
   }
   if (c.bag < 0) {
     return stays_clear(m, d, c.g1, c.g2, -d->pdepth[c.idx], d->pair[c.idx].u, T);
+  }
+  if (m->bag[c.bag].mem) {
+    return 0;
   }
   const urBagData* bd = d->bag + c.bag;
   return stays_clear(m, d, c.g1, c.g2, -bd->depth[c.idx], bd->u[c.idx], T);
