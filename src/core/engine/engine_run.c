@@ -168,8 +168,9 @@ static void checkstate(const urModel* m, urData* d) {
 // A^2 u across u is at most (a_max - a_min) |A u|: the variance of a^2 under the weights u_l^2 is
 // at most (a_max - a_min)^2 times their mean, by the Bhatia-Davis bound). A superellipsoid of
 // degree p lies between the ellipsoid E of its semi-axes and s E, s = 3^(1/q - 1/2) with q =
-// p/(p - 1) (its half-width is a q-norm, E's the 2-norm): o = (s - 1) a_max and k = s times E's
-// rate; kr = |w| rbound (the support point's speed about the centre).
+// p/(p - 1) (its half-width is a q-norm, E's the 2-norm), so it grows by at most s h_E(t) -
+// h_E(0) <= (s - 1) a_max + E's growth: o = (s - 1) a_max and k = s times E's rate (more than
+// enough); kr = |w| rbound (the support point's speed about the centre).
 urSpinBound ur_spin_bound(const urGeom* ge, const double wb[3]) {
   double w[3], wn = uru_norm3(wb);
   uru_mulmat3tvec(w, ge->gmat, wb); // in the ellipsoid's frame
