@@ -129,6 +129,18 @@ $(BUILD)/tests/%: tests/%.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(TEST_LIBS) $(APP_LIBS) $(CORE_LIBS)
 
+# bench_step times the stages of a step alone by the step's own stage timer: engine_run.c built
+# with urSTEP_PROF, linked before the library (whose engine_run.o, without the timer, is then not
+# linked); the library itself has no timer
+STEP_PROF_OBJ = $(BUILD)/tests/engine_run_prof.o
+$(STEP_PROF_OBJ): src/core/engine/engine_run.c $(FLAGS) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -DurSTEP_PROF -c $< -o $@
+$(BUILD)/tests/bench_step: tests/bench_step.c $(STEP_PROF_OBJ) $(APPLIB) $(LIB) $(FLAGS) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(STEP_PROF_OBJ) $(APPLIB) $(LIB) $(LDFLAGS) $(TEST_LIBS) $(APP_LIBS) \
+	  $(CORE_LIBS)
+
 # the MPI build: only the distributor (src/app/scale/scale_mpi.c) is compiled by mpicc with URA_MPI;
 # its object comes before the application's archive, whose MPI-less stub is then not linked
 MPICC ?= mpicc

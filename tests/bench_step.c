@@ -6,6 +6,8 @@
  * over NREP passes (median), and its time per step given as a multiple of the bound (issue 36's
  * targets: 8 alone, 5 in lanes). NREP further passes of each, timed stage by stage, give the
  * split (each stage's least time over the passes, as shares of the median step).
+ * The stages of a step alone are timed by the step's own stage timer: this program links
+ * engine_run.c built with urSTEP_PROF (Makefile) before the library, whose step has no timer.
  * The timed runs are checked bitwise against one another (the last state and step count).
  *   bench_step [CASE]     (default B)
  * The floating-point operations of a step are not counted here (the processor's counters are not
@@ -20,6 +22,7 @@
 #include <gsl/gsl_statistics_double.h>
 
 #include "../src/app/ui/ui.h"
+#define urSTEP_PROF /* ur_step_prof: the step's stage timer, linked in by the Makefile */
 #include "../src/core/engine/engine_internal.h"
 #include "../src/core/impact/impact_internal.h"
 
@@ -41,7 +44,6 @@ static double median(double* x, int n) {
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
-#include <x86intrin.h>
 #define HAVE_FMA 1
 
 /* n rounds of 12 independent chains of 4-wide fused multiply-adds, each chain in a register of
@@ -74,17 +76,8 @@ __attribute__((target("avx2,fma"), noinline)) static double fma_kernel(long n, d
   _mm256_storeu_pd(r, s);
   return r[0] + r[1] + r[2] + r[3];
 }
-
-static unsigned long long ticks(void) {
-  return __rdtsc();
-}
 #else
 #define HAVE_FMA 0
-static unsigned long long ticks(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return (unsigned long long)t.tv_sec * 1000000000ull + (unsigned long long)t.tv_nsec;
-}
 #endif
 
 /* the best of NREP measures of the FMA kernel, GFLOP/s; 0 where there is no AVX2 FMA */
@@ -108,30 +101,17 @@ static double fma_peak(void) {
 
 //---------------------------------- stepping -------------------------------------------------------
 
-/* the stages of a step alone, timed by step_alone */
-enum {
-  A_KIN,
-  A_RKIN,
-  A_BROAD,
-  A_GRAV,
-  A_RESTR,
-  A_NARROW,
-  A_BAG,
-  A_ABA,
-  A_POST,
-  A_EULER,
-  A_N
-};
-static const char* const aname[A_N] = {"kinematics, velocities",
-                                       "restraint kinematics",
-                                       "broad phase",
-                                       "gravity compensation",
-                                       "restraint forces",
-                                       "narrow phase",
-                                       "airbags",
-                                       "articulated body alg.",
-                                       "joint loads, sensors",
-                                       "bookkeeping, update, end"};
+/* the stages of a step alone, as ur_step's stage timer (urSTEP_PROF) times them */
+static const char* const aname[urSTEP_NPROF] = {"kinematics, velocities",
+                                                "restraint kinematics",
+                                                "broad phase",
+                                                "gravity compensation",
+                                                "restraint forces",
+                                                "narrow phase",
+                                                "airbags",
+                                                "articulated body alg.",
+                                                "joint loads, sensors",
+                                                "bookkeeping, update, end"};
 static const char* const lname[urLANE_NPROF] = {
     "kinematics, velocities (vec)", "broad phase (vec)",
     "restraint kinematics (vec)",   "copy back: kinematics",
@@ -139,66 +119,20 @@ static const char* const lname[urLANE_NPROF] = {
     "articulated body alg. (vec)",  "joint loads, sensors, hist.",
     "update (vec), copy back",      "time, checks, end"};
 
-static void lap(unsigned long long* prof, int k, unsigned long long* t0) {
-  unsigned long long t = ticks();
-  prof[k] += t - *t0;
-  *t0 = t;
-}
-
-/* one semi-implicit Euler step of ur_step (engine_run.c: ur_forward_pre's stages, ur_forward_loads
-   stage by stage, the ABA, ur_forward_post, ur_step_euler) with its stages timed into prof */
-static void step_alone(const urModel* m, urData* d, unsigned long long* prof) {
-  if (ur_step_begin(m, d) < 0) return;
-  unsigned long long t0 = ticks();
-  ur_kinematics_bodies(m, d);
-  ur_kinematics_gpos(m, d);
-  memset(d->gmat_ok, 0, (size_t)m->ngeom);
-  ur_velocities(m, d);
-  lap(prof, A_KIN, &t0);
-  ur_restraints_kin(m, d);
-  lap(prof, A_RKIN, &t0);
-  ur_contacts_broad(m, d);
-  lap(prof, A_BROAD, &t0);
-  /* ur_forward_loads, stage by stage */
-  memset(d->fext, 0, 6 * (size_t)m->nbody * sizeof(double));
-  memset(d->qfrc, 0, (size_t)m->nv * sizeof(double));
-  for (int j = 0; j < m->ngrav; j++) {
-    int i = m->grav[j];
-    const urBody* b = m->body + i;
-    double f[3];
-    for (int k = 0; k < 3; k++) f[k] = -(1 - b->gravity) * b->mass * m->opt.gravity[k];
-    ur_apply_force(m, d, i, f, d->xcom + 3 * i);
-  }
-  lap(prof, A_GRAV, &t0);
-  ur_restraints(m, d);
-  lap(prof, A_RESTR, &t0);
-  ur_contacts_narrow(m, d);
-  lap(prof, A_NARROW, &t0);
-  ur_airbags(m, d);
-  lap(prof, A_BAG, &t0);
-  ur_aba(m, d);
-  lap(prof, A_ABA, &t0);
-  int st = ur_forward_post(m, d);
-  lap(prof, A_POST, &t0);
-  if (st >= 0) ur_step_euler(m, d);
-  lap(prof, A_EULER, &t0);
-}
-
-/* the impact at (0, 0) alone; with prof, stage by stage (step_alone), else by ur_step as
-   ur_impact_run does. Returns the CPU seconds. */
+/* the impact at (0, 0) alone by ur_step, as ur_impact_run does; with prof, its stages timed into
+   prof by the step's own stage timer (this program links engine_run.c built with urSTEP_PROF).
+   Returns the CPU seconds. */
 static double run_alone(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c,
                         unsigned long long* prof) {
   urImpactResult r;
   double texit, t0 = cpu();
   ur_impact_begin(s, w, c, 0, 0, &r, &texit);
+  ur_step_prof(prof);
   while (w->d->status == urSTAT_OK) {
-    if (prof) {
-      step_alone(s->m, w->d, prof);
-    } else {
-      ur_step(s->m, w->d);
-    }
+    ur_step(s->m, w->d);
     if (ur_impact_after_step(s, w, texit, &r)) break;
   }
+  ur_step_prof(NULL);
   return cpu() - t0;
 }
 
@@ -296,21 +230,21 @@ int main(int argc, char** argv) {
 
   /* the split: NREP more passes of each, timed by stage; each stage's least time over the
      passes (a pass the scheduler interrupts inflates the stage it lands in) */
-  unsigned long long pa[A_N], pl[urLANE_NPROF];
-  for (int k = 0; k < A_N; k++) pa[k] = ~0ull;
+  unsigned long long pa[urSTEP_NPROF], pl[urLANE_NPROF];
+  for (int k = 0; k < urSTEP_NPROF; k++) pa[k] = ~0ull;
   for (int k = 0; k < urLANE_NPROF; k++) pl[k] = ~0ull;
   urData* ref = ur_data_new(s->m);
   if (!ref) return 1;
   ur_data_copy(s->m, ref, w[urNLANE].d);
   for (int r = 0; r < NREP; r++) {
-    unsigned long long qa[A_N] = {0}, ql[urLANE_NPROF] = {0};
+    unsigned long long qa[urSTEP_NPROF] = {0}, ql[urLANE_NPROF] = {0};
     run_alone(s, &w[urNLANE], &cond, qa);
     ok &= same_run(s->m, ref, w[urNLANE].d);
     L.prof = ql;
     run_lanes(s, w, &L, &cond);
     L.prof = NULL;
     ok &= same_run(s->m, ref, w[0].d);
-    for (int k = 0; k < A_N; k++) pa[k] = qa[k] < pa[k] ? qa[k] : pa[k];
+    for (int k = 0; k < urSTEP_NPROF; k++) pa[k] = qa[k] < pa[k] ? qa[k] : pa[k];
     for (int k = 0; k < urLANE_NPROF; k++) pl[k] = ql[k] < pl[k] ? ql[k] : pl[k];
   }
 
@@ -321,7 +255,7 @@ int main(int argc, char** argv) {
   printf("\n    in lanes: %6.3f us a step", 1e6 * ul);
   if (bound > 0) printf(" = %4.1f x the bound (target 5)", ul / bound);
   printf("\n    alone, by stage:\n");
-  split(aname, pa, A_N, 1e6 * ua);
+  split(aname, pa, urSTEP_NPROF, 1e6 * ua);
   printf("    in lanes, by stage (per impact):\n");
   split(lname, pl, urLANE_NPROF, 1e6 * ul);
   printf("  runs alone, in lanes and stage-timed: %s\n", ok ? "bitwise the same" : "DIFFER");

@@ -148,6 +148,52 @@ void ur_lanes_free(urLanes* L);
 // one step of each of the runs d[0..n-1] (urNLANE at a time), bitwise as ur_step on each
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
+// How fast spin can widen ellipsoid ge along a fixed unit direction while its body turns at the
+// constant angular velocity wb (rad/s, in the body's frame): its half-width grows within time t
+// by at most o + k t, and by at most kr t (m, m/s; engine_run.c says why). The end-of-run proof
+// (t_clear) uses it: a sphere, or a flat round ellipsoid that yaws, hardly widens.
+typedef struct {
+  double o, k, kr;
+} urSpinBound;
+urSpinBound ur_spin_bound(const urGeom* ge, const double wb[3]);
+
+#if !(defined(__x86_64__) && defined(__GNUC__))
+#include <time.h>
+#endif
+// a tick of the stage timers: the processor's time-stamp counter on x86-64, nanoseconds elsewhere
+static inline unsigned long long uru_ticks(void) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  return __builtin_ia32_rdtsc();
+#else
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return (unsigned long long)t.tv_sec * 1000000000ull + (unsigned long long)t.tv_nsec;
+#endif
+}
+
+// the stages of a step alone (ur_step) that its stage timer times
+enum {
+  urSTEP_KIN,    // poses, ellipsoid centres, velocities
+  urSTEP_RKIN,   // restraint kinematics
+  urSTEP_BROAD,  // broad phase
+  urSTEP_GRAV,   // forces cleared, gravity compensation
+  urSTEP_RESTR,  // restraint forces
+  urSTEP_NARROW, // narrow phase and contact forces
+  urSTEP_BAG,    // airbags
+  urSTEP_ABA,    // articulated-body algorithm
+  urSTEP_POST,   // joint loads, sensors, finiteness
+  urSTEP_EULER,  // bookkeeping (histories, commits), update, time, checks, end of run
+  urSTEP_NPROF
+};
+
+#ifdef urSTEP_PROF
+// The stage timer of a step alone, compiled in only where engine_run.c is built with
+// urSTEP_PROF (make bench: tests/bench_step links such an object before the library): NULL, or
+// urSTEP_NPROF tick counters to which each ur_step of this thread adds its stages' times.
+// The library is built without it: its step has no timer and pays nothing for one.
+void ur_step_prof(unsigned long long* prof);
+#endif
+
 /* joints that break (engine_fracture.c) */
 void ur_fracture_compile(urModel* m);                       /* reserve the free blocks */
 void ur_fracture_qpos0(const urModel* m, double* qpos0);    /* their reference coordinates */

@@ -454,27 +454,10 @@ static void scatter_state(const urModel* m, urLanes* L, urData* const* d, int n,
 
 //---------------------------------- lock-step -----------------------------------------------------
 
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <x86intrin.h>
-#else
-#include <time.h>
-#endif
-
-// a tick of the stage timer: the time-stamp counter, or nanoseconds where there is none
-static inline unsigned long long ticks(void) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  return __rdtsc();
-#else
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return (unsigned long long)t.tv_sec * 1000000000ull + (unsigned long long)t.tv_nsec;
-#endif
-}
-
 // the time since *t0 to stage k of L->prof (when it is set), and *t0 to now
 static inline void lap(urLanes* L, int k, unsigned long long* t0) {
   if (L->prof) {
-    unsigned long long t = ticks();
+    unsigned long long t = uru_ticks();
     L->prof[k] += t - *t0;
     *t0 = t;
   }
@@ -513,7 +496,7 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
 
   // ur_forward_pre's stages: poses, velocities, broad phase and restraint kinematics for all
   // lanes at once, the applied forces lane by lane
-  unsigned long long t0 = L->prof ? ticks() : 0;
+  unsigned long long t0 = L->prof ? uru_ticks() : 0;
   gather_state(m, L, run, k);
   urv_kinematics_bodies(m, L);
   urv_kinematics_gpos(m, L);

@@ -6,6 +6,34 @@
 #include <string.h>
 #include "engine_internal.h"
 
+//---------------------------------- stage timer ---------------------------------------------------
+
+// The stage timer of a step alone (engine_internal.h): only in an object built with urSTEP_PROF
+// (make bench); otherwise urLAP and urLAP_START are nothing. Per thread: one stepping thread's
+// counters and the tick at which its current stage began.
+#ifdef urSTEP_PROF
+static _Thread_local unsigned long long* step_prof;
+static _Thread_local unsigned long long step_t0;
+
+void ur_step_prof(unsigned long long* prof) {
+  step_prof = prof;
+}
+
+// the time since the stage began to stage k, and the next stage begins now
+static void step_lap(int k) {
+  if (step_prof) {
+    unsigned long long t = uru_ticks();
+    step_prof[k] += t - step_t0;
+    step_t0 = t;
+  }
+}
+#define urLAP(k)      step_lap(k)
+#define urLAP_START() (step_t0 = step_prof ? uru_ticks() : 0)
+#else
+#define urLAP(k)      ((void)0)
+#define urLAP_START() ((void)0)
+#endif
+
 //---------------------------------- forward -------------------------------------------------------
 
 // the forward pipeline up to the accelerations: positions, velocities, the restraint kinematics
@@ -18,8 +46,11 @@ void ur_forward_pre(const urModel* m, urData* d) {
   ur_kinematics_gpos(m, d);
   memset(d->gmat_ok, 0, (size_t)m->ngeom);
   ur_velocities(m, d);
+  urLAP(urSTEP_KIN);
   ur_restraints_kin(m, d);
+  urLAP(urSTEP_RKIN);
   ur_contacts_broad(m, d);
+  urLAP(urSTEP_BROAD);
   ur_forward_loads(m, d);
 }
 
@@ -38,9 +69,13 @@ void ur_forward_loads(const urModel* m, urData* d) {
     }
     ur_apply_force(m, d, i, f, d->xcom + 3 * i);
   }
+  urLAP(urSTEP_GRAV);
   ur_restraints(m, d);
+  urLAP(urSTEP_RESTR);
   ur_contacts_narrow(m, d);
+  urLAP(urSTEP_NARROW);
   ur_airbags(m, d);
+  urLAP(urSTEP_BAG);
 }
 
 
@@ -68,7 +103,10 @@ int ur_forward(const urModel* m, urData* d) {
   }
   ur_forward_pre(m, d);
   ur_aba(m, d);
-  return ur_forward_post(m, d);
+  urLAP(urSTEP_ABA);
+  int st = ur_forward_post(m, d);
+  urLAP(urSTEP_POST);
+  return st;
 }
 
 //---------------------------------- integration ---------------------------------------------------
@@ -123,12 +161,39 @@ static void checkstate(const urModel* m, urData* d) {
 }
 
 
-// centre velocity of ellipsoid g and the speed bound of its surface about the centre (spin
-// times the largest semi-axis)
-static void geomspeed(const urModel* m, const urData* d, int g, double v[3], double* w) {
+// how fast spin can widen an ellipsoid (engine_internal.h). For an ellipsoid (semi-axes a_l, in
+// a frame of its own) o = 0 and k = kr: h = |A u| and dh/dt = -w.(u x A^2 u) / |A u|, whose
+// parts about each axis are at most |w_l| |a_m - a_n| (l, m, n the three axes: |u_m u_n| /
+// |(a_m u_m, a_n u_n)| <= 1 / (a_m + a_n)), and in all at most |w| (a_max - a_min) (the part of
+// A^2 u across u is at most (a_max - a_min) |A u|: the variance of a^2 under the weights u_l^2 is
+// at most (a_max - a_min)^2 times their mean, by the Bhatia-Davis bound). A superellipsoid of
+// degree p lies between the ellipsoid E of its semi-axes and s E, s = 3^(1/q - 1/2) with q =
+// p/(p - 1) (its half-width is a q-norm, E's the 2-norm), so it grows by at most s h_E(t) -
+// h_E(0) <= (s - 1) a_max + E's growth: o = (s - 1) a_max and k = s times E's rate (more than
+// enough); kr = |w| rbound (the support point's speed about the centre).
+urSpinBound ur_spin_bound(const urGeom* ge, const double wb[3]) {
+  double w[3], wn = uru_norm3(wb);
+  uru_mulmat3tvec(w, ge->gmat, wb); // in the ellipsoid's frame
+  const double* a = ge->size;
+  double amax = fmax(a[0], fmax(a[1], a[2])), amin = fmin(a[0], fmin(a[1], a[2]));
+  double axes = fabs(w[0]) * fabs(a[1] - a[2]) + fabs(w[1]) * fabs(a[2] - a[0]) +
+                fabs(w[2]) * fabs(a[0] - a[1]);
+  urSpinBound b = {0, fmin(axes, wn * (amax - amin)), 0};
+  b.kr = b.k;
+  if (ge->degree > 2) {
+    double q = ge->degree / (ge->degree - 1), sc = pow(3, 1 / q - 0.5);
+    b.o = (sc - 1) * amax;
+    b.k *= sc;
+    b.kr = wn * ge->rbound;
+  }
+  return b;
+}
+
+
+// centre velocity of ellipsoid g
+static void geomvel(const urModel* m, const urData* d, int g, double v[3]) {
   const urGeom* ge = m->geom + g;
   ur_point_vel(m, d, ge->body, ge->pos, v);
-  *w = uru_norm3(d->cvel + 6 * ge->body) * ge->rbound;
 }
 
 
@@ -138,24 +203,35 @@ static int gap_holds(const urModel* m, double s, double c, double T) {
 }
 
 
+// does a gap s > 0 whose centres close at most at rate c stay open for T while spin widens the
+// two ellipsoids (their bounds summed in b: either form of ur_spin_bound)
+static int gap_spin_holds(const urModel* m, double s, double c, const urSpinBound* b, double T) {
+  return gap_holds(m, s - b->o, c + b->k, T) || gap_holds(m, s, c + b->kr, T);
+}
+
+
 // ellipsoids g1, g2 cannot touch within T (sep: a lower bound on their distance now; u: the
-// pair's last separating direction from g1 towards g2, or zero). The distance shrinks at most at
-// the relative speed of the centres plus the spin bounds w. Sharper, by separating axes: along
-// a fixed unit e the gap (c2 - c1).e - h1(e) - h2(e) (h the half-widths) bounds the distance
-// from below and shrinks at most at rate (v1 - v2).e + w1 + w2; tried along the centre line
-// with the bounding spheres (h = rbound, unchanged by spin) and with the ellipsoids, and along
-// u. Each closing rate comes with a_clear T^2/2 for the relative acceleration.
+// pair's last separating direction from g1 towards g2, or zero). The distance is the largest
+// gap (c2 - c1).e - h1(e) - h2(e) over unit e (h the half-widths): it shrinks at most at the
+// relative speed of the centres while spin widens the two (ur_spin_bound). Sharper, by separating
+// axes: along a fixed unit e that gap bounds the distance from below and its centres close at
+// most at rate (v1 - v2).e; tried along the centre line with the bounding spheres (h = rbound,
+// unchanged by spin) and with the ellipsoids, and along u. Each bound comes with a_clear T^2/2
+// for the relative acceleration.
 static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, const double u[3],
                        double T) {
-  double v1[3], v2[3], w1, w2, e[3];
+  double v1[3], v2[3], e[3];
   const double* c1 = d->gxpos + 3 * g1;
   const double* c2 = d->gxpos + 3 * g2;
   double dc[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]};
   double L = uru_norm3(dc);
-  geomspeed(m, d, g1, v1, &w1);
-  geomspeed(m, d, g2, v2, &w2);
+  geomvel(m, d, g1, v1);
+  geomvel(m, d, g2, v2);
+  urSpinBound b1 = ur_spin_bound(m->geom + g1, d->cvel + 6 * m->geom[g1].body);
+  urSpinBound b2 = ur_spin_bound(m->geom + g2, d->cvel + 6 * m->geom[g2].body);
+  urSpinBound b = {b1.o + b2.o, b1.k + b2.k, b1.kr + b2.kr};
   double dv[3] = {v1[0] - v2[0], v1[1] - v2[1], v1[2] - v2[2]};
-  if (gap_holds(m, sep, uru_norm3(dv) + w1 + w2, T)) {
+  if (gap_spin_holds(m, sep, uru_norm3(dv), &b, T)) {
     return 1;
   }
   if (L > 0) {
@@ -164,8 +240,8 @@ static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, 
     e[2] = dc[2] / L;
     double ce = uru_dot3(dv, e);
     if (gap_holds(m, L - m->geom[g1].rbound - m->geom[g2].rbound, ce, T) ||
-        gap_holds(m, L - ur_geom_halfwidth(m, d, g1, e) - ur_geom_halfwidth(m, d, g2, e),
-                  ce + w1 + w2, T)) {
+        gap_spin_holds(m, L - ur_geom_halfwidth(m, d, g1, e) - ur_geom_halfwidth(m, d, g2, e), ce,
+                       &b, T)) {
       return 1;
     }
   }
@@ -173,12 +249,15 @@ static int stays_clear(const urModel* m, urData* d, int g1, int g2, double sep, 
     return 0;
   }
   double s = uru_dot3(dc, u) - ur_geom_halfwidth(m, d, g1, u) - ur_geom_halfwidth(m, d, g2, u);
-  return gap_holds(m, s, uru_dot3(dv, u) + w1 + w2, T);
+  return gap_spin_holds(m, s, uru_dot3(dv, u), &b, T);
 }
 
 
 // is contact candidate k (ur_cand_at) across the projectile tree clear for T (1 also for
-// candidates within a tree or with the ground)
+// candidates within a tree or with the ground). A membrane airbag's target is never proved
+// clear: its fabric is not the bag's declared ellipsoid (the inflated bag hangs below it and
+// deforms), and its depth is a placeholder while the bag rides rigidly (engine_membrane.c), so
+// such a run ends by t_quiet alone.
 static int item_clear(const urModel* m, urData* d, int k, double T) {
   int tree = d->proj;
   urCand c;
@@ -188,6 +267,9 @@ static int item_clear(const urModel* m, urData* d, int k, double T) {
   }
   if (c.bag < 0) {
     return stays_clear(m, d, c.g1, c.g2, -d->pdepth[c.idx], d->pair[c.idx].u, T);
+  }
+  if (m->bag[c.bag].mem) {
+    return 0;
   }
   const urBagData* bd = d->bag + c.bag;
   return stays_clear(m, d, c.g1, c.g2, -bd->depth[c.idx], bd->u[c.idx], T);
@@ -281,7 +363,9 @@ int ur_step_euler(const urModel* m, urData* d) {
     d->qvel[k] += h * d->qacc[k];
   }
   addpos(m, d->qpos, d->qpos, d->qvel, h);
-  return ur_step_end(m, d);
+  int st = ur_step_end(m, d);
+  urLAP(urSTEP_EULER);
+  return st;
 }
 
 
@@ -296,6 +380,7 @@ int ur_step(const urModel* m, urData* d) {
   if (ur_step_begin(m, d) < 0) {
     return d->status;
   }
+  urLAP_START();
 
   // forward at the current state
   if (ur_forward(m, d) < 0) {
