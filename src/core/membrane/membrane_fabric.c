@@ -338,14 +338,52 @@ AI urm4 gdual4(const lawk* k, const urm4 E[3], urm4 u1, urm4 u2) {
          wstar4(k, u1 * u1, u2 * u2, u1 * u2);
 }
 
-/* wrinkled() over the 4 lanes of mask act, for the path it takes on nearly every call between
-   sub-steps: a warm start (uw: lane l's u at uw[2 l]) whose first Newton step is within 1 % of
-   |u|, then full Newton steps that raise G, until a step below 1e-6 of |u| (or 40 steps, or a
-   Hessian that is not negative definite). Every lane runs the scalar code's operations in its
-   order (masked as it finishes), so its bits are wrinkled()'s. A lane off that path (no warm
-   start, the candidates wanted, a step to backtrack) is left to the scalar wrinkled(): its bit
-   in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the lanes
-   not done here); uw updated for the lanes done. */
+/* uniaxial() over 4 lanes along (c, sn): G in the return, sigma in *sig (both 0 where the strain
+   along the direction is not positive), each lane the scalar code's operations in its order */
+AI urm4 uniaxial4(const lawk* k, const urm4 E[3], urm4 c, urm4 sn, urm4* sig) {
+  urm4 lam = c * c * E[0] + sn * sn * E[1] + bc4(2) * c * sn * E[2];
+  urm4i pos = lam > bc4(0);
+  urm4 cs = fabs4(c * sn), c2 = c * c, s2 = sn * sn;
+  urm4 q = c2 * c2 * bc4(k->a11) + bc4(2) * c2 * s2 * bc4(k->a12) + s2 * s2 * bc4(k->a22);
+  urm4 sg = lam / (q + cs * cs / bc4(k->g0));
+  urm4 sk = (lam - cs * bc4(k->gl) + cs * bc4(k->g0) * bc4(k->gl) / bc4(k->gt)) /
+            (q + cs * cs / bc4(k->gt));
+  sg = sel4(sg * cs > bc4(k->g0 * k->gl), sk, sg);
+  urm4 g = sg * lam - wstar4(k, sg * c2, sg * s2, sg * c * sn);
+  *sig = sel4(pos, sg, bc4(0));
+  return sel4(pos, g, bc4(0));
+}
+
+/* candidates() over the 4 lanes of mask act: the same five directions in the same order, u and
+   G replaced lane by lane where one beats G */
+AI void candidates4(const lawk* k, const urm4 E[3], urm4i act, urm4* u1, urm4* u2, urm4* G) {
+  urm4 hd = bc4(0.5) * (E[0] - E[1]), rr = sqrt4(hd * hd + E[2] * E[2]);
+  urm4 c2 = sel4(rr > bc4(0), hd / rr, bc4(1));
+  urm4 s2 = bc4(0.5) * (bc4(1) - c2);
+  urm4 cp = sqrt4(bc4(0.5) * (bc4(1) + c2));
+  urm4 sp = copysign4(sqrt4(sel4(s2 > bc4(0), s2, bc4(0))), E[2]);
+  const double h2 = 0.70710678118654752;
+  urm4 cc[5] = {cp, bc4(1), bc4(0), bc4(h2), bc4(h2)};
+  urm4 ss[5] = {sp, bc4(0), bc4(1), bc4(h2), bc4(-h2)};
+  for (int j = 0; j < 5; j++) {
+    urm4 sig, g = uniaxial4(k, E, cc[j], ss[j], &sig);
+    urm4i up = act & (g > *G);
+    urm4 rs = sqrt4(sig);
+    *G = sel4(up, g, *G);
+    *u1 = sel4(up, rs * cc[j], *u1);
+    *u2 = sel4(up, rs * ss[j], *u2);
+  }
+}
+
+/* wrinkled() over the 4 lanes of mask act, for the paths it takes on nearly every call between
+   sub-steps: a warm start (uw: lane l's u at uw[2 l]); where its first Newton step is not within
+   1 % of |u| the five candidates (candidates4) tried against it, Newton restarted from the best
+   one where it beats the warm start; then full Newton steps that raise G, until a step below
+   1e-6 of |u| (or 40 steps, or a Hessian that is not negative definite). Every lane runs the
+   scalar code's operations in its order (masked as it finishes), so its bits are wrinkled()'s.
+   A lane off that path (no warm start, a step to backtrack) is left to the scalar wrinkled():
+   its bit in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the
+   lanes not done here); uw updated for the lanes done. */
 AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* wr, double* uw) {
   urm4 E[3] = {e[0], e[1], bc4(0.5) * e[2]};
   urm4 u1 = {uw[0], uw[2], uw[4], uw[6]}, u2 = {uw[1], uw[3], uw[5], uw[7]};
@@ -370,27 +408,35 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
     urm4 det = M11 * M22 - M12 * M12;
     urm4 d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
     urm4 dd = d1 * d1 + d2 * d2, uu = u1 * u1 + u2 * u2;
-    urm4i pd = det > bc4(0);
+    urm4i pd = det > bc4(0), step = live; /* the lanes that take this iteration's step */
     if (it == 0) {
-      // the warm start kept alone only when Newton stays near it; else the scalar code
-      urm4i near = pd & (dd <= bc4(1e-4) * uu);
-      fb |= live & ~near;
-      live &= near;
+      // the warm start kept alone only when Newton stays near it; else the candidates tried
+      // against it, Newton restarted (the next iteration) where one beats it
+      urm4i far = live & ~(pd & (dd <= bc4(1e-4) * uu));
+      if (any4(far)) {
+        urm4 G0 = G;
+        candidates4(k, E, far, &u1, &u2, &G);
+        step &= ~(far & (G > G0));
+      }
     }
-    live &= pd; /* not concave even shifted: the scalar code stops there */
-    urm4i conv = live & (dd <= bc4(1e-12) * uu);
+    urm4i stop = step & ~pd; /* not concave even shifted: the scalar code stops there */
+    live &= ~stop;
+    step &= pd;
+    urm4i conv = step & (dd <= bc4(1e-12) * uu);
     u1 = sel4(conv, u1 + d1, u1);
     u2 = sel4(conv, u2 + d2, u2);
     live &= ~conv;
+    step &= ~conv;
     // the full step (t = 1) taken when G does not fall beyond rounding; else the scalar code
     urm4 v1 = u1 + d1, v2 = u2 + d2;
     urm4 Gn = gdual4(k, E, v1, v2), tol = bc4(1e-13) * fabs4(G);
     urm4i up = Gn >= G - tol;
-    fb |= live & ~up;
-    live &= up;
-    u1 = sel4(live, v1, u1);
-    u2 = sel4(live, v2, u2);
-    G = sel4(live, Gn, G);
+    fb |= step & ~up;
+    live &= ~(step & ~up);
+    step &= up;
+    u1 = sel4(step, v1, u1);
+    u2 = sel4(step, v2, u2);
+    G = sel4(step, Gn, G);
   }
   urm4i done = act & ~fb;
   for (int l = 0; l < 4; l++) {
