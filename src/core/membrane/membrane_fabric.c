@@ -270,6 +270,10 @@ typedef double urm4u __attribute__((vector_size(32), aligned(8))); /* unaligned 
 
 #define AI static inline __attribute__((always_inline))
 
+/* blocks per chunk of the triangle pass: its deformation gradients and strains (9 x 4 doubles a
+   block) stay in the first-level cache between the chunk's three loops */
+#define urmCHUNK 8
+
 /* a where the mask is set, else b */
 AI urm4 sel4(urm4i mask, urm4 a, urm4 b) {
   return (urm4)(((urm4i)a & mask) | ((urm4i)b & ~mask));
@@ -493,6 +497,99 @@ AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], u
 }
 
 
+/* stress4() over the nb blocks of 4 lanes of a chunk (at most urmCHUNK, uw the chunk's first
+   block's warm starts), the wrinkled lanes packed: the taut law on every block, then the lanes
+   that need the wrinkled Newton gathered 4 at a time, across blocks, for wrinkled4() (a block's
+   taut lanes no longer ride along in its Newton), the stresses scattered back; the lanes left
+   over by the scalar stress(). Each lane's operations are stress4()'s, so its bits too. e: the
+   strains, in S the stresses and in w the energy densities. */
+// GCC 12's AVX2 clone of tri_pass warns that the gathered strains may be uninitialized (they
+// are read only from the chunk's nb blocks, all written): a false positive
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+AI void stress4_chunk(const urMemSpec* s, const lawk* k, int nb, const urm4 (*e)[3], urm4 (*S)[3],
+                      urm4* w, double* uw) {
+  short lst[4 * urmCHUNK];
+  int n = 0;
+  urm4 re = bc4(k->re), re1 = bc4(1 - k->re);
+  for (int q = 0; q < nb; q++) {
+    urm4 ws;
+    const urm4* eq = e[q];
+    urm4* Sq = S[q];
+    Sq[0] = bc4(k->c11) * eq[0] + bc4(k->c12) * eq[1];
+    Sq[1] = bc4(k->c12) * eq[0] + bc4(k->c22) * eq[1];
+    Sq[2] = shear4(k, eq[2], &ws);
+    w[q] = bc4(0.5) * (Sq[0] * eq[0] + Sq[1] * eq[1]) + ws;
+    urm4 m = bc4(0.5) * (Sq[0] + Sq[1]), h = bc4(0.5) * (Sq[0] - Sq[1]);
+    urm4i taut = (m >= bc4(0)) & (m * m >= h * h + Sq[2] * Sq[2]);
+    if (!any4(~taut)) {
+      continue;
+    }
+    urm4 me = bc4(0.5) * (eq[0] + eq[1]), he = bc4(0.5) * (eq[0] - eq[1]);
+    urm4i pos = me + sqrt4(he * he + bc4(0.25) * eq[2] * eq[2]) > bc4(0);
+    // slack lanes: no wrinkled stress, no energy (Sr = 0, wr = 0 as stress4's)
+    urm4i slack = ~taut & ~pos, wr = ~taut & pos;
+    for (int j = 0; j < 3; j++) {
+      Sq[j] = sel4(slack, re * Sq[j] + re1 * bc4(0), Sq[j]);
+    }
+    w[q] = sel4(slack, re * w[q] + re1 * bc4(0), w[q]);
+    for (int l = 0; l < 4; l++) {
+      if (wr[l]) {
+        lst[n++] = (short)(4 * q + l);
+      }
+    }
+  }
+  for (int g = 0; g < n; g += 4) {
+    int id[4];
+    for (int l = 0; l < 4; l++) {
+      id[l] = lst[g + l < n ? g + l : g];
+    }
+    urm4i act = {-1, g + 1 < n ? -1 : 0, g + 2 < n ? -1 : 0, g + 3 < n ? -1 : 0};
+    int q0 = id[0] >> 2, q1 = id[1] >> 2, q2 = id[2] >> 2, q3 = id[3] >> 2;
+    int c0 = id[0] & 3, c1 = id[1] & 3, c2 = id[2] & 3, c3 = id[3] & 3;
+    urm4 St[3], Sr[3], wr;
+#define urmGAT(j) ((urm4){e[q0][j][c0], e[q1][j][c1], e[q2][j][c2], e[q3][j][c3]})
+    const urm4 eg[3] = {urmGAT(0), urmGAT(1), urmGAT(2)};
+#undef urmGAT
+    for (int j = 0; j < 3; j++) {
+      St[j] = (urm4){S[q0][j][c0], S[q1][j][c1], S[q2][j][c2], S[q3][j][c3]};
+    }
+    urm4 wt = {w[q0][c0], w[q1][c1], w[q2][c2], w[q3][c3]};
+    double ug[8];
+    for (int l = 0; l < 4; l++) {
+      ug[2 * l] = uw[2 * id[l]];
+      ug[2 * l + 1] = uw[2 * id[l] + 1];
+    }
+    urm4i slow = wrinkled4(k, eg, act, Sr, &wr, ug);
+    for (int j = 0; j < 3; j++) {
+      St[j] = re * St[j] + re1 * Sr[j];
+    }
+    wt = re * wt + re1 * wr;
+    for (int l = 0; l < 4 && g + l < n; l++) {
+      int q = id[l] >> 2, c = id[l] & 3;
+      double* ul = uw + 2 * id[l];
+      if (slow[l]) {
+        // off wrinkled4's path: the lane by the scalar stress(), whole
+        double el[3] = {e[q][0][c], e[q][1][c], e[q][2][c]}, Sl[3], wl;
+        stress(s, k, el, Sl, &wl, ul);
+        S[q][0][c] = Sl[0];
+        S[q][1][c] = Sl[1];
+        S[q][2][c] = Sl[2];
+        w[q][c] = wl;
+        continue;
+      }
+      ul[0] = ug[2 * l];
+      ul[1] = ug[2 * l + 1];
+      for (int j = 0; j < 3; j++) {
+        S[q][j][c] = St[j][l];
+      }
+      w[q][c] = wt[l];
+    }
+  }
+}
+#pragma GCC diagnostic pop
+
+
 void urm_fabric_stress4(const urMemSpec* s, const double e[12], double S[12], double w[4]) {
   lawk k = law_constants(s);
   urm4 ev[3], Sv[3], wv;
@@ -573,9 +670,6 @@ enum {
   urmSCR = 9
 };
 
-/* blocks per chunk of the triangle pass: its deformation gradients and strains (9 x 4 doubles a
-   block) stay in the first-level cache between the chunk's three loops */
-#define urmCHUNK 8
 
 /* the positions (or velocities) of 4 nodes, coordinate by coordinate: each node's 3 doubles read
    as 4 (the fourth belongs to the next node or, for the last, to the next array of the state),
@@ -648,16 +742,16 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
     }
 
     // the law: the stress in place of the strain, the energy, the largest yarn strain
+    urm4 Sc[urmCHUNK][3], wc[urmCHUNK];
+    stress4_chunk(s, &lk, nb, (const urm4(*)[3])Ec, Sc, wc, uw + 8 * b0);
     for (int q = 0; q < nb; q++) {
       int b = b0 + q;
-      urm4 S[3], w;
-      stress4(s, &lk, Ec[q], S, &w, uw + 8 * b);
       em = sel4(Ec[q][0] > em, Ec[q][0], em);
       em = sel4(Ec[q][1] > em, Ec[q][1], em);
       for (int c = 0; c < 3; c++) {
-        Ec[q][c] = S[c];
+        Ec[q][c] = Sc[q][c];
       }
-      urm4 wa = w * *(const urm4u*)(mb->tk4 + 24 * b + 16);
+      urm4 wa = wc[q] * *(const urm4u*)(mb->tk4 + 24 * b + 16);
       int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4;
       for (int l = 0; l < nl; l++) {
         W += wa[l];
