@@ -314,10 +314,19 @@ AI int any4(urm4i m) {
   return (m[0] | m[1] | m[2] | m[3]) != 0;
 }
 
+/* 1 where every lane of the mask is set */
+AI int all4(urm4i m) {
+  return (m[0] & m[1] & m[2] & m[3]) != 0;
+}
+
 /* shear_inv() over 4 lanes */
 AI urm4 shear_inv4(const lawk* k, urm4 tau, urm4* c) {
   urm4 at = fabs4(tau), tl = bc4(k->g0 * k->gl);
   urm4i lin = at <= tl;
+  if (all4(lin)) { /* one side only: its division alone (the same bits) */
+    *c = bc4(1 / k->g0);
+    return tau / bc4(k->g0);
+  }
   *c = sel4(lin, bc4(1 / k->g0), bc4(1 / k->gt));
   urm4 rl = tau / bc4(k->g0);
   urm4 rk = copysign4(bc4(k->gl) + (at - tl) / bc4(k->gt), tau);
@@ -330,6 +339,9 @@ AI urm4 wstar4(const lawk* k, urm4 S11, urm4 S22, urm4 S12) {
       bc4(0.5) * (bc4(k->a11) * S11 * S11 + bc4(2 * k->a12) * S11 * S22 + bc4(k->a22) * S22 * S22);
   urm4 at = fabs4(S12), tl = bc4(k->g0 * k->gl);
   urm4i lin = at <= tl;
+  if (all4(lin)) { /* one side only: its division alone (the same bits) */
+    return w + bc4(0.5) * S12 * S12 / bc4(k->g0);
+  }
   urm4 wl = w + bc4(0.5) * S12 * S12 / bc4(k->g0);
   urm4 wk = w + bc4(0.5 * (k->g0 * k->gl) * k->gl) + bc4(k->gl) * (at - tl) +
             bc4(0.5) * (at - tl) * (at - tl) / bc4(k->gt);
