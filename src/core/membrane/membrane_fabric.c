@@ -701,12 +701,15 @@ AI void rows3(const double* x, const int* n, urm4 o[3]) {
 
 /* the fabric of every triangle, 4 at a time, in triangle order: the scratch (sc, urmSCR doubles
    of 4 lanes per block), the volume sum *vol and energy sum *wsum in triangle order (as one
-   triangle at a time would add them), the largest yarn strain in *emax. By chunks of blocks,
+   triangle at a time would add them), the largest yarn strain in *emax, each triangle's
+   bounding sphere in tb (SoA: centroids' x, y, z, then the farthest node's squared distance, nt
+   each: the face contact's culling, engine_membrane.c). By chunks of blocks,
    three loops each (geometry, law, forces): short enough for the next blocks' work to overlap
    the law's square root and division. */
 static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const double* v, double* sc,
-                               double* uw, double* vol, double* wsum, double* emax) {
+                               double* uw, double* tb, double* vol, double* wsum, double* emax) {
   const urMemSpec* s = &mb->spec;
+  int nt = mb->nt;
   lawk lk = law_constants(s);
   double V = 0, W = 0;
   urm4 em = bc4(0);
@@ -747,9 +750,24 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
       urm4 c1 = X[1][2] * X[2][0] - X[1][0] * X[2][2];
       urm4 c2 = X[1][0] * X[2][1] - X[1][1] * X[2][0];
       urm4 vt = X[0][0] * c0 + X[0][1] * c1 + X[0][2] * c2;
+      // the bounding sphere: centroid, squared distance of the farthest node
+      urm4 cg[3], r2 = bc4(0);
+      for (int c = 0; c < 3; c++) {
+        cg[c] = (X[0][c] + X[1][c] + X[2][c]) * bc4(1.0 / 3);
+      }
+      for (int j = 0; j < 3; j++) {
+        urm4 r0 = X[j][0] - cg[0], r1 = X[j][1] - cg[1], rz = X[j][2] - cg[2];
+        urm4 rr = r0 * r0 + r1 * r1 + rz * rz;
+        r2 = sel4(rr > r2, rr, r2);
+      }
       int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4; /* the padding's lanes left out */
       for (int l = 0; l < nl; l++) {
         V += vt[l];
+        int t = 4 * b + l;
+        tb[t] = cg[0][l];
+        tb[nt + t] = cg[1][l];
+        tb[2 * nt + t] = cg[2][l];
+        tb[3 * nt + t] = r2[l];
       }
     }
 
@@ -847,7 +865,7 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
 
   // the fabric of every triangle, the enclosed volume (divergence theorem, ur_mem_volume's sum)
   double V, wsum, emax;
-  tri_pass(mb, x, v, scr, scr + 36 * (size_t)mb->ntb, &V, &wsum, &emax);
+  tri_pass(mb, x, v, scr, scr + 36 * (size_t)mb->ntb, scr + 44 * (size_t)mb->ntb, &V, &wsum, &emax);
   V /= 6;
 
   // gas: the pressure of the remaining mass; each triangle's nodal forces, summed on every node
