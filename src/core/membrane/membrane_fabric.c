@@ -18,6 +18,10 @@
 
 //---------------------------------- law -----------------------------------------------------------
 
+// 4 doubles of a vector (GCC vector extensions: the law over 4 triangles below)
+#pragma GCC diagnostic ignored "-Wpsabi"
+typedef double urm4 __attribute__((vector_size(32)));
+
 /* the law's constants, computed once per force evaluation: the taut law's stiffnesses, its
    compliance (for the wrinkled state), the shear law (stiffnesses kept above 1e-6 of the tensile
    one so that its inverse exists) */
@@ -26,13 +30,31 @@ typedef struct {
   double a11, a12, a22; /* and back: E11 = a11 S11 + a12 S22, E22 = a12 S11 + a22 S22 */
   double g0, gt, gl;    /* shear stiffness before and after the lock, sine of the lock angle */
   double re;            /* share of the taut law kept (its compression) */
+  struct {              /* the vector law's constants over 4 lanes (as many values above) */
+    urm4 a11, a12, a22, g0, gt, gl, tl, ig0, igt, a12x2, wk0;
+  } v;
 } lawk;
 
 static lawk law_constants(const urMemSpec* s) {
   double nu21 = s->nu12 * s->e2t / s->e1t, q = 1 / (1 - s->nu12 * nu21);
   double gmin = 1e-6 * fmax(s->e1t, s->e2t);
-  return (lawk){q * s->e1t, q * s->e1t * nu21,  q * s->e2t,         1 / s->e1t,   -s->nu12 / s->e1t,
-                1 / s->e2t, fmax(s->g0t, gmin), fmax(s->gtt, gmin), sin(s->lock), s->re};
+  lawk k = {q * s->e1t, q * s->e1t * nu21,  q * s->e2t,         1 / s->e1t,   -s->nu12 / s->e1t,
+            1 / s->e2t, fmax(s->g0t, gmin), fmax(s->gtt, gmin), sin(s->lock), s->re};
+  double tl = k.g0 * k.gl;
+#define urmBC(x) ((urm4){x, x, x, x})
+  k.v.a11 = urmBC(k.a11);
+  k.v.a12 = urmBC(k.a12);
+  k.v.a22 = urmBC(k.a22);
+  k.v.g0 = urmBC(k.g0);
+  k.v.gt = urmBC(k.gt);
+  k.v.gl = urmBC(k.gl);
+  k.v.tl = urmBC(tl);
+  k.v.ig0 = urmBC(1 / k.g0);
+  k.v.igt = urmBC(1 / k.gt);
+  k.v.a12x2 = urmBC(2 * k.a12);
+  k.v.wk0 = urmBC(0.5 * tl * k.gl);
+#undef urmBC
+  return k;
 }
 
 
@@ -263,8 +285,6 @@ void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], 
 // without warm starts) goes through the scalar stress() itself. So each lane's bits are
 // stress()'s (test_membrane_fabric checks it; a change of the law goes into both). ISO C mode:
 // no contraction into FMA in either.
-#pragma GCC diagnostic ignored "-Wpsabi"
-typedef double urm4 __attribute__((vector_size(32)));
 typedef long long urm4i __attribute__((vector_size(32)));
 typedef double urm4u __attribute__((vector_size(32), aligned(8))); /* unaligned load, store */
 
@@ -321,30 +341,28 @@ AI int all4(urm4i m) {
 
 /* shear_inv() over 4 lanes */
 AI urm4 shear_inv4(const lawk* k, urm4 tau, urm4* c) {
-  urm4 at = fabs4(tau), tl = bc4(k->g0 * k->gl);
+  urm4 at = fabs4(tau), tl = k->v.tl;
   urm4i lin = at <= tl;
   if (all4(lin)) { /* one side only: its division alone (the same bits) */
-    *c = bc4(1 / k->g0);
-    return tau / bc4(k->g0);
+    *c = k->v.ig0;
+    return tau / k->v.g0;
   }
-  *c = sel4(lin, bc4(1 / k->g0), bc4(1 / k->gt));
-  urm4 rl = tau / bc4(k->g0);
-  urm4 rk = copysign4(bc4(k->gl) + (at - tl) / bc4(k->gt), tau);
+  *c = sel4(lin, k->v.ig0, k->v.igt);
+  urm4 rl = tau / k->v.g0;
+  urm4 rk = copysign4(k->v.gl + (at - tl) / k->v.gt, tau);
   return sel4(lin, rl, rk);
 }
 
 /* wstar() over 4 lanes */
 AI urm4 wstar4(const lawk* k, urm4 S11, urm4 S22, urm4 S12) {
-  urm4 w =
-      bc4(0.5) * (bc4(k->a11) * S11 * S11 + bc4(2 * k->a12) * S11 * S22 + bc4(k->a22) * S22 * S22);
-  urm4 at = fabs4(S12), tl = bc4(k->g0 * k->gl);
+  urm4 w = bc4(0.5) * (k->v.a11 * S11 * S11 + k->v.a12x2 * S11 * S22 + k->v.a22 * S22 * S22);
+  urm4 at = fabs4(S12), tl = k->v.tl;
   urm4i lin = at <= tl;
   if (all4(lin)) { /* one side only: its division alone (the same bits) */
-    return w + bc4(0.5) * S12 * S12 / bc4(k->g0);
+    return w + bc4(0.5) * S12 * S12 / k->v.g0;
   }
-  urm4 wl = w + bc4(0.5) * S12 * S12 / bc4(k->g0);
-  urm4 wk = w + bc4(0.5 * (k->g0 * k->gl) * k->gl) + bc4(k->gl) * (at - tl) +
-            bc4(0.5) * (at - tl) * (at - tl) / bc4(k->gt);
+  urm4 wl = w + bc4(0.5) * S12 * S12 / k->v.g0;
+  urm4 wk = w + k->v.wk0 + k->v.gl * (at - tl) + bc4(0.5) * (at - tl) * (at - tl) / k->v.gt;
   return sel4(lin, wl, wk);
 }
 
@@ -360,11 +378,10 @@ AI urm4 uniaxial4(const lawk* k, const urm4 E[3], urm4 c, urm4 sn, urm4* sig) {
   urm4 lam = c * c * E[0] + sn * sn * E[1] + bc4(2) * c * sn * E[2];
   urm4i pos = lam > bc4(0);
   urm4 cs = fabs4(c * sn), c2 = c * c, s2 = sn * sn;
-  urm4 q = c2 * c2 * bc4(k->a11) + bc4(2) * c2 * s2 * bc4(k->a12) + s2 * s2 * bc4(k->a22);
-  urm4 sg = lam / (q + cs * cs / bc4(k->g0));
-  urm4 sk = (lam - cs * bc4(k->gl) + cs * bc4(k->g0) * bc4(k->gl) / bc4(k->gt)) /
-            (q + cs * cs / bc4(k->gt));
-  sg = sel4(sg * cs > bc4(k->g0 * k->gl), sk, sg);
+  urm4 q = c2 * c2 * k->v.a11 + bc4(2) * c2 * s2 * k->v.a12 + s2 * s2 * k->v.a22;
+  urm4 sg = lam / (q + cs * cs / k->v.g0);
+  urm4 sk = (lam - cs * k->v.gl + cs * k->v.g0 * k->v.gl / k->v.gt) / (q + cs * cs / k->v.gt);
+  sg = sel4(sg * cs > k->v.tl, sk, sg);
   urm4 g = sg * lam - wstar4(k, sg * c2, sg * s2, sg * c * sn);
   *sig = sel4(pos, sg, bc4(0));
   return sel4(pos, g, bc4(0));
@@ -408,13 +425,13 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
   urm4 G = gdual4(k, E, u1, u2);
   for (int it = 0; it < 40 && any4(live); it++) {
     urm4 S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk;
-    urm4 Em11 = bc4(k->a11) * S11 + bc4(k->a12) * S22, Em22 = bc4(k->a12) * S11 + bc4(k->a22) * S22;
+    urm4 Em11 = k->v.a11 * S11 + k->v.a12 * S22, Em22 = k->v.a12 * S11 + k->v.a22 * S22;
     urm4 Em12 = bc4(0.5) * shear_inv4(k, S12, &kk);
     urm4 r1 = (E[0] - Em11) * u1 + (E[2] - Em12) * u2;
     urm4 r2 = (E[2] - Em12) * u1 + (E[1] - Em22) * u2;
-    urm4 M11 = E[0] - (Em11 + bc4(2) * bc4(k->a11) * S11 + bc4(0.5) * kk * S22);
-    urm4 M12 = E[2] - (Em12 + (bc4(2) * bc4(k->a12) + bc4(0.5) * kk) * S12);
-    urm4 M22 = E[1] - (Em22 + bc4(2) * bc4(k->a22) * S22 + bc4(0.5) * kk * S11);
+    urm4 M11 = E[0] - (Em11 + bc4(2) * k->v.a11 * S11 + bc4(0.5) * kk * S22);
+    urm4 M12 = E[2] - (Em12 + (bc4(2) * k->v.a12 + bc4(0.5) * kk) * S12);
+    urm4 M22 = E[1] - (Em22 + bc4(2) * k->v.a22 * S22 + bc4(0.5) * kk * S11);
     urm4 mm = bc4(0.5) * (M11 + M22), hh = bc4(0.5) * (M11 - M22);
     urm4 lmax = mm + sqrt4(hh * hh + M12 * M12), tr = fabs4(M11) + fabs4(M22);
     urm4i shift = lmax > bc4(-1e-3) * tr;
