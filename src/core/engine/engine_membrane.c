@@ -202,8 +202,9 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     int t = mb->tfree[j];
     double dx = tb[t] - gc[0], dy = tb[nt + t] - gc[1], dz = tb[2 * nt + t] - gc[2];
     double rr = (rg + tb[3 * nt + t]) * (1 + 1e-9);
-    tl[ntl] = t; /* kept where the spheres meet: no branch to mispredict */
-    ntl += dx * dx + dy * dy + dz * dz < rr * rr;
+    if (dx * dx + dy * dy + dz * dz < rr * rr) {
+      tl[ntl++] = t;
+    }
   }
   for (int j = 0; j < ntl; j++) {
     const int* e3 = mb->tedge + 3 * (int)tl[j];
