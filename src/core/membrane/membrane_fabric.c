@@ -30,7 +30,7 @@ typedef struct {
   double a11, a12, a22; /* and back: E11 = a11 S11 + a12 S22, E22 = a12 S11 + a22 S22 */
   double g0, gt, gl;    /* shear stiffness before and after the lock, sine of the lock angle */
   double re;            /* share of the taut law kept (its compression) */
-  struct {              /* the vector law's constants over 4 lanes (as many values above) */
+  struct {              /* the vector law's constants, each broadcast to 4 lanes */
     urm4 a11, a12, a22, g0, gt, gl, tl, ig0, igt, a12x2, wk0;
   } v;
 } lawk;
