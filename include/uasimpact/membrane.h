@@ -178,7 +178,8 @@ double ur_mem_gas_energy(const urMembrane* mb, double p, double V);
 /* fabric and gas forces on every node at the state (x, v) of st into f (3 nn, overwritten);
    info may be NULL; scalars of st updated (pressure, volume, strain, energy). st is a whole run
    state of ur_mem_state_size() doubles: the evaluation's scratch is its end, and its wrinkled
-   triangles' warm starts are read and updated there */
+   triangles' warm starts are read and updated there, and each triangle's bounding sphere at x
+   (centre, squared radius: the face contact's culling) written after them */
 void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info);
 
 /* Green strain (E11, E22, 2 E12, warp/weft axes) and stress resultant (N/m, the tension-field

@@ -373,29 +373,11 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
     }
   }
   // each triangle's bounding sphere (its centroid, the farthest node from it: every point of the
-  // triangle within), SoA for contact_geom's test
+  // triangle within), SoA for contact_geom's test: ur_mem_forces left the centres and squared
+  // radii at the end of the scratch (membrane.h), the radii here
   {
     int nt = mb->nt;
     double* tb = sc + urMEMS_N + 44 * (size_t)mb->ntb;
-    for (int j = 0; j < mb->ntfree; j++) {
-      int t = mb->tfree[j];
-      const int* n3 = mb->tri + 3 * t;
-      const double *a = x + 3 * n3[0], *bb = x + 3 * n3[1], *cc = x + 3 * n3[2];
-      double cg[3], r2 = 0;
-      for (int k = 0; k < 3; k++) {
-        cg[k] = (a[k] + bb[k] + cc[k]) * (1.0 / 3); /* any point near the centroid will do */
-      }
-      for (int k = 0; k < 3; k++) {
-        double r[3];
-        urm_sub(r, x + 3 * n3[k], cg);
-        double rr = urm_dot(r, r);
-        r2 = rr > r2 ? rr : r2;
-      }
-      tb[t] = cg[0];
-      tb[nt + t] = cg[1];
-      tb[2 * nt + t] = cg[2];
-      tb[3 * nt + t] = r2;
-    }
     for (int t = 0; t < nt; t++) {
       tb[3 * nt + t] = sqrt(tb[3 * nt + t]); /* apart: a vector loop, no wait on each root */
     }

@@ -18,6 +18,10 @@
 
 //---------------------------------- law -----------------------------------------------------------
 
+// 4 doubles of a vector (GCC vector extensions: the law over 4 triangles below)
+#pragma GCC diagnostic ignored "-Wpsabi"
+typedef double urm4 __attribute__((vector_size(32)));
+
 /* the law's constants, computed once per force evaluation: the taut law's stiffnesses, its
    compliance (for the wrinkled state), the shear law (stiffnesses kept above 1e-6 of the tensile
    one so that its inverse exists) */
@@ -26,13 +30,31 @@ typedef struct {
   double a11, a12, a22; /* and back: E11 = a11 S11 + a12 S22, E22 = a12 S11 + a22 S22 */
   double g0, gt, gl;    /* shear stiffness before and after the lock, sine of the lock angle */
   double re;            /* share of the taut law kept (its compression) */
+  struct {              /* the vector law's constants, each broadcast to 4 lanes */
+    urm4 a11, a12, a22, g0, gt, gl, tl, ig0, igt, a12x2, wk0;
+  } v;
 } lawk;
 
 static lawk law_constants(const urMemSpec* s) {
   double nu21 = s->nu12 * s->e2t / s->e1t, q = 1 / (1 - s->nu12 * nu21);
   double gmin = 1e-6 * fmax(s->e1t, s->e2t);
-  return (lawk){q * s->e1t, q * s->e1t * nu21,  q * s->e2t,         1 / s->e1t,   -s->nu12 / s->e1t,
-                1 / s->e2t, fmax(s->g0t, gmin), fmax(s->gtt, gmin), sin(s->lock), s->re};
+  lawk k = {q * s->e1t, q * s->e1t * nu21,  q * s->e2t,         1 / s->e1t,   -s->nu12 / s->e1t,
+            1 / s->e2t, fmax(s->g0t, gmin), fmax(s->gtt, gmin), sin(s->lock), s->re};
+  double tl = k.g0 * k.gl;
+#define urmBC(x) ((urm4){x, x, x, x})
+  k.v.a11 = urmBC(k.a11);
+  k.v.a12 = urmBC(k.a12);
+  k.v.a22 = urmBC(k.a22);
+  k.v.g0 = urmBC(k.g0);
+  k.v.gt = urmBC(k.gt);
+  k.v.gl = urmBC(k.gl);
+  k.v.tl = urmBC(tl);
+  k.v.ig0 = urmBC(1 / k.g0);
+  k.v.igt = urmBC(1 / k.gt);
+  k.v.a12x2 = urmBC(2 * k.a12);
+  k.v.wk0 = urmBC(0.5 * tl * k.gl);
+#undef urmBC
+  return k;
 }
 
 
@@ -263,12 +285,15 @@ void urm_fabric_stress_warm(const urMemSpec* s, const double e[3], double S[3], 
 // without warm starts) goes through the scalar stress() itself. So each lane's bits are
 // stress()'s (test_membrane_fabric checks it; a change of the law goes into both). ISO C mode:
 // no contraction into FMA in either.
-#pragma GCC diagnostic ignored "-Wpsabi"
-typedef double urm4 __attribute__((vector_size(32)));
 typedef long long urm4i __attribute__((vector_size(32)));
 typedef double urm4u __attribute__((vector_size(32), aligned(8))); /* unaligned load, store */
 
 #define AI static inline __attribute__((always_inline))
+
+/* blocks per chunk of the triangle pass: its deformation gradients, strains and stresses (13 x 4
+   doubles a block, 6.7 kB) stay in the first-level cache between the chunk's three loops; its
+   wrinkled lanes are packed 4 at a time, so the more blocks the fewer half-empty last groups */
+#define urmCHUNK 16
 
 /* a where the mask is set, else b */
 AI urm4 sel4(urm4i mask, urm4 a, urm4 b) {
@@ -310,25 +335,35 @@ AI int any4(urm4i m) {
   return (m[0] | m[1] | m[2] | m[3]) != 0;
 }
 
+/* 1 where every lane of the mask is set */
+AI int all4(urm4i m) {
+  return (m[0] & m[1] & m[2] & m[3]) != 0;
+}
+
 /* shear_inv() over 4 lanes */
 AI urm4 shear_inv4(const lawk* k, urm4 tau, urm4* c) {
-  urm4 at = fabs4(tau), tl = bc4(k->g0 * k->gl);
+  urm4 at = fabs4(tau), tl = k->v.tl;
   urm4i lin = at <= tl;
-  *c = sel4(lin, bc4(1 / k->g0), bc4(1 / k->gt));
-  urm4 rl = tau / bc4(k->g0);
-  urm4 rk = copysign4(bc4(k->gl) + (at - tl) / bc4(k->gt), tau);
+  if (all4(lin)) { /* one side only: its division alone (the same bits) */
+    *c = k->v.ig0;
+    return tau / k->v.g0;
+  }
+  *c = sel4(lin, k->v.ig0, k->v.igt);
+  urm4 rl = tau / k->v.g0;
+  urm4 rk = copysign4(k->v.gl + (at - tl) / k->v.gt, tau);
   return sel4(lin, rl, rk);
 }
 
 /* wstar() over 4 lanes */
 AI urm4 wstar4(const lawk* k, urm4 S11, urm4 S22, urm4 S12) {
-  urm4 w =
-      bc4(0.5) * (bc4(k->a11) * S11 * S11 + bc4(2 * k->a12) * S11 * S22 + bc4(k->a22) * S22 * S22);
-  urm4 at = fabs4(S12), tl = bc4(k->g0 * k->gl);
+  urm4 w = bc4(0.5) * (k->v.a11 * S11 * S11 + k->v.a12x2 * S11 * S22 + k->v.a22 * S22 * S22);
+  urm4 at = fabs4(S12), tl = k->v.tl;
   urm4i lin = at <= tl;
-  urm4 wl = w + bc4(0.5) * S12 * S12 / bc4(k->g0);
-  urm4 wk = w + bc4(0.5 * (k->g0 * k->gl) * k->gl) + bc4(k->gl) * (at - tl) +
-            bc4(0.5) * (at - tl) * (at - tl) / bc4(k->gt);
+  if (all4(lin)) { /* one side only: its division alone (the same bits) */
+    return w + bc4(0.5) * S12 * S12 / k->v.g0;
+  }
+  urm4 wl = w + bc4(0.5) * S12 * S12 / k->v.g0;
+  urm4 wk = w + k->v.wk0 + k->v.gl * (at - tl) + bc4(0.5) * (at - tl) * (at - tl) / k->v.gt;
   return sel4(lin, wl, wk);
 }
 
@@ -338,14 +373,51 @@ AI urm4 gdual4(const lawk* k, const urm4 E[3], urm4 u1, urm4 u2) {
          wstar4(k, u1 * u1, u2 * u2, u1 * u2);
 }
 
-/* wrinkled() over the 4 lanes of mask act, for the path it takes on nearly every call between
-   sub-steps: a warm start (uw: lane l's u at uw[2 l]) whose first Newton step is within 1 % of
-   |u|, then full Newton steps that raise G, until a step below 1e-6 of |u| (or 40 steps, or a
-   Hessian that is not negative definite). Every lane runs the scalar code's operations in its
-   order (masked as it finishes), so its bits are wrinkled()'s. A lane off that path (no warm
-   start, the candidates wanted, a step to backtrack) is left to the scalar wrinkled(): its bit
-   in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the lanes
-   not done here); uw updated for the lanes done. */
+/* uniaxial() over 4 lanes along (c, sn): G in the return, sigma in *sig (both 0 where the strain
+   along the direction is not positive), each lane the scalar code's operations in its order */
+AI urm4 uniaxial4(const lawk* k, const urm4 E[3], urm4 c, urm4 sn, urm4* sig) {
+  urm4 lam = c * c * E[0] + sn * sn * E[1] + bc4(2) * c * sn * E[2];
+  urm4i pos = lam > bc4(0);
+  urm4 cs = fabs4(c * sn), c2 = c * c, s2 = sn * sn;
+  urm4 q = c2 * c2 * k->v.a11 + bc4(2) * c2 * s2 * k->v.a12 + s2 * s2 * k->v.a22;
+  urm4 sg = lam / (q + cs * cs / k->v.g0);
+  urm4 sk = (lam - cs * k->v.gl + cs * k->v.g0 * k->v.gl / k->v.gt) / (q + cs * cs / k->v.gt);
+  sg = sel4(sg * cs > k->v.tl, sk, sg);
+  urm4 g = sg * lam - wstar4(k, sg * c2, sg * s2, sg * c * sn);
+  *sig = sel4(pos, sg, bc4(0));
+  return sel4(pos, g, bc4(0));
+}
+
+/* candidates() over the 4 lanes of mask act: the same five directions in the same order, u and
+   G replaced lane by lane where one beats G */
+AI void candidates4(const lawk* k, const urm4 E[3], urm4i act, urm4* u1, urm4* u2, urm4* G) {
+  urm4 hd = bc4(0.5) * (E[0] - E[1]), rr = sqrt4(hd * hd + E[2] * E[2]);
+  urm4 c2 = sel4(rr > bc4(0), hd / rr, bc4(1));
+  urm4 s2 = bc4(0.5) * (bc4(1) - c2);
+  urm4 cp = sqrt4(bc4(0.5) * (bc4(1) + c2));
+  urm4 sp = copysign4(sqrt4(sel4(s2 > bc4(0), s2, bc4(0))), E[2]);
+  const double h2 = 0.70710678118654752;
+  urm4 cc[5] = {cp, bc4(1), bc4(0), bc4(h2), bc4(h2)};
+  urm4 ss[5] = {sp, bc4(0), bc4(1), bc4(h2), bc4(-h2)};
+  for (int j = 0; j < 5; j++) {
+    urm4 sig, g = uniaxial4(k, E, cc[j], ss[j], &sig);
+    urm4i up = act & (g > *G);
+    urm4 rs = sqrt4(sig);
+    *G = sel4(up, g, *G);
+    *u1 = sel4(up, rs * cc[j], *u1);
+    *u2 = sel4(up, rs * ss[j], *u2);
+  }
+}
+
+/* wrinkled() over the 4 lanes of mask act, for the paths it takes on nearly every call between
+   sub-steps: a warm start (uw: lane l's u at uw[2 l]); where its first Newton step is not within
+   1 % of |u| the five candidates (candidates4) tried against it, Newton restarted from the best
+   one where it beats the warm start; then full Newton steps that raise G, until a step below
+   1e-6 of |u| (or 40 steps, or a Hessian that is not negative definite). Every lane runs the
+   scalar code's operations in its order (masked as it finishes), so its bits are wrinkled()'s.
+   A lane off that path (no warm start, a step to backtrack) is left to the scalar wrinkled():
+   its bit in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the
+   lanes not done here); uw updated for the lanes done. */
 AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* wr, double* uw) {
   urm4 E[3] = {e[0], e[1], bc4(0.5) * e[2]};
   urm4 u1 = {uw[0], uw[2], uw[4], uw[6]}, u2 = {uw[1], uw[3], uw[5], uw[7]};
@@ -354,13 +426,13 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
   urm4 G = gdual4(k, E, u1, u2);
   for (int it = 0; it < 40 && any4(live); it++) {
     urm4 S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk;
-    urm4 Em11 = bc4(k->a11) * S11 + bc4(k->a12) * S22, Em22 = bc4(k->a12) * S11 + bc4(k->a22) * S22;
+    urm4 Em11 = k->v.a11 * S11 + k->v.a12 * S22, Em22 = k->v.a12 * S11 + k->v.a22 * S22;
     urm4 Em12 = bc4(0.5) * shear_inv4(k, S12, &kk);
     urm4 r1 = (E[0] - Em11) * u1 + (E[2] - Em12) * u2;
     urm4 r2 = (E[2] - Em12) * u1 + (E[1] - Em22) * u2;
-    urm4 M11 = E[0] - (Em11 + bc4(2) * bc4(k->a11) * S11 + bc4(0.5) * kk * S22);
-    urm4 M12 = E[2] - (Em12 + (bc4(2) * bc4(k->a12) + bc4(0.5) * kk) * S12);
-    urm4 M22 = E[1] - (Em22 + bc4(2) * bc4(k->a22) * S22 + bc4(0.5) * kk * S11);
+    urm4 M11 = E[0] - (Em11 + bc4(2) * k->v.a11 * S11 + bc4(0.5) * kk * S22);
+    urm4 M12 = E[2] - (Em12 + (bc4(2) * k->v.a12 + bc4(0.5) * kk) * S12);
+    urm4 M22 = E[1] - (Em22 + bc4(2) * k->v.a22 * S22 + bc4(0.5) * kk * S11);
     urm4 mm = bc4(0.5) * (M11 + M22), hh = bc4(0.5) * (M11 - M22);
     urm4 lmax = mm + sqrt4(hh * hh + M12 * M12), tr = fabs4(M11) + fabs4(M22);
     urm4i shift = lmax > bc4(-1e-3) * tr;
@@ -370,27 +442,35 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
     urm4 det = M11 * M22 - M12 * M12;
     urm4 d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
     urm4 dd = d1 * d1 + d2 * d2, uu = u1 * u1 + u2 * u2;
-    urm4i pd = det > bc4(0);
+    urm4i pd = det > bc4(0), step = live; /* the lanes that take this iteration's step */
     if (it == 0) {
-      // the warm start kept alone only when Newton stays near it; else the scalar code
-      urm4i near = pd & (dd <= bc4(1e-4) * uu);
-      fb |= live & ~near;
-      live &= near;
+      // the warm start kept alone only when Newton stays near it; else the candidates tried
+      // against it, Newton restarted (the next iteration) where one beats it
+      urm4i far = live & ~(pd & (dd <= bc4(1e-4) * uu));
+      if (any4(far)) {
+        urm4 G0 = G;
+        candidates4(k, E, far, &u1, &u2, &G);
+        step &= ~(far & (G > G0));
+      }
     }
-    live &= pd; /* not concave even shifted: the scalar code stops there */
-    urm4i conv = live & (dd <= bc4(1e-12) * uu);
+    urm4i stop = step & ~pd; /* not concave even shifted: the scalar code stops there */
+    live &= ~stop;
+    step &= pd;
+    urm4i conv = step & (dd <= bc4(1e-12) * uu);
     u1 = sel4(conv, u1 + d1, u1);
     u2 = sel4(conv, u2 + d2, u2);
     live &= ~conv;
+    step &= ~conv;
     // the full step (t = 1) taken when G does not fall beyond rounding; else the scalar code
     urm4 v1 = u1 + d1, v2 = u2 + d2;
     urm4 Gn = gdual4(k, E, v1, v2), tol = bc4(1e-13) * fabs4(G);
     urm4i up = Gn >= G - tol;
-    fb |= live & ~up;
-    live &= up;
-    u1 = sel4(live, v1, u1);
-    u2 = sel4(live, v2, u2);
-    G = sel4(live, Gn, G);
+    fb |= step & ~up;
+    live &= ~(step & ~up);
+    step &= up;
+    u1 = sel4(step, v1, u1);
+    u2 = sel4(step, v2, u2);
+    G = sel4(step, Gn, G);
   }
   urm4i done = act & ~fb;
   for (int l = 0; l < 4; l++) {
@@ -445,6 +525,99 @@ AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], u
     }
   }
 }
+
+
+/* stress4() over the nb blocks of 4 lanes of a chunk (at most urmCHUNK, uw the chunk's first
+   block's warm starts), the wrinkled lanes packed: the taut law on every block, then the lanes
+   that need the wrinkled Newton gathered 4 at a time, across blocks, for wrinkled4() (a block's
+   taut lanes no longer ride along in its Newton), the stresses scattered back; the lanes left
+   over by the scalar stress(). Each lane's operations are stress4()'s, so its bits too. e: the
+   strains, in S the stresses and in w the energy densities. */
+// GCC 12's AVX2 clone of tri_pass warns that the gathered strains may be uninitialized (they
+// are read only from the chunk's nb blocks, all written): a false positive
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+AI void stress4_chunk(const urMemSpec* s, const lawk* k, int nb, const urm4 (*e)[3], urm4 (*S)[3],
+                      urm4* w, double* uw) {
+  short lst[4 * urmCHUNK];
+  int n = 0;
+  urm4 re = bc4(k->re), re1 = bc4(1 - k->re);
+  for (int q = 0; q < nb; q++) {
+    urm4 ws;
+    const urm4* eq = e[q];
+    urm4* Sq = S[q];
+    Sq[0] = bc4(k->c11) * eq[0] + bc4(k->c12) * eq[1];
+    Sq[1] = bc4(k->c12) * eq[0] + bc4(k->c22) * eq[1];
+    Sq[2] = shear4(k, eq[2], &ws);
+    w[q] = bc4(0.5) * (Sq[0] * eq[0] + Sq[1] * eq[1]) + ws;
+    urm4 m = bc4(0.5) * (Sq[0] + Sq[1]), h = bc4(0.5) * (Sq[0] - Sq[1]);
+    urm4i taut = (m >= bc4(0)) & (m * m >= h * h + Sq[2] * Sq[2]);
+    if (!any4(~taut)) {
+      continue;
+    }
+    urm4 me = bc4(0.5) * (eq[0] + eq[1]), he = bc4(0.5) * (eq[0] - eq[1]);
+    urm4i pos = me + sqrt4(he * he + bc4(0.25) * eq[2] * eq[2]) > bc4(0);
+    // slack lanes: no wrinkled stress, no energy (Sr = 0, wr = 0 as stress4's)
+    urm4i slack = ~taut & ~pos, wr = ~taut & pos;
+    for (int j = 0; j < 3; j++) {
+      Sq[j] = sel4(slack, re * Sq[j] + re1 * bc4(0), Sq[j]);
+    }
+    w[q] = sel4(slack, re * w[q] + re1 * bc4(0), w[q]);
+    for (int l = 0; l < 4; l++) {
+      if (wr[l]) {
+        lst[n++] = (short)(4 * q + l);
+      }
+    }
+  }
+  for (int g = 0; g < n; g += 4) {
+    int id[4];
+    for (int l = 0; l < 4; l++) {
+      id[l] = lst[g + l < n ? g + l : g];
+    }
+    urm4i act = {-1, g + 1 < n ? -1 : 0, g + 2 < n ? -1 : 0, g + 3 < n ? -1 : 0};
+    int q0 = id[0] >> 2, q1 = id[1] >> 2, q2 = id[2] >> 2, q3 = id[3] >> 2;
+    int c0 = id[0] & 3, c1 = id[1] & 3, c2 = id[2] & 3, c3 = id[3] & 3;
+    urm4 St[3], Sr[3], wr;
+#define urmGAT(j) ((urm4){e[q0][j][c0], e[q1][j][c1], e[q2][j][c2], e[q3][j][c3]})
+    const urm4 eg[3] = {urmGAT(0), urmGAT(1), urmGAT(2)};
+#undef urmGAT
+    for (int j = 0; j < 3; j++) {
+      St[j] = (urm4){S[q0][j][c0], S[q1][j][c1], S[q2][j][c2], S[q3][j][c3]};
+    }
+    urm4 wt = {w[q0][c0], w[q1][c1], w[q2][c2], w[q3][c3]};
+    double ug[8];
+    for (int l = 0; l < 4; l++) {
+      ug[2 * l] = uw[2 * id[l]];
+      ug[2 * l + 1] = uw[2 * id[l] + 1];
+    }
+    urm4i slow = wrinkled4(k, eg, act, Sr, &wr, ug);
+    for (int j = 0; j < 3; j++) {
+      St[j] = re * St[j] + re1 * Sr[j];
+    }
+    wt = re * wt + re1 * wr;
+    for (int l = 0; l < 4 && g + l < n; l++) {
+      int q = id[l] >> 2, c = id[l] & 3;
+      double* ul = uw + 2 * id[l];
+      if (slow[l]) {
+        // off wrinkled4's path: the lane by the scalar stress(), whole
+        double el[3] = {e[q][0][c], e[q][1][c], e[q][2][c]}, Sl[3], wl;
+        stress(s, k, el, Sl, &wl, ul);
+        S[q][0][c] = Sl[0];
+        S[q][1][c] = Sl[1];
+        S[q][2][c] = Sl[2];
+        w[q][c] = wl;
+        continue;
+      }
+      ul[0] = ug[2 * l];
+      ul[1] = ug[2 * l + 1];
+      for (int j = 0; j < 3; j++) {
+        S[q][j][c] = St[j][l];
+      }
+      w[q][c] = wt[l];
+    }
+  }
+}
+#pragma GCC diagnostic pop
 
 
 void urm_fabric_stress4(const urMemSpec* s, const double e[12], double S[12], double w[4]) {
@@ -527,9 +700,6 @@ enum {
   urmSCR = 9
 };
 
-/* blocks per chunk of the triangle pass: its deformation gradients and strains (9 x 4 doubles a
-   block) stay in the first-level cache between the chunk's three loops */
-#define urmCHUNK 8
 
 /* the positions (or velocities) of 4 nodes, coordinate by coordinate: each node's 3 doubles read
    as 4 (the fourth belongs to the next node or, for the last, to the next array of the state),
@@ -549,12 +719,15 @@ AI void rows3(const double* x, const int* n, urm4 o[3]) {
 
 /* the fabric of every triangle, 4 at a time, in triangle order: the scratch (sc, urmSCR doubles
    of 4 lanes per block), the volume sum *vol and energy sum *wsum in triangle order (as one
-   triangle at a time would add them), the largest yarn strain in *emax. By chunks of blocks,
+   triangle at a time would add them), the largest yarn strain in *emax, each triangle's
+   bounding sphere in tb (SoA: centroids' x, y, z, then the farthest node's squared distance, nt
+   each: the face contact's culling, engine_membrane.c). By chunks of blocks,
    three loops each (geometry, law, forces): short enough for the next blocks' work to overlap
    the law's square root and division. */
 static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const double* v, double* sc,
-                               double* uw, double* vol, double* wsum, double* emax) {
+                               double* uw, double* tb, double* vol, double* wsum, double* emax) {
   const urMemSpec* s = &mb->spec;
+  int nt = mb->nt;
   lawk lk = law_constants(s);
   double V = 0, W = 0;
   urm4 em = bc4(0);
@@ -595,23 +768,38 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
       urm4 c1 = X[1][2] * X[2][0] - X[1][0] * X[2][2];
       urm4 c2 = X[1][0] * X[2][1] - X[1][1] * X[2][0];
       urm4 vt = X[0][0] * c0 + X[0][1] * c1 + X[0][2] * c2;
+      // the bounding sphere: centroid, squared distance of the farthest node
+      urm4 cg[3], r2 = bc4(0);
+      for (int c = 0; c < 3; c++) {
+        cg[c] = (X[0][c] + X[1][c] + X[2][c]) * bc4(1.0 / 3);
+      }
+      for (int j = 0; j < 3; j++) {
+        urm4 r0 = X[j][0] - cg[0], r1 = X[j][1] - cg[1], rz = X[j][2] - cg[2];
+        urm4 rr = r0 * r0 + r1 * r1 + rz * rz;
+        r2 = sel4(rr > r2, rr, r2);
+      }
       int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4; /* the padding's lanes left out */
       for (int l = 0; l < nl; l++) {
         V += vt[l];
+        int t = 4 * b + l;
+        tb[t] = cg[0][l];
+        tb[nt + t] = cg[1][l];
+        tb[2 * nt + t] = cg[2][l];
+        tb[3 * nt + t] = r2[l];
       }
     }
 
     // the law: the stress in place of the strain, the energy, the largest yarn strain
+    urm4 Sc[urmCHUNK][3], wc[urmCHUNK];
+    stress4_chunk(s, &lk, nb, (const urm4(*)[3])Ec, Sc, wc, uw + 8 * b0);
     for (int q = 0; q < nb; q++) {
       int b = b0 + q;
-      urm4 S[3], w;
-      stress4(s, &lk, Ec[q], S, &w, uw + 8 * b);
       em = sel4(Ec[q][0] > em, Ec[q][0], em);
       em = sel4(Ec[q][1] > em, Ec[q][1], em);
       for (int c = 0; c < 3; c++) {
-        Ec[q][c] = S[c];
+        Ec[q][c] = Sc[q][c];
       }
-      urm4 wa = w * *(const urm4u*)(mb->tk4 + 24 * b + 16);
+      urm4 wa = wc[q] * *(const urm4u*)(mb->tk4 + 24 * b + 16);
       int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4;
       for (int l = 0; l < nl; l++) {
         W += wa[l];
@@ -695,7 +883,7 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
 
   // the fabric of every triangle, the enclosed volume (divergence theorem, ur_mem_volume's sum)
   double V, wsum, emax;
-  tri_pass(mb, x, v, scr, scr + 36 * (size_t)mb->ntb, &V, &wsum, &emax);
+  tri_pass(mb, x, v, scr, scr + 36 * (size_t)mb->ntb, scr + 44 * (size_t)mb->ntb, &V, &wsum, &emax);
   V /= 6;
 
   // gas: the pressure of the remaining mass; each triangle's nodal forces, summed on every node
