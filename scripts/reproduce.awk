@@ -748,8 +748,8 @@ function pours(key, par, perp,    k) {
 # our P moved sft forward along the course, at (x, perp): linear between our rows (pitch h)
 function pshift(key, x, perp, sft, h,    y, j, u) {
   y = (x - sft) / h
-  j = int(y >= 0 ? y : y - 1)
-  if (j > y) j--
+  j = int(y)
+  if (j > y) j--  # floor: int() truncates toward zero
   u = y - j
   if (u < 1e-9) return pours(key, j * h, perp)
   if (u > 1 - 1e-9) return pours(key, (j + 1) * h, perp)
@@ -760,7 +760,7 @@ function pshift(key, x, perp, sft, h,    y, j, u) {
 # P| over the full plane over the paper's Q; under wind also after aligning the P-weighted
 # along-course centroids), the footprint, MAD, bias and max |diff|, the cells and difference map,
 # and (under wind) the aligned cells; MADS, IAES, IAEA and SHIFTS hold the figures for the summary
-function compare_grid(i, fp, tau,    a, key, t, c, w, cf, dm, af, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp, co, ca, so, sa, st, dstep, iae, iaea, sft, lo, hi, x, xa, wt, q) {
+function compare_grid(i, fp, tau,    key, t, c, w, cf, dm, af, r, s, par, perp, po, pa, fo, fa, d, both, oo, op, nn, un, mad, bias, mx, touch, line, mpar, mperp, co, ca, so, sa, st, dstep, iae, iaea, sft, lo, hi, xa, wt, q) {
   t = GT[i]; c = GC[i]; w = GW[i]
   st = setof("q", c, w)
   key = c "|" w "|0|" tau
