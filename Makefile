@@ -164,8 +164,10 @@ run:
 # what the tests need beyond the build (scripts/setup.sh test: python3-pandas)
 testdeps:
 	@sh scripts/setup.sh test
+# the shared library too: test_install.sh and test_man.sh run make install two at a time, and on
+# a fresh clone each would otherwise link it into the same file at once
 check: testdeps
-	@$(MAKE) --no-print-directory $(JOBS) all mpi $(TEST_BIN) $(BUILD)/calibrate
+	@$(MAKE) --no-print-directory $(JOBS) all mpi $(TEST_BIN) $(BUILD)/calibrate $(SHLIB)
 	@TEST_TIMES=$(BUILD)/test-times sh scripts/runtests.sh $(TEST_BIN)
 
 test: check
