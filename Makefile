@@ -208,7 +208,8 @@ sensitivity: all
 	  $(if $(VARIANTS),-v $(VARIANTS))
 
 # the same tests on a sanitized build of its own (build-san/uasimpact and build-san/calibrate are
-# what the shell tests run: it needs nothing of a plain 'make check'); its lanes are the portable
+# what the shell tests run; the plain build and shared library are built first only because
+# test_install.sh and test_man.sh run make install two at a time); its lanes are the portable
 # vector code without the AVX2 clones (urNO_CLONES), so that the lanes-equal-alone tests cover
 # both code paths (make check runs the AVX2 clone where the processor has AVX2). The valgrind
 # session runs a plain build of the same portable path (build-vg/uasimpact): valgrind 3.19 cannot
@@ -222,6 +223,7 @@ check-san:
 	  $(TEST_SRC:tests/%.c=build-san/tests/%)
 	@$(MAKE) --no-print-directory BUILD=build-vg BIN=build-vg/uasimpact OPT='-O2 -g -DurNO_CLONES' \
 	  build-vg/uasimpact
+	@$(MAKE) --no-print-directory $(JOBS) all $(SHLIB)
 	@sh scripts/check-san.sh build-san build-vg/uasimpact
 
 # fuzzing with libFuzzer: each target until FUZZ_RUNS executions or FUZZ_SECONDS, corpora in

@@ -87,6 +87,11 @@ N=$(nproc 2>/dev/null || echo 2)
 check run_parallel cond 'make -n run 2>/dev/null | grep -q -- "-j$N all\$" &&
   make -n check 2>/dev/null | grep -q -- "-j$N all mpi "'
 check given_j_kept cond 'make -n -j3 run 2>/dev/null | grep -q "directory  *all\$"'
+# the shared library is built before the tests run: test_install.sh and test_man.sh both run
+# make install, two tests at a time, and on a fresh clone would otherwise both link it at once
+check shlib_before_tests cond 'make -n check 2>/dev/null | grep -q -- " all mpi .* build/pic/libuasimpact.so.0.1\$" &&
+  env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -nB check-san 2>/dev/null |
+  grep -q -- "-j$N all build/pic/libuasimpact.so.0.1\$"'
 
 # uninstall: nothing of ours is left (empty folders install made for others may stay)
 make -s uninstall PREFIX="$P" >"$TMP/make" 2>&1
