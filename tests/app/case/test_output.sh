@@ -151,6 +151,9 @@ if command -v tmux >/dev/null 2>&1; then
   check tty_sora_folded cond '[ "$(grep -c "^ *case " "$TMP/screen")" -ge 2 ]'
   line t1 "grid; export grid $TMP/tty.csv"
   check tty_export_notes wait_for t1 '^# grid of case A, wind 0 m/s' 20
+  # the notes go to the terminal before the rows are written and the file is put in place: wait
+  # for the file (up to 20 s; under load the check raced the rename)
+  n=0; while [ ! -s "$TMP/tty.csv" ] && [ "$n" -lt 200 ]; do sleep 0.1; n=$((n + 1)); done
   check tty_export_plain cond '[ -s "$TMP/tty.csv" ] && ! grep -q "^#" "$TMP/tty.csv"'
 else
   skip tty_output "tmux is not installed"
