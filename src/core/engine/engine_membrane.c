@@ -106,7 +106,9 @@ static void bodymotion(const urData* d, int b, double R[9], double c[3], double 
 /* the contact pressure on sub-triangle corners q (of a triangle with nodes n3; corners 0-2 the
    nodes, 3-5 the midpoints of edges 01, 12, 20) of area a: the depths dq, normals nq, positions
    xq and velocities vq of the six points; forces added to f and fc (a midpoint's to its edge's
-   nodes, half each), reactions on the body, the penalty energy to *ep; the normal force
+   nodes, half each), reactions on the body, the penalty energy to *ep, each point's stiffness
+   (the penalty per area times its area share, a midpoint's half to each end) and its normal
+   lumped onto the nodes in kn when kn is not NULL (contact_implicit); the normal force
    returned */
 static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int body,
                           const double o[3], const double vo[3], const double w[3], const int* n3,
