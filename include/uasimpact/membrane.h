@@ -67,7 +67,8 @@ typedef struct {
   double vent_cd;   /* orifice discharge coefficient */
   double leak;      /* fabric leakage: effective open area per fabric area (0: none) */
   /* contact with ellipsoids (person and the carrier's own bodies) */
-  double kc_alpha;  /* penalty stiffness alpha m_node / max(dt, kc_dt)^2 (stable, alpha < 1) */
+  double kc_alpha;  /* penalty stiffness alpha m_node / max(dt, kc_dt)^2 (explicit for alpha <= 1;
+                       beyond, up to 1000, linearly implicit along the normal) */
   double kc_dt;     /* the step that stiffness refers to when dt is smaller, s */
   double zeta_c;    /* contact damping, fraction of critical per node */
   double mu, v_eps; /* regularised Coulomb friction */
@@ -157,7 +158,8 @@ void ur_mem_free(urMembrane* mb);
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
    scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb), then each
    triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none), then the
-   engine's contact scratch (5 nt: each triangle's bounding sphere, a list of triangles) */
+   engine's contact scratch (5 nt: each triangle's bounding sphere, a list of triangles; then
+   4 nn: each node's lumped normal stiffness for the implicit stiff penalty) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->

@@ -6,8 +6,10 @@
  * person) and supports (the carrier's own bodies) and applies the reactions to their bodies and
  * the mount forces to the carrier; the accepted step then moves the nodes (symplectic Euler),
  * in sub-steps when the fabric's stable step is smaller than the multibody step (fabric and gas
- * forces recomputed each sub-step, contact forces held over the step). Until a target comes
- * near, the bag rides rigidly in its inflated state (no integration). */
+ * forces recomputed each sub-step, contact forces held over the step). A penalty beyond the
+ * explicit bound (kc_alpha > 1) is made linearly implicit along each node's contact normal
+ * (contact_implicit). Until a target comes near, the bag rides rigidly in its inflated state
+ * (no integration). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -104,12 +106,15 @@ static void bodymotion(const urData* d, int b, double R[9], double c[3], double 
 /* the contact pressure on sub-triangle corners q (of a triangle with nodes n3; corners 0-2 the
    nodes, 3-5 the midpoints of edges 01, 12, 20) of area a: the depths dq, normals nq, positions
    xq and velocities vq of the six points; forces added to f and fc (a midpoint's to its edge's
-   nodes, half each), reactions on the body, the penalty energy to *ep; the normal force
+   nodes, half each), reactions on the body, the penalty energy to *ep, each point's stiffness
+   (the penalty per area times its area share, a midpoint's half to each end) and its normal
+   lumped onto the nodes in kn when kn is not NULL (contact_implicit); the normal force
    returned */
 static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int body,
                           const double o[3], const double vo[3], const double w[3], const int* n3,
                           const int q[3], const double dq[6], double nq[6][3], double xq[6][3],
-                          double vq[6][3], double a, double* f, double* fc, double* ep) {
+                          double vq[6][3], double a, double* f, double* fc, double* kn,
+                          double* ep) {
   static const int edge[3][2] = {{0, 1}, {1, 2}, {2, 0}};
   const urMemSpec* s = &mb->spec;
   double dd[3] = {dq[q[0]], dq[q[1]], dq[q[2]]}, I[3], A[3], E, fsum = 0;
@@ -134,14 +139,78 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
     fsum += fn;
     int nodes[2] = {p < 3 ? n3[p] : n3[edge[p - 3][0]], p < 3 ? -1 : n3[edge[p - 3][1]]};
     double share = p < 3 ? 1 : 0.5;
+    double kp = share * ka * A[u] * a; /* the point's stiffness, lumped on the node */
     for (int j = 0; j < 2 && nodes[j] >= 0; j++) {
       for (int k = 0; k < 3; k++) {
         f[3 * nodes[j] + k] += share * fi[k];
         fc[3 * nodes[j] + k] += share * fi[k];
       }
+      if (kn) {
+        double* kj = kn + 4 * nodes[j];
+        kj[0] += kp;
+        for (int k = 0; k < 3; k++) {
+          kj[1 + k] += kp * nq[p][k];
+        }
+      }
     }
     double rf[3] = {-fi[0], -fi[1], -fi[2]};
     ur_apply_force(m, d, body, rf, xq[p]);
+  }
+  return fsum;
+}
+
+
+/* the stiff penalty (kc_alpha > 1, beyond the explicit bound), linearly implicit along the
+   contact normal per node: each node in contact with the body has the lumped stiffness K (kn[0]:
+   the penalty per area times the node's shares of the penetrated areas) along the mean normal n
+   (kn[1..3], K-weighted) and the damping C = K 2 zeta_c sqrt(rhot / k_a). The explicit pass gave
+   it the force at the current depth; the force's change over the step, -K (the normal
+   displacement relative to the body's surface) - C (the change of the normal velocity), is solved
+   exactly with the node's other forces F held over the step: the displacement is h vn + b F / m
+   (b = h^2 (N + 1) / 2N for N sub-steps of the fabric, h^2 for one), the velocity change h F / m.
+   Backward Euler along the normal: stable for any K, so the penalty is not bounded by the step
+   (it damps the contact's own vibration: the undamped drop loses a few % of its energy, see
+   uasimpact-model(5)); the body's side stays explicit (its reaction this step), so K over all
+   nodes must stay within the step for the body's mass. The node's normal contact force stays
+   >= 0. The increment goes to f and fc, its reaction to the body; its normal sum returned. */
+static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb, int body,
+                               const double o[3], const double vo[3], const double w[3], double* st,
+                               const double* kn) {
+  const urMemSpec* s = &mb->spec;
+  int nn = mb->nn;
+  double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
+  double h = m->opt.dt, dk = fmax(h, s->kc_dt), ka = s->kc_alpha * s->rhot / (dk * dk);
+  double cr = 2 * s->zeta_c * sqrt(s->rhot / ka), fsum = 0;
+  // the step's displacement under a force F held over it in N sub-steps: h v + bh2 F / m
+  int nsub = (int)ceil(h / mb->dt_stable - 1e-9);
+  nsub = nsub < 1 ? 1 : nsub;
+  double bh2 = h * h * (nsub + 1) / (2.0 * nsub);
+  for (int j = 0; j < mb->nfree; j++) {
+    int i = mb->free[j];
+    const double* ki = kn + 4 * i;
+    double K = ki[0], nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
+    if (!(K > 0) || !(nl > 0)) {
+      continue;
+    }
+    double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl}, r[3], wr[3], vb[3];
+    urm_sub(r, x + 3 * i, o);
+    urm_cross(wr, w, r);
+    for (int k = 0; k < 3; k++) {
+      vb[k] = vo[k] + wr[k];
+    }
+    double mi = mb->mass[i], C = K * cr;
+    double vn = urm_dot(v + 3 * i, n) - urm_dot(vb, n), fo = urm_dot(f + 3 * i, n);
+    double df = -(K * (h * vn + bh2 * fo / mi) + C * h * fo / mi) / (1 + K * bh2 / mi + C * h / mi);
+    double fn = urm_dot(fc + 3 * i, n);
+    df = fmax(df, -fmax(fn, 0));
+    double fi[3] = {df * n[0], df * n[1], df * n[2]};
+    for (int k = 0; k < 3; k++) {
+      f[3 * i + k] += fi[k];
+      fc[3 * i + k] += fi[k];
+    }
+    double rf[3] = {-fi[0], -fi[1], -fi[2]};
+    ur_apply_force(m, d, body, rf, x + 3 * i);
+    fsum += df;
   }
   return fsum;
 }
@@ -187,6 +256,13 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   // the list of those tried (nt)
   double *gn = sc + urMEMS_N, *ge = gn + 4 * (size_t)nn;
   double *tb = sc + urMEMS_N + 44 * (size_t)mb->ntb, *tl = tb + 4 * (size_t)nt;
+  // beyond the explicit bound (kc_alpha > 1): each free node's lumped normal stiffness (4 nn,
+  // after the triangle list), for contact_implicit
+  double* kn = b->mem->spec.kc_alpha > 1 ? tl + nt : NULL;
+  for (int j = 0; kn && j < mb->nfree; j++) {
+    int i = mb->free[j];
+    kn[4 * i] = kn[4 * i + 1] = kn[4 * i + 2] = kn[4 * i + 3] = 0;
+  }
   for (int j = 0; j < mb->nfree; j++) {
     int i = mb->free[j];
     double r[3];
@@ -284,11 +360,14 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     for (int j = 0; j < 4; j++) {
       const int* qj = sub[j];
       if (dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0) {
-        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, &ep);
+        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, kn, &ep);
       }
     }
   }
   sc[urMEMS_ECONT] += ep;
+  if (kn) {
+    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn);
+  }
   return fsum;
 }
 

@@ -9,8 +9,9 @@
  * is the integral of a contact pressure over the contact patch and the patch is where that
  * pressure acts. The stiffness comes from stability, not from a material: per area
  * k_a = alpha rhot / max(dt, kc_dt)^2 (materials-membrane C.4: a node of mass m = rhot A feels at
- * most k_a A, stable at the step dt and the same at every step below kc_dt, so that halving dt
- * leaves the contact as it was), with damping 2 zeta sqrt(k_a rhot) per area on the approach
+ * most k_a A, stable at the step dt for alpha <= 1 and the same at every step below kc_dt, so
+ * that halving dt leaves the contact as it was; a stiffer alpha is made implicit along the normal
+ * by the engine, engine_membrane.c), with damping 2 zeta sqrt(k_a rhot) per area on the approach
  * rate and regularised Coulomb friction on the sliding velocity (its viscous slope capped at the
  * mass over dt, which stops the sliding in one step at most). */
 #include <math.h>

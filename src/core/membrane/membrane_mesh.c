@@ -68,9 +68,9 @@ int ur_mem_spec_check(const urMemSpec* s, char* err, size_t n) {
     what = "gas needs p0 >= patm > 0, gamma >= 1, temperature > 0";
   } else if (!(s->vent_area >= 0 && s->vent_cd >= 0 && s->leak >= 0 && s->leak < 1)) {
     what = "vent area, discharge coefficient and leak must be >= 0 (leak < 1)";
-  } else if (!(s->kc_alpha > 0 && s->kc_alpha < 1 && s->kc_dt >= 0 && s->zeta_c >= 0 &&
+  } else if (!(s->kc_alpha > 0 && s->kc_alpha <= 1000 && s->kc_dt >= 0 && s->zeta_c >= 0 &&
                s->mu >= 0 && s->v_eps > 0)) {
-    what = "contact needs 0 < kc_alpha < 1, kc_dt >= 0, zeta_c >= 0, mu >= 0, v_eps > 0";
+    what = "contact needs 0 < kc_alpha <= 1000, kc_dt >= 0, zeta_c >= 0, mu >= 0, v_eps > 0";
   } else if (!(s->quat[0] * s->quat[0] + s->quat[1] * s->quat[1] + s->quat[2] * s->quat[2] +
                    s->quat[3] * s->quat[3] >
                0)) {
@@ -529,7 +529,8 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 //---------------------------------- run state -----------------------------------------------------
 
 size_t ur_mem_state_size(const urMembrane* mb) {
-  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt;
+  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt +
+         4 * (size_t)mb->nn;
 }
 
 
