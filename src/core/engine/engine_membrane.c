@@ -115,6 +115,12 @@ static double box_gap2(const double* bx, const double p[3]) {
 }
 
 
+/* is the point at r from the shape's centre outside its box gh (urm_shape_box) */
+static int out_box(const double r[3], const double gh[3]) {
+  return fabs(r[0]) > gh[0] || fabs(r[1]) > gh[1] || fabs(r[2]) > gh[2];
+}
+
+
 /* the contact pressure on sub-triangle corners q (of a triangle with nodes n3; corners 0-2 the
    nodes, 3-5 the midpoints of edges 01, 12, 20) of area a: the depths dq, normals nq, positions
    xq and velocities vq of the six points; forces added to f and fc (a midpoint's to its edge's
@@ -174,7 +180,10 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    urm_bag_loads, with a margin) reaches g's are tried: of the others no point is inside g's
    sphere (the same triangles tried, the same bits). Both lists are culled first by boxes of
    urMEM_CBLK free nodes and of urMEM_CBLK free triangles' spheres (nbx, tbx, from urm_bag_loads):
-   a box out of g's sphere holds no node or sphere that the tests above would take. */
+   a box out of g's sphere holds no node or sphere that the tests above would take. And by g's
+   own box (urm_shape_box): a point outside it is outside g (its depth -INFINITY without the gap's
+   evaluation), a triangle whose sphere misses it has no point inside g, so it adds no force and
+   no depth that another triangle reads (left out of the list, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
                            const double lo[3], const double hi[3], double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
@@ -193,6 +202,8 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   }
   urEllipsoid e;
   ur_geom_ellipsoid(m, d, g, &e);
+  double gh[3];
+  urm_shape_box(&e, gh);
   int body = m->geom[g].body;
   double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0;
   bodymotion(d, body, R, o, vo, w);
@@ -218,7 +229,9 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
       urm_sub(r, x + 3 * i, gc);
       gn[4 * i] = -INFINITY;
       if (urm_dot(r, r) < rg * rg) {
-        gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
+        if (!out_box(r, gh)) {
+          gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
+        }
         *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
       }
     }
@@ -238,7 +251,12 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
       double dx = tb[t] - gc[0], dy = tb[nt + t] - gc[1], dz = tb[2 * nt + t] - gc[2];
       double rr = (rg + tb[3 * nt + t]) * (1 + 1e-9);
       if (dx * dx + dy * dy + dz * dz < rr * rr) {
-        tl[ntl++] = t;
+        // the sphere against g's box (a margin above the roundings, as for the blocks)
+        double ux = fmax(fabs(dx) - gh[0], 0), uy = fmax(fabs(dy) - gh[1], 0);
+        double uz = fmax(fabs(dz) - gh[2], 0), rt = tb[3 * nt + t] * (1 + 1e-6) + 1e-9;
+        if (ux * ux + uy * uy + uz * uz < rt * rt) {
+          tl[ntl++] = t;
+        }
       }
     }
   }
@@ -267,7 +285,9 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
         urm_sub(r, xq[3 + k], gc);
         gk[0] = -INFINITY;
         if (urm_dot(r, r) < rg * rg) {
-          gk[0] = urm_contact_gap(&e, xq[3 + k], 0, gk + 1);
+          if (!out_box(r, gh)) {
+            gk[0] = urm_contact_gap(&e, xq[3 + k], 0, gk + 1);
+          }
           *depth = fmax(*depth, fmax(gk[0], 0));
         }
       }

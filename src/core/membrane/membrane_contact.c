@@ -166,3 +166,11 @@ double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, con
   urm_contact_force(s, dt, n, vr, A * depth, A, f);
   return depth;
 }
+
+
+void urm_shape_box(const urEllipsoid* e, double gh[3]) {
+  for (int k = 0; k < 3; k++) {
+    double w[3] = {e->r[0] * e->R[3 * k], e->r[1] * e->R[3 * k + 1], e->r[2] * e->R[3 * k + 2]};
+    gh[k] = ur_halfwidth_local(w, e->p) * (1 + 1e-9) + 1e-9;
+  }
+}
