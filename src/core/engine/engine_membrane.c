@@ -427,17 +427,15 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
     int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
     double* bx = nbx + 7 * (j0 / urMEM_CBLK);
-    for (int k = 0; k < 3; k++) {
-      bx[k] = INFINITY;
-      bx[3 + k] = -INFINITY;
-    }
-    for (int j = j0; j < j1; j++) {
+    double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (int j = j0; j < j1; j++) { /* in locals: no store through bx to reload */
       const double* xi = x + 3 * mb->free[j];
       for (int k = 0; k < 3; k++) {
-        bx[k] = xi[k] < bx[k] ? xi[k] : bx[k];
-        bx[3 + k] = xi[k] > bx[3 + k] ? xi[k] : bx[3 + k];
+        bb[k] = xi[k] < bb[k] ? xi[k] : bb[k];
+        bb[3 + k] = xi[k] > bb[3 + k] ? xi[k] : bb[3 + k];
       }
     }
+    memcpy(bx, bb, sizeof(bb));
     for (int k = 0; k < 3; k++) {
       lo[k] = bx[k] < lo[k] ? bx[k] : lo[k];
       hi[k] = bx[3 + k] > hi[k] ? bx[3 + k] : hi[k];
@@ -452,22 +450,18 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   // the boxes of urMEM_CBLK free triangles' spheres and their largest radius
   for (int j0 = 0; j0 < mb->ntfree; j0 += urMEM_CBLK) {
     int j1 = j0 + urMEM_CBLK < mb->ntfree ? j0 + urMEM_CBLK : mb->ntfree;
-    double* bx = tbx + 7 * (j0 / urMEM_CBLK);
-    for (int k = 0; k < 3; k++) {
-      bx[k] = INFINITY;
-      bx[3 + k] = -INFINITY;
-    }
-    bx[6] = 0;
+    double bb[7] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY, 0};
     for (int j = j0; j < j1; j++) {
       int t = mb->tfree[j];
       double r = tb[3 * nt + t];
       for (int k = 0; k < 3; k++) {
         double ct = tb[k * nt + t];
-        bx[k] = ct - r < bx[k] ? ct - r : bx[k];
-        bx[3 + k] = ct + r > bx[3 + k] ? ct + r : bx[3 + k];
+        bb[k] = ct - r < bb[k] ? ct - r : bb[k];
+        bb[3 + k] = ct + r > bb[3 + k] ? ct + r : bb[3 + k];
       }
-      bx[6] = r > bx[6] ? r : bx[6];
+      bb[6] = r > bb[6] ? r : bb[6];
     }
+    memcpy(tbx + 7 * (j0 / urMEM_CBLK), bb, sizeof(bb));
   }
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
