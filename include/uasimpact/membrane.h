@@ -159,8 +159,12 @@ void ur_mem_free(urMembrane* mb);
    scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb), then each
    triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none), then the
    engine's contact scratch (5 nt: each triangle's bounding sphere, a list of triangles; then
-   4 nn: each node's lumped normal stiffness for the implicit stiff penalty) */
+   7 doubles per urMEM_CBLK free nodes and per urMEM_CBLK free triangles: their boxes; then 4 nn:
+   each node's lumped normal stiffness for the implicit stiff penalty) */
 size_t ur_mem_state_size(const urMembrane* mb);
+
+/* free nodes (and free triangles) per box of the face contact's culling (engine_membrane.c) */
+#define urMEM_CBLK 8
 
 /* place the inflated bag rigidly: x = c + R x0, v = vc + w x (x - c) (world; R row-major body ->
    world, c the carrier origin, vc its velocity, w its angular velocity); gas at the inflated

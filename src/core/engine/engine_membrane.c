@@ -103,6 +103,26 @@ static void bodymotion(const urData* d, int b, double R[9], double c[3], double 
 }
 
 
+/* the squared distance from point p to the box bx (lo: bx[0..2], hi: bx[3..5]; 0 inside), summed
+   in the order of urm_dot: no larger than r . r for r = x - p of any point x in the box (each
+   rounding is monotone), so a box at q >= rg^2 holds no point that urm_dot(r, r) < rg^2 finds
+   within */
+static double box_gap2(const double* bx, const double p[3]) {
+  double q = 0;
+  for (int k = 0; k < 3; k++) {
+    double u = p[k] < bx[k] ? bx[k] - p[k] : p[k] > bx[3 + k] ? p[k] - bx[3 + k] : 0;
+    q += u * u;
+  }
+  return q;
+}
+
+
+/* is the point at r from the shape's centre outside its box gh (urm_shape_box) */
+static int out_box(const double r[3], const double gh[3]) {
+  return fabs(r[0]) > gh[0] || fabs(r[1]) > gh[1] || fabs(r[2]) > gh[2];
+}
+
+
 /* the contact pressure on sub-triangle corners q (of a triangle with nodes n3; corners 0-2 the
    nodes, 3-5 the midpoints of edges 01, 12, 20) of area a: the depths dq, normals nq, positions
    xq and velocities vq of the six points; forces added to f and fc (a midpoint's to its edge's
@@ -227,7 +247,12 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
    edge's two triangles share it: the same point, 0.5 (a + b) = 0.5 (b + a) bit for bit), and
    only the triangles whose bounding sphere (tb: centre and radius of each triangle, from
    urm_bag_loads, with a margin) reaches g's are tried: of the others no point is inside g's
-   sphere (the same triangles tried, the same bits). */
+   sphere (the same triangles tried, the same bits). Both lists are culled first by boxes of
+   urMEM_CBLK free nodes and of urMEM_CBLK free triangles' spheres (nbx, tbx, from urm_bag_loads):
+   a box out of g's sphere holds no node or sphere that the tests above would take. And by g's
+   own box (urm_shape_box): a point outside it is outside g (its depth -INFINITY without the gap's
+   evaluation), a triangle whose sphere misses it has no point inside g, so it adds no force and
+   no depth that another triangle reads (left out of the list, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
                            const double lo[3], const double hi[3], double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
@@ -246,6 +271,8 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   }
   urEllipsoid e;
   ur_geom_ellipsoid(m, d, g, &e);
+  double gh[3];
+  urm_shape_box(&e, gh);
   int body = m->geom[g].body;
   double R[9], o[3], vo[3], w[3], fsum = 0, ep = 0;
   bodymotion(d, body, R, o, vo, w);
@@ -256,30 +283,60 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   // the list of those tried (nt)
   double *gn = sc + urMEMS_N, *ge = gn + 4 * (size_t)nn;
   double *tb = sc + urMEMS_N + 44 * (size_t)mb->ntb, *tl = tb + 4 * (size_t)nt;
+  // the boxes of urMEM_CBLK free nodes and of urMEM_CBLK free triangles (after the triangle list)
+  const double *nbx = tl + nt, *tbx = nbx + 7 * (size_t)((nn + urMEM_CBLK - 1) / urMEM_CBLK);
   // beyond the explicit bound (kc_alpha > 1): each free node's lumped normal stiffness (4 nn,
-  // after the triangle list), for contact_implicit
-  double* kn = b->mem->spec.kc_alpha > 1 ? tl + nt : NULL;
+  // after the boxes), for contact_implicit
+  double* kn = b->mem->spec.kc_alpha > 1
+                   ? (double*)tbx + 7 * (size_t)((nt + urMEM_CBLK - 1) / urMEM_CBLK)
+                   : NULL;
   for (int j = 0; kn && j < mb->nfree; j++) {
     int i = mb->free[j];
     kn[4 * i] = kn[4 * i + 1] = kn[4 * i + 2] = kn[4 * i + 3] = 0;
   }
-  for (int j = 0; j < mb->nfree; j++) {
-    int i = mb->free[j];
-    double r[3];
-    urm_sub(r, x + 3 * i, gc);
-    gn[4 * i] = -INFINITY;
-    if (urm_dot(r, r) < rg * rg) {
-      gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
-      *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
+  for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
+    int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
+    if (box_gap2(nbx + 7 * (j0 / urMEM_CBLK), gc) >= rg * rg) {
+      for (int j = j0; j < j1; j++) {
+        gn[4 * mb->free[j]] = -INFINITY;
+      }
+      continue;
+    }
+    for (int j = j0; j < j1; j++) {
+      int i = mb->free[j];
+      double r[3];
+      urm_sub(r, x + 3 * i, gc);
+      gn[4 * i] = -INFINITY;
+      if (urm_dot(r, r) < rg * rg) {
+        if (!out_box(r, gh)) {
+          gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
+        }
+        *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
+      }
     }
   }
   int ntl = 0;
-  for (int j = 0; j < mb->ntfree; j++) {
-    int t = mb->tfree[j];
-    double dx = tb[t] - gc[0], dy = tb[nt + t] - gc[1], dz = tb[2 * nt + t] - gc[2];
-    double rr = (rg + tb[3 * nt + t]) * (1 + 1e-9);
-    if (dx * dx + dy * dy + dz * dz < rr * rr) {
-      tl[ntl++] = t;
+  for (int j0 = 0; j0 < mb->ntfree; j0 += urMEM_CBLK) {
+    // a sphere (c, r) in the box tries at |c - gc| < (rg + r)(1 + 1e-9), so at a box distance
+    // below rg + 1e-9 (rg + r): the margin far above the roundings of c -+ r and of the sums
+    const double* bx = tbx + 7 * (j0 / urMEM_CBLK);
+    double lim = rg + 1e-6 * (rg + bx[6]) + 1e-9;
+    if (box_gap2(bx, gc) >= lim * lim) {
+      continue;
+    }
+    int j1 = j0 + urMEM_CBLK < mb->ntfree ? j0 + urMEM_CBLK : mb->ntfree;
+    for (int j = j0; j < j1; j++) {
+      int t = mb->tfree[j];
+      double dx = tb[t] - gc[0], dy = tb[nt + t] - gc[1], dz = tb[2 * nt + t] - gc[2];
+      double rr = (rg + tb[3 * nt + t]) * (1 + 1e-9);
+      if (dx * dx + dy * dy + dz * dz < rr * rr) {
+        // the sphere against g's box (a margin above the roundings, as for the blocks)
+        double ux = fmax(fabs(dx) - gh[0], 0), uy = fmax(fabs(dy) - gh[1], 0);
+        double uz = fmax(fabs(dz) - gh[2], 0), rt = tb[3 * nt + t] * (1 + 1e-6) + 1e-9;
+        if (ux * ux + uy * uy + uz * uz < rt * rt) {
+          tl[ntl++] = t;
+        }
+      }
     }
   }
   for (int j = 0; j < ntl; j++) {
@@ -307,7 +364,9 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
         urm_sub(r, xq[3 + k], gc);
         gk[0] = -INFINITY;
         if (urm_dot(r, r) < rg * rg) {
-          gk[0] = urm_contact_gap(&e, xq[3 + k], 0, gk + 1);
+          if (!out_box(r, gh)) {
+            gk[0] = urm_contact_gap(&e, xq[3 + k], 0, gk + 1);
+          }
           *depth = fmax(*depth, fmax(gk[0], 0));
         }
       }
@@ -441,25 +500,50 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   ur_mem_forces(mb, st, f, NULL);
   memset(fc, 0, 3 * (size_t)nn * sizeof(double));
   sc[urMEMS_ECONT] = 0;
+  // the free nodes' box (the free nodes are those of invm != 0), built from the boxes of
+  // urMEM_CBLK of them (contact_geom's culling; after the triangles' spheres and their list)
+  int nt = mb->nt;
+  double* tb = sc + urMEMS_N + 44 * (size_t)mb->ntb;
+  double *nbx = tb + 5 * (size_t)nt, *tbx = nbx + 7 * (size_t)((nn + urMEM_CBLK - 1) / urMEM_CBLK);
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (int i = 0; i < nn; i++) {
-    if (mb->invm[i] != 0) {
+  for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
+    int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
+    double* bx = nbx + 7 * (j0 / urMEM_CBLK);
+    double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (int j = j0; j < j1; j++) { /* in locals: no store through bx to reload */
+      const double* xi = x + 3 * mb->free[j];
       for (int k = 0; k < 3; k++) {
-        double u = x[3 * i + k];
-        lo[k] = u < lo[k] ? u : lo[k];
-        hi[k] = u > hi[k] ? u : hi[k];
+        bb[k] = xi[k] < bb[k] ? xi[k] : bb[k];
+        bb[3 + k] = xi[k] > bb[3 + k] ? xi[k] : bb[3 + k];
       }
+    }
+    memcpy(bx, bb, sizeof(bb));
+    for (int k = 0; k < 3; k++) {
+      lo[k] = bx[k] < lo[k] ? bx[k] : lo[k];
+      hi[k] = bx[3 + k] > hi[k] ? bx[3 + k] : hi[k];
     }
   }
   // each triangle's bounding sphere (its centroid, the farthest node from it: every point of the
   // triangle within), SoA for contact_geom's test: ur_mem_forces left the centres and squared
   // radii at the end of the scratch (membrane.h), the radii here
-  {
-    int nt = mb->nt;
-    double* tb = sc + urMEMS_N + 44 * (size_t)mb->ntb;
-    for (int t = 0; t < nt; t++) {
-      tb[3 * nt + t] = sqrt(tb[3 * nt + t]); /* apart: a vector loop, no wait on each root */
+  for (int t = 0; t < nt; t++) {
+    tb[3 * nt + t] = sqrt(tb[3 * nt + t]); /* apart: a vector loop, no wait on each root */
+  }
+  // the boxes of urMEM_CBLK free triangles' spheres and their largest radius
+  for (int j0 = 0; j0 < mb->ntfree; j0 += urMEM_CBLK) {
+    int j1 = j0 + urMEM_CBLK < mb->ntfree ? j0 + urMEM_CBLK : mb->ntfree;
+    double bb[7] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY, 0};
+    for (int j = j0; j < j1; j++) {
+      int t = mb->tfree[j];
+      double r = tb[3 * nt + t];
+      for (int k = 0; k < 3; k++) {
+        double ct = tb[k * nt + t];
+        bb[k] = ct - r < bb[k] ? ct - r : bb[k];
+        bb[3 + k] = ct + r > bb[3 + k] ? ct + r : bb[3 + k];
+      }
+      bb[6] = r > bb[6] ? r : bb[6];
     }
+    memcpy(tbx + 7 * (j0 / urMEM_CBLK), bb, sizeof(bb));
   }
   for (int t = 0; t < b->ntarget; t++) {
     double dep;

@@ -167,3 +167,13 @@ double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, con
   urm_contact_force(s, dt, n, vr, A * depth, A, f);
   return depth;
 }
+
+
+void urm_shape_box(const urEllipsoid* e, double gh[3]) {
+  for (int k = 0; k < 3; k++) {
+    double w[3] = {e->r[0] * e->R[3 * k], e->r[1] * e->R[3 * k + 1], e->r[2] * e->R[3 * k + 2]};
+    // a superellipsoid's q-norm (q < 2) bounded by the 1-norm: no calls of pow
+    double h = e->p > 2 ? fabs(w[0]) + fabs(w[1]) + fabs(w[2]) : sqrt(urm_dot(w, w));
+    gh[k] = h * (1 + 1e-9) + 1e-9;
+  }
+}

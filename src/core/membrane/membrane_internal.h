@@ -58,6 +58,13 @@ void urm_tri_strain(const urMembrane* mb, const double* x, int t, double F[6], d
    point outside the shape (or outside its box: the cheap test), n then unset */
 double urm_contact_gap(const urEllipsoid* e, const double x[3], int full, double n[3]);
 
+/* the half-widths of shape e along the world axes (its support function there, a
+   superellipsoid's bounded by the 1-norm: every point of it within e->c -+ gh), widened by 1e-9
+   of themselves and 1e-9 m: a point farther out has a
+   gauge s > 1 far beyond the roundings, so urm_contact_gap (not full) returns -INFINITY for it
+   (the face contact's culling, engine_membrane.c) */
+void urm_shape_box(const urEllipsoid* e, double gh[3]);
+
 /* the contact force on a share of the fabric: the penalty pressure's integral I = int depth N
    (m^3) and the penetrated area A = int N (m^2) over the share, the outward normal n and the
    velocity vr relative to the body's surface; force (normal, damping, friction) in f, the

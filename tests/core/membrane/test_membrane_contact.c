@@ -6,7 +6,8 @@
  * outside: no force, depth 0; a rotated, moved shape gives the same in its own frame; the gap
  * outside on an axis is the first-order distance (s - 1) r; the clipped integrals of a linear
  * depth over a triangle (the face contact's pressure on its penetrated part) against the closed
- * forms of the whole triangle and of a corner cut at its edges' midpoints. */
+ * forms of the whole triangle and of a corner cut at its edges' midpoints; the shape's box along
+ * the world axes (urm_shape_box) holds every point of its surface and is reached by one. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -131,12 +132,61 @@ static void test_clip(void** state) {
 }
 
 
+static void test_shape_box(void** state) {
+  // turned about all three axes (a unit quaternion's matrix), degrees 2, 4 and 8: surface points
+  // r (u / ||u||_p) over directions u on a grid stay within the box, the farthest along each
+  // axis reach 0.99 of it (the grid's coarseness; a superellipsoid's box, the 1-norm bound of
+  // its support function, at least 1 / sqrt 3 of it); and a point just outside it is outside
+  static const double P[3] = {2, 4, 8};
+  double q[4] = {0.8, 0.3, -0.4, 0.2}, qn = 0;
+  for (int k = 0; k < 4; k++) {
+    qn += q[k] * q[k];
+  }
+  for (int k = 0; k < 4; k++) {
+    q[k] /= sqrt(qn);
+  }
+  double a = q[0], b = q[1], c = q[2], d = q[3];
+  urEllipsoid e = {{1, 2, 3},
+                   {a * a + b * b - c * c - d * d, 2 * (b * c - a * d), 2 * (b * d + a * c),
+                    2 * (b * c + a * d), a * a - b * b + c * c - d * d, 2 * (c * d - a * b),
+                    2 * (b * d - a * c), 2 * (c * d + a * b), a * a - b * b - c * c + d * d},
+                   {0.1, 0.2, 0.3},
+                   2};
+  for (int ip = 0; ip < 3; ip++) {
+    e.p = P[ip];
+    double gh[3], far[3] = {0, 0, 0};
+    urm_shape_box(&e, gh);
+    for (int i = 0; i <= 60; i++) {
+      for (int j = 0; j < 120; j++) {
+        double th = M_PI * i / 60, ph = 2 * M_PI * j / 120;
+        double u[3] = {sin(th) * cos(ph), sin(th) * sin(ph), cos(th)}, s = 0, x[3];
+        for (int k = 0; k < 3; k++) {
+          s += pow(fabs(u[k]), e.p);
+        }
+        s = pow(s, 1 / e.p);
+        world(&e, u[0] / s, u[1] / s, u[2] / s, x);
+        for (int k = 0; k < 3; k++) {
+          double r = fabs(x[k] - e.c[k]);
+          assert_true(r <= gh[k]);
+          far[k] = fmax(far[k], r);
+        }
+      }
+    }
+    for (int k = 0; k < 3; k++) {
+      assert_true(far[k] > (e.p > 2 ? 0.57 : 0.99) * gh[k]);
+      double x[3] = {e.c[0], e.c[1], e.c[2]}, n[3];
+      x[k] += 1.000001 * gh[k];
+      assert_true(urm_contact_gap(&e, x, 0, n) == -INFINITY);
+    }
+  }
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_axis_depth),
-      cmocka_unit_test(test_outside),
-      cmocka_unit_test(test_gap_outside),
-      cmocka_unit_test(test_clip),
+      cmocka_unit_test(test_axis_depth),  cmocka_unit_test(test_outside),
+      cmocka_unit_test(test_gap_outside), cmocka_unit_test(test_clip),
+      cmocka_unit_test(test_shape_box),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
