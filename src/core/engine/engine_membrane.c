@@ -152,7 +152,9 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
     for (int k = 0; k < 3; k++) {
       vr[k] = vq[p][k] - vo[k] - wr[k];
     }
-    double fn = urm_contact_force(s, m->opt.dt, nq[p], vr, I[u] * a, A[u] * a, fi);
+    // the friction capped on the point's whole share a / 3 of the quarter (the stiffness's
+    // shares: the caps of a node add up to its mass), penetrated or not
+    double fn = urm_contact_force(s, m->opt.dt, nq[p], vr, I[u] * a, A[u] * a, a / 3, fi);
     if (!(fn > 0)) {
       continue;
     }
