@@ -160,7 +160,8 @@ void ur_mem_free(urMembrane* mb);
    triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none), then the
    engine's contact scratch (5 nt: each triangle's bounding sphere, a list of triangles; then
    7 doubles per urMEM_CBLK free nodes and per urMEM_CBLK free triangles: their boxes; then 4 nn:
-   each node's lumped normal stiffness for the implicit stiff penalty) */
+   each node's lumped normal stiffness for the implicit stiff penalty, and 3 nn: its position
+   correction along the normal, the implicit midpoint's) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* free nodes (and free triangles) per box of the face contact's culling (engine_membrane.c) */

@@ -123,6 +123,18 @@ static int out_box(const double r[3], const double gh[3]) {
 }
 
 
+/* the contact scratch's per-node buffers after the culling boxes (membrane_mesh.c:
+   ur_mem_state_size): each free node's lumped normal stiffness (4 a node, contact_implicit's kn)
+   and the stiff contact's position correction along the normal (3 a node, applied by
+   urm_bags_advance) */
+static double* node_bufs(const urMembrane* mb, double* st) {
+  size_t nb = (size_t)(mb->nn + urMEM_CBLK - 1) / urMEM_CBLK;
+  size_t tb = (size_t)(mb->nt + urMEM_CBLK - 1) / urMEM_CBLK;
+  return st + 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt +
+         7 * (nb + tb);
+}
+
+
 /* the contact pressure on sub-triangle corners q (of a triangle with nodes n3; corners 0-2 the
    nodes, 3-5 the midpoints of edges 01, 12, 20) of area a: the depths dq, normals nq, positions
    xq and velocities vq of the six points; forces added to f and fc (a midpoint's to its edge's
@@ -186,18 +198,22 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    contact normal per node: each node in contact with the body has the lumped stiffness K (kn[0]:
    the penalty per area times the node's shares of the penetrated areas) along the mean normal n
    (kn[1..3], K-weighted) and the damping C = K 2 zeta_c sqrt(rhot / k_a). The explicit pass gave
-   it the force at the current depth; the force's change over the step, -K (the normal
-   displacement relative to the body's surface) - C (the change of the normal velocity), is solved
-   exactly with the node's other forces F held over the step: the displacement is h vn + b F / m
-   (b = h^2 (N + 1) / 2N for N sub-steps of the fabric, h^2 for one), the velocity change h F / m.
-   Backward Euler along the normal: stable for any K, so the penalty is not bounded by the step
-   (it damps the contact's own vibration: the undamped drop loses a few % of its energy, see
-   uasimpact-model(5)); the body's side stays explicit (its reaction this step), so K over all
+   it the force F0 at the current depth. Along n the node's contact spring is integrated by the
+   implicit midpoint rule: the spring's force over the step is its value at the middle of the
+   step's normal displacement D (relative to the body's surface), F0 - K D / 2, and the node moves
+   by the mean of its start and end velocities, D = h (vn + vn+) / 2 = h vn + b Fo / m +
+   h^2 Fc / 2m (Fc = F0 + the increment, the contact's force; Fo the node's other forces held
+   over the step, moved by the fabric's symplectic sub-steps: b = h^2 (N + 1) / 2N for N of them,
+   h^2 for one). The rule conserves the linear spring's energy exactly and is stable for any K;
+   the damping stays backward Euler (C times the change of the normal velocity). The increment
+   goes to f and fc, its reaction to the body; the position correction that turns the sub-steps'
+   h vn+ + b Fc / m into h^2 Fc / 2m, -(b - h^2 / 2) Fc / m along n, is added to cor (3 a node)
+   for urm_bags_advance. The body's side stays explicit (its reaction this step), so K over all
    nodes must stay within the step for the body's mass. The node's normal contact force stays
-   >= 0. The increment goes to f and fc, its reaction to the body; its normal sum returned. */
+   >= 0. Its normal sum returned. */
 static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb, int body,
                                const double o[3], const double vo[3], const double w[3], double* st,
-                               const double* kn) {
+                               const double* kn, double* cor) {
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
@@ -206,7 +222,7 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
   // the step's displacement under a force F held over it in N sub-steps: h v + bh2 F / m
   int nsub = (int)ceil(h / mb->dt_stable - 1e-9);
   nsub = nsub < 1 ? 1 : nsub;
-  double bh2 = h * h * (nsub + 1) / (2.0 * nsub);
+  double bh2 = h * h * (nsub + 1) / (2.0 * nsub), hh2 = 0.5 * h * h;
   for (int j = 0; j < mb->nfree; j++) {
     int i = mb->free[j];
     const double* ki = kn + 4 * i;
@@ -222,13 +238,16 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
     }
     double mi = mb->mass[i], C = K * cr;
     double vn = urm_dot(v + 3 * i, n) - urm_dot(vb, n), fo = urm_dot(f + 3 * i, n);
-    double df = -(K * (h * vn + bh2 * fo / mi) + C * h * fo / mi) / (1 + K * bh2 / mi + C * h / mi);
-    double fn = urm_dot(fc + 3 * i, n);
+    double fn = urm_dot(fc + 3 * i, n); /* F0: the contact's normal force so far */
+    // D = h vn + bh2 (fo - fn) / m + hh2 (fn + df) / m; df = -K D / 2 - C h (fo + df) / m
+    double df = -(0.5 * K * (h * vn + (bh2 * (fo - fn) + hh2 * fn) / mi) + C * h * fo / mi) /
+                (1 + 0.5 * K * hh2 / mi + C * h / mi);
     df = fmax(df, -fmax(fn, 0));
-    double fi[3] = {df * n[0], df * n[1], df * n[2]};
+    double fi[3] = {df * n[0], df * n[1], df * n[2]}, dc = -(bh2 - hh2) * (fn + df) / mi;
     for (int k = 0; k < 3; k++) {
       f[3 * i + k] += fi[k];
       fc[3 * i + k] += fi[k];
+      cor[3 * i + k] += dc * n[k];
     }
     double rf[3] = {-fi[0], -fi[1], -fi[2]};
     ur_apply_force(m, d, body, rf, x + 3 * i);
@@ -289,9 +308,7 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   const double *nbx = tl + nt, *tbx = nbx + 7 * (size_t)((nn + urMEM_CBLK - 1) / urMEM_CBLK);
   // beyond the explicit bound (kc_alpha > 1): each free node's lumped normal stiffness (4 nn,
   // after the boxes), for contact_implicit
-  double* kn = b->mem->spec.kc_alpha > 1
-                   ? (double*)tbx + 7 * (size_t)((nt + urMEM_CBLK - 1) / urMEM_CBLK)
-                   : NULL;
+  double* kn = b->mem->spec.kc_alpha > 1 ? node_bufs(mb, st) : NULL;
   for (int j = 0; kn && j < mb->nfree; j++) {
     int i = mb->free[j];
     kn[4 * i] = kn[4 * i + 1] = kn[4 * i + 2] = kn[4 * i + 3] = 0;
@@ -427,7 +444,7 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   }
   sc[urMEMS_ECONT] += ep;
   if (kn) {
-    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn);
+    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn, kn + 4 * (size_t)nn);
   }
   return fsum;
 }
@@ -501,6 +518,9 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   // fabric and gas, then contacts (near the free nodes' box)
   ur_mem_forces(mb, st, f, NULL);
   memset(fc, 0, 3 * (size_t)nn * sizeof(double));
+  if (mb->spec.kc_alpha > 1) { /* the stiff contact's position corrections (contact_implicit) */
+    memset(node_bufs(mb, st) + 4 * (size_t)nn, 0, 3 * (size_t)nn * sizeof(double));
+  }
   sc[urMEMS_ECONT] = 0;
   // the free nodes' box (the free nodes are those of invm != 0), built from the boxes of
   // urMEM_CBLK of them (contact_geom's culling; after the triangles' spheres and their list)
@@ -622,6 +642,13 @@ void urm_bags_advance(const urModel* m, urData* d) {
           v[3 * i + k] += h * im * f[3 * i + k];
           x[3 * i + k] += h * v[3 * i + k];
         }
+      }
+    }
+    // the stiff contact's implicit midpoint along the normal (contact_implicit)
+    if (mb->spec.kc_alpha > 1) {
+      const double* cor = node_bufs(mb, st) + 4 * (size_t)nn;
+      for (int k = 0; k < 3 * nn; k++) {
+        x[k] += cor[k];
       }
     }
     sc[urMEMS_MGAS] -= ur_mem_outflow(mb, st, m->opt.dt);

@@ -150,14 +150,19 @@ static void test_energy_damped(void** state) {
 }
 
 
-/* the stiff penalty, implicit along the normal (kc_alpha 20): stable, never gains energy; its
-   backward Euler damps the contact's own vibration, so the undamped drop loses a few % (3.3 %
-   measured; 1.4, 1.8, 4.9 % at kc_alpha 2, 5, 200: a reason the default stays explicit) */
+/* the stiff penalty, implicit along the normal (kc_alpha 20): stable, never gains energy. Its
+   normal spring is integrated by the implicit midpoint rule (energy-neutral for a linear spring);
+   the undamped drop still loses 2.6 % (1.05, 1.3, 4.5 % at kc_alpha 2, 5, 200), against 3.3 %
+   (1.4, 1.8, 4.9 %) with the backward Euler it replaced, so <= 3 % fails with that. The rest is
+   the linearisation, not the rule: kc_alpha 1.01 (implicit) loses 0.78 % where 1 (explicit)
+   loses 0.02 %: the lumped tangent stiffness taken at the step's start misses the contact
+   patch's growth over the step (tests/MEASUREMENTS.md). Issue 32's 1 % holds for the explicit
+   law only; a reason the default stays explicit */
 static void test_energy_stiff(void** state) {
   double lo, hi, vend;
   urModel* m = bagmodel_alpha(0, 20);
   drop(m, 4, &lo, &hi, &vend);
-  assert_true(hi <= 1e-3 && lo > -0.05);
+  assert_true(hi <= 1e-3 && lo > -0.03);
   ur_model_free(m);
   m = bagmodel_alpha(1, 20);
   drop(m, 4, &lo, &hi, &vend);
