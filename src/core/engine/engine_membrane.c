@@ -146,7 +146,7 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
                           const double o[3], const double vo[3], const double w[3], const int* n3,
                           const int q[3], const double dq[6], double nq[6][3], double xq[6][3],
                           double vq[6][3], double a, double* f, double* fc, double* kn,
-                          double* ep) {
+                          const int* e3, double* ke, int* nel, double* ep) {
   static const int edge[3][2] = {{0, 1}, {1, 2}, {2, 0}};
   const urMemSpec* s = &mb->spec;
   double dd[3] = {dq[q[0]], dq[q[1]], dq[q[2]]}, I[3], A[3], E, fsum = 0;
@@ -180,12 +180,22 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
         fc[3 * nodes[j] + k] += share * fi[k];
       }
       if (kn) {
-        double* kj = kn + 4 * nodes[j];
-        kj[0] += kp;
+        double* kj = kn + 5 * nodes[j];
+        kj[0] += share * kp; /* the diagonal: a midpoint moves by half a node's motion */
         for (int k = 0; k < 3; k++) {
           kj[1 + k] += kp * nq[p][k];
         }
+        kj[4] += kp; /* the row sum */
       }
+    }
+    if (kn && p >= 3) { /* the coupling of the edge's two nodes through its midpoint */
+      double* ek = ke + 3 * (size_t)e3[p - 3];
+      if (ek[0] == 0) {
+        ke[3 * (size_t)mb->ne + (*nel)++] = e3[p - 3];
+        ek[1] = nodes[0];
+        ek[2] = nodes[1];
+      }
+      ek[0] += 0.5 * kp;
     }
     double rf[3] = {-fi[0], -fi[1], -fi[2]};
     ur_apply_force(m, d, body, rf, xq[p]);
@@ -195,25 +205,33 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
 
 
 /* the stiff penalty (kc_alpha > 1, beyond the explicit bound), linearly implicit along the
-   contact normal per node: each node in contact with the body has the lumped stiffness K (kn[0]:
-   the penalty per area times the node's shares of the penetrated areas) along the mean normal n
-   (kn[1..3], K-weighted) and the damping C = K 2 zeta_c sqrt(rhot / k_a). The explicit pass gave
-   it the force F0 at the current depth. Along n the node's contact spring is integrated by the
-   implicit midpoint rule: the spring's force over the step is its value at the middle of the
-   step's normal displacement D (relative to the body's surface), F0 - K D / 2, and the node moves
-   by the mean of its start and end velocities, D = h (vn + vn+) / 2 = h vn + b Fo / m +
-   h^2 Fc / 2m (Fc = F0 + the increment, the contact's force; Fo the node's other forces held
-   over the step, moved by the fabric's symplectic sub-steps: b = h^2 (N + 1) / 2N for N of them,
-   h^2 for one). The rule conserves the linear spring's energy exactly and is stable for any K;
-   the damping stays backward Euler (C times the change of the normal velocity). The increment
-   goes to f and fc, its reaction to the body; the position correction that turns the sub-steps'
-   h vn+ + b Fc / m into h^2 Fc / 2m, -(b - h^2 / 2) Fc / m along n, is added to cor (3 a node)
-   for urm_bags_advance. The body's side stays explicit (its reaction this step), so K over all
-   nodes must stay within the step for the body's mass. The node's normal contact force stays
-   >= 0. Its normal sum returned. */
+   contact normal per node: each node in contact with the body has the stiffness of its own
+   normal motion Kd (kn[0]: the penalty per area times its corner points' penetrated areas and a
+   quarter of its edge midpoints': a midpoint moves by half a node's motion, and half its force
+   goes to the node) along the mean normal n (kn[1..3], weighted by the row sums), the damping
+   C = Kr 2 zeta_c sqrt(rhot / k_a) on the row sum Kr (kn[4]: the lumped stiffness), and each
+   edge in contact couples its two nodes by a quarter of its midpoint's stiffness (ke: the
+   consistent tangent of the penalty's force on the nodes' normal motions). The explicit pass
+   gave each node the force F0 at the current depth. Along n the contact springs are integrated
+   by the implicit midpoint rule: the springs' force over the step is their value at the middle
+   of the step's normal displacements D (relative to the body's surface), F0 - (Kd D_i + sum K_ij
+   D_j) / 2, and each node moves by the mean of its start and end velocities, D = h (vn + vn+) / 2
+   = h vn + b Fo / m + h^2 Fc / 2m (Fc = F0 + the increment, the contact's force; Fo the node's
+   other forces held over the step, moved by the fabric's symplectic sub-steps: b = h^2 (N + 1) /
+   2N for N of them, h^2 for one). The rule conserves a linear spring's energy and is stable for
+   any stiffness; the damping stays backward Euler (C times the change of the normal velocity).
+   The coupled increments are solved by Jacobi sweeps (diagonally dominant: a node's own
+   stiffness is at least its couplings'), to 1e-12 of the largest or 100 sweeps, in the free
+   nodes' order (the same bits in lanes). The increments go to f and fc, their reactions to the
+   body; the position correction that turns the sub-steps' h vn+ + b Fc / m into h^2 Fc / 2m,
+   -(b - h^2 / 2) Fc / m along n, is added to cor (3 a node) for urm_bags_advance; wk holds 3 nn
+   of work. The body's side stays explicit (its reaction this step), so the stiffness over all
+   nodes must stay within the step for the body's mass. A node's normal contact force stays
+   >= 0. The normal sum returned. */
 static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb, int body,
                                const double o[3], const double vo[3], const double w[3], double* st,
-                               const double* kn, double* cor) {
+                               const double* kn, double* cor, double* wk, const double* ke,
+                               int nel) {
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
@@ -223,11 +241,15 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
   int nsub = (int)ceil(h / mb->dt_stable - 1e-9);
   nsub = nsub < 1 ? 1 : nsub;
   double bh2 = h * h * (nsub + 1) / (2.0 * nsub), hh2 = 0.5 * h * h;
+  // per node in wk (3 a node): the displacement without the increment D0, the increment df, the
+  // coupling sum S; nodes out of contact have D0 = 0 and df = 0 (S reads their D as 0)
+  double *D0 = wk, *df = wk + nn, *S = wk + 2 * nn;
   for (int j = 0; j < mb->nfree; j++) {
     int i = mb->free[j];
-    const double* ki = kn + 4 * i;
-    double K = ki[0], nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
-    if (!(K > 0) || !(nl > 0)) {
+    D0[i] = df[i] = 0;
+    const double* ki = kn + 5 * i;
+    double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
+    if (!(ki[0] > 0) || !(nl > 0)) {
       continue;
     }
     double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl}, r[3], wr[3], vb[3];
@@ -236,14 +258,55 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
     for (int k = 0; k < 3; k++) {
       vb[k] = vo[k] + wr[k];
     }
-    double mi = mb->mass[i], C = K * cr;
+    double mi = mb->mass[i];
     double vn = urm_dot(v + 3 * i, n) - urm_dot(vb, n), fo = urm_dot(f + 3 * i, n);
-    double fn = urm_dot(fc + 3 * i, n); /* F0: the contact's normal force so far */
-    // D = h vn + bh2 (fo - fn) / m + hh2 (fn + df) / m; df = -K D / 2 - C h (fo + df) / m
-    double df = -(0.5 * K * (h * vn + (bh2 * (fo - fn) + hh2 * fn) / mi) + C * h * fo / mi) /
-                (1 + 0.5 * K * hh2 / mi + C * h / mi);
-    df = fmax(df, -fmax(fn, 0));
-    double fi[3] = {df * n[0], df * n[1], df * n[2]}, dc = -(bh2 - hh2) * (fn + df) / mi;
+    double fn = urm_dot(fc + 3 * i, n);
+    D0[i] = h * vn + (bh2 * (fo - fn) + hh2 * fn) / mi;
+  }
+  // Jacobi sweeps on df_i (1 + Kd hh2 / 2m + C h / m) = -(Kd D0_i + S_i) / 2 - C h fo / m, with
+  // S_i = sum over the edges K_ij D_j, D_j = D0_j + hh2 df_j / m_j; a node's force kept >= 0
+  for (int it = 0; it < 100; it++) {
+    for (int j = 0; j < mb->nfree; j++) {
+      S[mb->free[j]] = 0;
+    }
+    for (int e = 0; e < nel; e++) {
+      const double* ek = ke + 3 * (size_t)ke[3 * (size_t)mb->ne + e];
+      int a = (int)ek[1], b = (int)ek[2];
+      S[a] += ek[0] * (D0[b] + hh2 * df[b] / mb->mass[b]);
+      S[b] += ek[0] * (D0[a] + hh2 * df[a] / mb->mass[a]);
+    }
+    double dmax = 0, fmx = 0;
+    for (int j = 0; j < mb->nfree; j++) {
+      int i = mb->free[j];
+      const double* ki = kn + 5 * i;
+      double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
+      if (!(ki[0] > 0) || !(nl > 0)) {
+        continue;
+      }
+      double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl};
+      double mi = mb->mass[i], K = ki[0], C = ki[4] * cr;
+      double fo = urm_dot(f + 3 * i, n), fn = urm_dot(fc + 3 * i, n);
+      double nd =
+          -(0.5 * (K * D0[i] + S[i]) + C * h * fo / mi) / (1 + 0.5 * K * hh2 / mi + C * h / mi);
+      nd = fmax(nd, -fmax(fn, 0));
+      dmax = fmax(dmax, fabs(nd - df[i]));
+      fmx = fmax(fmx, fabs(nd));
+      df[i] = nd;
+    }
+    if (dmax <= 1e-12 * fmx) {
+      break;
+    }
+  }
+  for (int j = 0; j < mb->nfree; j++) {
+    int i = mb->free[j];
+    const double* ki = kn + 5 * i;
+    double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
+    if (!(ki[0] > 0) || !(nl > 0)) {
+      continue;
+    }
+    double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl}, mi = mb->mass[i];
+    double fn = urm_dot(fc + 3 * i, n), dc = -(bh2 - hh2) * (fn + df[i]) / mi;
+    double fi[3] = {df[i] * n[0], df[i] * n[1], df[i] * n[2]};
     for (int k = 0; k < 3; k++) {
       f[3 * i + k] += fi[k];
       fc[3 * i + k] += fi[k];
@@ -251,7 +314,7 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
     }
     double rf[3] = {-fi[0], -fi[1], -fi[2]};
     ur_apply_force(m, d, body, rf, x + 3 * i);
-    fsum += df;
+    fsum += df[i];
   }
   return fsum;
 }
@@ -309,9 +372,16 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   // beyond the explicit bound (kc_alpha > 1): each free node's lumped normal stiffness (4 nn,
   // after the boxes), for contact_implicit
   double* kn = b->mem->spec.kc_alpha > 1 ? node_bufs(mb, st) : NULL;
+  // after kn (5 nn) the position corrections (3 nn), the implicit solve's work (3 nn), each
+  // edge's coupling (3 ne: stiffness, its two nodes) and the list of the edges coupled (ne)
+  double* ke = kn ? kn + 11 * (size_t)nn : NULL;
+  int nel = 0;
   for (int j = 0; kn && j < mb->nfree; j++) {
     int i = mb->free[j];
-    kn[4 * i] = kn[4 * i + 1] = kn[4 * i + 2] = kn[4 * i + 3] = 0;
+    kn[5 * i] = kn[5 * i + 1] = kn[5 * i + 2] = kn[5 * i + 3] = kn[5 * i + 4] = 0;
+  }
+  if (ke) {
+    memset(ke, 0, 3 * (size_t)mb->ne * sizeof(double));
   }
   for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
     int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
@@ -438,13 +508,15 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     for (int j = 0; j < 4; j++) {
       const int* qj = sub[j];
       if (dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0) {
-        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, kn, &ep);
+        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, kn, e3, ke,
+                            &nel, &ep);
       }
     }
   }
   sc[urMEMS_ECONT] += ep;
   if (kn) {
-    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn, kn + 4 * (size_t)nn);
+    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn, kn + 5 * (size_t)nn,
+                             kn + 8 * (size_t)nn, ke, nel);
   }
   return fsum;
 }
@@ -519,7 +591,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   ur_mem_forces(mb, st, f, NULL);
   memset(fc, 0, 3 * (size_t)nn * sizeof(double));
   if (mb->spec.kc_alpha > 1) { /* the stiff contact's position corrections (contact_implicit) */
-    memset(node_bufs(mb, st) + 4 * (size_t)nn, 0, 3 * (size_t)nn * sizeof(double));
+    memset(node_bufs(mb, st) + 5 * (size_t)nn, 0, 3 * (size_t)nn * sizeof(double));
   }
   sc[urMEMS_ECONT] = 0;
   // the free nodes' box (the free nodes are those of invm != 0), built from the boxes of
@@ -646,7 +718,7 @@ void urm_bags_advance(const urModel* m, urData* d) {
     }
     // the stiff contact's implicit midpoint along the normal (contact_implicit)
     if (mb->spec.kc_alpha > 1) {
-      const double* cor = node_bufs(mb, st) + 4 * (size_t)nn;
+      const double* cor = node_bufs(mb, st) + 5 * (size_t)nn;
       for (int k = 0; k < 3 * nn; k++) {
         x[k] += cor[k];
       }
