@@ -159,8 +159,10 @@ void ur_mem_free(urMembrane* mb);
    scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb), then each
    triangle's warm start of the wrinkled law (8 ntb: 2 per triangle, 0 when none), then the
    engine's contact scratch (5 nt: each triangle's bounding sphere, a list of triangles; then
-   7 doubles per urMEM_CBLK free nodes and per urMEM_CBLK free triangles: their boxes; then 4 nn:
-   each node's lumped normal stiffness for the implicit stiff penalty) */
+   7 doubles per urMEM_CBLK free nodes and per urMEM_CBLK free triangles: their boxes; then for
+   the implicit stiff penalty 5 nn: each node's normal stiffness, normal and lumped stiffness, 3
+   nn: its position correction along the normal (the implicit midpoint's), 3 nn: the solve's
+   work, 3 ne: each edge's coupling and nodes, ne: the list of the edges coupled) */
 size_t ur_mem_state_size(const urMembrane* mb);
 
 /* free nodes (and free triangles) per box of the face contact's culling (engine_membrane.c) */

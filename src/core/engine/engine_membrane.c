@@ -123,6 +123,18 @@ static int out_box(const double r[3], const double gh[3]) {
 }
 
 
+/* the contact scratch's per-node buffers after the culling boxes (membrane_mesh.c:
+   ur_mem_state_size): each free node's lumped normal stiffness (4 a node, contact_implicit's kn)
+   and the stiff contact's position correction along the normal (3 a node, applied by
+   urm_bags_advance) */
+static double* node_bufs(const urMembrane* mb, double* st) {
+  size_t nb = (size_t)(mb->nn + urMEM_CBLK - 1) / urMEM_CBLK;
+  size_t tb = (size_t)(mb->nt + urMEM_CBLK - 1) / urMEM_CBLK;
+  return st + 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt +
+         7 * (nb + tb);
+}
+
+
 /* the contact pressure on sub-triangle corners q (of a triangle with nodes n3; corners 0-2 the
    nodes, 3-5 the midpoints of edges 01, 12, 20) of area a: the depths dq, normals nq, positions
    xq and velocities vq of the six points; forces added to f and fc (a midpoint's to its edge's
@@ -134,7 +146,7 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
                           const double o[3], const double vo[3], const double w[3], const int* n3,
                           const int q[3], const double dq[6], double nq[6][3], double xq[6][3],
                           double vq[6][3], double a, double* f, double* fc, double* kn,
-                          double* ep) {
+                          const int* e3, double* ke, int* nel, double* ep) {
   static const int edge[3][2] = {{0, 1}, {1, 2}, {2, 0}};
   const urMemSpec* s = &mb->spec;
   double dd[3] = {dq[q[0]], dq[q[1]], dq[q[2]]}, I[3], A[3], E, fsum = 0;
@@ -152,7 +164,9 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
     for (int k = 0; k < 3; k++) {
       vr[k] = vq[p][k] - vo[k] - wr[k];
     }
-    double fn = urm_contact_force(s, m->opt.dt, nq[p], vr, I[u] * a, A[u] * a, fi);
+    // the friction capped on the point's whole share a / 3 of the quarter (the stiffness's
+    // shares: the caps of a node add up to its mass), penetrated or not
+    double fn = urm_contact_force(s, m->opt.dt, nq[p], vr, I[u] * a, A[u] * a, a / 3, fi);
     if (!(fn > 0)) {
       continue;
     }
@@ -166,12 +180,22 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
         fc[3 * nodes[j] + k] += share * fi[k];
       }
       if (kn) {
-        double* kj = kn + 4 * nodes[j];
-        kj[0] += kp;
+        double* kj = kn + 5 * nodes[j];
+        kj[0] += share * kp; /* the diagonal: a midpoint moves by half a node's motion */
         for (int k = 0; k < 3; k++) {
           kj[1 + k] += kp * nq[p][k];
         }
+        kj[4] += kp; /* the row sum */
       }
+    }
+    if (kn && p >= 3) { /* the coupling of the edge's two nodes through its midpoint */
+      double* ek = ke + 3 * (size_t)e3[p - 3];
+      if (ek[0] == 0) {
+        ke[3 * (size_t)mb->ne + (*nel)++] = e3[p - 3];
+        ek[1] = nodes[0];
+        ek[2] = nodes[1];
+      }
+      ek[0] += 0.5 * kp;
     }
     double rf[3] = {-fi[0], -fi[1], -fi[2]};
     ur_apply_force(m, d, body, rf, xq[p]);
@@ -181,21 +205,33 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
 
 
 /* the stiff penalty (kc_alpha > 1, beyond the explicit bound), linearly implicit along the
-   contact normal per node: each node in contact with the body has the lumped stiffness K (kn[0]:
-   the penalty per area times the node's shares of the penetrated areas) along the mean normal n
-   (kn[1..3], K-weighted) and the damping C = K 2 zeta_c sqrt(rhot / k_a). The explicit pass gave
-   it the force at the current depth; the force's change over the step, -K (the normal
-   displacement relative to the body's surface) - C (the change of the normal velocity), is solved
-   exactly with the node's other forces F held over the step: the displacement is h vn + b F / m
-   (b = h^2 (N + 1) / 2N for N sub-steps of the fabric, h^2 for one), the velocity change h F / m.
-   Backward Euler along the normal: stable for any K, so the penalty is not bounded by the step
-   (it damps the contact's own vibration: the undamped drop loses a few % of its energy, see
-   uasimpact-model(5)); the body's side stays explicit (its reaction this step), so K over all
-   nodes must stay within the step for the body's mass. The node's normal contact force stays
-   >= 0. The increment goes to f and fc, its reaction to the body; its normal sum returned. */
+   contact normal per node: each node in contact with the body has the stiffness of its own
+   normal motion Kd (kn[0]: the penalty per area times its corner points' penetrated areas and a
+   quarter of its edge midpoints': a midpoint moves by half a node's motion, and half its force
+   goes to the node) along the mean normal n (kn[1..3], weighted by the row sums), the damping
+   C = Kr 2 zeta_c sqrt(rhot / k_a) on the row sum Kr (kn[4]: the lumped stiffness), and each
+   edge in contact couples its two nodes by a quarter of its midpoint's stiffness (ke: the
+   consistent tangent of the penalty's force on the nodes' normal motions). The explicit pass
+   gave each node the force F0 at the current depth. Along n the contact springs are integrated
+   by the implicit midpoint rule: the springs' force over the step is their value at the middle
+   of the step's normal displacements D (relative to the body's surface), F0 - (Kd D_i + sum K_ij
+   D_j) / 2, and each node moves by the mean of its start and end velocities, D = h (vn + vn+) / 2
+   = h vn + b Fo / m + h^2 Fc / 2m (Fc = F0 + the increment, the contact's force; Fo the node's
+   other forces held over the step, moved by the fabric's symplectic sub-steps: b = h^2 (N + 1) /
+   2N for N of them, h^2 for one). The rule conserves a linear spring's energy and is stable for
+   any stiffness; the damping stays backward Euler (C times the change of the normal velocity).
+   The coupled increments are solved by Jacobi sweeps (diagonally dominant: a node's own
+   stiffness is at least its couplings'), to 1e-12 of the largest or 100 sweeps, in the free
+   nodes' order (the same bits in lanes). The increments go to f and fc, their reactions to the
+   body; the position correction that turns the sub-steps' h vn+ + b Fc / m into h^2 Fc / 2m,
+   -(b - h^2 / 2) Fc / m along n, is added to cor (3 a node) for urm_bags_advance; wk holds 3 nn
+   of work. The body's side stays explicit (its reaction this step), so the stiffness over all
+   nodes must stay within the step for the body's mass. A node's normal contact force stays
+   >= 0. The normal sum returned. */
 static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb, int body,
                                const double o[3], const double vo[3], const double w[3], double* st,
-                               const double* kn) {
+                               const double* kn, double* cor, double* wk, const double* ke,
+                               int nel) {
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
@@ -204,12 +240,16 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
   // the step's displacement under a force F held over it in N sub-steps: h v + bh2 F / m
   int nsub = (int)ceil(h / mb->dt_stable - 1e-9);
   nsub = nsub < 1 ? 1 : nsub;
-  double bh2 = h * h * (nsub + 1) / (2.0 * nsub);
+  double bh2 = h * h * (nsub + 1) / (2.0 * nsub), hh2 = 0.5 * h * h;
+  // per node in wk (3 a node): the displacement without the increment D0, the increment df, the
+  // coupling sum S; nodes out of contact have D0 = 0 and df = 0 (S reads their D as 0)
+  double *D0 = wk, *df = wk + nn, *S = wk + 2 * nn;
   for (int j = 0; j < mb->nfree; j++) {
     int i = mb->free[j];
-    const double* ki = kn + 4 * i;
-    double K = ki[0], nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
-    if (!(K > 0) || !(nl > 0)) {
+    D0[i] = df[i] = 0;
+    const double* ki = kn + 5 * i;
+    double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
+    if (!(ki[0] > 0) || !(nl > 0)) {
       continue;
     }
     double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl}, r[3], wr[3], vb[3];
@@ -218,19 +258,63 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
     for (int k = 0; k < 3; k++) {
       vb[k] = vo[k] + wr[k];
     }
-    double mi = mb->mass[i], C = K * cr;
+    double mi = mb->mass[i];
     double vn = urm_dot(v + 3 * i, n) - urm_dot(vb, n), fo = urm_dot(f + 3 * i, n);
-    double df = -(K * (h * vn + bh2 * fo / mi) + C * h * fo / mi) / (1 + K * bh2 / mi + C * h / mi);
     double fn = urm_dot(fc + 3 * i, n);
-    df = fmax(df, -fmax(fn, 0));
-    double fi[3] = {df * n[0], df * n[1], df * n[2]};
+    D0[i] = h * vn + (bh2 * (fo - fn) + hh2 * fn) / mi;
+  }
+  // Jacobi sweeps on df_i (1 + Kd hh2 / 2m + C h / m) = -(Kd D0_i + S_i) / 2 - C h fo / m, with
+  // S_i = sum over the edges K_ij D_j, D_j = D0_j + hh2 df_j / m_j; a node's force kept >= 0
+  for (int it = 0; it < 100; it++) {
+    for (int j = 0; j < mb->nfree; j++) {
+      S[mb->free[j]] = 0;
+    }
+    for (int e = 0; e < nel; e++) {
+      const double* ek = ke + 3 * (size_t)ke[3 * (size_t)mb->ne + e];
+      int a = (int)ek[1], b = (int)ek[2];
+      S[a] += ek[0] * (D0[b] + hh2 * df[b] / mb->mass[b]);
+      S[b] += ek[0] * (D0[a] + hh2 * df[a] / mb->mass[a]);
+    }
+    double dmax = 0, fmx = 0;
+    for (int j = 0; j < mb->nfree; j++) {
+      int i = mb->free[j];
+      const double* ki = kn + 5 * i;
+      double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
+      if (!(ki[0] > 0) || !(nl > 0)) {
+        continue;
+      }
+      double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl};
+      double mi = mb->mass[i], K = ki[0], C = ki[4] * cr;
+      double fo = urm_dot(f + 3 * i, n), fn = urm_dot(fc + 3 * i, n);
+      double nd =
+          -(0.5 * (K * D0[i] + S[i]) + C * h * fo / mi) / (1 + 0.5 * K * hh2 / mi + C * h / mi);
+      nd = fmax(nd, -fmax(fn, 0));
+      dmax = fmax(dmax, fabs(nd - df[i]));
+      fmx = fmax(fmx, fabs(nd));
+      df[i] = nd;
+    }
+    if (dmax <= 1e-12 * fmx) {
+      break;
+    }
+  }
+  for (int j = 0; j < mb->nfree; j++) {
+    int i = mb->free[j];
+    const double* ki = kn + 5 * i;
+    double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
+    if (!(ki[0] > 0) || !(nl > 0)) {
+      continue;
+    }
+    double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl}, mi = mb->mass[i];
+    double fn = urm_dot(fc + 3 * i, n), dc = -(bh2 - hh2) * (fn + df[i]) / mi;
+    double fi[3] = {df[i] * n[0], df[i] * n[1], df[i] * n[2]};
     for (int k = 0; k < 3; k++) {
       f[3 * i + k] += fi[k];
       fc[3 * i + k] += fi[k];
+      cor[3 * i + k] += dc * n[k];
     }
     double rf[3] = {-fi[0], -fi[1], -fi[2]};
     ur_apply_force(m, d, body, rf, x + 3 * i);
-    fsum += df;
+    fsum += df[i];
   }
   return fsum;
 }
@@ -287,12 +371,17 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   const double *nbx = tl + nt, *tbx = nbx + 7 * (size_t)((nn + urMEM_CBLK - 1) / urMEM_CBLK);
   // beyond the explicit bound (kc_alpha > 1): each free node's lumped normal stiffness (4 nn,
   // after the boxes), for contact_implicit
-  double* kn = b->mem->spec.kc_alpha > 1
-                   ? (double*)tbx + 7 * (size_t)((nt + urMEM_CBLK - 1) / urMEM_CBLK)
-                   : NULL;
+  double* kn = b->mem->spec.kc_alpha > 1 ? node_bufs(mb, st) : NULL;
+  // after kn (5 nn) the position corrections (3 nn), the implicit solve's work (3 nn), each
+  // edge's coupling (3 ne: stiffness, its two nodes) and the list of the edges coupled (ne)
+  double* ke = kn ? kn + 11 * (size_t)nn : NULL;
+  int nel = 0;
   for (int j = 0; kn && j < mb->nfree; j++) {
     int i = mb->free[j];
-    kn[4 * i] = kn[4 * i + 1] = kn[4 * i + 2] = kn[4 * i + 3] = 0;
+    kn[5 * i] = kn[5 * i + 1] = kn[5 * i + 2] = kn[5 * i + 3] = kn[5 * i + 4] = 0;
+  }
+  if (ke) {
+    memset(ke, 0, 3 * (size_t)mb->ne * sizeof(double));
   }
   for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
     int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
@@ -419,13 +508,15 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     for (int j = 0; j < 4; j++) {
       const int* qj = sub[j];
       if (dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0) {
-        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, kn, &ep);
+        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, kn, e3, ke,
+                            &nel, &ep);
       }
     }
   }
   sc[urMEMS_ECONT] += ep;
   if (kn) {
-    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn);
+    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn, kn + 5 * (size_t)nn,
+                             kn + 8 * (size_t)nn, ke, nel);
   }
   return fsum;
 }
@@ -499,6 +590,9 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   // fabric and gas, then contacts (near the free nodes' box)
   ur_mem_forces(mb, st, f, NULL);
   memset(fc, 0, 3 * (size_t)nn * sizeof(double));
+  if (mb->spec.kc_alpha > 1) { /* the stiff contact's position corrections (contact_implicit) */
+    memset(node_bufs(mb, st) + 5 * (size_t)nn, 0, 3 * (size_t)nn * sizeof(double));
+  }
   sc[urMEMS_ECONT] = 0;
   // the free nodes' box (the free nodes are those of invm != 0), built from the boxes of
   // urMEM_CBLK of them (contact_geom's culling; after the triangles' spheres and their list)
@@ -620,6 +714,13 @@ void urm_bags_advance(const urModel* m, urData* d) {
           v[3 * i + k] += h * im * f[3 * i + k];
           x[3 * i + k] += h * v[3 * i + k];
         }
+      }
+    }
+    // the stiff contact's implicit midpoint along the normal (contact_implicit)
+    if (mb->spec.kc_alpha > 1) {
+      const double* cor = node_bufs(mb, st) + 5 * (size_t)nn;
+      for (int k = 0; k < 3 * nn; k++) {
+        x[k] += cor[k];
       }
     }
     sc[urMEMS_MGAS] -= ur_mem_outflow(mb, st, m->opt.dt);

@@ -13,7 +13,8 @@
  * that halving dt leaves the contact as it was; a stiffer alpha is made implicit along the normal
  * by the engine, engine_membrane.c), with damping 2 zeta sqrt(k_a rhot) per area on the approach
  * rate and regularised Coulomb friction on the sliding velocity (its viscous slope capped at the
- * mass over dt, which stops the sliding in one step at most). */
+ * share's whole mass over max(dt, kc_dt), which stops the sliding in one step at most and is the
+ * same at every dt below kc_dt). */
 #include <math.h>
 
 #include "membrane_internal.h"
@@ -66,7 +67,7 @@ double urm_contact_gap(const urEllipsoid* e, const double x[3], int full, double
 
 
 double urm_contact_force(const urMemSpec* s, double dt, const double n[3], const double vr[3],
-                         double I, double A, double f[3]) {
+                         double I, double A, double ac, double f[3]) {
   f[0] = f[1] = f[2] = 0;
   double dk = fmax(dt, s->kc_dt), ka = s->kc_alpha * s->rhot / (dk * dk);
   double ca = 2 * s->zeta_c * sqrt(ka * s->rhot);
@@ -80,8 +81,11 @@ double urm_contact_force(const urMemSpec* s, double dt, const double n[3], const
     vt[k] = vr[k] - vn * n[k];
   }
   double st = sqrt(urm_dot(vt, vt));
-  // at most what stops the sliding in one step (explicit stability of the regularised law)
-  double ff = fmin(s->mu * fn / fmax(st, s->v_eps), s->rhot * A / dt);
+  // at most what stops the share's mass sliding in one step of the penalty (explicit stability
+  // of the regularised law: rhot ac / dk <= its mass over dt since dk >= dt); over the share's
+  // whole area and kc_dt, not its penetrated part and dt, so that neither the step nor how deep
+  // flat facets dip into a curved body sets the grip (tests/core/membrane/test_membrane_engine.c)
+  double ff = fmin(s->mu * fn / fmax(st, s->v_eps), s->rhot * ac / dk);
   for (int k = 0; k < 3; k++) {
     f[k] = fn * n[k] - ff * vt[k];
   }
@@ -164,7 +168,7 @@ double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, con
   }
   // a node of mass m stands for the area m / rhot at its depth
   double A = m / s->rhot;
-  urm_contact_force(s, dt, n, vr, A * depth, A, f);
+  urm_contact_force(s, dt, n, vr, A * depth, A, A, f);
   return depth;
 }
 

@@ -68,9 +68,12 @@ void urm_shape_box(const urEllipsoid* e, double gh[3]);
 /* the contact force on a share of the fabric: the penalty pressure's integral I = int depth N
    (m^3) and the penetrated area A = int N (m^2) over the share, the outward normal n and the
    velocity vr relative to the body's surface; force (normal, damping, friction) in f, the
-   normal force returned (0 and f zero when the damped pressure does not push) */
+   normal force returned (0 and f zero when the damped pressure does not push). The friction's
+   viscous slope is capped at rhot ac / max(dt, kc_dt): ac is the whole area the share stands
+   for (a point's share of its quarter, penetrated or not), so the cap is the share's mass over
+   the penalty's own step, set neither by dt nor by how deep the share dips */
 double urm_contact_force(const urMemSpec* s, double dt, const double n[3], const double vr[3],
-                         double I, double A, double f[3]);
+                         double I, double A, double ac, double f[3]);
 
 /* the penetrated part of a triangle of unit area whose depth d (its corners' values) is linear
    over it: I[u] = int max(d, 0) N_u, A[u] = int over d > 0 of N_u, E = int max(d, 0)^2 (times

@@ -7,7 +7,9 @@
  * outside on an axis is the first-order distance (s - 1) r; the clipped integrals of a linear
  * depth over a triangle (the face contact's pressure on its penetrated part) against the closed
  * forms of the whole triangle and of a corner cut at its edges' midpoints; the shape's box along
- * the world axes (urm_shape_box) holds every point of its surface and is reached by one. */
+ * the world axes (urm_shape_box) holds every point of its surface and is reached by one; the
+ * friction is mu times the normal force when sliding fast, and its viscous slope's cap is the
+ * share's whole mass over max(dt, kc_dt) (not its penetrated part's, not over dt). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -132,6 +134,27 @@ static void test_clip(void** state) {
 }
 
 
+static void test_friction_cap(void** state) {
+  // a share pressed along n = z (I = 1e-6 m^3, penetrated area A = 1e-5 m^2 of its whole
+  // ac = 1e-3 m^2) sliding along x: fast (100 m/s) the Coulomb bound, friction mu fn; slowly
+  // (1 mm/s) the viscous slope's cap rhot ac / max(dt, kc_dt) times the speed, the same at
+  // dt = kc_dt and kc_dt / 2 and whatever the penetrated area
+  urMemSpec s;
+  ur_mem_spec_default(&s);
+  double n[3] = {0, 0, 1}, f[3], I = 1e-6, ac = 1e-3;
+  double fn = urm_contact_force(&s, s.kc_dt, n, (double[3]){100, 0, 0}, I, 1e-5, ac, f);
+  assert_true(fn > 0 && fabs(-f[0] - s.mu * fn) < 1e-12 * fn && f[1] == 0);
+  double cap = s.rhot * ac / s.kc_dt * 1e-3;
+  static const double A[2] = {1e-5, 1e-3}, dt[2] = {1, 0.5};
+  for (int i = 0; i < 2; i++) {
+    for (int j = 0; j < 2; j++) {
+      fn = urm_contact_force(&s, dt[j] * s.kc_dt, n, (double[3]){1e-3, 0, 0}, I, A[i], ac, f);
+      assert_true(fn > 0 && fabs(-f[0] - cap) < 1e-12 * cap);
+    }
+  }
+}
+
+
 static void test_shape_box(void** state) {
   // turned about all three axes (a unit quaternion's matrix), degrees 2, 4 and 8: surface points
   // r (u / ||u||_p) over directions u on a grid stay within the box, the farthest along each
@@ -184,9 +207,9 @@ static void test_shape_box(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_axis_depth),  cmocka_unit_test(test_outside),
-      cmocka_unit_test(test_gap_outside), cmocka_unit_test(test_clip),
-      cmocka_unit_test(test_shape_box),
+      cmocka_unit_test(test_axis_depth),   cmocka_unit_test(test_outside),
+      cmocka_unit_test(test_gap_outside),  cmocka_unit_test(test_clip),
+      cmocka_unit_test(test_friction_cap), cmocka_unit_test(test_shape_box),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
