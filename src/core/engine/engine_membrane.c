@@ -208,8 +208,9 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    contact normal per node: each node in contact with the body has the stiffness of its own
    normal motion Kd (kn[0]: the penalty per area times its corner points' penetrated areas and a
    quarter of its edge midpoints': a midpoint moves by half a node's motion, and half its force
-   goes to the node) along the mean normal n (kn[1..3], weighted by the row sums), the damping
-   C = Kr 2 zeta_c sqrt(rhot / k_a) on the row sum Kr (kn[4]: the lumped stiffness), and each
+   goes to the node) along the mean normal n (kn[1..3], weighted by the row sums; made a unit
+   vector in place here), the damping C = Kr 2 zeta_c sqrt(rhot / k_a) on the row sum Kr (kn[4]:
+   the lumped stiffness), and each
    edge in contact couples its two nodes by a quarter of its midpoint's stiffness (ke: the
    consistent tangent of the penalty's force on the nodes' normal motions). The explicit pass
    gave each node the force F0 at the current depth. Along n the contact springs are integrated
@@ -230,8 +231,7 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    >= 0. The normal sum returned. */
 static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb, int body,
                                const double o[3], const double vo[3], const double w[3], double* st,
-                               const double* kn, double* cor, double* wk, const double* ke,
-                               int nel) {
+                               double* kn, double* cor, double* wk, const double* ke, int nel) {
   const urMemSpec* s = &mb->spec;
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
@@ -244,15 +244,20 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
   // per node in wk (3 a node): the displacement without the increment D0, the increment df, the
   // coupling sum S; nodes out of contact have D0 = 0 and df = 0 (S reads their D as 0)
   double *D0 = wk, *df = wk + nn, *S = wk + 2 * nn;
+  // the mean normal made a unit vector here, once (kn[1..3]); a node without stiffness or normal
+  // gets kn[0] = 0, and the sweeps and the update below skip it
   for (int j = 0; j < mb->nfree; j++) {
     int i = mb->free[j];
     D0[i] = df[i] = 0;
-    const double* ki = kn + 5 * i;
+    double* ki = kn + 5 * i;
     double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
     if (!(ki[0] > 0) || !(nl > 0)) {
+      ki[0] = 0;
       continue;
     }
-    double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl}, r[3], wr[3], vb[3];
+    ki[1] /= nl, ki[2] /= nl, ki[3] /= nl;
+    const double* n = ki + 1;
+    double r[3], wr[3], vb[3];
     urm_sub(r, x + 3 * i, o);
     urm_cross(wr, w, r);
     for (int k = 0; k < 3; k++) {
@@ -278,12 +283,10 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
     double dmax = 0, fmx = 0;
     for (int j = 0; j < mb->nfree; j++) {
       int i = mb->free[j];
-      const double* ki = kn + 5 * i;
-      double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
-      if (!(ki[0] > 0) || !(nl > 0)) {
+      const double *ki = kn + 5 * i, *n = ki + 1;
+      if (!(ki[0] > 0)) {
         continue;
       }
-      double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl};
       double mi = mb->mass[i], K = ki[0], C = ki[4] * cr;
       double fo = urm_dot(f + 3 * i, n), fn = urm_dot(fc + 3 * i, n);
       double nd =
@@ -299,12 +302,11 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
   }
   for (int j = 0; j < mb->nfree; j++) {
     int i = mb->free[j];
-    const double* ki = kn + 5 * i;
-    double nl = sqrt(ki[1] * ki[1] + ki[2] * ki[2] + ki[3] * ki[3]);
-    if (!(ki[0] > 0) || !(nl > 0)) {
+    const double *ki = kn + 5 * i, *n = ki + 1;
+    if (!(ki[0] > 0)) {
       continue;
     }
-    double n[3] = {ki[1] / nl, ki[2] / nl, ki[3] / nl}, mi = mb->mass[i];
+    double mi = mb->mass[i];
     double fn = urm_dot(fc + 3 * i, n), dc = -(bh2 - hh2) * (fn + df[i]) / mi;
     double fi[3] = {df[i] * n[0], df[i] * n[1], df[i] * n[2]};
     for (int k = 0; k < 3; k++) {
