@@ -168,12 +168,18 @@ exec sleep 100
 chmod +x "$TMP/bin/gnuplot"
 gp_gone() { [ -s "$TMP/gp.pids" ] && for p in $(cat "$TMP/gp.pids"); do
   ! kill -0 "$p" 2>/dev/null || return 1; done; }
+# the key goes only once the fake gnuplot has written its pid (N lines): pressed earlier, under
+# a sanitizer's load, it killed the shell before its echo and gp_gone had no pid to look at
+gp_started() { n=0; while [ "$n" -lt 100 ]; do
+  [ "$(cat "$TMP/gp.pids" 2>/dev/null | wc -l)" -ge "$1" ] && return 0
+  sleep 0.1; n=$((n + 1)); done; return 1; }
 start v5 160 50 "PATH=$TMP/bin:/usr/bin:/bin"
 check wait_prompt wait_for v5 'uasimpact\[A\]>'
 line v5 "grid load $T6; set terminal png; set output $TMP/pl/h.png; view"
 check wait_view wait_for v5 'Enter inspect  p plot  b bag  q back'
 keys v5 p
 check wait_plotting wait_for v5 'plotting in gnuplot\.\.\. \(Ctrl-C stops it, q stops it and leaves\)' 30
+check wait_plot_started gp_started 1
 t0=$(now_ms); keys v5 C-c
 check wait_plot_ctrl_c wait_for v5 'plot history: interrupted \(Ctrl-C\); gnuplot was stopped' 2
 MS=$(( $(now_ms) - t0 )); echo "  (Ctrl-C while gnuplot hangs in the viewer: answered after $MS ms)"
@@ -183,6 +189,7 @@ check wait_plot_no_file cond '[ -z "$(ls "$TMP/pl")" ]'
 check wait_plot_stays cond 'alive v5 && grep -q "dpar 0.00 m  dperp 0.00 m" "$TMP/screen"'
 keys v5 p
 check wait_plotting_again wait_for v5 'plotting in gnuplot\.\.\.' 30
+check wait_plot_started_again gp_started 2
 t0=$(now_ms); keys v5 q
 check wait_plot_q wait_for v5 '^uasimpact\[A\]> *$' 2
 MS=$(( $(now_ms) - t0 )); echo "  (q while gnuplot hangs in the viewer: left after $MS ms)"
