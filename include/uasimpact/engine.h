@@ -182,6 +182,8 @@ typedef struct {
   double mu, v_eps; /* friction on the targets (regularised Coulomb) */
   int ntarget;
   int target[urMAXBAGTGT]; /* ellipsoids that can indent the bag */
+  double tk[urMAXBAGTGT];  /* membrane: a target's soft layer's foundation stiffness E_oed / h,
+                              N/m^3 (derived from its layer; 0: none, the bag's kc_alpha) */
   /* membrane (type urBAG_MEMBRANE): the declaration, the carrier's own ellipsoids the fabric
      presses against, and (compiled) the inflated bag and its state's place in urData.mem */
   urMemSpec mspec;
@@ -482,6 +484,12 @@ int ur_name_pair(const urModel* m, const char* name);
 int ur_name_airbag(const urModel* m, const char* name);
 int ur_name_sensor(const urModel* m, const char* name);
 int ur_name_param(const urModel* m, const char* name);
+
+/* A membrane bag's penalty on its target t (t < 0: on its supports), as the kc_alpha the contact
+   uses at the model's step: a target's layer gives tk dk^2 / rhot (dk = max(dt, kc_dt)), at most
+   max(1, kc_alpha) (what the explicit step carries, or the stiff law the bag asks for); else the
+   bag's kc_alpha. Its stiffness per area is kc_alpha rhot / dk^2 (N/m^3). */
+double ur_bag_penalty(const urModel* m, const urAirbag* b, int t);
 
 /* Value of a named parameter, or dflt if absent. */
 double ur_model_param(const urModel* m, const char* name, double dflt);

@@ -98,6 +98,12 @@ double ur_shell_crush_force(const urMaterial* mat, const urSection* sec);
 /* The crushed depth at which a shell bottoms on its contents, m: its section's h, else R. */
 double ur_shell_crush_depth(const urSection* sec);
 
+/* Pressure per depth of a soft layer of thickness h (m) bonded to bone, pressed over an area
+   wider than h (a membrane's fabric on the scalp), N/m^3: k = E_oed / h with the confined
+   (oedometric) modulus E_oed = E (1 - nu) / ((1 + nu) (1 - 2 nu)) (a Winkler foundation of the
+   layer; materials-membrane sheet F.2). 0 for h <= 0 or nu outside [0, 0.5). */
+double ur_layer_foundation(const urMaterial* mat, double h);
+
 #ifdef __cplusplus
 }
 #endif

@@ -647,6 +647,37 @@ static int model_notes(uraCtx* c) {
   return 0;
 }
 
+/* the fabric's penalty on each target: its layer's E_oed / h (capped where the step cannot carry
+   it) or the bag's kc_alpha */
+static void bag_penalties(const urModel* m, const urAirbag* b, FILE* f, uraTable* t) {
+  const urMemSpec* s = &b->mem->spec;
+  double dk = fmax(m->opt.dt, s->kc_dt), unit = s->rhot / (dk * dk);
+  char line[2048];
+  int n = snprintf(line, sizeof line, "derived, membrane %s: penalty on", b->name);
+  for (int i = 0; i < b->ntarget && n < (int)sizeof line; i++) {
+    double kc = ur_bag_penalty(m, b, i);
+    const char* g = m->geom[b->target[i]].name;
+    if (b->tk[i] > 0 && kc * unit < b->tk[i])
+      n += snprintf(line + n, sizeof line - n,
+                    " %s %.3g N/m^3 (kc_alpha %.3g; its layer's E_oed/h %.3g, more than the step "
+                    "carries),",
+                    g, kc * unit, kc, b->tk[i]);
+    else if (b->tk[i] > 0)
+      n += snprintf(line + n, sizeof line - n, " %s %.3g N/m^3 (its layer's E_oed/h),", g,
+                    kc * unit);
+    else
+      n += snprintf(line + n, sizeof line - n, " %s %.3g N/m^3 (kc_alpha %.3g),", g, kc * unit,
+                    kc);
+  }
+  if (n < (int)sizeof line)
+    snprintf(line + n, sizeof line - n, " supports %.3g N/m^3 (kc_alpha %.3g)",
+             s->kc_alpha * unit, s->kc_alpha);
+  if (t)
+    ura_table_note(t, "%s", line);
+  else
+    fprintf(f, "# %s\n", line);
+}
+
 void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t) {
   const urModel* m = ura_model(c);
   for (int i = 0; m && i < m->nbag; i++) {
@@ -673,6 +704,7 @@ void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t) {
       ura_table_note(t, "%s", line);
     else
       fprintf(f, "# %s\n", line);
+    if (b->type == urBAG_MEMBRANE && b->mem) bag_penalties(m, b, f, t);
   }
 }
 

@@ -89,3 +89,12 @@ double ur_shell_crush_depth(const urSection* sec) {
   // the declared depth to the contents, else the whole radius
   return sec->h > 0 ? sec->h : sec->R;
 }
+
+
+double ur_layer_foundation(const urMaterial* mat, double h) {
+  double nu = mat->nu;
+  if (!(h > 0) || !(nu >= 0 && nu < 0.5) || !(mat->E > 0)) {
+    return 0;
+  }
+  return mat->E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / h;
+}

@@ -142,13 +142,12 @@ static double* node_bufs(const urMembrane* mb, double* st) {
    (the penalty per area times its area share, a midpoint's half to each end) and its normal
    lumped onto the nodes in kn when kn is not NULL (contact_implicit); the normal force
    returned */
-static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int body,
-                          const double o[3], const double vo[3], const double w[3], const int* n3,
-                          const int q[3], const double dq[6], double nq[6][3], double xq[6][3],
-                          double vq[6][3], double a, double* f, double* fc, double* kn,
-                          const int* e3, double* ke, int* nel, double* ep) {
+static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, const urMemSpec* s,
+                          int body, const double o[3], const double vo[3], const double w[3],
+                          const int* n3, const int q[3], const double dq[6], double nq[6][3],
+                          double xq[6][3], double vq[6][3], double a, double* f, double* fc,
+                          double* kn, const int* e3, double* ke, int* nel, double* ep) {
   static const int edge[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-  const urMemSpec* s = &mb->spec;
   double dd[3] = {dq[q[0]], dq[q[1]], dq[q[2]]}, I[3], A[3], E, fsum = 0;
   urm_contact_clip(dd, I, A, &E);
   double dk = fmax(m->opt.dt, s->kc_dt), ka = s->kc_alpha * s->rhot / (dk * dk);
@@ -229,10 +228,10 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, int
    of work. The body's side stays explicit (its reaction this step), so the stiffness over all
    nodes must stay within the step for the body's mass. A node's normal contact force stays
    >= 0. The normal sum returned. */
-static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb, int body,
-                               const double o[3], const double vo[3], const double w[3], double* st,
-                               double* kn, double* cor, double* wk, const double* ke, int nel) {
-  const urMemSpec* s = &mb->spec;
+static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb,
+                               const urMemSpec* s, int body, const double o[3], const double vo[3],
+                               const double w[3], double* st, double* kn, double* cor, double* wk,
+                               const double* ke, int nel) {
   int nn = mb->nn;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn;
   double h = m->opt.dt, dk = fmax(h, s->kc_dt), ka = s->kc_alpha * s->rhot / (dk * dk);
@@ -340,9 +339,16 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
    evaluation), a triangle whose sphere misses it has no point inside g, so it adds no force and
    no depth that another triangle reads (left out of the list, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           const double lo[3], const double hi[3], double* depth) {
+                           double kc, const double lo[3], const double hi[3], double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   const urMembrane* mb = b->mem;
+  const urMemSpec* s = &mb->spec;
+  urMemSpec sl;
+  if (kc != s->kc_alpha) { /* a target's layer (ur_bag_penalty) */
+    sl = mb->spec;
+    sl.kc_alpha = kc;
+    s = &sl;
+  }
   int nn = mb->nn, nt = mb->nt;
   double *x = st, *v = st + 3 * nn, *f = st + 6 * nn, *fc = st + 9 * nn, *sc = st + 18 * nn;
   const double* gc = d->gxpos + 3 * g;
@@ -373,7 +379,7 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   const double *nbx = tl + nt, *tbx = nbx + 7 * (size_t)((nn + urMEM_CBLK - 1) / urMEM_CBLK);
   // beyond the explicit bound (kc_alpha > 1): each free node's lumped normal stiffness (4 nn,
   // after the boxes), for contact_implicit
-  double* kn = b->mem->spec.kc_alpha > 1 ? node_bufs(mb, st) : NULL;
+  double* kn = s->kc_alpha > 1 ? node_bufs(mb, st) : NULL;
   // after kn (5 nn) the position corrections (3 nn), the implicit solve's work (3 nn), each
   // edge's coupling (3 ne: stiffness, its two nodes) and the list of the edges coupled (ne)
   double* ke = kn ? kn + 11 * (size_t)nn : NULL;
@@ -510,14 +516,14 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
     for (int j = 0; j < 4; j++) {
       const int* qj = sub[j];
       if (dq[qj[0]] > 0 || dq[qj[1]] > 0 || dq[qj[2]] > 0) {
-        fsum += contact_sub(m, d, mb, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, kn, e3, ke,
-                            &nel, &ep);
+        fsum += contact_sub(m, d, mb, s, body, o, vo, w, n3, qj, dq, nq, xq, vq, a, f, fc, kn, e3,
+                            ke, &nel, &ep);
       }
     }
   }
   sc[urMEMS_ECONT] += ep;
   if (kn) {
-    fsum += contact_implicit(m, d, mb, body, o, vo, w, st, kn, kn + 5 * (size_t)nn,
+    fsum += contact_implicit(m, d, mb, s, body, o, vo, w, st, kn, kn + 5 * (size_t)nn,
                              kn + 8 * (size_t)nn, ke, nel);
   }
   return fsum;
@@ -643,7 +649,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
-    double fs = contact_geom(m, d, b, st, b->target[t], lo, hi, &dep);
+    double fs = contact_geom(m, d, b, st, b->target[t], ur_bag_penalty(m, b, t), lo, hi, &dep);
     bd->depth[t] = dep;
     bd->ftgt[t] = fs;
     bd->force += fs;
@@ -653,7 +659,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->nsupport; t++) {
     double dep;
-    contact_geom(m, d, b, st, b->support[t], lo, hi, &dep);
+    contact_geom(m, d, b, st, b->support[t], mb->spec.kc_alpha, lo, hi, &dep);
   }
 
   // the mount patch's forces on the carrier
@@ -666,6 +672,18 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   bd->dv = mb->vref - sc[urMEMS_V];
   bd->strain = sc[urMEMS_STRAIN];
 }
+
+/* a target's layer: its foundation stiffness E_oed / h, at most what the explicit step carries
+   (kc_alpha 1, or the bag's own kc_alpha when it asks for the stiff implicit law) */
+double ur_bag_penalty(const urModel* m, const urAirbag* b, int t) {
+  const urMemSpec* s = b->mem ? &b->mem->spec : &b->mspec;
+  if (t < 0 || t >= b->ntarget || !(b->tk[t] > 0)) {
+    return s->kc_alpha;
+  }
+  double dk = fmax(m->opt.dt, s->kc_dt);
+  return fmin(b->tk[t] * dk * dk / s->rhot, fmax(1, s->kc_alpha));
+}
+
 
 //---------------------------------- advance -------------------------------------------------------
 

@@ -257,6 +257,7 @@ int url_st_layer(Parser* p, const Bound* b);
 int url_hinge(Parser* p, const Bound* b, urRestraint* r);
 int url_geom_material(Parser* p, const Bound* b, int g);
 int url_pair_law(Parser* p, const char* pair, int ga, int gb, int law, int line, urLaw* out);
+void url_bag_layers(Parser* p, urAirbag* bag);
 void url_note(Parser* p, const char* fmt, ...);
 /* append one line to the model's derived values (urModel.derived) */
 void url_derived(Parser* p, const char* fmt, ...);

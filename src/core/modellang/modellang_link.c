@@ -302,6 +302,9 @@ int url_st_airbag(Parser* p, const Bound* b) {
   if (membrane_keys(p, b, &bag)) {
     return -1;
   }
+  if (bag.type == urBAG_MEMBRANE) {
+    url_bag_layers(p, &bag);
+  }
   if (url_declare(p, SYM_AIRBAG, b->name, b->line, m->nbag, 1)) {
     return -1;
   }

@@ -429,3 +429,27 @@ int url_pair_law(Parser* p, const char* what, int ga, int gb, int law, int line,
   }
   return 0;
 }
+
+
+/* a membrane bag's targets that carry a layer: the layer's foundation stiffness E_oed / h
+   (N/m^3) as the penalty of the fabric on them (engine_membrane.c caps it where the explicit
+   step cannot carry it); the others keep the bag's kc_alpha */
+void url_bag_layers(Parser* p, urAirbag* bag) {
+  for (int t = 0; t < bag->ntarget; t++) {
+    const urlGeomMat* gm = geommat_of(p, bag->target[t]);
+    bag->tk[t] = 0;
+    if (!gm || gm->layer < 0) {
+      continue;
+    }
+    const urlLayer* l = p->layer + gm->layer;
+    const urMaterial* ml = p->mat + l->mat;
+    bag->tk[t] = ur_layer_foundation(ml, l->h);
+    if (bag->tk[t] > 0) {
+      url_derived(p,
+                  "airbag '%s' on %s (layer %s): fabric penalty k = E_oed / h = %.6g N/m^3 "
+                  "(E_oed = E (1-nu) / ((1+nu) (1-2 nu)), E %.6g Pa, nu %g, h %g m)",
+                  bag->name, p->m->geom[bag->target[t]].name, symname(p, SYM_LAYER, gm->layer),
+                  bag->tk[t], ml->E, ml->nu, l->h);
+    }
+  }
+}

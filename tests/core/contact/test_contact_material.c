@@ -162,11 +162,26 @@ static void test_foam_abi(void** state) {
   assert_near(ur_foam_abi(P, 0), 0, 0);
 }
 
+/* a soft layer over bone pressed wider than its thickness: k = E_oed / h (Winkler, sheet F.2);
+   at nu 0 E_oed is E; no stiffness for a layer without thickness or an incompressible one */
+static void test_layer_foundation(void** state) {
+  urMaterial scalp = {.E = 2.23e7, .nu = 0.29};
+  double k = ur_layer_foundation(&scalp, 0.006);
+  assert_true(fabs(k - 2.23e7 * 0.71 / (1.29 * 0.42) / 0.006) <= 1e-9 * k);
+  urMaterial cork = {.E = 3e7, .nu = 0};
+  assert_true(fabs(ur_layer_foundation(&cork, 0.01) - 3e9) <= 1e-6);
+  urMaterial rubber = {.E = 1e6, .nu = 0.5};
+  assert_true(ur_layer_foundation(&rubber, 0.01) == 0);
+  assert_true(ur_layer_foundation(&scalp, 0) == 0);
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_tube_section), cmocka_unit_test(test_hinge),
       cmocka_unit_test(test_estar),        cmocka_unit_test(test_shell),
       cmocka_unit_test(test_shell_crush),  cmocka_unit_test(test_foam_abi),
+      cmocka_unit_test(test_layer_foundation),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

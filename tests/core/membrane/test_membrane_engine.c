@@ -176,6 +176,36 @@ static void test_energy_stiff(void** state) {
 }
 
 
+/* a target's soft layer (airbag tk, from 'layer' in the model language: E_oed / h) sets the
+   fabric's penalty on it, capped at what the explicit step carries (kc_alpha 1) or at the bag's
+   own kc_alpha when that asks for the stiff law; targets without a layer keep kc_alpha. The
+   damped drop at dt 5e-5 (the shipped step): its peak force with a layer of stiffness k equals
+   that with kc_alpha = k dt^2 / rhot declared and no layer */
+static double peak_layer(double alpha, double tk) {
+  urModel* m = bagmodel_dt(1, alpha, 5e-5);
+  m->bag[0].tk[0] = tk;
+  double lo, hi, vend, f = drop(m, 4, &lo, &hi, &vend);
+  assert_true(hi <= 1e-3);
+  ur_model_free(m);
+  return f;
+}
+
+static void test_layer_penalty(void** state) {
+  double rhot = 0.231, dk = 5e-5;
+  double thorax = peak_layer(0, 0.55 * rhot / (dk * dk)), declared = peak_layer(0.55, 0);
+  assert_true(fabs(thorax - declared) <= 1e-9 * declared);
+  // the scalp (4.87e9 N/m^3, kc_alpha 53): the explicit cap, kc_alpha 1
+  double scalp = peak_layer(0, 4.87e9), one = peak_layer(1, 0), dflt = peak_layer(0, 0);
+  assert_true(fabs(scalp - one) <= 1e-9 * one);
+  assert_true(scalp > dflt);
+  // with the stiff law asked for (kc_alpha 5) the layer takes the bag's kc_alpha as its cap
+  double stiff = peak_layer(5, 4.87e9), five = peak_layer(5, 0);
+  assert_true(fabs(stiff - five) <= 1e-9 * five);
+  // a soft layer is softer than the bag's stiff kc_alpha: the layer's own
+  assert_true(fabs(peak_layer(5, 0.55 * rhot / (dk * dk)) - declared) <= 1e-9 * declared);
+}
+
+
 /* the bag's grip on a sphere sliding across it: the sphere (damped bag, mu as declared) thrown up
    at 3 m/s and sideways at 2 m/s from under the bag at step dt (kc_dt 5e-5 and below: the same
    penalty); the sideways velocity it has lost after 30 ms (the contact over) */
@@ -456,7 +486,8 @@ static void test_plates(void** state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_energy_undamped), cmocka_unit_test(test_energy_damped),
-      cmocka_unit_test(test_energy_stiff),    cmocka_unit_test(test_grip_dt),
+      cmocka_unit_test(test_energy_stiff),    cmocka_unit_test(test_layer_penalty),
+      cmocka_unit_test(test_grip_dt),
       cmocka_unit_test(test_lanes_bitwise),   cmocka_unit_test(test_plates),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -149,6 +149,30 @@ static void test_shell_crush(void** state) {
   assert_non_null(strstr(err, "not h"));
 }
 
+/* a membrane bag's targets: one with a layer takes the layer's foundation stiffness E_oed / h
+   as the fabric's penalty (derived, and listed); one without keeps the bag's kc_alpha (tk 0) */
+static void test_bag_layer(void** state) {
+  char err[256];
+  urModel* m = parse1(HEAD DRONE
+                      "ellipsoid jaw body=head pos=0,0,-0.12 size=0.05,0.05,0.04\n"
+                      "airbag bb geom=shell p0=101325 patm=101325 v0=0.01 gamma=1.4 kappa=1 "
+                      "thickness=0.1 targets=jaw,cranium membrane=1 size=0.15,0.15 depth=0.08 "
+                      "mount=0,0,-0.1 mesh=3\n",
+                      NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urAirbag* b = m->bag + ur_name_airbag(m, "bb");
+  double eoed = 2.23e7 * (1 - 0.29) / ((1 + 0.29) * (1 - 2 * 0.29)); /* 29.22 MPa */
+  assert_near(b->tk[0], 0, 0);
+  assert_near(b->tk[1], eoed / 0.006, 1e-9 * eoed / 0.006);
+  assert_near(b->tk[1], 4.8705e9, 1e5); /* the value uasimpact-model(5) quotes */
+  assert_non_null(strstr(m->derived, "airbag 'bb' on cranium (layer scalp_l): fabric penalty k = "
+                                     "E_oed / h = 4.87049e+09 N/m^3"));
+  assert_null(strstr(m->derived, "on jaw"));
+  ur_model_free(m);
+}
+
+
 /* a declared law on a layer: kept as declared, and noted (with the material when the drone part
    has one: an old drone file's own scalp law is noted too) */
 static void test_override(void** state) {
@@ -272,7 +296,8 @@ int main(void) {
   (void)model_text; /* the fixture's model: not used here */
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_hinge),    cmocka_unit_test(test_pair_law),
-      cmocka_unit_test(test_override), cmocka_unit_test(test_foam_curve),
+      cmocka_unit_test(test_override), cmocka_unit_test(test_bag_layer),
+      cmocka_unit_test(test_foam_curve),
       cmocka_unit_test(test_errors),   cmocka_unit_test(test_shell_crush),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
