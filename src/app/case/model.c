@@ -666,12 +666,11 @@ static void bag_penalties(const urModel* m, const urAirbag* b, FILE* f, uraTable
       n += snprintf(line + n, sizeof line - n, " %s %.3g N/m^3 (its layer's E_oed/h),", g,
                     kc * unit);
     else
-      n += snprintf(line + n, sizeof line - n, " %s %.3g N/m^3 (kc_alpha %.3g),", g, kc * unit,
-                    kc);
+      n += snprintf(line + n, sizeof line - n, " %s %.3g N/m^3 (kc_alpha %.3g),", g, kc * unit, kc);
   }
   if (n < (int)sizeof line)
-    snprintf(line + n, sizeof line - n, " supports %.3g N/m^3 (kc_alpha %.3g)",
-             s->kc_alpha * unit, s->kc_alpha);
+    snprintf(line + n, sizeof line - n, " supports %.3g N/m^3 (kc_alpha %.3g)", s->kc_alpha * unit,
+             s->kc_alpha);
   if (t)
     ura_table_note(t, "%s", line);
   else

@@ -178,9 +178,12 @@ static void test_layer_foundation(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_tube_section), cmocka_unit_test(test_hinge),
-      cmocka_unit_test(test_estar),        cmocka_unit_test(test_shell),
-      cmocka_unit_test(test_shell_crush),  cmocka_unit_test(test_foam_abi),
+      cmocka_unit_test(test_tube_section),
+      cmocka_unit_test(test_hinge),
+      cmocka_unit_test(test_estar),
+      cmocka_unit_test(test_shell),
+      cmocka_unit_test(test_shell_crush),
+      cmocka_unit_test(test_foam_abi),
       cmocka_unit_test(test_layer_foundation),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -487,8 +487,8 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_energy_undamped), cmocka_unit_test(test_energy_damped),
       cmocka_unit_test(test_energy_stiff),    cmocka_unit_test(test_layer_penalty),
-      cmocka_unit_test(test_grip_dt),
-      cmocka_unit_test(test_lanes_bitwise),   cmocka_unit_test(test_plates),
+      cmocka_unit_test(test_grip_dt),         cmocka_unit_test(test_lanes_bitwise),
+      cmocka_unit_test(test_plates),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -166,8 +166,9 @@ static void test_bag_layer(void** state) {
   assert_near(b->tk[0], 0, 0);
   assert_near(b->tk[1], eoed / 0.006, 1e-9 * eoed / 0.006);
   assert_near(b->tk[1], 4.8705e9, 1e5); /* the value uasimpact-model(5) quotes */
-  assert_non_null(strstr(m->derived, "airbag 'bb' on cranium (layer scalp_l): fabric penalty k = "
-                                     "E_oed / h = 4.87049e+09 N/m^3"));
+  assert_non_null(strstr(m->derived,
+                         "airbag 'bb' on cranium (layer scalp_l): fabric penalty k = "
+                         "E_oed / h = 4.87049e+09 N/m^3"));
   assert_null(strstr(m->derived, "on jaw"));
   ur_model_free(m);
 }
@@ -295,10 +296,10 @@ static void test_errors(void** state) {
 int main(void) {
   (void)model_text; /* the fixture's model: not used here */
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_hinge),    cmocka_unit_test(test_pair_law),
-      cmocka_unit_test(test_override), cmocka_unit_test(test_bag_layer),
-      cmocka_unit_test(test_foam_curve),
-      cmocka_unit_test(test_errors),   cmocka_unit_test(test_shell_crush),
+      cmocka_unit_test(test_hinge),       cmocka_unit_test(test_pair_law),
+      cmocka_unit_test(test_override),    cmocka_unit_test(test_bag_layer),
+      cmocka_unit_test(test_foam_curve),  cmocka_unit_test(test_errors),
+      cmocka_unit_test(test_shell_crush),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
