@@ -95,6 +95,11 @@ int ura_risk_grid_mirror(uraCtx* c, const uraState* ns, const char* who, int qui
   m->face = face;
   int rc = ura_risk_grid(c, m, who, quiet, q);
   free(m);
+  if (rc) {
+    size_t k = strlen(c->err);
+    snprintf(c->err + k, sizeof c->err - k, " (face %g asked for as its mirror image, face %g)",
+             ns->face, face);
+  }
   return rc;
 }
 
