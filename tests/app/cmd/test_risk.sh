@@ -142,7 +142,7 @@ for mm in on off; do
     dist wind discrete 0,4 0.5,0.5; dist face uniform -180 180; montecarlo 100"
   cp "$TMP/out" "$TMP/mm_$mm"
 done
-check mc_mirror_count cond 'grep -q "= 14 grids; wind 2 values 0..4, face 7 nodes -180..180; .*; grids: 8 computed, 6 taken by mirror symmetry" "$TMP/mm_on" &&
+check mc_mirror_count cond 'grep -q "= 14 grids; wind 2 values 0..4, face 7 nodes -180..180; .*; grids: 8 computed, 6 taken by mirror symmetry (face -phi is phi mirrored), 0 recalled$" "$TMP/mm_on" &&
   grep -q "face 7 nodes -17[0-9.]*\.\.17[0-9.]*; .*; grids: 14 computed, 0 taken by mirror symmetry (face -phi is phi mirrored): mc_mirror off" "$TMP/mm_off"'
 # the two surfaces differ in their face nodes only: their means agree within the sum of the
 # largest errors their checks measured
@@ -162,6 +162,22 @@ check mc_mirror_same cond '[ -s "$TMP/ms_on" ] && cmp -s "$TMP/ms_on" "$TMP/ms_o
 runs "set format csv; set step 0.3; case C; set roll 5; dist face uniform -180 180; set surface_nodes 3
   set surface_check 0; montecarlo 20"
 check mc_mirror_roll grep -q 'face 3 nodes -17[0-9.]*\.\.17[0-9.]*; .*; grids: 3 computed, 0 taken by mirror symmetry (face -phi is phi mirrored): roll or yaw breaks the symmetry' "$TMP/out"
+# face drawn symmetrically about 0 (not the circle): nodes over [-m, m], m the largest |face| drawn;
+# drawn lopsided: the drawn extremes, nothing mirrored
+for d in "uniform -90 90" "uniform -30 90"; do
+  runs "set format csv; set step 0.3; case C; set recall off; dist face $d; set surface_nodes 5
+    set surface_check 0; montecarlo 40"
+  grep '^# method:' "$TMP/out" >"$TMP/mr_${d#uniform -}"
+done
+check mc_mirror_sym cond 'grep -q "face 5 nodes -\([0-9.]*\)\.\.\1; .*; grids: 3 computed, 2 taken by mirror symmetry (face -phi is phi mirrored), 0 recalled$" "$TMP/mr_90 90" &&
+  grep -q "face 5 nodes -2[0-9.]*\.\.[0-9.]*; .*; grids: 5 computed, 0 taken by mirror symmetry (face -phi is phi mirrored), 0 recalled$" "$TMP/mr_30 90"'
+# refined: each lattice point had once (computed, by mirror or recalled), the counts add up to
+# the final lattice
+runs "set format csv; set step 0.3; case C; set recall off; dist wind uniform 0 6; dist face uniform -180 180
+  set surface_nodes 3; set mc_surface_tol 0.05; montecarlo 60"
+check mc_mirror_refined cond 'grep -q "^# warning: the surface.s error .* refined [1-4] time" "$TMP/out" &&
+  sed -n "s/^# method: .* = \([0-9]*\) grids.*grids: \([0-9]*\) computed, \([0-9]*\) taken by mirror.*, \([0-9]*\) recalled$/\1 \2 \3 \4/p" "$TMP/out" |
+  awk "{ exit !(NF == 4 && \$1 == \$2 + \$3 + \$4 && \$3 > 0) }"'
 # exact: a sample at face -phi recalls the grid of one at phi (recall on)
 for mm in on off; do
   runs "set format csv; set step 0.3; case C; set mc_method exact; set mc_mirror $mm

@@ -386,12 +386,18 @@ static long mirror_partner(const surface* s, const uraState* base, long g) {
   return p == a->n ? -1 : g + (p - j) * stride;
 }
 
+/* how the surface's grids were had: each lattice point once, in the round it appeared */
+typedef struct {
+  int kept;     /* from the earlier (coarser) lattice, each round again */
+  int recalled; /* an identical earlier grid (recall.c) */
+  int computed; /* run */
+  int mirrored; /* the Q of its partner at the mirror face */
+} gridCount;
+
 /* the surface's grids (every lattice point of every branch needed; those of an earlier lattice
-   old are taken from it, those at face -phi from their partner at phi); the grids computed,
-   taken by mirror and recalled are counted */
+   old are taken from it, those at face -phi from their partner at phi), counted into n */
 static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const surface* old,
-                         const uraState* base, uraState* tmp, uraState* ns, int tty, int* recalled,
-                         int* computed, int* mirrored) {
+                         const uraState* base, uraState* tmp, uraState* ns, int tty, gridCount* n) {
   s->total = 1;
   for (int d = 0; d < s->nax; d++) s->total *= s->ax[d].n;
   long ngrid = s->total * s->nmask;
@@ -407,21 +413,21 @@ static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const surface* 
   for (long g = 0; g < ngrid && rc == 0; g++) {
     progress(tty, "surface grid", g + 1, ngrid);
     if (old_value(s, old, g % s->total, (int)(g / s->total), &s->value[g]) == 0) {
-      (*recalled)++;
+      n->kept++;
       continue;
     }
     if (mirror_partner(s, base, g) >= 0) continue; /* below, once its partner is there */
     node_state(m, s, base, g % s->total, s->masks[g / s->total], tmp, ns);
     rc = mc_grid(c, ns, &s->value[g], NULL);
-    *recalled += rc == 0 && c->last.recalled;
-    *computed += rc == 0 && !c->last.recalled;
+    n->recalled += rc == 0 && c->last.recalled;
+    n->computed += rc == 0 && !c->last.recalled;
     if (rc) node_fail(c, m, s, g);
   }
   for (long g = 0; g < ngrid && rc == 0; g++) {
     long p = mirror_partner(s, base, g);
     if (p < 0 || old_value(s, old, g % s->total, (int)(g / s->total), &s->value[g]) == 0) continue;
     s->value[g] = s->value[p];
-    (*mirrored)++;
+    n->mirrored++;
   }
   return rc;
 }
@@ -444,7 +450,8 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   int nchk = exact ? 0 : (int)fmin(base->risk.surface_check, m->n);
   double tol = base->risk.surface_tol, *qchk = calloc((size_t)nchk + 1, sizeof *qchk);
   if (!qchk) return ura_fail(c, "montecarlo: out of memory");
-  int rc = 0, recalled = 0, computed = 0, mirrored = 0, round = 0, first_worse = 0;
+  int rc = 0, round = 0, first_worse = 0;
+  gridCount cnt = {0, 0, 0, 0};
   double first_err = 0, emax = 0, rmax = 0, esum = 0;
   long ngrid = 0;
   /* the check samples' own grids, once */
@@ -459,7 +466,7 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   memset(&prev, 0, sizeof prev);
   for (;; round++) {
     if (rc == 0) {
-      rc = surface_build(c, m, &s, &prev, base, tmp, ns, tty, &recalled, &computed, &mirrored);
+      rc = surface_build(c, m, &s, &prev, base, tmp, ns, tty, &cnt);
     }
     free(prev.value);
     prev.value = NULL;
@@ -509,16 +516,17 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   free(qchk);
 
   /* the method, in words */
+  int recalled = cnt.recalled + cnt.kept;
   char mirror[300];
   snprintf(mirror, sizeof mirror,
            "grids: %d computed, %d taken by mirror symmetry (face -phi is phi mirrored)%s, %d "
-           "recalled or kept from a coarser lattice",
-           computed, mirrored,
+           "recalled",
+           cnt.computed, cnt.mirrored,
            !base->risk.mc_mirror ? ": mc_mirror off"
            : !s.mirror           ? ": roll or yaw breaks the symmetry"
            : s.face_ax < 0       ? ": face is not drawn"
                                  : "",
-           recalled);
+           cnt.recalled);
   char axes[400] = "";
   size_t k = 0;
   for (int d = 0; d < s.nax && k < sizeof axes; d++) {
