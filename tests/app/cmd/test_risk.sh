@@ -178,6 +178,10 @@ runs "set format csv; set step 0.3; case C; set recall off; dist wind uniform 0 
 check mc_mirror_refined cond 'grep -q "^# warning: the surface.s error .* refined [1-4] time" "$TMP/out" &&
   sed -n "s/^# method: .* = \([0-9]*\) grids.*grids: \([0-9]*\) computed, \([0-9]*\) taken by mirror.*, \([0-9]*\) recalled$/\1 \2 \3 \4/p" "$TMP/out" |
   awk "{ exit !(NF == 4 && \$1 == \$2 + \$3 + \$4 && \$3 > 0) }"'
+# and the face axis stays symmetric (a node inserted at phi brings its mirror): of W wind nodes
+# and F face nodes (0 and -180..180 among them) W (F + 1) / 2 are computed, W (F - 1) / 2 mirrored
+check mc_mirror_refined_sym cond 'sed -n "s/^# method: .*; wind \([0-9]*\) nodes .*, face \([0-9]*\) nodes -180\.\.180; .*grids: \([0-9]*\) computed, \([0-9]*\) taken by mirror.*/\1 \2 \3 \4/p" "$TMP/out" |
+  awk "{ exit !(NF == 4 && \$2 > 3 && \$3 == \$1 * (\$2 + 1) / 2 && \$4 == \$1 * (\$2 - 1) / 2) }"'
 # exact: a sample at face -phi recalls the grid of one at phi (recall on)
 for mm in on off; do
   runs "set format csv; set step 0.3; case C; set mc_method exact; set mc_mirror $mm

@@ -341,6 +341,30 @@ static int refine_axis(axis* a, double x) {
   return 1;
 }
 
+/* after refine_axis(a, x) on a face axis whose nodes were symmetric: the midpoint of the mirror
+   interval too, so that the axis stays symmetric and the new nodes at -phi cost no grid (not
+   when x's interval straddled 0: its midpoint was its own mirror); 1 when inserted */
+static int refine_mirror(axis* a, double x) {
+  for (int j = 0; j < a->n; j++) {
+    if (a->node[j] == x) return 0;
+  }
+  int j = 0;
+  while (j < a->n - 2 && -x >= a->node[j + 1]) j++;
+  double mid = 0.5 * (a->node[j] + a->node[j + 1]);
+  int k = 0;
+  while (k < a->n && a->node[k] != -mid) k++;
+  if (k == a->n || mid == 0) return 0; /* its partner is not there: it stays as it was */
+  return refine_axis(a, -x);
+}
+
+/* whether an axis's nodes are symmetric about 0 to the bit */
+static int axis_symmetric(const axis* a) {
+  for (int j = 0; j < a->n; j++) {
+    if (a->node[j] != -a->node[a->n - 1 - j]) return 0;
+  }
+  return 1;
+}
+
 /* the value of lattice point idx of s (branch k) in an earlier lattice old whose axes hold every
    node of it; 0 with *v, or -1 when a node is new */
 static int old_value(const surface* s, const surface* old, long idx, int k, double* v) {
@@ -500,7 +524,11 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     s.value = NULL;
     int any = 0;
     for (int d = 0; d < s.nax; d++) {
-      any |= refine_axis(&s.ax[d], m->x[(size_t)worst * m->nin + s.ax[d].col]);
+      double x = m->x[(size_t)worst * m->nin + s.ax[d].col];
+      int sym = d == s.face_ax && s.mirror && axis_symmetric(&s.ax[d]);
+      int r = refine_axis(&s.ax[d], x);
+      if (r && sym) refine_mirror(&s.ax[d], x);
+      any |= r;
     }
     if (!any) {
       rc = ura_fail(c,
