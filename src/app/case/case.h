@@ -68,6 +68,7 @@ typedef struct {
   double h_chute_min;              /* m: below this failure height the parachute cannot help */
   double seed;                     /* Monte Carlo key (a whole number) */
   int mc_method;                   /* uraMcMethod */
+  int mc_mirror;                   /* 1: montecarlo takes face -phi as phi mirrored */
   double surface_nodes;            /* nodes per continuous axis of the response surface */
   double surface_check;            /* samples computed exactly to check the surface */
   double pop_density[uraMAXBANDS]; /* people/km^2: the bands of eq. (1.1); the iGRC's is the

@@ -144,6 +144,11 @@ const uraParam ura_params[] = {
     {"mc_method", uraP_ENUM, OFF(risk.mc_method), 0, "", 0, 0,
      "montecarlo: surface (Q interpolated on a lattice of real grids) or exact (grids per sample)",
      mc_method_names},
+    {"mc_mirror", uraP_ENUM, OFF(risk.mc_mirror), 0, "", 0, 0,
+     "montecarlo: on takes the Q of face -phi from the grid at phi (the mirror image, when no "
+     "roll or yaw breaks the symmetry) and spans a symmetric face range with symmetric nodes; "
+     "off computes every face",
+     onoff_names},
     {"surface_nodes", uraP_INT, OFF(risk.surface_nodes), 0, "", 2, 65,
      "nodes of the response surface per continuous input (discrete inputs: their values)", NULL},
     {"surface_check", uraP_INT, OFF(risk.surface_check), 0, "", 0, 1000,
@@ -409,6 +414,7 @@ void ura_risk_defaults(uraRiskSet* r) {
   r->h_chute_min = 0;
   r->seed = 1;
   r->mc_method = uraMC_SURFACE;
+  r->mc_mirror = 1;
   r->surface_nodes = 7;
   r->surface_check = 4;
   r->pop_density[0] = 500;

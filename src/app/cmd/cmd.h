@@ -71,6 +71,9 @@ extern const char* const ura_pof_names[];
 /* the grid (cmd_grid.c): the command, run one (quiet: no output), its extents */
 int ura_cmd_grid(uraCtx* c, int argc, char** argv);
 int ura_grid_run(uraCtx* c, int quiet);
+/* 1 when the scene of st is mirror-symmetric about the course but for the face (no roll or
+   yaw): the grid at face -phi is the one at phi mirrored (dperp -> -dperp), with the same Q */
+int ura_grid_symmetric(const uraState* st);
 int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_max);
 
 /* handlers the table names that live in the ui layer: the viewer (view.c), plots (plot_cmd.c), and
@@ -180,6 +183,13 @@ void ura_risk_branch_state(const uraState* base, int mask, const urDeploy* dep, 
 void ura_risk_override(uraState* ns, const char* name, double v, int user);
 /* Q of the grid of state ns (it becomes the live state; the caller restores its own) */
 int ura_risk_grid(uraCtx* c, const uraState* ns, const char* who, int quiet, double* q);
+/* the face whose grid is the mirror image of the one at face (a face in [-180, 0) -> -face) when
+   st's scene is mirror-symmetric (ura_grid_symmetric); face itself otherwise */
+double ura_risk_mirror_face(const uraState* st, double face);
+/* ura_risk_grid, asked for at the mirror face (ura_risk_mirror_face): the same Q, one grid (and
+   one recall key) for both faces; *mirrored 1 when the face was mirrored */
+int ura_risk_grid_mirror(uraCtx* c, const uraState* ns, const char* who, int quiet, double* q,
+                         int* mirrored);
 /* the Annex F critical area of state ns (mass, width, its impact speed and angle), m^2 */
 int ura_risk_annexf(uraCtx* c, const uraState* ns, double* ca, double* speed, double* angle);
 /* a critical area (m^2) with its 95 % interval, and the reduction factor of the unmitigated

@@ -123,10 +123,16 @@ static int fits_memory(long n, double* mb, double* avail_mb) {
   return *mb <= *avail_mb / 2;
 }
 
+/* the scene is mirror-symmetric about the course up to the face: no roll or yaw (the drone, the
+   person and the wind along the course are symmetric), so face -phi is face phi mirrored */
+int ura_grid_symmetric(const uraState* st) {
+  return st->roll == 0 && st->yaw == 0;
+}
+
 /* the set-up is mirror-symmetric about the course: face 0 or 180, no roll or yaw */
 static int mirrored(const uraCtx* c) {
   double f = fmod(fabs(c->st.face), 180.0);
-  return f == 0 && c->st.roll == 0 && c->st.yaw == 0;
+  return f == 0 && ura_grid_symmetric(&c->st);
 }
 
 static double seconds_since(const struct timespec* t0) {

@@ -77,6 +77,7 @@ check mc_threads cond '[ -s "$TMP/mc1" ] && cmp -s "$TMP/mc1" "$TMP/mc2"'
 check mc_header grep -q '^n,mean,sd,lo95,hi95,p5,p50,p95$' "$TMP/mc1"
 check mc_surface_note grep -q '^# method: response surface: Q on a lattice of real grids (step 0.3 m), 6 points x 1 deployment branch = 6 grids; wind 2 values 0..4, face 3 nodes' "$TMP/mc1"
 check mc_check_note grep -q '^# surface check: samples 0..3 computed by their own grids' "$TMP/mc1"
+check mc_threads_mirror grep -q '^# method: .*face 3 nodes -180..180; .*; grids: 4 computed, 2 taken by mirror symmetry' "$TMP/mc1"
 # another seed: other numbers
 runs "set step 0.3; set format csv; case C; set seed 8; dist wind discrete 0,4 0.5,0.5
   dist face uniform -180 180; set surface_nodes 3; montecarlo 100"
@@ -123,6 +124,72 @@ check bearings awk -F, '/^sample/ { h = 1; next } h && /^[0-9]/ { p = $3 - $2; x
   if (f > x) f--; p -= 360 * f; d = p - $4; if (d < 0) d = -d; if (d > 1e-6 || $4 < -180 || $4 >= 180) bad = 1; n++ }
   END { exit bad || n != 50 }' "$TMP/out"
 check check_off grep -q '^# surface check: none (surface_check 0)' "$TMP/out"
+
+# mirror symmetry (no roll, no yaw): the grid at face -phi is the one at phi mirrored, the same Q
+# to the 9 digits montecarlo samples prints (case B, analytic airbag-free: the scene is symmetric
+# to the bit); -180 and 180 are one direction
+runs "set format csv; set step 0.3; case B; set wind 4; set mc_mirror off; set mc_method exact
+  dist face discrete -60,60,-180,180 0.25,0.25,0.25,0.25; montecarlo 16; montecarlo samples"
+sed -n '/^sample,/,$p' "$TMP/out" >"$TMP/mir"
+qface() { awk -F, -v f="$1" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+  $c["face"] == f { print $c["q"] "," $c["q_unmitigated"]; exit }' "$TMP/mir"; }
+check mirror_grid cond '[ -n "$(qface 60)" ] && [ "$(qface -60)" = "$(qface 60)" ] &&
+  [ -n "$(qface 180)" ] && [ "$(qface -180)" = "$(qface 180)" ] && [ "$(qface 60)" != "$(qface 180)" ]'
+# the surface over face uniform on the circle: nodes -180, -120, ..., 180, symmetric; the four
+# at -phi (and -180) take the grid at phi: 2 winds x (7 - 3) grids computed, 2 x 3 by mirror
+for mm in on off; do
+  runs "set format csv; set step 0.3; case C; set recall off; set mc_mirror $mm; set surface_check 6
+    dist wind discrete 0,4 0.5,0.5; dist face uniform -180 180; montecarlo 100"
+  cp "$TMP/out" "$TMP/mm_$mm"
+done
+check mc_mirror_count cond 'grep -q "= 14 grids; wind 2 values 0..4, face 7 nodes -180..180; .*; grids: 8 computed, 6 taken by mirror symmetry (face -phi is phi mirrored), 0 recalled$" "$TMP/mm_on" &&
+  grep -q "face 7 nodes -17[0-9.]*\.\.17[0-9.]*; .*; grids: 14 computed, 0 taken by mirror symmetry (face -phi is phi mirrored): mc_mirror off" "$TMP/mm_off"'
+# the two surfaces differ in their face nodes only: their means agree within the sum of the
+# largest errors their checks measured
+emax() { sed -n 's/^# surface check: .* at most \([0-9.e-]*\) m^2.*/\1/p' "$1"; }
+check mc_mirror_mean cond 'near "$(grep "^100," "$TMP/mm_on" | cut -d, -f2)" \
+  "$(grep "^100," "$TMP/mm_off" | cut -d, -f2)" "$(awk -v a="$(emax "$TMP/mm_on")" -v b="$(emax "$TMP/mm_off")" "BEGIN { print a + b }")"'
+# where the nodes are the same (face drawn from values): the same numbers, to the digit
+for mm in on off; do
+  runs "set format csv; set step 0.3; case B; set recall off; set mc_mirror $mm
+    dist wind discrete 0,4 0.5,0.5; dist face discrete -90,0,90 0.3,0.4,0.3; montecarlo 50; montecarlo samples"
+  grep -v '^# \(time\|method\):' "$TMP/out" >"$TMP/ms_$mm"
+  grep '^# method:' "$TMP/out" >"$TMP/msn_$mm"
+done
+check mc_mirror_same cond '[ -s "$TMP/ms_on" ] && cmp -s "$TMP/ms_on" "$TMP/ms_off" &&
+  grep -q "grids: 8 computed, 4 taken by mirror symmetry" "$TMP/msn_on" && grep -q "grids: 12 computed, 0 taken" "$TMP/msn_off"'
+# roll breaks the symmetry: nothing mirrored, the face nodes span the draws
+runs "set format csv; set step 0.3; case C; set roll 5; dist face uniform -180 180; set surface_nodes 3
+  set surface_check 0; montecarlo 20"
+check mc_mirror_roll grep -q 'face 3 nodes -17[0-9.]*\.\.17[0-9.]*; .*; grids: 3 computed, 0 taken by mirror symmetry (face -phi is phi mirrored): roll or yaw breaks the symmetry' "$TMP/out"
+# face drawn symmetrically about 0 (not the circle): nodes over [-m, m], m the largest |face| drawn;
+# drawn lopsided: the drawn extremes, nothing mirrored
+for d in "uniform -90 90" "uniform -30 90"; do
+  runs "set format csv; set step 0.3; case C; set recall off; dist face $d; set surface_nodes 5
+    set surface_check 0; montecarlo 40"
+  grep '^# method:' "$TMP/out" >"$TMP/mr_${d#uniform -}"
+done
+check mc_mirror_sym cond 'grep -q "face 5 nodes -\([0-9.]*\)\.\.\1; .*; grids: 3 computed, 2 taken by mirror symmetry (face -phi is phi mirrored), 0 recalled$" "$TMP/mr_90 90" &&
+  grep -q "face 5 nodes -2[0-9.]*\.\.[0-9.]*; .*; grids: 5 computed, 0 taken by mirror symmetry (face -phi is phi mirrored), 0 recalled$" "$TMP/mr_30 90"'
+# refined: each lattice point had once (computed, by mirror or recalled), the counts add up to
+# the final lattice
+runs "set format csv; set step 0.3; case C; set recall off; dist wind uniform 0 6; dist face uniform -180 180
+  set surface_nodes 3; set mc_surface_tol 0.05; montecarlo 60"
+check mc_mirror_refined cond 'grep -q "^# warning: the surface.s error .* refined [1-4] time" "$TMP/out" &&
+  sed -n "s/^# method: .* = \([0-9]*\) grids.*grids: \([0-9]*\) computed, \([0-9]*\) taken by mirror.*, \([0-9]*\) recalled$/\1 \2 \3 \4/p" "$TMP/out" |
+  awk "{ exit !(NF == 4 && \$1 == \$2 + \$3 + \$4 && \$3 > 0) }"'
+# and the face axis stays symmetric (a node inserted at phi brings its mirror): of W wind nodes
+# and F face nodes (0 and -180..180 among them) W (F + 1) / 2 are computed, W (F - 1) / 2 mirrored
+check mc_mirror_refined_sym cond 'sed -n "s/^# method: .*; wind \([0-9]*\) nodes .*, face \([0-9]*\) nodes -180\.\.180; .*grids: \([0-9]*\) computed, \([0-9]*\) taken by mirror.*/\1 \2 \3 \4/p" "$TMP/out" |
+  awk "{ exit !(NF == 4 && \$2 > 3 && \$3 == \$1 * (\$2 + 1) / 2 && \$4 == \$1 * (\$2 - 1) / 2) }"'
+# exact: a sample at face -phi recalls the grid of one at phi (recall on)
+for mm in on off; do
+  runs "set format csv; set step 0.3; case C; set mc_method exact; set mc_mirror $mm
+    dist face discrete -60,60 0.5,0.5; montecarlo 12"
+  grep '^# method:' "$TMP/out" >"$TMP/mx_$mm"
+done
+check mc_mirror_exact cond 'grep -q "12 grids (11 recalled: samples with identical conditions; [1-9][0-9]* of them by mirror symmetry" "$TMP/mx_on" &&
+  grep -q "12 grids (10 recalled: samples with identical conditions; 0 of them by mirror symmetry, face -phi as phi: mc_mirror off)" "$TMP/mx_off"'
 
 # ---- sora ----
 # Annex F of the RA3 at zero wind (90 deg): casex gives 1.70117 m^2 for 15 kg, 1.3 m at any

@@ -187,15 +187,65 @@ typedef struct {
 typedef struct {
   int nax;
   axis ax[MAXIN];
-  long total;                    /* lattice points */
+  int face_ax; /* the axis of face, or -1 */
+  int mirror;  /* 1: a lattice point at face -phi takes the Q of its partner at phi */
+  long total;  /* lattice points */
   int nmask, masks[urMAXBRANCH]; /* branches needed (the drawn ones and none) */
   double* value;                 /* nmask x total Q values */
 } surface;
 
-/* the axes: one per drawn input of the grids, nodes spanning what was drawn */
+/* how a distribution lies about 0: 2 when it covers the whole circle (a uniform at least 360
+   wide), 1 when it is symmetric about 0, 0 otherwise */
+static int dist_sym(const urDist* d) {
+  if (d->kind == urDIST_UNIFORM) return d->b - d->a >= 360 ? 2 : d->a == -d->b;
+  if (d->kind == urDIST_NORMAL) return d->a == 0 && d->lo == -d->hi;
+  if (d->kind != urDIST_DISCRETE) return 0;
+  for (int i = 0; i < d->nval; i++) {
+    int j = 0;
+    while (j < d->nval && !(d->val[j] == -d->val[i] && d->prob[j] == d->prob[i])) j++;
+    if (j == d->nval) return 0;
+  }
+  return 1;
+}
+
+/* how face's draws lie about 0 (dist_sym): declared as face, or from the bearings (a bearing
+   uniform over the circle makes face uniform over it; one bearing alone, symmetric, makes it
+   symmetric) */
+static int face_sym(const struct uraMc* m, const uraRiskSet* r, int col) {
+  if (col < m->ndecl) return dist_sym(&r->dist[col].d);
+  int wd = ura_dist_find(r, "wind_dir"), fd = ura_dist_find(r, "face_dir");
+  int sw = wd >= 0 ? dist_sym(&r->dist[wd].d) : 0, sf = fd >= 0 ? dist_sym(&r->dist[fd].d) : 0;
+  if (sw == 2 || sf == 2) return 2;
+  return (wd < 0 && sf) || (fd < 0 && sw);
+}
+
+/* whether the surface may take face -phi as phi mirrored: mc_mirror on, the live scene
+   symmetric and neither roll nor yaw drawn */
+static int surface_mirror(const struct uraMc* m, const uraState* st) {
+  if (!st->risk.mc_mirror || !ura_grid_symmetric(st)) return 0;
+  for (int k = 0; k < m->ndecl; k++) {
+    if (!strcmp(m->name[k], "roll") || !strcmp(m->name[k], "yaw")) return 0;
+  }
+  return 1;
+}
+
+/* n nodes over [-h, h], symmetric to the bit (node n-1-j is -node j; 0 in the middle) */
+static void symmetric_nodes(axis* a, int n, double h) {
+  for (int j = 0; j < n / 2; j++) {
+    a->node[j] = j == 0 ? -h : -h + 2 * h * j / (n - 1);
+    a->node[n - 1 - j] = -a->node[j];
+  }
+  if (n % 2) a->node[n / 2] = 0;
+  a->n = n;
+}
+
+/* the axes: one per drawn input of the grids, nodes spanning what was drawn (face's symmetric
+   about 0 when its draws are and the mirror applies: the whole circle when they cover it) */
 static void surface_axes(const struct uraMc* m, const uraState* st, surface* s) {
   s->nax = 0;
   s->total = 1;
+  s->face_ax = -1;
+  s->mirror = surface_mirror(m, st);
   for (int k = 0; k < m->nin; k++) {
     int decl = k < m->ndecl;
     if ((decl && !grid_input(m->name[k])) || (!decl && k != m->face_col)) continue;
@@ -214,8 +264,12 @@ static void surface_axes(const struct uraMc* m, const uraState* st, surface* s) 
         if (!seen) a->node[a->n++] = v;
       }
     }
+    int sym = !strcmp(m->name[k], "face") ? face_sym(m, &st->risk, k) : 0;
+    if (!strcmp(m->name[k], "face")) s->face_ax = s->nax - 1;
     if (a->discrete) {
       qsort(a->node, (size_t)a->n, sizeof(double), cmp_double);
+    } else if (s->mirror && sym && lo < 0 && hi > 0 && st->risk.surface_nodes > 2) {
+      symmetric_nodes(a, (int)st->risk.surface_nodes, fmax(sym == 2 ? 180 : 0, fmax(-lo, hi)));
     } else {
       int n = lo == hi ? 1 : (int)st->risk.surface_nodes;
       for (int j = 0; j < n; j++) a->node[j] = n == 1 ? lo : lo + (hi - lo) * j / (n - 1);
@@ -287,6 +341,30 @@ static int refine_axis(axis* a, double x) {
   return 1;
 }
 
+/* after refine_axis(a, x) on a face axis whose nodes were symmetric: the midpoint of the mirror
+   interval too, so that the axis stays symmetric and the new nodes at -phi cost no grid (not
+   when x's interval straddled 0: its midpoint was its own mirror); 1 when inserted */
+static int refine_mirror(axis* a, double x) {
+  for (int j = 0; j < a->n; j++) {
+    if (a->node[j] == x) return 0;
+  }
+  int j = 0;
+  while (j < a->n - 2 && -x >= a->node[j + 1]) j++;
+  double mid = 0.5 * (a->node[j] + a->node[j + 1]);
+  int k = 0;
+  while (k < a->n && a->node[k] != -mid) k++;
+  if (k == a->n || mid == 0) return 0; /* its partner is not there: it stays as it was */
+  return refine_axis(a, -x);
+}
+
+/* whether an axis's nodes are symmetric about 0 to the bit */
+static int axis_symmetric(const axis* a) {
+  for (int j = 0; j < a->n; j++) {
+    if (a->node[j] != -a->node[a->n - 1 - j]) return 0;
+  }
+  return 1;
+}
+
 /* the value of lattice point idx of s (branch k) in an earlier lattice old whose axes hold every
    node of it; 0 with *v, or -1 when a node is new */
 static int old_value(const surface* s, const surface* old, long idx, int k, double* v) {
@@ -307,11 +385,43 @@ static int old_value(const surface* s, const surface* old, long idx, int k, doub
   return 0;
 }
 
+/* Q of state ns's grid, asked for at its mirror face (ura_risk_grid_mirror: face -phi as phi)
+   when mc_mirror is on; *mirrored (unless NULL) 1 when it was */
+static int mc_grid(uraCtx* c, const uraState* ns, double* q, int* mirrored) {
+  int mir = 0;
+  int rc = ns->risk.mc_mirror ? ura_risk_grid_mirror(c, ns, "montecarlo", 1, q, &mir)
+                              : ura_risk_grid(c, ns, "montecarlo", 1, q);
+  if (mirrored) *mirrored = mir;
+  return rc;
+}
+
+/* the grid whose Q grid g of s takes by mirror symmetry (the same lattice point and branch at
+   face phi for one at -phi, ura_risk_mirror_face), or -1 when it has none */
+static long mirror_partner(const surface* s, const uraState* base, long g) {
+  if (!s->mirror || s->face_ax < 0) return -1;
+  long stride = 1;
+  for (int d = s->nax - 1; d > s->face_ax; d--) stride *= s->ax[d].n;
+  const axis* a = &s->ax[s->face_ax];
+  int j = (int)((g % s->total) / stride % a->n);
+  double x = ura_risk_mirror_face(base, a->node[j]);
+  if (x == a->node[j]) return -1;
+  int p = 0;
+  while (p < a->n && a->node[p] != x) p++;
+  return p == a->n ? -1 : g + (p - j) * stride;
+}
+
+/* how the surface's grids were had: each lattice point once, in the round it appeared */
+typedef struct {
+  int kept;     /* from the earlier (coarser) lattice, each round again */
+  int recalled; /* an identical earlier grid (recall.c) */
+  int computed; /* run */
+  int mirrored; /* the Q of its partner at the mirror face */
+} gridCount;
+
 /* the surface's grids (every lattice point of every branch needed; those of an earlier lattice
-   old are taken from it) */
+   old are taken from it, those at face -phi from their partner at phi), counted into n */
 static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const surface* old,
-                         const uraState* base, uraState* tmp, uraState* ns, int tty,
-                         int* recalled) {
+                         const uraState* base, uraState* tmp, uraState* ns, int tty, gridCount* n) {
   s->total = 1;
   for (int d = 0; d < s->nax; d++) s->total *= s->ax[d].n;
   long ngrid = s->total * s->nmask;
@@ -327,13 +437,21 @@ static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const surface* 
   for (long g = 0; g < ngrid && rc == 0; g++) {
     progress(tty, "surface grid", g + 1, ngrid);
     if (old_value(s, old, g % s->total, (int)(g / s->total), &s->value[g]) == 0) {
-      (*recalled)++;
+      n->kept++;
       continue;
     }
+    if (mirror_partner(s, base, g) >= 0) continue; /* below, once its partner is there */
     node_state(m, s, base, g % s->total, s->masks[g / s->total], tmp, ns);
-    rc = ura_risk_grid(c, ns, "montecarlo", 1, &s->value[g]);
-    *recalled += rc == 0 && c->last.recalled;
+    rc = mc_grid(c, ns, &s->value[g], NULL);
+    n->recalled += rc == 0 && c->last.recalled;
+    n->computed += rc == 0 && !c->last.recalled;
     if (rc) node_fail(c, m, s, g);
+  }
+  for (long g = 0; g < ngrid && rc == 0; g++) {
+    long p = mirror_partner(s, base, g);
+    if (p < 0 || old_value(s, old, g % s->total, (int)(g / s->total), &s->value[g]) == 0) continue;
+    s->value[g] = s->value[p];
+    n->mirrored++;
   }
   return rc;
 }
@@ -356,7 +474,8 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   int nchk = exact ? 0 : (int)fmin(base->risk.surface_check, m->n);
   double tol = base->risk.surface_tol, *qchk = calloc((size_t)nchk + 1, sizeof *qchk);
   if (!qchk) return ura_fail(c, "montecarlo: out of memory");
-  int rc = 0, recalled = 0, round = 0, first_worse = 0;
+  int rc = 0, round = 0, first_worse = 0;
+  gridCount cnt = {0, 0, 0, 0};
   double first_err = 0, emax = 0, rmax = 0, esum = 0;
   long ngrid = 0;
   /* the check samples' own grids, once */
@@ -364,13 +483,15 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     progress(tty, "surface check", i + 1, nchk);
     sample_state(m, base, i, tmp);
     ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
-    rc = ura_risk_grid(c, ns, "montecarlo", 1, &qchk[i]);
+    rc = mc_grid(c, ns, &qchk[i], NULL);
     if (rc) mc_fail_sample(c, m, i);
   }
   surface prev;
   memset(&prev, 0, sizeof prev);
   for (;; round++) {
-    if (rc == 0) rc = surface_build(c, m, &s, &prev, base, tmp, ns, tty, &recalled);
+    if (rc == 0) {
+      rc = surface_build(c, m, &s, &prev, base, tmp, ns, tty, &cnt);
+    }
     free(prev.value);
     prev.value = NULL;
     if (rc) break;
@@ -403,7 +524,11 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
     s.value = NULL;
     int any = 0;
     for (int d = 0; d < s.nax; d++) {
-      any |= refine_axis(&s.ax[d], m->x[(size_t)worst * m->nin + s.ax[d].col]);
+      double x = m->x[(size_t)worst * m->nin + s.ax[d].col];
+      int sym = d == s.face_ax && s.mirror && axis_symmetric(&s.ax[d]);
+      int r = refine_axis(&s.ax[d], x);
+      if (r && sym) refine_mirror(&s.ax[d], x);
+      any |= r;
     }
     if (!any) {
       rc = ura_fail(c,
@@ -419,6 +544,17 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   free(qchk);
 
   /* the method, in words */
+  int recalled = cnt.recalled + cnt.kept;
+  char mirror[300];
+  snprintf(mirror, sizeof mirror,
+           "grids: %d computed, %d taken by mirror symmetry (face -phi is phi mirrored)%s, %d "
+           "recalled",
+           cnt.computed, cnt.mirrored,
+           !base->risk.mc_mirror ? ": mc_mirror off"
+           : !s.mirror           ? ": roll or yaw breaks the symmetry"
+           : s.face_ax < 0       ? ": face is not drawn"
+                                 : "",
+           cnt.recalled);
   char axes[400] = "";
   size_t k = 0;
   for (int d = 0; d < s.nax && k < sizeof axes; d++) {
@@ -429,12 +565,13 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   }
   snprintf(m->note[1], sizeof m->note[1],
            "method: response surface: Q on a lattice of real "
-           "grids (step %g m), %ld point%s x %d deployment branch%s = %ld grids%s%s%s; %s; %s",
+           "grids (step %g m), %ld point%s x %d deployment branch%s = %ld grids%s%s%s; %s; %s; %s",
            base->step, s.total, s.total == 1 ? "" : "s", s.nmask, s.nmask == 1 ? "" : "es", ngrid,
            recalled ? " (" : "", recalled ? "some recalled" : "", recalled ? ")" : "",
            s.nax ? axes : "no drawn input acts on the grids",
            exact ? "every sample is on a lattice point: exact"
-                 : "multilinear interpolation between the nodes");
+                 : "multilinear interpolation between the nodes",
+           mirror);
   m->surf_err = nchk ? rmax : NAN;
   if (exact) {
     snprintf(m->note[2], sizeof m->note[2], "surface check: not needed (exact)");
@@ -472,7 +609,7 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
 /* Q of every sample from its own grids */
 static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* tmp, uraState* ns,
                     int tty) {
-  int rc = 0, ngrid = 0, recalled = 0;
+  int rc = 0, ngrid = 0, recalled = 0, mirrored = 0;
   for (int i = 0; i < m->n && rc == 0; i++) {
     progress(tty, "sample", i + 1, m->n);
     sample_state(m, base, i, tmp);
@@ -483,16 +620,19 @@ static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* 
         break;
       }
       ura_risk_branch_state(tmp, mask, &m->dep, m->bag, ns);
-      rc = ura_risk_grid(c, ns, "montecarlo", 1, b ? &m->q_c[i] : &m->q[i]);
+      int mir;
+      rc = mc_grid(c, ns, b ? &m->q_c[i] : &m->q[i], &mir);
       if (rc) mc_fail_sample(c, m, i);
       ngrid++;
       recalled += rc == 0 && c->last.recalled;
+      mirrored += rc == 0 && c->last.recalled && mir;
     }
   }
   snprintf(m->note[1], sizeof m->note[1],
            "method: exact: every sample's own grids (step %g m), "
-           "%d grids (%d recalled: samples with identical conditions)",
-           base->step, ngrid, recalled);
+           "%d grids (%d recalled: samples with identical conditions; %d of them by mirror "
+           "symmetry, face -phi as phi%s)",
+           base->step, ngrid, recalled, mirrored, base->risk.mc_mirror ? "" : ": mc_mirror off");
   snprintf(m->note[2], sizeof m->note[2], "surface check: not needed (exact)");
   return rc;
 }

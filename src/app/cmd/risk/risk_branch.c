@@ -1,6 +1,7 @@
 /* risk_branch.c: what risk, sora and montecarlo share about deployment: the devices a drone
  * carries (a parachute, the airbags it is fitted with), a deployment branch's name and state
- * (the live state with each device deployed or not), a branch's grid and Q, the Annex F
+ * (the live state with each device deployed or not), a branch's grid and Q (or its mirror
+ * image's: face -phi is face phi mirrored when nothing else breaks the symmetry), the Annex F
  * critical area of a state and the iGRC of an area. Below the three commands, so that none of
  * them calls another. */
 #include <math.h>
@@ -77,6 +78,29 @@ int ura_risk_grid(uraCtx* c, const uraState* ns, const char* who, int quiet, dou
   }
   *q = c->last.g->q;
   return 0;
+}
+
+double ura_risk_mirror_face(const uraState* st, double face) {
+  return ura_grid_symmetric(st) && face < 0 && face >= -180 ? -face : face;
+}
+
+int ura_risk_grid_mirror(uraCtx* c, const uraState* ns, const char* who, int quiet, double* q,
+                         int* mirrored) {
+  double face = ura_risk_mirror_face(ns, ns->face);
+  *mirrored = face != ns->face;
+  if (!*mirrored) return ura_risk_grid(c, ns, who, quiet, q);
+  uraState* m = malloc(sizeof *m);
+  if (!m) return ura_fail(c, "%s: out of memory", who);
+  *m = *ns;
+  m->face = face;
+  int rc = ura_risk_grid(c, m, who, quiet, q);
+  free(m);
+  if (rc) {
+    size_t k = strlen(c->err);
+    snprintf(c->err + k, sizeof c->err - k, " (face %g asked for as its mirror image, face %g)",
+             ns->face, face);
+  }
+  return rc;
 }
 
 int ura_risk_annexf(uraCtx* c, const uraState* ns, double* ca, double* speed, double* angle) {
