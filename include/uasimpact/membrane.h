@@ -161,9 +161,13 @@ void ur_mem_free(urMembrane* mb);
    engine's contact scratch (5 nt: each triangle's bounding sphere, a list of triangles; then
    7 doubles per urMEM_CBLK free nodes and per urMEM_CBLK free triangles: their boxes; then for
    the implicit stiff penalty 5 nn: each node's normal stiffness, normal and lumped stiffness, 3
-   nn: its position correction along the normal (the implicit midpoint's), 3 nn: the solve's
+   nn: its position correction along the normal (the implicit midpoint's), 6 nn: the solve's
    work, 3 ne: each edge's coupling and nodes, ne: the list of the edges coupled) */
 size_t ur_mem_state_size(const urMembrane* mb);
+
+/* where the stiff penalty's buffers start in the run's state (the 5 nn of normal stiffness, the
+   last part of ur_mem_state_size's layout): one place for the engine and the size */
+size_t ur_mem_stiff_offset(const urMembrane* mb);
 
 /* free nodes (and free triangles) per box of the face contact's culling (engine_membrane.c) */
 #define urMEM_CBLK 8

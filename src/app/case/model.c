@@ -658,10 +658,11 @@ static void bag_penalties(const urModel* m, const urAirbag* b, FILE* f, uraTable
     double kc = ur_bag_penalty(m, b, i);
     const char* g = m->geom[b->target[i]].name;
     if (b->tk[i] > 0 && kc * unit < b->tk[i])
-      n += snprintf(line + n, sizeof line - n,
-                    " %s %.3g N/m^3 (kc_alpha %.3g; its layer's E_oed/h %.3g, more than the step "
-                    "carries),",
-                    g, kc * unit, kc, b->tk[i]);
+      n +=
+          snprintf(line + n, sizeof line - n,
+                   " %s %.3g N/m^3 (kc_alpha %.3g; its layer's E_oed/h %.3g, %s),", g, kc * unit,
+                   kc, b->tk[i],
+                   s->kc_alpha > 1 ? "capped at the bag's kc_alpha" : "more than the step carries");
     else if (b->tk[i] > 0)
       n += snprintf(line + n, sizeof line - n, " %s %.3g N/m^3 (its layer's E_oed/h),", g,
                     kc * unit);

@@ -123,15 +123,11 @@ static int out_box(const double r[3], const double gh[3]) {
 }
 
 
-/* the contact scratch's per-node buffers after the culling boxes (membrane_mesh.c:
-   ur_mem_state_size): each free node's lumped normal stiffness (4 a node, contact_implicit's kn)
-   and the stiff contact's position correction along the normal (3 a node, applied by
-   urm_bags_advance) */
+/* the stiff contact's buffers after the culling boxes (ur_mem_stiff_offset): each free node's
+   normal stiffness (5 a node, contact_implicit's kn), its position correction along the normal
+   (3 a node, applied by urm_bags_advance), the solve's work (6 a node), the edges' couplings */
 static double* node_bufs(const urMembrane* mb, double* st) {
-  size_t nb = (size_t)(mb->nn + urMEM_CBLK - 1) / urMEM_CBLK;
-  size_t tb = (size_t)(mb->nt + urMEM_CBLK - 1) / urMEM_CBLK;
-  return st + 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt +
-         7 * (nb + tb);
+  return st + ur_mem_stiff_offset(mb);
 }
 
 
@@ -224,7 +220,7 @@ static double contact_sub(const urModel* m, urData* d, const urMembrane* mb, con
    stiffness is at least its couplings'), to 1e-12 of the largest or 100 sweeps, in the free
    nodes' order (the same bits in lanes). The increments go to f and fc, their reactions to the
    body; the position correction that turns the sub-steps' h vn+ + b Fc / m into h^2 Fc / 2m,
-   -(b - h^2 / 2) Fc / m along n, is added to cor (3 a node) for urm_bags_advance; wk holds 3 nn
+   -(b - h^2 / 2) Fc / m along n, is added to cor (3 a node) for urm_bags_advance; wk holds 6 nn
    of work. The body's side stays explicit (its reaction this step), so the stiffness over all
    nodes must stay within the step for the body's mass. A node's normal contact force stays
    >= 0. The normal sum returned. */
@@ -240,9 +236,12 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
   int nsub = (int)ceil(h / mb->dt_stable - 1e-9);
   nsub = nsub < 1 ? 1 : nsub;
   double bh2 = h * h * (nsub + 1) / (2.0 * nsub), hh2 = 0.5 * h * h;
-  // per node in wk (3 a node): the displacement without the increment D0, the increment df, the
-  // coupling sum S; nodes out of contact have D0 = 0 and df = 0 (S reads their D as 0)
+  // per node in wk (6 a node): the displacement without the increment D0, the increment df, the
+  // coupling sum S; nodes out of contact have D0 = 0 and df = 0 (S reads their D as 0); and what
+  // the sweeps read unchanged: the damping's term C h fo / m, the denominator and the force's
+  // floor -max(fn, 0)
   double *D0 = wk, *df = wk + nn, *S = wk + 2 * nn;
+  double *cd = wk + 3 * nn, *den = wk + 4 * nn, *flo = wk + 5 * nn;
   // the mean normal made a unit vector here, once (kn[1..3]); a node without stiffness or normal
   // gets kn[0] = 0, and the sweeps and the update below skip it
   for (int j = 0; j < mb->nfree; j++) {
@@ -262,10 +261,13 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
     for (int k = 0; k < 3; k++) {
       vb[k] = vo[k] + wr[k];
     }
-    double mi = mb->mass[i];
+    double mi = mb->mass[i], K = ki[0], C = ki[4] * cr;
     double vn = urm_dot(v + 3 * i, n) - urm_dot(vb, n), fo = urm_dot(f + 3 * i, n);
     double fn = urm_dot(fc + 3 * i, n);
     D0[i] = h * vn + (bh2 * (fo - fn) + hh2 * fn) / mi;
+    cd[i] = C * h * fo / mi;
+    den[i] = 1 + 0.5 * K * hh2 / mi + C * h / mi;
+    flo[i] = -fmax(fn, 0);
   }
   // Jacobi sweeps on df_i (1 + Kd hh2 / 2m + C h / m) = -(Kd D0_i + S_i) / 2 - C h fo / m, with
   // S_i = sum over the edges K_ij D_j, D_j = D0_j + hh2 df_j / m_j; a node's force kept >= 0
@@ -282,15 +284,11 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
     double dmax = 0, fmx = 0;
     for (int j = 0; j < mb->nfree; j++) {
       int i = mb->free[j];
-      const double *ki = kn + 5 * i, *n = ki + 1;
-      if (!(ki[0] > 0)) {
+      double K = kn[5 * i];
+      if (!(K > 0)) {
         continue;
       }
-      double mi = mb->mass[i], K = ki[0], C = ki[4] * cr;
-      double fo = urm_dot(f + 3 * i, n), fn = urm_dot(fc + 3 * i, n);
-      double nd =
-          -(0.5 * (K * D0[i] + S[i]) + C * h * fo / mi) / (1 + 0.5 * K * hh2 / mi + C * h / mi);
-      nd = fmax(nd, -fmax(fn, 0));
+      double nd = fmax(-(0.5 * (K * D0[i] + S[i]) + cd[i]) / den[i], flo[i]);
       dmax = fmax(dmax, fabs(nd - df[i]));
       fmx = fmax(fmx, fabs(nd));
       df[i] = nd;
@@ -380,9 +378,9 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   // beyond the explicit bound (kc_alpha > 1): each free node's lumped normal stiffness (4 nn,
   // after the boxes), for contact_implicit
   double* kn = s->kc_alpha > 1 ? node_bufs(mb, st) : NULL;
-  // after kn (5 nn) the position corrections (3 nn), the implicit solve's work (3 nn), each
+  // after kn (5 nn) the position corrections (3 nn), the implicit solve's work (6 nn), each
   // edge's coupling (3 ne: stiffness, its two nodes) and the list of the edges coupled (ne)
-  double* ke = kn ? kn + 11 * (size_t)nn : NULL;
+  double* ke = kn ? kn + 14 * (size_t)nn : NULL;
   int nel = 0;
   for (int j = 0; kn && j < mb->nfree; j++) {
     int i = mb->free[j];

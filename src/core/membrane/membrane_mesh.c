@@ -528,11 +528,15 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
 
 //---------------------------------- run state -----------------------------------------------------
 
-size_t ur_mem_state_size(const urMembrane* mb) {
+size_t ur_mem_stiff_offset(const urMembrane* mb) {
   size_t nb = (size_t)(mb->nn + urMEM_CBLK - 1) / urMEM_CBLK;
   size_t tb = (size_t)(mb->nt + urMEM_CBLK - 1) / urMEM_CBLK;
-  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt +
-         7 * (nb + tb) + 11 * (size_t)mb->nn + 4 * (size_t)mb->ne;
+  return 18 * (size_t)mb->nn + urMEMS_N + 44 * (size_t)mb->ntb + 5 * (size_t)mb->nt + 7 * (nb + tb);
+}
+
+
+size_t ur_mem_state_size(const urMembrane* mb) {
+  return ur_mem_stiff_offset(mb) + 14 * (size_t)mb->nn + 4 * (size_t)mb->ne;
 }
 
 
