@@ -404,8 +404,9 @@ static int foam_backing(Parser* p, const char* what, int ga, int bm, int line, u
                     what, na, na);
   }
   const urlLayer* l = p->layer + a->layer;
-  char who[3 * urNAMELEN + 64];
-  snprintf(who, sizeof who, "%s, foam on %s (layer %s)", what, na, symname(p, SYM_LAYER, a->layer));
+  char who[2 * urNAMELEN + 64];
+  snprintf(who, sizeof who, "%s, foam on layer %s:", what, symname(p, SYM_LAYER, a->layer));
+  int told = p->m->derived && strstr(p->m->derived, who); /* once per statement and layer */
   if (l->law >= 0) {
     const urLaw* ll = p->law + l->law;
     if (ll->type != urLAW_TABLE) {
@@ -415,8 +416,10 @@ static int foam_backing(Parser* p, const char* what, int ga, int bm, int line, u
                       what, symname(p, SYM_LAW, l->law), symname(p, SYM_LAYER, a->layer));
     }
     out->backing = ll->load;
-    url_derived(p, "%s: backing beyond the lock strain = the loading curve of law %s", who,
-                symname(p, SYM_LAW, l->law));
+    if (!told) {
+      url_derived(p, "%s backing beyond the lock strain = the loading curve of law %s", who,
+                  symname(p, SYM_LAW, l->law));
+    }
     return 0;
   }
   const urMaterial *ml = p->mat + l->mat, *mb = p->mat + bm;
@@ -427,18 +430,24 @@ static int foam_backing(Parser* p, const char* what, int ga, int bm, int line, u
   if (l->radius > 0) {
     out->backing_r = h.radius;
     out->backing_k = ur_law_backing_k(out, h.radius);
+  } else {
+    out->backing_r = urHERTZ_CURVATURE;
+    out->backing_k = 0;
+  }
+  if (told) {
+    return 0;
+  }
+  if (l->radius > 0) {
     url_derived(p,
-                "%s: backing K = 4/3 E* sqrt(R) = %.6g N/m^1.5 (E* %.6g Pa of E1 %.6g Pa, nu1 %g "
+                "%s backing K = 4/3 E* sqrt(R) = %.6g N/m^1.5 (E* %.6g Pa of E1 %.6g Pa, nu1 %g "
                 "on %s E2 %.6g Pa, nu2 %g; R %g m, flat backing)",
                 who, out->backing_k, h.estar, ml->E, ml->nu, symname(p, SYM_MATERIAL, bm), mb->E,
                 mb->nu, h.radius);
   } else {
-    out->backing_r = urHERTZ_CURVATURE;
-    out->backing_k = 0;
     url_derived(p,
-                "%s: backing K = 4/3 E* sqrt(R), E* %.6g Pa (E1 %.6g Pa, nu1 %g on %s E2 %.6g Pa, "
-                "nu2 %g), R the curvature of %s at each contact (flat backing)",
-                who, h.estar, ml->E, ml->nu, symname(p, SYM_MATERIAL, bm), mb->E, mb->nu, na);
+                "%s backing K = 4/3 E* sqrt(R), E* %.6g Pa (E1 %.6g Pa, nu1 %g on %s E2 %.6g Pa, "
+                "nu2 %g), R the curvature of the person's part at each contact (flat backing)",
+                who, h.estar, ml->E, ml->nu, symname(p, SYM_MATERIAL, bm), mb->E, mb->nu);
   }
   return 0;
 }

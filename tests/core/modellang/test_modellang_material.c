@@ -301,10 +301,10 @@ static void test_backing_derived(void** state) {
   // the foam is the drone's: no override noted; what was derived is listed
   assert_null(strstr(m->note, "cg"));
   assert_non_null(strstr(m->derived,
-                         "pairs 'cg', foam on cranium (layer scalp_l): backing K = "
+                         "pairs 'cg', foam on layer scalp_l: backing K = "
                          "4/3 E* sqrt(R) = 9.59907e+06 N/m^1.5"));
   assert_non_null(strstr(m->derived,
-                         "foam on neck (layer soft): backing beyond the lock "
+                         "pairs 'cg', foam on layer soft: backing beyond the lock "
                          "strain = the loading curve of law tissue"));
   ur_model_free(m);
 }
