@@ -639,7 +639,7 @@ static void columns(const spec* s, char* out, size_t len) {
 
 /* -r: the header lines of the log to resume (kept) and its rows (replayed); a row cut short
    (no newline: the fit was stopped while writing it) is dropped */
-static int resume_read(fit* F, const char* cols, char* head, size_t len) {
+static int resume_read(fit* F, const char* cols, char** head) {
   FILE* f = fopen(F->resume, "r");
   if (!f) {
     fprintf(stderr, "calibrate: %s: %s\n", F->resume, strerror(errno));
@@ -648,11 +648,17 @@ static int resume_read(fit* F, const char* cols, char* head, size_t len) {
   char* line = NULL;
   size_t cap = 0, n = 0;
   int ln = 0, seen = 0, rc = 0;
-  head[0] = 0;
   while (rc == 0 && getline(&line, &cap, f) > 0) {
     ln++;
     if (!seen && line[0] == '#') {
-      n += snprintf(head + n, n < len ? len - n : 0, "%s", line);
+      char* more = realloc(*head, n + strlen(line) + 1);
+      if (!more) {
+        fprintf(stderr, "calibrate: %s: out of memory\n", F->resume);
+        rc = -1;
+      } else {
+        *head = more;
+        n += sprintf(more + n, "%s", line);
+      }
     } else if (!seen) {
       seen = 1;
       if (strcmp(line, cols)) {
@@ -692,6 +698,11 @@ static int set_share(const char* specpath, spec* s, const char* arg, const char*
     if (p->other >= 0 && !strncmp(arg, p->name, ln) && arg[ln] == '/' &&
         !strncmp(arg + ln + 1, p->of, eq - arg - ln - 1) && arg + ln + 1 + strlen(p->of) == eq) {
       if (num(eq + 1, &v)) break;
+      if (!(p->lo < v && v < p->hi)) {
+        fprintf(stderr, "calibrate: '%s': outside the share's bounds %g .. %g (%s:%d)\n", arg,
+                p->lo, p->hi, specpath, p->line);
+        return -1;
+      }
       s->f[j].start = v;
       return 0;
     }
@@ -745,9 +756,9 @@ int main(int argc, char** argv) {
              argv[i], eq + 1);
   }
   if (maxeval > 0) s.maxeval = maxeval;
-  char cols[ROWLEN], head[4 * ROWLEN] = "", commit[128], now[32];
+  char cols[ROWLEN], *head = NULL, commit[128], now[32];
   columns(&s, cols, sizeof cols);
-  if (F.resume && resume_read(&F, cols, head, sizeof head)) return 1;
+  if (F.resume && resume_read(&F, cols, &head)) return 1;
   spec_commit(specpath, commit, sizeof commit);
   utc_now(now, sizeof now);
   ura_init(&c); /* GSL failures as return codes (ur_init) */
@@ -771,8 +782,9 @@ int main(int argc, char** argv) {
   }
   /* the header: the spec's commit and the start, every resume a line of its own */
   if (F.resume) {
-    fprintf(F.log, "%s# resumed %s from %s after %d rows; spec %s: %s\n", head, now, F.resume,
-            F.nrows, specpath, commit);
+    fprintf(F.log, "%s# resumed %s from %s after %d rows; spec %s: %s\n", head ? head : "", now,
+            F.resume, F.nrows, specpath, commit);
+    free(head);
   } else {
     fprintf(F.log, "# spec %s: %s\n# started %s\n", specpath, commit, now);
   }
