@@ -1,0 +1,39 @@
+# test_candidate.sh: the RA3 rebuilt on its materials (src/models/candidate/ra3.urm, issue 33),
+# the model under calibration: it loads in place of the built-in RA3; its arm hinges are those
+# beam theory gives for its carbon tube (k = 3EI/L, M_p = sigma_y Z_p, closed forms computed here
+# from the file's own D, t, L, E and yield); it declares no law of the person's head (the scalp
+# laws come from the person's layer); arm_t moves the hinge as the formulas say.
+. tests/lib.sh
+F=src/models/candidate/ra3.urm
+
+run -c "model load $F; model notes"
+check loads cond '[ $RC -eq 0 ] && [ ! -s "$TMP/err" ]'
+# closed forms for the tube D = 0.06 m, t = arm_t, L = 0.41 m, E 54.8 GPa, yield 59.3 MPa
+hinge() { # t -> "k Mp"
+  awk -v t="$1" 'BEGIN { D = 0.06; d = D - 2 * t; pi = atan2(0, -1)
+    I = pi * (D^4 - d^4) / 64; Zp = (D^3 - d^3) / 6
+    printf "%.6g %.6g\n", 3 * 5.48e10 * I / 0.41, 5.93e7 * Zp }'
+}
+read -r K MP <<EOT
+$(hinge 0.00078)
+EOT
+got_k=$(awk -F'= ' '/restraint .arm1. dof 0 .*hinge k = 3 E I/ { split($3, a, " "); print a[1]; exit }' "$TMP/out")
+got_mp=$(awk -F'= ' '/restraint .arm1. dof 0 .*hinge M_p/ { split($3, a, " "); print a[1]; exit }' "$TMP/out")
+check hinge_k awk -v a="$got_k" -v b="$K" 'BEGIN { exit !(a != "" && (a - b)^2 <= (1e-5 * b)^2) }'
+check hinge_mp awk -v a="$got_mp" -v b="$MP" 'BEGIN { exit !(a != "" && (a - b)^2 <= (1e-5 * b)^2) }'
+check six_arms cond '[ "$(grep -c "hinge M_p = sigma_y Z_p" "$TMP/out")" -eq 12 ]'
+# no scalp law in the drone file: the head pairs' laws are derived from the person's layer
+check no_head_law cond '! grep -q "^law \(frame_head\|arm_head\)" '"$F"' && grep -q "pairs .fh., frame on head_cranium (layer scalp, material carbon): Hertz" "$TMP/out"'
+
+# a thicker wall: the hinge moves as the closed forms say
+run -c "model load $F; set arm_t 1.5 mm; model notes"
+read -r K2 MP2 <<EOT
+$(hinge 0.0015)
+EOT
+got_k2=$(awk -F'= ' '/restraint .arm1. dof 0 .*hinge k = 3 E I/ { split($3, a, " "); print a[1]; exit }' "$TMP/out")
+check hinge_follows_t awk -v a="$got_k2" -v b="$K2" 'BEGIN { exit !(a != "" && (a - b)^2 <= (1e-5 * b)^2) }'
+
+# the built-in RA3 is untouched: it still has its fitted arm law
+run -c 'show arm_k'
+check builtin_kept cond '[ $RC -eq 0 ] && grep -q "^arm_k " "$TMP/out"'
+finish
