@@ -189,9 +189,10 @@ typedef struct {
   urMemSpec mspec;
   int nsupport;
   int support[urMAXBAGTGT];
-  urMembrane* mem; /* built and inflated by ur_model_compile, constant after */
-  int madr;        /* first double of its run state in urData.mem */
-  int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
+  urMembrane*
+      mem; /* built and inflated by ur_model_compile (or copied from opt.memcache), constant after */
+  int madr; /* first double of its run state in urData.mem */
+  int nsub; /* membrane sub-steps per step (its stable step is smaller) */
 } urAirbag;
 
 typedef struct {
@@ -259,6 +260,10 @@ typedef struct {
   double jump_margin;      /* free-flight jump stops this far from contact, m (1e-3) */
   const _Atomic int* stop; /* optional (not part of the model text): a step fails with
                                       urSTAT_STOPPED while *stop != 0 (an interrupt flag) */
+  urMemCache* memcache;    /* optional (not part of the model text): ur_model_compile takes
+                                      its membrane bags built and inflated from this cache
+                                      (membrane.h: ur_mem_build_inflated; the same bits), which
+                                      must outlive the compile; NULL: each built afresh */
 } urOption;
 
 typedef struct {

@@ -219,6 +219,8 @@ typedef struct uraCtx {
                                       eccentricity up, side */
   uraModelCache* mcache; /* other models with their stances (NULL until one is kept) */
   uraRecall* recall;     /* complete grids for recall (NULL until one is kept) */
+  urMemCache* memcache;  /* the session's inflated membrane bags (model.c compile; NULL until
+                            the first compile), freed with the models */
   unsigned long tick;    /* use counter of both, for least-recently-used eviction */
   /* run (or recall) the impact of one grid cell and its histories, for the viewer; NULL: the
      viewer shows stored cell values only (main sets the command layer's ura_inspect_cell) */
