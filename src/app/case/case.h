@@ -439,6 +439,10 @@ void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
 /* a model parameter's value for messages, six digits and its SI unit: "1e+20 N*m/rad" */
 void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
+/* the parameter a model parameter follows while it is not set (param NAME $OTHER,
+   urParam.from): "$OTHER", or "$OTHER x F" when its line's unit scales it; 0, or -1 (it holds
+   its own value; buf "") */
+int ura_model_param_from(const urModel* m, const urParam* p, char* buf, size_t n);
 /* the values the compiled model derives for its airbags (not parameters: set none of them),
    one '#' line per bag: which bag model, and for a membrane its mesh, fabric mass, stable step
    and sub-steps, inflated volume and pressure, strain (show, model params) */

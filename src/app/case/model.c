@@ -419,6 +419,16 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
   return ura_model_state(c, &ns, who);
 }
 
+int ura_model_param_from(const urModel* m, const urParam* p, char* buf, size_t n) {
+  buf[0] = 0;
+  if (p->from < 0 || p->from >= m->nparam) return -1;
+  if (p->from_f == 1)
+    snprintf(buf, n, "$%s", m->param[p->from].name);
+  else
+    snprintf(buf, n, "$%s x %g", m->param[p->from].name, p->from_f);
+  return 0;
+}
+
 /* ---- the model command ---- */
 
 /* the model set as text, each part ending in a newline; headers name each part's origin */
@@ -580,7 +590,12 @@ static int model_params(uraCtx* c, const char* prefix) {
   for (int i = 0; i < m->nparam; i++) {
     if (strncmp(m->param[i].name, prefix, strlen(prefix))) continue;
     found++;
+    char from[2 * urNAMELEN], follows[2 * urNAMELEN + 8];
     const char* who = "model";
+    if (!ura_model_param_from(m, &m->param[i], from, sizeof from)) {
+      snprintf(follows, sizeof follows, "model: %s", from); /* it follows another */
+      who = follows;
+    }
     for (int k = 0; k < c->st.nov; k++) {
       if (!strcmp(c->st.ov_name[k], m->param[i].name)) who = c->st.ov_user[k] ? "set" : "case";
     }
