@@ -124,6 +124,25 @@ check "share of an undeclared parameter" cond '[ "$RC" -eq 1 ] && [ "$(lines "$T
 check "unknown share on the command line" cond '[ "$RC" -eq 2 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
   has "$TMP/err" "frame_a/frame_b=0.5.*sh.spec declares no such share"'
 
+# ---- a spec's load and set: the same loss as -l FILE and NAME=VALUE on the command line;
+# anything but a plain setting refused with file:line, nothing run
+sed -n '/^part ra3$/,$p' src/models/ra3.urm | sed 's/^param frame_deg [0-9.]*/param frame_deg 3/' >"$TMP/deg3.urm"
+printf 'case C 40.6 %s/table06_caseC_wind0.csv\nfree frame_a 0.20 0.40 0.25\nloss integral\nload %s\nset step 0.2\nset foam_t 3 cm\n' "$G" "$TMP/deg3.urm" >"$TMP/ls.spec"
+"$CAL" -e -s "$TMP/ls.spec" -o "$TMP/ls" >/dev/null 2>&1; RC=$?
+printf 'case C 40.6 %s/table06_caseC_wind0.csv\nfree frame_a 0.20 0.40 0.25\nloss integral\n' "$G" >"$TMP/pa.spec"
+"$CAL" -e -s "$TMP/pa.spec" -o "$TMP/ls2" -l "$TMP/deg3.urm" step=0.2 foam_t=0.03 >/dev/null 2>&1
+"$CAL" -e -s "$TMP/pa.spec" -o "$TMP/ls3" step=0.2 foam_t=0.03 >/dev/null 2>&1
+check "spec load and set = -l and NAME=VALUE" cond '[ "$RC" -eq 0 ] && [ -s "$TMP/ls/log.csv" ] &&
+  [ "$(tail -1 "$TMP/ls/log.csv")" = "$(tail -1 "$TMP/ls2/log.csv")" ] &&
+  [ "$(tail -1 "$TMP/ls/log.csv")" != "$(tail -1 "$TMP/ls3/log.csv")" ]'
+printf 'case C 40.6 x.csv\nset foam_t 0.03;model\n' >"$TMP/inj.spec"
+"$CAL" -e -s "$TMP/inj.spec" -o "$TMP/c" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check "a spec's set runs nothing else" cond '[ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "inj.spec:2: expected set NAME VALUE \[UNIT\]"'
+printf 'case C 40.6 x.csv\nload a;b.urm\n' >"$TMP/inj2.spec"
+"$CAL" -e -s "$TMP/inj2.spec" -o "$TMP/c" >"$TMP/out" 2>"$TMP/err"; RC=$?
+check "a spec's load is a plain path" cond '[ "$RC" -eq 1 ] && has "$TMP/err" "inj2.spec:2: expected load FILE"'
+
 # the man page's CALIBRATION section declares each free parameter of the spec
 sed -n '/^\.SS Free parameters/,/^\.SS Discrete/p' man/uasimpact-model.5 >"$TMP/decl"
 ok=1

@@ -19,6 +19,12 @@
  *     NAME=VALUE model parameters set on top (SI), e.g. to measure one change alone
  *     NAME/OTHER=SHARE  the start (with -e: the point) of a share the spec declares
  *
+ * Besides cases, free parameters and choices, a spec may hold `load FILE` (a part file loaded
+ * over the built-in model before the fit, as -l; the spec's first) and `set NAME VALUE [UNIT]`
+ * (a setting held at every evaluation, before the command line's NAME=VALUE). They are data:
+ * a load only reads a part file, a set only sets a parameter (a NAME of letters, digits and _,
+ * no ';' or quotes anywhere), nothing else runs.
+ *
  * The loss (the spec's words; the man page states it), per training case X, over the full plane
  * (ura_grid_load mirrors the paper's half plane: a printed column dperp > 0 counts twice):
  *   loss integral   the integrated absolute error, the sum over cells of |P_ours - P_paper| times
@@ -100,6 +106,9 @@ typedef struct {
   int restarts; /* new simplices around the best point, while they gain */
   double gain;  /* a restart that lowers the loss by less than this ends */
   int integral; /* loss integral (1) or footprint (0, the default) */
+  int nload;    /* load FILE: parts loaded over the built-in model, in order */
+  char load[8][LINELEN];
+  char set[LINELEN]; /* set NAME VALUE [UNIT]: held settings, '; '-joined */
 } spec;
 
 typedef struct {
@@ -193,6 +202,25 @@ static int spec_read(const char* path, spec* s) {
         rc = spec_fail(path, ln,
                        "expected free NAME LO HI START [UNIT] [of=OTHER], LO < START < HI", w[1]);
       }
+    } else if (!strcmp(w[0], "load") && n == 2) {
+      /* load FILE: a part file loaded over the built-in model (a path, no ';' or quotes) */
+      if (s->nload == 8 || strpbrk(w[1], ";\"'"))
+        rc =
+            spec_fail(path, ln, "expected load FILE (at most 8; a path without ; or quotes)", w[1]);
+      else
+        snprintf(s->load[s->nload++], LINELEN, "%s", w[1]);
+    } else if (!strcmp(w[0], "set") && n >= 3 && n <= 4) {
+      /* set NAME VALUE [UNIT]: held for every evaluation; only a 'set', nothing else runs */
+      int ok = strspn(w[1], "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
+               strlen(w[1]);
+      for (int i = 2; i < n; i++) ok = ok && !strpbrk(w[i], ";\"'");
+      size_t m = strlen(s->set);
+      if (!ok || m + 4 + strlen(w[1]) + strlen(w[2]) + (n > 3 ? strlen(w[3]) : 0) + 8 > LINELEN)
+        rc =
+            spec_fail(path, ln, "expected set NAME VALUE [UNIT] (a parameter and its value)", w[1]);
+      else
+        snprintf(s->set + m, LINELEN - m, "%sset %s %s%s%s", m ? "; " : "", w[1], w[2],
+                 n > 3 ? " " : "", n > 3 ? w[3] : "");
     } else if (!strcmp(w[0], "loss") && n == 2) {
       if (!strcmp(w[1], "integral") || !strcmp(w[1], "footprint"))
         s->integral = w[1][0] == 'i';
@@ -741,6 +769,7 @@ int main(int argc, char** argv) {
     }
   }
   if (spec_read(specpath, &s)) return 1;
+  snprintf(F.extra, sizeof F.extra, "%s", s.set); /* the spec's held settings, then the line's */
   for (int i = optind; i < argc; i++) {
     char* eq = strchr(argv[i], '=');
     if (!eq) {
@@ -764,9 +793,9 @@ int main(int argc, char** argv) {
   ura_init(&c); /* GSL failures as return codes (ur_init) */
   c.out = fopen("/dev/null", "w");
   if (!c.out || ura_models_init(&c) || load_tables(&c, &s)) return 1;
-  for (int i = 0; i < nload; i++) {
+  for (int i = 0; i < s.nload + nload; i++) { /* the spec's loads, then -l's */
     char cmd[LINELEN + 16];
-    snprintf(cmd, sizeof cmd, "model load %s", load[i]);
+    snprintf(cmd, sizeof cmd, "model load %s", i < s.nload ? s.load[i] : load[i - s.nload]);
     if (ura_run_line(&c, cmd)) {
       fprintf(stderr, "calibrate: %s\n", c.err);
       return 1;
