@@ -9,6 +9,7 @@
 #                   (STEP=0.2: a quick look on coarse grids, not a reproduction)
 #   make calibrate  the declared fit of the model's unknowns to the training set (the paper's
 #                 zero-wind grids; src/models/calibrate.spec, uasimpact-model(5)); build/calibration/
+#                 (RESUME=build/calibration/log.csv: go on with a fit that was stopped)
 #   make membrane-convergence  the membrane airbag's mesh and time-step convergence on case A
 #                 (scripts/membrane-convergence.sh; minutes of grids; its centre impacts are in
 #                 make check: tests/test_membrane_convergence.sh)
@@ -196,11 +197,12 @@ reproduce: all
 	@sh scripts/reproduce.sh $(if $(STEP),-s $(STEP) -o $(BUILD)/reproduce-step$(STEP))
 
 # the declared calibration (src/tools/calibrate.c): every evaluation in build/calibration/log.csv,
-# the best values in build/calibration/result.txt; CALIBRATE_ARGS for more (e.g. -n 50)
+# the best values in build/calibration/result.txt; CALIBRATE_ARGS for more (e.g. -n 50);
+# RESUME=LOG replays LOG's evaluations (calibrate -r) and goes on
 $(BUILD)/calibrate: src/tools/calibrate.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
 calibrate: all $(BUILD)/calibrate
-	$(BUILD)/calibrate -o $(BUILD)/calibration $(CALIBRATE_ARGS)
+	$(BUILD)/calibrate -o $(BUILD)/calibration $(if $(RESUME),-r $(RESUME)) $(CALIBRATE_ARGS)
 
 # how far the public ranges of the unknowns move Table 17 (scripts/sensitivity.sh); minutes
 sensitivity: all

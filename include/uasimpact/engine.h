@@ -189,9 +189,10 @@ typedef struct {
   urMemSpec mspec;
   int nsupport;
   int support[urMAXBAGTGT];
-  urMembrane* mem; /* built and inflated by ur_model_compile, constant after */
-  int madr;        /* first double of its run state in urData.mem */
-  int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
+  urMembrane*
+      mem; /* built and inflated by ur_model_compile (or copied from opt.memcache), constant after */
+  int madr; /* first double of its run state in urData.mem */
+  int nsub; /* membrane sub-steps per step (its stable step is smaller) */
 } urAirbag;
 
 typedef struct {
@@ -212,6 +213,9 @@ typedef struct {
   double lo, hi;        /* the values it accepts, SI, both ends included (param ... range=;
                            -inf, inf: any) */
   char why[urWHYLEN];   /* the physical reason of that range (why=; "": none given) */
+  int from;             /* the parameter it follows (param NAME $OTHER [UNIT]): OTHER's index,
+                           value = from_f * OTHER's; -1: its own value (a number, or set) */
+  double from_f;        /* that line's unit factor (1: none or SI) */
 } urParam;
 
 /* the roles an impact needs, declared by the model's role statements (uasimpact-model(5)), and
@@ -256,6 +260,10 @@ typedef struct {
   double jump_margin;      /* free-flight jump stops this far from contact, m (1e-3) */
   const _Atomic int* stop; /* optional (not part of the model text): a step fails with
                                       urSTAT_STOPPED while *stop != 0 (an interrupt flag) */
+  urMemCache* memcache;    /* optional (not part of the model text): ur_model_compile takes
+                                      its membrane bags built and inflated from this cache
+                                      (membrane.h: ur_mem_build_inflated; the same bits), which
+                                      must outlive the compile; NULL: each built afresh */
 } urOption;
 
 typedef struct {
@@ -453,7 +461,8 @@ int ur_model_add_airbag(urModel* m, const urAirbag* bag);
 int ur_model_add_sensor(urModel* m, const char* name, urSensorType type, int obj, int dof,
                         const double pos[3], const double quat[4]);
 
-/* Named parameter (set or overwrite; a new one accepts any value). */
+/* Named parameter (set or overwrite; a new one accepts any value; either holds its own value:
+   from -1). */
 int ur_model_set_param(urModel* m, const char* name, double value);
 
 /* The range of a named parameter, SI, both ends included, and its reason (NULL: none); the

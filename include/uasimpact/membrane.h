@@ -154,6 +154,31 @@ int ur_mem_inflate(urMembrane* mb, char* err, size_t n);
 
 void ur_mem_free(urMembrane* mb);
 
+/* a deep copy of a bag (every array its own), NULL when out of memory; freed by ur_mem_free */
+urMembrane* ur_mem_clone(const urMembrane* mb);
+
+/* the inflated-bag cache (membrane_cache.c): built and inflated bags kept by their whole spec
+   (every field of urMemSpec equal, doubles bit for bit), at most 24 bags and 100 000 nodes, the
+   least recently used evicted first. Owned by its caller (one per session, e.g. the compile
+   options' memcache, engine.h); no globals; a mutex guards it, so threads may share one. */
+typedef struct urMemCache urMemCache;
+
+typedef struct {
+  long hits, misses; /* look-ups that found a bag, and that built and inflated one */
+  int entries;       /* bags kept */
+  long nodes;        /* their nodes */
+} urMemCacheStats;
+
+urMemCache* ur_memcache_new(void); /* NULL when out of memory */
+void ur_memcache_free(urMemCache* c);
+void ur_memcache_stats(urMemCache* c, urMemCacheStats* st); /* c NULL: all zero */
+
+/* a built and inflated bag of spec s, owned by the caller (ur_mem_free): a copy of the one kept
+   for an equal spec (the same bits as ur_mem_build then ur_mem_inflate), else built and inflated
+   and a copy kept (a failure is not). c NULL: ur_mem_build and ur_mem_inflate alone. NULL with
+   a message in err on bad input, no memory or an inflation that does not settle. */
+urMembrane* ur_mem_build_inflated(urMemCache* c, const urMemSpec* s, char* err, size_t n);
+
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),
    scalars (urMEMS_N, after 18 nn), then the force evaluation's scratch (36 ntb), then each

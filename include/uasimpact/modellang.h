@@ -51,6 +51,13 @@ urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov
 urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
                              const _Atomic int* stop, char* err, int errlen);
 
+/* The same, compiling the membrane airbags through the inflated-bag cache c (membrane.h;
+   NULL: none): a bag whose whole spec was inflated before is copied from the cache, the same
+   to the bit. The cache is used during the call only (the returned model's opt.memcache is
+   NULL); one cache serves any number of parses, e.g. one per session. */
+urModel* ur_model_parse_cache(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
+                              const _Atomic int* stop, urMemCache* c, char* err, int errlen);
+
 /* Split text at its 'part NAME' lines. Each part starts at the beginning of the line holding its
    'part' statement and ends where the next part starts, so the parts concatenated in order give
    back the text exactly. Text before the first part line is a part named "", present only when

@@ -52,8 +52,10 @@ static void fresh(void) {
     memcpy(part, c.part, sizeof part);
     int npart = c.npart;
     urModel* m = c.model;
+    urMemCache* mc = c.memcache; /* the session's inflated bags stay too */
     ura_last_free(&c);
     memset(&c, 0, sizeof c);
+    c.memcache = mc;
     c.st = st0;
     c.inspect = ura_inspect_cell;
     memcpy(c.part, part, sizeof part);

@@ -219,6 +219,8 @@ typedef struct uraCtx {
                                       eccentricity up, side */
   uraModelCache* mcache; /* other models with their stances (NULL until one is kept) */
   uraRecall* recall;     /* complete grids for recall (NULL until one is kept) */
+  urMemCache* memcache;  /* the session's inflated membrane bags (model.c compile; NULL until
+                            the first compile), freed with the models */
   unsigned long tick;    /* use counter of both, for least-recently-used eviction */
   /* run (or recall) the impact of one grid cell and its histories, for the viewer; NULL: the
      viewer shows stored cell values only (main sets the command layer's ura_inspect_cell) */
@@ -437,6 +439,10 @@ void ura_param_range_text(uraCtx* c, const urParam* p, char* buf, size_t n);
 /* a model parameter's value for messages, six digits and its SI unit: "1e+20 N*m/rad" */
 void ura_model_value_brief(uraCtx* c, const char* name, double v, char* buf, size_t n);
 int ura_model_param_set(uraCtx* c, const char* name, const char* value, const char* unit, int user);
+/* the parameter a model parameter follows while it is not set (param NAME $OTHER,
+   urParam.from): "$OTHER", or "$OTHER x F" when its line's unit scales it; 0, or -1 (it holds
+   its own value; buf "") */
+int ura_model_param_from(const urModel* m, const urParam* p, char* buf, size_t n);
 /* the values the compiled model derives for its airbags (not parameters: set none of them),
    one '#' line per bag: which bag model, and for a membrane its mesh, fabric mass, stable step
    and sub-steps, inflated volume and pressure, strain (show, model params) */

@@ -47,11 +47,14 @@ void ura_models_free(uraCtx* c) {
   parts_free(c->part, c->npart);
   c->npart = 0;
   ura_trace_free(c);
+  ur_memcache_free(c->memcache);
+  c->memcache = NULL;
 }
 
 /* compile parts with the state's parameter overrides (messages name built-in parts by name, a
    loaded part by its file) */
-static urModel* compile(const uraPart* part, int n, const uraState* st, char* err, int errlen) {
+static urModel* compile(uraCtx* c, const uraPart* part, int n, const uraState* st, char* err,
+                        int errlen) {
   urModelSource src[uraMAXPARTS];
   urOverride ov[uraMAXOV];
   for (int i = 0; i < n; i++) {
@@ -63,7 +66,11 @@ static urModel* compile(const uraPart* part, int n, const uraState* st, char* er
     ov[i].name = st->ov_name[i];
     ov[i].value = st->ov_val[i];
   }
-  urModel* m = ur_model_parse_stop(src, n, ov, st->nov, ura_interrupt_flag(), err, errlen);
+  /* the session's inflated bags: a set that leaves a bag's spec as it was inflates nothing (no
+     memory for the cache: each bag inflated afresh) */
+  if (!c->memcache) c->memcache = ur_memcache_new();
+  urModel* m =
+      ur_model_parse_cache(src, n, ov, st->nov, ura_interrupt_flag(), c->memcache, err, errlen);
   if (m) m->opt.stop = ura_interrupt_flag(); /* Ctrl-C stops its runs at the next step */
   return m;
 }
@@ -103,7 +110,7 @@ static int fits(uraCtx* c, const uraPart* part, int n, const uraState* st, const
       ns.ov_val[at] = st->ov_val[i];
       ns.ov_user[at] = 1;
     }
-    urModel* mk = compile(part, n, &ns, e, sizeof e);
+    urModel* mk = compile(c, part, n, &ns, e, sizeof e);
     int bad = !mk || ur_impact_check(mk, e, sizeof e);
     ur_model_free(mk);
     if (bad) {
@@ -155,7 +162,7 @@ static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const ch
    consumed either way; on error nothing changes */
 static int parts_commit(uraCtx* c, uraPart* np, int nn, const char* file) {
   char err[300], why[400];
-  urModel* m = compile(np, nn, &c->st, err, sizeof err);
+  urModel* m = compile(c, np, nn, &c->st, err, sizeof err);
   int bad = !m, in_file = 0;
   if (!m) {
     /* an error in the file names its line; one elsewhere is the file's doing all the same */
@@ -230,7 +237,7 @@ int ura_models_init(uraCtx* c) {
 const urModel* ura_model(uraCtx* c) {
   if (c->model) return c->model;
   char err[300];
-  c->model = compile(c->part, c->npart, &c->st, err, sizeof err);
+  c->model = compile(c, c->part, c->npart, &c->st, err, sizeof err);
   if (!c->model) ura_fail(c, "model: %s", err);
   return c->model;
 }
@@ -335,7 +342,7 @@ int ura_model_state(uraCtx* c, const uraState* ns, const char* who) {
 
   /* otherwise the model must compile with them, and run impacts, before anything changes */
   char err[300];
-  urModel* m = compile(c->part, c->npart, ns, err, sizeof err);
+  urModel* m = compile(c, c->part, c->npart, ns, err, sizeof err);
   if (m && ur_impact_check(m, err, sizeof err)) {
     ur_model_free(m);
     m = NULL;
@@ -410,6 +417,16 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
     return ura_fail(c, "%s: refused, the model does not accept it: model: %s", who, err);
   }
   return ura_model_state(c, &ns, who);
+}
+
+int ura_model_param_from(const urModel* m, const urParam* p, char* buf, size_t n) {
+  buf[0] = 0;
+  if (p->from < 0 || p->from >= m->nparam) return -1;
+  if (p->from_f == 1)
+    snprintf(buf, n, "$%s", m->param[p->from].name);
+  else
+    snprintf(buf, n, "$%s x %g", m->param[p->from].name, p->from_f);
+  return 0;
 }
 
 /* ---- the model command ---- */
@@ -519,7 +536,7 @@ static int model_drop(uraCtx* c, const char* name) {
   uraState ns = c->st;
   ns.nov = 0;
   char err[300];
-  urModel* m = compile(np, nn, &ns, err, sizeof err);
+  urModel* m = compile(c, np, nn, &ns, err, sizeof err);
   if (!m) {
     parts_free(np, nn);
     return ura_fail(c, "model drop %s: refused, the other parts do not compile alone: %s", name,
@@ -573,7 +590,12 @@ static int model_params(uraCtx* c, const char* prefix) {
   for (int i = 0; i < m->nparam; i++) {
     if (strncmp(m->param[i].name, prefix, strlen(prefix))) continue;
     found++;
+    char from[2 * urNAMELEN], follows[2 * urNAMELEN + 8];
     const char* who = "model";
+    if (!ura_model_param_from(m, &m->param[i], from, sizeof from)) {
+      snprintf(follows, sizeof follows, "model: %s", from); /* it follows another */
+      who = follows;
+    }
     for (int k = 0; k < c->st.nov; k++) {
       if (!strcmp(c->st.ov_name[k], m->param[i].name)) who = c->st.ov_user[k] ? "set" : "case";
     }

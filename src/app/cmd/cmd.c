@@ -346,10 +346,24 @@ static void show_injury(uraCtx* c, int i) {
   }
 }
 
-/* one model parameter: name, SI value, its unit */
+/* one model parameter: name, SI value, its unit; one that follows another (param NAME $OTHER)
+   says so while it is not set */
 static void show_model_param(uraCtx* c, const urParam* p) {
-  char val[64];
+  char val[64], from[2 * urNAMELEN], note[4 * urNAMELEN + 80];
   snprintf(val, sizeof val, "%.10g", p->value);
+  const urModel* m = ura_model(c);
+  if (m && !ura_model_param_from(m, p, from, sizeof from)) {
+    const urParam* o = &m->param[p->from];
+    if (p->from_f == 1)
+      snprintf(note, sizeof note, "  (derived: %s's value, the model's %s; set it to give its own)",
+               o->name, from);
+    else
+      snprintf(note, sizeof note,
+               "  (derived: %g x %s's value, the model's %s; set it to give its own)", p->from_f,
+               o->name, from);
+    show_line(c, p->name, val, p->unit, note);
+    return;
+  }
   show_line(c, p->name, val, p->unit, show_tab ? "  (model parameter, SI)" : "");
 }
 

@@ -374,10 +374,16 @@ static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
     const uraRepTable* t = &r->t[cv];
     int q = findrow(t, "check", "step", "what", "q");
     int d = findrow(t, "check", "dt", "what", "p_centre");
+    int mq = findrow(t, "check", "mesh", "what", "q");
+    char mesh[160] = "";
+    if (mq >= 0) {
+      snprintf(mesh, sizeof mesh, "; doubling the membrane bag's mesh changes Q by %s (relative)",
+               cell(t, mq, "rel_change") ? cell(t, mq, "rel_change") : "?");
+    }
     elf(ul, "li",
         "Convergence: halving the grid step changes Q by %s (relative); halving the time step "
-        "changes P at the centre by %s (relative).",
-        q >= 0 ? cell(t, q, "rel_change") : "?", d >= 0 ? cell(t, d, "rel_change") : "?");
+        "changes P at the centre by %s (relative)%s.",
+        q >= 0 ? cell(t, q, "rel_change") : "?", d >= 0 ? cell(t, d, "rel_change") : "?", mesh);
   } else {
     el(ul, "li", "Convergence: not run in this session (converge).");
   }

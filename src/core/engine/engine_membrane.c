@@ -1,5 +1,6 @@
 /* engine_membrane.c: the membrane airbags in the multibody engine. ur_model_compile builds and
- * inflates each membrane bag once (constant model data shared by threads) and turns the bag's
+ * inflates each membrane bag once (constant model data shared by threads; through the inflated-bag
+ * cache of the options, opt.memcache, when there is one) and turns the bag's
  * ellipsoid into a bound of the inflated bag (the jump to first contact and the end-of-run
  * proofs use it). Each step: the loads stage places the mount patch on the carrier (fixed
  * joint), computes fabric, gas and penalty contact forces of the nodes against the targets (the
@@ -65,8 +66,8 @@ int urm_model_compile(urModel* m) {
     }
     char err[100];
     if (!b->mem) {
-      b->mem = ur_mem_build(&b->mspec, err, sizeof(err));
-      if (!b->mem || ur_mem_inflate(b->mem, err, sizeof(err))) {
+      b->mem = ur_mem_build_inflated(m->opt.memcache, &b->mspec, err, sizeof(err));
+      if (!b->mem) {
         snprintf(m->err, sizeof(m->err), "airbag '%s': %s", b->name, err);
         return -1;
       }

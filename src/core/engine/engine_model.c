@@ -450,6 +450,7 @@ int ur_model_set_param(urModel* m, const char* name, double value) {
   int i = ur_name_param(m, name);
   if (i >= 0) {
     m->param[i].value = value;
+    m->param[i].from = -1; /* it holds its own value now */
     return i;
   }
   if (editable(m)) {
@@ -467,6 +468,8 @@ int ur_model_set_param(urModel* m, const char* name, double value) {
   p->lo = -INFINITY;
   p->hi = INFINITY;
   p->why[0] = 0;
+  p->from = -1;
+  p->from_f = 1;
   return m->nparam++;
 }
 

@@ -87,4 +87,11 @@ double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, con
                         const double vo[3], const double w[3], const double x[3], const double v[3],
                         double m, double f[3]);
 
+/* 1 if two specs are equal field by field (doubles by their bits): the inflated-bag cache's key */
+int urm_mem_spec_same(const urMemSpec* a, const urMemSpec* b);
+
+/* a cache of at most cap bags and maxnodes nodes (ur_memcache_new's are 24 and 100 000); NULL
+   for cap or maxnodes below 1 or no memory */
+urMemCache* urm_memcache_new_sized(int cap, long maxnodes);
+
 #endif

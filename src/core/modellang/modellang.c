@@ -365,6 +365,12 @@ urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov
 
 urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
                              const _Atomic int* stop, char* err, int errlen) {
+  return ur_model_parse_cache(src, nsrc, ov, nov, stop, NULL, err, errlen);
+}
+
+
+urModel* ur_model_parse_cache(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
+                              const _Atomic int* stop, urMemCache* c, char* err, int errlen) {
   Parser p;
   memset(&p, 0, sizeof(p));
   p.stop = stop;
@@ -410,10 +416,15 @@ urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverrid
   if (!rc) {
     rc = url_apply_design(&p);
   }
-  if (!rc && ur_model_compile(p.m)) {
-    snprintf(p.msg, sizeof(p.msg), "%s: the model does not compile: %s", url_srcname(&p, nsrc - 1),
-             p.m->err);
-    rc = -1;
+  if (!rc) {
+    p.m->opt.memcache = c;
+    int bad = ur_model_compile(p.m);
+    p.m->opt.memcache = NULL; /* the cache served this compile only */
+    if (bad) {
+      snprintf(p.msg, sizeof(p.msg), "%s: the model does not compile: %s",
+               url_srcname(&p, nsrc - 1), p.m->err);
+      rc = -1;
+    }
   }
   release(&p);
   if (rc) {

@@ -93,6 +93,33 @@ static int param_range(Parser* p, const urlStmt* st, int i, const char* name, do
   return 0;
 }
 
+/* a parameter whose value is $OTHER follows OTHER (urParam.from; a host that parses the text
+   again with an override of OTHER gets the value followed too); a chain of them that comes
+   back to k (a redefinition in a later part) is refused */
+static int param_follow(Parser* p, int k, const char* value, double f, int line) {
+  if (value[0] != '$') {
+    return 0;
+  }
+  urParam* par = p->m->param;
+  int o = ur_name_param(p->m, value + 1);
+  char chain[4 * urNAMELEN] = "";
+  size_t n = (size_t)snprintf(chain, sizeof chain, "%s", par[k].name);
+  for (int j = o, hops = 0; j >= 0 && hops <= p->m->nparam; j = par[j].from, hops++) {
+    if (n < sizeof chain) {
+      n += (size_t)snprintf(chain + n, sizeof chain - n, " -> %s", par[j].name);
+    }
+    if (j == k) {
+      return url_fail(p, line,
+                      "param '%s': $%s makes a cycle (%s); expected a number, or a parameter "
+                      "that does not follow '%s'",
+                      par[k].name, value + 1, chain, par[k].name);
+    }
+  }
+  par[k].from = o;
+  par[k].from_f = f;
+  return 0;
+}
+
 /* param NAME VALUE [UNIT] [range=LO,HI [why=TEXT...]] */
 int url_st_param(Parser* p, const urlStmt* st) {
   const char* w[4] = {NULL, NULL, NULL, NULL};
@@ -164,10 +191,12 @@ int url_st_param(Parser* p, const urlStmt* st) {
                     *ru ? " " : "", ru, rt);
   }
 
-  /* the caller's override wins (last one given), within the range */
+  /* the caller's override wins (last one given), within the range: it then holds its own */
+  int own = 0;
   for (int i = 0; i < p->nov; i++) {
     if (!strcmp(p->ov[i].name, w[1])) {
       v = p->ov[i].value;
+      own = 1;
     }
   }
   if (!(v >= lo && v <= hi)) {
@@ -189,7 +218,7 @@ int url_st_param(Parser* p, const urlStmt* st) {
   if (ur_model_set_param_range(p->m, w[1], lo, hi, why) < 0) {
     return url_fail(p, st->line, "param '%s': its range cannot be kept", w[1]);
   }
-  return 0;
+  return own ? 0 : param_follow(p, k, w[2], f, ln[2]);
 }
 
 

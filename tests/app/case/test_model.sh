@@ -11,11 +11,13 @@ U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
 fails_with() { [ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "$1"; }
 now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
 
-# ---- a drone part without bodies: refused in any case, the file and line named ----
+# ---- a drone part without bodies: refused in any case, the file and line named (the first
+# thing missing: since the membrane bag's bag_a follows $frame_a, the airbags' param line names
+# frame_a in case B too, where it said the model declares no drone) ----
 printf '# no drone here\npart ra3\nparam xx 1\n' >"$TMP/nobodies.urm"
 run -c "case B; model load $TMP/nobodies.urm"
 check nobodies_case_b fails_with \
-  "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: the model declares no drone: add 'role drone=BODY'"
+  "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: airbags:[0-9]*: param 'bag_a': unknown parameter 'frame_a'"
 run -c "case A; model load $TMP/nobodies.urm"
 check nobodies_case_a fails_with \
   "^-c:1: model load: .*/nobodies.urm:2: part 'ra3' does not fit the model: airbags:[0-9]*: .*unknown parameter 'frame_a'"
@@ -169,5 +171,26 @@ check builtin_overrides cond 'has "$TMP/out" "^note  *pairs .fb.: its declared l
   [ "$(grep -c "^note" "$TMP/out")" -eq 4 ]'
 # no drone file copies the person's soft-tissue law or rests its foam on a scalp law of its own
 check builtin_no_person_law cond '! grep -q "tissue_load\|backing=frame_head" src/models/ra3.urm sessions/quad/quad.urm'
+
+# ---- a parameter whose default is another (param bag_a $frame_a m): it follows frame_a, also
+# after 'set frame_a', until it is set; show and model params say so while it follows ----
+F='(derived: frame_a.s value, the model.s \$frame_a; set it to give its own)'
+run -c "show bag_a; model params bag_a; set frame_a 0.4; show bag_a; model params bag_a;
+  set bag_a 0.3; show bag_a; model params bag_a; set frame_a 0.35; show bag_a; show frame_a"
+check follow_show cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^bag_a  *0.327566 m  $F\$" "$TMP/out")" -eq 1 ] &&
+  [ "$(grep -c "^bag_a  *0.4 m  $F\$" "$TMP/out")" -eq 1 ]'
+check follow_params cond 'grep -q "^bag_a  *0.327566 m  (model: \$frame_a)\$" "$TMP/out" &&
+  grep -q "^bag_a  *0.4 m  (model: \$frame_a)\$" "$TMP/out"'
+check own_value cond '[ "$(grep -c "^bag_a  *0.3 m\$" "$TMP/out")" -eq 2 ] &&
+  grep -q "^bag_a  *0.3 m  (set)\$" "$TMP/out" && ! grep -q "^bag_a  *0.35" "$TMP/out" &&
+  grep -q "^frame_a  *0.35 m\$" "$TMP/out"'
+run -c "set format json; show bag_b; model params bag_b"
+check follow_json cond 'has "$TMP/out" "\"source\":\"derived: frame_b.s value, the model.s \$frame_b; set it to give its own\"" &&
+  has "$TMP/out" "\"set_by\":\"model: \$frame_b\""'
+# an unknown parameter named as a default: one line, with the file and line
+printf 'part follow\nparam pod_a $no_such m\n' >"$TMP/follow.urm"
+run -c "model load $TMP/follow.urm"
+check follow_unknown cond '[ "$RC" -ne 0 ] && [ "$(grep -c . "$TMP/err")" -eq 1 ] &&
+  has "$TMP/err" "follow.urm:2: param .pod_a.: unknown parameter .no_such."'
 
 finish

@@ -1,7 +1,9 @@
 # test_converge.sh: converge against the commands it stands for: Q coarse and fine equal the
 # grids at the step and at half of it, the shared cells agree exactly, P at the centre with the
 # model's dt equals 'impact 0 0', and with dt / 2 equals 'impact 0 0' after 'set dt' to half;
-# the live state (step, dt) is back afterwards; dry mode refuses. Coarse grids keep it short.
+# the live state (step, dt) is back afterwards; dry mode refuses. With a membrane bag, the mesh
+# rows: Q at twice bag_mesh equals that grid run by hand, and the report quotes the row; without
+# one, a note says the mesh is not refined. Coarse grids keep it short.
 . tests/lib.sh
 
 col() {
@@ -34,6 +36,25 @@ check p_dt cond '[ "$(conv "$TMP/c" dt p_centre coarse)" = "$P1" ] &&
 check worst_row cond '[ -n "$(conv "$TMP/c" dt p_worst fine)" ] &&
   [ "$(conv "$TMP/c" dt p_worst dpar)" = "$(conv "$TMP/c" step p_new dpar)" ]'
 check restored cond 'grep -q "^step *0.3 m" "$TMP/c" && grep -q "^dt *5e-05 s" "$TMP/c"'
+check no_mesh cond 'grep -q "^# mesh: the case has no membrane airbag; the bag.s mesh is not refined" "$TMP/c" &&
+  [ -z "$(conv "$TMP/c" mesh q coarse)" ]'
+
+# a membrane bag: the grid again at twice bag_mesh (3 -> 6), same step and dt; its Q must be
+# the grid's run by hand with bag_mesh 6 (the same simulation: equal to the printed digits),
+# the coarse Q the live grid's; the report quotes the row
+run -c 'set format csv; case A; set bag_membrane 1; set bag_mesh 6; set step 0.2; grid'
+QM=$(col "$TMP/out" A q)
+run -c "set format csv; case A; set bag_membrane 1; set bag_mesh 3; set step 0.2; converge;
+  model params bag_mesh; report $TMP/mesh.html"
+cp "$TMP/out" "$TMP/m"
+check mesh_status [ "$RC" -eq 0 ]
+check mesh_q cond '[ "$(printf %.4f "$(conv "$TMP/m" mesh q fine)")" = "$QM" ] &&
+  [ "$(conv "$TMP/m" mesh q coarse)" = "$(conv "$TMP/m" step q coarse)" ]'
+check mesh_worst cond '[ -n "$(conv "$TMP/m" mesh p_worst dpar)" ] && [ -n "$(conv "$TMP/m" mesh p_worst fine)" ]'
+check mesh_note grep -q "^# mesh: the membrane bag.s mesh refined: .* bag_mesh 3 (coarse) and 6 (fine)" "$TMP/m"
+check mesh_restored grep -q "^bag_mesh *3 *(set)" "$TMP/m"
+check mesh_report cond 'grep -q "doubling the membrane bag.s mesh changes Q by $(conv "$TMP/m" mesh q rel_change) (relative)" "$TMP/mesh.html"'
+
 run -c 'converge now'
 check args cond '[ "$RC" -eq 1 ] && has "$TMP/err" "converge"'
 

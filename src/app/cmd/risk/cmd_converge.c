@@ -2,7 +2,8 @@
  * live step and at half of it (the change in Q, and the worst departure of a new half-step cell's
  * P from the coarse grid's interpolation, which locates the cell where P varies most), then the
  * impact at the centre and at that worst cell with the model's time step dt and with dt / 2 (the
- * change in P). Cells that both grids share are the same simulation, so their P must agree
+ * change in P), and with a membrane airbag the grid again at twice its mesh (bag_mesh; the change
+ * in Q, the cell that moved most). Cells that both grids share are the same simulation, so their P must agree
  * exactly: a determinism check printed beside the rest. The live state is restored; the last
  * grid is the half-step one. Columns in uasimpact(1), converge. */
 #include <math.h>
@@ -59,7 +60,47 @@ typedef struct {
   double shared_max;     /* max |dP| over shared cells (0: deterministic) */
   double dt, p_dt[2][2]; /* [centre, worst][dt, dt / 2] */
   int have_dt;
+  /* a membrane bag's mesh (parameter bag_mesh) and twice it: Q, and the cell that moved most */
+  double mesh, q_mesh, mworst, mworst_dpar, mworst_dperp, mworst_coarse, mworst_fine;
+  int have_mesh; /* 1 refined; 0 no membrane bag in the case; -1 no parameter bag_mesh */
 } conv;
+
+/* 1 if the live model has a membrane airbag and a parameter bag_mesh (its index in *k), 0
+   without a membrane bag, -1 with one but no bag_mesh */
+static int membrane_mesh(const urModel* m, int* k) {
+  *k = m ? ur_name_param(m, "bag_mesh") : -1;
+  for (int b = 0; m && b < m->nbag; b++) {
+    if (m->bag[b].type == urBAG_MEMBRANE) return *k >= 0 ? 1 : -1;
+  }
+  return 0;
+}
+
+/* the grid again at twice the mesh (same step, same dt): its Q, and the cell whose P departs
+   most from the coarse grid's (the same lattice: the nodes themselves) */
+static int run_mesh(uraCtx* c, const uraState* orig, uraState* ns, const urGrid* coarse,
+                    const urCell* cells, conv* v) {
+  int k;
+  v->have_mesh = membrane_mesh(ura_model(c), &k);
+  if (v->have_mesh < 1) return 0;
+  v->mesh = c->model->param[k].value;
+  *ns = *orig;
+  ura_risk_override(ns, "bag_mesh", 2 * v->mesh, 1);
+  if (ura_risk_grid(c, ns, "converge", 0, &v->q_mesh)) return -1;
+  const urGrid* f = c->last.g;
+  v->mworst = -1;
+  for (int i = 0; i < f->nrow * f->ncol; i++) {
+    const urCell* fc = &f->cell[i];
+    double pc = coarse_p(coarse, cells, fc->dpar, fc->dperp), d = fabs(fc->p - pc);
+    if (d > v->mworst) {
+      v->mworst = d;
+      v->mworst_dpar = fc->dpar;
+      v->mworst_dperp = fc->dperp;
+      v->mworst_coarse = pc;
+      v->mworst_fine = fc->p;
+    }
+  }
+  return 0;
+}
 
 static int run(uraCtx* c, const uraState* orig, uraState* ns, conv* v) {
   memset(v, 0, sizeof *v);
@@ -71,8 +112,11 @@ static int run(uraCtx* c, const uraState* orig, uraState* ns, conv* v) {
   if (!cells) return ura_fail(c, "converge: out of memory");
   memcpy(cells, c->last.g->cell, nc * sizeof *cells);
 
+  /* the mesh first, so that the last grid is the half-step one */
+  int rc = run_mesh(c, orig, ns, &coarse, cells, v);
+  *ns = *orig;
   ns->step = orig->step / 2;
-  int rc = ura_risk_grid(c, ns, "converge", 0, &v->q_h2);
+  if (rc == 0) rc = ura_risk_grid(c, ns, "converge", 0, &v->q_h2);
   if (rc == 0) {
     urGrid* f = c->last.g;
     double h = coarse.step, eps = 1e-9 * h, sum = 0;
@@ -120,6 +164,30 @@ static int run(uraCtx* c, const uraState* orig, uraState* ns, conv* v) {
   return 0;
 }
 
+/* one row: check, what, where (NULL: "-"), coarse, fine, their change and its relative size */
+static void row(uraTable* t, const char* check, const char* what, const double* at, double a,
+                double b) {
+  ura_table_cell(t, "%s", check);
+  ura_table_cell(t, "%s", what);
+  for (int k = 0; k < 2; k++) {
+    if (at)
+      ura_table_cell(t, "%g", at[k]);
+    else
+      ura_table_cell(t, "-");
+  }
+  ura_table_cell(t, "%.6g", a);
+  ura_table_cell(t, "%.6g", b);
+  ura_table_cell(t, "%.3g", b - a);
+  ura_table_cell(t, "%.3g", b > 0 ? (b - a) / b : 0);
+}
+
+/* the mesh rows: Q, and the cell whose P moved most */
+static void mesh_rows(uraTable* t, const conv* v) {
+  const double at[2] = {v->mworst_dpar, v->mworst_dperp};
+  row(t, "mesh", "q", NULL, v->q_h, v->q_mesh);
+  row(t, "mesh", "p_worst", at, v->mworst_coarse, v->mworst_fine);
+}
+
 int ura_cmd_converge(uraCtx* c, int argc, char** argv) {
   static const char* const cols[] = {"check",  "what", "dpar",   "dperp",
                                      "coarse", "fine", "change", "rel_change"};
@@ -158,14 +226,18 @@ int ura_cmd_converge(uraCtx* c, int argc, char** argv) {
   } else {
     ura_table_note(t, "dt: the model declares no parameter dt; the time step is not halved");
   }
-  ura_table_cell(t, "step");
-  ura_table_cell(t, "q");
-  ura_table_cell(t, "-");
-  ura_table_cell(t, "-");
-  ura_table_cell(t, "%.6g", v.q_h);
-  ura_table_cell(t, "%.6g", v.q_h2);
-  ura_table_cell(t, "%.3g", v.q_h2 - v.q_h);
-  ura_table_cell(t, "%.3g", v.q_h2 > 0 ? (v.q_h2 - v.q_h) / v.q_h2 : 0);
+  if (v.have_mesh == 1) {
+    ura_table_note(t,
+                   "mesh: the membrane bag's mesh refined: the grid at step %g m again with "
+                   "bag_mesh %g (coarse) and %g (fine), the same dt; p_worst: the cell whose P "
+                   "moved most",
+                   step, v.mesh, 2 * v.mesh);
+  } else {
+    ura_table_note(t, "mesh: %s; the bag's mesh is not refined",
+                   v.have_mesh ? "the model declares no parameter bag_mesh"
+                               : "the case has no membrane airbag");
+  }
+  row(t, "step", "q", NULL, v.q_h, v.q_h2);
   ura_table_cell(t, "step");
   ura_table_cell(t, "p_new");
   ura_table_cell(t, "%g", v.worst_dpar);
@@ -187,18 +259,9 @@ int ura_cmd_converge(uraCtx* c, int argc, char** argv) {
   if (v.have_dt) {
     const char* what[2] = {"p_centre", "p_worst"};
     const double at[2][2] = {{0, 0}, {v.worst_dpar, v.worst_dperp}};
-    for (int w = 0; w < 2; w++) {
-      double a = v.p_dt[w][0], b = v.p_dt[w][1];
-      ura_table_cell(t, "dt");
-      ura_table_cell(t, "%s", what[w]);
-      ura_table_cell(t, "%g", at[w][0]);
-      ura_table_cell(t, "%g", at[w][1]);
-      ura_table_cell(t, "%.6g", a);
-      ura_table_cell(t, "%.6g", b);
-      ura_table_cell(t, "%.3g", b - a);
-      ura_table_cell(t, "%.3g", b > 0 ? (b - a) / b : 0);
-    }
+    for (int w = 0; w < 2; w++) row(t, "dt", what[w], at[w], v.p_dt[w][0], v.p_dt[w][1]);
   }
+  if (v.have_mesh == 1) mesh_rows(t, &v);
   if (v.shared_max > 0) {
     ura_table_note(t, "warning: shared cells differ by up to %.3g: the grids are not repeatable",
                    v.shared_max);
