@@ -2,7 +2,8 @@
 # the model under calibration: it loads in place of the built-in RA3; its arm hinges are those
 # beam theory gives for its carbon tube (k = 3EI/L, M_p = sigma_y Z_p, closed forms computed here
 # from the file's own D, t, L, E and yield); it declares no law of the person's head (the scalp
-# laws come from the person's layer); arm_t moves the hinge as the formulas say.
+# laws come from the person's layer, the foam's backing too); arm_t moves the hinge as the
+# formulas say.
 . tests/lib.sh
 F=src/models/candidate/ra3.urm
 
@@ -24,6 +25,9 @@ check hinge_mp awk -v a="$got_mp" -v b="$MP" 'BEGIN { exit !(a != "" && (a - b)^
 check six_arms cond '[ "$(grep -c "hinge M_p = sigma_y Z_p" "$TMP/out")" -eq 12 ]'
 # no scalp law in the drone file: the head pairs' laws are derived from the person's layer
 check no_head_law cond '! grep -q "^law \(frame_head\|arm_head\)" '"$F"' && grep -q "pairs .fh., frame on head_cranium (layer scalp, material carbon): Hertz" "$TMP/out"'
+# nor for the foam: its backing is derived from the person's layer (the scalp's K of Table B1's
+# law on the head, 4/3 E* sqrt(R) of scalp and carbon), no scalp law written for it
+check foam_backing_derived cond '! grep -q "E1=2.23e7" '"$F"' && grep -q "pairs .cg., foam on layer scalp: backing K = 4/3 E\* sqrt(R) = 9.59907e+06" "$TMP/out"'
 
 # a thicker wall: the hinge moves as the closed forms say
 run -c "model load $F; set arm_t 1.5 mm; model notes"

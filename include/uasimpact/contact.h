@@ -108,14 +108,19 @@ typedef struct {
   urCurve load;
   urCurve unload; /* empty: unload along the loading curve (elastic) */
   /* foam (urLAW_FOAM) */
-  urCurve stress;   /* loading stress (Pa) against strain */
-  double thickness; /* foam thickness, m: strain = depth / thickness */
-  double unload_r;  /* residual strain as a fraction of the maximum strain */
-  double unload_p;  /* exponent of the unloading curve */
-  double lock;      /* strain at which the foam is solid (densified), (0, 1); 0:
+  urCurve stress;       /* loading stress (Pa) against strain */
+  double thickness;     /* foam thickness, m: strain = depth / thickness */
+  double unload_r;      /* residual strain as a fraction of the maximum strain */
+  double unload_p;      /* exponent of the unloading curve */
+  double lock;          /* strain at which the foam is solid (densified), (0, 1); 0:
                                       none (the stress curve alone, extrapolated beyond its end) */
-  double backing_k; /* Hertz constant K (N/m^1.5) of the rigid backing the solid
+  double backing_k;     /* Hertz constant K (N/m^1.5) of the rigid backing the solid
                                       foam rests on: F += K (d - lock thickness)^1.5 beyond lock */
+  double backing_estar; /* the backing's E* (Pa) when derived from the person's layer */
+  double backing_r;     /* its radius (m); urHERTZ_CURVATURE: the person's curvature at each
+                           contact, backing_k = ur_law_backing_k(law, R) there (engine_contact.c) */
+  urCurve backing;      /* n > 0: the backing is this force (N) against the depth beyond the lock
+                           thickness (a person's law layer's loading curve) instead of Hertz */
   /* all laws */
   double damping; /* linear viscous term, N s/m, acts while in contact */
   double chi;     /* Hunt-Crossley-type factor, s/m: F *= 1 + chi*rate */
@@ -151,7 +156,8 @@ void ur_law_hertz(urLaw* law, double E1, double nu1, double R1, double E2, doubl
    TABLE: the unloading curve shifted along the depth axis to pass through (dmax, fmax),
           capped by the loading curve (elastic when unload.n < 2);
    FOAM: stress sm ((e - er)/(em - er))^unload_p, er = unload_r em (elastic if unload_p <= 0);
-         with a lock strain the strain stops there and the backing's Hertz force (elastic) adds.
+         with a lock strain the strain stops there and the backing's force (elastic) adds: Hertz
+         K x^1.5, or the backing curve at x, x the depth beyond the lock thickness.
    F = Fe (1 + chi rate) + damping rate while Fe > 0, then clamped at >= 0. */
 double ur_law_force(const urLaw* law, const urLawState* s, double d, double rate, double area);
 
@@ -161,7 +167,7 @@ void ur_law_commit(const urLaw* law, urLawState* s, double d, double rate, doubl
 
 /* the largest depth a law's data covers (m): a table law's last loading abscissa, a foam law's
    thickness times its stress curve's last strain (HUGE_VAL with a lock strain: the backing
-   takes over), a layered Hertz law's layer thickness (plus the shell's share, F(h)/shell_k, with
+   takes over; with a backing curve, the lock thickness plus the curve's last depth), a layered Hertz law's layer thickness (plus the shell's share, F(h)/shell_k, with
    a shell in series, or crush_h + crush_f/shell_k when the shell crushes before the layer
    bottoms; beyond it the layer has bottomed and the bone takes over: a run notes it), HUGE_VAL
    for Hertz; beyond it the law is extrapolated */
@@ -170,6 +176,10 @@ double ur_law_range(const urLaw* law);
 /* Hertz constants of a law: K = 4/3 E* sqrt(R) (N/m^1.5), Jackson-Green yield onset depth dy
    and force fy (HUGE_VAL when sy <= 0) */
 void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy);
+
+/* the Hertz constant of a foam's derived backing at radius R (m): K = 4/3 E* sqrt(R), E* the
+   law's backing_estar (of the person's layer on the backing's material), N/m^1.5 */
+double ur_law_backing_k(const urLaw* law, double R);
 
 /* regularised Coulomb friction on the body moving with tangential velocity vt:
    out = -mu fn vt / max(|vt|, v_eps) (v_eps <= 0: plain Coulomb, zero at vt = 0) */

@@ -79,6 +79,9 @@ double ur_law_range(const urLaw* law) {
   switch (law->type) {
   case urLAW_TABLE: return law->load.n > 0 ? law->load.x[law->load.n - 1] : HUGE_VAL;
   case urLAW_FOAM:
+    // solid foam on a backing curve: the curve's data end beyond the lock thickness
+    if (law->lock > 0 && law->backing.n > 0)
+      return law->lock * law->thickness + law->backing.x[law->backing.n - 1];
     if (law->lock > 0 || law->stress.n <= 0) return HUGE_VAL;
     return law->thickness * law->stress.x[law->stress.n - 1];
   case urLAW_HERTZ: {
@@ -109,6 +112,12 @@ void ur_law_hertz_params(const urLaw* law, double* K, double* dy, double* fy) {
     *dy = HUGE_VAL;
     *fy = HUGE_VAL;
   }
+}
+
+double ur_law_backing_k(const urLaw* law, double R) {
+  // the same expression as ur_law_hertz_params' K, so that a fixed radius gives the bits of
+  // the Hertz law it replaces
+  return 4.0 / 3.0 * law->backing_estar * sqrt(R);
 }
 
 /* Jackson-Green elastic-plastic loading force at w = d/dy (sheet §1.4; JG 2005) */
@@ -247,7 +256,7 @@ static double elastic_force(const urLaw* law, const urLawState* s, double d, dou
     double e = d / law->thickness, fb = 0;
     if (law->lock > 0 && e > law->lock) {
       double x = d - law->lock * law->thickness;
-      fb = law->backing_k * x * sqrt(x);
+      fb = law->backing.n > 0 ? ur_curve_eval(&law->backing, x) : law->backing_k * x * sqrt(x);
       e = law->lock;
     }
     if (d >= s->dmax || !(law->unload_p > 0)) return area * ur_curve_eval(&law->stress, e) + fb;

@@ -287,6 +287,13 @@ static inline __attribute__((always_inline)) void narrow1(const urModel* m, urDa
     curv = *law;
     curv.radius = pd->radius = ur_contact_radius(&ea, pr->geom2 >= 0 ? &eb : NULL, &gc);
     law = &curv;
+  } else if (law->type == urLAW_FOAM && law->backing_r == urHERTZ_CURVATURE) {
+    /* a backing derived from the person's layer: flat on the person's part (a), whose
+       curvature at this contact gives its radius */
+    curv = *law;
+    pd->radius = ur_contact_radius(&ea, NULL, &gc);
+    curv.backing_k = ur_law_backing_k(law, pd->radius);
+    law = &curv;
   }
   pd->fn = ur_law_force(law, &pd->ls, gc.g, pd->rate, pd->area);
   if (!(pd->fn > 0)) {
@@ -365,6 +372,10 @@ void ur_contacts_commit(const urModel* m, urData* d) {
       if (law->type == urLAW_HERTZ && law->radius == urHERTZ_CURVATURE) {
         curv = *law;
         curv.radius = pd->radius > 0 ? pd->radius : urHERTZ_RMAX;
+        law = &curv;
+      } else if (law->type == urLAW_FOAM && law->backing_r == urHERTZ_CURVATURE) {
+        curv = *law;
+        curv.backing_k = ur_law_backing_k(law, pd->radius > 0 ? pd->radius : urHERTZ_RMAX);
         law = &curv;
       }
       ur_law_commit(law, &pd->ls, d->pdepth[i], pd->rate, pd->area);

@@ -199,7 +199,7 @@ struct urStance {
 #define urLP64_SIZE(T, n)                                                                          \
   _Static_assert(sizeof(void*) != 8 || sizeof(T) == (n), #T " changed: update its put_ function")
 urLP64_SIZE(urRestraint, 1648);
-urLP64_SIZE(urLaw, 2488);
+urLP64_SIZE(urLaw, 3280);
 urLP64_SIZE(urBody, 5704);
 urLP64_SIZE(urGeom, 208);
 urLP64_SIZE(urOption, 120);
@@ -276,6 +276,11 @@ static void put_law(urStance* st, const urLaw* l) {
     PUT(st, l->layer_h);
     PUT(st, l->bone_k);
     PUT(st, l->shell_k);
+  }
+  if (l->backing_estar > 0 || l->backing.n > 0) { // derived backings only: old keys stay
+    PUT(st, l->backing_estar);
+    PUT(st, l->backing_r);
+    put_curve(st, &l->backing);
   }
   if (l->crush_f > 0) { // crushing shells only: old keys stay
     PUT(st, l->crush_f);

@@ -60,9 +60,10 @@ static const KeySpec spec_section[] = {{"shape", K_ENUM, 1, 0, 1, "tube|plate|so
                                        NUM("h"),
                                        ENABLE};
 static const KeySpec spec_layer[] = {{"on", K_NAMES, MAXLIST, 1, 1, NULL},
-                                     NAMER("material"),
-                                     NUMR("thickness"),
-                                     NUMR("bone_k"),
+                                     NAME("material"),
+                                     NAME("law"),
+                                     NUM("thickness"),
+                                     NUM("bone_k"),
                                      NUM("radius"),
                                      NUM("mu"),
                                      NUM("v_eps"),
@@ -73,9 +74,9 @@ static const KeySpec spec_hertz[] = {LAWTYPE,         NUMR("E1"),      NUMR("nu1
                                      NUMR("E2"),      NUMR("nu2"),     NUM("R2"),   NUM("sy"),
                                      NUM("nu_yield"), FLAG("plastic"), FRICTION,    ENABLE};
 static const KeySpec spec_table[] = {LAWTYPE, NAMER("load"), NAME("unload"), FRICTION, ENABLE};
-static const KeySpec spec_foam[] = {LAWTYPE,          NAMER("stress"),  NUMR("thickness"),
-                                    NUMR("unload_r"), NUMR("unload_p"), NUM("lock"),
-                                    NAME("backing"),  FRICTION,         ENABLE};
+static const KeySpec spec_foam[] = {
+    LAWTYPE,     NAMER("stress"), NUMR("thickness"),        NUMR("unload_r"), NUMR("unload_p"),
+    NUM("lock"), NAME("backing"), NAME("backing_material"), FRICTION,         ENABLE};
 static const KeySpec spec_pair[] = {NAMER("a"), NAMER("b"), NAME("law"), ENABLE};
 static const KeySpec spec_pairs[] = {
     {"a", K_NAMES, MAXLIST, 1, 1, NULL}, {"b", K_NAMES, MAXLIST, 1, 1, NULL}, NAME("law"), ENABLE};
@@ -347,6 +348,7 @@ static void release(Parser* p) {
   free(p->chain);
   free(p->curve);
   free(p->law);
+  free(p->lawback);
   free(p->pval);
   free(p->mat);
   free(p->sec);

@@ -136,7 +136,8 @@ typedef struct {
 
 /* a soft layer over bone on some of a person's ellipsoids (statement 'layer') */
 typedef struct {
-  int mat;       /* its material */
+  int mat;       /* its material, or -1: a law layer */
+  int law;       /* the person's own law that gives the region (layer ... law=), or -1 */
   double h;      /* thickness, m */
   double bone_k; /* stiffness of the bone behind it, N/m */
   double radius; /* Hertz radius of the part under it, m; 0: the ellipsoids' curvature */
@@ -188,6 +189,8 @@ typedef struct {
   int ncurve, capcurve;
   urLaw* law;
   int nlaw, caplaw;
+  int* lawback; /* per law: the material of a foam's derived backing (backing=derived), or -1 */
+  int nlawback, caplawback;
   double* pval;
   int npval, cappval;
   urMaterial* mat; /* materials (modellang_material.c) */

@@ -178,12 +178,52 @@ static const urlGeomMat* geommat_of(const Parser* p, int g) {
 }
 
 
-/* layer NAME on=E1,E2,.. material= thickness= bone_k= [radius=] [mu=] [v_eps=] */
-int url_st_layer(Parser* p, const Bound* b) {
+/* a layer's region: a material with its thickness and bone (ml), or one of the person's own
+   laws (law= : no thickness, bone, radius or friction of its own; the law has them) */
+static int layer_kind(Parser* p, const Bound* b, int* mat, int* law) {
   const Val* vm = url_get(b, "material");
-  int mat = url_ref(p, SYM_MATERIAL, vm->raw, vm->line, "layer");
-  if (mat < 0 || url_nonneg(p, b, "thickness", 1) || url_nonneg(p, b, "bone_k", 1) ||
+  const Val* vl = url_get(b, "law");
+  *mat = *law = -1;
+  if (vm->set == vl->set) {
+    return url_fail(p, b->line,
+                    "layer '%s': give material= (with thickness= and bone_k=) or law= (one of "
+                    "the person's laws), one of them",
+                    b->name);
+  }
+  if (vl->set) {
+    static const char* const own[] = {"thickness", "bone_k", "radius", "mu", "v_eps"};
+    for (int i = 0; i < 5; i++) {
+      const Val* v = url_get(b, own[i]);
+      if (v->set) {
+        return url_fail(p, v->line,
+                        "layer '%s': a law layer takes no %s (its law '%s' gives the force); "
+                        "expected on= and law= only",
+                        b->name, own[i], vl->raw);
+      }
+    }
+    *law = url_ref(p, SYM_LAW, vl->raw, vl->line, "layer");
+    return *law < 0 ? -1 : 0;
+  }
+  static const char* const need[] = {"thickness", "bone_k"};
+  for (int i = 0; i < 2; i++) {
+    if (!url_get(b, need[i])->set) {
+      return url_fail(p, b->line, "layer '%s': a material layer needs %s= (%s)", b->name, need[i],
+                      i ? "N/m, the bone under it" : "m, where it bottoms");
+    }
+  }
+  *mat = url_ref(p, SYM_MATERIAL, vm->raw, vm->line, "layer");
+  if (*mat < 0 || url_nonneg(p, b, "thickness", 1) || url_nonneg(p, b, "bone_k", 1) ||
       url_nonneg(p, b, "radius", 0) || url_nonneg(p, b, "mu", 0) || url_nonneg(p, b, "v_eps", 0)) {
+    return -1;
+  }
+  return 0;
+}
+
+
+/* layer NAME on=E1,E2,.. material= thickness= bone_k= [radius=] [mu=] [v_eps=] | law= */
+int url_st_layer(Parser* p, const Bound* b) {
+  int mat, law;
+  if (layer_kind(p, b, &mat, &law)) {
     return -1;
   }
   int id = url_push(p, (void**)&p->layer, &p->nlayer, &p->caplayer, sizeof(urlLayer), b->line);
@@ -192,6 +232,7 @@ int url_st_layer(Parser* p, const Bound* b) {
   }
   urlLayer* l = p->layer + id;
   l->mat = mat;
+  l->law = law;
   l->h = url_num(b, "thickness", 0);
   l->bone_k = url_num(b, "bone_k", 0);
   l->radius = url_num(b, "radius", 0);
@@ -349,23 +390,95 @@ static double section_radius(const Parser* p, const urlGeomMat* gm) {
 }
 
 
+/* a foam law's backing derived from the layer of the person's part ga (backing=derived, the
+   backing's material bm): Hertz of the layer's material on bm, flat, at the layer's radius or
+   the part's curvature at each contact; or a law layer's loading curve */
+static int foam_backing(Parser* p, const char* what, int ga, int bm, int line, urLaw* out) {
+  const urlGeomMat* a = geommat_of(p, ga);
+  const char* na = p->m->geom[ga].name;
+  if (!a || a->layer < 0) {
+    return url_fail(p, line,
+                    "%s: the foam's backing=derived needs a layer on '%s' (the person's part, "
+                    "a=); expected 'layer ... on=%s' in the person's model, or a declared "
+                    "backing=LAW",
+                    what, na, na);
+  }
+  const urlLayer* l = p->layer + a->layer;
+  char who[2 * urNAMELEN + 64];
+  snprintf(who, sizeof who, "%s, foam on layer %s:", what, symname(p, SYM_LAYER, a->layer));
+  int told = p->m->derived && strstr(p->m->derived, who); /* once per statement and layer */
+  if (l->law >= 0) {
+    const urLaw* ll = p->law + l->law;
+    if (ll->type != urLAW_TABLE) {
+      return url_fail(p, line,
+                      "%s: the foam's backing=derived takes a law layer's loading curve, and "
+                      "'%s' (layer %s) is not a table law",
+                      what, symname(p, SYM_LAW, l->law), symname(p, SYM_LAYER, a->layer));
+    }
+    out->backing = ll->load;
+    if (!told) {
+      url_derived(p, "%s backing beyond the lock strain = the loading curve of law %s", who,
+                  symname(p, SYM_LAW, l->law));
+    }
+    return 0;
+  }
+  const urMaterial *ml = p->mat + l->mat, *mb = p->mat + bm;
+  urLaw h;
+  memset(&h, 0, sizeof h);
+  ur_law_hertz(&h, ml->E, ml->nu, l->radius, mb->E, mb->nu, 0, 0, 0, 0);
+  out->backing_estar = h.estar;
+  if (l->radius > 0) {
+    out->backing_r = h.radius;
+    out->backing_k = ur_law_backing_k(out, h.radius);
+  } else {
+    out->backing_r = urHERTZ_CURVATURE;
+    out->backing_k = 0;
+  }
+  if (told) {
+    return 0;
+  }
+  if (l->radius > 0) {
+    url_derived(p,
+                "%s backing K = 4/3 E* sqrt(R) = %.6g N/m^1.5 (E* %.6g Pa of E1 %.6g Pa, nu1 %g "
+                "on %s E2 %.6g Pa, nu2 %g; R %g m, flat backing)",
+                who, out->backing_k, h.estar, ml->E, ml->nu, symname(p, SYM_MATERIAL, bm), mb->E,
+                mb->nu, h.radius);
+  } else {
+    url_derived(p,
+                "%s backing K = 4/3 E* sqrt(R), E* %.6g Pa (E1 %.6g Pa, nu1 %g on %s E2 %.6g Pa, "
+                "nu2 %g), R the curvature of the person's part at each contact (flat backing)",
+                who, h.estar, ml->E, ml->nu, symname(p, SYM_MATERIAL, bm), mb->E, mb->nu);
+  }
+  return 0;
+}
+
+
 /* the law of a pair of ellipsoids ga, gb (gb -1: the ground): law (>= 0) as declared, or, with
-   law < 0, derived from a layer on one side and a material on the other. A declared law on a
-   layer (a drone file's own scalp law) is an override, and noted once per statement. */
+   law < 0, derived from a layer on one side (a law layer: its law; a material layer: Hertz with
+   a material on the other side). A declared law on a layer other than a law layer's own (a
+   drone file's own scalp law) is an override, and noted once per statement; a declared foam
+   law whose backing is derived is the drone's, not an override, and takes its backing from
+   the person's part a. */
 int url_pair_law(Parser* p, const char* what, int ga, int gb, int law, int line, urLaw* out) {
   const urlGeomMat *a = geommat_of(p, ga), *b = geommat_of(p, gb);
   const urlGeomMat* lay = a && a->layer >= 0 ? a : b && b->layer >= 0 ? b : NULL;
   const urlGeomMat* part = lay == a ? b : a;
-  int derivable = lay && part && part->mat >= 0;
+  const urlLayer* ly = lay ? p->layer + lay->layer : NULL;
+  int derivable = ly && (ly->law >= 0 || (part && part->mat >= 0));
   if (law >= 0) {
     *out = p->law[law];
-    if (lay && !strstr(p->m->note, what)) { /* once per statement */
+    int bm = p->lawback[law];
+    if (bm >= 0) {
+      return foam_backing(p, what, ga, bm, line, out);
+    }
+    if (ly && ly->law != law && !strstr(p->m->note, what)) { /* once per statement */
       int gl = lay == a ? ga : gb, go = lay == a ? gb : ga;
+      int mat = derivable && ly->law < 0;
       url_note(p,
-               "%s: its declared law overrides the layer of '%s'%s%s%s (uasimpact-model(5), "
+               "%s: its declared law '%s' overrides the layer of '%s'%s%s%s (uasimpact-model(5), "
                "MATERIALS)",
-               what, p->m->geom[gl].name, derivable ? " and the material of '" : "",
-               derivable ? p->m->geom[go].name : "", derivable ? "'" : "");
+               what, symname(p, SYM_LAW, law), p->m->geom[gl].name,
+               mat ? " and the material of '" : "", mat ? p->m->geom[go].name : "", mat ? "'" : "");
     }
     return 0;
   }
@@ -375,9 +488,14 @@ int url_pair_law(Parser* p, const char* what, int ga, int gb, int law, int line,
                     "layer on one ellipsoid ('layer ... on=') and material= on the other",
                     what);
   }
+  if (ly->law >= 0) {
+    /* a law layer: the person's own law, whatever the drone part */
+    *out = p->law[ly->law];
+    return 0;
+  }
 
   /* Hertz from both materials; the radius from the layer's and the section's, else curvature */
-  const urlLayer* l = p->layer + lay->layer;
+  const urlLayer* l = ly;
   const urMaterial *ml = p->mat + l->mat, *mp = p->mat + part->mat;
   double rp = section_radius(p, part);
   memset(out, 0, sizeof *out);
@@ -438,8 +556,8 @@ void url_bag_layers(Parser* p, urAirbag* bag) {
   for (int t = 0; t < bag->ntarget; t++) {
     const urlGeomMat* gm = geommat_of(p, bag->target[t]);
     bag->tk[t] = 0;
-    if (!gm || gm->layer < 0) {
-      continue;
+    if (!gm || gm->layer < 0 || p->layer[gm->layer].mat < 0) {
+      continue; /* no layer, or a law layer: the bag's own penalty */
     }
     const urlLayer* l = p->layer + gm->layer;
     const urMaterial* ml = p->mat + l->mat;

@@ -618,10 +618,67 @@ static int poisson(Parser* p, const Bound* b, const char* key) {
 }
 
 
+/* a foam law's keys lock=, backing= and backing_material=: the rigid backing the solid foam
+   rests on, a declared Hertz law (its K now), or derived per pair from the person's layer
+   (backing=derived: *backmat the backing's material, url_pair_law) */
+static int foam_backing(Parser* p, const Bound* b, urLaw* law, int* backmat) {
+  const Val* vk = url_get(b, "lock");
+  const Val* vb = url_get(b, "backing");
+  const Val* vm = url_get(b, "backing_material");
+  if (vk->set != vb->set) {
+    return url_fail(p, (vk->set ? vk : vb)->line,
+                    "law '%s': lock and backing go together (the "
+                    "solid foam rests on the backing)",
+                    b->name);
+  }
+  int derived = vb->set && !strcmp(vb->raw, "derived");
+  if (vm->set != derived) {
+    return url_fail(p, (vm->set ? vm : vb)->line,
+                    "law '%s': backing=derived and backing_material=MATERIAL go together (the "
+                    "backing's Hertz law from the person's layer on that material)",
+                    b->name);
+  }
+  if (!vk->set) {
+    return 0;
+  }
+  double last = law->stress.x[law->stress.n - 1];
+  if (!(vk->v[0] > 0 && vk->v[0] < 1 && vk->v[0] <= last)) {
+    return url_fail(p, vk->line,
+                    "law '%s': lock must be in (0, 1) and within the stress curve "
+                    "(last strain %g; got %g)",
+                    b->name, last, vk->v[0]);
+  }
+  law->lock = vk->v[0];
+  if (derived) {
+    *backmat = url_ref(p, SYM_MATERIAL, vm->raw, vm->line, "law");
+    return *backmat < 0 ? -1 : 0;
+  }
+  int l = url_ref(p, SYM_LAW, vb->raw, vb->line, "law");
+  if (l < 0) {
+    return -1;
+  }
+  if (p->law[l].type != urLAW_HERTZ) {
+    return url_fail(p, vb->line, "law '%s': backing '%s' must be a hertz law (or derived)", b->name,
+                    vb->raw);
+  }
+  if (p->law[l].radius == urHERTZ_CURVATURE) {
+    return url_fail(p, vb->line,
+                    "law '%s': backing '%s' must give R1 and R2 (a backing has no "
+                    "contact of its own to take a curvature from)",
+                    b->name, vb->raw);
+  }
+  double K, dy, fy;
+  ur_law_hertz_params(p->law + l, &K, &dy, &fy);
+  law->backing_k = K;
+  return 0;
+}
+
+
 /* law NAME type=hertz|table|foam ... */
 int url_st_law(Parser* p, const Bound* b) {
   urLaw law;
   memset(&law, 0, sizeof(law));
+  int backmat = -1;
   int type = url_get(b, "type")->e;
 
   /* per type */
@@ -683,41 +740,8 @@ int url_st_law(Parser* p, const Bound* b) {
     law.unload_r = vr->v[0];
     law.unload_p = url_num(b, "unload_p", 0);
 
-    /* the lock strain within the stress data, and the rigid backing's Hertz law */
-    const Val* vk = url_get(b, "lock");
-    const Val* vb = url_get(b, "backing");
-    if (vk->set != vb->set) {
-      return url_fail(p, (vk->set ? vk : vb)->line,
-                      "law '%s': lock and backing go together (the "
-                      "solid foam rests on the backing)",
-                      b->name);
-    }
-    if (vk->set) {
-      double last = law.stress.x[law.stress.n - 1];
-      if (!(vk->v[0] > 0 && vk->v[0] < 1 && vk->v[0] <= last)) {
-        return url_fail(p, vk->line,
-                        "law '%s': lock must be in (0, 1) and within the stress curve "
-                        "(last strain %g; got %g)",
-                        b->name, last, vk->v[0]);
-      }
-      int l = url_ref(p, SYM_LAW, vb->raw, vb->line, "law");
-      if (l < 0) {
-        return -1;
-      }
-      if (p->law[l].type != urLAW_HERTZ) {
-        return url_fail(p, vb->line, "law '%s': backing '%s' must be a hertz law", b->name,
-                        vb->raw);
-      }
-      if (p->law[l].radius == urHERTZ_CURVATURE) {
-        return url_fail(p, vb->line,
-                        "law '%s': backing '%s' must give R1 and R2 (a backing has no "
-                        "contact of its own to take a curvature from)",
-                        b->name, vb->raw);
-      }
-      double K, dy, fy;
-      ur_law_hertz_params(p->law + l, &K, &dy, &fy);
-      law.lock = vk->v[0];
-      law.backing_k = K;
+    if (foam_backing(p, b, &law, &backmat)) {
+      return -1;
     }
   }
 
@@ -733,9 +757,13 @@ int url_st_law(Parser* p, const Bound* b) {
   law.mu = url_num(b, "mu", 0);
   law.v_eps = url_num(b, "v_eps", 0);
   int id = url_push(p, (void**)&p->law, &p->nlaw, &p->caplaw, sizeof(urLaw), b->line);
-  if (id < 0 || url_declare(p, SYM_LAW, b->name, b->line, id, 1)) {
+  int ib =
+      id < 0 ? -1
+             : url_push(p, (void**)&p->lawback, &p->nlawback, &p->caplawback, sizeof(int), b->line);
+  if (ib < 0 || url_declare(p, SYM_LAW, b->name, b->line, id, 1)) {
     return -1;
   }
   p->law[id] = law;
+  p->lawback[ib] = backmat;
   return 0;
 }

@@ -150,13 +150,27 @@ run -c "model load $TMP/derive.urm; model params arm"
 check prefix_no_derived cond '[ "$RC" -eq 0 ] && ! has "$TMP/out" "derived"'
 run -c "model load $TMP/derive.urm; set format json; model notes"
 check notes_json cond 'has "$TMP/out" "\"kind\":\"derived\",\"text\":\"pair .podh., pod on head_cranium"'
-# no yield: the shell stays elastic, and says so; the built-in models derive nothing yet
+# no yield: the shell stays elastic, and says so
 sed 's/ yield=4e7//' "$TMP/derive.urm" >"$TMP/derive2.urm"
 run -c "model load $TMP/derive2.urm; model notes"
 check no_yield_no_crush cond 'has "$TMP/out" "podh.*shell crush none (material abs gives no yield)" &&
   ! has "$TMP/out" "F_c ="'
+# the built-in RA3's foam rests on a backing derived from the person's layers: on the head the
+# scalp on carbon, flat, at the head's radius (4/3 E* sqrt(R)); on the thorax at its curvature;
+# on the rest of his body his soft-tissue law's loading curve. Its frame and arms name laws of
+# their own on the head (Table B1) and the person's tissue law on the thorax: overrides, noted
 run -c "model notes"
-check builtin_derives_nothing cond '[ "$RC" -eq 0 ] && ! has "$TMP/out" "^derived"'
+check builtin_backing_head cond '[ "$RC" -eq 0 ] && derived_is "$TMP/out" \
+  "cg., foam on layer scalp: backing K" \
+  "$(awk "BEGIN { print 4 / 3 / ((1 - 0.29^2) / 2.23e7 + (1 - 0.34^2) / 5.48e10) * sqrt(0.0875) }")"'
+check builtin_backing_thorax has "$TMP/out" \
+  "foam on layer skin_thorax: backing K = 4/3 E\* sqrt(R), E\* 250783 Pa .*R the curvature of the person.s part"
+check builtin_backing_law cond '[ "$(grep -c "foam on layer soft_body: backing beyond the lock strain = the loading curve of law tissue" "$TMP/out")" -eq 1 ]'
+check builtin_overrides cond 'has "$TMP/out" "^note  *pairs .fb.: its declared law .tissue. overrides the layer of .thorax." &&
+  has "$TMP/out" "^note  *pairs .fh.: its declared law .frame_head. overrides the layer of .head_cranium." &&
+  [ "$(grep -c "^note" "$TMP/out")" -eq 4 ]'
+# no drone file copies the person's soft-tissue law or rests its foam on a scalp law of its own
+check builtin_no_person_law cond '! grep -q "tissue_load\|backing=frame_head" src/models/ra3.urm sessions/quad/quad.urm'
 
 # ---- a parameter whose default is another (param bag_a $frame_a m): it follows frame_a, also
 # after 'set frame_a', until it is set; show and model params say so while it follows ----

@@ -1,6 +1,7 @@
 /* test_contact_law.c: Hertz constants against the sheet's numbers, a 1-DOF Hertz impact against
  * the closed form, Brake unloading, Jackson-Green blend, tabulated and foam hysteresis energy,
- * rate terms, friction and curve interpolation.
+ * rate terms, friction and curve interpolation; a foam's backing on a curve, and a derived
+ * backing's K against Hertz's closed form and the law it replaces.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -427,6 +428,60 @@ static void test_foam_lock(void** state) {
   assert_true(wl > -wu);
 }
 
+/* foam on a backing curve (a person's law layer's loading curve): beyond the lock the curve's
+   force at the depth past the lock thickness adds, and the law's data end where the curve's do */
+static void test_foam_backing_curve(void** state) {
+  urLaw l;
+  memset(&l, 0, sizeof(l));
+  l.type = urLAW_FOAM;
+  urCurve st = {4, {0, 0.1, 0.5, 0.8}, {0, 0.3e6, 0.5e6, 2.0e6}};
+  urCurve bk = {3, {0, 0.01, 0.05}, {0, 4200, 14000}};
+  l.stress = st;
+  l.thickness = 0.04;
+  l.unload_r = 0.2;
+  l.unload_p = 4;
+  l.lock = 0.8;
+  l.backing_k = 9.6e6; /* ignored: the curve takes its place */
+  l.backing = bk;
+  double A = 0.004;
+  urLawState s;
+  memset(&s, 0, sizeof(s));
+  assert_near(ur_law_range(&l), 0.8 * 0.04 + 0.05, 1e-15);
+
+  // below the lock: the plain law; beyond: the lock stress plus the curve, interpolated
+  assert_near(ur_law_force(&l, &s, 0.02, 0, A), A * 0.5e6, 1e-6);
+  assert_near(ur_law_force(&l, &s, 0.032 + 0.005, 0, A), A * 2.0e6 + 2100, 1e-6);
+  assert_near(ur_law_force(&l, &s, 0.032 + 0.03, 0, A), A * 2.0e6 + 4200 + 9800 * 0.5, 1e-6);
+
+  // elastic: loaded to 10 mm past the lock and back, the curve gives back its work
+  double d = 0.032 + 0.01;
+  const int n = 100000;
+  pathwork(&l, &s, 0, d, n, A);
+  double wu = pathwork(&l, &s, d, 0, n, A);
+  double wb = 0.5 * 4200 * 0.01; /* the curve's triangle, given back */
+  double wuref = -A * 0.04 * 2.0e6 * 0.8 * 0.8 / 5 - wb - A * 2.0e6 * 0.01;
+  printf("foam on a curve: unload %.9g J (%.9g)\n", wu, wuref);
+  assert_near(wu, wuref, 1e-6);
+}
+
+/* a derived backing's K = 4/3 E* sqrt(R), the very bits of the Hertz law of the same E* and R
+   (the backing=frame_head law it replaces in the RA3) */
+static void test_backing_k(void** state) {
+  urLaw h, f;
+  memset(&h, 0, sizeof(h));
+  memset(&f, 0, sizeof(f));
+  ur_law_hertz(&h, 2.23e7, 0.29, 0.0875, 5.48e10, 0.34, 0, 3.42e6, 0.29, 0);
+  double K, dy, fy;
+  ur_law_hertz_params(&h, &K, &dy, &fy);
+  f.backing_estar = h.estar;
+  double Kb = ur_law_backing_k(&f, h.radius);
+  assert_true(memcmp(&Kb, &K, sizeof K) == 0);
+  double es = 1 / ((1 - 0.29 * 0.29) / 2.23e7 + (1 - 0.34 * 0.34) / 5.48e10);
+  assert_near(Kb, 4.0 / 3.0 * es * sqrt(0.0875), 1e-9 * Kb);
+  assert_near(Kb, 9.59907e6, 5); /* the old frame_head law's K, as printed to 6 digits */
+  assert_near(ur_law_backing_k(&f, 0.2), 4.0 / 3.0 * es * sqrt(0.2), 1e-9 * Kb);
+}
+
 /* friction: magnitude mu Fn when sliding faster than v_eps, linear below, opposes vt */
 static void test_friction(void** state) {
   urLaw l;
@@ -458,7 +513,8 @@ int main(void) {
       cmocka_unit_test(test_jg_blend),        cmocka_unit_test(test_rate_terms),
       cmocka_unit_test(test_curve_eval),      cmocka_unit_test(test_table_hysteresis),
       cmocka_unit_test(test_foam_hysteresis), cmocka_unit_test(test_foam_lock),
-      cmocka_unit_test(test_friction),
+      cmocka_unit_test(test_friction),        cmocka_unit_test(test_foam_backing_curve),
+      cmocka_unit_test(test_backing_k),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -2,7 +2,7 @@
  * sphere-on-plane impact (peak penetration, contact time, restitution), momentum in a two-body
  * oblique collision with friction, sliding-to-rolling transition under Coulomb friction; the
  * superellipsoid's half-width, depth bound (bit for bit the minimum it skips work on) and
- * bounding radius. */
+ * bounding radius; a foam's backing at the person's curvature. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -262,6 +262,52 @@ static void test_superellipsoid_bounds(void** state) {
   ur_model_free(m);
 }
 
+/* a foam whose backing is derived from a person's layer without a radius: past the lock the
+   backing's Hertz force takes the radius of the person's part (a) at the contact, here an
+   ellipsoid's pole on the ground, R = a b / c (the foam flat: the ground) */
+static void test_foam_backing_curvature(void** state) {
+  urModel* m = ur_model_new();
+  double I[6] = {1, 1, 1, 0, 0, 0}, ax[3] = {0.1, 0.2, 0.15};
+  int b = ur_model_add_body(m, "torso", -1, urJNT_FREE, NULL, NULL);
+  ur_model_set_inertia(m, b, 30, NULL, I);
+  int g = ur_model_add_ellipsoid(m, "chest", b, NULL, NULL, ax);
+  urLaw foam = {0};
+  foam.type = urLAW_FOAM;
+  urCurve st = {2, {0, 0.9}, {0, 0.9e6}};
+  foam.stress = st;
+  foam.thickness = 0.02;
+  foam.lock = 0.5;
+  double es = 1 / ((1 - 0.45 * 0.45) / 2e5 + (1 - NU2 * NU2) / E2);
+  foam.backing_estar = es;
+  foam.backing_r = urHERTZ_CURVATURE;
+  assert_int_equal(ur_model_add_pair(m, "cg", g, -1, &foam), 0);
+  m->opt.gravity[2] = 0;
+  assert_int_equal(ur_model_compile(m), 0);
+  urData* d = ur_data_new(m);
+
+  // 4 mm past the lock depth (10 mm)
+  double dep = 0.014, x = dep - 0.01, Rc = 0.1 * 0.2 / 0.15;
+  d->qpos[2] = 0.15 - dep;
+  d->qpos[3] = 1;
+  ur_kinematics(m, d);
+  ur_contacts(m, d);
+  urEllipsoid e;
+  ur_geom_ellipsoid(m, d, g, &e);
+  double n[3] = {0, 0, -1};
+  double A = ur_section_area(&e, n, dep);
+  double fref = A * 0.5e6 + 4.0 / 3.0 * es * sqrt(Rc) * x * sqrt(x);
+  print_message("foam on a curved backing: F %.9g N (expected %.9g), R %.9g m (a b / c %.9g)\n",
+                d->pair[0].fn, fref, d->pair[0].radius, Rc);
+  assert_true(fabs(d->pair[0].radius - Rc) < 1e-9);
+  assert_true(fabs(d->pair[0].fn - fref) < 1e-9 * fref);
+
+  // the commit takes the same backing: the state records the depth and the lock force
+  ur_contacts_commit(m, d);
+  assert_true(fabs(d->pair[0].ls.dmax - dep) < 1e-12 && d->pair[0].ls.touching == 1);
+  ur_data_free(d);
+  ur_model_free(m);
+}
+
 /* ur_depth_bound skips, for a superellipsoid, the direction whose cheap lower bound lies above
    the other direction's value (issue 36): the bound must stay bit for bit the minimum of f over
    the centre line and the warm start, evaluated in full here, at random poses, warm starts
@@ -413,6 +459,7 @@ int main(void) {
       cmocka_unit_test(test_superellipsoid_bounds),
       cmocka_unit_test(test_depth_bound_exact),
       cmocka_unit_test(test_commit_list_once),
+      cmocka_unit_test(test_foam_backing_curvature),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -213,7 +213,7 @@ static const struct {
      "0.6)"},
     {PRE "curve c x=0,0.5 y=0,1\nlaw t type=table load=c\n"
          "law l type=foam stress=c thickness=0.1 unload_r=0 unload_p=1 lock=0.5 backing=t\n",
-     "x.urm:6: law 'l': backing 't' must be a hertz law"},
+     "x.urm:6: law 'l': backing 't' must be a hertz law (or derived)"},
     {PRE "curve c x=0,0.5 y=0,1\n"
          "law l type=foam stress=c thickness=0.1 unload_r=0 unload_p=1 lock=0.5 backing=hh\n",
      "x.urm:5: law: dangling reference to law 'hh'*"},

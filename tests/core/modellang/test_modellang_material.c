@@ -1,8 +1,9 @@
 /* test_modellang_material.c: the statements material, section and layer, and what the model
  * language derives from them: an arm's hinge from beam theory (3EI/L, sigma_y Zp, hardening,
  * fracture moment), the law between a drone part and a person's layer (Hertz's combination of
- * both materials and radii, the layer's thickness and bone, a shell in series), a declared law
- * that overrides a derivable one (kept, and noted), and the errors of each statement.
+ * both materials and radii, the layer's thickness and bone, a shell in series), a law layer (the
+ * person's own law), a foam's backing derived from the person's layer, a declared law that
+ * overrides a derivable one (kept, and noted), and the errors of each statement.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -192,7 +193,7 @@ static void test_override(void** state) {
   assert_near(l->layer_h, 0, 0);
   print_message("note: %s\n", m->note);
   assert_non_null(strstr(m->note,
-                         "pair 'fh': its declared law overrides the layer of "
+                         "pair 'fh': its declared law 'frame_head' overrides the layer of "
                          "'cranium' and the material of 'frame'"));
   ur_model_free(m);
 
@@ -204,8 +205,8 @@ static void test_override(void** state) {
   m = parse1(text, NULL, 0, err);
   assert_non_null(m);
   assert_string_equal(m->note,
-                      "pair 'fh': its declared law overrides the layer of 'cranium' "
-                      "(uasimpact-model(5), MATERIALS)");
+                      "pair 'fh': its declared law 'frame_head' overrides the layer of "
+                      "'cranium' (uasimpact-model(5), MATERIALS)");
   ur_model_free(m);
 
   // a drone without a layer on the other side: nothing to note
@@ -215,6 +216,96 @@ static void test_override(void** state) {
              NULL, 0, err);
   assert_non_null(m);
   assert_string_equal(m->note, "");
+  ur_model_free(m);
+}
+
+/* a body region given by one of the person's own laws, and a cargo foam with its backing */
+#define SOFT                                                                                       \
+  "curve tload x=0,0.01,0.05 y=0,4200,14000\n"                                                     \
+  "curve tunload x=0,0.01,0.05 y=0,1050,3500\n"                                                    \
+  "law tissue type=table load=tload unload=tunload damping=150 mu=0.4 v_eps=0.01\n"                \
+  "material skin E=2e5 nu=0.45 density=1100\n"                                                     \
+  "body trunk parent=world joint=free pos=0,0,1.3 mass=30 inertia=1,1,1\n"                         \
+  "ellipsoid chest body=trunk pos=0,0,0 size=0.12,0.145,0.14\n"                                    \
+  "ellipsoid neck body=trunk pos=0,0,0.25 size=0.057,0.065,0.06\n"                                 \
+  "layer skin_l on=chest material=skin thickness=0.015 bone_k=1e6 mu=0.4 v_eps=0.01\n"             \
+  "layer soft on=neck law=tissue\n"
+#define FOAM                                                                                       \
+  "curve epp x=0,0.5,0.9 y=0,0.5e6,6e6\n"                                                          \
+  "law foam type=foam stress=epp thickness=0.03 unload_r=0.2 unload_p=4 lock=0.89 "                \
+  "backing=derived backing_material=cf mu=0.4 v_eps=0.01\n"
+
+/* a law layer: a pair without law= takes the person's law, whatever the drone part; naming the
+   same law is no override, another law is (noted) */
+static void test_law_layer(void** state) {
+  char err[256];
+  urModel* m = parse1(HEAD DRONE SOFT
+                      "law other type=table load=tload\n"
+                      "pair n1 a=neck b=frame\n"
+                      "pair n2 a=neck b=tube law=tissue\n"
+                      "pairs n3 a=neck b=shell law=other\n",
+                      NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urLaw* l = &m->pair[ur_name_pair(m, "n1")].law;
+  assert_int_equal(l->type, urLAW_TABLE);
+  assert_int_equal(l->load.n, 3);
+  assert_near(l->load.y[2], 14000, 0);
+  assert_near(l->unload.y[1], 1050, 0);
+  assert_near(l->damping, 150, 0);
+  assert_near(l->layer_h, 0, 0);
+  assert_null(strstr(m->note, "'n1'"));
+  assert_null(strstr(m->note, "'n2'"));
+  assert_non_null(strstr(m->note,
+                         "pairs 'n3': its declared law 'other' overrides the layer of "
+                         "'neck' (uasimpact-model(5), MATERIALS)"));
+  ur_model_free(m);
+}
+
+/* backing=derived: per pair from the layer of the person's part a. Scalp at its radius: the
+   Hertz K of the scalp on the backing's material, flat, the bits of the declared law it
+   replaces and 4/3 E* sqrt(R) of both materials; a layer without a radius: E* now, R at each
+   contact; a law layer: its loading curve */
+static void test_backing_derived(void** state) {
+  char err[256];
+  urModel* m = parse1(HEAD DRONE SOFT FOAM
+                      "law fh type=hertz E1=2.23e7 nu1=0.29 R1=0.0875 E2=5.48e10 nu2=0.34 R2=0\n"
+                      "law old type=foam stress=epp thickness=0.03 unload_r=0.2 unload_p=4 "
+                      "lock=0.89 backing=fh\n"
+                      "pairs cg a=cranium,chest,neck b=shell law=foam\n"
+                      "pair cold a=cranium b=shell law=old\n",
+                      NULL, 0, err);
+  if (!m) print_error("%s\n", err);
+  assert_non_null(m);
+  const urLaw* head = &m->pair[ur_name_pair(m, "cg_cranium_shell")].law;
+  const urLaw* old = &m->pair[ur_name_pair(m, "cold")].law;
+  assert_true(head->backing_k > 0);
+  assert_true(memcmp(&head->backing_k, &old->backing_k, sizeof(double)) == 0);
+  double es = 1 / ((1 - 0.29 * 0.29) / 2.23e7 + (1 - 0.34 * 0.34) / 5.48e10);
+  assert_near(head->backing_k, 4.0 / 3.0 * es * sqrt(0.0875), 1e-9 * head->backing_k);
+  assert_near(head->backing_r, 0.0875, 1e-15);
+  assert_near(head->lock, 0.89, 0);
+  assert_int_equal(head->backing.n, 0);
+
+  const urLaw* chest = &m->pair[ur_name_pair(m, "cg_chest_shell")].law;
+  double es2 = 1 / ((1 - 0.45 * 0.45) / 2e5 + (1 - 0.34 * 0.34) / 5.48e10);
+  assert_true(chest->backing_r == urHERTZ_CURVATURE);
+  assert_near(chest->backing_estar, es2, 1e-9 * es2);
+  assert_near(chest->backing_k, 0, 0);
+
+  const urLaw* neck = &m->pair[ur_name_pair(m, "cg_neck_shell")].law;
+  assert_int_equal(neck->backing.n, 3);
+  assert_near(neck->backing.y[1], 4200, 0);
+  assert_near(ur_law_range(neck), 0.89 * 0.03 + 0.05, 1e-15);
+
+  // the foam is the drone's: no override noted; what was derived is listed
+  assert_null(strstr(m->note, "cg"));
+  assert_non_null(strstr(m->derived,
+                         "pairs 'cg', foam on layer scalp_l: backing K = "
+                         "4/3 E* sqrt(R) = 9.59907e+06 N/m^1.5"));
+  assert_non_null(strstr(m->derived,
+                         "pairs 'cg', foam on layer soft: backing beyond the lock "
+                         "strain = the loading curve of law tissue"));
   ur_model_free(m);
 }
 
@@ -281,6 +372,34 @@ static void test_errors(void** state) {
       {HEAD DRONE "pair p a=tube b=frame\n", "no law= and nothing to derive one from"},
       {HEAD "layer l2 on=cranium material=skin thickness=0.01 bone_k=1e6\n",
        "dangling reference to material 'skin'"},
+      {HEAD SOFT "layer both on=cranium material=skin law=tissue\n",
+       "layer 'both': give material= (with thickness= and bone_k=) or law="},
+      {HEAD "layer none on=cranium thickness=0.01 bone_k=1e6\n",
+       "layer 'none': give material= (with thickness= and bone_k=) or law="},
+      {HEAD SOFT "layer t on=cranium law=tissue thickness=0.01\n",
+       "a law layer takes no thickness (its law 'tissue' gives the force)"},
+      {HEAD "layer m on=cranium material=scalp bone_k=1e6\n",
+       "a material layer needs thickness= (m, where it bottoms)"},
+      {HEAD "layer u on=cranium law=nolaw\n", "dangling reference to law 'nolaw'"},
+      {DRONE FOAM "body o parent=world joint=free pos=0,0,1 mass=1 inertia=0.1,0.1,0.1\n"
+                  "ellipsoid bare body=o pos=0,0,0 size=0.1,0.1,0.1\n"
+                  "pair p a=bare b=shell law=foam\n",
+       "pair 'p': the foam's backing=derived needs a layer on 'bare'"},
+      {DRONE "curve epp x=0,0.9 y=0,6e6\nlaw f type=foam stress=epp thickness=0.03 "
+             "unload_r=0.2 unload_p=4 lock=0.89 backing=derived\n",
+       "backing=derived and backing_material=MATERIAL go together"},
+      {DRONE "law h type=hertz E1=1e7 nu1=0.3 R1=0.1 E2=1e9 nu2=0.3 R2=0\ncurve epp x=0,0.9 "
+             "y=0,6e6\nlaw f type=foam stress=epp thickness=0.03 unload_r=0.2 unload_p=4 "
+             "lock=0.89 backing=h backing_material=cf\n",
+       "backing=derived and backing_material=MATERIAL go together"},
+      {DRONE "curve epp x=0,0.9 y=0,6e6\nlaw f type=foam stress=epp thickness=0.03 "
+             "unload_r=0.2 unload_p=4 lock=0.89 backing=derived backing_material=nomat\n",
+       "dangling reference to material 'nomat'"},
+      {HEAD DRONE FOAM "law hz type=hertz E1=1e7 nu1=0.3 E2=1e9 nu2=0.3\n"
+                       "body o parent=world joint=free pos=0,0,1 mass=1 inertia=0.1,0.1,0.1\n"
+                       "ellipsoid arm_o body=o pos=0,0,0 size=0.1,0.1,0.1\n"
+                       "layer lh on=arm_o law=hz\npair p a=arm_o b=shell law=foam\n",
+       "takes a law layer's loading curve, and 'hz' (layer lh) is not a table law"},
   };
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
     char err[256] = "";
@@ -296,10 +415,11 @@ static void test_errors(void** state) {
 int main(void) {
   (void)model_text; /* the fixture's model: not used here */
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_hinge),       cmocka_unit_test(test_pair_law),
-      cmocka_unit_test(test_override),    cmocka_unit_test(test_bag_layer),
-      cmocka_unit_test(test_foam_curve),  cmocka_unit_test(test_errors),
-      cmocka_unit_test(test_shell_crush),
+      cmocka_unit_test(test_hinge),           cmocka_unit_test(test_pair_law),
+      cmocka_unit_test(test_override),        cmocka_unit_test(test_bag_layer),
+      cmocka_unit_test(test_foam_curve),      cmocka_unit_test(test_errors),
+      cmocka_unit_test(test_shell_crush),     cmocka_unit_test(test_law_layer),
+      cmocka_unit_test(test_backing_derived),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
