@@ -143,6 +143,24 @@ printf 'case C 40.6 x.csv\nload a;b.urm\n' >"$TMP/inj2.spec"
 "$CAL" -e -s "$TMP/inj2.spec" -o "$TMP/c" >"$TMP/out" 2>"$TMP/err"; RC=$?
 check "a spec's load is a plain path" cond '[ "$RC" -eq 1 ] && has "$TMP/err" "inj2.spec:2: expected load FILE"'
 
+# ---- the refit's declaration: stage 1's free parameters are in the man page's declaration;
+# stage 2's spec from a result: the bag's plan between 1 and 1.375 of the frame, only plain
+# 'set NAME NUMBER' lines carried over (a result is data)
+sed -n '/^\.SS The refit on materials/,/^\.SS Scoring/p' man/uasimpact-model.5 >"$TMP/refit"
+ok=1
+for name in $(awk '$1 == "free" { print $2 }' src/models/refit-drone.spec); do
+  grep -q "^\.BR\{0,1\} .*\b$name\b" "$TMP/refit" || { echo "not declared: $name"; ok=0; }
+done
+check "refit: every stage-1 parameter declared" cond '[ $ok -eq 1 ] && [ "$(grep -c "^free " src/models/refit-drone.spec)" -eq 9 ]'
+printf '# r\nset frame_a 0.3\nset frame_b 0.2\nset foam_t 0.04; model load x\nset x$y 1\nset arm_t 7.8e-4\n' >"$TMP/r1.txt"
+sh scripts/refit.sh bag "$TMP/r1.txt" >"$TMP/bag.spec"; RC=$?
+check "refit.sh bag: bounds from the frame" cond '[ $RC -eq 0 ] && grep -q "^free bag_a 0.3 0.4125 0.3966 " "$TMP/bag.spec" &&
+  grep -q "^free bag_b 0.2 0.275 0.2608 " "$TMP/bag.spec" && grep -q "^case A " "$TMP/bag.spec" && ! grep -q "^case [BC] " "$TMP/bag.spec"'
+check "refit.sh bag: only plain settings carried" cond '[ "$(grep -c "^set " "$TMP/bag.spec")" -eq 5 ] && grep -q "^set arm_t 7.8e-4$" "$TMP/bag.spec" &&
+  ! grep -q "foam_t\|model load x\|x\$y" "$TMP/bag.spec" && grep -q "^set bag_mesh 14$" "$TMP/bag.spec"'
+sh scripts/refit.sh bag "$TMP/none.txt" >/dev/null 2>"$TMP/err"; RC=$?
+check "refit.sh: a missing result refused" cond '[ $RC -eq 1 ] && has "$TMP/err" "none.txt: cannot read"'
+
 # the man page's CALIBRATION section declares each free parameter of the spec
 sed -n '/^\.SS Free parameters/,/^\.SS Discrete/p' man/uasimpact-model.5 >"$TMP/decl"
 ok=1
