@@ -870,5 +870,8 @@ int main(int argc, char** argv) {
   clock_gettime(CLOCK_MONOTONIC, &t1);
   fclose(F.log);
   write_result(&F, dir, (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec));
+  for (int i = 0; i < F.nrows; i++) free(F.rows[i]); /* the replayed log's rows */
+  free(F.rows);
+  free(F.rowline);
   return isfinite(F.best) ? 0 : 1;
 }
