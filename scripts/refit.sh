@@ -29,6 +29,7 @@ load src/models/candidate/ra3.urm
 $sets
 set bag_membrane 1
 set bag_mesh 14
+set tmax 0.4
 loss integral
 EOT
 if [ "$what" = bag ]; then

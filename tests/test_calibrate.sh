@@ -156,7 +156,7 @@ printf '# r\nset frame_a 0.3\nset frame_b 0.2\nset foam_t 0.04; model load x\nse
 sh scripts/refit.sh bag "$TMP/r1.txt" >"$TMP/bag.spec"; RC=$?
 check "refit.sh bag: bounds from the frame" cond '[ $RC -eq 0 ] && grep -q "^free bag_a 0.3 0.4125 0.3966 " "$TMP/bag.spec" &&
   grep -q "^free bag_b 0.2 0.275 0.2608 " "$TMP/bag.spec" && grep -q "^case A " "$TMP/bag.spec" && ! grep -q "^case [BC] " "$TMP/bag.spec"'
-check "refit.sh bag: only plain settings carried" cond '[ "$(grep -c "^set " "$TMP/bag.spec")" -eq 5 ] && grep -q "^set arm_t 7.8e-4$" "$TMP/bag.spec" &&
+check "refit.sh bag: only plain settings carried" cond '[ "$(grep -c "^set " "$TMP/bag.spec")" -eq 6 ] && grep -q "^set arm_t 7.8e-4$" "$TMP/bag.spec" &&
   ! grep -q "foam_t\|model load x\|x\$y" "$TMP/bag.spec" && grep -q "^set bag_mesh 14$" "$TMP/bag.spec"'
 sh scripts/refit.sh bag "$TMP/none.txt" >/dev/null 2>"$TMP/err"; RC=$?
 check "refit.sh: a missing result refused" cond '[ $RC -eq 1 ] && has "$TMP/err" "none.txt: cannot read"'
