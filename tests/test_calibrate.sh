@@ -158,6 +158,11 @@ check "refit.sh bag: bounds from the frame" cond '[ $RC -eq 0 ] && grep -q "^fre
   grep -q "^free bag_b 0.2 0.275 0.2608 " "$TMP/bag.spec" && grep -q "^case A " "$TMP/bag.spec" && ! grep -q "^case [BC] " "$TMP/bag.spec"'
 check "refit.sh bag: only plain settings carried" cond '[ "$(grep -c "^set " "$TMP/bag.spec")" -eq 6 ] && grep -q "^set arm_t 7.8e-4$" "$TMP/bag.spec" &&
   ! grep -q "foam_t\|model load x\|x\$y" "$TMP/bag.spec" && grep -q "^set bag_mesh 14$" "$TMP/bag.spec"'
+# the committed stage-2 spec is refit.sh's output from the committed stage-1 result, unedited
+if [ -r src/models/refit-drone-result.txt ] && [ -r src/models/refit-bag.spec ]; then
+  sh scripts/refit.sh bag src/models/refit-drone-result.txt >"$TMP/regen.spec"
+  check "refit-bag.spec = refit.sh's output" cmp -s "$TMP/regen.spec" src/models/refit-bag.spec
+fi
 sh scripts/refit.sh bag "$TMP/none.txt" >/dev/null 2>"$TMP/err"; RC=$?
 check "refit.sh: a missing result refused" cond '[ $RC -eq 1 ] && has "$TMP/err" "none.txt: cannot read"'
 
