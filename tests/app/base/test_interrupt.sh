@@ -89,7 +89,7 @@ check fifo_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
 "$U" -c "grid load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
 waiting_in $PID 'wait_for_partner|fifo_open'
 interrupt
-check fifo_grid_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+check fifo_grid_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "grid load: interrupted (Ctrl-C) while opening"'
 
 # ---- at the prompt, on a terminal (tmux) ----
