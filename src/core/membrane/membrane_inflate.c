@@ -82,6 +82,7 @@ typedef struct {
   int cut;               /* the team after the last step whose barrier a parked worker passed
                             (thread 0 writes it only then, or waking the parked) */
   int ready, done;       /* the team is set; the phase is over (under bar.mu) */
+  int stopped;           /* the stop flag (urMembrane.stop) as thread 0 read it after a step */
   int parked;            /* workers parked (under bar.mu) */
   int it;                /* the step a parked worker resumes at, and its kinetic energy peak */
   double ke_prev;
@@ -162,7 +163,7 @@ static void relax_run(Relax* R, int tid) {
     }
   }
   share(R, nact, tid, bs, is);
-  while (it < MAXSTEP) {
+  while (it < MAXSTEP && !R->stopped) { /* stopped on request: ur_mem_inflate says so */
     // the fabric of this thread's triangles; the volume (ur_mem_volume's sum, ur_mem_forces's)
     urm_tri_pass_part(mb, st, bs[0], bs[1], R->vt);
     barrier_wait(&R->bar);
@@ -214,6 +215,9 @@ static void relax_run(Relax* R, int tid) {
 
     // the next step's team: thread 0 decides (alone, or before the others pass the barrier)
     int next = nact, woke = 0;
+    if (tid == 0) {
+      R->stopped = mb->stop && *mb->stop; /* read by the others after the barrier */
+    }
     if (tid == 0 && R->nthr > 1) {
       int way = R->alt > 0 ? it / R->alt % 2 == 0 : R->alt < 0 ? 1 : pace(&P);
       next = way ? R->nthr : 1;
@@ -327,6 +331,7 @@ static int relax(urMembrane* mb, double* st, double fixedp, double pscale, int n
     pthread_mutex_lock(&R.bar.mu);
   }
   R.nthr = R.nact = R.cut = R.bar.n = R.bar.next = n; /* the team as it started */
+  R.stopped = mb->stop && *mb->stop;
   R.ready = 1;
   if (nthr > 1) {
     pthread_cond_broadcast(&R.bar.cv);
@@ -417,6 +422,10 @@ int urm_mem_inflate_team(urMembrane* mb, int nthr, int alt, char* err, size_t n)
   mb->rbound = r;
   free(st);
   free(work);
+  if (mb->stop && *mb->stop) {
+    snprintf(err, n, "stopped on request (interrupted) while inflating");
+    return -1;
+  }
   if (!(res2 < 10 * TOL) || !(info.volume > 0) || !isfinite(info.pressure)) {
     snprintf(err, n,
              "the bag did not settle when inflated (residual %.3g after %d steps); a finer "
