@@ -31,7 +31,8 @@ struct urMemCache {
   long maxnodes, nodes;
   unsigned long tick;
   long hits, misses;
-  Entry* e; /* cap */
+  int threads; /* the inflations' */
+  Entry* e;    /* cap */
 };
 
 //---------------------------------- the key -------------------------------------------------------
@@ -127,11 +128,20 @@ urMemCache* urm_memcache_new_sized(int cap, long maxnodes) {
   }
   c->cap = cap;
   c->maxnodes = maxnodes;
+  c->threads = 1;
   return c;
 }
 
 urMemCache* ur_memcache_new(void) {
   return urm_memcache_new_sized(CAP, MAXNODES);
+}
+
+void ur_memcache_set_threads(urMemCache* c, int threads) {
+  if (c) {
+    pthread_mutex_lock(&c->lock);
+    c->threads = threads > 1 ? threads : 1;
+    pthread_mutex_unlock(&c->lock);
+  }
 }
 
 void ur_memcache_free(urMemCache* c) {
@@ -216,7 +226,13 @@ static int lookup(urMemCache* c, const urMemSpec* s, urMembrane** hit) {
 
 /* inflate the built bag mb and keep a copy when there is a cache: mb, or NULL (freed) */
 static urMembrane* inflate_keep(urMemCache* c, urMembrane* mb, char* err, size_t n) {
-  int bad = ur_mem_inflate(mb, err, n);
+  int threads = 1;
+  if (c) {
+    pthread_mutex_lock(&c->lock);
+    threads = c->threads;
+    pthread_mutex_unlock(&c->lock);
+  }
+  int bad = ur_mem_inflate_threads(mb, threads, err, n);
   mb->stop = NULL;
   if (bad) {
     ur_mem_free(mb);
