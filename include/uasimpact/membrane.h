@@ -38,6 +38,11 @@ typedef enum {
                       in the declared shape, the fabric's rest lengths are the flat pattern's) */
 } urMemPattern;
 
+typedef enum {
+  urMEM_RELAX = 0, /* kinetic damping (velocities zeroed at each peak of the kinetic energy) */
+  urMEM_FIRE       /* FIRE (Bitzek et al. 2006): velocity mixing, adaptive step */
+} urMemInflate;
+
 /* a declared bag (model language 'airbag ... mesh=N'): SI units */
 typedef struct {
   urMemPlan plan;
@@ -51,6 +56,7 @@ typedef struct {
   double mount_r;  /* top-panel nodes within this fraction of the plan are fixed to the
                          carrier (the rigid mount patch, a fixed joint), 0..1 */
   int mesh;        /* rings per panel: 2 + 6 mesh^2 nodes, 12 mesh^2 triangles */
+  int inflate;     /* the inflation's relaxation: urMEM_RELAX (default) or urMEM_FIRE */
   /* fabric (membrane stiffnesses: modulus times thickness) */
   double e1t, e2t; /* warp, weft tensile stiffness, N/m */
   double nu12;     /* Poisson ratio (warp strain -> weft) */

@@ -3,9 +3,11 @@
  * shape's own or the flat pattern's), first at a constant shaping pressure (the declared gauge
  * pressure, at least 1 % of the ambient so that a bag filled to the ambient pressure still takes
  * its shape), then closed with the declared absolute pressure in the volume reached, relaxed by
- * kinetic damping (velocities zeroed at every peak of the kinetic energy) until the free nodes'
- * forces are below 1e-3 of the pressure forces on them (root mean squares; accepted below 1e-2). The result (positions in the
- * carrier's body frame, gas state) is where every impact starts (the paper's step 2). */
+ * kinetic damping (velocities zeroed at every peak of the kinetic energy; or, with the bag's
+ * inflate=1, by FIRE) until the free nodes' forces are below 1e-3 of the pressure forces on them
+ * (root mean squares; accepted below 1e-2). The result (positions in the carrier's body frame,
+ * gas state) is where every impact starts (the paper's step 2). The relaxation runs on a team of
+ * threads when asked (ur_mem_inflate_threads), to the same bits as one thread. */
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -20,8 +22,17 @@
 #define TOL     1e-3
 #define MINTRI  1000  /* triangles per thread at least (ur_mem_inflate_threads) */
 #define SPIN    20000 /* a barrier's checks before it sleeps */
-#define WINDOW  64    /* steps of a measure of the team or thread 0 alone (pace) */
-#define PROBE   0.5   /* seconds between tries of the slower of the two */
+/* FIRE (a bag's inflate=1): the published parameters (Bitzek et al. 2006), the step from and at
+   most the stable one (2 and 4 times it take more steps: the stops pile up) */
+#define FNMIN   5
+#define FINC    1.1
+#define FDEC    0.5
+#define FALPHA0 0.1
+#define FALPHA  0.99
+#define FDT0    1.0
+#define FDTMAX  1.0
+#define WINDOW  64  /* steps of a measure of the team or thread 0 alone (pace) */
+#define PROBE   0.5 /* seconds between tries of the slower of the two */
 #define VISC                                                                                       \
   0.98 /* velocity kept per step besides the kinetic damping: slack, wrinkled
                          patches would otherwise flap long after the bag has its shape */
@@ -71,6 +82,12 @@ static void barrier_wait(Barrier* b) {
    waiting parked, without changing a bit: thread 0 measures its steps' time and keeps the team
    only while it is faster than thread 0 alone (a shared machine: a barrier then waits for a
    thread the scheduler has not run), trying the other every PROBE seconds (pace) */
+/* FIRE's state (Bitzek et al., PRL 97, 170201, 2006): step, mixing, downhill steps in a row */
+typedef struct {
+  double dt, dtmax, alpha;
+  int npos;
+} Fire;
+
 typedef struct {
   urMembrane* mb;
   double* st;
@@ -85,9 +102,11 @@ typedef struct {
   int stopped;           /* the stop flag (urMembrane.stop) as thread 0 read it after a step */
   int parked;            /* workers parked (under bar.mu) */
   int it;                /* the step a parked worker resumes at, and its kinetic energy peak */
-  double ke_prev;
-  double *vt, *rr, *kk, *vn; /* per triangle volume terms; per node f.f, kinetic energy, velocity */
-  int steps;                 /* what the phase returns */
+  double ke_prev;        /* (or FIRE's state) */
+  Fire fire;
+  double *vt, *rr, *kk, *pw, *vn; /* per triangle volume terms; per node f.f, kinetic energy
+                                     (FIRE: v.v), FIRE's f.v, velocity */
+  int steps;                      /* what the phase returns */
   double res;
   Barrier bar;
 } Relax;
@@ -153,6 +172,8 @@ static void relax_run(Relax* R, int tid) {
   double dt = mb->dt_stable, ke_prev = 0, r = INFINITY, fixedp = R->fixedp;
   const urMemSpec* s = &mb->spec;
   Pace P = {{0, 0}, now(), now() + PROBE, 0, nact > 1};
+  int fire = mb->spec.inflate == urMEM_FIRE;
+  Fire F = R->fire;
 
   // the pressure forces' reference (root mean square over the free nodes' areas)
   double q2 = 0;
@@ -180,11 +201,16 @@ static void relax_run(Relax* R, int tid) {
     barrier_wait(&R->bar);
     urm_node_forces(mb, st, is[0], is[1], f);
 
-    // this thread's nodes: residual terms, symplectic Euler's velocities (taken below unless
-    // converged) and their kinetic energy
+    // this thread's nodes: residual terms; symplectic Euler's velocities (taken below unless
+    // converged) and their kinetic energy, or FIRE's power f . v and v . v
     for (int i = is[0]; i < is[1]; i++) {
       double im = mb->invm[i], *fi = f + 3 * i, *vi = R->vn + 3 * i;
       R->rr[i] = im > 0 ? urm_dot(fi, fi) : 0;
+      if (fire) {
+        R->kk[i] = im > 0 ? urm_dot(v + 3 * i, v + 3 * i) : 0;
+        R->pw[i] = im > 0 ? urm_dot(fi, v + 3 * i) : 0;
+        continue;
+      }
       for (int k = 0; k < 3; k++) {
         vi[k] = VISC * v[3 * i + k] + dt * im * fi[k];
       }
@@ -194,7 +220,7 @@ static void relax_run(Relax* R, int tid) {
 
     // residual: the free nodes' forces against the pressure forces on their areas (root mean
     // squares: wrinkled, slack patches flap long after the bag has its shape and volume)
-    double r2 = 0, ke = 0;
+    double r2 = 0, ke = 0, pw = 0;
     for (int i = 0; i < nn; i++) {
       r2 += R->rr[i];
       ke += R->kk[i];
@@ -204,12 +230,41 @@ static void relax_run(Relax* R, int tid) {
       break;
     }
 
-    // kinetic damping at the peaks of the kinetic energy
-    int peak = ke < ke_prev;
-    ke_prev = peak ? 0 : ke;
-    for (int i = 3 * is[0]; i < 3 * is[1]; i++) {
-      v[i] = peak ? 0 : R->vn[i];
-      x[i] += dt * v[i];
+    if (fire) {
+      // FIRE: downhill (power f . v > 0) the velocity turned towards the force, the step grown
+      // after FNMIN such steps; uphill, stopped, the step halved
+      for (int i = 0; i < nn; i++) {
+        pw += R->pw[i];
+      }
+      double c1 = 0, c2 = 0;
+      if (pw > 0) {
+        c1 = 1 - F.alpha;
+        c2 = F.alpha * sqrt(ke / r2);
+        if (++F.npos > FNMIN) {
+          F.dt = fmin(F.dt * FINC, F.dtmax);
+          F.alpha *= FALPHA;
+        }
+      } else {
+        F.dt *= FDEC;
+        F.alpha = FALPHA0;
+        F.npos = 0;
+      }
+      for (int i = is[0]; i < is[1]; i++) {
+        double im = mb->invm[i];
+        for (int k = 0; k < 3; k++) {
+          double* vk = v + 3 * i + k;
+          *vk = im > 0 ? c1 * *vk + c2 * f[3 * i + k] + F.dt * im * f[3 * i + k] : 0;
+          x[3 * i + k] += F.dt * *vk;
+        }
+      }
+    } else {
+      // kinetic damping at the peaks of the kinetic energy
+      int peak = ke < ke_prev;
+      ke_prev = peak ? 0 : ke;
+      for (int i = 3 * is[0]; i < 3 * is[1]; i++) {
+        v[i] = peak ? 0 : R->vn[i];
+        x[i] += dt * v[i];
+      }
     }
     it++;
 
@@ -232,6 +287,7 @@ static void relax_run(Relax* R, int tid) {
         }
         R->it = it;
         R->ke_prev = ke_prev;
+        R->fire = F;
         R->bar.next = R->bar.n = next; /* no one is in the barrier: thread 0 was alone */
         R->nact = R->cut = next;
         pthread_cond_broadcast(&R->bar.cv);
@@ -260,6 +316,7 @@ static void relax_run(Relax* R, int tid) {
         next = R->nact;
         it = R->it;
         ke_prev = R->ke_prev;
+        F = R->fire;
         pthread_mutex_unlock(&R->bar.mu);
         if (over) {
           return;
@@ -299,7 +356,7 @@ static void* relax_worker(void* arg) {
 
 
 /* one relaxation phase over nthr threads (the calling one and nthr - 1 started here; as many as
-   start; alt as Relax's). work: nt + 5 nn doubles. Returns the steps taken, the final residual
+   start; alt as Relax's). work: nt + 6 nn doubles. Returns the steps taken, the final residual
    in *res */
 static int relax(urMembrane* mb, double* st, double fixedp, double pscale, int nthr, int alt,
                  double* work, double* res) {
@@ -308,7 +365,9 @@ static int relax(urMembrane* mb, double* st, double fixedp, double pscale, int n
   R.vt = work;
   R.rr = R.vt + mb->nt;
   R.kk = R.rr + mb->nn;
-  R.vn = R.kk + mb->nn;
+  R.pw = R.kk + mb->nn;
+  R.vn = R.pw + mb->nn;
+  R.fire = (Fire){FDT0 * mb->dt_stable, FDTMAX * mb->dt_stable, FALPHA0, 0};
   atomic_init(&R.bar.count, 0);
   atomic_init(&R.bar.gen, 0);
   if (pthread_mutex_init(&R.bar.mu, NULL)) {
@@ -369,7 +428,7 @@ int urm_mem_inflate_team(urMembrane* mb, int nthr, int alt, char* err, size_t n)
   nthr = nthr < urMEM_MAXTHR ? nthr : urMEM_MAXTHR;
   nthr = nthr > 1 ? nthr : 1;
   double* st = calloc(ur_mem_state_size(mb), sizeof(double));
-  double* work = malloc(((size_t)mb->nt + 5 * (size_t)nn) * sizeof(double));
+  double* work = malloc(((size_t)mb->nt + 6 * (size_t)nn) * sizeof(double));
   if (!st || !work) {
     free(st);
     free(work);

@@ -22,6 +22,12 @@
 #define GOLD_AMBIENT 0x8a49562617d21637ULL
 #define GOLD_11ATM   0xd56f08f4ad7c1305ULL
 
+/* FIRE against kinetic damping at mesh 6 (test_fire): bounds, about twice the largest measured */
+#define FIRE_DMAX 6e-4
+#define FIRE_DV   1e-4
+#define FIRE_DP   0.02
+#define FIRE_DS   0.03
+
 /* a bag of the default fabric at mesh n and absolute pressure p0 */
 static urMemSpec bag(int n, double p0) {
   urMemSpec s;
@@ -117,11 +123,57 @@ static void test_threads_capped(void** state) {
   ur_memcache_free(c);
 }
 
+/* FIRE (inflate=1): converged by the same test in a fraction of the steps, to nearly the same
+   bag (the largest node distance and the volume, pressure and strain differences measured at
+   mesh 6 and given a margin); the same bits on a team; inflate beyond 0, 1 refused */
+static void test_fire(void** state) {
+  for (int k = 0; k < 2; k++) {
+    urMemSpec s = bag(6, k ? 1.1 * 101325 : 101325);
+    char err[200];
+    urMembrane* a = ur_mem_build(&s, err, sizeof err);
+    assert_non_null(a);
+    assert_int_equal(ur_mem_inflate(a, err, sizeof err), 0);
+    s.inflate = urMEM_FIRE;
+    urMembrane* b = ur_mem_build(&s, err, sizeof err);
+    assert_non_null(b);
+    assert_int_equal(ur_mem_inflate(b, err, sizeof err), 0);
+    double dmax = 0;
+    for (int i = 0; i < a->nn; i++) {
+      double d[3];
+      urm_sub(d, a->x0 + 3 * i, b->x0 + 3 * i);
+      dmax = fmax(dmax, sqrt(urm_dot(d, d)));
+    }
+    double dv = fabs(b->vref / a->vref - 1), dp = fabs(b->pref - a->pref) / (a->pref - s.patm);
+    double ds = fabs(b->strain0 / a->strain0 - 1);
+    print_message(
+        "p0 %.0f: relax %d steps, FIRE %d (residual %.3g); node distance %.3g m, "
+        "volume %.3g, gauge pressure %.3g, strain %.3g\n",
+        s.p0, a->inflate_steps, b->inflate_steps, b->inflate_res, dmax, dv, dp, ds);
+    assert_true(b->inflate_res < 1e-3);
+    assert_true(b->inflate_steps < a->inflate_steps / 3);
+    assert_true(dmax < FIRE_DMAX);
+    assert_true(dv < FIRE_DV);
+    assert_true(dp < FIRE_DP);
+    assert_true(ds < FIRE_DS);
+    uint64_t h = state_sum(b);
+    assert_true(team(&s, 2, 1, NULL) == h);
+    assert_true(team(&s, 3, -1, NULL) == h);
+    ur_mem_free(a);
+    ur_mem_free(b);
+  }
+  urMemSpec s = bag(2, 101325);
+  char err[200];
+  s.inflate = 2;
+  assert_int_equal(ur_mem_spec_check(&s, err, sizeof err), -1);
+  assert_non_null(strstr(err, "inflate"));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_serial_golden),
       cmocka_unit_test(test_team_bitwise),
       cmocka_unit_test(test_threads_capped),
+      cmocka_unit_test(test_fire),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
