@@ -189,10 +189,11 @@ typedef struct {
   urMemSpec mspec;
   int nsupport;
   int support[urMAXBAGTGT];
-  urMembrane*
-      mem; /* built and inflated by ur_model_compile (or copied from opt.memcache), constant after */
-  int madr; /* first double of its run state in urData.mem */
-  int nsub; /* membrane sub-steps per step (its stable step is smaller) */
+  urMembrane* mem; /* built by ur_model_compile (mesh, not inflated), inflated by
+                      ur_model_inflate (or copied from opt.memcache), constant after */
+  int inflated;    /* membrane: 1 once mem is the inflated bag (ur_model_inflate) */
+  int madr;        /* first double of its run state in urData.mem */
+  int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
 } urAirbag;
 
 typedef struct {
@@ -260,10 +261,10 @@ typedef struct {
   double jump_margin;      /* free-flight jump stops this far from contact, m (1e-3) */
   const _Atomic int* stop; /* optional (not part of the model text): a step fails with
                                       urSTAT_STOPPED while *stop != 0 (an interrupt flag) */
-  urMemCache* memcache;    /* optional (not part of the model text): ur_model_compile takes
-                                      its membrane bags built and inflated from this cache
-                                      (membrane.h: ur_mem_build_inflated; the same bits), which
-                                      must outlive the compile; NULL: each built afresh */
+  urMemCache* memcache;    /* optional (not part of the model text): ur_model_inflate takes
+                                      its membrane bags inflated from this cache (membrane.h:
+                                      ur_mem_cache_inflate; the same bits), which must outlive
+                                      the model's inflation; NULL: each inflated afresh */
 } urOption;
 
 typedef struct {
@@ -286,6 +287,8 @@ typedef struct {
   int npreset;
   double* qpos0; /* nq: reference configuration */
   int nmemd;     /* doubles of the membrane bags' run states (urData.mem) */
+  int nraw;      /* membrane bags compiled but not yet inflated: runs refuse until
+                    ur_model_inflate */
   int nfrac;     /* joints that can break (urBody.fqadr; 0: a run's topology never changes) */
   // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
   // an active restraint, with a load curve (its extremes are tracked), whose reaction is needed
@@ -482,8 +485,24 @@ double ur_model_tree_mass(const urModel* m, int root);
    restraints and the root's own placement are kept. 0, or -1 (compiled, bad arguments). */
 int ur_model_scale_tree(urModel* m, int root, double fmass, double fsize);
 
-/* Compile: check, assign addresses, reference configuration. 0 on success, else -1 and m->err. */
+/* Compile: check, assign addresses, reference configuration. 0 on success, else -1 and m->err.
+   A membrane airbag's declaration is checked and its mesh built here, but not inflated (seconds
+   to a minute of CPU at fine meshes): that is ur_model_inflate's. */
 int ur_model_compile(urModel* m);
+
+/* Inflate the compiled model's membrane airbags that are not yet (ur_model_inflate_bag: bag i
+   alone), through opt.memcache when there is one; idempotent. The model's owner calls it before
+   the model is shared with threads (it writes the model: the contract that a compiled model is
+   constant holds from here on; no lock, so no once-guard in the runs: a run must never write
+   the model it shares). Every run refuses a model with a bag not inflated (urModel.nraw: a step
+   fails with urSTAT_BADARG, ur_impact_setup, _prepare and _balance fail), so none can run an
+   uninflated bag silently. Polls opt.stop: a stop request leaves the bag uninflated. 0, or -1
+   with one line in err ("airbag 'NAME': ..."). */
+int ur_model_inflate(urModel* m, char* err, size_t n);
+int ur_model_inflate_bag(urModel* m, int i, char* err, size_t n);
+
+/* the refusal of a run on a model with a bag not inflated, naming the first such bag */
+void ur_model_raw_text(const urModel* m, char* msg, size_t n);
 
 /* Look-up by name; -1 if absent. */
 int ur_name_body(const urModel* m, const char* name);

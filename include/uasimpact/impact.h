@@ -120,7 +120,8 @@ typedef struct {
    x0 of the person's restraints (every tree but the drone's) by fixed-point iteration so that
    the posture settled from the model's reference configuration is that configuration. Stiffness
    and damping stay as modelled; the drone waits parked far above, held at rest. residual:
-   largest joint deflection of the last settling, rad or m. 0, or -1 if the settling failed. */
+   largest joint deflection of the last settling, rad or m. 0, or -1 if the settling failed (or
+   a membrane airbag is not inflated: ur_model_inflate). */
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual);
 
 /* whether a compiled model can run impacts, before anything is settled: the roles it declares
@@ -135,7 +136,8 @@ int ur_impact_check(const urModel* m, char* err, size_t n);
 
 /* take the roles the model declares (urModel.roles: drone, head, head_acc, neck, head_pos,
    chest, abdomen), compute R_max, settle the stance (settle_time s of gravity)
-   and check it; 0 or -1 with s->err. The stance is a state of rest: the person as settled, every
+   and check it; 0 or -1 with s->err (also when a membrane airbag is not inflated: the model's
+   owner calls ur_model_inflate first, engine.h). The stance is a state of rest: the person as settled, every
    velocity zero, the drone parked far above in its reference posture with no restraint or contact
    history (while the person settles, the drone is held there at rest). */
 int ur_impact_setup(urImpactSetup* s, const urModel* m, double settle_time);

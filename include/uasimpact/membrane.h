@@ -110,9 +110,11 @@ typedef struct {
                         with a free node, m */
   double cbound[3];  /* centre and radius of a sphere holding the inflated bag, body frame */
   double rbound;
-  double strain0;     /* largest yarn strain (Green, warp or weft) of the inflated state */
-  int inflate_steps;  /* relaxation steps the inflation took */
-  double inflate_res; /* its final residual (largest free-node force / pressure force) */
+  double strain0;          /* largest yarn strain (Green, warp or weft) of the inflated state */
+  int inflate_steps;       /* relaxation steps the inflation took */
+  double inflate_res;      /* its final residual (largest free-node force / pressure force) */
+  const _Atomic int* stop; /* optional (not part of the bag): ur_mem_inflate gives up while
+                              *stop != 0 (an interrupt flag); the cache's copies have NULL */
 } urMembrane;
 
 /* per-run scalars at the end of the state array */
@@ -149,7 +151,8 @@ int ur_mem_spec_check(const urMemSpec* s, char* err, size_t n);
 urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n);
 
 /* inflate to the declared pressure and relax until stable (kinetic damping), closed gas; sets
-   x0, pref, vref, mref, strain0. 0, or -1 with err when it does not converge. */
+   x0, pref, vref, mref, strain0. 0, or -1 with err when it does not converge or mb->stop asks it
+   to stop ("stopped on request (interrupted)"). */
 int ur_mem_inflate(urMembrane* mb, char* err, size_t n);
 
 void ur_mem_free(urMembrane* mb);
@@ -178,6 +181,14 @@ void ur_memcache_stats(urMemCache* c, urMemCacheStats* st); /* c NULL: all zero 
    and a copy kept (a failure is not). c NULL: ur_mem_build and ur_mem_inflate alone. NULL with
    a message in err on bad input, no memory or an inflation that does not settle. */
 urMembrane* ur_mem_build_inflated(urMemCache* c, const urMemSpec* s, char* err, size_t n);
+
+/* the same for a bag already built (ur_mem_build; its stop polled by the inflation): mb itself
+   inflated (and a copy kept), or freed and a copy of the one kept for its spec returned; NULL
+   with err on failure (mb freed). For a model compiled before it is inflated (ur_model_inflate). */
+urMembrane* ur_mem_cache_inflate(urMemCache* c, urMembrane* mb, char* err, size_t n);
+
+/* 1 when the cache keeps a bag of spec s (no use counted, nothing built) */
+int ur_memcache_has(urMemCache* c, const urMemSpec* s);
 
 /* doubles in one run's state: x (3 nn), v (3 nn), forces (3 nn), the contact part of them
    (3 nn), the positions at first contact (3 nn) and at the peak pressure in contact (3 nn),

@@ -51,10 +51,11 @@ urModel* ur_model_parse(const urModelSource* src, int nsrc, const urOverride* ov
 urModel* ur_model_parse_stop(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
                              const _Atomic int* stop, char* err, int errlen);
 
-/* The same, compiling the membrane airbags through the inflated-bag cache c (membrane.h;
-   NULL: none): a bag whose whole spec was inflated before is copied from the cache, the same
-   to the bit. The cache is used during the call only (the returned model's opt.memcache is
-   NULL); one cache serves any number of parses, e.g. one per session. */
+/* The same, with the inflated-bag cache c (membrane.h; NULL: none) as the model's
+   opt.memcache: ur_model_inflate takes a bag whose whole spec was inflated before from the
+   cache, the same to the bit, so c must outlive the model's inflation (or the model); one cache
+   serves any number of parses, e.g. one per session. No parse inflates: ur_model_inflate does,
+   before the model runs (engine.h). */
 urModel* ur_model_parse_cache(const urModelSource* src, int nsrc, const urOverride* ov, int nov,
                               const _Atomic int* stop, urMemCache* c, char* err, int errlen);
 

@@ -431,6 +431,9 @@ void ura_models_free(uraCtx* c);
 void ura_trace_free(uraCtx* c);            /* the signals of the last trace (c->trace) */
 const urModel* ura_model(uraCtx* c);       /* compiled model, or NULL with c->err */
 const urImpactSetup* ura_setup(uraCtx* c); /* settled stance, or NULL with c->err */
+/* the live model's membrane bags inflated (compiling leaves them not inflated): what needs
+   the inflated state calls it (ura_setup for every run, 'show bag'); 0, or -1 with c->err */
+int ura_model_inflate(uraCtx* c);
 void ura_model_stale(uraCtx* c);
 int ura_model_param_find(uraCtx* c, const char* name); /* index in the model, or -1 */
 /* the values a model parameter accepts, for messages: "0.15 to 0.65 m: REASON" (its range,
@@ -445,7 +448,7 @@ int ura_model_param_set(uraCtx* c, const char* name, const char* value, const ch
 int ura_model_param_from(const urModel* m, const urParam* p, char* buf, size_t n);
 /* the values the compiled model derives for its airbags (not parameters: set none of them),
    one '#' line per bag: which bag model, and for a membrane its mesh, fabric mass, stable step
-   and sub-steps, inflated volume and pressure, strain (show, model params) */
+   and sub-steps, inflated volume and pressure, strain once inflated (show, model params) */
 void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t);
 /* one line per value the model language derived from materials and sections (hinges, contact
    laws, layers, shell springs and crush loads: formula and inputs), "# derived, ..." to f, or

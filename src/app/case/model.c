@@ -12,6 +12,9 @@
 #define SETTLE_SECONDS 1.0         /* settling of the stance, s (it is still within 0.1 mm) */
 #define BALANCE_ITERS  2           /* muscle-tone balancing of the upright posture */
 #define MAXMODELFILE   (16L << 20) /* largest model file, bytes */
+#define INFLATE_NOTE_NODES                                                                         \
+  380 /* a bag inflated for a run gets a note from this many nodes
+                                      (mesh 8: some seconds) */
 
 typedef struct {
   const char* name;
@@ -273,10 +276,34 @@ static void setup_note(uraCtx* c) {
   fprintf(c->msg, "%s\n", note);
 }
 
+/* the live model's membrane bags inflated (ur_model_inflate), each once, when something first
+   needs the inflated state: a note first for a bag that takes long and is not in the session's
+   cache; Ctrl-C stops it (the model stays compiled, uninflated, for the next try) */
+int ura_model_inflate(uraCtx* c) {
+  if (!ura_model(c)) return -1;
+  urModel* m = c->model;
+  for (int i = 0; m->nraw && i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    if (b->type != urBAG_MEMBRANE || b->inflated) continue;
+    if (!c->mute && b->mem->nn >= INFLATE_NOTE_NODES && !ur_memcache_has(c->memcache, &b->mspec)) {
+      fprintf(c->msg, "inflating %s (mesh %d, %d nodes) ...\n", b->name, b->mspec.mesh, b->mem->nn);
+      fflush(c->msg);
+    }
+    char err[300];
+    if (ur_model_inflate_bag(m, i, err, sizeof err)) {
+      if (ura_interrupted())
+        return ura_fail(c, "interrupted (Ctrl-C) while inflating %s; it inflates at the next run",
+                        b->name);
+      return ura_fail(c, "model: %s", err);
+    }
+  }
+  return 0;
+}
+
 const urImpactSetup* ura_setup(uraCtx* c) {
   if (c->have_setup) return &c->setup;
   if (ura_dry(c, "simulation")) return NULL;
-  if (!ura_model(c)) return NULL;
+  if (ura_model_inflate(c)) return NULL;
 
   /* balance and settle, or take both from a kept model with the same person (modelcache.c) */
   const urImpactSetup* donors[uraMODELCACHE];
@@ -617,8 +644,13 @@ static int model_params(uraCtx* c, const char* prefix) {
                     "the names 'model params' lists",
                     prefix);
   }
-  if (!strncmp("bag", prefix, strlen(prefix) < 3 ? strlen(prefix) : 3))
+  if (!strncmp("bag", prefix, strlen(prefix) < 3 ? strlen(prefix) : 3)) {
+    if (ura_model_inflate(c)) { /* 'model params bag' asks for the inflated state */
+      if (t) ura_table_free(t);
+      return -1;
+    }
     ura_bag_derived(c, c->out, t);
+  }
   if (!*prefix) ura_model_derived(c, c->out, t);
   if (t) ura_table_print(c, t);
   return 0;
@@ -714,13 +746,18 @@ void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t) {
       const urMembrane* mb = b->mem;
       double mass = 0;
       for (int k = 0; k < mb->nn; k++) mass += mb->mass[k];
-      snprintf(line, sizeof line,
-               "derived, membrane %s: %d nodes, %d triangles, %d mount nodes, fabric %.3g kg; "
-               "stable step %.3g us: %d sub-step%s per %.3g us step; inflated %.4g L at %.6g Pa "
-               "(gauge %.4g Pa), largest yarn strain %.3g %%",
-               b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
-               b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt, 1e3 * mb->vref, mb->pref,
-               mb->pref - mb->spec.patm, 100 * mb->strain0);
+      int k = snprintf(line, sizeof line,
+                       "derived, membrane %s: %d nodes, %d triangles, %d mount nodes, fabric "
+                       "%.3g kg; stable step %.3g us: %d sub-step%s per %.3g us step; ",
+                       b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
+                       b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt);
+      if (b->inflated)
+        snprintf(line + k, sizeof line - k,
+                 "inflated %.4g L at %.6g Pa (gauge %.4g Pa), largest yarn strain %.3g %%",
+                 1e3 * mb->vref, mb->pref, mb->pref - mb->spec.patm, 100 * mb->strain0);
+      else
+        snprintf(line + k, sizeof line - k,
+                 "not inflated yet (when a run first needs it; 'show bag' inflates it)");
     }
     if (t)
       ura_table_note(t, "%s", line);

@@ -307,13 +307,19 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
       }
       snprintf(val, sizeof val, "%.6g", v[!strcmp(p->name, "angle")]);
     } else {
-      /* grid extents: the lattice the next grid would use (sizing needs the settled stance) */
+      /* grid extents: the lattice the next grid would use (sizing needs the settled stance
+         and the inflated bags: a listing leaves a membrane bag not yet inflated as it is, which
+         'show along_min' alone inflates) */
+      const urModel* m = ext && !c->have_setup ? ura_model(c) : NULL;
+      if (v[3] == 0 && m && m->nraw) v[3] = -2;
       if (v[3] == 0) v[3] = ura_grid_extents(c, &v[0], &v[1], &v[2]) ? -1 : 1;
       if (v[3] < 0) {
         if (!ext) return -1;
         /* the whole listing still prints (e.g. in dry mode): the value is left to the grid */
         c->err[0] = 0;
-        show_line(c, p->name, "auto", p->unit, "  (derived at the next grid)");
+        show_line(c, p->name, "auto", p->unit,
+                  v[3] < -1 ? "  (derived at the next grid, after the airbag's inflation)"
+                            : "  (derived at the next grid)");
         return 0;
       }
       double x = !strcmp(p->name, "along_min") ? v[0] : !strcmp(p->name, "along_max") ? v[1] : v[2];
@@ -385,7 +391,10 @@ static int show_prefix(uraCtx* c, const char* prefix) {
   for (int i = 0; m && i < m->nparam; i++) {
     if (!strncmp(m->param[i].name, prefix, n)) show_model_param(c, &m->param[i]), found++;
   }
-  if (found && !strncmp("bag", prefix, n < 3 ? n : 3)) ura_bag_derived(c, c->out, show_tab);
+  if (found && !strncmp("bag", prefix, n < 3 ? n : 3)) {
+    if (ura_model_inflate(c)) return -1; /* 'show bag' asks for the inflated state */
+    ura_bag_derived(c, c->out, show_tab);
+  }
   return found;
 }
 

@@ -34,7 +34,7 @@ static void bag_uniform(const urModel* m, urData* d, int ib) {
       bd->depth[t] = -gap;
       continue;
     }
-    double fb = ur_depth_bound(m, d, bag->geom, g, bd->u[t]);
+    double fb = ur_depth_cull(m, d, bag->geom, g, bd->u[t]);
     if (fb < 0) {
       bd->depth[t] = fb;
       continue;

@@ -84,8 +84,11 @@ static double halfwidth2(const urModel* m, urData* d, int g, const double u[3]) 
 // start u (if set); a negative bound proves separation without the narrow phase. With a
 // superellipsoid (whose half-width costs calls of pow) f at the two directions is bounded from
 // below by the 2-norms first: the direction whose bound lies clearly above the other's value
-// cannot be the smaller and is not evaluated (the same minimum, bit for bit)
-double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]) {
+// cannot be the smaller and is not evaluated (the same minimum, bit for bit). cull: only a
+// negative bound is wanted (ur_depth_cull), so neither is a direction whose 2-norm bound lies
+// clearly above 0: its f is then positive, and the minimum, if negative, is the other's
+static double depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3],
+                          int cull) {
   const double* ca = d->gxpos + 3 * ga;
   const double* cb = d->gxpos + 3 * gb;
   double dc[3] = {ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]}, c[3];
@@ -100,6 +103,15 @@ double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double 
     double lu = du + halfwidth2(m, d, ga, u) + halfwidth2(m, d, gb, u);
     // far above the rounding of either side (a few ulp of these magnitudes)
     double margin = 1e-9 * (L + fabs(du) + m->geom[ga].rbound + m->geom[gb].rbound);
+    if (cull && (lc - margin > 0 || lu - margin > 0)) {
+      if (lc - margin > 0 && lu - margin > 0) {
+        return lc - margin; /* f > 0: not culled */
+      }
+      if (lc - margin > 0) {
+        return du + ur_geom_halfwidth(m, d, ga, u) + ur_geom_halfwidth(m, d, gb, u);
+      }
+      return -L + ur_geom_halfwidth(m, d, ga, c) + ur_geom_halfwidth(m, d, gb, c);
+    }
     if (lu >= lc) {
       double fc = -L + ur_geom_halfwidth(m, d, ga, c) + ur_geom_halfwidth(m, d, gb, c);
       f = fc;
@@ -125,6 +137,14 @@ double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double 
     f = fmin(f, uru_dot3(dc, u) + ur_geom_halfwidth(m, d, ga, u) + ur_geom_halfwidth(m, d, gb, u));
   }
   return f;
+}
+
+double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]) {
+  return depth_bound(m, d, ga, gb, u, 0);
+}
+
+double ur_depth_cull(const urModel* m, urData* d, int ga, int gb, const double u[3]) {
+  return depth_bound(m, d, ga, gb, u, 1);
 }
 
 
@@ -251,7 +271,7 @@ static inline __attribute__((always_inline)) void narrow1(const urModel* m, urDa
 
   // oriented bound: separated at the centre line or at the last normal
   if (pr->geom2 >= 0) {
-    double fb = ur_depth_bound(m, d, pr->geom1, pr->geom2, pd->u);
+    double fb = ur_depth_cull(m, d, pr->geom1, pr->geom2, pd->u);
     if (fb < 0) {
       d->pdepth[i] = fb;
       return;

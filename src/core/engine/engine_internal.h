@@ -202,6 +202,8 @@ int ur_fracture_release(const urModel* m, urData* d);       /* release the broke
 
 int ur_tree_active(const urModel* m, const urData* d, int tree);
 double ur_depth_bound(const urModel* m, urData* d, int ga, int gb, const double u[3]);
+/* the same where only a negative bound is used: equal when negative, else some value >= 0 */
+double ur_depth_cull(const urModel* m, urData* d, int ga, int gb, const double u[3]);
 double ur_geom_halfwidth(const urModel* m, urData* d, int g, const double u[3]);
 
 /* the membrane airbags (engine_membrane.c, on the membrane room's fabric, gas and contact) */

@@ -1,8 +1,9 @@
-/* engine_membrane.c: the membrane airbags in the multibody engine. ur_model_compile builds and
- * inflates each membrane bag once (constant model data shared by threads; through the inflated-bag
- * cache of the options, opt.memcache, when there is one) and turns the bag's
- * ellipsoid into a bound of the inflated bag (the jump to first contact and the end-of-run
- * proofs use it). Each step: the loads stage places the mount patch on the carrier (fixed
+/* engine_membrane.c: the membrane airbags in the multibody engine. ur_model_compile checks each
+ * membrane bag's declaration and builds its mesh (the run state's size and sub-steps follow from
+ * it); ur_model_inflate inflates it once, when a run first needs it (constant model data shared
+ * by threads from then on; through the inflated-bag cache of the options, opt.memcache, when
+ * there is one) and turns the bag's ellipsoid into a bound of the inflated bag (the jump to
+ * first contact and the end-of-run proofs use it). Each step: the loads stage places the mount patch on the carrier (fixed
  * joint), computes fabric, gas and penalty contact forces of the nodes against the targets (the
  * person) and supports (the carrier's own bodies) and applies the reactions to their bodies and
  * the mount forces to the carrier; the accepted step then moves the nodes (symplectic Euler),
@@ -59,6 +60,7 @@ static void bound_geom(urModel* m, urAirbag* b) {
 
 int urm_model_compile(urModel* m) {
   m->nmemd = 0;
+  m->nraw = 0;
   for (int i = 0; i < m->nbag; i++) {
     urAirbag* b = m->bag + i;
     if (b->type != urBAG_MEMBRANE) {
@@ -66,7 +68,8 @@ int urm_model_compile(urModel* m) {
     }
     char err[100];
     if (!b->mem) {
-      b->mem = ur_mem_build_inflated(m->opt.memcache, &b->mspec, err, sizeof(err));
+      b->mem = ur_mem_build(&b->mspec, err, sizeof(err));
+      b->inflated = 0;
       if (!b->mem) {
         snprintf(m->err, sizeof(m->err), "airbag '%s': %s", b->name, err);
         return -1;
@@ -78,7 +81,68 @@ int urm_model_compile(urModel* m) {
     if (b->nsub < 1) {
       b->nsub = 1;
     }
-    bound_geom(m, b);
+    if (b->inflated) {
+      bound_geom(m, b);
+    } else {
+      m->nraw++;
+    }
+  }
+  return 0;
+}
+
+
+int ur_model_inflate_bag(urModel* m, int i, char* err, size_t n) {
+  if (!m || !m->compiled || i < 0 || i >= m->nbag) {
+    snprintf(err, n, "ur_model_inflate: no compiled model or no airbag %d", i);
+    return -1;
+  }
+  urAirbag* b = m->bag + i;
+  if (b->type != urBAG_MEMBRANE || b->inflated) {
+    return 0;
+  }
+  if (!b->mem && !(b->mem = ur_mem_build(&b->mspec, err, n))) {
+    return -1; /* a failed try that found no memory to build it again */
+  }
+  char e[100];
+  b->mem->stop = m->opt.stop;
+  urMembrane* mb = ur_mem_cache_inflate(m->opt.memcache, b->mem, e, sizeof(e));
+  b->mem = mb; /* the built bag is consumed: inflated, or replaced by the cache's copy */
+  if (!mb) {
+    /* built afresh, so that the model stays whole (compiled, runs refused) for another try */
+    b->mem = ur_mem_build(&b->mspec, err, n); /* NULL (no memory): the next try builds it */
+    snprintf(err, n, "airbag '%s': %s", b->name, b->mem ? e : "out of memory");
+    return -1;
+  }
+  b->inflated = 1;
+  m->nraw--;
+  bound_geom(m, b);
+  return 0;
+}
+
+
+void ur_model_raw_text(const urModel* m, char* msg, size_t n) {
+  for (int i = 0; i < m->nbag; i++) {
+    const urAirbag* b = m->bag + i;
+    if (b->type == urBAG_MEMBRANE && !b->inflated) {
+      snprintf(msg, n,
+               "airbag '%s' is not inflated: the model's owner calls ur_model_inflate before "
+               "it runs",
+               b->name);
+      return;
+    }
+  }
+  snprintf(msg, n, "every airbag is inflated");
+}
+
+
+int ur_model_inflate(urModel* m, char* err, size_t n) {
+  for (int i = 0; m && i < m->nbag; i++) {
+    if (ur_model_inflate_bag(m, i, err, n)) {
+      return -1;
+    }
+  }
+  if (n) {
+    err[0] = 0;
   }
   return 0;
 }

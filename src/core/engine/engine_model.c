@@ -361,6 +361,7 @@ int ur_model_add_airbag(urModel* m, const urAirbag* bag) {
   urAirbag* b = m->bag + m->nbag;
   *b = *bag;
   b->mem = NULL;
+  b->inflated = 0;
   if (setname(m, b->name, bag->name)) {
     return -1;
   }

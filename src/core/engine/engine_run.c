@@ -349,6 +349,10 @@ int ur_step_begin(const urModel* m, urData* d) {
   }
   if (m->opt.stop && *m->opt.stop) {
     ur_set_status(d, urSTAT_STOPPED, "stopped on request");
+  } else if (m->nraw) {
+    char msg[urMSGLEN];
+    ur_model_raw_text(m, msg, sizeof(msg));
+    ur_set_status(d, urSTAT_BADARG, msg);
   }
   return d->status;
 }

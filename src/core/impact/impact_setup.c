@@ -164,7 +164,7 @@ static int balance(urModel* m, int drone, double settle_time, int iters, double*
 
 int ur_impact_balance(urModel* m, double settle_time, int iters, double* residual) {
   int drone = m->roles.drone;
-  if (drone < 0 || m->body[drone].jtype != urJNT_FREE) return -1;
+  if (drone < 0 || m->body[drone].jtype != urJNT_FREE || m->nraw) return -1;
   return balance(m, drone, settle_time, iters, residual, NULL);
 }
 
@@ -573,6 +573,10 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
                  urStance* keep, double* top) {
   memset(s, 0, sizeof *s);
   s->m = m;
+  if (m->nraw) {
+    ur_model_raw_text(m, s->err, sizeof s->err);
+    return -1;
+  }
 
   /* the roles the model declares (role statements, uasimpact-model(5)) */
   const urRoles* ro = &m->roles;
@@ -687,6 +691,10 @@ int ur_impact_prepare(urImpactSetup* s, urModel* m, double settle_time, int iter
   memset(s, 0, sizeof *s);
   s->m = m;
   int drone = m->roles.drone;
+  if (m->nraw) {
+    ur_model_raw_text(m, s->err, sizeof s->err);
+    return -2;
+  }
   if (drone < 0 || m->body[drone].jtype != urJNT_FREE || m->body[drone].parent >= 0) {
     snprintf(s->err, sizeof s->err,
              "the model declares no drone: add 'role drone=BODY' (its "

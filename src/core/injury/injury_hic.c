@@ -43,6 +43,24 @@ static void sift_down(hicStart* h, int n, int k) {
   }
 }
 
+/* the first k > i whose window is long enough to beat best2 (!(am5 dt^2 < best2)), n if none:
+   dt = t_k - t_i and am5 dt dt rise with k (rounding is monotone), so the windows too short
+   form a prefix, found by bisection; the scan below would skip each of them (and break at none
+   before the first long one, its break test rising with k too), so it starts there instead */
+static int first_long(const double* t, int n, int i, double am5, double best2) {
+  int lo = i + 1, hi = n;
+  while (lo < hi) {
+    int mid = lo + (hi - lo) / 2;
+    double dt = t[mid] - t[i];
+    if (am5 * dt * dt < best2) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
 int ur_hic(const double* t, const double* a, int n, double window, double* work, urHic* out) {
   if (!t || !a || !out || n < 1 || !(window > 0)) {
     return -1;
@@ -125,7 +143,7 @@ int ur_hic(const double* t, const double* a, int n, double window, double* work,
     double am5 = am * am * am * am * am * (1 + 1e-9), vm5 = vm * vm * vm * vm * vm * (1 + 1e-9);
     st[0] = st[--ns];
     sift_down(st, ns, 0);
-    for (int k = i + 1; k < n && t[k] - t[i] <= wmax; k++) {
+    for (int k = first_long(t, n, i, am5, best2); k < n && t[k] - t[i] <= wmax; k++) {
       double dt = t[k] - t[i];
       if (vm5 < best2 * dt * dt * dt) {
         break;

@@ -1,7 +1,7 @@
-/* membrane_cache.c: the inflated-bag cache. Inflating a bag (ur_mem_inflate) takes most of a
- * model compile when the model has a membrane airbag, and a workbench recompiles its model at
- * every 'set' of a parameter (and a calibration at every evaluation), mostly with a bag whose
- * declaration did not change. The cache keeps built and inflated bags by their whole spec
+/* membrane_cache.c: the inflated-bag cache. Inflating a bag (ur_mem_inflate) takes most of the
+ * time a model with a membrane airbag needs before it runs (ur_model_inflate, after the compile),
+ * and a workbench recompiles its model at every 'set' of a parameter (and a calibration at every
+ * evaluation), mostly with a bag whose declaration did not change. The cache keeps built and inflated bags by their whole spec
  * (urMemSpec: everything ur_mem_build and ur_mem_inflate read), compared field by field, doubles
  * by their bits; a hit is a deep copy (ur_mem_clone) of the bag the spec gave before, so the
  * compiled model is the same to the bit. At most a number of bags and of nodes are kept, the
@@ -193,34 +193,36 @@ static void keep(urMemCache* c, urMembrane* mb) {
   c->nodes += mb->nn;
 }
 
-urMembrane* ur_mem_build_inflated(urMemCache* c, const urMemSpec* s, char* err, size_t n) {
-  if (c) {
-    urMembrane* hit = NULL;
-    int found = 0;
-    pthread_mutex_lock(&c->lock);
-    for (int i = 0; i < c->n && !found; i++) {
-      if (urm_mem_spec_same(&c->e[i].mb->spec, s)) {
-        found = 1;
-        c->e[i].used = ++c->tick;
-        hit = ur_mem_clone(c->e[i].mb);
+/* a copy of the bag kept for spec s into *hit (NULL: no memory), its use counted; 0 when none is
+   kept (a miss counted) */
+static int lookup(urMemCache* c, const urMemSpec* s, urMembrane** hit) {
+  int found = 0;
+  pthread_mutex_lock(&c->lock);
+  for (int i = 0; i < c->n && !found; i++) {
+    if (urm_mem_spec_same(&c->e[i].mb->spec, s)) {
+      found = 1;
+      c->e[i].used = ++c->tick;
+      *hit = ur_mem_clone(c->e[i].mb);
+      if (*hit) {
+        (*hit)->stop = NULL;
       }
-    }
-    c->hits += found;
-    c->misses += !found;
-    pthread_mutex_unlock(&c->lock);
-    if (found) {
-      if (!hit) {
-        snprintf(err, n, "out of memory");
-      }
-      return hit;
     }
   }
-  urMembrane* mb = ur_mem_build(s, err, n);
-  if (mb && ur_mem_inflate(mb, err, n)) {
+  c->hits += found;
+  c->misses += !found;
+  pthread_mutex_unlock(&c->lock);
+  return found;
+}
+
+/* inflate the built bag mb and keep a copy when there is a cache: mb, or NULL (freed) */
+static urMembrane* inflate_keep(urMemCache* c, urMembrane* mb, char* err, size_t n) {
+  int bad = ur_mem_inflate(mb, err, n);
+  mb->stop = NULL;
+  if (bad) {
     ur_mem_free(mb);
     return NULL;
   }
-  if (mb && c) {
+  if (c) {
     urMembrane* copy = ur_mem_clone(mb); /* no memory for it: not kept, no harm */
     if (copy) {
       pthread_mutex_lock(&c->lock);
@@ -229,4 +231,40 @@ urMembrane* ur_mem_build_inflated(urMemCache* c, const urMemSpec* s, char* err, 
     }
   }
   return mb;
+}
+
+urMembrane* ur_mem_build_inflated(urMemCache* c, const urMemSpec* s, char* err, size_t n) {
+  urMembrane* hit = NULL;
+  if (c && lookup(c, s, &hit)) {
+    if (!hit) {
+      snprintf(err, n, "out of memory");
+    }
+    return hit;
+  }
+  urMembrane* mb = ur_mem_build(s, err, n);
+  return mb ? inflate_keep(c, mb, err, n) : NULL;
+}
+
+urMembrane* ur_mem_cache_inflate(urMemCache* c, urMembrane* mb, char* err, size_t n) {
+  urMembrane* hit = NULL;
+  if (c && lookup(c, &mb->spec, &hit)) {
+    ur_mem_free(mb);
+    if (!hit) {
+      snprintf(err, n, "out of memory");
+    }
+    return hit;
+  }
+  return inflate_keep(c, mb, err, n);
+}
+
+int ur_memcache_has(urMemCache* c, const urMemSpec* s) {
+  int found = 0;
+  if (c) {
+    pthread_mutex_lock(&c->lock);
+    for (int i = 0; i < c->n && !found; i++) {
+      found = urm_mem_spec_same(&c->e[i].mb->spec, s);
+    }
+    pthread_mutex_unlock(&c->lock);
+  }
+  return found;
 }

@@ -28,6 +28,9 @@ static int relax(urMembrane* mb, double* st, double fixedp, double pscale, doubl
   const urMemSpec* s = &mb->spec;
   *res = INFINITY;
   for (it = 0; it < MAXSTEP; it++) {
+    if (mb->stop && *mb->stop) {
+      break; /* stopped on request: ur_mem_inflate says so */
+    }
     if (fixedp > 0) {
       double V = ur_mem_volume(mb, x);
       sc[urMEMS_MGAS] = mb->mref * (V / mb->vref) * pow(fixedp / mb->pref, 1 / s->gamma);
@@ -125,6 +128,10 @@ int ur_mem_inflate(urMembrane* mb, char* err, size_t n) {
   memcpy(mb->cbound, c, sizeof(c));
   mb->rbound = r;
   free(st);
+  if (mb->stop && *mb->stop) {
+    snprintf(err, n, "stopped on request (interrupted) while inflating");
+    return -1;
+  }
   if (!(res2 < 10 * TOL) || !(info.volume > 0) || !isfinite(info.pressure)) {
     snprintf(err, n,
              "the bag did not settle when inflated (residual %.3g after %d steps); a finer "

@@ -417,9 +417,8 @@ urModel* ur_model_parse_cache(const urModelSource* src, int nsrc, const urOverri
     rc = url_apply_design(&p);
   }
   if (!rc) {
-    p.m->opt.memcache = c;
+    p.m->opt.memcache = c; /* kept: ur_model_inflate takes the bags through it */
     int bad = ur_model_compile(p.m);
-    p.m->opt.memcache = NULL; /* the cache served this compile only */
     if (bad) {
       snprintf(p.msg, sizeof(p.msg), "%s: the model does not compile: %s",
                url_srcname(&p, nsrc - 1), p.m->err);

@@ -311,7 +311,9 @@ static void test_foam_backing_curvature(void** state) {
 /* ur_depth_bound skips, for a superellipsoid, the direction whose cheap lower bound lies above
    the other direction's value (issue 36): the bound must stay bit for bit the minimum of f over
    the centre line and the warm start, evaluated in full here, at random poses, warm starts
-   random and close to the centre line (both directions evaluated), each shape as a and as b */
+   random and close to the centre line (both directions evaluated), each shape as a and as b.
+   ur_depth_cull also skips the directions whose lower bound lies above 0: it must be negative
+   exactly when the minimum is, and then equal to it bit for bit */
 static void test_depth_bound_exact(void** state) {
   urModel* m = ur_model_new();
   double I[6] = {1, 1, 1, 0, 0, 0}, ra[3] = {0.3, 0.2, 0.06}, rb[3] = {0.08, 0.1, 0.12};
@@ -326,7 +328,7 @@ static void test_depth_bound_exact(void** state) {
   urData* d = ur_data_new(m);
 
   srand(11);
-  int n = 0;
+  int n = 0, ncull = 0;
   for (int t = 0; t < 2000; t++) {
     for (int k = 0; k < 2; k++) {
       double *q = d->qpos + 7 * k, s = 0;
@@ -358,10 +360,18 @@ static void test_depth_bound_exact(void** state) {
         fail_msg("pose %d (%s): depth bound %.17g, the minimum %.17g", t, sw ? "b, a" : "a, b", fb,
                  f);
       }
+      // the culling form: negative exactly when the minimum is, and then the same bits
+      double fk = ur_depth_cull(m, d, g1, g2, u);
+      if ((fk < 0) != (f < 0) || (f < 0 && memcmp(&f, &fk, sizeof f))) {
+        fail_msg("pose %d (%s): culling bound %.17g, the minimum %.17g", t, sw ? "b, a" : "a, b",
+                 fk, f);
+      }
+      ncull += f < 0;
       n++;
     }
   }
-  print_message("depth bound: %d cases bit for bit\n", n);
+  print_message("depth bound: %d cases bit for bit (%d culled)\n", n, ncull);
+  assert_true(ncull > n / 10 && ncull < n - n / 10); /* both kinds well represented */
   ur_data_free(d);
   ur_model_free(m);
 }

@@ -314,6 +314,8 @@ static urModel* balls_bag(double xb, double zb, double t_clear, double a_clear, 
   m->opt.t_clear = t_clear;
   m->opt.a_clear = a_clear;
   assert_int_equal(ur_model_compile(m), 0);
+  char err[160];
+  assert_int_equal(ur_model_inflate(m, err, sizeof err), 0); /* a membrane bag: before it runs */
   return m;
 }
 

@@ -3,8 +3,8 @@
  * (by one ulp, or a sign of zero) misses; the copies handed out are independent of each other and
  * of the cache's own; the least recently used bag goes first when the count or the node budget is
  * full, and a bag beyond the budget alone is not kept; a failed inflation is not kept; the
- * built-in model in case A with the membrane bag, compiled through the cache (a hit), runs an
- * impact to the same bits as the model compiled without it. */
+ * built-in model in case A with the membrane bag, compiled and inflated through the cache (a
+ * hit), runs an impact to the same bits as the model compiled without it. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -17,6 +17,7 @@
 
 #include "../../../src/app/ui/ui.h"
 #include "../../../src/core/membrane/membrane_internal.h"
+#include "../../test_parts.h"
 
 /* a small bag (mesh 2: 26 nodes, quick to inflate); p0 sets it apart from its siblings */
 static urMemSpec small(double p0) {
@@ -285,21 +286,12 @@ static void test_failure_not_kept(void** state) {
    cache and through it (the second parse a hit), an impact at the centre and one off it run on
    each; results and the bags' final run states the same to the bit */
 static urModel* parse(const uraCtx* c, urMemCache* mc) {
-  urModelSource src[uraMAXPARTS];
-  urOverride ov[uraMAXOV];
-  for (int i = 0; i < c->npart; i++) {
-    src[i].text = c->part[i].text;
-    src[i].file = c->part[i].name;
-    src[i].line = c->part[i].line;
-  }
-  for (int i = 0; i < c->st.nov; i++) {
-    ov[i].name = c->st.ov_name[i];
-    ov[i].value = c->st.ov_val[i];
-  }
+  urModel* m = parse_parts(c, mc);
   char err[300];
-  urModel* m = ur_model_parse_cache(src, c->npart, ov, c->st.nov, NULL, mc, err, sizeof err);
-  assert_non_null(m);
-  assert_null(m->opt.memcache); /* the cache served the compile only */
+  assert_ptr_equal(m->opt.memcache, mc); /* kept: the inflation takes the bags through it */
+  assert_true(m->nraw > 0);              /* a parse does not inflate */
+  assert_int_equal(ur_model_inflate(m, err, sizeof err), 0);
+  assert_int_equal(m->nraw, 0);
   return m;
 }
 

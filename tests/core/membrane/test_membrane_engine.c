@@ -59,6 +59,8 @@ static urModel* bagmodel_dt(int damped, double alpha, double dt) {
   m->opt.gravity[2] = 0;
   m->opt.dt = dt;
   assert_int_equal(ur_model_compile(m), 0);
+  char err[160];
+  assert_int_equal(ur_model_inflate(m, err, sizeof err), 0);
   return m;
 }
 
@@ -327,6 +329,8 @@ static urPlates plates(int mesh, double alpha) {
   m->opt.gravity[2] = 0;
   m->opt.dt = 2e-5;
   assert_int_equal(ur_model_compile(m), 0);
+  char err[160];
+  assert_int_equal(ur_model_inflate(m, err, sizeof err), 0);
   const urMembrane* mb = m->bag[0].mem;
   int nn = mb->nn;
 
