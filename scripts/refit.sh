@@ -38,7 +38,8 @@ if [ "$what" = bag ]; then
     printf "case A 7.5 sessions/paper/grids/table04_caseA_wind0.csv\n"
     printf "free bag_a %.9g %.9g %.9g   # m: 1 .. 1.375 frame_a (start 1.322)\n", a, 1.375 * a, 1.322 * a
     printf "free bag_b %.9g %.9g %.9g   # m: 1 .. 1.375 frame_b (start 1.304)\n", b, 1.375 * b, 1.304 * b
-    printf "free bag_depth 0.05 0.30 0.2956   # m: the membrane bag depth below its mount\n" }'
+    printf "free bag_depth 0.05 0.30 0.2956   # m: the membrane bag depth below its mount\n"
+    printf "corner 1e-4 1e-3 3   # amended: ends at a corner of the bounds (man page)\n" }'
 else
   # the final point: all three cases, nothing free but a no-op the tool needs (frame_a at its value)
   awk -v a="$fa" 'BEGIN {

@@ -105,6 +105,24 @@ awk -F, 'BEGIN { OFS = "," } $1 == 2 { $2 = sprintf("%.17g", $2 * (1 + 1e-12)) }
 check "a differing row stops the resume" cond '[ "$RC" -eq 1 ] && [ "$(grep -c "^calibrate: .*differs" "$TMP/err")" -eq 1 ] &&
   tail -1 "$TMP/err" | grep -q "cut3.csv:6: row 2 differs: its frame_a is "'
 
+# ---- the corner rule (corner REL GAIN N): a rule that never holds leaves the fit as it was; one
+# that holds almost everywhere (all but the middle 2 % of each range is a "corner"; any gain) ends it
+# at the N-th such evaluation in a row (the 5th here), the rows as the full fit's, no restart;
+# a bad one is named
+{ cat "$TMP/fit.spec"; echo "corner 0 0 3"; } >"$TMP/c0.spec"
+{ cat "$TMP/fit.spec"; echo "corner 0.49 1e9 2"; } >"$TMP/c1.spec"
+"$CAL" -s "$TMP/c0.spec" -o "$TMP/c0" step=0.2 >/dev/null 2>&1
+"$CAL" -s "$TMP/c1.spec" -o "$TMP/c1" step=0.2 >/dev/null 2>&1; RC=$?
+check "a corner rule that never holds changes nothing" cond 'body "$TMP/c0/log.csv" | cmp -s - "$TMP/b1"'
+n1=$(grep -c '^[0-9]' "$TMP/c1/log.csv")
+check "the corner rule ends the fit, without a restart" cond '[ "$RC" -eq 0 ] && [ "$n1" -eq 5 ] &&
+  [ "$(grep -c "^# simplex" "$TMP/c1/log.csv")" -eq 1 ] && has "$TMP/c1/result.txt" "^# ended by the corner rule: 2 evaluations"'
+check "its rows are the full fit's first" cond 'body "$TMP/c1/log.csv" >"$TMP/b3" && head -n "$(lines "$TMP/b3")" "$TMP/b1" | cmp -s - "$TMP/b3"'
+{ cat "$TMP/fit.spec"; echo "corner 0.6 1 2"; } >"$TMP/c2.spec"
+"$CAL" -s "$TMP/c2.spec" -o "$TMP/c2" step=0.2 >/dev/null 2>"$TMP/err"; RC=$?
+check "a bad corner rule is named with its line" cond '[ "$RC" -ne 0 ] && [ "$(lines "$TMP/err")" -eq 1 ] &&
+  grep -q "c2.spec:8: expected corner REL GAIN N" "$TMP/err"'
+
 # ---- shares: frame_b as 0.8 of frame_a = 0.25 gives the loss of frame_b = 0.2 declared plainly
 printf 'case C 40.6 %s/table06_caseC_wind0.csv\nfree frame_a 0.20 0.40 0.25\nfree frame_b 0.5 0.95 0.7 of=frame_a\nloss integral\n' "$G" >"$TMP/sh.spec"
 printf 'case C 40.6 %s/table06_caseC_wind0.csv\nfree frame_a 0.20 0.40 0.25\nfree frame_b 0.15 0.35 0.2\nloss integral\n' "$G" >"$TMP/pl.spec"

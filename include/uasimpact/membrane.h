@@ -38,6 +38,11 @@ typedef enum {
                       in the declared shape, the fabric's rest lengths are the flat pattern's) */
 } urMemPattern;
 
+typedef enum {
+  urMEM_RELAX = 0, /* kinetic damping (velocities zeroed at each peak of the kinetic energy) */
+  urMEM_FIRE       /* FIRE (Bitzek et al. 2006): velocity mixing, adaptive step */
+} urMemInflate;
+
 /* a declared bag (model language 'airbag ... mesh=N'): SI units */
 typedef struct {
   urMemPlan plan;
@@ -51,6 +56,7 @@ typedef struct {
   double mount_r;  /* top-panel nodes within this fraction of the plan are fixed to the
                          carrier (the rigid mount patch, a fixed joint), 0..1 */
   int mesh;        /* rings per panel: 2 + 6 mesh^2 nodes, 12 mesh^2 triangles */
+  int inflate;     /* the inflation's relaxation: urMEM_RELAX (default) or urMEM_FIRE */
   /* fabric (membrane stiffnesses: modulus times thickness) */
   double e1t, e2t; /* warp, weft tensile stiffness, N/m */
   double nu12;     /* Poisson ratio (warp strain -> weft) */
@@ -155,6 +161,10 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n);
    to stop ("stopped on request (interrupted)"). */
 int ur_mem_inflate(urMembrane* mb, char* err, size_t n);
 
+/* the same on up to threads threads (fewer for a small bag: one per 1000 triangles at most),
+   the same bits for any number (the calling thread and threads - 1 started and joined here) */
+int ur_mem_inflate_threads(urMembrane* mb, int threads, char* err, size_t n);
+
 void ur_mem_free(urMembrane* mb);
 
 /* a deep copy of a bag (every array its own), NULL when out of memory; freed by ur_mem_free */
@@ -173,12 +183,15 @@ typedef struct {
 } urMemCacheStats;
 
 urMemCache* ur_memcache_new(void); /* NULL when out of memory */
+/* the threads its inflations may use (ur_mem_inflate_threads; default 1): no result changes */
+void ur_memcache_set_threads(urMemCache* c, int threads);
 void ur_memcache_free(urMemCache* c);
 void ur_memcache_stats(urMemCache* c, urMemCacheStats* st); /* c NULL: all zero */
 
 /* a built and inflated bag of spec s, owned by the caller (ur_mem_free): a copy of the one kept
    for an equal spec (the same bits as ur_mem_build then ur_mem_inflate), else built and inflated
-   and a copy kept (a failure is not). c NULL: ur_mem_build and ur_mem_inflate alone. NULL with
+   and a copy kept (a failure is not), inflated on the cache's threads. c NULL: ur_mem_build
+   and ur_mem_inflate alone. NULL with
    a message in err on bad input, no memory or an inflation that does not settle. */
 urMembrane* ur_mem_build_inflated(urMemCache* c, const urMemSpec* s, char* err, size_t n);
 

@@ -19,6 +19,11 @@
  *     NAME=VALUE model parameters set on top (SI), e.g. to measure one change alone
  *     NAME/OTHER=SHARE  the start (with -e: the point) of a share the spec declares
  *
+ * `corner REL GAIN N` (optional) ends the fit once N evaluations in a row had every free parameter
+ * within REL of its range from one of its bounds and the best loss fell by less than GAIN over
+ * them: at such a corner the logistic coordinates run off to infinity, so the simplex's size
+ * test cannot end the fit and a restart cannot leave it.
+ *
  * Besides cases, free parameters and choices, a spec may hold `load FILE` (a part file loaded
  * over the built-in model before the fit, as -l; the spec's first) and `set NAME VALUE [UNIT]`
  * (a setting held at every evaluation, before the command line's NAME=VALUE). They are data:
@@ -57,12 +62,13 @@
 
 #include "../app/cmd/cmd.h"
 
-#define MAXFREE  24
-#define MAXCASE  4
-#define MAXGROUP 4
-#define MAXALT   4
-#define MAXSET   8
-#define LINELEN  512
+#define MAXFREE   24
+#define CORNERMAX 64 /* corner's N at most */
+#define MAXCASE   4
+#define MAXGROUP  4
+#define MAXALT    4
+#define MAXSET    8
+#define LINELEN   512
 
 typedef struct {
   char name[urNAMELEN];
@@ -102,11 +108,13 @@ typedef struct {
   trainCase k[MAXCASE];
   group g[MAXGROUP];
   double hic_share, threshold, simplex, tol;
-  int maxeval;  /* evaluations per run of the simplex */
-  int restarts; /* new simplices around the best point, while they gain */
-  double gain;  /* a restart that lowers the loss by less than this ends */
-  int integral; /* loss integral (1) or footprint (0, the default) */
-  int nload;    /* load FILE: parts loaded over the built-in model, in order */
+  int maxeval;                    /* evaluations per run of the simplex */
+  int restarts;                   /* new simplices around the best point, while they gain */
+  double gain;                    /* a restart that lowers the loss by less than this ends */
+  double corner_rel, corner_gain; /* corner REL GAIN N: the end at a corner of the bounds */
+  int corner_n;                   /* 0: no such end */
+  int integral;                   /* loss integral (1) or footprint (0, the default) */
+  int nload;                      /* load FILE: parts loaded over the built-in model, in order */
   char load[8][LINELEN];
   char set[LINELEN]; /* set NAME VALUE [UNIT]: held settings, '; '-joined */
 } spec;
@@ -127,6 +135,9 @@ typedef struct {
   char** rows;        /* its evaluation rows, in order */
   int* rowline;       /* their lines in that file */
   int nrows;
+  int corner_run;              /* evaluations in a row at a corner of the bounds */
+  double bests[CORNERMAX + 1]; /* the best loss after each of the last evaluations */
+  int corner_done;             /* the corner rule ended the fit */
 } fit;
 
 /* ---- the spec ---- */
@@ -264,6 +275,17 @@ static int spec_read(const char* path, spec* s) {
         s->gain = v;
       } else {
         s->maxeval = (int)v;
+      }
+    } else if (n == 4 && !strcmp(w[0], "corner")) {
+      double r, g, k;
+      if (num(w[1], &r) || num(w[2], &g) || num(w[3], &k) || !(r >= 0 && r < 0.5) || !(g >= 0) ||
+          k != (int)k || k < 1 || k > CORNERMAX) {
+        rc = spec_fail(path, ln, "expected corner REL GAIN N (0 <= REL < 0.5, GAIN >= 0, N 1-64)",
+                       w[1]);
+      } else {
+        s->corner_rel = r;
+        s->corner_gain = g;
+        s->corner_n = (int)k;
       }
     } else {
       rc = spec_fail(path, ln, "unknown or malformed statement", w[0]);
@@ -477,6 +499,26 @@ static int exact(char* out, size_t len, double v) {
   return n;
 }
 
+/* the corner rule (spec 'corner REL GAIN N'): the fit ends once N evaluations in a row had every
+   free parameter within REL of its range from a bound and the best loss fell by less than GAIN
+   over them. There the logistic coordinates run off to infinity, so the simplex's size test
+   cannot end it and a restart cannot leave the corner. */
+static void corner(fit* F, const double* x) {
+  const spec* s = F->s;
+  F->bests[F->neval % (CORNERMAX + 1)] = F->best;
+  if (s->corner_n <= 0) return;
+  int at = 1;
+  for (int j = 0; j < s->nfree; j++) {
+    double lo = s->f[j].lo, hi = s->f[j].hi, tol = s->corner_rel * (hi - lo);
+    at = at && (x[j] - lo <= tol || hi - x[j] <= tol);
+  }
+  F->corner_run = at ? F->corner_run + 1 : 0;
+  if (F->corner_run >= s->corner_n && F->neval > s->corner_n) {
+    double before = F->bests[(F->neval - s->corner_n) % (CORNERMAX + 1)];
+    if (before - F->best < s->corner_gain) F->corner_done = 1;
+  }
+}
+
 /* a logged row (written now or replayed) into the count and the best; its loss */
 static double account(fit* F, const char* row) {
   spec* s = F->s;
@@ -499,6 +541,7 @@ static double account(fit* F, const char* row) {
     memcpy(F->bestpart, parts, sizeof parts);
     memcpy(F->bestshare, shares, sizeof shares);
   }
+  corner(F, x);
   return loss;
 }
 
@@ -569,6 +612,9 @@ static double evaluate(fit* F, const double* x) {
 static double nm_f(const gsl_vector* z, void* ctx) {
   fit* F = ctx;
   double x[MAXFREE];
+  /* ended by the corner rule: the iteration's remaining points are not run (the best loss, a
+     finite value the simplex takes quietly; the loop stops after this iteration) */
+  if (F->corner_done) return F->best;
   for (int j = 0; j < F->s->nfree; j++) x[j] = to_param(F->s->f + j, gsl_vector_get(z, j));
   return evaluate(F, x);
 }
@@ -589,6 +635,11 @@ static void write_result(fit* F, const char* dir, double seconds) {
     FILE* out = outs[o];
     fprintf(out, "# calibrate: %d evaluations (%d failed) in %.0f s; best loss %.5f\n", F->neval,
             F->failed, seconds, F->best);
+    if (F->corner_done)
+      fprintf(out,
+              "# ended by the corner rule: %d evaluations in a row at a corner of the bounds, "
+              "the best loss falling by less than %g over the last %d\n",
+              F->corner_run, s->corner_gain, s->corner_n);
     for (int i = 0; i < s->ncase; i++) {
       const trainCase* k = s->k + i;
       if (s->integral) {
@@ -850,7 +901,8 @@ int main(int argc, char** argv) {
     gsl_multimin_fminimizer* nm =
         gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, s.nfree);
     double before = INFINITY;
-    for (int run = 0; run <= s.restarts && (run == 0 || before - F.best >= s.gain); run++) {
+    for (int run = 0;
+         run <= s.restarts && !F.corner_done && (run == 0 || before - F.best >= s.gain); run++) {
       before = F.best;
       for (int j = 0; j < s.nfree; j++) {
         gsl_vector_set(z, j, to_z(s.f + j, run ? F.bestx[j] : x[j]));
@@ -859,7 +911,7 @@ int main(int argc, char** argv) {
       fprintf(F.log, "# simplex %d from evaluation %d\n", run + 1, F.neval + 1);
       gsl_multimin_fminimizer_set(nm, &fn, z, step);
       for (int n0 = F.neval; F.neval - n0 < s.maxeval;) {
-        if (gsl_multimin_fminimizer_iterate(nm)) break;
+        if (gsl_multimin_fminimizer_iterate(nm) || F.corner_done) break;
         if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(nm), s.tol) == GSL_SUCCESS) break;
       }
     }

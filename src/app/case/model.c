@@ -72,6 +72,7 @@ static urModel* compile(uraCtx* c, const uraPart* part, int n, const uraState* s
   /* the session's inflated bags: a set that leaves a bag's spec as it was inflates nothing (no
      memory for the cache: each bag inflated afresh) */
   if (!c->memcache) c->memcache = ur_memcache_new();
+  ur_memcache_set_threads(c->memcache, (int)st->threads); /* the inflations': the same bits */
   urModel* m =
       ur_model_parse_cache(src, n, ov, st->nov, ura_interrupt_flag(), c->memcache, err, errlen);
   if (m) m->opt.stop = ura_interrupt_flag(); /* Ctrl-C stops its runs at the next step */

@@ -174,7 +174,7 @@ static int psweep_panel(uraCtx* c, FILE* f, const char* name) {
   snprintf(xl, sizeof xl, "%s%s%s%s", name, *first->unit ? " (" : "", first->unit,
            *first->unit ? ")" : "");
   fprintf(f, "set title ");
-  quoted(f, title);
+  ura_plot_quote(f, title); /* a newline (the changes' line) becomes "\n" */
   fprintf(f, " noenhanced\nset xlabel ");
   quoted(f, xl);
   fprintf(f,

@@ -31,7 +31,8 @@ struct urMemCache {
   long maxnodes, nodes;
   unsigned long tick;
   long hits, misses;
-  Entry* e; /* cap */
+  int threads; /* the inflations' */
+  Entry* e;    /* cap */
 };
 
 //---------------------------------- the key -------------------------------------------------------
@@ -55,13 +56,13 @@ static int dsame(const double* a, const double* b, int n) {
 #define SAME(f) dsame(&a->f, &b->f, 1)
 
 int urm_mem_spec_same(const urMemSpec* a, const urMemSpec* b) {
-  return a->plan == b->plan && a->pattern == b->pattern && a->mesh == b->mesh && SAME(a) &&
-         SAME(b) && SAME(depth) && SAME(top) && dsame(a->mount, b->mount, 3) &&
-         dsame(a->quat, b->quat, 4) && SAME(mount_r) && SAME(e1t) && SAME(e2t) && SAME(nu12) &&
-         SAME(g0t) && SAME(gtt) && SAME(lock) && SAME(re) && SAME(rhot) && SAME(damp) && SAME(p0) &&
-         SAME(patm) && SAME(gamma) && SAME(temp) && SAME(vent_area) && SAME(vent_cd) &&
-         SAME(leak) && SAME(kc_alpha) && SAME(kc_dt) && SAME(zeta_c) && SAME(mu) && SAME(v_eps) &&
-         SAME(dt_factor);
+  return a->plan == b->plan && a->pattern == b->pattern && a->mesh == b->mesh &&
+         a->inflate == b->inflate && SAME(a) && SAME(b) && SAME(depth) && SAME(top) &&
+         dsame(a->mount, b->mount, 3) && dsame(a->quat, b->quat, 4) && SAME(mount_r) && SAME(e1t) &&
+         SAME(e2t) && SAME(nu12) && SAME(g0t) && SAME(gtt) && SAME(lock) && SAME(re) &&
+         SAME(rhot) && SAME(damp) && SAME(p0) && SAME(patm) && SAME(gamma) && SAME(temp) &&
+         SAME(vent_area) && SAME(vent_cd) && SAME(leak) && SAME(kc_alpha) && SAME(kc_dt) &&
+         SAME(zeta_c) && SAME(mu) && SAME(v_eps) && SAME(dt_factor);
 }
 
 //---------------------------------- the copy ------------------------------------------------------
@@ -127,11 +128,20 @@ urMemCache* urm_memcache_new_sized(int cap, long maxnodes) {
   }
   c->cap = cap;
   c->maxnodes = maxnodes;
+  c->threads = 1;
   return c;
 }
 
 urMemCache* ur_memcache_new(void) {
   return urm_memcache_new_sized(CAP, MAXNODES);
+}
+
+void ur_memcache_set_threads(urMemCache* c, int threads) {
+  if (c) {
+    pthread_mutex_lock(&c->lock);
+    c->threads = threads > 1 ? threads : 1;
+    pthread_mutex_unlock(&c->lock);
+  }
 }
 
 void ur_memcache_free(urMemCache* c) {
@@ -216,7 +226,13 @@ static int lookup(urMemCache* c, const urMemSpec* s, urMembrane** hit) {
 
 /* inflate the built bag mb and keep a copy when there is a cache: mb, or NULL (freed) */
 static urMembrane* inflate_keep(urMemCache* c, urMembrane* mb, char* err, size_t n) {
-  int bad = ur_mem_inflate(mb, err, n);
+  int threads = 1;
+  if (c) {
+    pthread_mutex_lock(&c->lock);
+    threads = c->threads;
+    pthread_mutex_unlock(&c->lock);
+  }
+  int bad = ur_mem_inflate_threads(mb, threads, err, n);
   mb->stop = NULL;
   if (bad) {
     ur_mem_free(mb);

@@ -724,15 +724,19 @@ AI void rows3(const double* x, const int* n, urm4 o[3]) {
    each: the face contact's culling, engine_membrane.c). By chunks of blocks,
    three loops each (geometry, law, forces): short enough for the next blocks' work to overlap
    the law's square root and division. */
-static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const double* v, double* sc,
-                               double* uw, double* tb, double* vol, double* wsum, double* emax) {
+/* tri_pass_t is that pass over the blocks [bb, be) (bb a multiple of urmCHUNK, so each chunk is the
+   whole pass's); with vt (the inflation's relaxation, urm_tri_pass_part) each triangle's volume
+   term goes there instead of the sums, and no energy, strain or bounding spheres */
+AI void tri_pass_t(const urMembrane* mb, const double* x, const double* v, double* sc, double* uw,
+                   double* tb, int bb, int be, double* vt, double* vol, double* wsum,
+                   double* emax) {
   const urMemSpec* s = &mb->spec;
   int nt = mb->nt;
   lawk lk = law_constants(s);
   double V = 0, W = 0;
   urm4 em = bc4(0);
-  for (int b0 = 0; b0 < mb->ntb; b0 += urmCHUNK) {
-    int nb = mb->ntb - b0 < urmCHUNK ? mb->ntb - b0 : urmCHUNK;
+  for (int b0 = bb; b0 < be; b0 += urmCHUNK) {
+    int nb = be - b0 < urmCHUNK ? be - b0 : urmCHUNK;
     urm4 Fc[urmCHUNK][6], Ec[urmCHUNK][3]; /* deformation gradients; strains, then stresses */
 
     // deformation gradient and Green strain (tri_strain), the normal, the volume term
@@ -767,7 +771,7 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
       urm4 c0 = X[1][1] * X[2][2] - X[1][2] * X[2][1];
       urm4 c1 = X[1][2] * X[2][0] - X[1][0] * X[2][2];
       urm4 c2 = X[1][0] * X[2][1] - X[1][1] * X[2][0];
-      urm4 vt = X[0][0] * c0 + X[0][1] * c1 + X[0][2] * c2;
+      urm4 vv = X[0][0] * c0 + X[0][1] * c1 + X[0][2] * c2;
       // the bounding sphere: centroid, squared distance of the farthest node
       urm4 cg[3], r2 = bc4(0);
       for (int c = 0; c < 3; c++) {
@@ -779,8 +783,14 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
         r2 = sel4(rr > r2, rr, r2);
       }
       int nl = mb->nt - 4 * b < 4 ? mb->nt - 4 * b : 4; /* the padding's lanes left out */
+      if (vt) {
+        for (int l = 0; l < nl; l++) {
+          vt[4 * b + l] = vv[l];
+        }
+        continue;
+      }
       for (int l = 0; l < nl; l++) {
-        V += vt[l];
+        V += vv[l];
         int t = 4 * b + l;
         tb[t] = cg[0][l];
         tb[nt + t] = cg[1][l];
@@ -794,6 +804,12 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
     stress4_chunk(s, &lk, nb, (const urm4(*)[3])Ec, Sc, wc, uw + 8 * b0);
     for (int q = 0; q < nb; q++) {
       int b = b0 + q;
+      if (vt) {
+        for (int c = 0; c < 3; c++) {
+          Ec[q][c] = Sc[q][c];
+        }
+        continue;
+      }
       em = sel4(Ec[q][0] > em, Ec[q][0], em);
       em = sel4(Ec[q][1] > em, Ec[q][1], em);
       for (int c = 0; c < 3; c++) {
@@ -856,13 +872,24 @@ static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const doub
   *emax = m;
 }
 
+static urmCLONES void tri_pass(const urMembrane* mb, const double* x, const double* v, double* sc,
+                               double* uw, double* tb, double* vol, double* wsum, double* emax) {
+  tri_pass_t(mb, x, v, sc, uw, tb, 0, mb->ntb, NULL, vol, wsum, emax);
+}
 
-/* each triangle's nodal forces at the gas pressure's pg6 = (p - patm) / 6, in place of its
-   scratch: node 1's force fp + h0 + h1 (fp = pg6 d1 x d2) where the normal was, node 2's fp - h0
+static urmCLONES void tri_pass_part(const urMembrane* mb, const double* x, const double* v,
+                                    double* sc, double* uw, int bb, int be, double* vt) {
+  double d;
+  tri_pass_t(mb, x, v, sc, uw, NULL, bb, be, vt, &d, &d, &d);
+}
+
+
+/* each triangle's nodal forces at the gas pressure's pg6 = (p - patm) / 6 (blocks [b0, b1)), in
+   place of its scratch: node 1's force fp + h0 + h1 (fp = pg6 d1 x d2) where the normal was, node 2's fp - h0
    where h0 was, node 3's fp - h1 where h1 was (the offsets membrane_mesh.c's adj names) */
-static urmCLONES void tri_forces(const urMembrane* mb, double pg6, double* sc) {
+static urmCLONES void tri_forces(const urMembrane* mb, double pg6, double* sc, int b0, int b1) {
   urm4 pg = bc4(pg6);
-  for (int b = 0; b < mb->ntb; b++) {
+  for (int b = b0; b < b1; b++) {
     double* o = sc + 4 * urmSCR * b;
     for (int c = 0; c < 3; c++) {
       urm4 h0 = *(urm4u*)(o + 4 * (urmH0 + c)), h1 = *(urm4u*)(o + 4 * (urmH1 + c));
@@ -871,6 +898,24 @@ static urmCLONES void tri_forces(const urMembrane* mb, double pg6, double* sc) {
       *(urm4u*)(o + 4 * (urmH1 + c)) = fp - h1;
       *(urm4u*)(o + 4 * (urmNRM + c)) = fp + h0 + h1;
     }
+  }
+}
+
+
+/* the forces of nodes [i0, i1) into f: each one's triangle corners (tri_forces's) summed in
+   triangle order */
+static inline void node_forces(const urMembrane* mb, const double* scr, int i0, int i1, double* f) {
+  for (int i = i0; i < i1; i++) {
+    double a0 = 0, a1 = 0, a2 = 0;
+    for (int j = mb->adj0[i]; j < mb->adj0[i + 1]; j++) {
+      const double* o = scr + mb->adj[j];
+      a0 += o[0];
+      a1 += o[4];
+      a2 += o[8];
+    }
+    f[3 * i] = a0;
+    f[3 * i + 1] = a1;
+    f[3 * i + 2] = a2;
   }
 }
 
@@ -889,19 +934,8 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
   // gas: the pressure of the remaining mass; each triangle's nodal forces, summed on every node
   // in triangle order
   double p = ur_mem_pressure(mb, V, sc[urMEMS_MGAS]);
-  tri_forces(mb, (p - s->patm) / 6, scr);
-  for (int i = 0; i < nn; i++) {
-    double a0 = 0, a1 = 0, a2 = 0;
-    for (int j = mb->adj0[i]; j < mb->adj0[i + 1]; j++) {
-      const double* o = scr + mb->adj[j];
-      a0 += o[0];
-      a1 += o[4];
-      a2 += o[8];
-    }
-    f[3 * i] = a0;
-    f[3 * i + 1] = a1;
-    f[3 * i + 2] = a2;
-  }
+  tri_forces(mb, (p - s->patm) / 6, scr, 0, mb->ntb);
+  node_forces(mb, scr, 0, nn, f);
   sc[urMEMS_P] = p;
   sc[urMEMS_V] = V;
   sc[urMEMS_STRAIN] = emax;
@@ -912,4 +946,27 @@ void ur_mem_forces(const urMembrane* mb, double* st, double* f, urMemInfo* info)
     info->strain = emax;
     info->efabric = wsum;
   }
+}
+
+//---------------------------------- the relaxation's parts ----------------------------------------
+
+int urm_tri_chunk(void) {
+  return urmCHUNK;
+}
+
+
+void urm_tri_pass_part(const urMembrane* mb, double* st, int b0, int b1, double* vt) {
+  int nn = mb->nn;
+  double* scr = st + 18 * nn + urMEMS_N;
+  tri_pass_part(mb, st, st + 3 * nn, scr, scr + 36 * (size_t)mb->ntb, b0, b1, vt);
+}
+
+
+void urm_tri_forces_part(const urMembrane* mb, double* st, double pg6, int b0, int b1) {
+  tri_forces(mb, pg6, st + 18 * mb->nn + urMEMS_N, b0, b1);
+}
+
+
+void urm_node_forces(const urMembrane* mb, const double* st, int i0, int i1, double* f) {
+  node_forces(mb, st + 18 * mb->nn + urMEMS_N, i0, i1, f);
 }

@@ -87,6 +87,24 @@ double urm_contact_node(const urMemSpec* s, double dt, const urEllipsoid* e, con
                         const double vo[3], const double w[3], const double x[3], const double v[3],
                         double m, double f[3]);
 
+/* the parts of ur_mem_forces that the inflation's relaxation (membrane_inflate.c) spreads over
+   threads, each the same bits as the whole, on run state st: the triangle pass over the blocks
+   [b0, b1) (b0 a multiple of urm_tri_chunk(); its scratch and warm starts; each triangle's
+   volume term x1 . (x2 x x3) in vt, nt; no energy, strain or bounding spheres), then those
+   blocks' corner forces at pg6 = (p - patm) / 6, then the forces of the nodes [i0, i1) into f,
+   their corners summed in triangle order */
+int urm_tri_chunk(void);
+void urm_tri_pass_part(const urMembrane* mb, double* st, int b0, int b1, double* vt);
+void urm_tri_forces_part(const urMembrane* mb, double* st, double pg6, int b0, int b1);
+void urm_node_forces(const urMembrane* mb, const double* st, int i0, int i1, double* f);
+
+/* ur_mem_inflate over nthr threads (at most urMEM_MAXTHR and one per chunk of urm_tri_chunk()
+   blocks), however small the bag: the same bits for any nthr. alt 0: the team runs while it is
+   faster than one thread (ur_mem_inflate_threads); alt < 0: the team throughout; alt > 0: the team
+   and one thread alternate every alt steps (the tests of its hand-overs) */
+#define urMEM_MAXTHR 64
+int urm_mem_inflate_team(urMembrane* mb, int nthr, int alt, char* err, size_t n);
+
 /* 1 if two specs are equal field by field (doubles by their bits): the inflated-bag cache's key */
 int urm_mem_spec_same(const urMemSpec* a, const urMemSpec* b);
 

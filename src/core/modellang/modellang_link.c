@@ -189,6 +189,7 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
     return -1;
   }
   s->mesh = (int)url_num(b, "mesh", s->mesh);
+  s->inflate = (int)url_num(b, "inflate", s->inflate);
   s->depth = url_num(b, "depth", s->depth);
   s->top = url_num(b, "top", s->top);
   s->mount_r = url_num(b, "mount_r", s->mount_r);

@@ -143,10 +143,12 @@ check help_all wait_for p2 '^  exit +leave uasimpact$'
 TM capture-pane -p -J -S -300 -t p2 >"$TMP/screen"
 check help_all_fits cond '! awk "length > 80 { bad = 1 } END { exit !bad }" "$TMP/screen" &&
   grep -q "^ *nij_ce,vc_thorax" "$TMP/screen"'
+# (each waits for show's last line: the lines above it depend on the model, and a membrane bag's
+# derived lines push 'window' off a 24-line screen)
 start p3 80 24 PAGER=/nonexistent/pager
 check prompt3 wait_for p3 'uasimpact\[A\]> *$'
 line p3 "show"
-check pager_missing_prints wait_for p3 '^window +0\.06 s$'
+check pager_missing_prints wait_for p3 '^# input distributions of montecarlo \(dist\): none$'
 TM capture-pane -p -J -S -300 -t p3 >"$TMP/screen" # the note scrolled up: the scrollback
 check pager_missing_note cond 'grep -q "^pager: the pager ./nonexistent/pager. was not found; the output follows here" "$TMP/screen"'
 # issue 30: a pager that fails without reading (false exits 1) or dies loses nothing: a note
@@ -154,13 +156,13 @@ check pager_missing_note cond 'grep -q "^pager: the pager ./nonexistent/pager. w
 start p4 80 24 PAGER=false
 check prompt4 wait_for p4 'uasimpact\[A\]> *$'
 line p4 "show"
-check pager_false_prints wait_for p4 '^window +0\.06 s$'
+check pager_false_prints wait_for p4 '^# input distributions of montecarlo \(dist\): none$'
 TM capture-pane -p -J -S -300 -t p4 >"$TMP/screen"
 check pager_false_note cond 'grep -q "^pager: the pager .false. failed (exit status 1); the output follows here (PAGER=cat or .set pager off. prints without a pager)$" "$TMP/screen"'
 start p5 80 24 "PAGER='kill -9 \$\$'"
 check prompt5 wait_for p5 'uasimpact\[A\]> *$'
 line p5 "show"
-check pager_killed_prints wait_for p5 '^window +0\.06 s$'
+check pager_killed_prints wait_for p5 '^# input distributions of montecarlo \(dist\): none$'
 TM capture-pane -p -J -S -300 -t p5 >"$TMP/screen"
 check pager_killed_note cond 'grep -q "^pager: the pager .kill -9 \$\$. was ended by signal 9; the output follows here" "$TMP/screen"'
 finish

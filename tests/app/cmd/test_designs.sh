@@ -2,10 +2,13 @@
 # design compare prints both Q (each the Q of that design's own grid) and their ratio, and leaves
 # the difference grid P_b - P_a (its Q is q_b - q_a, a cell's p the difference of the cells);
 # the live state stays; a saved session replays the designs; refusals name what is accepted.
+# Case A with the analytic bag throughout (set bag_model analytic, a change 'design list' shows):
+# designs are the subject, whatever the bag; the membrane bag, A's default at the switch, costs
+# ~10 s CPU per coarse grid of A.
 . tests/lib.sh
 
 S='set format csv; set step 0.3'
-run -c "$S; case B; design save plain; case A; set bag_p0 1.2 atm; design save bag; case C; design compare plain bag; show case; grid cells; design list"
+run -c "$S; case B; design save plain; case A; set bag_model analytic; set bag_p0 1.2 atm; design save bag; case C; design compare plain bag; show case; grid cells; design list"
 check compare_runs cond '[ $RC -eq 0 ]'
 check compare_header has "$TMP/out" '^design_a,case_a,q_a,design_b,case_b,q_b,ratio$'
 row=$(grep '^plain,B,[0-9.]*,bag,' "$TMP/out")
@@ -13,16 +16,16 @@ qa=$(echo "$row" | cut -d, -f3); qb=$(echo "$row" | cut -d, -f6); ratio=$(echo "
 check ratio_is_qb_over_qa awk -v a="$qa" -v b="$qb" -v r="$ratio" 'BEGIN{exit !(a > 0 && (b/a - r)^2 < 1e-8)}'
 check live_case_kept has "$TMP/out" '^case  *C$'
 check diff_has_negative_p awk -F, 'NF==8 && $1 ~ /^[-0-9]/ && $8 < 0 {n++} END{exit !(n > 0)}' "$TMP/out"
-check list_changes has "$TMP/out" '^bag,A,0,0,bag_p0=121590$'
+check list_changes has "$TMP/out" '^bag,A,0,0,bag_p0=121590 bag_membrane=0$'
 
 # each Q is the design's own grid; the difference cell by cell
 run -c "$S; case B; grid; grid cells"
 qB=$(awk -F, '$1=="B" && NF==11 {print $9; exit}' "$TMP/out")
 awk -F, 'NF==8 && $1 ~ /^[-0-9]/ {print $1","$2","$8}' "$TMP/out" | sort >"$TMP/pa"
 check q_a_is_grid cond '[ -n "$qa" ] && [ "$qB" = "$qa" ]'
-run -c "$S; case A; set bag_p0 1.2 atm; grid; grid cells"
+run -c "$S; case A; set bag_model analytic; set bag_p0 1.2 atm; grid; grid cells"
 awk -F, 'NF==8 && $1 ~ /^[-0-9]/ {print $1","$2","$8}' "$TMP/out" | sort >"$TMP/pb"
-run -c "$S; case B; design save plain; case A; set bag_p0 1.2 atm; design save bag; design compare plain bag; grid cells"
+run -c "$S; case B; design save plain; case A; set bag_model analytic; set bag_p0 1.2 atm; design save bag; design compare plain bag; grid cells"
 awk -F, 'NF==8 && $1 ~ /^[-0-9]/ {print $1","$2","$8}' "$TMP/out" | sort >"$TMP/pd"
 check diff_cellwise awk -F, '
   FILENAME == ARGV[1] {a[$1","$2] = $3; next}
@@ -31,18 +34,18 @@ check diff_cellwise awk -F, '
   END {exit !(n > 0 && bad == 0)}' "$TMP/pa" "$TMP/pb" "$TMP/pd"
 
 # a session keeps the designs
-run -c "$S; case B; design save plain; case A; set bag_p0 1.2 atm; design save bag; case C; save session $TMP/d.ses"
+run -c "$S; case B; design save plain; case A; set bag_model analytic; set bag_p0 1.2 atm; design save bag; case C; save session $TMP/d.ses"
 run -c "source $TMP/d.ses; set format csv; design list; show case"
-check session_designs cond '[ $RC -eq 0 ] && grep -q "^plain,B," "$TMP/out" && grep -q "^bag,A,0,0,bag_p0=121590$" "$TMP/out" && grep -q "^case  *C$" "$TMP/out"'
+check session_designs cond '[ $RC -eq 0 ] && grep -q "^plain,B," "$TMP/out" && grep -q "^bag,A,0,0,bag_p0=121590 bag_membrane=0$" "$TMP/out" && grep -q "^case  *C$" "$TMP/out"'
 
 # the difference grid in grid show: its title and the diverging legend
-run -c "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag; grid show"
+run -c "set step 0.3; case B; design save plain; case A; set bag_model analytic; design save bag; design compare plain bag; grid show"
 check show_diff_title has "$TMP/out" '^\(d\|Δ\)P = P_b - P_a in %: '
 check show_diff_legend has "$TMP/out" '^legend: none 0 / no contact; safer <=-30 %; safer -30-0 %; riskier 0-30 %; riskier >=30 %$'
 
 # issue 30: an exported difference grid loads back as a difference grid (grid show the same,
 # Q = q_b - q_a, its note keeps the mark so that it exports and loads again unchanged)
-run -c "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag; grid show; export grid $TMP/d.csv"
+run -c "set step 0.3; case B; design save plain; case A; set bag_model analytic; design save bag; design compare plain bag; grid show; export grid $TMP/d.csv"
 sed -n '/P = P_b - P_a in %/,/^legend/p' "$TMP/out" >"$TMP/show0"
 q0=$(sed -n 's/.*Q = Q_b - Q_a = \(-*[0-9.]*\) m^2 over.*/\1/p' "$TMP/out")
 run -c "grid load $TMP/d.csv; grid show; export grid $TMP/d2.csv; grid load $TMP/d2.csv; grid show"
@@ -82,7 +85,7 @@ fi
 . tests/lib_tmux.sh
 start d1 120 40
 check d_prompt wait_for d1 'uasimpact\[A\]>'
-line d1 "set step 0.3; case B; design save plain; case A; design save bag; design compare plain bag"
+line d1 "set step 0.3; case B; design save plain; case A; set bag_model analytic; design save bag; design compare plain bag"
 check d_compare wait_for d1 'plain +B +0\.[0-9]+ +bag' 20
 line d1 "view"
 check d_caption wait_for d1 'P = P_b - P_a in % \(blue: b safer, red: b riskier\)'

@@ -5,7 +5,9 @@
 # points; the bearings give face), sora (Annex F of the RA3 as casex computes it at 90 degrees,
 # the iGRC formula, the reduction factor, sora mc), dist, show and save session, plots and the
 # refusals. No Q value is written here: every expectation comes from the program's own grids.
-# Coarse grids (0.3 m) keep it short.
+# Coarse grids (0.3 m) keep it short, and the analytic bag after every case A and A2 (set
+# bag_model analytic): what is checked is how risk mixes the grids, whatever the bag; the
+# membrane bag, the default at the switch, costs ~10 s CPU per coarse grid of A.
 . tests/lib.sh
 
 # -c takes one line: the newlines of a multi-line command string become ';'
@@ -19,7 +21,7 @@ col() {
 }
 
 # ---- risk ----
-run -c 'set format csv; set step 0.3; case A; grid'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; grid'
 QA=$(col "$TMP/out" A q)
 run -c 'set format csv; set step 0.3; case C; grid'
 QC=$(col "$TMP/out" C q)
@@ -27,7 +29,7 @@ run -c 'set format csv; set step 0.3; case B; grid'
 QB=$(col "$TMP/out" B q)
 check grids_ran cond '[ -n "$QA" ] && [ -n "$QB" ] && [ -n "$QC" ]'
 
-run -c 'set format csv; set step 0.3; case A; risk'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; risk'
 cp "$TMP/out" "$TMP/r1"
 check r1_status [ "$RC" -eq 0 ]
 check r1_header grep -q '^branch,weight,q$' "$TMP/r1"
@@ -38,12 +40,12 @@ check r1_is_qa cond '[ "$(printf "%.4f" "$(col "$TMP/r1" mixed q)")" = "$QA" ]'
 check r1_branch_b cond '[ "$(printf "%.4f" "$(col "$TMP/r1" chute q)")" = "$QB" ]'
 check r1_branch_c cond '[ "$(printf "%.4f" "$(col "$TMP/r1" none q)")" = "$QC" ]'
 
-run -c 'set format csv; set step 0.3; case A; set p_chute 0; risk'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0; risk'
 check r0_is_qc cond '[ "$(printf "%.4f" "$(col "$TMP/out" mixed q)")" = "$QC" ] &&
   grep -q "^none,1," "$TMP/out"'
 
 # in between: weights p_chute p_bag, p_chute (1 - p_bag), 1 - p_chute; mixed their sum
-run -c 'set format csv; set step 0.3; case A; set p_chute 0.7; set p_bag 0.6; risk'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.7; set p_bag 0.6; risk'
 cp "$TMP/out" "$TMP/r2"
 check r2_weights cond 'near "$(col "$TMP/r2" chute+bag_bottom weight)" 0.42 1e-12 &&
   near "$(col "$TMP/r2" chute weight)" 0.28 1e-12 && near "$(col "$TMP/r2" none weight)" 0.3 1e-12 &&
@@ -54,13 +56,13 @@ check r2_formula cond 'near "$(col "$TMP/r2" mixed q)" \
   "$(awk -v a="$QA" -v b="$QB" -v c="$QC" "BEGIN { print 0.7 * (0.6 * a + 0.4 * b) + 0.3 * c }")" 1e-4'
 
 # below the minimum deployment height the parachute cannot help
-run -c 'set format csv; set step 0.3; case A; set h_chute_min 150; risk'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; set h_chute_min 150; risk'
 check hmin cond 'grep -q "^none,1," "$TMP/out" && grep -q "the parachute cannot help" "$TMP/out" &&
   [ "$(printf "%.4f" "$(col "$TMP/out" mixed q)")" = "$QC" ]'
 # no parachute: one branch; two airbags: five
 run -c 'set format csv; set step 0.3; case C; set p_chute 0.5; risk'
 check case_c cond '[ "$(grep -c "^none,1," "$TMP/out")" -eq 1 ] && ! grep -q "^chute" "$TMP/out"'
-run -c 'set format csv; set step 0.3; case A2; set p_bag 0.5; risk'
+run -c 'set format csv; set step 0.3; case A2; set bag_model analytic; set p_bag 0.5; risk'
 check a2_branches cond 'grep -q "^chute+bag_bottom+bag_front,0.25," "$TMP/out" &&
   grep -q "^chute+bag_bottom,0.25," "$TMP/out" && grep -q "^chute+bag_front,0.25," "$TMP/out" &&
   grep -q "^chute,0.25," "$TMP/out" && grep -q "^none,0," "$TMP/out"'
@@ -84,7 +86,7 @@ runs "set step 0.3; set format csv; case C; set seed 8; dist wind discrete 0,4 0
 check mc_seed cond '[ "$(grep "^100," "$TMP/out")" != "$(grep "^100," "$TMP/mc1")" ]'
 
 # every input fixed: the interval collapses onto the grid's Q
-run -c 'set format csv; set step 0.3; case A; montecarlo 20'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; montecarlo 20'
 check mc_fixed cond 'line=$(grep "^20," "$TMP/out") && q=$(echo "$line" | cut -d, -f2) &&
   [ "$(printf "%.4f" "$q")" = "$QA" ] && [ "$(echo "$line" | cut -d, -f3)" = 0 ] &&
   [ "$(echo "$line" | cut -d, -f4)" = "$q" ] && [ "$(echo "$line" | cut -d, -f5)" = "$q" ]'
@@ -92,7 +94,7 @@ check mc_fixed_exact grep -q '^# surface check: not needed (exact)' "$TMP/out"
 
 # deployment drawn alone: the mean is the branches' Q weighted by their drawn frequencies, and
 # within 4 standard errors of risk's mixed Q
-runs "set format csv; set step 0.3; case A; set p_chute 0.7; set p_bag 0.6; montecarlo 400
+runs "set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.7; set p_bag 0.6; montecarlo 400
   export montecarlo $TMP/s.csv; risk"
 MEAN=$(grep '^400,' "$TMP/out" | cut -d, -f2)
 SD=$(grep '^400,' "$TMP/out" | cut -d, -f3)
@@ -105,7 +107,7 @@ check mcd_branches awk -F, -v a="$(col "$TMP/mcd" chute+bag_bottom q)" -v b="$(c
   -v c="$(col "$TMP/mcd" none q)" '/^[0-9]/ { q = $4 == "chute+bag_bottom" ? a : $4 == "chute" ? b : c
   d = $5 - q; if (d < 0) d = -d; if (d > 1e-6) bad = 1 } END { exit bad }' "$TMP/s.csv"
 check mcd_near_mixed cond 'near "$MEAN" "$MIX" "$(awk -v s="$SD" "BEGIN { print 4 * s / 20 }")"'
-check mcd_shares cond 'runs "set format csv; set step 0.3; case A; set p_chute 0.7; set p_bag 0.6
+check mcd_shares cond 'runs "set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.7; set p_bag 0.6
   montecarlo 400; montecarlo shares" && grep -q "^input,share$" "$TMP/out" &&
   grep -q "^chute,0\.[0-9]*$" "$TMP/out" && grep -q "^bag_bottom,0\.[0-9]*$" "$TMP/out"'
 
@@ -194,7 +196,7 @@ check mc_mirror_exact cond 'grep -q "12 grids (11 recalled: samples with identic
 # ---- sora ----
 # Annex F of the RA3 at zero wind (90 deg): casex gives 1.70117 m^2 for 15 kg, 1.3 m at any
 # speed (shared/reference/sora-casex.md, cases A1, A2), iGRC 4 (3.9) at 500 ppl/km^2 (7.3)
-run -c 'set format csv; set step 0.3; case A; set p_chute 0.9; risk; sora'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.9; risk; sora'
 cp "$TMP/out" "$TMP/sora"
 check sora_header grep -q '^case,model,ca,lo95,hi95,reduction,red_lo95,red_hi95,igrc_raw,igrc,igrc_table,igrc_sora25,igrc_quant$' "$TMP/sora"
 # igrc_sora25: Table 2, 1.3 m at 39.7 m/s (the unmitigated speed) is the 8 m / 75 m/s column,
@@ -212,7 +214,7 @@ check sora_igrc awk -F, '/^[AC],(q|annex_f),/ { r = 1 + log(500 * 1e-6 * $3 / 1e
 run -c 'set format csv; set step 0.3; case C; set pop_density 5000; set igrc_compensation 0.5; sora'
 check sora_c cond '[ "$(grep -cE "^C,(q|annex_f)," "$TMP/out")" -eq 2 ] && grep -q "^C,annex_f,1.70117,.*,4.4,5,4,8,5$" "$TMP/out"'
 # sora mc: the last montecarlo's intervals; refused without one, or after a change
-run -c 'set format csv; set step 0.3; case A; set p_chute 0.8; montecarlo 50; sora mc; set pop_density 50; sora mc'
+run -c 'set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.8; montecarlo 50; sora mc; set pop_density 50; sora mc'
 check sora_mc cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^A,q," "$TMP/out")" -eq 2 ] &&
   grep -q "^# from the last montecarlo: 50 samples" "$TMP/out" &&
   awk -F, "/^A,q,/ { if (!(\$4 < \$3 && \$3 < \$5 && \$7 < \$6 && \$6 < \$8)) bad = 1 } END { exit bad }" "$TMP/out"'
@@ -222,7 +224,7 @@ check sora_mc_enough cond '! grep -q "TOO FEW SAMPLES\|truncated at 0\|SORA 2.5.
 # the physical bound once, where the interval is made: ura_mc_sora), flags the sample count; a
 # class outside SORA 2.5's Table 2 (1..10) is shown at its edge with a note, igrc_raw keeping the
 # formula's value
-run -c 'set format csv; set step 0.6; case A; dist wind uniform 0 10; montecarlo 3; sora mc;
+run -c 'set format csv; set step 0.6; case A; set bag_model analytic; dist wind uniform 0 10; montecarlo 3; sora mc;
   set pop_density 1e-6; sora mc; set pop_density 1e9; sora mc'
 check sora_few_runs cond '[ "$RC" -eq 0 ] &&
   awk -F, "/^n,mean,sd,lo95,hi95,/ { getline; seen = 1; exit !(\$4 == 0) } END { exit !seen }" "$TMP/out" &&
@@ -257,7 +259,7 @@ check case_keeps cond '[ "$(grep -c "^dist wind normal 4 1$" "$TMP/out")" -eq 1 
 # ---- plots ----
 REAL=$(command -v gnuplot)
 if [ -n "$REAL" ]; then
-  runs "set step 0.3; case A; set p_chute 0.8; dist face uniform -180 180; set surface_nodes 2
+  runs "set step 0.3; case A; set bag_model analytic; set p_chute 0.8; dist face uniform -180 180; set surface_nodes 2
     montecarlo 60; set terminal png; set output $TMP/h.png; plot montecarlo; set output $TMP/t.png; plot tornado
     set terminal dumb; set output none; plot tornado"
   check plots cond '[ "$RC" -eq 0 ] && [ "$(head -c 4 "$TMP/h.png" | od -An -c | tr -d " ")" = "211PNG" ] &&

@@ -4,7 +4,10 @@
 # the Table 2 column and row; iGRC clamping with its note; the density list in show and save
 # session; montecarlo's quantile columns (mc_quantiles), the truncated interval and its flags;
 # the response surface's tolerance (warns and refines, or fails with a clear message); refusals.
-# Coarse 0.3 m grids keep it short; every expectation comes from the program's own output.
+# Coarse 0.3 m grids keep it short, and the analytic bag after every 'case A' (set bag_model
+# analytic): what is checked is arithmetic on the program's Q, whatever the bag; the membrane bag,
+# A's default at the switch, costs ~10 s CPU per coarse grid. Every expectation comes from the
+# program's own output.
 . tests/lib.sh
 
 runs() { run -c "$(printf '%s' "$1" | tr '\n' ';')"; }
@@ -19,7 +22,7 @@ tcol() {
 fails_with() { [ "$RC" -eq 1 ] && [ "$(lines "$TMP/err")" -eq 1 ] && has "$TMP/err" "$1"; }
 
 # ---- sora: M2 and eq. (1.1), deterministic ----
-runs "set format csv; set step 0.3; case A; set p_chute 0.9; set pop_density 500,5000,50000
+runs "set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.9; set pop_density 500,5000,50000
   set lambda_system 2e-4; set p_shelter 0.25; set ua_max_speed 30; sora"
 cp "$TMP/out" "$TMP/s"
 check status [ "$RC" -eq 0 ]
@@ -44,7 +47,7 @@ check eq11_bands cond '[ "$(grep -c "^A,[0-9]*,0" "$TMP/s")" -eq 3 ]'
 check table2 cond '[ "$(tcol "$TMP/s" case, C q igrc_sora25)" = 8 ] &&
   grep -q "column 3 m / 35 m/s" "$TMP/s" && grep -q "row > 50 000" "$TMP/s"'
 # the same figures in risk
-runs "set format csv; set step 0.3; case A; set p_chute 0.9; set pop_density 5000; risk"
+runs "set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.9; set pop_density 5000; risk"
 check risk_eq11 cond 'near "$(tcol "$TMP/out" case,density none 5000 q)" "$QC" 1e-5 &&
   near "$(tcol "$TMP/out" case,density A 5000 q)" "$QA" 1e-5'
 
@@ -53,7 +56,7 @@ check risk_eq11 cond 'near "$(tcol "$TMP/out" case,density none 5000 q)" "$QC" 1
 # prints Q to 6 decimals, about 0.1 to 0.4 m^2 here, so the ratio of the printed values is good
 # to about 1e-5) ----
 runs "set format csv; set step 0.3; case B; set p_chute 0.9; design save plainB; risk
-  case A; set p_chute 0.9; risk; set m2_baseline design:plainB; sora"
+  case A; set bag_model analytic; set p_chute 0.9; risk; set m2_baseline design:plainB; sora"
 cp "$TMP/out" "$TMP/nd"
 QB=$(grep "^mixed," "$TMP/nd" | sed -n 1p | cut -d, -f3)
 QL=$(grep "^mixed," "$TMP/nd" | sed -n 2p | cut -d, -f3)
@@ -62,11 +65,11 @@ check m2_named_factor cond '[ "$RC" -eq 0 ] && [ -n "$QB" ] && [ -n "$QL" ] && [
   near "$FN" "$(awk -v b="$QB" -v l="$QL" "BEGIN { print b / l }")" 1e-4 &&
   near "$(tcol "$TMP/nd" quantity, q "" baseline)" "$QB" 1e-5 && near "$(tcol "$TMP/nd" quantity, q "" design)" "$QL" 1e-5'
 # a factor of 1 against itself: the named design is the live one saved
-check m2_named_self cond 'runs "set format csv; set step 0.3; case A; design save me; set m2_baseline design:me; sora" &&
+check m2_named_self cond 'runs "set format csv; set step 0.3; case A; set bag_model analytic; design save me; set m2_baseline design:me; sora" &&
   [ "$(tcol "$TMP/out" quantity, q "" factor)" = 1 ] && grep -q "^# factor = baseline / design: design me " "$TMP/out"'
 check m2_named_show cond 'run -c "set m2_baseline design:plainB; show m2_baseline; save session $TMP/nd.ses" &&
   grep -q "^m2_baseline *design:plainB" "$TMP/out" && grep -q "^set m2_baseline .design:plainB.$" "$TMP/nd.ses"'
-runs "set step 0.3; case B; design save plainB; design save other; case A; set m2_baseline design:plainb; sora"
+runs "set step 0.3; case B; design save plainB; design save other; case A; set bag_model analytic; set m2_baseline design:plainb; sora"
 check m2_named_unknown cond 'fails_with "sora: m2_baseline design:plainb: no design .plainb.; saved designs: plainB, other" && [ ! -s "$TMP/out" ]'
 run -c 'set m2_baseline design:nosuch; sora'
 check m2_named_none fails_with "no design 'nosuch'; saved designs: none"
@@ -82,7 +85,7 @@ check clamp_high cond '[ "$(tcol "$TMP/out" case, C q igrc)" -gt 7 ] &&
   [ "$(tcol "$TMP/out" case, C q igrc_quant)" = 7 ] && [ "$(tcol "$TMP/out" case, C q igrc_sora25)" = grey ]'
 
 # ---- sora mc: the M2 interval covers the montecarlo's factor ----
-runs "set format csv; set step 0.3; case A; set p_chute 0.8; dist wind uniform 0 6
+runs "set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.8; dist wind uniform 0 6
   set surface_nodes 2; montecarlo 40; sora mc"
 cp "$TMP/out" "$TMP/mc"
 R=$(sed -n 's/.*reduction factor \([0-9.e+-]*\) (95 % interval.*/\1/p' "$TMP/mc")
@@ -103,7 +106,7 @@ check quant_cols cond 'grep -q "^n,mean,sd,lo95,hi95,p10,p50,p90$" "$TMP/out" &&
 check quant_order cond 'awk -F, "/^3,/ { exit !(\$6 <= \$7 && \$7 <= \$8) }" "$TMP/out"'
 # export montecarlo: the existing columns in their order, then the summary montecarlo printed
 # (mean, sd, lo95, hi95 and the mc_quantiles columns), equal as text on every sample row
-runs "set format csv; set step 0.6; case A; set p_chute 0.8; dist wind uniform 0 10
+runs "set format csv; set step 0.6; case A; set bag_model analytic; set p_chute 0.8; dist wind uniform 0 10
   set mc_quantiles 0.1,0.5,0.9; montecarlo 5; export montecarlo $TMP/mc5.csv"
 SUM=$(grep "^5," "$TMP/out" | cut -d, -f2-)
 check export_quant_header grep -q "^sample,wind,chute,bag_bottom,branch,q,q_unmitigated,ca_annexf,ca_annexf_unmitigated,mean,sd,lo95,hi95,p10,p50,p90$" "$TMP/mc5.csv"
@@ -117,14 +120,14 @@ check sora_mc_truncated cond '[ "$(tcol "$TMP/out" case, A q lo95)" = 0 ] && [ "
   grep -q "truncated: an interval reached below 0 and is held at 0" "$TMP/out" && grep -q "few samples: the intervals" "$TMP/out"'
 
 # ---- the surface's tolerance ----
-runs "set format csv; set step 0.3; case A; set p_chute 0.8; dist wind weibull 5 2
+runs "set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.8; dist wind weibull 5 2
   set surface_nodes 3; set mc_surface_tol 0.2; montecarlo 100"
 check tol_refines cond '[ "$RC" -eq 0 ] && grep -q "^# warning: the surface.s error .* was above mc_surface_tol 20 %; refined" "$TMP/out"'
 runs "set format csv; set step 0.3; case A; set bag_model analytic; set p_chute 0.8; dist wind weibull 5 2
   set surface_nodes 3; set mc_surface_tol 0.01; montecarlo 100"
 check tol_fails fails_with "montecarlo: the response surface's error"
 check tol_fails_says cond 'has "$TMP/err" "is above mc_surface_tol 1 % after 4 refinements; accepted:"'
-run -c 'set step 0.3; case A; set p_chute 0.8; dist wind weibull 5 2; set surface_nodes 3; montecarlo 20'
+run -c 'set step 0.3; case A; set bag_model analytic; set p_chute 0.8; dist wind weibull 5 2; set surface_nodes 3; montecarlo 20'
 check tol_none grep -q "^# surface tolerance: none declared (set mc_surface_tol)" "$TMP/out"
 
 # ---- settings ----
