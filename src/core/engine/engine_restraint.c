@@ -126,31 +126,31 @@ void ur_restraints(const urModel* m, urData* d) {
       continue;
     }
     const double* qd = d->qvel + b->vadr;
+    double* qf = d->qfrc + b->vadr;
+    int sph = b->jtype == urJNT_SPHERICAL;
 
-    // elastic and viscous force per dof
+    // elastic and viscous force per dof, subtracted at once where it is the dof's own (each
+    // force on its own: f[] read back as a pair of the scalar stores just made stalled the
+    // store forwarding)
     for (int k = 0; k < n; k++) {
       if (b->rst[k].active) {
         const double* st = d->rst + 2 * (b->vadr + k);
-        if (b->jtype == urJNT_SPHERICAL) {
-          f[k] = rforce(b->rst + k, xs[k], 0, st);
-        } else {
-          f[k] = rforce(b->rst + k, xs[k], qd[k], st);
-        }
+        f[k] = rforce(b->rst + k, xs[k], sph ? 0 : qd[k], st);
+      }
+      if (!sph) {
+        qf[k] -= f[k];
       }
     }
 
     // spherical: map rotation-vector forces to body torques, damping on omega
-    if (b->jtype == urJNT_SPHERICAL) {
+    if (sph) {
       double t[3];
       uru_mulmat3tvec(t, xs + 3, f);
       for (int k = 0; k < 3; k++) {
         const double* st = d->rst + 2 * (b->vadr + k);
         int broken = b->rst[k].mp > 0 && st[1] != 0;
-        f[k] = t[k] + (b->rst[k].active && !broken ? b->rst[k].c * qd[k] : 0);
+        qf[k] -= t[k] + (b->rst[k].active && !broken ? b->rst[k].c * qd[k] : 0);
       }
-    }
-    for (int k = 0; k < n; k++) {
-      d->qfrc[b->vadr + k] -= f[k];
     }
   }
 }

@@ -32,6 +32,24 @@ static inline void urK(mulmat3tvec)(urT r[3], const urT M[9], const urT v[3]) {
   r[2] = t2;
 }
 
+// r = t element by element: a memcpy of the lanes' 288 bytes became a rep movs, which cannot
+// forward the vector stores of t just made (a stall of the kinematics)
+static inline void urK(copy6)(urT r[6], const urT t[6]) {
+  r[0] = t[0];
+  r[1] = t[1];
+  r[2] = t[2];
+  r[3] = t[3];
+  r[4] = t[4];
+  r[5] = t[5];
+}
+
+static inline void urK(copy9)(urT r[9], const urT t[9]) {
+  urK(copy6)(r, t);
+  r[6] = t[6];
+  r[7] = t[7];
+  r[8] = t[8];
+}
+
 static inline void urK(mulmat3)(urT r[9], const urT A[9], const urT B[9]) {
   urT t[9];
   urUNROLL for (int i = 0; i < 3; i++) {
@@ -39,7 +57,7 @@ static inline void urK(mulmat3)(urT r[9], const urT A[9], const urT B[9]) {
       t[3 * i + j] = A[3 * i] * B[j] + A[3 * i + 1] * B[3 + j] + A[3 * i + 2] * B[6 + j];
     }
   }
-  memcpy(r, t, sizeof(t));
+  urK(copy9)(r, t);
 }
 
 // quaternion product r = a b (w, x, y, z)
@@ -127,5 +145,5 @@ static inline void urK(mul6)(urT r[6], const urT I[36], const urT v[6]) {
     t[i] = row[0] * v[0] + row[1] * v[1] + row[2] * v[2] + row[3] * v[3] + row[4] * v[4] +
            row[5] * v[5];
   }
-  memcpy(r, t, sizeof(t));
+  urK(copy6)(r, t);
 }
