@@ -30,6 +30,7 @@ $sets
 set bag_membrane 1
 set bag_mesh 14
 set tmax 0.4
+set window 0.12
 loss integral
 EOT
 if [ "$what" = bag ]; then
