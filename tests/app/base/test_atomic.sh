@@ -113,7 +113,9 @@ check fifo_written cond '[ "$RC" -eq 0 ] && [ -p "$TMP/fifo" ] && grep -q "^dpar
 "$U" -c "grid load $TMP/small.csv; export grid $TMP/fifo" >/dev/null 2>"$TMP/err" & PID=$!
 waiting_in $PID 'wait_for_partner|fifo_open'; t0=$(date +%s%N); kill -INT $PID; wait $PID; RC=$?
 MS=$(( ($(date +%s%N) - t0) / 1000000 )); echo "  (SIGINT while a writer waits for a FIFO reader: ended after $MS ms)"
-check fifo_wait_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+# within 1 s, as test_interrupt.sh's FIFO checks (a hang still fails): 304 ms under check-san
+# on a loaded machine failed a 200 ms bound
+check fifo_wait_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "export: interrupted (Ctrl-C) while opening"'
 
 # a signal that ends the program by default, sent while the temporary file is being written (a
