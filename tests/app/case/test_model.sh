@@ -96,7 +96,8 @@ mkfifo "$TMP/fifo"
 "$U" -c "model load $TMP/fifo" >"$TMP/out" 2>"$TMP/err" & PID=$!
 waiting_in $PID 'wait_for_partner|fifo_open'
 t0=$(now_ms); kill -INT $PID; wait $PID; RC=$?; MS=$(( $(now_ms) - t0 ))
-check load_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+# within 1 s, as the other interrupt checks (a hang still fails; 200 ms failed on a loaded machine)
+check load_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "model load: interrupted (Ctrl-C) while opening"'
 # ... and while it reads one that is written slowly
 ( printf 'part extra\n'; sleep 5; printf 'param a 1\n' ) >"$TMP/fifo" &
@@ -105,7 +106,7 @@ W=$!
 waiting_in $PID '(anon_)?pipe_read|pipe_wait|wait_woken'
 t0=$(now_ms); kill -INT $PID; wait $PID; RC=$?; MS=$(( $(now_ms) - t0 ))
 kill $W 2>/dev/null; wait $W 2>/dev/null
-check read_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+check read_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "model load: interrupted (Ctrl-C) while reading"'
 
 # ---- what the model language derives (issue 33): 'model notes', 'model params', 'show' ----

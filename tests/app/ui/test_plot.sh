@@ -253,7 +253,8 @@ n=0
 while [ ! -s "$TMP/gp.pid" ] && [ "$n" -lt 1000 ]; do sleep 0.01; n=$((n + 1)); done
 t0=$(date +%s%N); kill -INT $PID; wait $PID; RC=$?; MS=$(( ($(date +%s%N) - t0) / 1000000 ))
 echo "  (SIGINT while gnuplot hangs: ended after $MS ms)"
-check hang_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 200 ] &&
+# within 1 s, as the other interrupt checks (a hang still fails)
+check hang_interrupted cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
   has "$TMP/err" "plot pof: interrupted (Ctrl-C); gnuplot was stopped$"'
 check hang_gnuplot_gone cond '[ -s "$TMP/gp.pid" ] && ! kill -0 "$(cat "$TMP/gp.pid")" 2>/dev/null'
 check hang_old_intact cond '[ "$(cat "$TMP/h.png")" = "OLD CONTENT" ] && ! ls "$TMP" | grep -q "h.png.tmp"'
