@@ -1,17 +1,17 @@
 /* engine_membrane.c: the membrane airbags in the multibody engine. ur_model_compile checks each
  * membrane bag's declaration and builds its mesh (the run state's size and sub-steps follow from
- * it); ur_model_inflate inflates it once, when a run first needs it (constant model data shared
- * by threads from then on; through the inflated-bag cache of the options, opt.memcache, when
- * there is one) and turns the bag's ellipsoid into a bound of the inflated bag (the jump to
- * first contact and the end-of-run proofs use it). Each step: the loads stage places the mount patch on the carrier (fixed
- * joint), computes fabric, gas and penalty contact forces of the nodes against the targets (the
- * person) and supports (the carrier's own bodies) and applies the reactions to their bodies and
- * the mount forces to the carrier; the accepted step then moves the nodes (symplectic Euler),
- * in sub-steps when the fabric's stable step is smaller than the multibody step (fabric and gas
- * forces recomputed each sub-step, contact forces held over the step). A penalty beyond the
+ * it); ur_model_inflate inflates it once, when a run first needs it (constant model data shared by
+ * threads from then on; through the inflated-bag cache of the options, opt.memcache, when there is
+ * one) and turns the bag's ellipsoid into a bound of the inflated bag (the jump to first contact
+ * and the end-of-run proofs use it). Each step: the loads stage places the mount patch on the
+ * carrier (fixed joint), computes fabric, gas and penalty contact forces of the nodes against the
+ * targets (the person) and supports (the carrier's own bodies) and applies the reactions to their
+ * bodies and the mount forces to the carrier; the accepted step then moves the nodes (symplectic
+ * Euler), in sub-steps when the fabric's stable step is smaller than the multibody step (fabric and
+ * gas forces recomputed each sub-step, contact forces held over the step). A penalty beyond the
  * explicit bound (kc_alpha > 1) is made linearly implicit along each node's contact normal
- * (contact_implicit). Until a target comes near, the bag rides rigidly in its inflated state
- * (no integration). */
+ * (contact_implicit). Until a target comes near, the bag rides rigidly in its inflated state (no
+ * integration). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -1,11 +1,11 @@
-/* membrane_cache.c: the inflated-bag cache. Inflating a bag (ur_mem_inflate) takes most of the
- * time a model with a membrane airbag needs before it runs (ur_model_inflate, after the compile),
- * and a workbench recompiles its model at every 'set' of a parameter (and a calibration at every
- * evaluation), mostly with a bag whose declaration did not change. The cache keeps built and inflated bags by their whole spec
- * (urMemSpec: everything ur_mem_build and ur_mem_inflate read), compared field by field, doubles
- * by their bits; a hit is a deep copy (ur_mem_clone) of the bag the spec gave before, so the
- * compiled model is the same to the bit. At most a number of bags and of nodes are kept, the
- * least recently used evicted first; failed inflations are not kept.
+/* membrane_cache.c: the inflated-bag cache. Inflating a bag (ur_mem_inflate) takes most of the time
+ * a model with a membrane airbag needs before it runs (ur_model_inflate, after the compile), and a
+ * workbench recompiles its model at every 'set' of a parameter (and a calibration at every
+ * evaluation), mostly with a bag whose declaration did not change. The cache keeps built and
+ * inflated bags by their whole spec (urMemSpec: everything ur_mem_build and ur_mem_inflate read),
+ * compared field by field, doubles by their bits; a hit is a deep copy (ur_mem_clone) of the bag
+ * the spec gave before, so the compiled model is the same to the bit. At most a number of bags and
+ * of nodes are kept, the least recently used evicted first; failed inflations are not kept.
  *
  * Owned by its caller (one per session), no globals; a mutex guards the table, so threads may
  * compile through one cache (each inflation runs outside the lock). */

@@ -885,8 +885,9 @@ static urmCLONES void tri_pass_part(const urMembrane* mb, const double* x, const
 
 
 /* each triangle's nodal forces at the gas pressure's pg6 = (p - patm) / 6 (blocks [b0, b1)), in
-   place of its scratch: node 1's force fp + h0 + h1 (fp = pg6 d1 x d2) where the normal was, node 2's fp - h0
-   where h0 was, node 3's fp - h1 where h1 was (the offsets membrane_mesh.c's adj names) */
+   place of its scratch: node 1's force fp + h0 + h1 (fp = pg6 d1 x d2) where the normal was,
+   node 2's fp - h0 where h0 was, node 3's fp - h1 where h1 was (the offsets membrane_mesh.c's
+   adj names) */
 static urmCLONES void tri_forces(const urMembrane* mb, double pg6, double* sc, int b0, int b1) {
   urm4 pg = bc4(pg6);
   for (int b = b0; b < b1; b++) {
