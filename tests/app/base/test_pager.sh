@@ -118,9 +118,11 @@ check view_values cond 'grep -q "^dpar [-0-9.]* m  dperp [-0-9.]* m  P " "$TMP/s
 check view_orientation cond 'grep -q "dperp m (+ left of course), rows dpar m (+ ahead)" "$TMP/screen"'
 check view_fits fits80 p1
 keys p1 q
-check view_back wait_for p1 'uasimpact\[A\]> *$'
+check view_back wait_for p1 'uasimpact\[A\|modified\]> *$' # the analytic bag: a change from case A
 
 # the prompt names the live model where it is not the case's
+line p1 "case A"
+check prompt_case wait_for p1 'uasimpact\[A\]> *$'
 line p1 "set bag_p0 1.2 atm"
 check prompt_modified wait_for p1 'uasimpact\[A\|modified\]> *$'
 line p1 "case A"

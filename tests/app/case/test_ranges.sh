@@ -52,16 +52,16 @@ check unranged_human cond '! grep -q "range=\|why=" "$TMP/human.urm" && grep -q 
 H="model load $TMP/human.urm"
 
 # a stance that cannot be balanced names the parameter and value set
-run -c "$H; set bag_model analytic; set neck_k_flex 1e20; impact 0 0"
+run -c "$H; set neck_k_flex 1e20; impact 0 0"
 check stance_names_param one_error "^-c:1: model: the standing posture cannot be balanced (it falls) with neck_k_flex = 1e+20 N\*m/rad (set)$"
 
 # in montecarlo, also the sample and its drawn values (exact), or the surface's node
-run -c "$H; set bag_model analytic; set mc_method exact; set step 0.3; dist neck_k_flex uniform 1e19 1e20; dist wind uniform 0 2; montecarlo 2"
+run -c "$H; set mc_method exact; set step 0.3; dist neck_k_flex uniform 1e19 1e20; dist wind uniform 0 2; montecarlo 2"
 check mc_names_sample one_error "^-c:1: montecarlo: sample 0 (neck_k_flex = [0-9.e+]* N\*m/rad, wind = [0-9.]* m/s): model: the standing posture cannot be balanced (it falls) with neck_k_flex = [0-9.e+]* N\*m/rad (set)$"
 # (the surface's check samples run before its grids: without them the first grid fails first)
-run -c "$H; set bag_model analytic; set step 0.3; set surface_check 0; dist neck_k_flex uniform 1e19 1e20; montecarlo 2"
+run -c "$H; set step 0.3; set surface_check 0; dist neck_k_flex uniform 1e19 1e20; montecarlo 2"
 check mc_names_node one_error "^-c:1: montecarlo: the response surface's grid 1 of [0-9]* at neck_k_flex = [0-9.e+]* N\*m/rad: model: the standing posture cannot be balanced"
-run -c "$H; set bag_model analytic; set step 0.3; dist neck_k_flex uniform 1e19 1e20; montecarlo 2"
+run -c "$H; set step 0.3; dist neck_k_flex uniform 1e19 1e20; montecarlo 2"
 check mc_names_check_sample one_error "^-c:1: montecarlo: sample 0 (neck_k_flex = [0-9.e+]* N\*m/rad): model: the standing posture cannot be balanced"
 
 # a draw outside the range: declared, then the model narrowed it
