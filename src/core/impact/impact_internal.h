@@ -14,4 +14,13 @@ int ur_impact_after_step(const urImpactSetup* s, const urImpactWork* w, double t
 int ur_impact_finish(const urImpactSetup* s, urImpactWork* w, const urInjuryParams* ip,
                      urImpactResult* r);
 
+/* the person of m alone, for the settling (impact_person.c): every body off the drone's tree in
+   m's order, their ellipsoids and the pairs among them and with the ground, m's options; NULL
+   when an airbag rides on the person, or out of memory */
+urModel* ur_impact_person_model(const urModel* m, int drone);
+/* the person's coordinates, velocities, restraint extremes and pair histories (with depths) of
+   p's data dp into m's data d, whose drone is left as it is; the contact lists rebuilt */
+void ur_impact_person_state(const urModel* m, urData* d, int drone, const urModel* p,
+                            const urData* dp);
+
 #endif

@@ -9,6 +9,7 @@
 
 #include "uasimpact/impact.h"
 #include "../engine/engine_internal.h"
+#include "impact_internal.h"
 
 /* height of the top of an ellipsoid in the world */
 static double ellipsoid_top(const urModel* m, urData* d, int g) {
@@ -110,6 +111,45 @@ static void park(const urModel* m, urData* d, int drone) {
   ur_set_free(m, d, drone, PARK, QID, ZERO3, ZERO3);
 }
 
+/* the largest deflection of the person's joints from their neutral positions */
+static double deflection_max(const urModel* m, const urData* d, int drone) {
+  double dmax = 0, x[3];
+  for (int b = 0; b < m->nbody; b++) {
+    if (ur_body_intree(m, b, drone)) continue;
+    int n = deflections(m, d, b, x);
+    for (int k = 0; k < n; k++) dmax = fmax(dmax, fabs(x[k] - m->body[b].rst[k].x0));
+  }
+  return dmax;
+}
+
+/* the settling's nstep steps taken by p, the person alone (impact_person.c), from d parked: the
+   same person to the bit as stepping the whole model with the drone held, when the drone's held
+   step succeeds (it is the same at every step) and the person's bounding spheres stay below the
+   parked drone's in every state evaluated (then no pair or airbag between the trees acts). 0:
+   the settled person in d, the drone parked, top raised as settle does; -1: d to be parked
+   and settled whole (a step failed, or the person rose too close) */
+static int settle_alone(const urModel* m, urData* d, int drone, const urModel* p, long nstep,
+                        double* top) {
+  if (ur_step(m, d) < 0) return -1;
+  double low = drone_low(m, d, drone), ptop = -INFINITY;
+  urData* dp = ur_data_new(p);
+  int ok = dp != NULL;
+  for (long k = 0; ok && k < nstep; k++) {
+    ok = ur_step(p, dp) >= 0;
+    for (int g = 0; ok && g < p->ngeom; g++) {
+      ptop = fmax(ptop, dp->gxpos[3 * g + 2] + p->geom[g].rbound);
+    }
+    ok = ok && ptop < low;
+  }
+  park(m, d, drone);
+  if (ok) {
+    ur_impact_person_state(m, d, drone, p, dp);
+    if (top) *top = fmax(*top, ptop);
+  }
+  ur_data_free(dp);
+  return ok ? 0 : -1;
+}
+
 /* settle the person from the reference posture for t seconds; the largest joint deflection.
    The stance has no stiff contact, so it settles with a step of at least settle_dt (model
    parameter, default SETTLE_DT): a state of rest of the Euler step does not depend on the step,
@@ -123,18 +163,19 @@ static double settle(const urModel* m0, urData* d, int drone, double t, double* 
   mc.opt.dt = settle_step(m0);
   park(m, d, drone);
   long nstep = (long)ceil(t / m->opt.dt);
+  urModel* p = nstep > 1 ? ur_impact_person_model(m, drone) : NULL;
+  if (p) {
+    int done = settle_alone(m, d, drone, p, nstep, top) == 0;
+    ur_model_free(p);
+    if (done) return deflection_max(m, d, drone);
+    park(m, d, drone);
+  }
   for (long k = 0; k < nstep; k++) {
     if (ur_step(m, d) < 0) return INFINITY;
     hold(m, d, drone);
     if (top) *top = fmax(*top, person_top(m, d, drone));
   }
-  double dmax = 0, x[3];
-  for (int b = 0; b < m->nbody; b++) {
-    if (ur_body_intree(m, b, drone)) continue;
-    int n = deflections(m, d, b, x);
-    for (int k = 0; k < n; k++) dmax = fmax(dmax, fabs(x[k] - m->body[b].rst[k].x0));
-  }
-  return dmax;
+  return deflection_max(m, d, drone);
 }
 
 /* the person's posture under gravity with the springs' neutral positions shifted by the
