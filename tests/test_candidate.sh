@@ -3,7 +3,7 @@
 # beam theory gives for its carbon tube (k = 3EI/L, M_p = sigma_y Z_p, closed forms computed here
 # from the file's own D, t, L, E and yield); it declares no law of the person's head (the scalp
 # laws come from the person's layer, the foam's backing too); arm_t moves the hinge as the
-# formulas say; the built-in RA3 is it with the refit's values.
+# formulas say; the built-in RA3 is it with the refit's values, its bag stage 2's.
 . tests/lib.sh
 F=src/models/candidate/ra3.urm
 
@@ -44,4 +44,9 @@ run -c "$(awk '{ printf "%sshow %s", (NR > 1 ? "; " : ""), $1 }' "$TMP/fit")"
 check builtin_is_refit awk 'NR == FNR { v[$1] = $2; k++; next } ($1 in v) { d = $2 - v[$1]
   if (d * d > 1e-24 * v[$1] * v[$1]) exit 1; n++ } END { exit !(k == 9 && n == 9) }' "$TMP/fit" "$TMP/out"
 check start_kept grep -q "^param arm_t 0.78 mm" "$F"
+# and its membrane bag has stage 2's values (the bag's result, likewise)
+awk '$1 == "set" { print $2, $3 }' src/models/refit-bag-result.txt >"$TMP/bag"
+run -c "$(awk '{ printf "%sshow %s", (NR > 1 ? "; " : ""), $1 }' "$TMP/bag")"
+check builtin_bag_is_refit awk 'NR == FNR { v[$1] = $2; k++; next } ($1 in v) { d = $2 - v[$1]
+  if (d * d > 1e-24 * v[$1] * v[$1]) exit 1; n++ } END { exit !(k == 3 && n == 3) }' "$TMP/bag" "$TMP/out"
 finish
