@@ -48,10 +48,13 @@ for f in "$PAPER_VALUES" "$GRID4"; do
 done
 
 # the shipped values the variants start from, read from the binary (the calibration may move them)
-shown=$("$UASIMPACT" -c 'show arm_k; show arm_c; show nij_rescale; show nij_order; show pof_ais2;
+shown=$("$UASIMPACT" -c 'show arm_c; show nij_rescale; show nij_order; show pof_ais2;
   show pof_ais3; show pof_ais4' 2>&1)
 shipped() { echo "$shown" | awk -v n="$1" '$1 == n { print $2; exit }'; }
-ARM_K=$(shipped arm_k) ARM_C=$(shipped arm_c) RESCALE=$(shipped nij_rescale)
+# the arms' hinge slope, which beam theory derives from the tube (model notes: k = 3 E I / L)
+ARM_K=$("$UASIMPACT" -c 'model notes' 2>/dev/null |
+  awk -F'= ' '/restraint .arm1. dof 0 .*hinge k = 3 E I/ { split($3, a, " "); print a[1]; exit }')
+ARM_C=$(shipped arm_c) RESCALE=$(shipped nij_rescale)
 ORDER=$(shipped nij_order) AIS2=$(shipped pof_ais2) AIS3=$(shipped pof_ais3) AIS4=$(shipped pof_ais4)
 if [ -z "$ARM_K" ] || [ -z "$RESCALE" ] || [ -z "$ORDER" ] || [ -z "$AIS4" ]; then
   echo "sensitivity: could not read the shipped settings from $UASIMPACT: $shown" >&2
@@ -61,7 +64,7 @@ fi
 # with the motor at the tip, 0.05-0.09 kg m^2)
 arm_c() { awk -v z="$1" -v k="$ARM_K" 'BEGIN { printf "%.3g", 2 * z * sqrt(k * 0.07) }'; }
 ZETA=$(awk -v c="$ARM_C" -v k="$ARM_K" 'BEGIN { printf "%.2f", c / (2 * sqrt(k * 0.07)) }')
-# the injury decisions the fit did not pick (the spec's choices: src/models/calibrate.spec)
+# the injury decisions the fit did not pick (the specs' choices: src/models/refit-drone.spec)
 RESCALE_ALT=$((1 - RESCALE))
 if [ "$ORDER" = 2 ]; then ORDER_ALT=1; else ORDER_ALT=2; fi
 if awk -v a="$AIS2" -v b="$AIS3" -v c="$AIS4" 'BEGIN { exit !(a == 0.02 && b == 0.1 && c == 0.5) }'; then
@@ -78,7 +81,7 @@ foam_r_01|set foam_r 0.1|contact sheet 3.2: foam unloading residual strain r 0.1
 foam_r_03|set foam_r 0.3|contact sheet 3.2: residual strain r 0.1-0.3
 foam_p_3|set foam_p 3|contact sheet 3.2: unloading exponent p 3-6 (shipped 4)
 foam_p_6|set foam_p 6|contact sheet 3.2: unloading exponent p 3-6
-arm_zeta_05|set arm_c $(arm_c 0.05)|contact sheet 5: damping ratio 0.05-0.2, c = 2 zeta sqrt(k I) with k = arm_k $ARM_K, I 0.07 kg m^2 (shipped arm_c $ARM_C, zeta $ZETA)
+arm_zeta_05|set arm_c $(arm_c 0.05)|contact sheet 5: damping ratio 0.05-0.2, c = 2 zeta sqrt(k I) with the hinge's k $ARM_K (3 E I / L), I 0.07 kg m^2 (shipped arm_c $ARM_C, zeta $ZETA)
 arm_zeta_20|set arm_c $(arm_c 0.2)|contact sheet 5: damping ratio 0.05-0.2 (upper end)
 arm_stops_tight|set arm_stop_v 0.5; set arm_stop_h 0.66|contact sheet 5 (a stop only keeps an arm out of the drone): the first touch in ra3.urm's geometry, an arm at +-30 deg bent down onto the cargo box (0.5 rad), two neighbours bent towards each other (0.66 rad); shipped 1.4 / 0.9
 arm_stops_off|set arm_stop_v 3.1; set arm_stop_h 3.1|contact sheet 5: nothing in the paper gives a stop short of the frame; stops out of reach, the arm law alone
@@ -126,7 +129,7 @@ fi
 awk -f scripts/table17.awk -f scripts/sensitivity.awk -v out="$out" -v values="$PAPER_VALUES" \
     -v grid4="$GRID4" -v variants="$out/variants.txt" -v step="$step" -v wall="$wall" \
     -v commit="$commit" -v date="$(date -u '+%Y-%m-%d %H:%M UTC')" \
-    -v shipped="arm_k $ARM_K, arm_c $ARM_C (zeta $ZETA), nij_rescale $RESCALE, nij_order $ORDER, pof_ais2-4 $AIS2, $AIS3, $AIS4" \
+    -v shipped="hinge k $ARM_K, arm_c $ARM_C (zeta $ZETA), nij_rescale $RESCALE, nij_order $ORDER, pof_ais2-4 $AIS2, $AIS3, $AIS4" \
     "$out/raw.csv" || exit 1
 if [ -s "$out/err.txt" ]; then echo "sensitivity: messages in $out/err.txt" >&2; cat "$out/err.txt" >&2; fi
 cat "$out/sensitivity.md"

@@ -36,10 +36,11 @@ void ur_injury_defaults(urInjuryParams* p) {
   p->nij_rescale = 1;
   p->nij_order = urORDER_LOWER; // chosen by the calibration (uasimpact-model(5))
 
-  // Gennarelli & Wodzin (2006) midpoints of the AIS 2005 ranges, chosen by the calibration
-  p->pof_ais2 = 0.015;
-  p->pof_ais3 = 0.09;
-  p->pof_ais4 = 0.275;
+  // Gennarelli & Wodzin (2006) upper ends of the AIS 2005 ranges, chosen by the refit on
+  // materials (uasimpact-model(5), CALIBRATION LOG; the old calibration chose the midpoints)
+  p->pof_ais2 = 0.02;
+  p->pof_ais3 = 0.10;
+  p->pof_ais4 = 0.50;
   p->pof_ais6 = 1.0;
 
   // VC: human model, HIII-50M chest depth, Lau & Viano 25 % points

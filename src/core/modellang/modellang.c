@@ -311,6 +311,31 @@ static int statement(Parser* p, const urlStmt* st) {
 }
 
 
+/* 1 if some source has a 'param NAME' line (before or after the statement being read) */
+int url_param_declared(Parser* p, const char* name) {
+  for (int s = 0; s < p->lx.nstmt; s++) {
+    const urlStmt* st = p->lx.stmt + s;
+    if (st->nword >= 2 && !strcmp(url_word(&p->lx, st->word), "param") &&
+        !strcmp(url_word(&p->lx, st->word + 1), name)) {
+      return 1;
+    }
+  }
+  return 0;
+}
+
+
+/* a preset's key that names a parameter of a later part (sim.urm's tmax in airbags.urm's
+   presets) is bound to it once every statement is read */
+static void bind_preset_params(Parser* p) {
+  for (int i = 0; i < p->m->npreset; i++) {
+    urPreset* pr = p->m->preset + i;
+    for (int k = 0; k < pr->n; k++) {
+      if (pr->param[k] < 0) pr->param[k] = ur_name_param(p->m, pr->key[k]);
+    }
+  }
+}
+
+
 /* every override must name a parameter that some source defines, with a finite value */
 static int check_overrides(Parser* p) {
   for (int i = 0; i < p->nov; i++) {
@@ -324,13 +349,7 @@ static int check_overrides(Parser* p) {
                url_quote(name, strlen(name)).s);
       return -1;
     }
-    int found = 0;
-    for (int s = 0; s < p->lx.nstmt && !found; s++) {
-      const urlStmt* st = p->lx.stmt + s;
-      found = st->nword >= 2 && !strcmp(url_word(&p->lx, st->word), "param") &&
-              !strcmp(url_word(&p->lx, st->word + 1), name);
-    }
-    if (!found) {
+    if (!url_param_declared(p, name)) {
       snprintf(p->msg, sizeof(p->msg),
                "override '%s': no model text defines a parameter of "
                "that name; expected a name from 'param NAME VALUE' lines",
@@ -415,6 +434,7 @@ urModel* ur_model_parse_cache(const urModelSource* src, int nsrc, const urOverri
   /* the drone's design parameters, then compile (elements were checked on their lines; this
      should not fail) */
   if (!rc) {
+    bind_preset_params(&p);
     rc = url_apply_design(&p);
   }
   if (!rc) {

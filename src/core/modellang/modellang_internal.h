@@ -253,6 +253,7 @@ int url_st_pairs(Parser* p, const Bound* b);
 int url_st_param(Parser* p, const urlStmt* st);
 int url_st_part(Parser* p, const urlStmt* st);
 int url_st_preset(Parser* p, const urlStmt* st);
+int url_param_declared(Parser* p, const char* name);
 int url_st_restraint(Parser* p, const Bound* b);
 int url_st_material(Parser* p, const Bound* b);
 int url_st_section(Parser* p, const Bound* b);

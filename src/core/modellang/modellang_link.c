@@ -513,7 +513,7 @@ int url_st_preset(Parser* p, const urlStmt* st) {
     if (pr.n == urMAXPRESET) {
       return url_fail(p, line, "preset '%s': more than %d keys", name, urMAXPRESET);
     }
-    int isparam = url_findsym(p, SYM_PARAM, key, 1) >= 0;
+    int isparam = url_findsym(p, SYM_PARAM, key, 1) >= 0 || url_param_declared(p, key);
     const char* v = eq + 1;
     size_t vn = strlen(v), k = url_decimal_prefix(v, vn);
     double f = 1, x;

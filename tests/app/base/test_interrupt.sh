@@ -71,11 +71,11 @@ check sweep_message cond '[ "$(lines "$TMP/err")" -eq 1 ] &&
 check sweep_no_empty_header cond '! grep -q "^case  *wind  *face" "$TMP/out"'
 
 # ---- the settling of the stance (a fine settling step makes it long): stops at its next step ----
-printf 'set dt 1e-5\nset settle_dt 1e-5\nsave session %s/ready.ses\nimpact 0 0\n' "$TMP" >"$TMP/st.ses"
+printf 'set bag_model analytic\nset dt 1e-5\nset settle_dt 1e-5\nsave session %s/ready.ses\nimpact 0 0\n' "$TMP" >"$TMP/st.ses"
 IN= start_bg settle 0.3 "$TMP/st.ses"
 interrupt
 check settle_stopped cond '[ "$RC" -eq 130 ] && [ "$MS" -lt 1000 ] &&
-  has "$TMP/err" "st.ses:4: interrupted (Ctrl-C) while settling the standing posture$"'
+  has "$TMP/err" "st.ses:5: interrupted (Ctrl-C) while settling the standing posture$"'
 
 # ---- a read that blocks (a FIFO nobody writes): interrupted, not hung ----
 mkfifo "$TMP/fifo"

@@ -105,7 +105,7 @@ check help_fits fits80 p1
 
 # compare under wind: why p_centre is 0, wrapped in 80 columns
 keys p1 C-l
-line p1 "case A; set wind 10; set step 0.1; compare"
+line p1 "case A; set bag_model analytic; set wind 10; set step 0.1; compare"
 check compare_why wait_for p1 '^# p_centre 0: the impact at \(0, 0\) does not touch the person;' 120
 check compare_peak cond 'grep -q "peak P [0-9.]* at (" "$TMP/screen"'
 check compare_fits fits80 p1
@@ -118,9 +118,11 @@ check view_values cond 'grep -q "^dpar [-0-9.]* m  dperp [-0-9.]* m  P " "$TMP/s
 check view_orientation cond 'grep -q "dperp m (+ left of course), rows dpar m (+ ahead)" "$TMP/screen"'
 check view_fits fits80 p1
 keys p1 q
-check view_back wait_for p1 'uasimpact\[A\]> *$'
+check view_back wait_for p1 'uasimpact\[A\|modified\]> *$' # the analytic bag: a change from case A
 
 # the prompt names the live model where it is not the case's
+line p1 "case A"
+check prompt_case wait_for p1 'uasimpact\[A\]> *$'
 line p1 "set bag_p0 1.2 atm"
 check prompt_modified wait_for p1 'uasimpact\[A\|modified\]> *$'
 line p1 "case A"
@@ -149,7 +151,7 @@ start p3 80 24 PAGER=/nonexistent/pager
 check prompt3 wait_for p3 'uasimpact\[A\]> *$'
 line p3 "show"
 check pager_missing_prints wait_for p3 '^# input distributions of montecarlo \(dist\): none$'
-TM capture-pane -p -J -S -300 -t p3 >"$TMP/screen" # the note scrolled up: the scrollback
+TM capture-pane -p -J -S -2000 -t p3 >"$TMP/screen" # the note scrolled up: the scrollback
 check pager_missing_note cond 'grep -q "^pager: the pager ./nonexistent/pager. was not found; the output follows here" "$TMP/screen"'
 # issue 30: a pager that fails without reading (false exits 1) or dies loses nothing: a note
 # says so and the output follows on the screen
@@ -157,12 +159,12 @@ start p4 80 24 PAGER=false
 check prompt4 wait_for p4 'uasimpact\[A\]> *$'
 line p4 "show"
 check pager_false_prints wait_for p4 '^# input distributions of montecarlo \(dist\): none$'
-TM capture-pane -p -J -S -300 -t p4 >"$TMP/screen"
+TM capture-pane -p -J -S -2000 -t p4 >"$TMP/screen"
 check pager_false_note cond 'grep -q "^pager: the pager .false. failed (exit status 1); the output follows here (PAGER=cat or .set pager off. prints without a pager)$" "$TMP/screen"'
 start p5 80 24 "PAGER='kill -9 \$\$'"
 check prompt5 wait_for p5 'uasimpact\[A\]> *$'
 line p5 "show"
 check pager_killed_prints wait_for p5 '^# input distributions of montecarlo \(dist\): none$'
-TM capture-pane -p -J -S -300 -t p5 >"$TMP/screen"
+TM capture-pane -p -J -S -2000 -t p5 >"$TMP/screen"
 check pager_killed_note cond 'grep -q "^pager: the pager .kill -9 \$\$. was ended by signal 9; the output follows here" "$TMP/screen"'
 finish

@@ -23,11 +23,11 @@ check drone_mass_set has "$TMP/out" '^drone_mass  *20 kg  (set)'
 run -c "$B; set mass 15; model params"
 check same_mass_no_override has "$TMP/out" '^drone_mass .*kg  (model)'
 
-# drone_size, arm_k (an arm on the head), foam_t (the cargo box), bag_p0 (case A's bag)
+# drone_size, arm_t (an arm on the head: its tube wall sets the hinge), foam_t (the cargo box), bag_p0 (case A's bag)
 run -c "$B; impact 0 0; set drone_size 1.2; impact 0 0"
 check drone_size_changes_hic cond '[ "$(hics "$TMP/out" | sort -u | wc -l)" -eq 2 ]'
-run -c "$B; impact 0 0.6; set arm_k 20000; impact 0 0.6"
-check arm_k_changes_hic cond '[ "$(hics "$TMP/out" | sort -u | wc -l)" -eq 2 ]'
+run -c "$B; impact 0 0.6; set arm_t 0.5 mm; impact 0 0.6"
+check arm_t_changes_hic cond '[ "$(hics "$TMP/out" | sort -u | wc -l)" -eq 2 ]'
 run -c "$B; impact 0 0; set foam_t 0.05; impact 0 0"
 check foam_t_changes_hic cond '[ "$(hics "$TMP/out" | sort -u | wc -l)" -eq 2 ]'
 run -c "set format csv; case A; set speed 7.48; set angle 90; impact 0 0; set bag_p0 1.3 atm; impact 0 0"

@@ -80,7 +80,7 @@ check old_form_loads cond '[ "$RC" -eq 0 ] && grep -q "^case B, wind 4 m/s, face
 mv "$TMP/g.meta.away" "$TMP/g.csv.meta.json"
 
 # set format json: one object per table and line, show included; a JSON parser reads each
-run -c "set format json; descent; show; show wind; grid load $TMP/g.csv; grid"
+run -c "set format json; set bag_model analytic; descent; show; show wind; grid load $TMP/g.csv; grid"
 check json_ran [ "$RC" -eq 0 ]
 if [ -x "$PY" ]; then
   "$PY" -c '
@@ -106,7 +106,7 @@ for line in open(sys.argv[1]):
   check json_listings cond '[ "$(lines "$TMP/py")" -eq 3 ] && has "$TMP/py" "^name value unit set_by [1-9]" &&
     has "$TMP/py" "^part origin [1-9]" && has "$TMP/py" "^input distribution 1$"'
 fi
-run -c "set format json; descent; show; show wind; grid load $TMP/g.csv; grid"
+run -c "set format json; set bag_model analytic; descent; show; show wind; grid load $TMP/g.csv; grid"
 check json_numbers_are_numbers has "$TMP/out" '"wind":4,"speed":8\.482'
 check json_null_for_empty has "$TMP/out" '"source":null'
 

@@ -68,7 +68,7 @@ static void set_says_reach(void** state) {
   f->c.interactive = 1;
   run(f, "set width 2", 0);
   run(f, "set mass 12", 0);
-  run(f, "set arm_k 7000", 0);
+  run(f, "set arm_t 1.5 mm", 0);
   run(f, "set drone_size 1.1", 0);
   run(f, "set wind 3", 0); /* no note: obvious */
   fclose(f->c.msg);
@@ -77,7 +77,7 @@ static void set_says_reach(void** state) {
   assert_non_null(strstr(msg,
                          "set mass: changes the descent and parametric models and the "
                          "multibody drone"));
-  assert_non_null(strstr(msg, "set arm_k: changes the multibody model (impact, grid)"));
+  assert_non_null(strstr(msg, "set arm_t: changes the multibody model (impact, grid)"));
   assert_non_null(strstr(msg, "set drone_size: changes the multibody drone's size"));
   assert_null(strstr(msg, "set wind"));
   free(msg);

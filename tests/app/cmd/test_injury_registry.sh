@@ -28,7 +28,7 @@ run -c 'pof bric'
 check pof_unknown has "$TMP/err" "accepted: hic, nij, vc, vc_thorax, vc_abdomen or defl"
 
 # grid cells and export carry defl_thorax when on; grid load reads it back
-run -c "set format csv; case A; set use_defl 1; set step 0.25; grid; grid cells; export grid $TMP/g.csv; grid load $TMP/g.csv; grid cells"
+run -c "set format csv; case A; set bag_model analytic; set use_defl 1; set step 0.25; grid; grid cells; export grid $TMP/g.csv; grid load $TMP/g.csv; grid cells"
 check grid_cells_defl cond '[ "$RC" -eq 0 ] &&
   [ "$(grep -c "^dpar,dperp,contact,hic15,nij,vc_thorax,vc_abdomen,defl_thorax,p$" "$TMP/out")" -eq 2 ]'
 check grid_load_defl cond '[ "$(awk -F, "/^dpar/{n++} n==1&&!/^(#|dpar)/{print \$8}" "$TMP/out" | md5sum)" = \

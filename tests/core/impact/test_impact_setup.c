@@ -303,7 +303,7 @@ static void donor_chain(void** state) {
   assert_int_equal(prepare(&a, base(), NULL), 0);
   assert_int_equal(prepare(&b, parse(BUILTIN, 4, "bag_p0", 1.1 * 101325), &a), 1);
   release(&a);
-  taken_as_settled(BUILTIN, 4, "arm_k", 900, &b);
+  taken_as_settled(BUILTIN, 4, "arm_t", 0.0015, &b);
 
   urImpactSetup* donors[1] = {&b};
   urModel* m = base();

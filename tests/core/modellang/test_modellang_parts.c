@@ -218,6 +218,26 @@ static void test_sources(void** state) {
   assert_string_equal(err, "bag.urm:3: dangling reference to body 'q'");
 }
 
+/* a preset may set a parameter of a later source (airbags.urm's presets set sim.urm's tmax),
+   with a unit; a key no source declares stays a workbench setting */
+static void test_preset_later_param(void** state) {
+  char err[256];
+  urModelSource src[2] = {{"body b parent=world joint=free pos=0,0,0 mass=1 inertia=1,1,1\n"
+                           "preset A tmax=400ms window=0.12 area_chute=0\n",
+                           "bags.urm"},
+                          {"param tmax 0.15 s\nparam window 0.06 s\n", "sim.urm"}};
+  urModel* m = ur_model_parse(src, 2, NULL, 0, err, sizeof(err));
+  assert_non_null(m);
+  const urPreset* a = m->preset;
+  assert_int_equal(a->param[0], ur_name_param(m, "tmax"));
+  assert_true(a->param[0] >= 0);
+  assert_near(a->value[0], 0.4, 1e-15);
+  assert_int_equal(a->param[1], ur_name_param(m, "window"));
+  assert_true(a->param[1] >= 0);
+  assert_int_equal(a->param[2], -1);
+  ur_model_free(m);
+}
+
 //---------------------------------- parts ---------------------------------------------------------
 
 /* concatenating the parts gives back the text; names and lines */
@@ -292,8 +312,11 @@ static void test_split(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_roles_presets), cmocka_unit_test(test_pairs),
-      cmocka_unit_test(test_degree),        cmocka_unit_test(test_sources),
+      cmocka_unit_test(test_roles_presets),
+      cmocka_unit_test(test_pairs),
+      cmocka_unit_test(test_degree),
+      cmocka_unit_test(test_sources),
+      cmocka_unit_test(test_preset_later_param),
       cmocka_unit_test(test_split),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
