@@ -165,7 +165,7 @@ static double run_alone(const urImpactSetup* s, urImpactWork* w, const urImpactC
   ur_step_prof(prof);
   while (w->d->status == urSTAT_OK) {
     ur_step(s->m, w->d);
-    if (ur_impact_after_step(s, w, texit, &r)) break;
+    if (ur_impact_after_step(s, w, texit, NULL, &r)) break;
   }
   ur_step_prof(NULL);
   return cpu() - t0;
@@ -187,7 +187,7 @@ static double run_lanes(const urImpactSetup* s, urImpactWork* w, urLanes* L,
     for (int l = 0; l < n;) {
       int i = 0;
       while (w[i].d != d[l]) i++;
-      if (ur_impact_after_step(s, &w[i], texit[i], &r[i])) {
+      if (ur_impact_after_step(s, &w[i], texit[i], NULL, &r[i])) {
         d[l] = d[--n];
       } else {
         l++;

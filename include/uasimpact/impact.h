@@ -60,6 +60,8 @@ typedef struct {
   double neck_preload; /* settled upper-neck axial force, N (tension > 0) */
   double window;       /* a run ends this long after its first contact, s (model
                                       parameter "window"; none: until the engine ends it) */
+  int endrun;          /* 1: a run also ends once every criterion's value is final (model
+                                      parameter "endrun"; 0, the default: by the window) */
   urData* rest;        /* the settled stance (drone parked far away) */
   urStance* stance;    /* what another model with the same person can take (owned;
                                       NULL: none, e.g. after ur_impact_setup) */
@@ -96,11 +98,13 @@ typedef struct {
 /* per-thread work space */
 typedef struct {
   urData* d;
-  int rows;           /* history rows */
-  double* chan;       /* channel buffers */
-  double* work;       /* injury work space */
-  urContactRec* crec; /* ncand: the contacts of the last ur_impact_run (not of lane
+  int rows;                  /* history rows */
+  double* chan;              /* channel buffers */
+  double* work;              /* injury work space */
+  urContactRec* crec;        /* ncand: the contacts of the last ur_impact_run (not of lane
                                       runs) */
+  struct urImpactFinal* fin; /* the end on final values (endrun 1): the run's signals
+                                      (internal) */
 } urImpactWork;
 
 typedef struct {

@@ -36,7 +36,8 @@ int ur_impact_work_init(const urImpactSetup* s, urImpactWork* w) {
   w->chan = malloc(sizeof(double) * w->rows * NCHAN);
   w->work = malloc(sizeof(double) * ur_injury_work_size(w->rows));
   w->crec = malloc(sizeof(urContactRec) * (s->ncand + 1));
-  return w->chan && w->work && w->crec ? 0 : -1;
+  w->fin = s->endrun ? ur_impact_final_new(w->rows) : NULL;
+  return w->chan && w->work && w->crec && (w->fin || !s->endrun) ? 0 : -1;
 }
 
 void ur_impact_work_free(urImpactWork* w) {
@@ -44,6 +45,7 @@ void ur_impact_work_free(urImpactWork* w) {
   free(w->chan);
   free(w->work);
   free(w->crec);
+  ur_impact_final_free(w->fin);
   memset(w, 0, sizeof *w);
 }
 
@@ -192,17 +194,19 @@ void ur_impact_begin(const urImpactSetup* s, urImpactWork* w, const urImpactCond
   ur_data_copy(m, d, s->rest);
   ur_run_start(m, d, s->drone, pos, quat, vel);
   *texit = d->time + exit_time(s, d, vel);
+  ur_impact_final_start(w->fin, c->speed);
 }
 
-/* after a step: 0 go on, 1 the run is over (ended, failed, drone passed or window closed), -1
-   the history buffer is full (r says so) */
+/* after a step: 0 go on, 1 the run is over (ended, failed, drone passed, window closed or,
+   with endrun 1, every criterion final), -1 the history buffer is full (r says so) */
 int ur_impact_after_step(const urImpactSetup* s, const urImpactWork* w, double texit,
-                         urImpactResult* r) {
+                         const urInjuryParams* ip, urImpactResult* r) {
   const urModel* m = s->m;
   const urData* d = w->d;
   if (d->status < 0) return 1;
   if (d->t_first < 0 && d->time > texit + 2 * m->opt.dt) return 1;
   if (d->t_first >= 0 && d->time > d->t_first + s->window) return 1;
+  if (w->fin && ip && d->status == urSTAT_OK && ur_impact_final(s, w->fin, d, ip)) return 1;
   if (d->nhist >= w->rows - 1) {
     snprintf(r->reason, sizeof r->reason, "history buffer full at t = %g s", d->time);
     r->status = urSTAT_BADARG;
@@ -253,7 +257,7 @@ int ur_impact_run(const urImpactSetup* s, urImpactWork* w, const urImpactCond* c
   while (w->d->status == urSTAT_OK) {
     ur_step(s->m, w->d);
     contacts_record(s, w);
-    int e = ur_impact_after_step(s, w, texit, r);
+    int e = ur_impact_after_step(s, w, texit, ip, r);
     if (e < 0) return -1;
     if (e) break;
   }

@@ -74,7 +74,7 @@ void ur_impact_run_many(const urImpactSetup* s, urImpactLanes* L, const urImpact
     /* finished runs hand on their results; their lanes take the next offsets, or the last
        running lane moves into the gap */
     for (int l = 0; l < n;) {
-      int e = ur_impact_after_step(s, &sl[l].w, sl[l].texit, &sl[l].r);
+      int e = ur_impact_after_step(s, &sl[l].w, sl[l].texit, ip, &sl[l].r);
       if (e == 0) {
         l++;
         continue;

@@ -700,6 +700,7 @@ static int setup(urImpactSetup* s, const urModel* m, double settle_time, const u
   s->neck_preload = -sd[m->sensor[s->s_neck].adr + 2];
   s->rest = d;
   s->window = ur_model_param(m, "window", INFINITY);
+  s->endrun = ur_model_param(m, "endrun", 0) != 0;
   return 0;
 }
 

@@ -217,7 +217,7 @@ static void check_contacts(uraCtx* c, double dpar, double dperp, int want_bag) {
       double f = i < m->npair ? w.d->pair[i].fn : w.d->bag[b].ftgt[t];
       if (f > fmax[k]) fmax[k] = f;
     }
-    if (ur_impact_after_step(s, &w, texit, &r2)) break;
+    if (ur_impact_after_step(s, &w, texit, &c->st.injury, &r2)) break;
   }
   for (int k = 0; k < s->ncand; k++) {
     assert_memory_equal(&fmax[k], &c->work.crec[k].fmax, sizeof(double));
