@@ -12,6 +12,8 @@
 #                 (RESUME=build/calibration/log.csv: go on with a fit that was stopped)
 #   make refit-drone, make refit-bag  the refit on materials in two stages (the drone on B and C,
 #                 then the bag on A; uasimpact-model(5), CALIBRATION); build/refit-drone/, build/refit-bag/
+#   make refit-verify  the refit's logged optimum (stage 2's best row, the final point) evaluated
+#                 again, bit for bit (scripts/refit-verify.sh; minutes); build/refit-verify/
 #   make membrane-convergence  the membrane airbag's mesh and time-step convergence on case A
 #                 (scripts/membrane-convergence.sh; minutes of grids; its centre impacts are in
 #                 make check: tests/test_membrane_convergence.sh)
@@ -69,7 +71,7 @@ BENCH_BIN = $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 LIB     = $(BUILD)/libuasimpact.a
 APPLIB  = $(BUILD)/libuasimpact-app.a
 
-.PHONY: all deps run check test bench headdrop reproduce calibrate refit-drone refit-bag sensitivity install uninstall \
+.PHONY: all deps run check test bench headdrop reproduce calibrate refit-drone refit-bag refit-verify sensitivity install uninstall \
   clean check-san fuzz \
   membrane-convergence \
   check-tsan mpi mpideps testdeps format
@@ -218,6 +220,10 @@ refit-bag: all $(BUILD)/calibrate
 	exit 1; }
 	$(BUILD)/calibrate -s src/models/refit-bag.spec -o $(BUILD)/refit-bag \
 	  $(if $(RESUME),-r $(RESUME)) $(CALIBRATE_ARGS)
+# the refit's logged optimum evaluated again on this build, bit for bit (scripts/refit-verify.sh;
+# stage 2's best row and the final point: about ten minutes)
+refit-verify: all $(BUILD)/calibrate
+	@sh scripts/refit-verify.sh $(BUILD)/refit-verify
 
 # how far the public ranges of the unknowns move Table 17 (scripts/sensitivity.sh); minutes
 sensitivity: all
