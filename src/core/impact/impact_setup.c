@@ -126,11 +126,18 @@ static double deflection_max(const urModel* m, const urData* d, int drone) {
    same person to the bit as stepping the whole model with the drone held, when the drone's held
    step succeeds (it is the same at every step) and the person's bounding spheres stay below the
    parked drone's in every state evaluated (then no pair or airbag between the trees acts). 0:
-   the settled person in d, the drone parked, top raised as settle does; -1: d to be parked
-   and settled whole (a step failed, or the person rose too close) */
+   the settled person in d, the drone parked, top raised as settle does; -1: d as it came, to
+   be settled whole (a step failed, the person rose too close, or out of memory) */
 static int settle_alone(const urModel* m, urData* d, int drone, const urModel* p, long nstep,
                         double* top) {
-  if (ur_step(m, d) < 0) return -1;
+  urData* d0 = ur_data_new(m); /* d as it came: the whole settling starts from it on failure */
+  if (!d0) return -1;
+  ur_data_copy(m, d0, d);
+  if (ur_step(m, d) < 0) {
+    ur_data_copy(m, d, d0);
+    ur_data_free(d0);
+    return -1;
+  }
   double low = drone_low(m, d, drone), ptop = -INFINITY;
   urData* dp = ur_data_new(p);
   int ok = dp != NULL;
@@ -145,8 +152,11 @@ static int settle_alone(const urModel* m, urData* d, int drone, const urModel* p
   if (ok) {
     ur_impact_person_state(m, d, drone, p, dp);
     if (top) *top = fmax(*top, ptop);
+  } else {
+    ur_data_copy(m, d, d0);
   }
   ur_data_free(dp);
+  ur_data_free(d0);
   return ok ? 0 : -1;
 }
 
@@ -168,7 +178,6 @@ static double settle(const urModel* m0, urData* d, int drone, double t, double* 
     int done = settle_alone(m, d, drone, p, nstep, top) == 0;
     ur_model_free(p);
     if (done) return deflection_max(m, d, drone);
-    park(m, d, drone);
   }
   for (long k = 0; k < nstep; k++) {
     if (ur_step(m, d) < 0) return INFINITY;
