@@ -205,21 +205,23 @@ reproduce: all
 # RESUME=LOG replays LOG's evaluations (calibrate -r) and goes on
 $(BUILD)/calibrate: src/tools/calibrate.c $(APPLIB) $(LIB) $(FLAGS) | deps
 	$(CC) $(CFLAGS) -o $@ $< $(APPLIB) $(LIB) $(LDFLAGS) $(APP_LIBS) $(CORE_LIBS)
+# a resumed fit replays its log under the defaults it ran with (src/models/replay.pins)
+PINS = $(shell sh scripts/replay-pins.sh)
 calibrate: all $(BUILD)/calibrate
-	$(BUILD)/calibrate -o $(BUILD)/calibration $(if $(RESUME),-r $(RESUME)) $(CALIBRATE_ARGS)
+	$(BUILD)/calibrate -o $(BUILD)/calibration $(if $(RESUME),-r $(RESUME) $(PINS)) $(CALIBRATE_ARGS)
 
 # the refit on materials (uasimpact-model(5), CALIBRATION): stage 1, the drone on cases B and C;
 # stage 2, the bag on case A (its spec written from stage 1's result by scripts/refit.sh and
 # committed before it runs); hours at the membrane's mesh 14. RESUME=LOG resumes either.
 refit-drone: all $(BUILD)/calibrate
 	$(BUILD)/calibrate -s src/models/refit-drone.spec -o $(BUILD)/refit-drone \
-	  $(if $(RESUME),-r $(RESUME)) $(CALIBRATE_ARGS)
+	  $(if $(RESUME),-r $(RESUME) $(PINS)) $(CALIBRATE_ARGS)
 refit-bag: all $(BUILD)/calibrate
 	@test -r src/models/refit-bag.spec || { echo "make refit-bag: src/models/refit-bag.spec is \
 	written from stage 1's result: sh scripts/refit.sh bag RESULT > src/models/refit-bag.spec"; \
 	exit 1; }
 	$(BUILD)/calibrate -s src/models/refit-bag.spec -o $(BUILD)/refit-bag \
-	  $(if $(RESUME),-r $(RESUME)) $(CALIBRATE_ARGS)
+	  $(if $(RESUME),-r $(RESUME) $(PINS)) $(CALIBRATE_ARGS)
 # the refit's logged optimum evaluated again on this build, bit for bit (scripts/refit-verify.sh;
 # stage 2's best row and the final point: about ten minutes)
 refit-verify: all $(BUILD)/calibrate

@@ -8,13 +8,15 @@
 # and are checked by its resume.
 . tests/lib.sh
 CAL=${CALIBRATE:-build/calibrate}
+# the defaults the fit ran under, set on top of the spec (src/models/replay.pins)
+pins=$(sh scripts/replay-pins.sh)
 SPEC=src/models/refit-drone.spec
 LOG=src/models/refit-drone-log.csv
 
 check "stage 1's log has rows" cond '[ "$(grep -c "^[0-9]" "$LOG")" -gt 1 ]'
 
 # the first evaluation again: the declared spec at its start
-"$CAL" -e -s "$SPEC" -o "$TMP/first" >"$TMP/out" 2>"$TMP/err"
+"$CAL" -e -s "$SPEC" -o "$TMP/first" $pins >"$TMP/out" 2>"$TMP/err"
 check "the fit's start evaluates" cond '[ -s "$TMP/first/log.csv" ]'
 # the losses to the last digit; the point as the spec's start (the fit's own row went through
 # the logistic coordinates and back: within an ulp or two)
@@ -34,7 +36,7 @@ awk -F, -v hdr="$(grep '^eval,' "$LOG")" -v row="$best" '
   BEGIN { n = split(hdr, h, ","); split(row, r, ",")
           for (i = 2; i <= n; i++) { split(h[i], p, "/"); v[p[1]] = r[i] } }
   $1 == "free" && ($2 in v) { $5 = v[$2] } { print }' FS=' ' "$SPEC" >"$TMP/best.spec"
-"$CAL" -e -s "$TMP/best.spec" -o "$TMP/best" >"$TMP/out" 2>"$TMP/err"
+"$CAL" -e -s "$TMP/best.spec" -o "$TMP/best" $pins >"$TMP/out" 2>"$TMP/err"
 got=$(grep '^[0-9]' "$TMP/best/log.csv" | cut -d, -f2-)
 check "the best row reproduces its losses, bit for bit" \
   cond '[ -n "$got" ] && [ "$got" = "$(printf "%s" "$best" | cut -d, -f2-)" ]'
