@@ -33,6 +33,8 @@ static void bound_geom(urModel* m, urAirbag* b) {
       hi[k] = fmax(hi[k], mb->x0[3 * i + k]);
     }
   }
+  memcpy(b->nbox, lo, sizeof(lo));
+  memcpy(b->nbox + 3, hi, sizeof(hi));
   double c[3], h[3], s = 0;
   for (int k = 0; k < 3; k++) {
     c[k] = 0.5 * (lo[k] + hi[k]);
@@ -593,6 +595,94 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
 }
 
 
+/* does a bag that rides rigidly on its carrier (R, c, w: its pose and spin; bc: its bound's
+   centre) go live now. The first rule (liverule 0): once some target's bounding sphere comes
+   within 0.05 m of the bag's bound sphere. The rigid ride is exact while the carrier's tree moves
+   as one unspun rigid body under gravity alone: the nodes carry no gravity, so a live bag in free
+   fall would only sag against its mount (uasimpact-model(5), live). So the tighter rule
+   (liverule 1) takes the bag live once (b) that ends: the tree touches anything (its contacts and
+   its bags' this step, ur_tree_active), spins, or one of its joints moves; or (a) a target's
+   world box (urm_shape_box) comes within LIVE_GAP + LIVE_LEAD |v| of the world box of the
+   inflated nodes, v the target's speed against the carrier (its spin's part: |w| rbound): no
+   node or edge midpoint of the rigid bag can touch a target outside that box (contact_geom), and
+   the margin gives the bag LIVE_LEAD of live motion, and at least LIVE_GAP, before it can. */
+#define LIVE_GAP  0.02 /* m */
+#define LIVE_LEAD 1e-3 /* s */
+static int goes_live(const urModel* m, urData* d, const urAirbag* b, const double R[9],
+                     const double c[3], const double bc[3]) {
+  const urMembrane* mb = b->mem;
+  if (b->liverule == 0) {
+    for (int t = 0; t < b->ntarget; t++) {
+      int g = b->target[t];
+      double dc[3];
+      urm_sub(dc, d->gxpos + 3 * g, bc);
+      double r = mb->rbound + m->geom[g].rbound + 0.05;
+      if (urm_dot(dc, dc) < r * r) {
+        return 1;
+      }
+    }
+    return 0;
+  }
+  // (b) the carrier's tree jolted, spun or bent
+  int cb = m->geom[b->geom].body, tree = m->body[cb].tree;
+  if (ur_tree_active(m, d, tree)) {
+    return 1;
+  }
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* bi = m->body + i;
+    if (bi->tree != tree) {
+      continue;
+    }
+    for (int k = i == tree ? 3 : 0; k < bi->nv; k++) { /* the root's own velocity excepted */
+      if (d->qvel[bi->vadr + k] != 0) {
+        return 1;
+      }
+    }
+  }
+  // (a) a target's box near the nodes' box: its centre nc, half-widths nh (world)
+  const double* nb = b->nbox;
+  double nc[3], nh[3], vc[3];
+  for (int k = 0; k < 3; k++) {
+    nc[k] = c[k];
+    nh[k] = 0;
+    for (int j = 0; j < 3; j++) {
+      nc[k] += R[3 * k + j] * 0.5 * (nb[j] + nb[3 + j]);
+      nh[k] += fabs(R[3 * k + j]) * 0.5 * (nb[3 + j] - nb[j]);
+    }
+  }
+  ur_point_vel(m, d, cb, (const double[3]){0, 0, 0}, vc);
+  for (int t = 0; t < b->ntarget; t++) {
+    int g = b->target[t], gb = m->geom[g].body;
+    const double* gc = d->gxpos + 3 * g;
+    double vg[3], dv[3];
+    ur_point_vel(m, d, gb, m->geom[g].pos, vg);
+    urm_sub(dv, vg, vc);
+    const double* wg = d->cvel + 6 * gb; /* the target's spin (body frame: its norm) */
+    double rg = m->geom[g].rbound;
+    double margin = LIVE_GAP + LIVE_LEAD * (sqrt(urm_dot(dv, dv)) + sqrt(urm_dot(wg, wg)) * rg);
+    // the target's bounding sphere first, then its box
+    int far = 0;
+    for (int k = 0; k < 3 && !far; k++) {
+      far = fabs(gc[k] - nc[k]) > nh[k] + rg + margin;
+    }
+    if (far) {
+      continue;
+    }
+    urEllipsoid e;
+    double gh[3];
+    ur_geom_ellipsoid(m, d, g, &e);
+    urm_shape_box(&e, gh);
+    for (int k = 0; k < 3 && !far; k++) {
+      far = fabs(gc[k] - nc[k]) > nh[k] + gh[k] + margin;
+    }
+    if (!far) {
+      return 1;
+    }
+  }
+  return 0;
+}
+
+
 void urm_bag_loads(const urModel* m, urData* d, int ib) {
   const urAirbag* b = m->bag + ib;
   const urMembrane* mb = b->mem;
@@ -617,16 +707,9 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
     bc[k] = c[k] + R[3 * k] * cb0[0] + R[3 * k + 1] * cb0[1] + R[3 * k + 2] * cb0[2];
   }
 
-  // carried rigidly until a target comes near its bound
+  // carried rigidly until a target comes near it (or its carrier is jolted: goes_live)
   if (!bd->placed || !bd->live) {
-    int near = 0;
-    for (int t = 0; t < b->ntarget && !near; t++) {
-      int g = b->target[t];
-      double dc[3];
-      urm_sub(dc, d->gxpos + 3 * g, bc);
-      double r = mb->rbound + m->geom[g].rbound + 0.05;
-      near = urm_dot(dc, dc) < r * r;
-    }
+    int near = goes_live(m, d, b, R, c, bc);
     // placed on the carrier when the run starts and when it goes live (its nodes are not read
     // while it rides rigidly: no need to move them with the carrier every step)
     if (!bd->placed || near) {
