@@ -196,8 +196,8 @@ typedef struct {
   int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
   int liverule;    /* membrane: when it stops riding rigidly (engine_membrane.c; the model
                       language's live=, default 1): 0 once a target's bounding sphere comes
-                      within 0.05 m of its bound's, 1 once a target's box comes within a margin
-                      of its nodes' box or its carrier's tree is jolted */
+                      within 0.05 m of its bound's, 1 once a target comes within a margin of
+                      its nodes or edge midpoints or its carrier's tree is jolted */
   double nbox[6];  /* membrane, inflated: the box of its inflated nodes in the carrier's frame
                       (lo, hi; set with the bound by ur_model_inflate) */
 } urAirbag;
@@ -342,8 +342,9 @@ typedef struct {
   double strain;             /* membrane: largest yarn strain (Green, warp or weft) (Green) */
   int placed;                /* membrane: state initialised (0 after a reset); its nodes are
                                 placed on the carrier again when it goes live */
-  int live;                  /* membrane: integrated (a target came near), else carried
-                                      rigidly in its inflated state */
+  int live;                  /* membrane: integrated (a target came near, or its carrier
+                                      was jolted: urAirbag.liverule), else carried rigidly
+                                      in its inflated state */
 } urBagData;
 
 typedef struct {
