@@ -195,7 +195,7 @@ typedef struct {
   int madr;        /* first double of its run state in urData.mem */
   int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
   int liverule;    /* membrane: when it stops riding rigidly (engine_membrane.c; the model
-                      language's live=, default 1): 0 once a target's bounding sphere comes
+                      language's live=, default 0): 0 once a target's bounding sphere comes
                       within 0.05 m of its bound's, 1 once a target comes within a margin of
                       its nodes or edge midpoints or its carrier's tree is jolted */
   double nbox[6];  /* membrane, inflated: the box of its inflated nodes in the carrier's frame

@@ -176,7 +176,7 @@ static void test_bag_layer(void** state) {
 }
 
 
-/* a membrane bag's live=: 1 (boxes and jolts) unless declared, 0 the first rule, else refused
+/* a membrane bag's live=: 0 (the first rule) unless declared, 1 nodes and jolts, else refused
    saying what is accepted */
 static void test_bag_live(void** state) {
   static const char* const live[] = {"", " live=0", " live=1", " live=2"};
@@ -196,7 +196,7 @@ static void test_bag_live(void** state) {
       continue;
     }
     assert_non_null(m);
-    assert_int_equal(m->bag[ur_name_airbag(m, "bb")].liverule, i == 1 ? 0 : 1);
+    assert_int_equal(m->bag[ur_name_airbag(m, "bb")].liverule, i == 2 ? 1 : 0);
     ur_model_free(m);
   }
 }
