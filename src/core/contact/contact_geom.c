@@ -299,7 +299,6 @@ typedef struct {
   const double* R; /* orientation */
   const double* r; /* semi-axes */
   double q;        /* dual exponent p/(p-1) */
-  double dfl;      /* largest Hessian weight: SUP_FLOOR^(q-2) */
   int super;       /* p > 2 */
 } shapeData;
 
@@ -348,18 +347,27 @@ static double superrho(const urEllipsoid* e) {
   return rmin * rmin / ((e->p - 1) * pow(3, 1 / e->p) * rmax);
 }
 
+/* a superellipsoid's S->e.rho is left to superrho, and its largest Hessian weight to
+   hess_floor, where they are needed (each a call of pow, needed by a few calls in a hundred) */
 static void shapedata(const urEllipsoid* e, shapeData* S) {
   elldata(e, &S->e);
   S->R = e->R;
   S->r = e->r;
   S->super = e->p > 2;
   S->q = 2;
-  S->dfl = 1;
   if (S->super) {
     S->q = e->p / (e->p - 1);
-    S->dfl = pow(SUP_FLOOR, S->q - 2);
-    S->e.rho = superrho(e);
   }
+}
+
+/* the largest Hessian weight of a superellipsoid: SUP_FLOOR^(q-2) */
+static double hess_floor(const shapeData* S) {
+  return pow(SUP_FLOOR, S->q - 2);
+}
+
+/* the shape's smallest radius of curvature, bounded below */
+static double shaperho(const urEllipsoid* e, const shapeData* S) {
+  return S->super ? superrho(e) : S->e.rho;
 }
 
 /* h, its gradient and the Hessian data of one shape at unit u */
@@ -403,7 +411,7 @@ static void shapehess(const shapeData* S, const shapeEval* v, const double t1[3]
   for (int l = 0; l < 3; l++) {
     double a1 = S->r[l] * (R[l] * t1[0] + R[3 + l] * t1[1] + R[6 + l] * t1[2]);
     double a2 = S->r[l] * (R[l] * t2[0] + R[3 + l] * t2[1] + R[6 + l] * t2[2]);
-    double d = v->wh[l] >= SUP_FLOOR ? fabs(v->g[l]) / v->wh[l] : S->dfl;
+    double d = v->wh[l] >= SUP_FLOOR ? fabs(v->g[l]) / v->wh[l] : hess_floor(S);
     s11 += d * a1 * a1;
     s12 += d * a1 * a2;
     s22 += d * a2 * a2;
@@ -577,8 +585,9 @@ static int collide_super(const urEllipsoid* a, const urEllipsoid* b, double u[3]
   int conv;
   int iters = snewton(&A, &B, dc, scale, u0, &best, &conv);
 
-  // deep-penetration guard as for ellipsoids, with the superellipsoids' curvature bounds
-  if (best.f >= (A.e.rho + B.e.rho) * (1 - 1e-9) || !conv) {
+  // deep-penetration guard as for ellipsoids, with the superellipsoids' curvature bounds (a
+  // separated pair, f < 0, passes it whatever they are)
+  if (!conv || (best.f >= 0 && best.f >= (shaperho(a, &A) + shaperho(b, &B)) * (1 - 1e-9))) {
     int ns = startset(a, b, dc, dist, scale, starts);
     for (int s = 0; s < ns; s++) {
       iters += snewton(&A, &B, dc, scale, starts[s], &cur, &conv);

@@ -345,10 +345,18 @@ void ur_contacts_narrow(const urModel* m, urData* d) {
     }
   }
   d->npcommit = d->npactive = 0;
+
+  // the pairs whose bounding spheres overlap, listed first without a branch (in B's grid 9 of
+  // its 121 pairs a step, on average, where a test and jump per pair mispredicted wherever the
+  // pattern changed); narrow1 changes only its own pair's depth, so the list is the one the loop
+  // would have found
+  int cand[np > 0 ? np : 1], nc = 0;
   for (int i = 0; i < np; i++) {
-    if (-d->pdepth[i] > 0) {
-      continue;
-    }
+    cand[nc] = i;
+    nc += !(-d->pdepth[i] > 0);
+  }
+  for (int j = 0; j < nc; j++) {
+    int i = cand[j];
     narrow1(m, d, i);
     const urPairData* pd = d->pair + i;
     if (d->pdepth[i] > 0 || pd->ls.touching) {

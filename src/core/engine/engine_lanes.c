@@ -183,69 +183,51 @@ static inline __attribute__((always_inline)) void axisrot4(urV4 R[9], const urV4
 #undef urBC
 #include "kernels/engine_template_check.h"
 
-// square roots in place of the pairs' entries of L->gap (the pairs between two ellipsoids)
-static void sqrt_pairs_default(const urModel* m, urLanes* L) {
-  for (int i = 0; i < m->npair; i++) {
-    if (m->pair[i].geom2 >= 0) {
-      for (int l = 0; l < urNLANE; l++) {
-        L->gap[i][l] = sqrt(L->gap[i][l]);
-      }
-    }
+// the broad phase of ur_contacts_broad over the vectors, in one pass over the pairs: the same
+// expressions (IEEE square roots are exact, so one instruction for four lanes gives each lane's
+// bits); L->gap ends as the pairs' depths (minus the gaps). SQRT4 is the square root of a vector,
+// lane by lane or in one instruction.
+#define BROAD4(SQRT4)                                                                              \
+  for (int i = 0; i < m->npair; i++) {                                                             \
+    const urPair* pr = m->pair + i;                                                                \
+    const urV4* ca = L->gxpos + 3 * pr->geom1;                                                     \
+    urV4 gap;                                                                                      \
+    if (pr->geom2 < 0) {                                                                           \
+      gap = ca[2] - bc4(m->geom[pr->geom1].rbound);                                                \
+    } else {                                                                                       \
+      const urV4* cb = L->gxpos + 3 * pr->geom2;                                                   \
+      urV4 dx0 = cb[0] - ca[0], dx1 = cb[1] - ca[1], dx2 = cb[2] - ca[2];                          \
+      urV4 d2 = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;                                                 \
+      gap = SQRT4(d2) - bc4(m->geom[pr->geom1].rbound) - bc4(m->geom[pr->geom2].rbound);           \
+    }                                                                                              \
+    L->gap[i] = -gap;                                                                              \
   }
+
+// (macros: clang refuses 256-bit vectors by value where AVX is not enabled, as for bc4)
+#define sqrt4_lanes(v) ((urV4){sqrt((v)[0]), sqrt((v)[1]), sqrt((v)[2]), sqrt((v)[3])})
+static void broad4_default(const urModel* m, urLanes* L) {
+  BROAD4(sqrt4_lanes)
 }
+#undef sqrt4_lanes
 
 #if urAVX2
 #include <immintrin.h>
-__attribute__((target("avx2"))) static void sqrt_pairs_avx2(const urModel* m, urLanes* L) {
-  for (int i = 0; i < m->npair; i++) {
-    if (m->pair[i].geom2 >= 0) {
-      double* g = (double*)(L->gap + i);
-      _mm256_store_pd(g, _mm256_sqrt_pd(_mm256_load_pd(g)));
-    }
-  }
+#define sqrt4_avx2(v) ((urV4)_mm256_sqrt_pd((__m256d)(v)))
+__attribute__((target("avx2"))) static void broad4_avx2(const urModel* m, urLanes* L) {
+  BROAD4(sqrt4_avx2)
 }
+#undef sqrt4_avx2
 #endif
+#undef BROAD4
 
-// the broad phase of ur_contacts_broad over the vectors: the same expressions (IEEE square
-// roots are exact, so one instruction for four lanes gives each lane's bits); L->gap ends as
-// the pairs' depths (minus the gaps)
-urCLONES static void broad4(const urModel* m, urLanes* L) {
-  // squared centre distances; ground pairs: the gap
-  for (int i = 0; i < m->npair; i++) {
-    const urPair* pr = m->pair + i;
-    const urV4* ca = L->gxpos + 3 * pr->geom1;
-    if (pr->geom2 < 0) {
-      L->gap[i] = ca[2] - bc4(m->geom[pr->geom1].rbound);
-    } else {
-      const urV4* cb = L->gxpos + 3 * pr->geom2;
-      urV4 dx0 = cb[0] - ca[0], dx1 = cb[1] - ca[1], dx2 = cb[2] - ca[2];
-      L->gap[i] = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
-    }
-  }
-
-  // distances
+static void broad4(const urModel* m, urLanes* L) {
 #if urAVX2
   if (__builtin_cpu_supports("avx2")) {
-    sqrt_pairs_avx2(m, L);
-  } else {
-    sqrt_pairs_default(m, L);
+    broad4_avx2(m, L);
+    return;
   }
-#else
-  sqrt_pairs_default(m, L);
 #endif
-
-  // minus the radii
-  for (int i = 0; i < m->npair; i++) {
-    const urPair* pr = m->pair + i;
-    if (pr->geom2 >= 0) {
-      L->gap[i] = L->gap[i] - bc4(m->geom[pr->geom1].rbound) - bc4(m->geom[pr->geom2].rbound);
-    }
-  }
-
-  // depths: minus the gaps (exact)
-  for (int i = 0; i < m->npair; i++) {
-    L->gap[i] = -L->gap[i];
-  }
+  broad4_default(m, L);
 }
 
 // ur_restraints_kin over the vectors

@@ -177,7 +177,10 @@ static void bodymotion(const urData* d, int b, double R[9], double c[3], double 
 static double box_gap2(const double* bx, const double p[3]) {
   double q = 0;
   for (int k = 0; k < 3; k++) {
-    double u = p[k] < bx[k] ? bx[k] - p[k] : p[k] > bx[3 + k] ? p[k] - bx[3 + k] : 0;
+    // the larger of the gaps below and above (at most one positive: lo <= hi), or 0: the
+    // distance along k without a branch (maxsd)
+    double a = bx[k] - p[k], b = p[k] - bx[3 + k], u = a > b ? a : b;
+    u = u > 0 ? u : 0;
     q += u * u;
   }
   return q;

@@ -1,5 +1,5 @@
 /* impact_final.c: an end of run once every injury criterion's value is final (model parameter
- * endrun 1, 'set endrun final'; the default 0 ends a run by the window alone). Each history row
+ * endrun 1, the default, or 'set endrun final'; 0 ends a run by the window alone). Each history row
  * gives the signals the criteria are maxima of: the head's resultant acceleration (HIC), the
  * neck's Nij at the sample, the thorax's and abdomen's V(t) C(t) (VC) and the thorax's
  * deflection (Dmax). Final means: from FIN_SPAN after the first contact on, with the drone

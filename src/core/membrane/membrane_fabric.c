@@ -414,7 +414,9 @@ AI void candidates4(const lawk* k, const urm4 E[3], urm4i act, urm4* u1, urm4* u
    1 % of |u| the five candidates (candidates4) tried against it, Newton restarted from the best
    one where it beats the warm start; then full Newton steps that raise G, until a step below
    1e-6 of |u| (or 40 steps, or a Hessian that is not negative definite). Every lane runs the
-   scalar code's operations in its order (masked as it finishes), so its bits are wrinkled()'s.
+   scalar code's operations in its order (masked as it finishes), so its bits are wrinkled()'s;
+   two of them off the iteration's chain: the shift's square root only where it may shift, the
+   shear's inverse at the step's u beside its G.
    A lane off that path (no warm start, a step to backtrack) is left to the scalar wrinkled():
    its bit in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the
    lanes not done here); uw updated for the lanes done. */
@@ -424,25 +426,40 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
   urm4i warm = (u1 != bc4(0)) | (u2 != bc4(0));
   urm4i fb = act & ~warm, live = act & warm;
   urm4 G = gdual4(k, E, u1, u2);
+  // the shear's inverse at u (Em12, kk): computed at the next step's u while G is, off the
+  // iteration's chain of divisions, where every lane's u came from that step (fresh)
+  urm4 Em12n = bc4(0), kkn = bc4(0);
+  int fresh = 0;
   for (int it = 0; it < 40 && any4(live); it++) {
-    urm4 S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk;
+    urm4 S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk = kkn, Em12 = Em12n;
+    if (!fresh) {
+      Em12 = bc4(0.5) * shear_inv4(k, S12, &kk);
+    }
     urm4 Em11 = k->v.a11 * S11 + k->v.a12 * S22, Em22 = k->v.a12 * S11 + k->v.a22 * S22;
-    urm4 Em12 = bc4(0.5) * shear_inv4(k, S12, &kk);
     urm4 r1 = (E[0] - Em11) * u1 + (E[2] - Em12) * u2;
     urm4 r2 = (E[2] - Em12) * u1 + (E[1] - Em22) * u2;
     urm4 M11 = E[0] - (Em11 + bc4(2) * k->v.a11 * S11 + bc4(0.5) * kk * S22);
     urm4 M12 = E[2] - (Em12 + (bc4(2) * k->v.a12 + bc4(0.5) * kk) * S12);
     urm4 M22 = E[1] - (Em22 + bc4(2) * k->v.a22 * S22 + bc4(0.5) * kk * S11);
     urm4 mm = bc4(0.5) * (M11 + M22), hh = bc4(0.5) * (M11 - M22);
-    urm4 lmax = mm + sqrt4(hh * hh + M12 * M12), tr = fabs4(M11) + fabs4(M22);
-    urm4i shift = lmax > bc4(-1e-3) * tr;
-    urm4 sh = lmax + bc4(1e-3) * tr;
-    M11 = sel4(shift, M11 - sh, M11);
-    M22 = sel4(shift, M22 - sh, M22);
+    urm4 X = hh * hh + M12 * M12, tr = fabs4(M11) + fabs4(M22), T = bc4(-1e-3) * tr;
+    // the shift needs lmax = mm + sqrt(X) only where lmax > T may hold: sqrt(X) below T - mm
+    // by 1e-12 relative (far above the roundings of D, D^2, X (1 + 1e-12) and the root) gives
+    // lmax <= T, the rounding of mm + sqrt(X) being monotone and T a double (no shift there)
+    urm4 D = T - mm;
+    urm4i sure = (D > bc4(0)) & (X * bc4(1 + 1e-12) < D * D);
+    if (!all4(sure)) {
+      urm4 lmax = mm + sqrt4(X);
+      urm4i shift = lmax > T;
+      urm4 sh = lmax + bc4(1e-3) * tr;
+      M11 = sel4(shift, M11 - sh, M11);
+      M22 = sel4(shift, M22 - sh, M22);
+    }
     urm4 det = M11 * M22 - M12 * M12;
     urm4 d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
     urm4 dd = d1 * d1 + d2 * d2, uu = u1 * u1 + u2 * u2;
     urm4i pd = det > bc4(0), step = live; /* the lanes that take this iteration's step */
+    int redo = 0;
     if (it == 0) {
       // the warm start kept alone only when Newton stays near it; else the candidates tried
       // against it, Newton restarted (the next iteration) where one beats it
@@ -450,7 +467,9 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
       if (any4(far)) {
         urm4 G0 = G;
         candidates4(k, E, far, &u1, &u2, &G);
-        step &= ~(far & (G > G0));
+        urm4i won = far & (G > G0);
+        step &= ~won;
+        redo = any4(won); /* a lane restarts from a candidate's u: its shear not carried */
       }
     }
     urm4i stop = step & ~pd; /* not concave even shifted: the scalar code stops there */
@@ -462,7 +481,8 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
     live &= ~conv;
     step &= ~conv;
     // the full step (t = 1) taken when G does not fall beyond rounding; else the scalar code
-    urm4 v1 = u1 + d1, v2 = u2 + d2;
+    urm4 v1 = u1 + d1, v2 = u2 + d2, kv;
+    urm4 Ev = bc4(0.5) * shear_inv4(k, v1 * v2, &kv);
     urm4 Gn = gdual4(k, E, v1, v2), tol = bc4(1e-13) * fabs4(G);
     urm4i up = Gn >= G - tol;
     fb |= step & ~up;
@@ -471,6 +491,9 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
     u1 = sel4(step, v1, u1);
     u2 = sel4(step, v2, u2);
     G = sel4(step, Gn, G);
+    Em12n = Ev; /* every lane still live stepped to v, unless one restarts (redo) */
+    kkn = kv;
+    fresh = !redo;
   }
   urm4i done = act & ~fb;
   for (int l = 0; l < 4; l++) {

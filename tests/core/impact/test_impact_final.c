@@ -80,6 +80,8 @@ static void case_c(void** state) {
 /* the setting: window or final, the model parameter endrun 0 or 1 */
 static void setting(void** state) {
   uraCtx* c = *state;
+  /* final is the default since issue 36 (window before: src/models/replay.pins pins it) */
+  assert_int_equal(ura_setup(c)->endrun, 1);
   run_rc(c, "set endrun final", 0);
   assert_int_equal(ura_setup(c)->endrun, 1);
   run_rc(c, "set endrun window", 0);
