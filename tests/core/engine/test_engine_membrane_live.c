@@ -62,8 +62,8 @@ static urLiveCount run(const char* rule, double dpar, double dperp) {
   assert_int_equal(ctx_setup(&st), 0);
   uraCtx* c = st;
   char line[120];
-  snprintf(line, sizeof line, "case A; set wind 0; set endrun window; set bag_inflate 0; set bag_live %s",
-           rule);
+  snprintf(line, sizeof line,
+           "case A; set wind 0; set endrun window; set bag_inflate 0; set bag_live %s", rule);
   run_rc(c, line, 0);
   const urImpactSetup* s = ura_setup(c);
   assert_non_null(s);
