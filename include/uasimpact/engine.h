@@ -194,6 +194,12 @@ typedef struct {
   int inflated;    /* membrane: 1 once mem is the inflated bag (ur_model_inflate) */
   int madr;        /* first double of its run state in urData.mem */
   int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
+  int liverule;    /* membrane: when it stops riding rigidly (engine_membrane.c; the model
+                      language's live=, default 0): 0 once a target's bounding sphere comes
+                      within 0.05 m of its bound's, 1 once a target comes within a margin of
+                      its nodes or edge midpoints or its carrier's tree is jolted */
+  double nbox[6];  /* membrane, inflated: the box of its inflated nodes in the carrier's frame
+                      (lo, hi; set with the bound by ur_model_inflate) */
 } urAirbag;
 
 typedef struct {
@@ -336,8 +342,9 @@ typedef struct {
   double strain;             /* membrane: largest yarn strain (Green, warp or weft) (Green) */
   int placed;                /* membrane: state initialised (0 after a reset); its nodes are
                                 placed on the carrier again when it goes live */
-  int live;                  /* membrane: integrated (a target came near), else carried
-                                      rigidly in its inflated state */
+  int live;                  /* membrane: integrated (a target came near, or its carrier
+                                      was jolted: urAirbag.liverule), else carried rigidly
+                                      in its inflated state */
 } urBagData;
 
 typedef struct {

@@ -10,8 +10,8 @@
  * Euler), in sub-steps when the fabric's stable step is smaller than the multibody step (fabric and
  * gas forces recomputed each sub-step, contact forces held over the step). A penalty beyond the
  * explicit bound (kc_alpha > 1) is made linearly implicit along each node's contact normal
- * (contact_implicit). Until a target comes near, the bag rides rigidly in its inflated state (no
- * integration). */
+ * (contact_implicit). Until it goes live (a target near, or its carrier jolted: goes_live), the
+ * bag rides rigidly in its inflated state (no integration). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -33,6 +33,8 @@ static void bound_geom(urModel* m, urAirbag* b) {
       hi[k] = fmax(hi[k], mb->x0[3 * i + k]);
     }
   }
+  memcpy(b->nbox, lo, sizeof(lo));
+  memcpy(b->nbox + 3, hi, sizeof(hi));
   double c[3], h[3], s = 0;
   for (int k = 0; k < 3; k++) {
     c[k] = 0.5 * (lo[k] + hi[k]);
@@ -596,6 +598,120 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
 }
 
 
+/* does a bag that rides rigidly on its carrier (R, c: its pose; bc: its bound's centre) go live
+   now. The first rule (liverule 0): once some target's bounding sphere comes within 0.05 m of the
+   bag's bound sphere. The rigid ride is exact while the carrier's tree moves as one unspun rigid
+   body under gravity alone (the nodes carry no gravity: a live bag in free fall only sags
+   against its mount; uasimpact-model(5), live). So the tighter rule (liverule 1) takes the bag
+   live once (b) that ends: the tree touches anything (its contacts and its bags' this step,
+   ur_tree_active), spins, or one of its joints moves (beyond LIVE_STILL: the ABA's roundings
+   leave ~1e-19); or (a) a target comes within LIVE_GAP + LIVE_LEAD |v| of a node of the rigid
+   bag, v the target's speed against the carrier (its spin's part |w| rbound): the bag then has
+   LIVE_LEAD of live motion, and at least LIVE_GAP, before it can touch. Contact acts only where a
+   node or an edge's midpoint is inside a target (contact_geom): so each of them is tested
+   against the target's bounding sphere and its box (urm_shape_box, in the carrier's frame)
+   widened by the margin, after two cheaper bounds (the spheres, the target's sphere against the
+   nodes' box, which holds the midpoints too). */
+#define LIVE_GAP   0.005 /* m */
+#define LIVE_LEAD  1e-3  /* s */
+#define LIVE_STILL 1e-9  /* rad/s, m/s */
+static int goes_live(const urModel* m, urData* d, const urAirbag* b, const double R[9],
+                     const double c[3], const double bc[3]) {
+  const urMembrane* mb = b->mem;
+  if (b->liverule == 0) {
+    for (int t = 0; t < b->ntarget; t++) {
+      int g = b->target[t];
+      double dc[3];
+      urm_sub(dc, d->gxpos + 3 * g, bc);
+      double r = mb->rbound + m->geom[g].rbound + 0.05;
+      if (urm_dot(dc, dc) < r * r) {
+        return 1;
+      }
+    }
+    return 0;
+  }
+  // (b) the carrier's tree jolted, spun or bent
+  int cb = m->geom[b->geom].body, tree = m->body[cb].tree;
+  if (ur_tree_active(m, d, tree)) {
+    return 1;
+  }
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* bi = m->body + i;
+    for (int k = i == tree ? 3 : 0; bi->tree == tree && k < bi->nv; k++) { /* root: its spin */
+      if (fabs(d->qvel[bi->vadr + k]) > LIVE_STILL) {
+        return 1;
+      }
+    }
+  }
+  // (a) a target near a node: the nodes' box in the world (centre nc, half-widths nh)
+  const double* nb = b->nbox;
+  double nc[3], nh[3], vc[3];
+  for (int k = 0; k < 3; k++) {
+    nc[k] = c[k];
+    nh[k] = 0;
+    for (int j = 0; j < 3; j++) {
+      nc[k] += R[3 * k + j] * 0.5 * (nb[j] + nb[3 + j]);
+      nh[k] += fabs(R[3 * k + j]) * 0.5 * (nb[3 + j] - nb[j]);
+    }
+  }
+  ur_point_vel(m, d, cb, (const double[3]){0, 0, 0}, vc);
+  for (int t = 0; t < b->ntarget; t++) {
+    int g = b->target[t], gb = m->geom[g].body;
+    const double* gc = d->gxpos + 3 * g;
+    double vg[3], dv[3], dc[3];
+    ur_point_vel(m, d, gb, m->geom[g].pos, vg);
+    urm_sub(dv, vg, vc);
+    const double* wg = d->cvel + 6 * gb; /* the target's spin (body frame: its norm) */
+    double rg = m->geom[g].rbound;
+    double margin = LIVE_GAP + LIVE_LEAD * (sqrt(urm_dot(dv, dv)) + sqrt(urm_dot(wg, wg)) * rg);
+    // the spheres, then the target's sphere against the nodes' box
+    double r = mb->rbound + rg + margin;
+    urm_sub(dc, gc, bc);
+    int far = urm_dot(dc, dc) > r * r;
+    for (int k = 0; k < 3 && !far; k++) {
+      far = fabs(gc[k] - nc[k]) > nh[k] + rg + margin;
+    }
+    if (far) {
+      continue;
+    }
+    // each node against the target's sphere and box in the carrier's frame (centre gl)
+    urEllipsoid e;
+    ur_geom_ellipsoid(m, d, g, &e);
+    double gl[3], Rl[9], gh[3];
+    urm_sub(dc, gc, c);
+    for (int k = 0; k < 3; k++) {
+      gl[k] = R[k] * dc[0] + R[3 + k] * dc[1] + R[6 + k] * dc[2];
+      for (int j = 0; j < 3; j++) {
+        Rl[3 * k + j] = R[k] * e.R[j] + R[3 + k] * e.R[3 + j] + R[6 + k] * e.R[6 + j];
+      }
+    }
+    memcpy(e.R, Rl, sizeof(Rl));
+    urm_shape_box(&e, gh);
+    for (int k = 0; k < 3; k++) {
+      gh[k] += margin;
+    }
+    double rr = (rg + margin) * (rg + margin);
+    for (int i = 0; i < mb->nn + mb->ne; i++) {
+      double x[3];
+      if (i < mb->nn) {
+        memcpy(x, mb->x0 + 3 * i, sizeof(x));
+      } else {
+        const int* en = mb->enode + 2 * (i - mb->nn);
+        for (int k = 0; k < 3; k++) {
+          x[k] = 0.5 * (mb->x0[3 * en[0] + k] + mb->x0[3 * en[1] + k]);
+        }
+      }
+      double u[3] = {x[0] - gl[0], x[1] - gl[1], x[2] - gl[2]};
+      if (fabs(u[0]) <= gh[0] && fabs(u[1]) <= gh[1] && fabs(u[2]) <= gh[2] &&
+          urm_dot(u, u) <= rr) {
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+
 void urm_bag_loads(const urModel* m, urData* d, int ib) {
   const urAirbag* b = m->bag + ib;
   const urMembrane* mb = b->mem;
@@ -620,16 +736,9 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
     bc[k] = c[k] + R[3 * k] * cb0[0] + R[3 * k + 1] * cb0[1] + R[3 * k + 2] * cb0[2];
   }
 
-  // carried rigidly until a target comes near its bound
+  // carried rigidly until a target comes near it (or its carrier is jolted: goes_live)
   if (!bd->placed || !bd->live) {
-    int near = 0;
-    for (int t = 0; t < b->ntarget && !near; t++) {
-      int g = b->target[t];
-      double dc[3];
-      urm_sub(dc, d->gxpos + 3 * g, bc);
-      double r = mb->rbound + m->geom[g].rbound + 0.05;
-      near = urm_dot(dc, dc) < r * r;
-    }
+    int near = goes_live(m, d, b, R, c, bc);
     // placed on the carrier when the run starts and when it goes live (its nodes are not read
     // while it rides rigidly: no need to move them with the carrier every step)
     if (!bd->placed || near) {

@@ -221,6 +221,14 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
   if (ur_mem_spec_check(s, err, sizeof(err))) {
     return url_fail(p, vm->line, "airbag '%s': membrane: %s", b->name, err);
   }
+  double live = url_num(b, "live", 0);
+  if (live != 0 && live != 1) {
+    return url_fail(p, url_get(b, "live")->line,
+                    "airbag '%s': live must be 0 (the first rule: bounding spheres) or 1 "
+                    "(nodes and jolts; uasimpact-model(5), live), got %g",
+                    b->name, live);
+  }
+  bag->liverule = (int)live;
 
   // supports: ellipsoids of the carrier's own tree the fabric presses against
   const Val* vp = url_get(b, "support");

@@ -3,7 +3,8 @@
  * fracture moment), the law between a drone part and a person's layer (Hertz's combination of
  * both materials and radii, the layer's thickness and bone, a shell in series), a law layer (the
  * person's own law), a foam's backing derived from the person's layer, a declared law that
- * overrides a derivable one (kept, and noted), and the errors of each statement.
+ * overrides a derivable one (kept, and noted), and the errors of each statement; a membrane
+ * bag's target layers and its rule for going live (live=).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -172,6 +173,32 @@ static void test_bag_layer(void** state) {
                          "E_oed / h = 4.87049e+09 N/m^3"));
   assert_null(strstr(m->derived, "on jaw"));
   ur_model_free(m);
+}
+
+
+/* a membrane bag's live=: 0 (the first rule) unless declared, 1 nodes and jolts, else refused
+   saying what is accepted */
+static void test_bag_live(void** state) {
+  static const char* const live[] = {"", " live=0", " live=1", " live=2"};
+  for (int i = 0; i < 4; i++) {
+    char err[256], text[2048];
+    snprintf(text, sizeof text,
+             "%sairbag bb geom=shell p0=101325 patm=101325 v0=0.01 gamma=1.4 kappa=1 "
+             "thickness=0.1 targets=cranium membrane=1 size=0.15,0.15 depth=0.08 "
+             "mount=0,0,-0.1 mesh=3%s\n",
+             HEAD DRONE, live[i]);
+    urModel* m = parse1(text, NULL, 0, err);
+    if (i == 3) {
+      assert_null(m);
+      print_message("%s\n", err);
+      assert_non_null(strstr(err, "airbag 'bb': live must be 0 (the first rule"));
+      assert_non_null(strstr(err, "got 2"));
+      continue;
+    }
+    assert_non_null(m);
+    assert_int_equal(m->bag[ur_name_airbag(m, "bb")].liverule, i == 2 ? 1 : 0);
+    ur_model_free(m);
+  }
 }
 
 
@@ -419,7 +446,7 @@ int main(void) {
       cmocka_unit_test(test_override),        cmocka_unit_test(test_bag_layer),
       cmocka_unit_test(test_foam_curve),      cmocka_unit_test(test_errors),
       cmocka_unit_test(test_shell_crush),     cmocka_unit_test(test_law_layer),
-      cmocka_unit_test(test_backing_derived),
+      cmocka_unit_test(test_backing_derived), cmocka_unit_test(test_bag_live),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
