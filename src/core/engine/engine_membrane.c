@@ -603,7 +603,8 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
    bag's bound sphere. The rigid ride is exact while the carrier's tree moves as one unspun rigid
    body under gravity alone (the nodes carry no gravity: a live bag in free fall only sags
    against its mount; uasimpact-model(5), live). So the tighter rule (liverule 1) takes the bag
-   live once (b) that ends: the tree touches anything (its contacts and its bags' this step,
+   live, once the first rule holds (never before it: a jolt far from the person, as the bottom
+   bag's strike is to A2's front bag, leaves a bag rigid as before), when (b) that ends: the tree touches anything (its contacts and its bags' this step,
    ur_tree_active), spins, or one of its joints moves (beyond LIVE_STILL: the ABA's roundings
    leave ~1e-19); or (a) a target comes within LIVE_GAP + LIVE_LEAD |v| of a node of the rigid
    bag, v the target's speed against the carrier (its spin's part |w| rbound): the bag then has
@@ -618,17 +619,17 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
 static int goes_live(const urModel* m, urData* d, const urAirbag* b, const double R[9],
                      const double c[3], const double bc[3]) {
   const urMembrane* mb = b->mem;
-  if (b->liverule == 0) {
-    for (int t = 0; t < b->ntarget; t++) {
-      int g = b->target[t];
-      double dc[3];
-      urm_sub(dc, d->gxpos + 3 * g, bc);
-      double r = mb->rbound + m->geom[g].rbound + 0.05;
-      if (urm_dot(dc, dc) < r * r) {
-        return 1;
-      }
-    }
-    return 0;
+  // the first rule, which the second refines: never live before it
+  int near = 0;
+  for (int t = 0; t < b->ntarget && !near; t++) {
+    int g = b->target[t];
+    double dc[3];
+    urm_sub(dc, d->gxpos + 3 * g, bc);
+    double r = mb->rbound + m->geom[g].rbound + 0.05;
+    near = urm_dot(dc, dc) < r * r;
+  }
+  if (!near || b->liverule == 0) {
+    return near;
   }
   // (b) the carrier's tree jolted, spun or bent
   int cb = m->geom[b->geom].body, tree = m->body[cb].tree;

@@ -5,7 +5,7 @@
  * the drone's tree touched anything; at the centre the bag rides rigidly for a while after the
  * jump, is live at its first contact force and at least 10 steps before it (the rule's 1 ms
  * lead: 20 steps at 7.48 m/s); where the drone's frame meets the person first, the bag is live
- * from the step its tree touches. With the first rule (bag_live 0) the bag goes live at the first
+ * from the step its tree touches; never before the first rule would take it. With the first rule (bag_live 0) the bag goes live at the first
  * step after the jump and its counts are those measured on main before the change (a5010a2,
  * whose runs ended by the window and whose bags were inflated by kinetic damping, as here: 89
  * live steps before the first contact at the centre, 2490 steps). */
@@ -117,6 +117,7 @@ static void test_centre(void** state) {
   assert_true(t.contact > 0 && t.first_live > 1);
   assert_true(t.first_live <= t.contact - 10);
   assert_true(t.before >= 10 && t.before < o.before);
+  assert_true(t.first_live >= o.first_live);
   assert_int_equal(o.rigid_in, 0);
   assert_int_equal(o.first_live, 1);
   assert_int_equal(o.before, 89);
@@ -132,6 +133,9 @@ static void test_jolt(void** state) {
   assert_true(t.touch > 0);
   assert_true(t.contact == 0 || t.touch < t.contact);
   assert_true(t.first_live > 0 && t.first_live <= t.touch);
+  /* never live before the first rule (a jolt far from the person leaves the bag rigid) */
+  urLiveCount o = run("0", 0, -0.7);
+  assert_true(t.first_live >= o.first_live);
 }
 
 int main(void) {
