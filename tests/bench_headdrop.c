@@ -11,12 +11,8 @@
 #include <string.h>
 #include "uasimpact/engine.h"
 #include "uasimpact/modellang.h"
+#include "../src/app/case/builtin.h"
 
-typedef struct {
-  const char* name;
-  const char* text;
-} urBuiltinModel;
-extern const urBuiltinModel ur_builtin_models[];
 
 #define G      9.80665
 #define H_DROP 0.376 /* m: 14.8 in */
@@ -25,10 +21,7 @@ extern const urBuiltinModel ur_builtin_models[];
 /* the logical line of the built-in human model that starts with prefix (continuations joined),
    or "" */
 static void statement(const char* prefix, char* out, size_t n) {
-  const char* t = NULL;
-  for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
-    if (!strcmp(b->name, "human")) t = b->text;
-  }
+  const char* t = ura_builtin_text("human");
   out[0] = 0;
   for (const char* l = t; l && *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : NULL) {
     if (strncmp(l, prefix, strlen(prefix))) continue;

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "case.h"
+#include "builtin.h"
 
 
 #define SETTLE_SECONDS 1.0         /* settling of the stance, s (it is still within 0.1 mm) */
@@ -16,11 +17,6 @@
   380 /* a bag inflated for a run gets a note from this many nodes
                                       (mesh 8: some seconds) */
 
-typedef struct {
-  const char* name;
-  const char* text;
-} urBuiltinModel;
-extern const urBuiltinModel ur_builtin_models[];
 
 /* built-in order: the person, the drone, its airbags, the simulation options */
 static const char* const builtin_order[] = {"human", "ra3", "airbags", "sim", NULL};
@@ -227,12 +223,10 @@ int ura_models_init(uraCtx* c) {
   uraPart np[uraMAXPARTS];
   int nn = 0;
   for (int i = 0; builtin_order[i]; i++) {
-    for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
-      if (!strcmp(b->name, builtin_order[i]) &&
-          parts_add(c, np, &nn, b->text, b->name, "built-in")) {
-        parts_free(np, nn);
-        return -1;
-      }
+    const char* t = ura_builtin_text(builtin_order[i]);
+    if (t && parts_add(c, np, &nn, t, builtin_order[i], "built-in")) {
+      parts_free(np, nn);
+      return -1;
     }
   }
   return parts_commit(c, np, nn, NULL);

@@ -20,6 +20,7 @@
 #include <sys/stat.h>
 
 #include "scale.h"
+#include "../case/builtin.h"
 
 #define MAXPART  (1L << 34) /* largest part read, bytes */
 #define MAGICMAX 32         /* the most bytes read of a first line before it is known a part's */
@@ -362,11 +363,6 @@ int ura_part_parse(char* text, size_t n, const char* path, uraPartFile* p, char*
 
 /* ---- what the distributors share: the checksum, the hashes a part is checked by, muting ---- */
 
-typedef struct {
-  const char* name;
-  const char* text;
-} urBuiltinModel;
-extern const urBuiltinModel ur_builtin_models[];
 
 void ura_scale_script_hash(int argc, char** argv, char out[17]) {
   unsigned long long h = uraFNV0;

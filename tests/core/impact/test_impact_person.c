@@ -15,23 +15,17 @@
 #include "uasimpact/modellang.h"
 #include "../../../src/core/engine/engine_internal.h"
 #include "../../../src/core/impact/impact_internal.h"
+#include "../../../src/app/case/builtin.h"
 
-typedef struct {
-  const char* name;
-  const char* text;
-} urBuiltinModel;
-extern const urBuiltinModel ur_builtin_models[];
 
 #define NSTEP 400
 
 static const double PARK[3] = {0, 0, 1e4}, QID[4] = {1, 0, 0, 0}, ZERO3[3] = {0, 0, 0};
 
 static const char* builtin(const char* name) {
-  for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
-    if (!strcmp(b->name, name)) return b->text;
-  }
-  fail_msg("no built-in model %s", name);
-  return NULL;
+  const char* t = ura_builtin_text(name);
+  if (!t) fail_msg("no built-in model %s", name);
+  return t;
 }
 
 /* the RA3 on the person, its airbags analytic, with the settling's step */

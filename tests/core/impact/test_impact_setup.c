@@ -19,12 +19,8 @@
 #include <cmocka.h>
 
 #include "../../test_ctx.h"
+#include "../../../src/app/case/builtin.h"
 
-typedef struct {
-  const char* name;
-  const char* text;
-} urBuiltinModel;
-extern const urBuiltinModel ur_builtin_models[];
 
 /* short settlings for the core cases: what is compared does not depend on their length */
 #define T_SETTLE 0.2
@@ -90,11 +86,9 @@ static void assert_same_setup(const urImpactSetup* a, const urImpactSetup* b) {
 /* ---- core: models from the built-in parts and extra texts ---- */
 
 static const char* builtin(const char* name) {
-  for (const urBuiltinModel* b = ur_builtin_models; b->name; b++) {
-    if (!strcmp(b->name, name)) return b->text;
-  }
-  fail_msg("no built-in model %s", name);
-  return NULL;
+  const char* t = ura_builtin_text(name);
+  if (!t) fail_msg("no built-in model %s", name);
+  return t;
 }
 
 /* the sources in order: built-in part names, or model text (starting with '#') */
