@@ -195,32 +195,10 @@ int ura_cmd_set(uraCtx* c, int argc, char** argv) {
 }
 
 static int set_one(uraCtx* c, int argc, char** argv) {
-  /* set bag_model analytic|membrane: the model parameter bag_membrane (0|1) by name */
-  if (!strcmp(argv[1], "bag_model")) {
-    int mem = !strcmp(argv[2], "membrane");
-    if (argc != 3 || (!mem && strcmp(argv[2], "analytic"))) {
-      return ura_fail(c, "set bag_model: expected analytic or membrane (got '%s'%s)", argv[2],
-                      argc == 4 ? " and a unit" : "");
-    }
-    if (ura_model_param_find(c, "bag_membrane") < 0) {
-      return ura_fail(c,
-                      "set bag_model: the model has no parameter bag_membrane (its airbags "
-                      "declare no membrane)");
-    }
-    char* av[3] = {"set", "bag_membrane", mem ? "1" : "0"};
-    return ura_model_param_set(c, av[1], av[2], NULL, 1);
-  }
-  /* set endrun window|final: the model parameter endrun (0|1) by name */
-  if (!strcmp(argv[1], "endrun") && (argc != 3 || strspn(argv[2], "0123456789.") == 0)) {
-    int fin = !strcmp(argv[2], "final");
-    if (argc != 3 || (!fin && strcmp(argv[2], "window"))) {
-      return ura_fail(c, "set endrun: expected window or final (got '%s'%s)", argv[2],
-                      argc == 4 ? " and a unit" : "");
-    }
-    if (ura_model_param_find(c, "endrun") < 0) {
-      return ura_fail(c, "set endrun: the model has no parameter endrun (sim.urm declares it)");
-    }
-    return ura_model_param_set(c, "endrun", fin ? "1" : "0", NULL, 1);
+  /* a parameter by name (named.c): set bag_model analytic|membrane, set endrun window|final */
+  const uraNamed* nv = ura_named_find(argv[1]);
+  if (nv && !(nv->numeric && argc == 3 && strspn(argv[2], "0123456789.") > 0)) {
+    return ura_named_set(c, nv, argc, argv);
   }
   const uraParam* p = ura_param_find(argv[1]);
   int i = p ? -1 : ura_injury_find(argv[1]);

@@ -41,6 +41,20 @@ const uraCmd* ura_cmd_find(const char* name);
    design") in cands (n bytes; empty when none begins with it; cands may be NULL) */
 const uraCmd* ura_cmd_resolve(const char* name, char* cands, size_t n);
 
+/* a model parameter that set also takes by name (named.c): set NAME WORD0|WORD1 sets param to
+   0|1; numeric (1) when set NAME NUMBER also works (then param is NAME itself) */
+typedef struct {
+  const char* name;
+  const char* param;
+  const char* word[2];
+  int numeric;
+  const char* why; /* why the model may lack param: the error's last words */
+} uraNamed;
+extern const uraNamed ura_named[]; /* ends with {NULL} */
+const uraNamed* ura_named_find(const char* name);
+/* set n from argv (set NAME WORD [UNIT]): 0, or -1 with one error line */
+int ura_named_set(uraCtx* c, const uraNamed* n, int argc, char** argv);
+
 /* run one command line (may hold several commands separated by ';'); 0 or -1 */
 int ura_run_line(uraCtx* c, const char* line);
 /* prefix the failure message with NAME:LINE: (LINE 0: NAME: only), once */

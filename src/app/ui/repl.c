@@ -92,6 +92,8 @@ static void add_params(void) {
   for (int i = 0; ur_injury_param_info(i, &name, NULL, NULL) == 0; i++) add(name);
   const urModel* m = repl_ctx ? ura_model(repl_ctx) : NULL;
   for (int i = 0; m && i < m->nparam; i++) add(m->param[i].name);
+  for (int i = 0; ura_named[i].name; i++)
+    if (!ura_named[i].numeric) add(ura_named[i].name); /* the others are model parameters */
 }
 
 /* what sweep NAME takes: wind and face, then every number parameter of the case and the model
@@ -168,6 +170,8 @@ static char** complete(const char* text, int start, int end) {
          p && (p->kind == uraP_ENUM || p->kind == uraP_STR) && p->choices && p->choices[i]; i++)
       add(p->choices[i]);
     if (p && p->setoff) add("auto");
+    const uraNamed* nv = ura_named_find(words[1]); /* set bag_model analytic|membrane ... */
+    for (int i = 0; nv && i < 2; i++) add(nv->word[i]);
   } else if (nw == 2 && cmd->compl == uraC_NONE) {
     keywords(args, words[1]);
   }

@@ -3,7 +3,8 @@
 # (~/.uasrisk_history) is read once and left as it is; once the new file exists, the old one is
 # not read again. The conventions: a greeting line with the version and how to get help and
 # quit; q ends the session; an ambiguous prefix lists its commands and the session goes on;
-# Tab completes set output (file names), set terminal (terminal names), sweep NAME (wind, face,
+# Tab completes set output (file names), set terminal (terminal names), set bag_model and its
+# words (named.c), sweep NAME (wind, face,
 # the parameters) and plot sweep NAME (the kept sweeps).
 . tests/lib.sh
 if ! command -v tmux >/dev/null 2>&1; then
@@ -54,6 +55,13 @@ keys r3 C-u
 keys r3 -l 'set terminal pngc'
 keys r3 Tab
 check complete_terminal wait_for r3 'uasimpact\[A\]> set terminal pngcairo$'
+keys r3 C-u
+keys r3 -l 'set bag_mo'
+keys r3 Tab
+check complete_named_param wait_for r3 'uasimpact\[A\]> set bag_model ?$'
+keys r3 -l 'mem'
+keys r3 Tab
+check complete_named_word wait_for r3 'uasimpact\[A\]> set bag_model membrane ?$'
 keys r3 C-u
 keys r3 -l 'sweep fa'
 keys r3 Tab
