@@ -196,8 +196,9 @@ typedef struct {
   int nsub;        /* membrane sub-steps per step (its stable step is smaller) */
   int liverule;    /* membrane: when it stops riding rigidly (engine_membrane.c; the model
                       language's live=, default 0): 0 once a target's bounding sphere comes
-                      within 0.05 m of its bound's, 1 once a target comes within a margin of
-                      its nodes or edge midpoints or its carrier's tree is jolted */
+                      within 0.05 m of its bound's, 1 once that holds and a target comes
+                      within a margin of its nodes or edge midpoints or its carrier's tree is
+                      jolted (never before rule 0) */
   double nbox[6];  /* membrane, inflated: the box of its inflated nodes in the carrier's frame
                       (lo, hi; set with the bound by ur_model_inflate) */
 } urAirbag;

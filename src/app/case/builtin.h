@@ -1,7 +1,7 @@
 /* builtin.h: the built-in model texts, the .urm files of src/models compiled in verbatim
  * (scripts/embed.sh writes the table into the build's models/builtin.c with this same struct):
- * the table and a lookup by part name, for the workbench's model set, the distributors' model hash and the tests
- * that build a model from the built-in parts. */
+ * the table and a lookup by part name, for the workbench's model set, the distributors' model
+ * hash and the tests that build a model from the built-in parts. */
 #ifndef URA_BUILTIN_H
 #define URA_BUILTIN_H
 

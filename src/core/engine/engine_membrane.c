@@ -604,15 +604,16 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
    body under gravity alone (the nodes carry no gravity: a live bag in free fall only sags
    against its mount; uasimpact-model(5), live). So the tighter rule (liverule 1) takes the bag
    live, once the first rule holds (never before it: a jolt far from the person, as the bottom
-   bag's strike is to A2's front bag, leaves a bag rigid as before), when (b) that ends: the tree touches anything (its contacts and its bags' this step,
-   ur_tree_active), spins, or one of its joints moves (beyond LIVE_STILL: the ABA's roundings
-   leave ~1e-19); or (a) a target comes within LIVE_GAP + LIVE_LEAD |v| of a node of the rigid
-   bag, v the target's speed against the carrier (its spin's part |w| rbound): the bag then has
-   LIVE_LEAD of live motion, and at least LIVE_GAP, before it can touch. Contact acts only where a
-   node or an edge's midpoint is inside a target (contact_geom): so each of them is tested
-   against the target's bounding sphere and its box (urm_shape_box, in the carrier's frame)
-   widened by the margin, after two cheaper bounds (the spheres, the target's sphere against the
-   nodes' box, which holds the midpoints too). */
+   bag's strike is to A2's front bag, leaves a bag rigid as before), when (b) that ends: the
+   tree touches anything (its contacts and its bags' this step, ur_tree_active), spins, or one
+   of its joints moves (beyond LIVE_STILL: the ABA's roundings leave ~1e-19); or (a) a target
+   comes within LIVE_GAP + LIVE_LEAD |v| of a node of the rigid bag, v the target's speed
+   against the carrier (its spin's part |w| rbound): the bag then has LIVE_LEAD of live motion,
+   and at least LIVE_GAP, before it can touch. Contact acts only where a node or an edge's
+   midpoint is inside a target (contact_geom): so each of them is tested against the target's
+   bounding sphere and its box (urm_shape_box, in the carrier's frame) widened by the margin,
+   after two cheaper bounds (the spheres, the target's sphere against the nodes' box, which
+   holds the midpoints too). */
 #define LIVE_GAP   0.005 /* m */
 #define LIVE_LEAD  1e-3  /* s */
 #define LIVE_STILL 1e-9  /* rad/s, m/s */
