@@ -268,49 +268,60 @@ static inline __attribute__((always_inline)) urV4 rforce4(const urRestraint* r, 
   return f;
 }
 
+// the restraint forces of body i (nd dofs; sph: spherical) over the vectors, subtracted from
+// L->qfrc (inlined with constant sizes so that the dof loops unroll)
+static inline __attribute__((always_inline)) void restraint4(const urModel* m, urLanes* L,
+                                                             urData* const* d, int n, int i,
+                                                             const int nd, const int sph) {
+  const urBody* b = m->body + i;
+  urV4 x[3], f[3] = {bc4(0), bc4(0), bc4(0)};
+  urV4I br[3] = {{0}, {0}, {0}};
+  const urV4* xs = sph ? L->rkin + 12 * i : x;
+  const urV4* qd = L->qvel + b->vadr;
+  urV4* qf = L->qfrc + b->vadr;
+  urUNROLL for (int k = 0; k < nd; k++) {
+    const urRestraint* r = b->rst + k;
+    if (!sph) {
+      x[k] = L->qpos[b->qadr + k] - bc4(r->x0);
+    }
+    if (r->active) {
+      urV4 xp = bc4(0);
+      if (r->mp > 0) {
+        urV4 st1;
+        for (int l = 0; l < urNLANE; l++) {
+          const double* st = d[l < n ? l : 0]->rst + 2 * (b->vadr + k);
+          xp[l] = st[0];
+          st1[l] = st[1];
+        }
+        br[k] = st1 != bc4(0);
+      }
+      f[k] = rforce4(r, xs[k], sph ? bc4(0) : qd[k], xp, br[k]);
+    }
+    if (!sph) {
+      qf[k] = qf[k] - f[k];
+    }
+  }
+  if (sph) {
+    urV4 t[3];
+    urv_mulmat3tvec(t, xs + 3, f);
+    urUNROLL for (int k = 0; k < 3; k++) {
+      const urRestraint* r = b->rst + k;
+      urV4 c = r->active ? sel4(br[k], bc4(0), bc4(r->c) * qd[k]) : bc4(0);
+      qf[k] = qf[k] - (t[k] + c);
+    }
+  }
+}
+
 // ur_restraints over the vectors for the bodies L->rstv: subtracted from L->qfrc, which holds the
 // runs' own (zero on these bodies' dofs, as ur_restraints starts from); the hinges' plastic
 // deflections are each run's (lanes beyond n repeat lane 0)
 urCLONES static void restraints4(const urModel* m, urLanes* L, urData* const* d, int n) {
   for (int j = 0; j < L->nrstv; j++) {
     int i = L->rstv[j];
-    const urBody* b = m->body + i;
-    int sph = b->jtype == urJNT_SPHERICAL, nd = sph ? 3 : b->nv;
-    urV4 x[3], f[3] = {bc4(0), bc4(0), bc4(0)};
-    urV4I br[3] = {{0}, {0}, {0}};
-    const urV4* xs = sph ? L->rkin + 12 * i : x;
-    const urV4* qd = L->qvel + b->vadr;
-    urV4* qf = L->qfrc + b->vadr;
-    for (int k = 0; k < nd; k++) {
-      const urRestraint* r = b->rst + k;
-      if (!sph) {
-        x[k] = L->qpos[b->qadr + k] - bc4(r->x0);
-      }
-      if (r->active) {
-        urV4 xp = bc4(0);
-        if (r->mp > 0) {
-          urV4 st1;
-          for (int l = 0; l < urNLANE; l++) {
-            const double* st = d[l < n ? l : 0]->rst + 2 * (b->vadr + k);
-            xp[l] = st[0];
-            st1[l] = st[1];
-          }
-          br[k] = st1 != bc4(0);
-        }
-        f[k] = rforce4(r, xs[k], sph ? bc4(0) : qd[k], xp, br[k]);
-      }
-      if (!sph) {
-        qf[k] = qf[k] - f[k];
-      }
-    }
-    if (sph) {
-      urV4 t[3];
-      urv_mulmat3tvec(t, xs + 3, f);
-      for (int k = 0; k < 3; k++) {
-        const urRestraint* r = b->rst + k;
-        urV4 c = r->active ? sel4(br[k], bc4(0), bc4(r->c) * qd[k]) : bc4(0);
-        qf[k] = qf[k] - (t[k] + c);
-      }
+    switch (m->body[i].jtype) {
+    case urJNT_SPHERICAL: restraint4(m, L, d, n, i, 3, 1); break;
+    case urJNT_UNIVERSAL: restraint4(m, L, d, n, i, 2, 0); break;
+    default: restraint4(m, L, d, n, i, 1, 0); break; // revolute, prismatic
     }
   }
 }
