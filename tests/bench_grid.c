@@ -6,8 +6,11 @@
  * compile, settled stance) is timed apart. The targets of issue #6 are 1 s per zero-wind grid and
  * 5 ms of CPU per impact; issue 32's is 3 s for A's grid with membrane bags; issue 36's 0.3 s
  * for the zero-wind grids of B and C and 1 s for A's with membrane bags.
- *   bench_grid [STEP]     grid pitch in m, default 0.05 (the paper's)
+ *   bench_grid [STEP [RUNS]]   grid pitch in m, default 0.05 (the paper's); each grid computed
+ *                              RUNS times, default 5 (issue 36's median of 5): the median wall
+ *                              time and the range, every run's cells the first run's bit for bit
  * The machine may be shared: wall times are noisy, and the load average is printed with them. */
+#include <gsl/gsl_sort.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,11 +28,18 @@ static double now(double* cpu) {
 }
 
 typedef struct {
-  double setup, wall, cpu, q; /* model and settled stance; the grid itself; CPU of the grid */
+  double setup, wall, cpu, q; /* model and settled stance; the grid itself (median of the runs,
+                                 and its CPU); Q */
+  double wmin, wmax;          /* the runs' least and largest wall times */
   int impacts, cells;
 } result;
 
-/* one grid of the given set-up; the last grid stays in c->last */
+static int runs = 5; /* each grid's runs (RUNS) */
+
+static int same_cells(const urGrid* a, const urGrid* b);
+
+/* one grid of the given set-up, run `runs` times (each run's cells the first's, bit for bit, or
+   an error); the last grid stays in c->last */
 static int grid(uraCtx* c, const char* setup, double step, int threads, result* r) {
   char line[256];
   snprintf(line, sizeof line, "%s; set step %g; set threads %d", setup, step, threads);
@@ -45,13 +55,38 @@ static int grid(uraCtx* c, const char* setup, double step, int threads, result* 
     return -1;
   }
   r->setup = now(&cpu1) - t0;
-  t0 = now(&cpu0);
-  if (ura_grid_run(c, 1) || !c->last.g->complete) {
-    fprintf(stderr, "bench_grid: %s: %s\n", setup, c->err[0] ? c->err : "failed cells");
-    return -1;
+  double wall[64], cpu[64];
+  urGrid* first = NULL;
+  for (int k = 0; k < runs; k++) {
+    t0 = now(&cpu0);
+    if (ura_grid_run(c, 1) || !c->last.g->complete) {
+      fprintf(stderr, "bench_grid: %s: %s\n", setup, c->err[0] ? c->err : "failed cells");
+      ur_grid_free(first);
+      return -1;
+    }
+    wall[k] = now(&cpu1) - t0;
+    cpu[k] = cpu1 - cpu0;
+    if (k == 0) {
+      first = c->last.g; /* kept: the next run replaces c->last */
+      c->last.g = NULL;
+    } else if (!same_cells(first, c->last.g)) {
+      fprintf(stderr, "bench_grid: %s: run %d's cells differ from run 1's\n", setup, k + 1);
+      ur_grid_free(first);
+      return -1;
+    }
   }
-  r->wall = now(&cpu1) - t0;
-  r->cpu = cpu1 - cpu0;
+  if (runs > 1) {
+    ur_grid_free(first); /* c->last holds the last run's grid, the same cells */
+  } else {
+    c->last.g = first;
+  }
+  /* the median run (the mean of the two middle ones for an even count), its CPU with it */
+  size_t ix[64], lo = (size_t)(runs - 1) / 2, hi = (size_t)runs / 2;
+  gsl_sort_index(ix, wall, 1, (size_t)runs);
+  r->wall = 0.5 * (wall[ix[lo]] + wall[ix[hi]]);
+  r->cpu = 0.5 * (cpu[ix[lo]] + cpu[ix[hi]]);
+  r->wmin = wall[ix[0]];
+  r->wmax = wall[ix[runs - 1]];
   r->q = c->last.g->q;
   r->impacts = c->last.g->nsimulated;
   r->cells = c->last.g->nrow * c->last.g->ncol;
@@ -60,9 +95,9 @@ static int grid(uraCtx* c, const char* setup, double step, int threads, result* 
 
 static void report(const char* name, const result* r) {
   printf(
-      "  %-10s %6.2f s wall (+%5.2f s set-up)  %5d cells  %4d impacts  %6.1f impacts/s  "
-      "%5.1f ms CPU/impact  Q %.4f m^2\n",
-      name, r->wall, r->setup, r->cells, r->impacts, r->impacts / r->wall,
+      "  %-10s %6.2f s wall (%.2f-%.2f; +%5.2f s set-up)  %5d cells  %4d impacts  %6.1f "
+      "impacts/s  %5.1f ms CPU/impact  Q %.4f m^2\n",
+      name, r->wall, r->wmin, r->wmax, r->setup, r->cells, r->impacts, r->impacts / r->wall,
       1e3 * r->cpu / (r->impacts ? r->impacts : 1), r->q);
 }
 
@@ -80,7 +115,23 @@ static int same_cells(const urGrid* a, const urGrid* b) {
 }
 
 int main(int argc, char** argv) {
-  double step = argc > 1 ? atof(argv[1]) : 0.05;
+  double step = 0.05;
+  char* end;
+  if (argc > 1) {
+    step = strtod(argv[1], &end);
+    if (end == argv[1] || *end || !(step > 0)) {
+      fprintf(stderr, "bench_grid: step '%s': accepted a pitch in m > 0, e.g. 0.05\n", argv[1]);
+      return 2;
+    }
+  }
+  if (argc > 2) {
+    long n = strtol(argv[2], &end, 10);
+    if (end == argv[2] || *end || n < 1 || n > 64) {
+      fprintf(stderr, "bench_grid: runs '%s': accepted a whole number 1..64\n", argv[2]);
+      return 2;
+    }
+    runs = (int)n;
+  }
   static uraCtx ctx;
   uraCtx* c = &ctx;
   ura_init(c);
@@ -103,8 +154,8 @@ int main(int argc, char** argv) {
   int nt = ncpu >= 2 ? 2 : 1;
   printf(
       "bench_grid: grids of step %g m, %d worker threads, %ld CPUs online, load average "
-      "%.2f %.2f %.2f\n",
-      step, nt, ncpu, load[0], load[1], load[2]);
+      "%.2f %.2f %.2f; each grid's wall time the median of %d runs (range)\n",
+      step, nt, ncpu, load[0], load[1], load[2], runs);
 
   /* zero-wind grids of A, B, C and the 10 m/s grid of B, face 0 */
   static const char* const names[] = {"A analytic", "B, 0 m/s", "C, 0 m/s", "B, 10 m/s"};
