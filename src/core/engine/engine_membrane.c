@@ -13,12 +13,12 @@
  * (contact_implicit). Until it goes live (a target near, or its carrier jolted: goes_live), the
  * bag rides rigidly in its inflated state (no integration). */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "engine_internal.h"
 #include "../membrane/membrane_internal.h"
+#include "engine_membrane_cull.h"
 
 //---------------------------------- compile -------------------------------------------------------
 
@@ -185,98 +185,6 @@ static double box_gap2(const double* bx, const double p[3]) {
     q += u * u;
   }
   return q;
-}
-
-
-/* the second level of contact_geom's culling: boxes of grp consecutive boxes of urMEM_CBLK free
-   nodes (n) and of urMEM_CBLK free triangles' spheres (t, with their largest radius at [6]),
-   grp chosen so that at most SUPER_MAX of each. Each is the union of its boxes (min and max:
-   exact), so box_gap2 to it is no larger than to any of them (each rounding is monotone) and
-   its largest radius no smaller: a group out of a target's reach holds no box within it (the
-   same bits as the boxes' tests alone). Built once a step for all of the bag's targets. */
-#define SUPER_MAX 32
-#define SUPER_MIN 4 /* boxes per group at least */
-typedef struct {
-  int grp, nn, nt; /* boxes per group; groups of nodes and of triangles */
-  double n[7 * SUPER_MAX], t[7 * SUPER_MAX];
-} supbox;
-
-static int super_union(double* sp, const double* bx, int nb, int grp, int rad) {
-  int ns = 0;
-  for (int b0 = 0; b0 < nb; b0 += grp, ns++) {
-    int b1 = b0 + grp < nb ? b0 + grp : nb;
-    double bb[7] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY, 0};
-    for (int j = b0; j < b1; j++) {
-      const double* b = bx + 7 * j;
-      for (int k = 0; k < 3; k++) {
-        bb[k] = b[k] < bb[k] ? b[k] : bb[k];
-        bb[3 + k] = b[3 + k] > bb[3 + k] ? b[3 + k] : bb[3 + k];
-      }
-      bb[6] = rad && b[6] > bb[6] ? b[6] : bb[6]; /* the nodes' boxes have no radius */
-    }
-    memcpy(sp + 7 * ns, bb, sizeof(bb));
-  }
-  return ns;
-}
-
-static void super_build(supbox* sb, const urMembrane* mb, const double* nbx, const double* tbx) {
-  int nbn = (mb->nfree + urMEM_CBLK - 1) / urMEM_CBLK;
-  int nbt = (mb->ntfree + urMEM_CBLK - 1) / urMEM_CBLK, nb = nbn > nbt ? nbn : nbt;
-  sb->grp = (nb + SUPER_MAX - 1) / SUPER_MAX;
-  sb->grp = sb->grp < SUPER_MIN ? SUPER_MIN : sb->grp;
-  sb->nn = super_union(sb->n, nbx, nbn, sb->grp, 0);
-  sb->nt = super_union(sb->t, tbx, nbt, sb->grp, 1);
-}
-
-
-/* the triangles tfree[j0..j1) whose bounding sphere (tb: centres, radii) reaches g's sphere
-   (centre gc, radius rg) and g's box (half-widths gh), appended to tl in their order (ntl of
-   them there: the new count returned). 4 lanes at a time (GCC vector extensions; an AVX2 clone),
-   each lane the operations of the scalar test in the same order (ISO C: no
-   contraction into FMA; fmax(u, 0) as a select: both 0 for a NaN u), so the same triangles;
-   lanes past j1 at an infinite centre fail. Four triangles of consecutive numbers (the usual
-   case) are read as one vector each. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(urNO_CLONES)
-#define CULL_CLONES __attribute__((target_clones("avx2", "default"))) /* as the fabric's pass */
-#else
-#define CULL_CLONES
-#endif
-typedef double cul4 __attribute__((vector_size(32)));
-typedef long long cul4i __attribute__((vector_size(32)));
-static CULL_CLONES int tri_cull(const urMembrane* mb, const double* tb, const double gc[3],
-                                double rg, const double gh[3], int j0, int j1, double* tl,
-                                int ntl) {
-  const int nt = mb->nt, *tf = mb->tfree;
-  const cul4i sign = {INT64_MIN, INT64_MIN, INT64_MIN, INT64_MIN};
-  for (int j = j0; j < j1; j += 4) {
-    int nl = j1 - j < 4 ? j1 - j : 4;
-    cul4 c[4]; /* centre x, y, z and radius */
-    if (nl == 4 && tf[j + 3] - tf[j] == 3) {
-      for (int k = 0; k < 4; k++) {
-        memcpy(c + k, tb + k * (size_t)nt + tf[j], sizeof(cul4));
-      }
-    } else {
-      for (int l = 0; l < 4; l++) {
-        for (int k = 0; k < 4; k++) {
-          c[k][l] = l < nl ? tb[k * (size_t)nt + tf[j + l]] : k < 3 ? INFINITY : 0;
-        }
-      }
-    }
-    cul4 dx = c[0] - gc[0], dy = c[1] - gc[1], dz = c[2] - gc[2], r = c[3];
-    cul4 rr = (rg + r) * (1 + 1e-9);
-    cul4i in = (cul4i)(dx * dx + dy * dy + dz * dz < rr * rr);
-    cul4 ux = (cul4)((cul4i)dx & ~sign) - gh[0], uy = (cul4)((cul4i)dy & ~sign) - gh[1];
-    cul4 uz = (cul4)((cul4i)dz & ~sign) - gh[2], rt = r * (1 + 1e-6) + 1e-9;
-    ux = (cul4)((cul4i)ux & (cul4i)(ux > 0)), uy = (cul4)((cul4i)uy & (cul4i)(uy > 0));
-    uz = (cul4)((cul4i)uz & (cul4i)(uz > 0));
-    in &= (cul4i)(ux * ux + uy * uy + uz * uz < rt * rt);
-    for (int l = 0; l < nl; l++) {
-      if (in[l]) {
-        tl[ntl++] = tf[j + l];
-      }
-    }
-  }
-  return ntl;
 }
 
 
@@ -500,8 +408,8 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
    evaluation), a triangle whose sphere misses it has no point inside g, so it adds no force and
    no depth that another triangle reads (left out of the list, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           double kc, const double lo[3], const double hi[3], const supbox* sb,
-                           double* depth) {
+                           double kc, const double lo[3], const double hi[3],
+                           const urmCullGroups* sb, double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   const urMembrane* mb = b->mem;
   const urMemSpec* s = &mb->spec;
@@ -601,8 +509,8 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
       }
       int j1 = j0 + urMEM_CBLK < g1 ? j0 + urMEM_CBLK : g1;
       // each sphere against g's sphere, then g's box (a margin above the roundings, as for the
-      // blocks): tri_cull
-      ntl = tri_cull(mb, tb, gc, rg, gh, j0, j1, tl, ntl);
+      // blocks): urm_cull_tris
+      ntl = urm_cull_tris(mb, tb, gc, rg, gh, j0, j1, tl, ntl);
     }
   }
   for (int j = 0; j < ntl; j++) {
@@ -887,53 +795,13 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
     memset(node_bufs(mb, st) + 5 * (size_t)nn, 0, 3 * (size_t)nn * sizeof(double));
   }
   sc[urMEMS_ECONT] = 0;
-  // the free nodes' box (the free nodes are those of invm != 0), built from the boxes of
-  // urMEM_CBLK of them (contact_geom's culling; after the triangles' spheres and their list)
+  // the culling boxes of contact_geom and the free nodes' box lo, hi (urm_cull_boxes)
   int nt = mb->nt;
   double* tb = sc + urMEMS_N + 44 * (size_t)mb->ntb;
   double *nbx = tb + 5 * (size_t)nt, *tbx = nbx + 7 * (size_t)((nn + urMEM_CBLK - 1) / urMEM_CBLK);
-  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
-    int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
-    double* bx = nbx + 7 * (j0 / urMEM_CBLK);
-    double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-    for (int j = j0; j < j1; j++) { /* in locals: no store through bx to reload */
-      const double* xi = x + 3 * mb->free[j];
-      for (int k = 0; k < 3; k++) {
-        bb[k] = xi[k] < bb[k] ? xi[k] : bb[k];
-        bb[3 + k] = xi[k] > bb[3 + k] ? xi[k] : bb[3 + k];
-      }
-    }
-    memcpy(bx, bb, sizeof(bb));
-    for (int k = 0; k < 3; k++) {
-      lo[k] = bx[k] < lo[k] ? bx[k] : lo[k];
-      hi[k] = bx[3 + k] > hi[k] ? bx[3 + k] : hi[k];
-    }
-  }
-  // each triangle's bounding sphere (its centroid, the farthest node from it: every point of the
-  // triangle within), SoA for contact_geom's test: ur_mem_forces left the centres and squared
-  // radii at the end of the scratch (membrane.h), the radii here
-  for (int t = 0; t < nt; t++) {
-    tb[3 * nt + t] = sqrt(tb[3 * nt + t]); /* apart: a vector loop, no wait on each root */
-  }
-  // the boxes of urMEM_CBLK free triangles' spheres and their largest radius
-  for (int j0 = 0; j0 < mb->ntfree; j0 += urMEM_CBLK) {
-    int j1 = j0 + urMEM_CBLK < mb->ntfree ? j0 + urMEM_CBLK : mb->ntfree;
-    double bb[7] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY, 0};
-    for (int j = j0; j < j1; j++) {
-      int t = mb->tfree[j];
-      double r = tb[3 * nt + t];
-      for (int k = 0; k < 3; k++) {
-        double ct = tb[k * nt + t];
-        bb[k] = ct - r < bb[k] ? ct - r : bb[k];
-        bb[3 + k] = ct + r > bb[3 + k] ? ct + r : bb[3 + k];
-      }
-      bb[6] = r > bb[6] ? r : bb[6];
-    }
-    memcpy(tbx + 7 * (j0 / urMEM_CBLK), bb, sizeof(bb));
-  }
-  supbox sb;
-  super_build(&sb, mb, nbx, tbx);
+  double lo[3], hi[3];
+  urmCullGroups sb;
+  urm_cull_boxes(mb, x, tb, nbx, tbx, lo, hi, &sb);
   // each free node's depth not evaluated (contact_geom's state between its calls)
   double* gn = sc + urMEMS_N;
   for (int j = 0; j < mb->nfree; j++) {
