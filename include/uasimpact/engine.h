@@ -250,6 +250,8 @@ typedef struct {
   int param[urMAXPRESET]; /* index of a model parameter, or -1: a workbench setting */
 } urPreset;
 
+#define urMAXADAPT 16 /* the longest coarse step, in steps dt (urOption.adapt) */
+
 typedef struct {
   double dt;               /* time step, s (default 1e-5) */
   double gravity[3];       /* m/s^2 (default 0, 0, -9.81) */
@@ -266,6 +268,9 @@ typedef struct {
   double ke_settle;        /* or kinetic energy below this for t_quiet, J (default 1e-3) */
   double vmax;             /* failure beyond this joint speed, m/s or rad/s (default 1e4) */
   double jump_margin;      /* free-flight jump stops this far from contact, m (1e-3) */
+  int adapt;               /* K >= 2: a run steps K dt at once while its projectile is
+                                      provably clear of the rest (ur_step); 1: every step dt
+                                      (default) */
   const _Atomic int* stop; /* optional (not part of the model text): a step fails with
                                       urSTAT_STOPPED while *stop != 0 (an interrupt flag) */
   urMemCache* memcache;    /* optional (not part of the model text): ur_model_inflate takes
@@ -416,6 +421,16 @@ typedef struct {
   int clear_hint;     /* the pair or airbag target that last kept the projectile
                                       from being proved clear (tried first) */
   double energy;      /* kinetic energy at the last ur_forward, J */
+  // coarse steps (urOption.adapt)
+  int coarse;    /* the next step is coarse: adapt dt (decided at the end of the last step) */
+  int pend;      /* the last step was coarse: its interior history rows are written at the
+                     next accepted state, interpolated towards it (engine_sensor.c) */
+  long ncoarse;  /* coarse steps of this run */
+  long ntouch;   /* of them, those whose start state had a projectile contact active (the
+                     proof that took them failed: none expected) */
+  long nprev;    /* nstep at the start of the last coarse step */
+  double tprev;  /* time at the start of the last coarse step, s */
+  double* sprev; /* nsensordata: sensor values at the start of the last coarse step */
   // topology (models with urModel.nfrac > 0)
   urModel* topo; /* the run's own copy of the model once a joint has broken (the broken
                     bodies fly free: ur_data_model), allocated with the data */
@@ -561,6 +576,9 @@ void ur_kinematics(const urModel* m, urData* d);
 
 /* One step of opt.dt: forward, record outputs, commit contact histories, integrate, check the
    state; after ur_run_start also check the end of the run (status > 0, stepping may go on).
+   With opt.adapt = K >= 2 (Euler, no membrane bag) a step of a run is K dt long where its
+   projectile was provably clear of the rest for it (d->coarse); d->time and d->nstep advance
+   as by K steps, and the history keeps a row every sample_dt (engine_sensor.c).
    Returns d->status (< 0: failed run, nothing more is done). No allocation. */
 int ur_step(const urModel* m, urData* d);
 

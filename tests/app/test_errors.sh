@@ -49,6 +49,9 @@ refused negative_wind 'set wind -0.5' "set wind: -0.5 is out of range; accepted:
 refused dt_zero 'set dt 0' "set dt: refused, the model does not accept it: model: sim:.*: option dt must be > 0 (got 0)"
 refused dt_negative 'set dt -1 ms' "set dt: refused, the model does not accept it: .*dt must be > 0"
 kept dt_zero_kept 'set dt 0'
+refused adapt_fraction 'set adapt 2.5' \
+  "set adapt: refused, the model does not accept it: model: sim:.*: option adapt must be an integer from 1 (off) to 16 (got 2.5)"
+refused adapt_zero 'set adapt 0' "set adapt: 0 is out of range; accepted: 1 to 16 (no unit)"
 refused step_zero 'set step 0' "set step: 0 is out of range; accepted: a number in \[0.005, 1\] m$"
 refused step_negative 'set step -0.1' "set step: -0.1 is out of range; accepted: a number in \[0.005, 1\] m$"
 refused threads_fraction 'set threads 1.5' "set threads: 1.5 is out of range; accepted: a whole number in \[1, 64\]$"

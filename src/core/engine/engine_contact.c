@@ -211,7 +211,7 @@ double ur_contact_apply(const urModel* m, urData* d, int a, int b, const double 
   if (mu > 0 && s > 0) {
     double t[3] = {vt[0] / s, vt[1] / s, vt[2] / s};
     double w = mobility(m, d, a, p, t) + mobility(m, d, b, p, t);
-    double vs = fmax(fmax(s, v_eps), mu * fn * m->opt.dt * w);
+    double vs = fmax(fmax(s, v_eps), mu * fn * ur_step_h(m, d) * w);
     for (int k = 0; k < 3; k++) {
       fr[k] = -mu * fn * vt[k] / vs;
     }

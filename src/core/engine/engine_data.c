@@ -14,7 +14,7 @@ static size_t ndoubles(const urModel* m) {
   size_t nb = (size_t)m->nbody, ng = (size_t)m->ngeom, nq = (size_t)m->nq, nv = (size_t)m->nv;
   size_t ns = (size_t)m->nsensordata;
   return nq + 5 * nv + nb * (12 + 3 + 9 + 3 + 9 + 3 + 36 + 6 * 3 + 36 + 6 + 36 + 36 + 6 + 6 + 6) +
-         ng * 12 + 4 * ns + 2 * nq + 8 * nv + (size_t)m->npair + (size_t)m->nmemd;
+         ng * 12 + 5 * ns + 2 * nq + 8 * nv + (size_t)m->npair + (size_t)m->nmemd;
 }
 
 
@@ -53,6 +53,7 @@ static void carve(const urModel* m, urData* d) {
   TAKE(peakmax, ns)
   TAKE(peakmin, ns)
   TAKE(tpeak, ns)
+  TAKE(sprev, ns)
   TAKE(scratch, 2 * nq + 8 * nv)
   TAKE(pdepth, m->npair)
   TAKE(mem, m->nmemd)
@@ -145,6 +146,8 @@ void ur_data_reset(const urModel* m, urData* d) {
   d->t_last = -1;
   d->t_calm = 0;
   d->clear_hint = 0;
+  d->coarse = d->pend = 0;
+  d->ncoarse = d->ntouch = 0;
   d->energy = 0;
   d->nreleased = 0;
   ur_kinematics(m, d);

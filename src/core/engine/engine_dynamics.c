@@ -14,6 +14,7 @@
 #define urFN(name)         ur_##name
 #define urD                urData
 #define urSETENERGY(d, ke) ((d)->energy = (ke))
+#define urSTEPH(d)         ur_step_h(m, d)
 #define urINVSYM(d, Dinv, D, nv)                                                                   \
   if (uru_invsym(Dinv, D, nv)) {                                                                   \
     ur_set_status(d, urSTAT_NONFINITE, "singular joint-space inertia");                            \
@@ -26,6 +27,7 @@
 #undef urFN
 #undef urD
 #undef urSETENERGY
+#undef urSTEPH
 #undef urINVSYM
 #include "kernels/engine_template_check.h"
 

@@ -45,6 +45,11 @@ int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
 void ur_step_accept(const urModel* m, urData* d);
 int ur_step_end(const urModel* m, urData* d);
+
+// the length of the step under way: adapt dt for a coarse step (urData.coarse), else dt
+static inline double ur_step_h(const urModel* m, const urData* d) {
+  return d->coarse ? m->opt.dt * m->opt.adapt : m->opt.dt;
+}
 void ur_reactions(const urModel* m, urData* d);
 void ur_restraints_kin(const urModel* m, urData* d);
 void ur_restraints(const urModel* m, urData* d);
@@ -114,6 +119,7 @@ typedef struct {
   urV4* gap;     // npair: bounding-sphere gaps, then depths (broad phase)
   urV4* rkin;    // nbody x 12: as urData.rkin
   urV4* energy;  // kinetic energy of each lane ([0])
+  urV4* h;       // each lane's step ([0]; ur_step_h: dt, or adapt dt for a coarse step)
   int fail;      // lanes whose joint-space inertia was singular (bits)
   double* spare; // max(nq, nv): where a lane that does not step scatters
   int* outb;     // the bodies whose Xe, Xr, cacc, freact a run reads (joint

@@ -107,10 +107,12 @@ static inline __attribute__((always_inline)) void invsym4(urLanes* L, urV4* Ainv
 }
 
 #define urSETENERGY(d, ke)       ((d)->energy[0] = (ke))
+#define urSTEPH(d)               ((d)->h[0])
 #define urINVSYM(d, Dinv, D, nv) invsym4(d, Dinv, D, nv)
 #define urABA_ATTR               urCLONES
 #include "kernels/engine_aba.h"
 #undef urSETENERGY
+#undef urSTEPH
 #undef urINVSYM
 
 // sincos and the first-quadrant atan2 over the vectors (engine_trig.h)
@@ -236,13 +238,14 @@ urCLONES static void restraints_kin4(const urModel* m, urLanes* L) {
 }
 
 
-// the update of ur_step_euler over the vectors: velocities, then positions with them (addpos)
+// the update of ur_step_euler over the vectors: velocities, then positions with them (addpos),
+// each lane by its own step L->h
 urCLONES static void euler4(const urModel* m, urLanes* L) {
-  urV4 h = bc4(m->opt.dt);
+  urV4 h = L->h[0];
   for (int k = 0; k < m->nv; k++) {
     L->qvel[k] += h * L->qacc[k];
   }
-  urv_addpos(m, L->qpos, L->qvel, m->opt.dt);
+  urv_addpos(m, L->qpos, L->qvel, h);
 }
 
 //---------------------------------- lane data -----------------------------------------------------
@@ -252,7 +255,7 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   size_t nb = (size_t)m->nbody, nv = (size_t)m->nv;
   size_t nq = (size_t)m->nq;
   size_t ng = (size_t)m->ngeom, np = (size_t)m->npair;
-  size_t n = nb * (36 * 4 + 6 * 7 + 9 + 3 + 9 + 3 + 3 + 12) + 2 * nv + 1 + nq + nv + 3 * ng + np;
+  size_t n = nb * (36 * 4 + 6 * 7 + 9 + 3 + 9 + 3 + 3 + 12) + 2 * nv + 2 + nq + nv + 3 * ng + np;
   L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1) * sizeof(urV4));
   L->spare = malloc((nq > nv ? nq : nv) * sizeof(double) + 1);
   L->outb = malloc(nb * sizeof(int) + 1);
@@ -271,13 +274,13 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   }
   memset(L->mem, 0, n * sizeof(urV4));
   urV4* p = L->mem;
-  urV4** f[] = {&L->S,     &L->IA,   &L->U,    &L->Dinv,   &L->pA,     &L->uu,
-                &L->cbias, &L->cvel, &L->cacc, &L->fext,   &L->freact, &L->Xe,
-                &L->Xr,    &L->qfrc, &L->qacc, &L->energy, &L->qpos,   &L->qvel,
-                &L->xmat,  &L->xpos, &L->xcom, &L->gxpos,  &L->gap,    &L->rkin};
-  size_t len[] = {36 * nb, 36 * nb, 36 * nb, 36 * nb, 6 * nb, 6 * nb, 6 * nb, 6 * nb,
-                  6 * nb,  6 * nb,  6 * nb,  9 * nb,  3 * nb, nv,     nv,     1,
-                  nq,      nv,      9 * nb,  3 * nb,  3 * nb, 3 * ng, np,     12 * nb};
+  urV4** f[] = {&L->S,    &L->IA,     &L->U,    &L->Dinv,   &L->pA,   &L->uu,   &L->cbias,
+                &L->cvel, &L->cacc,   &L->fext, &L->freact, &L->Xe,   &L->Xr,   &L->qfrc,
+                &L->qacc, &L->energy, &L->h,    &L->qpos,   &L->qvel, &L->xmat, &L->xpos,
+                &L->xcom, &L->gxpos,  &L->gap,  &L->rkin};
+  size_t len[] = {36 * nb, 36 * nb, 36 * nb, 36 * nb, 6 * nb, 6 * nb, 6 * nb, 6 * nb, 6 * nb,
+                  6 * nb,  6 * nb,  9 * nb,  3 * nb,  nv,     nv,     1,      1,      nq,
+                  nv,      9 * nb,  3 * nb,  3 * nb,  3 * ng, np,     12 * nb};
   for (size_t k = 0; k < sizeof(len) / sizeof(len[0]); k++) {
     *f[k] = p;
     p += len[k];
@@ -474,6 +477,12 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   }
   if (k == 0) {
     return 0;
+  }
+
+  // each lane's step (dt, or adapt dt where its run takes a coarse step; lanes beyond k
+  // repeat lane 0)
+  for (int l = 0; l < urNLANE; l++) {
+    L->h[0][l] = ur_step_h(m, run[l < k ? l : 0]);
   }
 
   // ur_forward_pre's stages: poses, velocities, broad phase and restraint kinematics for all

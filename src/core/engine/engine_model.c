@@ -85,6 +85,7 @@ urModel* ur_model_new(void) {
   m->opt.ke_settle = 1e-3;
   m->opt.vmax = 1e4;
   m->opt.jump_margin = 1e-3;
+  m->opt.adapt = 1;
   urRoles* r = &m->roles;
   r->drone = r->head = r->head_acc = r->neck = r->head_pos = r->chest = r->abdomen = -1;
   r->mass_param = r->size_param = -1;
@@ -503,6 +504,9 @@ int ur_model_compile(urModel* m) {
   }
   if (!(m->opt.dt > 0) || !(m->opt.sample_dt > 0) || !(m->opt.tmax > 0)) {
     return fail(m, "dt, sample_dt and tmax must be positive", NULL);
+  }
+  if (m->opt.adapt < 1 || m->opt.adapt > urMAXADAPT) {
+    return fail(m, "adapt must be an integer from 1 (off) to 16", NULL);
   }
 
   // joint sizes and addresses, trees

@@ -312,7 +312,8 @@ static void checkend(const urModel* m, urData* d) {
 }
 
 
-// bookkeeping on an accepted state: histories, peaks, contact activity
+// bookkeeping on an accepted state: histories, peaks, contact activity (a coarse step counts
+// its calm time whole; ntouch counts the coarse steps that started in contact: none should)
 void ur_step_accept(const urModel* m, urData* d) {
   ur_outputs(m, d);
   ur_restraints_commit(m, d);
@@ -325,19 +326,97 @@ void ur_step_accept(const urModel* m, urData* d) {
       d->t_first = d->time;
     }
     d->t_last = d->time;
+    d->ntouch += d->coarse;
   }
-  d->t_calm = d->energy < m->opt.ke_settle ? d->t_calm + m->opt.dt : 0;
+  d->t_calm = d->energy < m->opt.ke_settle ? d->t_calm + ur_step_h(m, d) : 0;
 }
 
 
-// after the update: advance time, check the state and the end of the run
+// the proof of proj_clear for a coarse step, and the projectile's ellipsoids that can touch the
+// ground kept above it (their bounding spheres' lowest points falling at most at their centres'
+// speed plus a_clear T^2/2), for T. Most steps that it holds for, it holds for every candidate
+// by the bounding spheres alone, along the centre line (a separating axis, as in
+// stays_clear), with each ellipsoid's centre velocity computed once: those that fail it are
+// tried by item_clear. The item that failed last is tried first (d->clear_hint).
+static int coarse_clear(const urModel* m, urData* d, double T) {
+  int n = ur_cand_count(m), ng = m->ngeom > 0 ? m->ngeom : 1;
+  double vel[3 * ng];
+  unsigned char have[ng];
+  memset(have, 0, (size_t)ng);
+  int h = d->clear_hint < n ? d->clear_hint : 0;
+  if (!item_clear(m, d, h, T)) {
+    return 0;
+  }
+  urCand c;
+  for (int k = 0; ur_cand_at(m, k, &c) == 0; k++) {
+    int in1 = ur_geom_intree(m, c.g1, d->proj);
+    if (c.g2 >= 0 && in1 == ur_geom_intree(m, c.g2, d->proj)) {
+      continue;
+    }
+    int gs[2] = {c.g1, c.g2};
+    for (int j = 0; j < 2; j++) {
+      if (gs[j] >= 0 && !have[gs[j]]) {
+        geomvel(m, d, gs[j], vel + 3 * gs[j]);
+        have[gs[j]] = 1;
+      }
+    }
+    const double* c1 = d->gxpos + 3 * c.g1;
+    if (c.g2 < 0) {
+      if (in1 && !gap_holds(m, c1[2] - m->geom[c.g1].rbound, fmax(-vel[3 * c.g1 + 2], 0), T)) {
+        return 0;
+      }
+      continue;
+    }
+    const double* c2 = d->gxpos + 3 * c.g2;
+    double dc[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]}, L = uru_norm3(dc), ce = 0;
+    for (int i = 0; i < 3; i++) {
+      ce += (vel[3 * c.g1 + i] - vel[3 * c.g2 + i]) * dc[i];
+    }
+    if (L > 0 && gap_holds(m, L - m->geom[c.g1].rbound - m->geom[c.g2].rbound, ce / L, T)) {
+      continue;
+    }
+    if (k != h && !item_clear(m, d, k, T)) {
+      d->clear_hint = k;
+      return 0;
+    }
+  }
+  return 1;
+}
+
+
+// may the next step be coarse (opt.adapt >= 2): a semi-implicit Euler run with a projectile
+// and no membrane bag (whose fabric is stepped at dt), no projectile contact active at the
+// step just taken, not within a coarse step of tmax, and the projectile provably clear of the
+// rest and of the ground (proj_clear, from this step's start: the kinematics d holds) for this
+// step, the coarse one and one step dt more. A run broken by a fracture takes coarse steps on
+// the same rule: its pieces fly free of the person then.
+static int coarse_next(const urModel* m, urData* d, double h) {
+  int K = m->opt.adapt;
+  double dt = m->opt.dt, T = h + K * dt + dt;
+  if (K < 2 || d->status != urSTAT_OK || d->proj < 0 || m->nmemd ||
+      m->opt.integrator != urINT_EULER || d->time - d->t_jump + (K - 0.5) * dt >= m->opt.tmax ||
+      ur_tree_active(m, d, d->proj)) {
+    return 0;
+  }
+  return coarse_clear(m, d, T);
+}
+
+
+// after the update: advance time (a coarse step by adapt additions of dt, so that its time is
+// that of as many fine steps), check the state and the end of the run, choose the next step
 int ur_step_end(const urModel* m, urData* d) {
-  d->time += m->opt.dt;
-  d->nstep++;
+  double h = ur_step_h(m, d);
+  int n = d->coarse ? m->opt.adapt : 1;
+  for (int k = 0; k < n; k++) {
+    d->time += m->opt.dt;
+  }
+  d->nstep += n;
+  d->ncoarse += d->coarse;
   checkstate(m, d);
   if (d->status == urSTAT_OK && d->proj >= 0) {
     checkend(m, d);
   }
+  d->coarse = m->opt.adapt > 1 && coarse_next(m, d, h);
   return d->status;
 }
 
@@ -361,7 +440,7 @@ int ur_step_begin(const urModel* m, urData* d) {
 // the rest of a semi-implicit Euler step after a successful forward pass: accept the state,
 // velocities first, positions with the new velocities, then the state checks
 int ur_step_euler(const urModel* m, urData* d) {
-  double h = m->opt.dt;
+  double h = ur_step_h(m, d);
   ur_step_accept(m, d);
   for (int k = 0; k < m->nv; k++) {
     d->qvel[k] += h * d->qacc[k];
@@ -601,6 +680,8 @@ int ur_run_start(const urModel* m, urData* d, int root, const double pos[3], con
   d->t_first = d->t_last = -1;
   d->t_calm = 0;
   d->clear_hint = 0;
+  d->coarse = d->pend = 0;
+  d->ncoarse = d->ntouch = 0;
   ur_kinematics(m, d);
 
   // earliest possible contact of the tree's swept bounding spheres

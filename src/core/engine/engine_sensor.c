@@ -52,7 +52,34 @@ void ur_sensors(const urModel* m, urData* d) {
 
 //---------------------------------- peaks and histories -------------------------------------------
 
-// update peaks; append a history row at the sampling instants
+// the interior rows of the coarse step that ends at this state (d->pend): the sampling
+// instants strictly inside it, at the times fine steps would have (dt added to its start's time
+// as often), each sensor value on the straight line from its start (d->sprev) to now. Semi-
+// implicit Euler holds the accelerations, and so the sensors that read them and the joint
+// loads, constant through a step at their start's values; the line is the step's start and end
+// values joined, as the fine steps would have sampled a smooth signal (to first order).
+static void rows_between(const urModel* m, urData* d, long every) {
+  int ns = m->nsensordata;
+  long n = d->nstep - d->nprev;
+  double t = d->tprev;
+  for (long j = 1; j < n && d->nhist < d->nhist_cap; j++) {
+    t += m->opt.dt;
+    if ((d->nprev + j) % every != 0) {
+      continue;
+    }
+    double w = (double)j / (double)n;
+    double* row = d->hist + (size_t)d->nhist * (size_t)(1 + ns);
+    row[0] = t;
+    for (int k = 0; k < ns; k++) {
+      row[1 + k] = d->sprev[k] + w * (d->sensordata[k] - d->sprev[k]);
+    }
+    d->nhist++;
+  }
+}
+
+
+// update peaks; append a history row at the sampling instants (the rows inside a coarse step
+// once its end is known: rows_between)
 void ur_outputs(const urModel* m, urData* d) {
   int ns = m->nsensordata;
 
@@ -71,17 +98,28 @@ void ur_outputs(const urModel* m, urData* d) {
   }
 
   // history row every k steps, k dt <= sample_dt (the rate is never below 1/sample_dt)
-  if (!d->hist || d->nhist >= d->nhist_cap) {
+  if (!d->hist) {
     return;
   }
   long every = (long)floor(m->opt.sample_dt / m->opt.dt + 1e-9);
   if (every < 1) {
     every = 1;
   }
-  if (d->nstep % every == 0) {
+  if (d->pend) {
+    rows_between(m, d, every);
+  }
+  if (d->nstep % every == 0 && d->nhist < d->nhist_cap) {
     double* row = d->hist + (size_t)d->nhist * (size_t)(1 + ns);
     row[0] = d->time;
     memcpy(row + 1, d->sensordata, (size_t)ns * sizeof(double));
     d->nhist++;
+  }
+
+  // a coarse step starts here: its interior rows wait for its end
+  d->pend = d->coarse;
+  if (d->coarse) {
+    memcpy(d->sprev, d->sensordata, (size_t)ns * sizeof(double));
+    d->tprev = d->time;
+    d->nprev = d->nstep;
   }
 }

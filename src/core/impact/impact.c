@@ -217,7 +217,8 @@ int ur_impact_after_step(const urImpactSetup* s, const urImpactWork* w, double t
 
 /* the contacts through which the drone acts, after a step: the forces are those of the step's
    start, when ur_step_accept marks contact (engine_run.c); only the pairs with a force (the
-   contact pass lists them) and the airbags' targets are visited */
+   contact pass lists them) and the airbags' targets are visited. A coarse step (urOption.adapt)
+   started at d->tprev (none starts with a drone contact: its forces are zero) */
 static void contact_note(urContactRec* c, double f, double t) {
   if (!(f > 0)) return;
   if (c->t_first < 0) c->t_first = t;
@@ -231,7 +232,7 @@ static void contact_note(urContactRec* c, double f, double t) {
 static void contacts_record(const urImpactSetup* s, urImpactWork* w) {
   const urModel* m = s->m;
   const urData* d = w->d;
-  double t = d->time - m->opt.dt;
+  double t = d->pend ? d->tprev : d->time - m->opt.dt;
   for (int k = 0; k < d->npactive; k++) {
     int i = d->plist[m->npair + k], c = s->cand_of[i];
     if (c >= 0) contact_note(w->crec + c, d->pair[i].fn, t);

@@ -252,7 +252,7 @@ urLP64_SIZE(urRestraint, 1648);
 urLP64_SIZE(urLaw, 3280);
 urLP64_SIZE(urBody, 5704);
 urLP64_SIZE(urGeom, 208);
-urLP64_SIZE(urOption, 120);
+urLP64_SIZE(urOption, 128);
 
 static void put(urStance* st, const void* v, size_t n) {
   if (!st->ok) return;
@@ -421,7 +421,8 @@ static urStance* stance_new(const urModel* m, int drone, double settle_time, int
   PUT(st, m->opt.gravity);
   PUT(st, integ);
   PUT(st, m->opt.implicit_damping);
-  PUT(st, m->opt.vmax); /* stop and memcache change no result: not in the key */
+  PUT(st, m->opt.vmax); /* stop and memcache change no result, nor adapt the settling's (it
+                           has no projectile): not in the key */
   for (int b = 0; b < m->nbody; b++) {
     if (ur_body_intree(m, b, drone)) continue;
     put_body(st, m, b);

@@ -18,6 +18,7 @@ static const KeySpec spec_option[] = {NUM("dt"),
                                       NUM("ke_settle"),
                                       NUM("vmax"),
                                       NUM("jump_margin"),
+                                      NUM("adapt"),
                                       VEC3("gravity"),
                                       {"integrator", K_ENUM, 1, 0, 0, "euler|rk4"},
                                       {"damping", K_ENUM, 1, 0, 0, "implicit|explicit"},
@@ -252,6 +253,17 @@ int url_st_option(Parser* p, const urlStmt* st, Bound* b) {
   o->ke_settle = url_num(b, "ke_settle", o->ke_settle);
   o->vmax = url_num(b, "vmax", o->vmax);
   o->jump_margin = url_num(b, "jump_margin", o->jump_margin);
+  const Val* va = url_get(b, "adapt");
+  if (va->set) {
+    double k = va->v[0];
+    if (!(k >= 1 && k <= urMAXADAPT && k == floor(k))) {
+      return url_fail(p, va->line,
+                      "option adapt must be an integer from 1 (off) to %d (got %g): the coarse "
+                      "step in steps dt",
+                      urMAXADAPT, k);
+    }
+    o->adapt = (int)k;
+  }
   if (url_vec(b, "gravity")) {
     memcpy(o->gravity, url_vec(b, "gravity"), 3 * sizeof(double));
   }

@@ -421,6 +421,70 @@ static void test_clear_sliding_past(void** state) {
 }
 
 
+//---------------------------------- coarse steps (adapt) ------------------------------------------
+
+// the glancing ball of test_clear_keeps_recontact (no gravity: between the contacts it flies
+// straight at its speed) with adapt 1 and 4. With 4 the flight between the targets is taken in
+// coarse steps, and none comes within reach: over each coarse step and one dt more the ball's
+// straight path keeps it off both targets (exact: spheres), and no contact is active at a
+// coarse step's start (ntouch 0). The contacts are stepped at dt: the second one starts at the same step.
+// Its last contact moves by less than 0.5 % of the first-to-last time (measured: 0).
+static void test_adapt_clear_only(void** state) {
+  double tlast[2], tsecond[2];
+  long ncoarse[2], nchecked = 0;
+  for (int c = 0; c < 2; c++) {
+    urModel* m = balls(0.4, 0.35, INFINITY, 100);
+    m->opt.t_quiet = 0.3;
+    m->opt.tmax = 2;
+    m->opt.adapt = c ? 4 : 1;
+    urData* d = ur_data_new(m);
+    assert_int_equal(ur_run_start(m, d, 0, (double[3]){-0.4, 0, 0.14}, NULL, (double[3]){2, 0, 0}),
+                     urSTAT_OK);
+    tsecond[c] = -1;
+    while (d->status == urSTAT_OK) {
+      if (d->coarse) {
+        // the centre's straight path over the step and one dt more: its closest approach to
+        // each target's centre (the point on the segment nearest to it) stays beyond 0.15 m
+        double T = (m->opt.adapt + 1) * m->opt.dt, v2 = 0, w[3], s0 = 0;
+        for (int k = 0; k < 2; k++) {
+          double tc[3] = {k * 0.4, 0, k * 0.35};
+          for (int j = 0; j < 3; j++) {
+            w[j] = tc[j] - d->qpos[j];
+          }
+          v2 = uru_dot3(d->qvel, d->qvel);
+          s0 = fmin(fmax(uru_dot3(w, d->qvel) / v2, 0), T);
+          double near = 0;
+          for (int j = 0; j < 3; j++) {
+            near += (w[j] - s0 * d->qvel[j]) * (w[j] - s0 * d->qvel[j]);
+          }
+          assert_true(sqrt(near) > 0.15);
+        }
+        nchecked++;
+      }
+      ur_step(m, d);
+      if (tsecond[c] < 0 && d->pair[1].active) {
+        tsecond[c] = d->time;
+      }
+    }
+    assert_int_equal(d->status, urSTAT_SEPARATED);
+    assert_int_equal(d->ntouch, 0);
+    ncoarse[c] = d->ncoarse;
+    tlast[c] = d->t_last - d->t_first;
+    ur_data_free(d);
+    ur_model_free(m);
+  }
+  print_message(
+      "adapt: %ld coarse steps (all %ld proved clear), second contact at %.5f / %.5f s, "
+      "last %.5f / %.5f s after the first (adapt 1 / 4)\n",
+      ncoarse[1], nchecked, tsecond[0], tsecond[1], tlast[0], tlast[1]);
+  assert_int_equal(ncoarse[0], 0);
+  assert_true(ncoarse[1] > 300);
+  assert_true(nchecked == ncoarse[1]);
+  assert_true(tsecond[0] > 0.1 && tsecond[1] == tsecond[0]);
+  assert_true(fabs(tlast[1] - tlast[0]) <= 0.005 * tlast[0]);
+}
+
+
 //---------------------------------- the spin bound ------------------------------------------------
 
 // rotation matrix of angle t about unit axis a (Rodrigues)
@@ -501,17 +565,12 @@ static void test_spin_bound(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_threads_bitwise),
-      cmocka_unit_test(test_symmetric_impact),
-      cmocka_unit_test(test_nonfinite_fails),
-      cmocka_unit_test(test_explosion_fails),
-      cmocka_unit_test(test_stop_request),
-      cmocka_unit_test(test_jump),
-      cmocka_unit_test(test_history_and_names),
-      cmocka_unit_test(test_clear_ends_early),
-      cmocka_unit_test(test_clear_keeps_recontact),
-      cmocka_unit_test(test_clear_sliding_past),
-      cmocka_unit_test(test_spin_bound),
+      cmocka_unit_test(test_threads_bitwise),       cmocka_unit_test(test_symmetric_impact),
+      cmocka_unit_test(test_nonfinite_fails),       cmocka_unit_test(test_explosion_fails),
+      cmocka_unit_test(test_stop_request),          cmocka_unit_test(test_jump),
+      cmocka_unit_test(test_history_and_names),     cmocka_unit_test(test_clear_ends_early),
+      cmocka_unit_test(test_clear_keeps_recontact), cmocka_unit_test(test_clear_sliding_past),
+      cmocka_unit_test(test_adapt_clear_only),      cmocka_unit_test(test_spin_bound),
       cmocka_unit_test(test_clear_membrane_bag),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -151,11 +151,74 @@ static void test_peaks(void** state) {
 }
 
 
+// a ball thrown up under gravity, nothing else in the world: with adapt 4 every step after the
+// first is coarse (nothing to touch), and the history keeps a row every dt at the times of the
+// fine run, bit for bit; the rows inside a coarse step lie on the line between its ends, where
+// the ball's velocity (linear in time: v0 + g t) is exact to rounding (closed form; a held
+// value would be off by up to 3 g dt), while the ends' positions are Euler's with the long step
+// (their lag behind the fine run's, closed form, within 5 %)
+static void test_coarse_rows(void** state) {
+  double t[2][400], v[2][400], z[2][400];
+  long ncoarse[2];
+  int nhist[2];
+  for (int c = 0; c < 2; c++) {
+    urModel* m = ur_model_new();
+    double I[6] = {1e-3, 1e-3, 1e-3, 0, 0, 0};
+    int b = ur_model_add_body(m, "ball", -1, urJNT_FREE, NULL, NULL);
+    ur_model_set_inertia(m, b, 1, NULL, I);
+    ur_model_add_sensor(m, "vel", urSENS_BODYVEL, b, 0, NULL, NULL);
+    ur_model_add_sensor(m, "pos", urSENS_BODYPOS, b, 0, NULL, NULL);
+    m->opt.dt = m->opt.sample_dt = 1e-4;
+    m->opt.tmax = 0.0199;
+    m->opt.adapt = c ? 4 : 1;
+    assert_int_equal(ur_model_compile(m), 0);
+    urData* d = ur_data_new(m);
+    assert_int_equal(ur_data_history(m, d, NULL, 400), 0);
+    ur_run_impact(m, d, b, (double[3]){0, 0, 1}, NULL, (double[3]){0, 0, 3});
+    assert_int_equal(d->status, urSTAT_TMAX);
+    ncoarse[c] = d->ncoarse;
+    nhist[c] = d->nhist;
+    for (int i = 0; i < d->nhist && i < 400; i++) {
+      const double* row = d->hist + 7 * i;
+      t[c][i] = row[0];
+      v[c][i] = row[3];
+      z[c][i] = row[6];
+    }
+    ur_data_free(d);
+    ur_model_free(m);
+  }
+  print_message("coarse rows: %d rows fine, %d with adapt 4 (%ld coarse steps)\n", nhist[0],
+                nhist[1], ncoarse[1]);
+  assert_int_equal(ncoarse[0], 0);
+  assert_true(ncoarse[1] >= 45);
+  assert_true(nhist[1] >= nhist[0] - 3 && nhist[1] <= nhist[0]);
+  double ev = 0, ez = 0;
+  for (int i = 0; i < nhist[1]; i++) {
+    assert_true(t[1][i] == t[0][i]);
+    ev = fmax(ev, fabs(v[1][i] - v[0][i]));
+    ez = fmax(ez, fabs(z[1][i] - z[0][i]));
+    // the first step is fine (the proof needs its kinematics), the coarse ones start at 1, 5, ...
+    int a = 1 + (i - 1) / 4 * 4, e = a + 4;
+    if (i > 1 && (i - 1) % 4 && e < nhist[1]) {
+      double w = (i - a) / 4.0;
+      assert_true(fabs(z[1][i] - (z[1][a] + w * (z[1][e] - z[1][a]))) < 1e-12);
+    }
+  }
+  print_message("coarse rows: velocity off by %.1e m/s, height by %.1e m\n", ev, ez);
+  assert_true(ev < 1e-12);
+  // Euler's position with step h lags the exact one by g h t / 2: the coarse run's by g (K - 1)
+  // dt t / 2 more than the fine run's (K = 4, t the last row's time)
+  double lag = 9.81 * 3 * 1e-4 * t[1][nhist[1] - 1] / 2;
+  assert_true(fabs(ez / lag - 1) < 0.05);
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_pendulum_loads),
       cmocka_unit_test(test_static_cell),
       cmocka_unit_test(test_peaks),
+      cmocka_unit_test(test_coarse_rows),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,8 +1,9 @@
 /* test_impact_lanes.c: many impacts in lock-step lanes (ur_impact_run_many) give, offset by
  * offset, the bytes of ur_impact_run: the whole result (criteria, P, reason) and the recorded
  * histories, on the built-in cases A and C at zero wind and B at 10 m/s (oblique path), over a
- * lattice that mixes contact cells, grazing cells and cells the drone passes by. Every offset
- * taken is handed back exactly once with its tag; fewer offsets than lanes, and none, work. */
+ * lattice that mixes contact cells, grazing cells and cells the drone passes by; with coarse
+ * steps (adapt 4, the default: each lane its own step; none starts in contact) and without. Every offset taken is handed back exactly once
+ * with its tag; fewer offsets than lanes, and none, work. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -27,6 +28,7 @@ typedef struct {
   int nhist[MAXOFF];
   int stride;
   int contact;
+  long coarse, touch; /* coarse steps of the lanes' runs; of them, started in contact */
 } feed;
 
 static int next(void* ctx, double* dpar, double* dperp, void** tag) {
@@ -55,6 +57,8 @@ static void done(void* ctx, void* tag, int rc, const urImpactResult* r, const ur
   assert_int_equal(memcmp(w->d->hist, f->hist[k], (size_t)f->nhist[k] * f->stride * sizeof(double)),
                    0);
   f->contact += r->contact;
+  f->coarse += w->d->ncoarse;
+  f->touch += w->d->ntouch;
 }
 
 /* run the case's lattice both ways and compare */
@@ -89,8 +93,10 @@ static void compare(uraCtx* c, const char* setup, double step, double par_lo, do
   assert_non_null(L);
   ur_impact_run_many(s, L, &cond, &c->st.injury, next, done, &f);
   assert_int_equal(f.ndone, f.n);
-  print_message("%s: %d offsets, %d with contact, the same bytes in lanes\n", setup, f.n,
-                f.contact);
+  print_message("%s: %d offsets, %d with contact, %ld coarse steps, the same bytes in lanes\n",
+                setup, f.n, f.contact, f.coarse);
+  assert_int_equal(f.touch, 0);
+  assert_true(strstr(setup, "adapt 1") ? f.coarse == 0 : f.n < 10 || f.coarse > 0);
   assert_true(f.contact > 0);
   assert_true(f.n < 10 || f.contact < f.n); /* lattices: both kinds of cell */
 
@@ -117,6 +123,13 @@ static void lanes_case_b_wind(void** state) {
   compare(*state, "case B; set wind 10", 0.2, -1.8, 0.6, MAXOFF);
 }
 
+/* every step dt (adapt 1; the lattices above take coarse steps, adapt 4 being the default):
+   B at zero wind and at 10 m/s */
+static void lanes_fine(void** state) {
+  compare(*state, "case B; set adapt 1", 0.15, -0.6, 0.6, MAXOFF);
+  compare(*state, "case B; set wind 10; set adapt 1", 0.2, -1.8, 0.6, MAXOFF);
+}
+
 /* fewer offsets than lanes */
 static void lanes_few(void** state) {
   compare(*state, "case B", 0.15, -0.15, 0.0, 3);
@@ -128,6 +141,7 @@ int main(void) {
       cmocka_unit_test_setup_teardown(lanes_case_c, ctx_setup, ctx_teardown),
       cmocka_unit_test_setup_teardown(lanes_case_b_wind, ctx_setup, ctx_teardown),
       cmocka_unit_test_setup_teardown(lanes_few, ctx_setup, ctx_teardown),
+      cmocka_unit_test_setup_teardown(lanes_fine, ctx_setup, ctx_teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

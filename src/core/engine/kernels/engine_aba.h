@@ -4,8 +4,8 @@
  * urK(name) the spatial kernels (engine_spatial.h), urFN(name) this file's function names, urD
  * the data (fields S IA pA U Dinv uu cbias cvel cacc Xe Xr qfrc fext qacc freact energy), and
  * urINVSYM(d, Dinv, D, nv) the inverse of a joint-space inertia with its failure handling,
- * urSETENERGY(d, ke) the store of the kinetic energy, urABA_ATTR (optional) attributes of the
- * entry point. The same expressions in the same order make each lane's bits those of the scalar
+ * urSETENERGY(d, ke) the store of the kinetic energy, urSTEPH(d) the step under way (urT: the
+ * implicit damping's h), urABA_ATTR (optional) attributes of the entry point. The same expressions in the same order make each lane's bits those of the scalar
  * run. No include guard: included once per instance; the protocol (who defines and undefines the
  * parameters, the bit-exactness rules): src/README. */
 
@@ -74,11 +74,12 @@ static inline __attribute__((always_inline)) void urFN(pass2)(const urModel* m, 
     }
   }
   // implicit joint damping: the restraint's linear damper acts at the new velocity, so the
-  // joint-space inertia gains dt c on its diagonal (an armature; exact for M + dt C)
+  // joint-space inertia gains h c on its diagonal (an armature; exact for M + h C; h the step,
+  // urSTEPH: dt, or adapt dt for a coarse step)
   if (m->opt.implicit_damping && m->opt.integrator == urINT_EULER) {
     for (int r = 0; r < nv && r < 3; r++) {
       if (b->rst[r].active) {
-        D[nv * r + r] += urBC(m->opt.dt * b->rst[r].c);
+        D[nv * r + r] += urSTEPH(d) * urBC(b->rst[r].c);
       }
     }
   }

@@ -9,9 +9,9 @@
 
 // q <- q * exp(omega dt / 2), omega in the local frame, then normalised (a zero or non-finite
 // norm gives the identity); q unchanged if |omega| dt < 1e-300
-urSTORAGE void urK(quatintegrate)(urT q[4], const urT omega[3], double dt) {
+urSTORAGE void urK(quatintegrate)(urT q[4], const urT omega[3], urT dt) {
   urT w = urSQRT(omega[0] * omega[0] + omega[1] * omega[1] + omega[2] * omega[2]);
-  urT th = w * urBC(dt), s, c;
+  urT th = w * dt, s, c;
   urK(sincos)(urBC(0.5) * th, &s, &c);
   s = s / w;
   urT dq[4] = {c, s * omega[0], s * omega[1], s * omega[2]}, r[4];
@@ -58,7 +58,7 @@ urSTORAGE void urK(rotvec_jrinv)(urT J[9], const urT v[3]) {
 
 // q <- q "+" h v: each joint's coordinates advanced by h times its velocities, quaternions by
 // their exact exponential (the position update of the integrators)
-urSTORAGE void urK(addpos)(const urModel* m, urT* qpos, const urT* qvel, double h) {
+urSTORAGE void urK(addpos)(const urModel* m, urT* qpos, const urT* qvel, urT h) {
   for (int i = 0; i < m->nbody; i++) {
     const urBody* b = m->body + i;
     urT* q = qpos + b->qadr;
@@ -66,7 +66,7 @@ urSTORAGE void urK(addpos)(const urModel* m, urT* qpos, const urT* qvel, double 
     switch (b->jtype) {
     case urJNT_FREE:
       for (int k = 0; k < 3; k++) {
-        q[k] += urBC(h) * v[k];
+        q[k] += h * v[k];
       }
       urK(quatintegrate)(q + 3, v + 3, h);
       break;
@@ -74,7 +74,7 @@ urSTORAGE void urK(addpos)(const urModel* m, urT* qpos, const urT* qvel, double 
     case urJNT_FIXED: break;
     default:
       for (int k = 0; k < b->nv; k++) {
-        q[k] += urBC(h) * v[k];
+        q[k] += h * v[k];
       }
     }
   }
