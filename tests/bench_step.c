@@ -147,12 +147,17 @@ static const char* const aname[urSTEP_NPROF] = {"kinematics, velocities",
                                                 "articulated body alg.",
                                                 "joint loads, sensors",
                                                 "bookkeeping, update, end"};
-static const char* const lname[urLANE_NPROF] = {
-    "kinematics, velocities (vec)", "broad phase (vec)",
-    "restraint kinematics (vec)",   "copy back: kinematics",
-    "applied forces (scalar)",      "copy: forces, accelerations",
-    "articulated body alg. (vec)",  "joint loads, sensors, hist.",
-    "update (vec), copy back",      "time, checks, end"};
+static const char* const lname[urLANE_NPROF] = {"kinematics, velocities (vec)",
+                                                "broad phase (vec)",
+                                                "restraint kinematics (vec)",
+                                                "copy back: kinematics",
+                                                "applied forces (scalar)",
+                                                "restraint forces (vec)",
+                                                "copy: forces, accelerations",
+                                                "articulated body alg. (vec)",
+                                                "joint loads, sensors, hist.",
+                                                "update (vec), copy back",
+                                                "time, checks, end"};
 
 /* the impact at (0, 0) alone by ur_step, as ur_impact_run does; with prof, its stages timed into
    prof by the step's own stage timer (this program links engine_run.c built with urSTEP_PROF).

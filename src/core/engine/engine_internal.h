@@ -39,7 +39,7 @@ void ur_velocities(const urModel* m, urData* d);
 void ur_restraints_commit(const urModel* m, urData* d);
 void ur_aba(const urModel* m, urData* d);
 void ur_forward_pre(const urModel* m, urData* d);
-void ur_forward_loads(const urModel* m, urData* d);
+void ur_forward_loads(const urModel* m, urData* d, const int* rstb, int nrstb);
 int ur_forward_post(const urModel* m, urData* d);
 int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
@@ -52,7 +52,9 @@ static inline double ur_step_h(const urModel* m, const urData* d) {
 }
 void ur_reactions(const urModel* m, urData* d);
 void ur_restraints_kin(const urModel* m, urData* d);
-void ur_restraints(const urModel* m, urData* d);
+void ur_restraints(const urModel* m, urData* d, const int* rstb, int nrstb);
+int ur_restraint_vec(const urModel* m, int i);
+double uru_back_slope(const urRestraint* r);
 void ur_contacts(const urModel* m, urData* d);
 void ur_contacts_broad(const urModel* m, urData* d);
 void ur_contacts_narrow(const urModel* m, urData* d);
@@ -103,8 +105,9 @@ static inline int ur_cand_slots(const urModel* m) {
 // up to urNLANE runs of one model stepped in lock-step, their poses, velocities and the
 // articulated-body algorithm computed over vectors of lanes; each run's bits are those of
 // ur_step. A lane run's S, cbias and ABA scratch (IA, U, Dinv, pA, uu) live here only, and so
-// do Xe, Xr, cacc and freact of the bodies that no joint-load or acceleration sensor reads: its
-// urData keeps the poses, velocities, accelerations and the joint loads and accelerations read.
+// do Xe, Xr, cacc and freact of the bodies that no joint-load or acceleration sensor reads, and
+// rkin of the bodies whose restraint forces the vectors compute (ur_restraint_vec): its urData
+// keeps the poses, velocities, accelerations and the joint loads and accelerations read.
 // The ellipsoids' orientations are computed lane by lane where first used (ur_geom_xmat):
 // most ellipsoids are culled by their bounding spheres in most steps.
 
@@ -115,15 +118,17 @@ typedef long long urV4I __attribute__((vector_size(4 * sizeof(long long))));
 typedef struct {
   urV4 *S, *IA, *U, *Dinv, *pA, *uu, *cbias, *cvel, *cacc, *fext, *freact, *Xe, *Xr, *qfrc, *qacc;
   urV4 *qpos, *qvel, *xmat, *xpos, *xcom, *gxpos;
-  urV4* gxmat;   // unused (NULL): each lane computes the orientations it needs
-  urV4* gap;     // npair: bounding-sphere gaps, then depths (broad phase)
-  urV4* rkin;    // nbody x 12: as urData.rkin
-  urV4* energy;  // kinetic energy of each lane ([0])
-  urV4* h;       // each lane's step ([0]; ur_step_h: dt, or adapt dt for a coarse step)
-  int fail;      // lanes whose joint-space inertia was singular (bits)
-  double* spare; // max(nq, nv): where a lane that does not step scatters
-  int* outb;     // the bodies whose Xe, Xr, cacc, freact a run reads (joint
-  int nout;      // loads: urBody.react; acceleration sensors)
+  urV4* gxmat;      // unused (NULL): each lane computes the orientations it needs
+  urV4* gap;        // npair: bounding-sphere gaps, then depths (broad phase)
+  urV4* rkin;       // nbody x 12: as urData.rkin
+  urV4* energy;     // kinetic energy of each lane ([0])
+  urV4* h;          // each lane's step ([0]; ur_step_h: dt, or adapt dt for a coarse step)
+  int fail;         // lanes whose joint-space inertia was singular (bits)
+  double* spare;    // max(nq, nv): where a lane that does not step scatters
+  int* outb;        // the bodies whose Xe, Xr, cacc, freact a run reads (joint
+  int nout;         // loads: urBody.react; acceleration sensors)
+  int *rstv, nrstv; // the restraint bodies whose forces the vectors compute (ur_restraint_vec)
+  int *rsts, nrsts; // the others (lane by lane); a lane run keeps rkin of these only
   void* mem;
   // NULL, or urLANE_NPROF tick counters that ur_step_lanes adds each stage's time to (make
   // bench: the per-stage split; the ticks are the processor's time-stamp counter on x86-64,
@@ -138,6 +143,7 @@ enum {
   urLANE_RKIN,    // restraint kinematics (vectors)
   urLANE_COPYKIN, // poses, velocities, depths, restraint kinematics back to each run
   urLANE_LOADS,   // applied forces: gravity, restraints, narrow phase, airbags (per run)
+  urLANE_RESTR,   // restraint forces (vectors, ur_restraint_vec's bodies)
   urLANE_COPYF,   // the forces into the vectors, the accelerations back (4x4 transposes)
   urLANE_ABA,     // articulated-body algorithm (vectors)
   urLANE_POST,    // joint loads, sensors, histories, contact bookkeeping (per run)

@@ -1,11 +1,13 @@
 /* engine_lanes.c: up to urNLANE runs of one model stepped in lock-step. Their joint transforms,
  * body poses, ellipsoid positions, velocities, contact broad phase, spherical restraints'
- * kinematics, articulated-body algorithm and Euler update are computed once over vectors of lanes
- * (engine_kin.h, engine_aba.h, engine_quat.h and engine_trig.h instantiated for urV4). Every
- * lane takes the same path through the tree, so the vector code is the scalar code with each
- * operation done for all lanes at once: each run's bits are those of ur_step on its own. The
- * per-run parts (restraint forces, contact narrow phase and laws, airbags, joint loads,
- * sensors, bookkeeping, end of run) stay scalar, fed by 4x4 transposes. On x86-64 the vector
+ * kinematics, restraint forces (springs, dampers, stops, plastic hinges), articulated-body
+ * algorithm and Euler update are computed once over vectors of lanes (engine_kin.h,
+ * engine_aba.h, engine_quat.h and engine_trig.h instantiated for urV4). Every lane takes the
+ * same path through the tree, so the vector code is the scalar code with each operation done
+ * for all lanes at once (a branch that depends on a lane's values: both sides, then selected):
+ * each run's bits are those of ur_step on its own. The per-run parts (restraint forces with
+ * curves or saturation, contact narrow phase and laws, airbags, joint loads, sensors,
+ * bookkeeping, end of run) stay scalar, fed by 4x4 transposes. On x86-64 the vector
  * kernels are also compiled for AVX2 and picked at load time; both evaluate the same IEEE
  * operations (no contraction: ISO C mode), so the bits do not depend on the machine either. */
 #include <math.h>
@@ -237,6 +239,95 @@ urCLONES static void restraints_kin4(const urModel* m, urLanes* L) {
   urv_restraints_kin(m, L->qpos, L->rkin);
 }
 
+// x ? a : b lane by lane (x a comparison's mask)
+#define sel4(x, a, b) ((urV4)(((urV4I)(a) & (x)) | ((urV4I)(b) & ~(x))))
+
+// rforce (engine_restraint.c) over the vectors for a restraint that ur_restraint_vec admits:
+// deflection x, rate xd, and where r is a plastic hinge each lane's plastic deflection xp and
+// whether it broke (br); the same operations as the scalar branches, their results selected
+static inline __attribute__((always_inline)) urV4 rforce4(const urRestraint* r, urV4 x, urV4 xd,
+                                                          urV4 xp, urV4I br) {
+  urV4 f;
+  if (r->mp > 0) {
+    // plastic(): the return map where the trial moment is over mp
+    double b = uru_back_slope(r);
+    urV4 m0 = bc4(r->k) * (x - xp), mb = m0 - bc4(b) * xp;
+    urV4 over = (urV4)((urV4I)mb & ~(urV4I)bc4(-0.0)) - bc4(r->mp), mm = m0;
+    urV4I yield = over > 0;
+    if (yield[0] | yield[1] | yield[2] | yield[3]) {
+      urV4 dxp = sel4(mb > 0, over, -over) / bc4(r->k + b);
+      mm = sel4(yield, bc4(r->k) * (x - xp - dxp), m0);
+    }
+    f = sel4(br, bc4(0), mm) + sel4(br, bc4(0), bc4(r->c) * xd);
+  } else {
+    f = bc4(r->k) * x + bc4(r->c) * xd;
+  }
+  if (r->hi > r->lo) {
+    urV4 fh = f + (bc4(r->kstop) * (x - bc4(r->hi)) + bc4(r->cstop) * xd);
+    urV4 fl = f + (bc4(r->kstop) * (x - bc4(r->lo)) + bc4(r->cstop) * xd);
+    f = sel4(x > bc4(r->hi), fh, sel4(x < bc4(r->lo), fl, f));
+  }
+  return f;
+}
+
+// the restraint forces of body i (nd dofs; sph: spherical) over the vectors, subtracted from
+// L->qfrc (inlined with constant sizes so that the dof loops unroll)
+static inline __attribute__((always_inline)) void restraint4(const urModel* m, urLanes* L,
+                                                             urData* const* d, int n, int i,
+                                                             const int nd, const int sph) {
+  const urBody* b = m->body + i;
+  urV4 x[3], f[3] = {bc4(0), bc4(0), bc4(0)};
+  urV4I br[3] = {{0}, {0}, {0}};
+  const urV4* xs = sph ? L->rkin + 12 * i : x;
+  const urV4* qd = L->qvel + b->vadr;
+  urV4* qf = L->qfrc + b->vadr;
+  urUNROLL for (int k = 0; k < nd; k++) {
+    const urRestraint* r = b->rst + k;
+    if (!sph) {
+      x[k] = L->qpos[b->qadr + k] - bc4(r->x0);
+    }
+    if (r->active) {
+      urV4 xp = bc4(0);
+      if (r->mp > 0) {
+        urV4 st1;
+        for (int l = 0; l < urNLANE; l++) {
+          const double* st = d[l < n ? l : 0]->rst + 2 * (b->vadr + k);
+          xp[l] = st[0];
+          st1[l] = st[1];
+        }
+        br[k] = st1 != bc4(0);
+      }
+      f[k] = rforce4(r, xs[k], sph ? bc4(0) : qd[k], xp, br[k]);
+    }
+    if (!sph) {
+      qf[k] = qf[k] - f[k];
+    }
+  }
+  if (sph) {
+    urV4 t[3];
+    urv_mulmat3tvec(t, xs + 3, f);
+    urUNROLL for (int k = 0; k < 3; k++) {
+      const urRestraint* r = b->rst + k;
+      urV4 c = r->active ? sel4(br[k], bc4(0), bc4(r->c) * qd[k]) : bc4(0);
+      qf[k] = qf[k] - (t[k] + c);
+    }
+  }
+}
+
+// ur_restraints over the vectors for the bodies L->rstv: subtracted from L->qfrc, which holds the
+// runs' own (zero on these bodies' dofs, as ur_restraints starts from); the hinges' plastic
+// deflections are each run's (lanes beyond n repeat lane 0)
+urCLONES static void restraints4(const urModel* m, urLanes* L, urData* const* d, int n) {
+  for (int j = 0; j < L->nrstv; j++) {
+    int i = L->rstv[j];
+    switch (m->body[i].jtype) {
+    case urJNT_SPHERICAL: restraint4(m, L, d, n, i, 3, 1); break;
+    case urJNT_UNIVERSAL: restraint4(m, L, d, n, i, 2, 0); break;
+    default: restraint4(m, L, d, n, i, 1, 0); break; // revolute, prismatic
+    }
+  }
+}
+
 
 // the update of ur_step_euler over the vectors: velocities, then positions with them (addpos),
 // each lane by its own step L->h
@@ -258,7 +349,7 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
   size_t n = nb * (36 * 4 + 6 * 7 + 9 + 3 + 9 + 3 + 3 + 12) + 2 * nv + 2 + nq + nv + 3 * ng + np;
   L->mem = aligned_alloc(sizeof(urV4), (n ? n : 1) * sizeof(urV4));
   L->spare = malloc((nq > nv ? nq : nv) * sizeof(double) + 1);
-  L->outb = malloc(nb * sizeof(int) + 1);
+  L->outb = malloc(3 * nb * sizeof(int) + 1);
   if (!L->mem || !L->spare || !L->outb) {
     ur_lanes_free(L);
     return -1;
@@ -270,6 +361,16 @@ int ur_lanes_init(const urModel* m, urLanes* L) {
     }
     if (read) {
       L->outb[L->nout++] = i;
+    }
+  }
+  L->rstv = L->outb + nb;
+  L->rsts = L->rstv + nb;
+  for (int j = 0; j < m->nrstb; j++) {
+    int i = m->rstb[j];
+    if (ur_restraint_vec(m, i)) {
+      L->rstv[L->nrstv++] = i;
+    } else {
+      L->rsts[L->nrsts++] = i;
     }
   }
   memset(L->mem, 0, n * sizeof(urV4));
@@ -398,8 +499,8 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
     dep[l] = d[l]->pdepth;
   }
   scatter(dep, n, L->gap, (size_t)m->npair);
-  for (int j = 0; j < m->nrstb; j++) {
-    int i = m->rstb[j];
+  for (int j = 0; j < L->nrsts; j++) {
+    int i = L->rsts[j];
     if (m->body[i].jtype == urJNT_SPHERICAL) {
       SCATTER(rkin + 12 * i, 12);
     }
@@ -415,9 +516,10 @@ static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n)
 }
 
 
-// the outputs of the ABA back to each lane's data
+// the outputs of the ABA, and the generalised forces it took, back to each lane's data
 static void scatter_acc(const urModel* m, const urLanes* L, urData* const* d, int n) {
   SCATTER(qacc, m->nv);
+  SCATTER(qfrc, m->nv);
   for (int j = 0; j < L->nout; j++) {
     int i = L->outb[j];
     SCATTER(cacc + 6 * i, 6);
@@ -500,13 +602,15 @@ int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L) {
   scatter_kin(m, L, run, k);
   lap(L, urLANE_COPYKIN, &t0);
   for (int l = 0; l < k; l++) {
-    ur_forward_loads(m, run[l]);
+    ur_forward_loads(m, run[l], L->rsts, L->nrsts);
   }
   lap(L, urLANE_LOADS, &t0);
 
-  // accelerations for all lanes at once
+  // the rest of the restraint forces, and accelerations, for all lanes at once
   gather_forces(m, L, run, k);
   lap(L, urLANE_COPYF, &t0);
+  restraints4(m, L, run, k);
+  lap(L, urLANE_RESTR, &t0);
   urv_aba(m, L);
   lap(L, urLANE_ABA, &t0);
   scatter_acc(m, L, run, k);

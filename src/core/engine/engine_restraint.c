@@ -22,7 +22,7 @@ static double curve(const urCurve* c, double x) {
 
 
 // kinematic hardening's back-moment slope: the tangent beyond mp is k b / (k + b) = kh
-static double back_slope(const urRestraint* r) {
+double uru_back_slope(const urRestraint* r) {
   return r->kh > 0 && r->kh < r->k ? r->k * r->kh / (r->k - r->kh) : 0;
 }
 
@@ -31,7 +31,7 @@ static double back_slope(const urRestraint* r) {
 // (return mapping of 1-D linear kinematic hardening: |M - b xp| <= mp); *dxp: the plastic
 // increment this deflection would commit
 static double plastic(const urRestraint* r, double x, double xp, double* dxp) {
-  double b = back_slope(r), m = r->k * (x - xp), over = fabs(m - b * xp) - r->mp;
+  double b = uru_back_slope(r), m = r->k * (x - xp), over = fabs(m - b * xp) - r->mp;
   *dxp = 0;
   if (over > 0) {
     *dxp = (m - b * xp > 0 ? over : -over) / (r->k + b);
@@ -113,11 +113,30 @@ void ur_restraints_kin(const urModel* m, urData* d) {
 }
 
 
-// generalised restraint forces into d->qfrc (subtracted); the spherical ones need
-// ur_restraints_kin
-void ur_restraints(const urModel* m, urData* d) {
-  for (int j = 0; j < m->nrstb; j++) {
-    int i = m->rstb[j];
+// whether the lanes compute body i's restraint forces over the vectors (engine_lanes.c's
+// restraints4): a revolute, prismatic, universal or spherical joint whose active dofs are linear
+// springs (no curve, no saturation) or plastic hinges, with dampers and stops
+int ur_restraint_vec(const urModel* m, int i) {
+  const urBody* b = m->body + i;
+  if (b->jtype != urJNT_REVOLUTE && b->jtype != urJNT_PRISMATIC && b->jtype != urJNT_UNIVERSAL &&
+      b->jtype != urJNT_SPHERICAL) {
+    return 0;
+  }
+  for (int k = 0; k < 3; k++) {
+    const urRestraint* r = b->rst + k;
+    if (r->active && !(r->mp > 0) && (r->sat > 0 || r->load.n > 0)) {
+      return 0;
+    }
+  }
+  return 1;
+}
+
+
+// generalised restraint forces of the bodies rstb[0..n-1] (m->rstb: all) into d->qfrc
+// (subtracted); the spherical ones need ur_restraints_kin
+void ur_restraints(const urModel* m, urData* d, const int* rstb, int nrstb) {
+  for (int j = 0; j < nrstb; j++) {
+    int i = rstb[j];
     const urBody* b = m->body + i;
     double x[3], f[3] = {0, 0, 0};
     int n = b->jtype == urJNT_SPHERICAL ? 3 : deflection(m, d, i, x);

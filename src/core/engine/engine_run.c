@@ -51,13 +51,14 @@ void ur_forward_pre(const urModel* m, urData* d) {
   urLAP(urSTEP_RKIN);
   ur_contacts_broad(m, d);
   urLAP(urSTEP_BROAD);
-  ur_forward_loads(m, d);
+  ur_forward_loads(m, d, m->rstb, m->nrstb);
 }
 
 
 // the applied forces of the forward pipeline, from the poses, velocities, restraint kinematics
-// (rkin) and pair depths of the broad phase
-void ur_forward_loads(const urModel* m, urData* d) {
+// (rkin) and pair depths of the broad phase; the restraints of the bodies rstb[0..nrstb-1] (the
+// lanes compute the rest over vectors)
+void ur_forward_loads(const urModel* m, urData* d, const int* rstb, int nrstb) {
   memset(d->fext, 0, 6 * (size_t)m->nbody * sizeof(double));
   memset(d->qfrc, 0, (size_t)m->nv * sizeof(double));
   for (int j = 0; j < m->ngrav; j++) {
@@ -70,7 +71,7 @@ void ur_forward_loads(const urModel* m, urData* d) {
     ur_apply_force(m, d, i, f, d->xcom + 3 * i);
   }
   urLAP(urSTEP_GRAV);
-  ur_restraints(m, d);
+  ur_restraints(m, d, rstb, nrstb);
   urLAP(urSTEP_RESTR);
   ur_contacts_narrow(m, d);
   urLAP(urSTEP_NARROW);

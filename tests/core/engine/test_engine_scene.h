@@ -373,9 +373,8 @@ __attribute__((unused)) static urModel* scene_build(int airbag) {
   return m;
 }
 
-// a chain with every joint type under gravity g: free root, revolute, universal, spherical,
-// prismatic (with a spring), fixed
-__attribute__((unused)) static urModel* scene_chain(urIntegrator integ, double dt, double g) {
+// the bodies of scene_chain, to compile
+__attribute__((unused)) static urModel* scene_chain_bodies(void) {
   urModel* m = ur_model_new();
   double I[6] = {0.02, 0.03, 0.015, 0.001, 0, -0.002};
   double c[3] = {0.05, 0.01, -0.08};
@@ -398,6 +397,14 @@ __attribute__((unused)) static urModel* scene_chain(urIntegrator integ, double d
   ur_model_set_restraint(m, b4, 0, &r);
   int b5 = ur_model_add_body(m, "fix", b4, urJNT_FIXED, (double[3]){0.05, 0, 0}, NULL);
   ur_model_set_inertia(m, b5, 0.3, c, I);
+  return m;
+}
+
+
+// a chain with every joint type under gravity g: free root, revolute, universal, spherical,
+// prismatic (with a spring), fixed
+__attribute__((unused)) static urModel* scene_chain(urIntegrator integ, double dt, double g) {
+  urModel* m = scene_chain_bodies();
   m->opt.gravity[2] = g;
   m->opt.integrator = integ;
   m->opt.dt = dt;
