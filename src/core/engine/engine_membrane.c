@@ -71,6 +71,8 @@ int urm_model_compile(urModel* m) {
     }
     char err[100];
     if (!b->mem) {
+      // mass scaling targets this model's step (a bag built for another step is another bag)
+      b->mspec.hstep = b->mspec.mscale > 0 ? m->opt.dt : 0;
       b->mem = ur_mem_build(&b->mspec, err, sizeof(err));
       b->inflated = 0;
       if (!b->mem) {
