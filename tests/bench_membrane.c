@@ -81,9 +81,10 @@ static int bag_report(const urModel* m, const urAirbag* b) {
   const urMembrane* mb = b->mem;
   printf(
       "  bag %s: %d nodes, %d triangles (mesh %d), %d mount nodes; stable step %.1f us: %d "
-      "sub-steps of the %.0f us step; inflation %d relaxation steps\n",
+      "sub-steps of the %.0f us step (mass scaling: %.1f g added to %d triangles); inflation %d "
+      "relaxation steps\n",
       b->name, mb->nn, mb->nt, mb->spec.mesh, mb->nfix, 1e6 * mb->dt_stable, b->nsub,
-      1e6 * m->opt.dt, mb->inflate_steps);
+      1e6 * m->opt.dt, 1e3 * mb->madd, mb->nscaled, mb->inflate_steps);
   size_t n = ur_mem_state_size(mb);
   double* st = calloc(n, sizeof(double));
   double* f = malloc(3 * (size_t)mb->nn * sizeof(double));

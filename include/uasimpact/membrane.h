@@ -79,6 +79,11 @@ typedef struct {
   double zeta_c;    /* contact damping, fraction of critical per node */
   double mu, v_eps; /* regularised Coulomb friction */
   double dt_factor; /* fraction of the stable step taken (<= 1) */
+  double mscale;    /* selective mass scaling: at most this fraction of the fabric's mass added,
+                       to the triangles whose step is below hstep / n, n the fewest sub-steps that
+                       allows (0: none; uasimpact-model(5), BAGS) */
+  double hstep;     /* the multibody step the fabric is sub-cycled in, s: set by the engine when
+                       the model compiles, for mscale (0: no mass scaling) */
 } urMemSpec;
 
 /* constant once inflated */
@@ -111,7 +116,10 @@ typedef struct {
   double* x0;        /* 3 nn: the inflated state, carrier body frame */
   double pref, vref; /* inflated gas state: absolute pressure Pa, volume m^3 */
   double mref;       /* gas mass at inflation, kg */
-  double dt_stable;  /* stable explicit step of the fabric (times dt_factor), s */
+  double dt_stable;  /* stable explicit step of the fabric (times dt_factor), s; with mass
+                        scaling hstep / n */
+  double madd;       /* mass added by the scaling (mscale), kg (0: none) */
+  int nscaled;       /* triangles whose mass it raised */
   double lmin;       /* shortest characteristic length (2 A / longest edge) of the triangles
                         with a free node, m */
   double cbound[3];  /* centre and radius of a sphere holding the inflated bag, body frame */

@@ -743,9 +743,15 @@ void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t) {
       for (int k = 0; k < mb->nn; k++) mass += mb->mass[k];
       int k = snprintf(line, sizeof line,
                        "derived, membrane %s: %d nodes, %d triangles, %d mount nodes, fabric "
-                       "%.3g kg; stable step %.3g us: %d sub-step%s per %.3g us step; ",
-                       b->name, mb->nn, mb->nt, mb->nfix, mass, 1e6 * mb->dt_stable, b->nsub,
-                       b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt);
+                       "%.3g kg",
+                       b->name, mb->nn, mb->nt, mb->nfix, mass);
+      if (mb->madd > 0)
+        k += snprintf(line + k, sizeof line - k,
+                      " (%.3g kg of it added by mass scaling, mscale %g, to %d triangles)",
+                      mb->madd, mb->spec.mscale, mb->nscaled);
+      k += snprintf(line + k, sizeof line - k,
+                    "; stable step %.3g us: %d sub-step%s per %.3g us step; ", 1e6 * mb->dt_stable,
+                    b->nsub, b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt);
       if (b->inflated)
         snprintf(line + k, sizeof line - k,
                  "inflated %.4g L at %.6g Pa (gauge %.4g Pa), largest yarn strain %.3g %%",

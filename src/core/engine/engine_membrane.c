@@ -18,6 +18,7 @@
 
 #include "engine_internal.h"
 #include "../membrane/membrane_internal.h"
+#include "engine_membrane_cull.h"
 
 //---------------------------------- compile -------------------------------------------------------
 
@@ -70,6 +71,8 @@ int urm_model_compile(urModel* m) {
     }
     char err[100];
     if (!b->mem) {
+      // mass scaling targets this model's step (a bag built for another step is another bag)
+      b->mspec.hstep = b->mspec.mscale > 0 ? m->opt.dt : 0;
       b->mem = ur_mem_build(&b->mspec, err, sizeof(err));
       b->inflated = 0;
       if (!b->mem) {
@@ -407,7 +410,8 @@ static double contact_implicit(const urModel* m, urData* d, const urMembrane* mb
    evaluation), a triangle whose sphere misses it has no point inside g, so it adds no force and
    no depth that another triangle reads (left out of the list, the same bits). */
 static double contact_geom(const urModel* m, urData* d, const urAirbag* b, double* st, int g,
-                           double kc, const double lo[3], const double hi[3], double* depth) {
+                           double kc, const double lo[3], const double hi[3],
+                           const urmCullGroups* sb, double* depth) {
   static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   const urMembrane* mb = b->mem;
   const urMemSpec* s = &mb->spec;
@@ -459,49 +463,56 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
   if (ke) {
     memset(ke, 0, 3 * (size_t)mb->ne * sizeof(double));
   }
-  for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
-    int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
-    if (box_gap2(nbx + 7 * (j0 / urMEM_CBLK), gc) >= rg * rg) {
-      for (int j = j0; j < j1; j++) {
-        gn[4 * mb->free[j]] = -INFINITY;
-      }
+  // each free node's depth is -INFINITY on entry (urm_bag_loads, and each call puts back those it
+  // set: the free nodes jlo..jhi - 1 of the boxes within reach and the nodes of the triangles
+  // tried), so only the nodes of the boxes within reach are evaluated or written
+  int gw = sb->grp * urMEM_CBLK; /* free nodes or triangles per group of boxes */
+  int jlo = mb->nfree, jhi = 0;
+  for (int s0 = 0; s0 < sb->nn; s0++) {
+    int g0 = s0 * gw, g1 = g0 + gw < mb->nfree ? g0 + gw : mb->nfree;
+    if (box_gap2(sb->n + 7 * s0, gc) >= rg * rg) { /* no box of the group within */
       continue;
     }
-    for (int j = j0; j < j1; j++) {
-      int i = mb->free[j];
-      double r[3];
-      urm_sub(r, x + 3 * i, gc);
-      gn[4 * i] = -INFINITY;
-      if (urm_dot(r, r) < rg * rg) {
-        if (!out_box(r, gh)) {
-          gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
+    for (int j0 = g0; j0 < g1; j0 += urMEM_CBLK) {
+      int j1 = j0 + urMEM_CBLK < g1 ? j0 + urMEM_CBLK : g1;
+      if (box_gap2(nbx + 7 * (j0 / urMEM_CBLK), gc) >= rg * rg) {
+        continue;
+      }
+      jlo = jlo < j0 ? jlo : j0;
+      jhi = j1;
+      for (int j = j0; j < j1; j++) {
+        int i = mb->free[j];
+        double r[3];
+        urm_sub(r, x + 3 * i, gc);
+        if (urm_dot(r, r) < rg * rg) {
+          if (!out_box(r, gh)) {
+            gn[4 * i] = urm_contact_gap(&e, x + 3 * i, 0, gn + 4 * i + 1);
+          }
+          *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
         }
-        *depth = fmax(*depth, fmax(gn[4 * i], 0)); /* 0: within reach, -1: none */
       }
     }
   }
   int ntl = 0;
-  for (int j0 = 0; j0 < mb->ntfree; j0 += urMEM_CBLK) {
-    // a sphere (c, r) in the box tries at |c - gc| < (rg + r)(1 + 1e-9), so at a box distance
-    // below rg + 1e-9 (rg + r): the margin far above the roundings of c -+ r and of the sums
-    const double* bx = tbx + 7 * (j0 / urMEM_CBLK);
-    double lim = rg + 1e-6 * (rg + bx[6]) + 1e-9;
-    if (box_gap2(bx, gc) >= lim * lim) {
+  for (int s0 = 0; s0 < sb->nt; s0++) {
+    int g0 = s0 * gw, g1 = g0 + gw < mb->ntfree ? g0 + gw : mb->ntfree;
+    // a group's lim no smaller than its boxes' (its largest radius): out of reach, all of them are
+    double slim = rg + 1e-6 * (rg + sb->t[7 * s0 + 6]) + 1e-9;
+    if (box_gap2(sb->t + 7 * s0, gc) >= slim * slim) {
       continue;
     }
-    int j1 = j0 + urMEM_CBLK < mb->ntfree ? j0 + urMEM_CBLK : mb->ntfree;
-    for (int j = j0; j < j1; j++) {
-      int t = mb->tfree[j];
-      double dx = tb[t] - gc[0], dy = tb[nt + t] - gc[1], dz = tb[2 * nt + t] - gc[2];
-      double rr = (rg + tb[3 * nt + t]) * (1 + 1e-9);
-      if (dx * dx + dy * dy + dz * dz < rr * rr) {
-        // the sphere against g's box (a margin above the roundings, as for the blocks)
-        double ux = fmax(fabs(dx) - gh[0], 0), uy = fmax(fabs(dy) - gh[1], 0);
-        double uz = fmax(fabs(dz) - gh[2], 0), rt = tb[3 * nt + t] * (1 + 1e-6) + 1e-9;
-        if (ux * ux + uy * uy + uz * uz < rt * rt) {
-          tl[ntl++] = t;
-        }
+    for (int j0 = g0; j0 < g1; j0 += urMEM_CBLK) {
+      // a sphere (c, r) in the box tries at |c - gc| < (rg + r)(1 + 1e-9), so at a box distance
+      // below rg + 1e-9 (rg + r): the margin far above the roundings of c -+ r and of the sums
+      const double* bx = tbx + 7 * (j0 / urMEM_CBLK);
+      double lim = rg + 1e-6 * (rg + bx[6]) + 1e-9;
+      if (box_gap2(bx, gc) >= lim * lim) {
+        continue;
       }
+      int j1 = j0 + urMEM_CBLK < g1 ? j0 + urMEM_CBLK : g1;
+      // each sphere against g's sphere, then g's box (a margin above the roundings, as for the
+      // blocks): urm_cull_tris
+      ntl = urm_cull_tris(mb, tb, gc, rg, gh, j0, j1, tl, ntl);
     }
   }
   for (int j = 0; j < ntl; j++) {
@@ -588,6 +599,13 @@ static double contact_geom(const urModel* m, urData* d, const urAirbag* b, doubl
                             ke, &nel, &ep);
       }
     }
+  }
+  for (int j = jlo; j < jhi; j++) {
+    gn[4 * mb->free[j]] = -INFINITY;
+  }
+  for (int jt = 0; jt < ntl; jt++) {
+    const int* n3 = mb->tri + 3 * (int)tl[jt];
+    gn[4 * n3[0]] = gn[4 * n3[1]] = gn[4 * n3[2]] = -INFINITY;
   }
   sc[urMEMS_ECONT] += ep;
   if (kn) {
@@ -779,54 +797,21 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
     memset(node_bufs(mb, st) + 5 * (size_t)nn, 0, 3 * (size_t)nn * sizeof(double));
   }
   sc[urMEMS_ECONT] = 0;
-  // the free nodes' box (the free nodes are those of invm != 0), built from the boxes of
-  // urMEM_CBLK of them (contact_geom's culling; after the triangles' spheres and their list)
+  // the culling boxes of contact_geom and the free nodes' box lo, hi (urm_cull_boxes)
   int nt = mb->nt;
   double* tb = sc + urMEMS_N + 44 * (size_t)mb->ntb;
   double *nbx = tb + 5 * (size_t)nt, *tbx = nbx + 7 * (size_t)((nn + urMEM_CBLK - 1) / urMEM_CBLK);
-  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (int j0 = 0; j0 < mb->nfree; j0 += urMEM_CBLK) {
-    int j1 = j0 + urMEM_CBLK < mb->nfree ? j0 + urMEM_CBLK : mb->nfree;
-    double* bx = nbx + 7 * (j0 / urMEM_CBLK);
-    double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-    for (int j = j0; j < j1; j++) { /* in locals: no store through bx to reload */
-      const double* xi = x + 3 * mb->free[j];
-      for (int k = 0; k < 3; k++) {
-        bb[k] = xi[k] < bb[k] ? xi[k] : bb[k];
-        bb[3 + k] = xi[k] > bb[3 + k] ? xi[k] : bb[3 + k];
-      }
-    }
-    memcpy(bx, bb, sizeof(bb));
-    for (int k = 0; k < 3; k++) {
-      lo[k] = bx[k] < lo[k] ? bx[k] : lo[k];
-      hi[k] = bx[3 + k] > hi[k] ? bx[3 + k] : hi[k];
-    }
-  }
-  // each triangle's bounding sphere (its centroid, the farthest node from it: every point of the
-  // triangle within), SoA for contact_geom's test: ur_mem_forces left the centres and squared
-  // radii at the end of the scratch (membrane.h), the radii here
-  for (int t = 0; t < nt; t++) {
-    tb[3 * nt + t] = sqrt(tb[3 * nt + t]); /* apart: a vector loop, no wait on each root */
-  }
-  // the boxes of urMEM_CBLK free triangles' spheres and their largest radius
-  for (int j0 = 0; j0 < mb->ntfree; j0 += urMEM_CBLK) {
-    int j1 = j0 + urMEM_CBLK < mb->ntfree ? j0 + urMEM_CBLK : mb->ntfree;
-    double bb[7] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY, 0};
-    for (int j = j0; j < j1; j++) {
-      int t = mb->tfree[j];
-      double r = tb[3 * nt + t];
-      for (int k = 0; k < 3; k++) {
-        double ct = tb[k * nt + t];
-        bb[k] = ct - r < bb[k] ? ct - r : bb[k];
-        bb[3 + k] = ct + r > bb[3 + k] ? ct + r : bb[3 + k];
-      }
-      bb[6] = r > bb[6] ? r : bb[6];
-    }
-    memcpy(tbx + 7 * (j0 / urMEM_CBLK), bb, sizeof(bb));
+  double lo[3], hi[3];
+  urmCullGroups sb;
+  urm_cull_boxes(mb, x, tb, nbx, tbx, lo, hi, &sb);
+  // each free node's depth not evaluated (contact_geom's state between its calls)
+  double* gn = sc + urMEMS_N;
+  for (int j = 0; j < mb->nfree; j++) {
+    gn[4 * mb->free[j]] = -INFINITY;
   }
   for (int t = 0; t < b->ntarget; t++) {
     double dep;
-    double fs = contact_geom(m, d, b, st, b->target[t], ur_bag_penalty(m, b, t), lo, hi, &dep);
+    double fs = contact_geom(m, d, b, st, b->target[t], ur_bag_penalty(m, b, t), lo, hi, &sb, &dep);
     bd->depth[t] = dep;
     bd->ftgt[t] = fs;
     bd->force += fs;
@@ -836,7 +821,7 @@ void urm_bag_loads(const urModel* m, urData* d, int ib) {
   }
   for (int t = 0; t < b->nsupport; t++) {
     double dep;
-    contact_geom(m, d, b, st, b->support[t], mb->spec.kc_alpha, lo, hi, &dep);
+    contact_geom(m, d, b, st, b->support[t], mb->spec.kc_alpha, lo, hi, &sb, &dep);
   }
 
   // the mount patch's forces on the carrier

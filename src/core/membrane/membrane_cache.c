@@ -38,7 +38,7 @@ struct urMemCache {
 //---------------------------------- the key -------------------------------------------------------
 
 /* a field added to urMemSpec must be compared in urm_mem_spec_same (LP64 size) */
-_Static_assert(sizeof(void*) != 8 || sizeof(urMemSpec) == 288,
+_Static_assert(sizeof(void*) != 8 || sizeof(urMemSpec) == 304,
                "urMemSpec changed: update urm_mem_spec_same");
 
 static int dsame(const double* a, const double* b, int n) {
@@ -62,7 +62,7 @@ int urm_mem_spec_same(const urMemSpec* a, const urMemSpec* b) {
          SAME(e2t) && SAME(nu12) && SAME(g0t) && SAME(gtt) && SAME(lock) && SAME(re) &&
          SAME(rhot) && SAME(damp) && SAME(p0) && SAME(patm) && SAME(gamma) && SAME(temp) &&
          SAME(vent_area) && SAME(vent_cd) && SAME(leak) && SAME(kc_alpha) && SAME(kc_dt) &&
-         SAME(zeta_c) && SAME(mu) && SAME(v_eps) && SAME(dt_factor);
+         SAME(zeta_c) && SAME(mu) && SAME(v_eps) && SAME(dt_factor) && SAME(mscale) && SAME(hstep);
 }
 
 //---------------------------------- the copy ------------------------------------------------------

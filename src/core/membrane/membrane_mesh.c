@@ -79,6 +79,8 @@ int ur_mem_spec_check(const urMemSpec* s, char* err, size_t n) {
     what = "the bag's orientation quaternion is zero";
   } else if (!(s->dt_factor > 0 && s->dt_factor <= 1)) {
     what = "dt_factor must be in (0, 1]";
+  } else if (!(s->mscale >= 0 && s->mscale <= 1 && s->hstep >= 0)) {
+    what = "mscale must be in [0, 1] (a fraction of the fabric's mass)";
   }
   if (what) {
     snprintf(err, n, "%s", what);
@@ -238,6 +240,53 @@ double ur_mem_stable_dt(const urMembrane* mb) {
   double nu21 = s->nu12 * s->e2t / s->e1t;
   double c = sqrt(fmax(s->e1t, s->e2t) / ((1 - s->nu12 * nu21) * s->rhot));
   return mb->lmin / c;
+}
+
+
+/* selective mass scaling (explicit FE practice: mass added only to the elements whose stable step
+   is below the target, as LS-DYNA's DT2MS and Radioss's /DT/NODA do; uasimpact-model(5), BAGS):
+   for the fewest sub-steps n of the multibody step hstep, the triangles whose step dt_factor lc /
+   c is below hstep / n take the areal density that brings it there, rhot (lneed / lc)^2, lneed =
+   (hstep / n) c / dt_factor, their corners a third of the added mass each, when all that is added
+   comes to at most mscale of the fabric's mass (lc: each triangle's length, INFINITY for the
+   mount patch's; c the dilatational wave speed). The step then is hstep / n (returned; 0: no
+   scaling, for mscale or hstep 0 or when no n below the unscaled one fits). The stiffness,
+   damping time and contact penalty (per area: rhot) stay the material's. */
+static double mass_scale(urMembrane* mb, const double* lct, double c) {
+  const urMemSpec* s = &mb->spec;
+  mb->madd = 0;
+  mb->nscaled = 0;
+  if (!(s->mscale > 0 && s->hstep > 0 && mb->lmin < INFINITY)) {
+    return 0;
+  }
+  double mfab = 0;
+  for (int t = 0; t < mb->nt; t++) {
+    mfab += s->rhot * mb->area0[t];
+  }
+  int nmax = (int)ceil(s->hstep / (s->dt_factor * mb->lmin / c) - 1e-9);
+  for (int n = 1; n < nmax; n++) {
+    double target = s->hstep / n, lneed = target * c / s->dt_factor, add = 0;
+    for (int t = 0; t < mb->nt; t++) {
+      if (lct[t] < lneed) {
+        add += s->rhot * mb->area0[t] * ((lneed / lct[t]) * (lneed / lct[t]) - 1);
+      }
+    }
+    if (add > s->mscale * mfab) {
+      continue;
+    }
+    for (int t = 0; t < mb->nt; t++) {
+      if (lct[t] < lneed) {
+        double dm = s->rhot * mb->area0[t] * ((lneed / lct[t]) * (lneed / lct[t]) - 1) / 3;
+        for (int k = 0; k < 3; k++) {
+          mb->mass[mb->tri[3 * t + k]] += dm;
+        }
+        mb->nscaled++;
+      }
+    }
+    mb->madd = add;
+    return target;
+  }
+  return 0;
 }
 
 
@@ -431,6 +480,13 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
   double c = sqrt(fmax(s->e1t, s->e2t) / ((1 - s->nu12 * nu21) * s->rhot));
   memset(mb->mass, 0, (size_t)nn * sizeof(double));
   mb->lmin = INFINITY;
+  double* lct = malloc((size_t)nt * sizeof(double)); /* each triangle's length, INFINITY: fixed */
+  if (!lct) {
+    free(xref);
+    ur_mem_free(mb);
+    snprintf(err, n, "out of memory");
+    return NULL;
+  }
   for (int i = 0; i < nn; i++) {
     mb->invm[i] = 1; /* for now: 0 marks a mount node */
   }
@@ -447,6 +503,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     urm_cross(nrm, e1, e2);
     double A2 = sqrt(urm_dot(nrm, nrm));
     if (!(A2 > 0)) {
+      free(lct);
       free(xref);
       ur_mem_free(mb);
       snprintf(err, n, "degenerate triangle in the mesh");
@@ -481,12 +538,17 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     double lc = 2 * A0 / lmax;
     if (mb->invm[v[0]] != 0 || mb->invm[v[1]] != 0 || mb->invm[v[2]] != 0) {
       mb->lmin = fmin(mb->lmin, lc); /* a triangle of the mount patch alone never moves */
+      lct[t] = lc;
+    } else {
+      lct[t] = INFINITY;
     }
     mb->beta[t] = s->damp * lc / c;
     for (int k = 0; k < 3; k++) {
       mb->mass[v[k]] += s->rhot * A0 / 3;
     }
   }
+  double dts = mass_scale(mb, lct, c);
+  free(lct);
   for (int i = 0; i < nn; i++) {
     mb->invm[i] = 1 / mb->mass[i];
   }
@@ -518,7 +580,7 @@ urMembrane* ur_mem_build(const urMemSpec* s, char* err, size_t n) {
     snprintf(err, n, "out of memory");
     return NULL;
   }
-  mb->dt_stable = s->dt_factor * ur_mem_stable_dt(mb);
+  mb->dt_stable = dts > 0 ? dts : s->dt_factor * ur_mem_stable_dt(mb);
 
   // not inflated yet: the declared shape, the gas at p0 in its volume
   memcpy(mb->x0, mb->xshape, 3 * (size_t)nn * sizeof(double));

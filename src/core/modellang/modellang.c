@@ -124,6 +124,7 @@ static const KeySpec spec_airbag[] = {NAMER("geom"),
                                       NUM("kc_dt"),
                                       NUM("zeta_c"),
                                       NUM("dt_factor"),
+                                      NUM("mscale"),
                                       {"support", K_NAMES, urMAXBAGTGT, 1, 0, NULL}};
 static const KeySpec spec_sensor[] = {
     {"type", K_ENUM, 1, 0, 1,

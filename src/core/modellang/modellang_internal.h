@@ -51,7 +51,7 @@ const char* url_word(const urlLex* lx, int i);
 #include "uasimpact/material.h"
 #include "uasimpact/modellang.h"
 
-#define MAXKEY  44  /* keys of one statement kind */
+#define MAXKEY  48  /* keys of one statement kind */
 #define MSGLEN  512 /* internal message buffer */
 #define MAXLIST 64  /* names in one list of 'pairs' */
 #define NUMLEN  400 /* longest number accepted, characters */

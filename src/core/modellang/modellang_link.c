@@ -159,10 +159,10 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
     return url_fail(p, vm->line, "airbag '%s': a membrane bag needs size=A,B (plan semi-axes, m)",
                     b->name);
   }
-  static const char* const nn[] = {"depth", "top",      "mount_r", "e1t",       "e2t",
-                                   "nu12",  "g0t",      "gtt",     "lock",      "re",
-                                   "rhot",  "damp",     "temp",    "vent_area", "vent_cd",
-                                   "leak",  "kc_alpha", "kc_dt",   "zeta_c",    "dt_factor"};
+  static const char* const nn[] = {"depth",  "top",       "mount_r", "e1t",  "e2t",      "nu12",
+                                   "g0t",    "gtt",       "lock",    "re",   "rhot",     "damp",
+                                   "temp",   "vent_area", "vent_cd", "leak", "kc_alpha", "kc_dt",
+                                   "zeta_c", "dt_factor", "mscale"};
   for (size_t i = 0; i < sizeof(nn) / sizeof(nn[0]); i++) {
     if (url_nonneg(p, b, nn[i], 0)) {
       return -1;
@@ -210,6 +210,7 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
   s->kc_dt = url_num(b, "kc_dt", s->kc_dt);
   s->zeta_c = url_num(b, "zeta_c", s->zeta_c);
   s->dt_factor = url_num(b, "dt_factor", s->dt_factor);
+  s->mscale = url_num(b, "mscale", s->mscale);
   s->p0 = bag->gas.p0;
   s->patm = bag->gas.patm;
   s->gamma = bag->gas.gamma;

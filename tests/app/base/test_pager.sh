@@ -91,8 +91,9 @@ keys p1 Tab
 check plot_history_tab wait_for p1 'uasimpact\[C\]> plot history chest_defl *$'
 keys p1 C-u
 
-# show PREFIX at the prompt; a slip gets a suggestion
-line p1 "show bag"
+# show PREFIX at the prompt; a slip gets a suggestion (a prefix whose lines fit the 24-line screen:
+# 'show bag' no longer does, and would leave the next keys to less)
+line p1 "show bag_front_k"
 check show_bag wait_for p1 '^bag_front_kappa +[0-9.]+$'
 line p1 "set wnd 5"
 check did_you_mean wait_for p1 "^error: set: unknown parameter 'wnd' \(did you mean 'wind'\?\)"

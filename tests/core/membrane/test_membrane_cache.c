@@ -127,11 +127,12 @@ static void test_hit_bitwise(void** state) {
 /* the doubles of urMemSpec, every one (the LP64 size below fails when a field is added) */
 #define F(f) offsetof(urMemSpec, f)
 static const size_t dfield[] = {
-    F(a),        F(b),       F(depth),   F(top),     F(mount[0]),  F(mount[1]), F(mount[2]),
-    F(quat[0]),  F(quat[1]), F(quat[2]), F(quat[3]), F(mount_r),   F(e1t),      F(e2t),
-    F(nu12),     F(g0t),     F(gtt),     F(lock),    F(re),        F(rhot),     F(damp),
-    F(p0),       F(patm),    F(gamma),   F(temp),    F(vent_area), F(vent_cd),  F(leak),
-    F(kc_alpha), F(kc_dt),   F(zeta_c),  F(mu),      F(v_eps),     F(dt_factor)};
+    F(a),        F(b),         F(depth),   F(top),       F(mount[0]), F(mount[1]),
+    F(mount[2]), F(quat[0]),   F(quat[1]), F(quat[2]),   F(quat[3]),  F(mount_r),
+    F(e1t),      F(e2t),       F(nu12),    F(g0t),       F(gtt),      F(lock),
+    F(re),       F(rhot),      F(damp),    F(p0),        F(patm),     F(gamma),
+    F(temp),     F(vent_area), F(vent_cd), F(leak),      F(kc_alpha), F(kc_dt),
+    F(zeta_c),   F(mu),        F(v_eps),   F(dt_factor), F(mscale),   F(hstep)};
 #define NDF (sizeof dfield / sizeof dfield[0])
 
 /* any one field changed misses (by one ulp for a double; 0 and -0 differ); the spec itself hits */
