@@ -15,8 +15,8 @@
 #   make refit-verify  the refit's logged optimum (stage 2's best row, the final point) evaluated
 #                 again, bit for bit (scripts/refit-verify.sh; minutes); build/refit-verify/
 #   make membrane-convergence  the membrane airbag's mesh and time-step convergence on case A
-#                 (scripts/membrane-convergence.sh; minutes of grids; its centre impacts are in
-#                 make check: tests/test_membrane_convergence.sh)
+#                 (scripts/membrane-convergence.sh; about a minute; make check runs it too:
+#                 tests/test_membrane_convergence.sh and test_membrane_convergence_grid.sh)
 #   make sensitivity  how far Table 17 moves with one unknown the calibration does not set
 #                 moved in its public range, at the shipped models (scripts/sensitivity.sh;
 #                 build/sensitivity/; STEP=0.2 for a quick look, VARIANTS=a,b for some only)
