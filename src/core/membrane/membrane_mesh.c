@@ -252,6 +252,12 @@ double ur_mem_stable_dt(const urMembrane* mb) {
    mount patch's; c the dilatational wave speed). The step then is hstep / n (returned; 0: no
    scaling, for mscale or hstep 0 or when no n below the unscaled one fits). The stiffness,
    damping time and contact penalty (per area: rhot) stay the material's. */
+/* the mass triangle t takes to reach length lneed (0 when it is that long) */
+static double tri_add(const urMembrane* mb, const double* lct, int t, double lneed) {
+  double r = lneed / lct[t];
+  return lct[t] < lneed ? mb->spec.rhot * mb->area0[t] * (r * r - 1) : 0;
+}
+
 static double mass_scale(urMembrane* mb, const double* lct, double c) {
   const urMemSpec* s = &mb->spec;
   mb->madd = 0;
@@ -267,16 +273,14 @@ static double mass_scale(urMembrane* mb, const double* lct, double c) {
   for (int n = 1; n < nmax; n++) {
     double target = s->hstep / n, lneed = target * c / s->dt_factor, add = 0;
     for (int t = 0; t < mb->nt; t++) {
-      if (lct[t] < lneed) {
-        add += s->rhot * mb->area0[t] * ((lneed / lct[t]) * (lneed / lct[t]) - 1);
-      }
+      add += tri_add(mb, lct, t, lneed);
     }
     if (add > s->mscale * mfab) {
       continue;
     }
     for (int t = 0; t < mb->nt; t++) {
-      if (lct[t] < lneed) {
-        double dm = s->rhot * mb->area0[t] * ((lneed / lct[t]) * (lneed / lct[t]) - 1) / 3;
+      double dm = tri_add(mb, lct, t, lneed) / 3;
+      if (dm > 0) {
         for (int k = 0; k < 3; k++) {
           mb->mass[mb->tri[3 * t + k]] += dm;
         }

@@ -427,7 +427,8 @@ static void test_clear_sliding_past(void** state) {
 // straight at its speed) with adapt 1 and 4. With 4 the flight between the targets is taken in
 // coarse steps, and none comes within reach: over each coarse step and one dt more the ball's
 // straight path keeps it off both targets (exact: spheres), and no contact is active at a
-// coarse step's start (ntouch 0). The contacts are stepped at dt: the second one starts at the same step.
+// coarse step's start (ntouch 0). The contacts are stepped at dt: the second one starts at the
+// same step.
 // Its last contact moves by less than 0.5 % of the first-to-last time (measured: 0).
 static void test_adapt_clear_only(void** state) {
   double tlast[2], tsecond[2];

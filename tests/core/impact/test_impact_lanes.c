@@ -2,8 +2,9 @@
  * offset, the bytes of ur_impact_run: the whole result (criteria, P, reason) and the recorded
  * histories, on the built-in cases A and C at zero wind and B at 10 m/s (oblique path), over a
  * lattice that mixes contact cells, grazing cells and cells the drone passes by; with coarse
- * steps (adapt 4, the default: each lane its own step; none starts in contact) and without. Every offset taken is handed back exactly once
- * with its tag; fewer offsets than lanes, and none, work. */
+ * steps (adapt 4, the default: each lane its own step; none starts in contact) and without.
+ * Every offset taken is handed back exactly once with its tag; fewer offsets than lanes, and
+ * none, work. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>

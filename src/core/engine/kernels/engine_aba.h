@@ -5,9 +5,10 @@
  * the data (fields S IA pA U Dinv uu cbias cvel cacc Xe Xr qfrc fext qacc freact energy), and
  * urINVSYM(d, Dinv, D, nv) the inverse of a joint-space inertia with its failure handling,
  * urSETENERGY(d, ke) the store of the kinetic energy, urSTEPH(d) the step under way (urT: the
- * implicit damping's h), urABA_ATTR (optional) attributes of the entry point. The same expressions in the same order make each lane's bits those of the scalar
- * run. No include guard: included once per instance; the protocol (who defines and undefines the
- * parameters, the bit-exactness rules): src/README. */
+ * implicit damping's h), urABA_ATTR (optional) attributes of the entry point. The same
+ * expressions in the same order make each lane's bits those of the scalar run. No include
+ * guard: included once per instance; the protocol (who defines and undefines the parameters,
+ * the bit-exactness rules): src/README. */
 
 // base acceleration (-gravity) expressed in root body i
 static void urFN(baseacc)(const urModel* m, const urD* d, int i, urT a[6]) {
