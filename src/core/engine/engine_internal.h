@@ -157,6 +157,10 @@ int ur_lanes_init(const urModel* m, urLanes* L);
 void ur_lanes_trig(const double x[urNLANE], double s[urNLANE], double c[urNLANE],
                    const double y[urNLANE], const double w[urNLANE], double a[urNLANE]);
 void ur_lanes_free(urLanes* L);
+// uru_restraints_kin and uru_addpos of a run alone, bitwise, its quaternion joints four at a
+// time over the vectors
+void ur_restraints_kin_joints(const urModel* m, const double* qpos, double* rkin);
+void ur_addpos_joints(const urModel* m, double* qpos, const double* qvel, double h);
 // one step of each of the runs d[0..n-1] (urNLANE at a time), bitwise as ur_step on each
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 
