@@ -176,8 +176,8 @@ static inline __attribute__((always_inline)) void axisrot4(urV4 R[9], const urV4
 #undef urSEL
 #undef urSQRT
 
-#define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
-#define urKIN_ATTR                urCLONES
+#define urAXISROT(R, axis, angle, slot) axisrot4(R, axis, &(angle))
+#define urKIN_ATTR                      urCLONES
 #include "kernels/engine_kin.h"
 #undef urAXISROT
 #undef urT
@@ -340,6 +340,50 @@ urCLONES void ur_addpos_joints(const urModel* m, double* qpos, const double* qve
   }
   if (n) {
     quat_joints4(qpos, qvel, h, qa, va, n);
+  }
+}
+
+// the rotations about the revolute and universal joints' axes (jcalc's urAXISROT, axisrot)
+// into each body's stash (engine_kinematics.c: the tail of d->S, slots 0 and 1)
+static inline __attribute__((always_inline)) void axisrot_joints4(double* const* dst,
+                                                                  const double* const* ax,
+                                                                  const double* ang, int n) {
+  int l1 = n > 1, l2 = n > 2 ? 2 : 0, l3 = n > 3 ? 3 : 0;
+  urV4 a[3], t, R[9];
+  for (int k = 0; k < 3; k++) {
+    double e[urNLANE] = {ax[0][k], ax[l1][k], ax[l2][k], ax[l3][k]};
+    memcpy(a + k, e, sizeof(e));
+  }
+  double e[urNLANE] = {ang[0], ang[l1], ang[l2], ang[l3]};
+  memcpy(&t, e, sizeof(e));
+  axisrot4(R, a, &t);
+  for (int l = 0; l < n; l++) {
+    for (int k = 0; k < 9; k++) {
+      dst[l][k] = R[k][l];
+    }
+  }
+}
+
+urCLONES void ur_axisrot_joints(const urModel* m, urData* d) {
+  double* dst[urNLANE];
+  const double* ax[urNLANE];
+  double ang[urNLANE];
+  int n = 0;
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    int na = b->jtype == urJNT_REVOLUTE ? 1 : b->jtype == urJNT_UNIVERSAL ? 2 : 0;
+    for (int s = 0; s < na; s++) {
+      dst[n] = ur_jrot_slot(d, i, s);
+      ax[n] = b->axis[s];
+      ang[n++] = d->qpos[b->qadr + s];
+      if (n == urNLANE) {
+        axisrot_joints4(dst, ax, ang, n);
+        n = 0;
+      }
+    }
+  }
+  if (n) {
+    axisrot_joints4(dst, ax, ang, n);
   }
 }
 
