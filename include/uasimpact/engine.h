@@ -302,6 +302,9 @@ typedef struct {
   int nraw;      /* membrane bags compiled but not yet inflated: runs refuse until
                     ur_model_inflate */
   int nfrac;     /* joints that can break (urBody.fqadr; 0: a run's topology never changes) */
+  int mirror;    /* 1: the model is its own mirror image in the plane y = 0 (ur_model_mirror,
+                    set by ur_model_compile); 0: nomirror says why not */
+  char nomirror[urMSGLEN];
   // compiled lists of bodies, for the per-step loops: gravity compensated (gravity != 1), with
   // an active restraint, with a load curve (its extremes are tracked), whose reaction is needed
   // (react)
@@ -512,6 +515,14 @@ int ur_model_scale_tree(urModel* m, int root, double fmass, double fsize);
    A membrane airbag's declaration is checked and its mesh built here, but not inflated (seconds
    to a minute of CPU at fine meshes): that is ur_model_inflate's. */
 int ur_model_compile(urModel* m);
+
+/* whether a compiled model is its own mirror image in the plane y = 0 (x forward, z up; the
+   plane of the course through the head at face 0 or 180, so the impacts at dperp and -dperp
+   are mirror images): its bodies, ellipsoids, contact pairs and airbags (a membrane's mesh)
+   pair off with mirrored data, the drone's root and the head lie on the plane and the injury
+   sensors read what the mirror keeps (engine_mirror.c). 1, or 0 with one line in why (n bytes)
+   naming the first part that breaks the symmetry. ur_model_compile keeps it in m->mirror. */
+int ur_model_mirror(const urModel* m, char* why, size_t n);
 
 /* Inflate the compiled model's membrane airbags that are not yet (ur_model_inflate_bag: bag i
    alone), through opt.memcache when there is one; idempotent. The model's owner calls it before

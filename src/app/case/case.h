@@ -111,7 +111,8 @@ typedef struct {
   double par_min, par_max, perp_max; /* grid extents along_min, along_max, cross_max when set, m */
   int par_min_set, par_max_set, perp_max_set; /* 0: sized automatically (derived) */
   double threads;                             /* grid worker threads (a whole number) */
-  int recall;                        /* 1: a grid identical to an earlier one reuses its cells */
+  int recall; /* 1: a grid identical to an earlier one reuses its cells */
+  int mirror; /* 1: a grid of a mirror-symmetric model and scene simulates dperp >= 0 only */
   char ov_name[uraMAXOV][urNAMELEN]; /* model parameters overridden (SI values) */
   double ov_val[uraMAXOV];
   int ov_user[uraMAXOV]; /* 1: set by the user, 0: by the case preset */

@@ -18,6 +18,7 @@ typedef struct {
   int set[3];                        /* along_min, along_max, cross_max set */
   double par_min, par_max, perp_max; /* when set (0 when derived) */
   urInjuryParams injury;
+  int mirror; /* set mirror (a mirrored half differs from its own cells in the last bits) */
 } gridKey;
 
 typedef struct {
@@ -38,6 +39,7 @@ static void key_of(uraCtx* c, const urImpactCond* cond, gridKey* k) {
   ura_model_key(c, &c->st, &k->model);
   k->cond = *cond;
   k->step = c->st.step;
+  k->mirror = c->st.mirror;
   k->set[0] = c->st.par_min_set;
   k->set[1] = c->st.par_max_set;
   k->set[2] = c->st.perp_max_set;
@@ -56,7 +58,7 @@ static int key_same(const gridKey* a, const gridKey* b) {
   const urImpactCond *x = &a->cond, *y = &b->cond;
   if (!same(x->speed, y->speed) || !same(x->angle, y->angle) || !same(x->face, y->face) ||
       !same(x->pitch, y->pitch) || !same(x->roll, y->roll) || !same(x->yaw, y->yaw) ||
-      x->tau != y->tau || x->aim != y->aim || !same(a->step, b->step) ||
+      x->tau != y->tau || x->aim != y->aim || a->mirror != b->mirror || !same(a->step, b->step) ||
       memcmp(a->set, b->set, sizeof a->set) || !same(a->par_min, b->par_min) ||
       !same(a->par_max, b->par_max) || !same(a->perp_max, b->perp_max)) {
     return 0;

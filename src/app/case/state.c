@@ -83,6 +83,11 @@ const uraParam ura_params[] = {
      "on: a grid asked for again with the same model, conditions, step, extents and injury "
      "settings reuses the cells computed earlier in the session; off: always simulate",
      onoff_names},
+    {"mirror", uraP_ENUM, OFF(mirror), 0, "", 0, 0,
+     "on: a grid at face 0 or 180 simulates dperp >= 0 only and takes the other half as its "
+     "mirror image, when the model and the scene are mirror-symmetric (show mirror says whether "
+     "they are, or what breaks it); off: every cell simulated",
+     onoff_names},
     {"winds", uraP_LIST, OFF(winds), 0, "m/s", 0, 60,
      "wind speeds of the rows of descent and parametric", NULL},
     {"speed", uraP_NUM, OFF(speed), OFF(speed_set), "m/s", 0.01, 200,
@@ -222,6 +227,7 @@ void ura_state_defaults(uraState* s) {
   s->format = uraFMT_TABLE;
   s->step = 0.05;
   s->recall = 1;
+  s->mirror = 1;
   s->pager = 1;
   ura_risk_defaults(&s->risk);
   long n = sysconf(_SC_NPROCESSORS_ONLN);

@@ -260,7 +260,7 @@ static void show_line(uraCtx* c, const char* name, const char* val, const char* 
    parameter alone) keeps the derived grid extents across the lines of a listing (ext[3]: 0 not
    sized yet, 1 sized, -1 not available) */
 static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
-  char val[1024], src[160];
+  char val[1024], src[160], mnote[300];
   const char* note = "";
   if (p->setoff && !*(const int*)((const char*)&c->st + p->setoff)) {
     double one[4] = {0, 0, 0, 0}, *v = ext ? ext : one;
@@ -322,6 +322,16 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
       note = "  (set)";
     else
       note = ura_design_mark(c, p->name, src, sizeof src);
+    if (!strcmp(p->name, "mirror") && !*note) {
+      /* whether the next grid takes its half dperp < 0 as the mirror image, and why not */
+      char why[200];
+      if (ura_grid_mirror(c, why, sizeof why))
+        snprintf(mnote, sizeof mnote,
+                 "  (derived: the next grid simulates dperp >= 0 and mirrors it)");
+      else
+        snprintf(mnote, sizeof mnote, "  (derived: the next grid simulates every cell: %s)", why);
+      note = mnote;
+    }
   }
   show_line(c, p->name, val, p->unit, note);
   return 0;

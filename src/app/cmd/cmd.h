@@ -88,6 +88,10 @@ int ura_grid_run(uraCtx* c, int quiet);
 /* 1 when the scene of st is mirror-symmetric about the course but for the face (no roll or
    yaw): the grid at face -phi is the one at phi mirrored (dperp -> -dperp), with the same Q */
 int ura_grid_symmetric(const uraState* st);
+/* 1 when the live case's next grid simulates dperp >= 0 only and mirrors the rest: set mirror
+   on, face 0 or 180, no roll or yaw, and a mirror-symmetric model (urModel.mirror); 0 with why
+   (n bytes; NULL: not wanted) saying what breaks it */
+int ura_grid_mirror(uraCtx* c, char* why, size_t n);
 int ura_grid_extents(uraCtx* c, double* par_min, double* par_max, double* perp_max);
 
 /* handlers the table names that live in the ui layer: the viewer (view.c), plots (plot_cmd.c), and

@@ -129,10 +129,18 @@ int ura_grid_symmetric(const uraState* st) {
   return st->roll == 0 && st->yaw == 0;
 }
 
-/* the set-up is mirror-symmetric about the course: face 0 or 180, no roll or yaw */
-static int mirrored(const uraCtx* c) {
+int ura_grid_mirror(uraCtx* c, char* why, size_t n) {
   double f = fmod(fabs(c->st.face), 180.0);
-  return f == 0 && ura_grid_symmetric(&c->st);
+  const urModel* m = NULL;
+  const char* no = !c->st.mirror                       ? "set mirror off"
+                   : c->st.roll != 0 || c->st.yaw != 0 ? "roll or yaw breaks the symmetry"
+                   : f != 0                            ? "the face is neither 0 nor 180 deg"
+                   : !(m = ura_model(c))               ? c->err
+                   : !m->mirror                        ? m->nomirror
+                                                       : NULL;
+  if (why) snprintf(why, n, "%s", no ? no : "");
+  if (!m) c->err[0] = 0;
+  return no == NULL;
 }
 
 static double seconds_since(const struct timespec* t0) {
@@ -218,8 +226,9 @@ int ura_grid_run(uraCtx* c, int quiet) {
   if (!s) return -1;
 
   /* extents, lattice, refusing what memory cannot hold */
-  urGridSpec spec = {c->st.step, 0,    0,           0,    mirrored(c),         (int)c->st.threads,
-                     cb_may,     NULL, cb_progress, NULL, ura_interrupt_flag()};
+  urGridSpec spec = {c->st.step,          0,      0,    0,           ura_grid_mirror(c, NULL, 0),
+                     (int)c->st.threads,  cb_may, NULL, cb_progress, NULL,
+                     ura_interrupt_flag()};
   long ncell;
   double mb = 0, avail = 0;
   const char* what = "";

@@ -48,6 +48,9 @@ static const char* const checks[][2] = {
      "centre values (Tables 11-13)"},
     {"test_grid.c, test_grid.sh",
      "grids: the Q sum, the mirror rule, the same cells for any thread count"},
+    {"test_engine_mirror.c, test_grid_mirror.sh",
+     "the mirror rule only for a mirror-symmetric model: the built-ins symmetric, a change to one "
+     "side found and named, an asymmetric drone's grid made of its own impacts"},
     {"test_engine_lanes.c, test_impact_lanes.c",
      "invariance: runs in vector lanes are bit for bit the runs alone"},
     {"test_sora.c", "Annex F critical areas and iGRC against casex's own values"},

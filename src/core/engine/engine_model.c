@@ -625,6 +625,7 @@ int ur_model_compile(urModel* m) {
   }
   m->compiled = 1;
   m->err[0] = 0;
+  m->mirror = ur_model_mirror(m, m->nomirror, sizeof m->nomirror);
   return 0;
 }
 

@@ -450,8 +450,22 @@ static int surface_build(uraCtx* c, struct uraMc* m, surface* s, const surface* 
   for (long g = 0; g < ngrid && rc == 0; g++) {
     long p = mirror_partner(s, base, g);
     if (p < 0 || old_value(s, old, g % s->total, (int)(g / s->total), &s->value[g]) == 0) continue;
-    s->value[g] = s->value[p];
-    n->mirrored++;
+    /* its model (the branch's devices, the drawn parameters) must be mirror-symmetric too */
+    node_state(m, s, base, g % s->total, s->masks[g / s->total], tmp, ns);
+    if (ura_model_state(c, ns, "montecarlo")) {
+      rc = -1;
+      node_fail(c, m, s, g);
+      break;
+    }
+    if (c->model->mirror) {
+      s->value[g] = s->value[p];
+      n->mirrored++;
+      continue;
+    }
+    rc = ura_risk_grid(c, ns, "montecarlo", 1, &s->value[g]);
+    n->recalled += rc == 0 && c->last.recalled;
+    n->computed += rc == 0 && !c->last.recalled;
+    if (rc) node_fail(c, m, s, g);
   }
   return rc;
 }
@@ -545,7 +559,10 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
 
   /* the method, in words */
   int recalled = cnt.recalled + cnt.kept;
-  char mirror[300];
+  char mirror[500], asym[300] = "";
+  const urModel* lm = s.mirror && s.face_ax >= 0 && !cnt.mirrored ? c->model : NULL;
+  if (lm && !lm->mirror)
+    snprintf(asym, sizeof asym, ": the model is not mirror-symmetric: %s", lm->nomirror);
   snprintf(mirror, sizeof mirror,
            "grids: %d computed, %d taken by mirror symmetry (face -phi is phi mirrored)%s, %d "
            "recalled",
@@ -553,7 +570,7 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
            !base->risk.mc_mirror ? ": mc_mirror off"
            : !s.mirror           ? ": roll or yaw breaks the symmetry"
            : s.face_ax < 0       ? ": face is not drawn"
-                                 : "",
+                                 : asym,
            cnt.recalled);
   char axes[400] = "";
   size_t k = 0;

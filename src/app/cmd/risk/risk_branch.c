@@ -88,6 +88,9 @@ int ura_risk_grid_mirror(uraCtx* c, const uraState* ns, const char* who, int qui
                          int* mirrored) {
   double face = ura_risk_mirror_face(ns, ns->face);
   *mirrored = face != ns->face;
+  /* the model of ns (its overrides: a device left undeployed may break the symmetry) */
+  if (*mirrored && ura_model_state(c, ns, who)) return -1;
+  if (*mirrored && !c->model->mirror) *mirrored = 0;
   if (!*mirrored) return ura_risk_grid(c, ns, who, quiet, q);
   uraState* m = malloc(sizeof *m);
   if (!m) return ura_fail(c, "%s: out of memory", who);
