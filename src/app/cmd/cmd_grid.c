@@ -326,12 +326,24 @@ static int grid_summary(uraCtx* c) {
                    "finished cells only, a lower bound of Q",
                    g->nfailed, g->npending);
   }
+  /* the impacts taken as mirror images (the grid's mirror rule: set mirror, show mirror) */
+  int nmir = 0;
+  for (long k = 0; k < (long)g->nrow * g->ncol; k++) {
+    nmir += g->cell[k].mirrored && g->cell[k].status == urCELL_DONE;
+  }
+  char mir[160] = "";
+  if (nmir) {
+    snprintf(mir, sizeof mir,
+             ", %d their mirror images (dperp < 0: the model and the scene are "
+             "mirror-symmetric)",
+             nmir);
+  }
   ura_table_note(t,
                  "Q = sum of P{F|Delta} x %g m x %g m over the %s (eq. 4.5); "
-                 "%d impacts simulated%s, %d cells decided geometrically",
+                 "%d impacts simulated%s%s, %d cells decided geometrically",
                  g->step, g->step, c->last.extents_set ? "grid's cells" : "full plane",
-                 g->nsimulated, c->last.recalled ? " when it was computed" : "",
-                 g->nrow * g->ncol - g->nsimulated - g->npending - g->nfailed);
+                 g->nsimulated, c->last.recalled ? " when it was computed" : "", mir,
+                 g->nrow * g->ncol - g->nsimulated - nmir - g->npending - g->nfailed);
   if (c->last.extents_set) {
     ura_table_note(t,
                    "extents set: Q covers only along %g .. %g m, |cross| <= %g m (cells where "

@@ -5,18 +5,38 @@
 #include <string.h>
 #include "engine_internal.h"
 
+// the vector helpers of engine_xinertia_rows.h are inlined: the AVX calling convention
+// (-Wpsabi) does not concern them
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 //---------------------------------- articulated-body algorithm ------------------------------------
 
+// the kernels ur_aba calls, for doubles, inlined into it (urd_: the templates of uru_'s, so
+// that the congruence and each joint type's inverse, its size constant, unroll in place, as in
+// the lanes' urv_aba; the same expressions in the same order)
+#define urT       double
+#define urK(name) urd_##name
+#define urBC(x)   (x)
+#include "kernels/engine_spatial.h"
+#include "kernels/engine_xinertia_rows.h"
+#define urSTORAGE static inline __attribute__((always_inline))
+#define urALL(c)  (c)
+#define urSQRT(x) sqrt(x)
+#include "kernels/engine_invsym.h"
+#undef urSTORAGE
+#undef urALL
+#undef urSQRT
+
 // ur_aba for doubles, from its template
-#define urT                double
-#define urBC(x)            (x)
-#define urK(name)          uru_##name
 #define urFN(name)         ur_##name
 #define urD                urData
 #define urSETENERGY(d, ke) ((d)->energy = (ke))
 #define urSTEPH(d)         ur_step_h(m, d)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(urNO_CLONES)
+#define urABA_ATTR __attribute__((target_clones("avx2", "default")))
+#endif
 #define urINVSYM(d, Dinv, D, nv)                                                                   \
-  if (uru_invsym(Dinv, D, nv)) {                                                                   \
+  if (urd_invsym(Dinv, D, nv)) {                                                                   \
     ur_set_status(d, urSTAT_NONFINITE, "singular joint-space inertia");                            \
     memset(Dinv, 0, 36 * sizeof(double));                                                          \
   }

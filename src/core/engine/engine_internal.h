@@ -157,6 +157,17 @@ int ur_lanes_init(const urModel* m, urLanes* L);
 void ur_lanes_trig(const double x[urNLANE], double s[urNLANE], double c[urNLANE],
                    const double y[urNLANE], const double w[urNLANE], double a[urNLANE]);
 void ur_lanes_free(urLanes* L);
+// uru_restraints_kin and uru_addpos of a run alone, bitwise, its quaternion joints four at a
+// time over the vectors
+void ur_restraints_kin_joints(const urModel* m, const double* qpos, double* rkin);
+void ur_addpos_joints(const urModel* m, double* qpos, const double* qvel, double h);
+// the rotations of a run alone's revolute and universal joints about their axes (jcalc's
+// axisrot) four at a time over the vectors, into slot 0 (first axis) and 1 (second) of each
+// body's stash: the tail of its S (6 x nv <= 18 values read; S + 18 and S + 27 are free)
+static inline double* ur_jrot_slot(urData* d, int body, int slot) {
+  return d->S + 36 * body + 18 + 9 * slot;
+}
+void ur_axisrot_joints(const urModel* m, urData* d);
 // one step of each of the runs d[0..n-1] (urNLANE at a time), bitwise as ur_step on each
 int ur_step_lanes(const urModel* m, urData* const* d, int n, urLanes* L);
 

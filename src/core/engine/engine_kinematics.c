@@ -6,22 +6,15 @@
 
 //---------------------------------- joints --------------------------------------------------------
 
-// rotation matrix about a unit axis (the model's joint axes are unit): from its quaternion
-static void axisrot(double R[9], const double a[3], double ang) {
-  double s, c;
-  uru_sincos(0.5 * ang, &s, &c);
-  double q[4] = {c, s * a[0], s * a[1], s * a[2]};
-  uru_quat2mat(R, q);
-}
-
-
-// jcalc, body and ellipsoid poses, velocities for doubles, from their template
-#define urT                       double
-#define urBC(x)                   (x)
-#define urK(name)                 uru_##name
-#define urFN(name)                ur_##name
-#define urD                       urData
-#define urAXISROT(R, axis, angle) axisrot(R, axis, angle)
+// jcalc, body and ellipsoid poses, velocities for doubles, from their template; the rotations
+// about the joints' axes computed first, four at a time (ur_axisrot_joints), and read back
+#define urT                             double
+#define urBC(x)                         (x)
+#define urK(name)                       uru_##name
+#define urFN(name)                      ur_##name
+#define urD                             urData
+#define urAXISROT(R, axis, angle, slot) memcpy(R, ur_jrot_slot(d, i, slot), 9 * sizeof(double))
+#define urKIN_PRE(m, d)                 ur_axisrot_joints(m, d)
 #include "kernels/engine_kin.h"
 #undef urT
 #undef urBC

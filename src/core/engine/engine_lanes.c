@@ -176,8 +176,8 @@ static inline __attribute__((always_inline)) void axisrot4(urV4 R[9], const urV4
 #undef urSEL
 #undef urSQRT
 
-#define urAXISROT(R, axis, angle) axisrot4(R, axis, &(angle))
-#define urKIN_ATTR                urCLONES
+#define urAXISROT(R, axis, angle, slot) axisrot4(R, axis, &(angle))
+#define urKIN_ATTR                      urCLONES
 #include "kernels/engine_kin.h"
 #undef urAXISROT
 #undef urT
@@ -237,6 +237,154 @@ static void broad4(const urModel* m, urLanes* L) {
 // ur_restraints_kin over the vectors
 urCLONES static void restraints_kin4(const urModel* m, urLanes* L) {
   urv_restraints_kin(m, L->qpos, L->rkin);
+}
+
+//---------------------------------- a run alone's joints over the lanes ---------------------------
+
+// A run alone spends the vector width on its joints instead: the quaternion kernels of
+// engine_quat.h take four joints of one run at a time, each lane with the scalar kernel's bits
+// (the lanes' rule), lanes beyond the joints repeating the first.
+
+// the spherical restraints' kinematics (uru_restraints_kin) of the bodies js[0..n-1]
+static inline __attribute__((always_inline)) void rkin_joints4(const urModel* m, const double* qpos,
+                                                               double* rkin, const int* js, int n) {
+  const urBody* b[urNLANE];
+  for (int l = 0; l < urNLANE; l++) {
+    b[l] = m->body + js[l < n ? l : 0];
+  }
+  urV4 q[4], x[12];
+  for (int k = 0; k < 4; k++) {
+    double t[urNLANE] = {qpos[b[0]->qadr + k], qpos[b[1]->qadr + k], qpos[b[2]->qadr + k],
+                         qpos[b[3]->qadr + k]};
+    memcpy(q + k, t, sizeof(t));
+  }
+  urv_quat2rotvec(x, q);
+  for (int k = 0; k < 3; k++) {
+    x[k] = x[k] - (urV4){b[0]->rst[k].x0, b[1]->rst[k].x0, b[2]->rst[k].x0, b[3]->rst[k].x0};
+  }
+  urv_rotvec_jrinv(x + 3, x);
+  for (int l = 0; l < n; l++) {
+    for (int k = 0; k < 12; k++) {
+      rkin[12 * js[l] + k] = x[k][l];
+    }
+  }
+}
+
+urCLONES void ur_restraints_kin_joints(const urModel* m, const double* qpos, double* rkin) {
+  int js[urNLANE], n = 0;
+  for (int j = 0; j < m->nrstb; j++) {
+    int i = m->rstb[j];
+    if (m->body[i].jtype == urJNT_SPHERICAL) {
+      js[n++] = i;
+      if (n == urNLANE) {
+        rkin_joints4(m, qpos, rkin, js, n);
+        n = 0;
+      }
+    }
+  }
+  if (n) {
+    rkin_joints4(m, qpos, rkin, js, n);
+  }
+}
+
+// the quaternions at qpos + qa[l], rotated by qvel + va[l] over h (uru_quatintegrate), l < n
+static inline __attribute__((always_inline)) void quat_joints4(double* qpos, const double* qvel,
+                                                               double h, const int* qa,
+                                                               const int* va, int n) {
+  int l1 = n > 1, l2 = n > 2 ? 2 : 0, l3 = n > 3 ? 3 : 0;
+  urV4 q[4], w[3];
+  for (int k = 0; k < 4; k++) {
+    double t[urNLANE] = {qpos[qa[0] + k], qpos[qa[l1] + k], qpos[qa[l2] + k], qpos[qa[l3] + k]};
+    memcpy(q + k, t, sizeof(t));
+  }
+  for (int k = 0; k < 3; k++) {
+    double t[urNLANE] = {qvel[va[0] + k], qvel[va[l1] + k], qvel[va[l2] + k], qvel[va[l3] + k]};
+    memcpy(w + k, t, sizeof(t));
+  }
+  urv_quatintegrate(q, w, bc4(h));
+  for (int l = 0; l < n; l++) {
+    for (int k = 0; k < 4; k++) {
+      qpos[qa[l] + k] = q[k][l];
+    }
+  }
+}
+
+urCLONES void ur_addpos_joints(const urModel* m, double* qpos, const double* qvel, double h) {
+  int qa[urNLANE], va[urNLANE], n = 0;
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    double* q = qpos + b->qadr;
+    const double* v = qvel + b->vadr;
+    switch (b->jtype) {
+    case urJNT_FREE:
+      for (int k = 0; k < 3; k++) {
+        q[k] += h * v[k];
+      }
+      qa[n] = b->qadr + 3;
+      va[n++] = b->vadr + 3;
+      break;
+    case urJNT_SPHERICAL:
+      qa[n] = b->qadr;
+      va[n++] = b->vadr;
+      break;
+    case urJNT_FIXED: break;
+    default:
+      for (int k = 0; k < b->nv; k++) {
+        q[k] += h * v[k];
+      }
+    }
+    if (n == urNLANE) {
+      quat_joints4(qpos, qvel, h, qa, va, n);
+      n = 0;
+    }
+  }
+  if (n) {
+    quat_joints4(qpos, qvel, h, qa, va, n);
+  }
+}
+
+// the rotations about the revolute and universal joints' axes (jcalc's urAXISROT, axisrot)
+// into each body's stash (engine_kinematics.c: the tail of d->S, slots 0 and 1)
+static inline __attribute__((always_inline)) void axisrot_joints4(double* const* dst,
+                                                                  const double* const* ax,
+                                                                  const double* ang, int n) {
+  int l1 = n > 1, l2 = n > 2 ? 2 : 0, l3 = n > 3 ? 3 : 0;
+  urV4 a[3], t, R[9];
+  for (int k = 0; k < 3; k++) {
+    double e[urNLANE] = {ax[0][k], ax[l1][k], ax[l2][k], ax[l3][k]};
+    memcpy(a + k, e, sizeof(e));
+  }
+  double e[urNLANE] = {ang[0], ang[l1], ang[l2], ang[l3]};
+  memcpy(&t, e, sizeof(e));
+  axisrot4(R, a, &t);
+  for (int l = 0; l < n; l++) {
+    for (int k = 0; k < 9; k++) {
+      dst[l][k] = R[k][l];
+    }
+  }
+}
+
+urCLONES void ur_axisrot_joints(const urModel* m, urData* d) {
+  double* dst[urNLANE];
+  const double* ax[urNLANE];
+  double ang[urNLANE];
+  int n = 0;
+  for (int i = 0; i < m->nbody; i++) {
+    const urBody* b = m->body + i;
+    int na = b->jtype == urJNT_REVOLUTE ? 1 : b->jtype == urJNT_UNIVERSAL ? 2 : 0;
+    for (int s = 0; s < na; s++) {
+      dst[n] = ur_jrot_slot(d, i, s);
+      ax[n] = b->axis[s];
+      ang[n++] = d->qpos[b->qadr + s];
+      if (n == urNLANE) {
+        axisrot_joints4(dst, ax, ang, n);
+        n = 0;
+      }
+    }
+  }
+  if (n) {
+    axisrot_joints4(dst, ax, ang, n);
+  }
 }
 
 // x ? a : b lane by lane (x a comparison's mask)

@@ -109,7 +109,7 @@ static int deflection(const urModel* m, const urData* d, int i, double x[3]) {
 // the deflections and inverse Jacobians of the spherical restraints into d->rkin (the lanes
 // compute the same over vectors: engine_lanes.c)
 void ur_restraints_kin(const urModel* m, urData* d) {
-  uru_restraints_kin(m, d->qpos, d->rkin);
+  ur_restraints_kin_joints(m, d->qpos, d->rkin);
 }
 
 

@@ -117,7 +117,7 @@ static void addpos(const urModel* m, double* qout, const double* q0, const doubl
   if (qout != q0) {
     memcpy(qout, q0, (size_t)m->nq * sizeof(double));
   }
-  uru_addpos(m, qout, dq, h);
+  ur_addpos_joints(m, qout, dq, h);
 }
 
 

@@ -21,6 +21,10 @@ check bad_value cond '[ $RC -ne 0 ] && [ $(lines "$TMP/err") -eq 1 ] && grep -q 
 G='set format csv; set recall off; case B; set wind 0; set step 0.15; grid'
 run -c "$G; export grid $TMP/on.csv; set mirror off; grid; export grid $TMP/off.csv"
 check b_same_cells cond '[ $RC -eq 0 ] && [ $(lines "$TMP/on.csv") -gt 50 ] && cmp -s "$TMP/on.csv" "$TMP/off.csv"'
+# the summary's note counts the mirror images apart from the simulated and geometric cells
+n() { grep 'impacts simulated' "$TMP/out" | sed -n "$1p" | sed -n "s/.* \([0-9]*\) $2.*/\1/p"; }
+check note_counts cond '[ -n "$(n 1 "their mirror")" ] && [ $(( $(n 1 "impacts simulated") + $(n 1 "their mirror") )) -eq $(n 2 "impacts simulated") ] &&
+  [ "$(n 1 "cells decided")" = "$(n 2 "cells decided")" ] && ! grep "impacts simulated" "$TMP/out" | sed -n 2p | grep -q mirror'
 
 # a drone with its centre of mass to one side (left, +y): not mirrored, its own impacts
 run -c "model save $TMP/m.urm"

@@ -2,7 +2,8 @@
  * runs stepped alone (ur_step): on the drone-on-human scene with 2, 3 and 4 lanes, runs that end
  * at different times, a chain with every joint type, a lane whose joint-space inertia turns
  * singular (only that lane fails, with the scalar message), the RK4 integrator (each run on its
- * own), more runs than lanes in one call, and a stop request. Compared after every step: state, poses, velocities,
+ * own), more runs than lanes in one call, and a stop request; and a run alone's joints over the
+ * vectors against the scalar kernels. Compared after every step: state, poses, velocities,
  * accelerations, forces, joint loads, contact and airbag histories, sensors and peaks, the
  * recorded rows and the run's fields. */
 #include <math.h>
@@ -416,12 +417,72 @@ static void test_stop_lanes(void** state) {
   ur_model_free(m);
 }
 
+// a run alone's joints over the vectors (ur_restraints_kin_joints, ur_addpos_joints) against
+// the scalar kernels, bit for bit, on random states: the scene (10 quaternions: groups of 4, 4
+// and 2; 8 spherical restraints) and the restraint chain (one of each: a group of 1), the
+// spherical restraints' x0 set apart, quaternions near the identity (the series of rotvec_jrinv)
+// and with w < 0
+static void joints_alone(urModel* m, unsigned seed) {
+  int nb = m->nbody, nq = m->nq, nv = m->nv;
+  for (int i = 0; i < nb; i++) {
+    for (int k = 0; k < 3; k++) {
+      m->body[i].rst[k].x0 = i % 2 ? 0.01 * (i % 5) - 0.02 * k : 0; /* even: the series */
+    }
+  }
+  double q[nq], qa[nq], qb[nq], v[nv], ra[12 * nb], rb[12 * nb];
+  for (int n = 0; n < 200; n++) {
+    for (int k = 0; k < nq; k++) {
+      seed = seed * 1103515245u + 12345u;
+      q[k] = ((seed >> 8) & 0xffff) / 32768.0 - 1;
+    }
+    for (int i = 0; i < nb; i++) {
+      const urBody* b = m->body + i;
+      int o = b->jtype == urJNT_FREE ? 3 : 0;
+      if (b->jtype == urJNT_FREE || b->jtype == urJNT_SPHERICAL) {
+        double* e = q + b->qadr + o;
+        if (n % 4 == 1) {
+          e[0] = 1; /* near the identity */
+          e[1] *= 1e-6;
+          e[2] *= 1e-6;
+          e[3] *= 1e-6;
+        }
+        uru_normalizequat(e);
+      }
+    }
+    for (int k = 0; k < nv; k++) {
+      v[k] = 20 * sin(1.3 * k + n);
+    }
+    memset(ra, 0, sizeof(ra));
+    memset(rb, 0, sizeof(rb));
+    uru_restraints_kin(m, q, ra);
+    ur_restraints_kin_joints(m, q, rb);
+    assert_memory_equal(ra, rb, sizeof(ra));
+    memcpy(qa, q, sizeof(q));
+    memcpy(qb, q, sizeof(q));
+    uru_addpos(m, qa, v, 1e-3 * (1 + n % 3));
+    ur_addpos_joints(m, qb, v, 1e-3 * (1 + n % 3));
+    assert_memory_equal(qa, qb, sizeof(qa));
+  }
+}
+
+static void test_joints_alone(void** state) {
+  urModel* m = scene_build(1);
+  assert_non_null(m);
+  joints_alone(m, 5);
+  ur_model_free(m);
+  m = restraint_chain(0);
+  assert_non_null(m);
+  joints_alone(m, 9);
+  ur_model_free(m);
+}
+
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_scene_lanes),   cmocka_unit_test(test_scene_rk4),
       cmocka_unit_test(test_chain_lanes),   cmocka_unit_test(test_restraint_lanes),
       cmocka_unit_test(test_singular_lane), cmocka_unit_test(test_more_than_lanes),
-      cmocka_unit_test(test_stop_lanes),
+      cmocka_unit_test(test_stop_lanes),    cmocka_unit_test(test_joints_alone),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -3,14 +3,19 @@
  * engine_aba.h: included for doubles (engine_kinematics.c: ur_kinematics_bodies,
  * ur_kinematics_geoms, ur_velocities on urData) and for lanes (engine_lanes.c: urv_ on urLanes).
  * Parameters: urT, urBC(x), urK(name), urFN(name), urD (fields qpos qvel S cbias Xe Xr xmat xpos
- * xcom gxmat gxpos cvel), urAXISROT(R, axis, angle) a rotation matrix about a unit axis (axis:
- * urT[3], angle: urT), urKIN_ATTR (optional) attributes of the entry points. Model constants are
+ * xcom gxmat gxpos cvel), urAXISROT(R, axis, angle, slot) a rotation matrix about a unit axis
+ * (axis: urT[3], angle: urT; slot 0 or 1: the joint's first or second axis, for an instance
+ * that computed the rotations beforehand), urKIN_ATTR (optional) attributes of the entry points,
+ * urKIN_PRE(m, d) (optional) what kinematics_bodies does first. Model constants are
  * broadcast to urT before they meet the data, so both instances evaluate the same operations. No
  * include guard: included once per instance; the protocol (who defines and undefines the
  * parameters, the bit-exactness rules): src/README. */
 
 #ifndef urKIN_ATTR
 #define urKIN_ATTR
+#endif
+#ifndef urKIN_PRE
+#define urKIN_PRE(m, d) ((void)0)
 #endif
 
 //---------------------------------- joints --------------------------------------------------------
@@ -72,7 +77,7 @@ static inline __attribute__((always_inline)) void urFN(jcalc)(const urModel* m, 
     urT a0[3];
     urFN(bcast)(a0, b->axis[0], 3);
     urFN(bcast)(Rb, b->bmat, 9);
-    urAXISROT(T, a0, q[0]);
+    urAXISROT(T, a0, q[0], 0);
     urK(mulmat3)(R, Rb, T);
     S[0] = a0[0];
     S[1] = a0[1];
@@ -85,8 +90,8 @@ static inline __attribute__((always_inline)) void urFN(jcalc)(const urModel* m, 
     urFN(bcast)(a0, b->axis[0], 3);
     urFN(bcast)(a1, b->axis[1], 3);
     urFN(bcast)(Rb, b->bmat, 9);
-    urAXISROT(T, a0, q[0]);
-    urAXISROT(T2, a1, q[1]);
+    urAXISROT(T, a0, q[0], 0);
+    urAXISROT(T2, a1, q[1], 1);
     urK(mulmat3)(R, Rb, T);
     urK(mulmat3)(R, R, T2);
     urK(mulmat3tvec)(s1, T2, a0);
@@ -132,6 +137,7 @@ static inline __attribute__((always_inline)) void urFN(jcalc)(const urModel* m, 
 
 // world poses of the bodies (xmat, xpos, xcom) and the joint quantities of jcalc, in tree order
 urKIN_ATTR void urFN(kinematics_bodies)(const urModel* m, urD* d) {
+  urKIN_PRE(m, d);
   for (int i = 0; i < m->nbody; i++) {
     const urBody* b = m->body + i;
     urT* xm = d->xmat + 9 * i;
@@ -239,3 +245,4 @@ urKIN_ATTR void urFN(velocities)(const urModel* m, urD* d) {
 }
 
 #undef urKIN_ATTR
+#undef urKIN_PRE

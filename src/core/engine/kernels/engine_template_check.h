@@ -7,6 +7,7 @@
     defined(urD) || defined(urBC) || defined(urSEL) || defined(urANY) || defined(urALL) ||         \
     defined(urNEL) || defined(urEL) || defined(urASI) || defined(urAST) || defined(urSQRT) ||      \
     defined(urSTORAGE) || defined(urSETENERGY) || defined(urINVSYM) || defined(urAXISROT) ||       \
-    defined(urABA_ATTR) || defined(urKIN_ATTR) || defined(urCROSSK) || defined(urSTEPH)
+    defined(urABA_ATTR) || defined(urKIN_ATTR) || defined(urKIN_PRE) || defined(urCROSSK) ||       \
+    defined(urSTEPH)
 #error "a template parameter is still defined after its instances (src/README, Templates)"
 #endif
