@@ -330,15 +330,33 @@ AI urm4 shear4(const lawk* k, urm4 g, urm4* w) {
   return sel4(lin, sl, sk);
 }
 
-/* 1 where any lane of the mask is set */
+/* 1 where any lane of the mask is set; 1 where every lane is. A mask's lanes are all ones or
+   zeros: on x86-64 the two halves joined, then the sign bits of both lanes at once (SSE2's
+   movmskpd; 4 instructions instead of 8 extractions and ors, most of them on the Newton's
+   every iteration) */
+#if defined(__x86_64__) && defined(__GNUC__)
+typedef long long urm2i __attribute__((vector_size(16)));
+typedef double urm2 __attribute__((vector_size(16)));
+typedef union {
+  urm4i v;
+  urm2i h[2];
+} urmHalves;
+AI int any4(urm4i m) {
+  urmHalves u = {m};
+  return __builtin_ia32_movmskpd((urm2)(u.h[0] | u.h[1])) != 0;
+}
+AI int all4(urm4i m) {
+  urmHalves u = {m};
+  return __builtin_ia32_movmskpd((urm2)(u.h[0] & u.h[1])) == 3;
+}
+#else
 AI int any4(urm4i m) {
   return (m[0] | m[1] | m[2] | m[3]) != 0;
 }
-
-/* 1 where every lane of the mask is set */
 AI int all4(urm4i m) {
   return (m[0] & m[1] & m[2] & m[3]) != 0;
 }
+#endif
 
 /* shear_inv() over 4 lanes */
 AI urm4 shear_inv4(const lawk* k, urm4 tau, urm4* c) {
@@ -409,78 +427,98 @@ AI void candidates4(const lawk* k, const urm4 E[3], urm4i act, urm4* u1, urm4* u
   }
 }
 
-/* wrinkled() over the 4 lanes of mask act, for the paths it takes on nearly every call between
-   sub-steps: a warm start (uw: lane l's u at uw[2 l]); where its first Newton step is not within
-   1 % of |u| the five candidates (candidates4) tried against it, Newton restarted from the best
-   one where it beats the warm start; then full Newton steps that raise G, until a step below
-   1e-6 of |u| (or 40 steps, or a Hessian that is not negative definite). Every lane runs the
-   scalar code's operations in its order (masked as it finishes), so its bits are wrinkled()'s;
-   two of them off the iteration's chain: the shift's square root only where it may shift, the
-   shear's inverse at the step's u beside its G.
-   A lane off that path (no warm start, a step to backtrack) is left to the scalar wrinkled():
-   its bit in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the
-   lanes not done here); uw updated for the lanes done. */
-AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* wr, double* uw) {
-  urm4 E[3] = {e[0], e[1], bc4(0.5) * e[2]};
+/* the state of wrinkled4()'s Newton over a group of 4 lanes between iterations (newton_start,
+   newton_step, newton_end): two groups' iterations interleaved (stress4_chunk), so that one's
+   chain of divisions overlaps the other's; each group's operations are those of the group alone */
+typedef struct {
+  urm4 E[3], u1, u2, G;
+  urm4 Em12n, kkn; /* the shear's inverse at u, carried from the step (fresh) */
+  urm4i act, live, fb;
+  int it, fresh;
+} urmNewton;
+
+/* the group's start: its warm starts from uw (lane l's u at uw[2 l]); 1 while it iterates */
+AI int newton_start(const lawk* k, urmNewton* ns, const urm4 e[3], urm4i act, const double* uw) {
+  ns->E[0] = e[0];
+  ns->E[1] = e[1];
+  ns->E[2] = bc4(0.5) * e[2];
   urm4 u1 = {uw[0], uw[2], uw[4], uw[6]}, u2 = {uw[1], uw[3], uw[5], uw[7]};
   urm4i warm = (u1 != bc4(0)) | (u2 != bc4(0));
-  urm4i fb = act & ~warm, live = act & warm;
-  urm4 G = gdual4(k, E, u1, u2);
+  ns->u1 = u1;
+  ns->u2 = u2;
+  ns->act = act;
+  ns->fb = act & ~warm;
+  ns->live = act & warm;
+  ns->G = gdual4(k, ns->E, u1, u2);
   // the shear's inverse at u (Em12, kk): computed at the next step's u while G is, off the
   // iteration's chain of divisions, where every lane's u came from that step (fresh)
-  urm4 Em12n = bc4(0), kkn = bc4(0);
-  int fresh = 0;
-  for (int it = 0; it < 40 && any4(live); it++) {
-    urm4 S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk = kkn, Em12 = Em12n;
-    if (!fresh) {
-      Em12 = bc4(0.5) * shear_inv4(k, S12, &kk);
+  ns->Em12n = bc4(0);
+  ns->kkn = bc4(0);
+  ns->fresh = 0;
+  ns->it = 0;
+  return any4(ns->live);
+}
+
+/* one Newton iteration of the group (40 at most); 1 while it iterates */
+AI int newton_step(const lawk* k, urmNewton* ns) {
+  const urm4* E = ns->E;
+  urm4 u1 = ns->u1, u2 = ns->u2, G = ns->G, Em12n = ns->Em12n, kkn = ns->kkn;
+  urm4i live = ns->live, fb = ns->fb;
+  int it = ns->it, fresh = ns->fresh;
+  urm4 S11 = u1 * u1, S22 = u2 * u2, S12 = u1 * u2, kk = kkn, Em12 = Em12n;
+  if (!fresh) {
+    Em12 = bc4(0.5) * shear_inv4(k, S12, &kk);
+  }
+  urm4 Em11 = k->v.a11 * S11 + k->v.a12 * S22, Em22 = k->v.a12 * S11 + k->v.a22 * S22;
+  urm4 r1 = (E[0] - Em11) * u1 + (E[2] - Em12) * u2;
+  urm4 r2 = (E[2] - Em12) * u1 + (E[1] - Em22) * u2;
+  urm4 M11 = E[0] - (Em11 + bc4(2) * k->v.a11 * S11 + bc4(0.5) * kk * S22);
+  urm4 M12 = E[2] - (Em12 + (bc4(2) * k->v.a12 + bc4(0.5) * kk) * S12);
+  urm4 M22 = E[1] - (Em22 + bc4(2) * k->v.a22 * S22 + bc4(0.5) * kk * S11);
+  urm4 mm = bc4(0.5) * (M11 + M22), hh = bc4(0.5) * (M11 - M22);
+  urm4 X = hh * hh + M12 * M12, tr = fabs4(M11) + fabs4(M22), T = bc4(-1e-3) * tr;
+  // the shift needs lmax = mm + sqrt(X) only where lmax > T may hold: sqrt(X) below T - mm
+  // by 1e-12 relative (far above the roundings of D, D^2, X (1 + 1e-12) and the root) gives
+  // lmax <= T, the rounding of mm + sqrt(X) being monotone and T a double (no shift there)
+  urm4 D = T - mm;
+  urm4i sure = (D > bc4(0)) & (X * bc4(1 + 1e-12) < D * D);
+  if (!all4(sure)) {
+    urm4 lmax = mm + sqrt4(X);
+    urm4i shift = lmax > T;
+    urm4 sh = lmax + bc4(1e-3) * tr;
+    M11 = sel4(shift, M11 - sh, M11);
+    M22 = sel4(shift, M22 - sh, M22);
+  }
+  urm4 det = M11 * M22 - M12 * M12;
+  urm4 d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
+  urm4 dd = d1 * d1 + d2 * d2, uu = u1 * u1 + u2 * u2;
+  urm4i pd = det > bc4(0), step = live; /* the lanes that take this iteration's step */
+  int redo = 0;
+  if (it == 0) {
+    // the warm start kept alone only when Newton stays near it; else the candidates tried
+    // against it, Newton restarted (the next iteration) where one beats it
+    urm4i far = live & ~(pd & (dd <= bc4(1e-4) * uu));
+    if (any4(far)) {
+      urm4 G0 = G;
+      candidates4(k, E, far, &u1, &u2, &G);
+      urm4i won = far & (G > G0);
+      step &= ~won;
+      redo = any4(won); /* a lane restarts from a candidate's u: its shear not carried */
     }
-    urm4 Em11 = k->v.a11 * S11 + k->v.a12 * S22, Em22 = k->v.a12 * S11 + k->v.a22 * S22;
-    urm4 r1 = (E[0] - Em11) * u1 + (E[2] - Em12) * u2;
-    urm4 r2 = (E[2] - Em12) * u1 + (E[1] - Em22) * u2;
-    urm4 M11 = E[0] - (Em11 + bc4(2) * k->v.a11 * S11 + bc4(0.5) * kk * S22);
-    urm4 M12 = E[2] - (Em12 + (bc4(2) * k->v.a12 + bc4(0.5) * kk) * S12);
-    urm4 M22 = E[1] - (Em22 + bc4(2) * k->v.a22 * S22 + bc4(0.5) * kk * S11);
-    urm4 mm = bc4(0.5) * (M11 + M22), hh = bc4(0.5) * (M11 - M22);
-    urm4 X = hh * hh + M12 * M12, tr = fabs4(M11) + fabs4(M22), T = bc4(-1e-3) * tr;
-    // the shift needs lmax = mm + sqrt(X) only where lmax > T may hold: sqrt(X) below T - mm
-    // by 1e-12 relative (far above the roundings of D, D^2, X (1 + 1e-12) and the root) gives
-    // lmax <= T, the rounding of mm + sqrt(X) being monotone and T a double (no shift there)
-    urm4 D = T - mm;
-    urm4i sure = (D > bc4(0)) & (X * bc4(1 + 1e-12) < D * D);
-    if (!all4(sure)) {
-      urm4 lmax = mm + sqrt4(X);
-      urm4i shift = lmax > T;
-      urm4 sh = lmax + bc4(1e-3) * tr;
-      M11 = sel4(shift, M11 - sh, M11);
-      M22 = sel4(shift, M22 - sh, M22);
-    }
-    urm4 det = M11 * M22 - M12 * M12;
-    urm4 d1 = -(M22 * r1 - M12 * r2) / det, d2 = -(M11 * r2 - M12 * r1) / det;
-    urm4 dd = d1 * d1 + d2 * d2, uu = u1 * u1 + u2 * u2;
-    urm4i pd = det > bc4(0), step = live; /* the lanes that take this iteration's step */
-    int redo = 0;
-    if (it == 0) {
-      // the warm start kept alone only when Newton stays near it; else the candidates tried
-      // against it, Newton restarted (the next iteration) where one beats it
-      urm4i far = live & ~(pd & (dd <= bc4(1e-4) * uu));
-      if (any4(far)) {
-        urm4 G0 = G;
-        candidates4(k, E, far, &u1, &u2, &G);
-        urm4i won = far & (G > G0);
-        step &= ~won;
-        redo = any4(won); /* a lane restarts from a candidate's u: its shear not carried */
-      }
-    }
-    urm4i stop = step & ~pd; /* not concave even shifted: the scalar code stops there */
-    live &= ~stop;
-    step &= pd;
-    urm4i conv = step & (dd <= bc4(1e-12) * uu);
-    u1 = sel4(conv, u1 + d1, u1);
-    u2 = sel4(conv, u2 + d2, u2);
-    live &= ~conv;
-    step &= ~conv;
-    // the full step (t = 1) taken when G does not fall beyond rounding; else the scalar code
+  }
+  urm4i stop = step & ~pd; /* not concave even shifted: the scalar code stops there */
+  live &= ~stop;
+  step &= pd;
+  urm4i conv = step & (dd <= bc4(1e-12) * uu);
+  u1 = sel4(conv, u1 + d1, u1);
+  u2 = sel4(conv, u2 + d2, u2);
+  live &= ~conv;
+  step &= ~conv;
+  // the full step (t = 1) taken when G does not fall beyond rounding; else the scalar code.
+  // No lane left to step (the group's last iteration, as a rule): nothing here would change a
+  // lane, and the carried inverse is read only by a lane that stepped (the restarted ones
+  // recompute theirs)
+  if (any4(step)) {
     urm4 v1 = u1 + d1, v2 = u2 + d2, kv;
     urm4 Ev = bc4(0.5) * shear_inv4(k, v1 * v2, &kv);
     urm4 Gn = gdual4(k, E, v1, v2), tol = bc4(1e-13) * fabs4(G);
@@ -493,9 +531,26 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
     G = sel4(step, Gn, G);
     Em12n = Ev; /* every lane still live stepped to v, unless one restarts (redo) */
     kkn = kv;
-    fresh = !redo;
   }
-  urm4i done = act & ~fb;
+  fresh = !redo && any4(step);
+  ns->u1 = u1;
+  ns->u2 = u2;
+  ns->G = G;
+  ns->Em12n = Em12n;
+  ns->kkn = kkn;
+  ns->live = live;
+  ns->fb = fb;
+  ns->fresh = fresh;
+  ns->it = ++it;
+  return it < 40 && any4(live);
+}
+
+/* the group's end: the stress in Sr and energy in *wr (0 for the lanes not done here), uw
+   updated for the lanes done; the lanes left to the scalar wrinkled() returned */
+AI urm4i newton_end(const lawk* k, const urmNewton* ns, urm4 Sr[3], urm4* wr, double* uw) {
+  const urm4* E = ns->E;
+  urm4 u1 = ns->u1, u2 = ns->u2;
+  urm4i fb = ns->fb, done = ns->act & ~fb;
   for (int l = 0; l < 4; l++) {
     if (done[l]) {
       uw[2 * l] = u1[l];
@@ -508,6 +563,26 @@ AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* 
   urm4 Gf = Sr[0] * E[0] + Sr[1] * E[1] + bc4(2) * Sr[2] * E[2] - wstar4(k, Sr[0], Sr[1], Sr[2]);
   *wr = sel4(done & (Gf > bc4(0)), Gf, bc4(0));
   return fb;
+}
+
+/* wrinkled() over the 4 lanes of mask act, for the paths it takes on nearly every call between
+   sub-steps: a warm start (uw: lane l's u at uw[2 l]); where its first Newton step is not within
+   1 % of |u| the five candidates (candidates4) tried against it, Newton restarted from the best
+   one where it beats the warm start; then full Newton steps that raise G, until a step below
+   1e-6 of |u| (or 40 steps, or a Hessian that is not negative definite). Every lane runs the
+   scalar code's operations in its order (masked as it finishes), so its bits are wrinkled()'s;
+   two of them off the iteration's chain: the shift's square root only where it may shift, the
+   shear's inverse at the step's u beside its G.
+   A lane off that path (no warm start, a step to backtrack) is left to the scalar wrinkled():
+   its bit in the mask returned, its uw untouched. The stress in Sr and energy in *wr (0 for the
+   lanes not done here); uw updated for the lanes done. */
+AI urm4i wrinkled4(const lawk* k, const urm4 e[3], urm4i act, urm4 Sr[3], urm4* wr, double* uw) {
+  urmNewton ns;
+  if (newton_start(k, &ns, e, act, uw)) {
+    while (newton_step(k, &ns)) {
+    }
+  }
+  return newton_end(k, &ns, Sr, wr, uw);
 }
 
 /* stress() over 4 lanes: the taut law on all 4, the wrinkled lanes by wrinkled4() when uw is
@@ -550,12 +625,79 @@ AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], u
 }
 
 
+/* a group of 4 wrinkled lanes of a chunk (stress4_chunk): the lanes lst[g..g+3] (4 q + c: block
+   q, lane c; past n the first again, inactive), their strains, taut stresses and energies, warm
+   starts and Newton state */
+typedef struct {
+  int id[4];
+  urm4 St[3], wt;
+  double ug[8];
+  urmNewton ns;
+} urmGroup;
+
+/* gather group g's lanes and start its Newton; 1 while it iterates */
+AI int group_start(const lawk* k, urmGroup* gr, const short* lst, int g, int n, const urm4 (*e)[3],
+                   const urm4 (*S)[3], const urm4* w, const double* uw) {
+  int* id = gr->id;
+  for (int l = 0; l < 4; l++) {
+    id[l] = lst[g + l < n ? g + l : g];
+  }
+  urm4i act = {-1, g + 1 < n ? -1 : 0, g + 2 < n ? -1 : 0, g + 3 < n ? -1 : 0};
+  int q0 = id[0] >> 2, q1 = id[1] >> 2, q2 = id[2] >> 2, q3 = id[3] >> 2;
+  int c0 = id[0] & 3, c1 = id[1] & 3, c2 = id[2] & 3, c3 = id[3] & 3;
+#define urmGAT(j) ((urm4){e[q0][j][c0], e[q1][j][c1], e[q2][j][c2], e[q3][j][c3]})
+  const urm4 eg[3] = {urmGAT(0), urmGAT(1), urmGAT(2)};
+#undef urmGAT
+  for (int j = 0; j < 3; j++) {
+    gr->St[j] = (urm4){S[q0][j][c0], S[q1][j][c1], S[q2][j][c2], S[q3][j][c3]};
+  }
+  gr->wt = (urm4){w[q0][c0], w[q1][c1], w[q2][c2], w[q3][c3]};
+  for (int l = 0; l < 4; l++) {
+    gr->ug[2 * l] = uw[2 * id[l]];
+    gr->ug[2 * l + 1] = uw[2 * id[l] + 1];
+  }
+  return newton_start(k, &gr->ns, eg, act, gr->ug);
+}
+
+/* end group g's Newton, its stresses, energies and warm starts scattered back; the lanes off
+   wrinkled4's path by the scalar stress(), whole */
+AI void group_end(const urMemSpec* s, const lawk* k, urmGroup* gr, int g, int n, const urm4 (*e)[3],
+                  urm4 (*S)[3], urm4* w, double* uw) {
+  urm4 Sr[3], wr, *St = gr->St, re = bc4(k->re), re1 = bc4(1 - k->re);
+  urm4i slow = newton_end(k, &gr->ns, Sr, &wr, gr->ug);
+  for (int j = 0; j < 3; j++) {
+    St[j] = re * St[j] + re1 * Sr[j];
+  }
+  urm4 wt = re * gr->wt + re1 * wr;
+  for (int l = 0; l < 4 && g + l < n; l++) {
+    int q = gr->id[l] >> 2, c = gr->id[l] & 3;
+    double* ul = uw + 2 * gr->id[l];
+    if (slow[l]) {
+      double el[3] = {e[q][0][c], e[q][1][c], e[q][2][c]}, Sl[3], wl;
+      stress(s, k, el, Sl, &wl, ul);
+      S[q][0][c] = Sl[0];
+      S[q][1][c] = Sl[1];
+      S[q][2][c] = Sl[2];
+      w[q][c] = wl;
+      continue;
+    }
+    ul[0] = gr->ug[2 * l];
+    ul[1] = gr->ug[2 * l + 1];
+    for (int j = 0; j < 3; j++) {
+      S[q][j][c] = St[j][l];
+    }
+    w[q][c] = wt[l];
+  }
+}
+
+
 /* stress4() over the nb blocks of 4 lanes of a chunk (at most urmCHUNK, uw the chunk's first
    block's warm starts), the wrinkled lanes packed: the taut law on every block, then the lanes
-   that need the wrinkled Newton gathered 4 at a time, across blocks, for wrinkled4() (a block's
-   taut lanes no longer ride along in its Newton), the stresses scattered back; the lanes left
-   over by the scalar stress(). Each lane's operations are stress4()'s, so its bits too. e: the
-   strains, in S the stresses and in w the energy densities. */
+   that need the wrinkled Newton gathered 4 at a time, across blocks, for wrinkled4()'s Newton (a
+   block's taut lanes no longer ride along in its Newton), two such groups' iterations
+   interleaved, the stresses scattered back; the lanes left over by the scalar stress(). Each
+   lane's operations are stress4()'s, so its bits too. e: the strains, in S the stresses and in w
+   the energy densities. */
 // GCC 12's AVX2 clone of tri_pass warns that the gathered strains may be uninitialized (they
 // are read only from the chunk's nb blocks, all written): a false positive
 #pragma GCC diagnostic push
@@ -586,57 +728,28 @@ AI void stress4_chunk(const urMemSpec* s, const lawk* k, int nb, const urm4 (*e)
       Sq[j] = sel4(slack, re * Sq[j] + re1 * bc4(0), Sq[j]);
     }
     w[q] = sel4(slack, re * w[q] + re1 * bc4(0), w[q]);
-    for (int l = 0; l < 4; l++) {
-      if (wr[l]) {
-        lst[n++] = (short)(4 * q + l);
-      }
+    for (int l = 0; l < 4; l++) { /* without a branch: which lanes wrinkle is the data's */
+      lst[n] = (short)(4 * q + l);
+      n += wr[l] != 0;
     }
   }
-  for (int g = 0; g < n; g += 4) {
-    int id[4];
-    for (int l = 0; l < 4; l++) {
-      id[l] = lst[g + l < n ? g + l : g];
-    }
-    urm4i act = {-1, g + 1 < n ? -1 : 0, g + 2 < n ? -1 : 0, g + 3 < n ? -1 : 0};
-    int q0 = id[0] >> 2, q1 = id[1] >> 2, q2 = id[2] >> 2, q3 = id[3] >> 2;
-    int c0 = id[0] & 3, c1 = id[1] & 3, c2 = id[2] & 3, c3 = id[3] & 3;
-    urm4 St[3], Sr[3], wr;
-#define urmGAT(j) ((urm4){e[q0][j][c0], e[q1][j][c1], e[q2][j][c2], e[q3][j][c3]})
-    const urm4 eg[3] = {urmGAT(0), urmGAT(1), urmGAT(2)};
-#undef urmGAT
-    for (int j = 0; j < 3; j++) {
-      St[j] = (urm4){S[q0][j][c0], S[q1][j][c1], S[q2][j][c2], S[q3][j][c3]};
-    }
-    urm4 wt = {w[q0][c0], w[q1][c1], w[q2][c2], w[q3][c3]};
-    double ug[8];
-    for (int l = 0; l < 4; l++) {
-      ug[2 * l] = uw[2 * id[l]];
-      ug[2 * l + 1] = uw[2 * id[l] + 1];
-    }
-    urm4i slow = wrinkled4(k, eg, act, Sr, &wr, ug);
-    for (int j = 0; j < 3; j++) {
-      St[j] = re * St[j] + re1 * Sr[j];
-    }
-    wt = re * wt + re1 * wr;
-    for (int l = 0; l < 4 && g + l < n; l++) {
-      int q = id[l] >> 2, c = id[l] & 3;
-      double* ul = uw + 2 * id[l];
-      if (slow[l]) {
-        // off wrinkled4's path: the lane by the scalar stress(), whole
-        double el[3] = {e[q][0][c], e[q][1][c], e[q][2][c]}, Sl[3], wl;
-        stress(s, k, el, Sl, &wl, ul);
-        S[q][0][c] = Sl[0];
-        S[q][1][c] = Sl[1];
-        S[q][2][c] = Sl[2];
-        w[q][c] = wl;
-        continue;
+  // the groups two at a time, their Newton iterations interleaved
+  for (int g = 0; g < n; g += 8) {
+    urmGroup ga, gb;
+    int two = g + 4 < n;
+    int ra = group_start(k, &ga, lst, g, n, e, S, w, uw);
+    int rb = two && group_start(k, &gb, lst, g + 4, n, e, S, w, uw);
+    while (ra | rb) {
+      if (ra) {
+        ra = newton_step(k, &ga.ns);
       }
-      ul[0] = ug[2 * l];
-      ul[1] = ug[2 * l + 1];
-      for (int j = 0; j < 3; j++) {
-        S[q][j][c] = St[j][l];
+      if (rb) {
+        rb = newton_step(k, &gb.ns);
       }
-      w[q][c] = wt[l];
+    }
+    group_end(s, k, &ga, g, n, e, S, w, uw);
+    if (two) {
+      group_end(s, k, &gb, g + 4, n, e, S, w, uw);
     }
   }
 }
