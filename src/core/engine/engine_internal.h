@@ -45,6 +45,9 @@ int ur_step_begin(const urModel* m, urData* d);
 int ur_step_euler(const urModel* m, urData* d);
 void ur_step_accept(const urModel* m, urData* d);
 int ur_step_end(const urModel* m, urData* d);
+// a sufficient test for the coarse-step proof's gap along a centre line, without square root or
+// division (engine_run.c): 1 only where the exact test passes too
+int ur_gap_quick(const double dc[3], double ce, double r, double A, double T);
 
 // the length of the step under way: adapt dt for a coarse step (urData.coarse), else dt
 static inline double ur_step_h(const urModel* m, const urData* d) {

@@ -656,10 +656,20 @@ static void scatter_kin(const urModel* m, const urLanes* L, urData* const* d, in
 }
 
 
-// the applied forces, for the ABA
+// the applied forces, for the ABA. Of qfrc only the dofs of the bodies whose restraint forces
+// were computed lane by lane (L->rsts): ur_forward_loads zeroes the rest, and only restraints
+// write it.
 static void gather_forces(const urModel* m, urLanes* L, urData* const* d, int n) {
   GATHER(fext, 6 * (size_t)m->nbody);
-  GATHER(qfrc, m->nv);
+  memset(L->qfrc, 0, (size_t)m->nv * sizeof(urV4));
+  for (int j = 0; j < L->nrsts; j++) {
+    const urBody* b = m->body + L->rsts[j];
+    for (int k = b->vadr; k < b->vadr + b->nv; k++) {
+      for (int l = 0; l < urNLANE; l++) {
+        L->qfrc[k][l] = d[l < n ? l : 0]->qfrc[k];
+      }
+    }
+  }
   L->fail = 0;
 }
 

@@ -333,6 +333,21 @@ void ur_step_accept(const urModel* m, urData* d) {
 }
 
 
+// a sufficient test, without square root or division, for coarse_clear's exact test along the
+// centre line: gap_holds(m, L - r1 - r2, ce / L, T) with L = |dc| and ce the centres' closing
+// rate along dc times L (computed as coarse_clear does), r = r1 + r2, A = 0.5 a_clear T^2 as
+// gap_holds computes it, T >= 0. With S = r + max(A, 0) and c = max(ce, 0), since S L <= (S^2 +
+// L^2)/2: L^2 > S^2 + 2 c T gives L - S - c T / L > 0. Asking for it with a factor 1 + 2^-20
+// leaves a gap of at least 2^-23 L, which dwarfs the exact test's rounding (some 14 units of
+// 2^-53 L: |rhs| <= 1.5 L and a negative rate only rounds towards 0), so 1 here means 1 there;
+// a NaN, or an overflow of the right side, gives 0 (the exact test decides).
+int ur_gap_quick(const double dc[3], double ce, double r, double A, double T) {
+  double D = dc[0] * dc[0] + dc[1] * dc[1] + dc[2] * dc[2];
+  double S = r + (A < 0 ? 0 : A), c = ce < 0 ? 0 : ce; // (not fmax: a NaN must stay one)
+  return D > (S * S + 2 * c * T) * (1 + 0x1p-20);
+}
+
+
 // the proof of proj_clear for a coarse step, and the projectile's ellipsoids that can touch the
 // ground kept above it (their bounding spheres' lowest points falling at most at their centres'
 // speed plus a_clear T^2/2), for T. Most steps that it holds for, it holds for every candidate
@@ -348,6 +363,7 @@ static int coarse_clear(const urModel* m, urData* d, double T) {
   if (!item_clear(m, d, h, T)) {
     return 0;
   }
+  double A = 0.5 * m->opt.a_clear * T * T;
   urCand c;
   for (int k = 0; ur_cand_at(m, k, &c) == 0; k++) {
     int in1 = ur_geom_intree(m, c.g1, d->proj);
@@ -369,11 +385,16 @@ static int coarse_clear(const urModel* m, urData* d, double T) {
       continue;
     }
     const double* c2 = d->gxpos + 3 * c.g2;
-    double dc[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]}, L = uru_norm3(dc), ce = 0;
+    double dc[3] = {c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]}, ce = 0;
     for (int i = 0; i < 3; i++) {
       ce += (vel[3 * c.g1 + i] - vel[3 * c.g2 + i]) * dc[i];
     }
-    if (L > 0 && gap_holds(m, L - m->geom[c.g1].rbound - m->geom[c.g2].rbound, ce / L, T)) {
+    double r1 = m->geom[c.g1].rbound, r2 = m->geom[c.g2].rbound;
+    if (ur_gap_quick(dc, ce, r1 + r2, A, T)) {
+      continue; // the exact test below would pass
+    }
+    double L = uru_norm3(dc);
+    if (L > 0 && gap_holds(m, L - r1 - r2, ce / L, T)) {
       continue;
     }
     if (k != h && !item_clear(m, d, k, T)) {

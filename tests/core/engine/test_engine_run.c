@@ -564,6 +564,67 @@ static void test_spin_bound(void** state) {
 }
 
 
+//---------------------------------- the coarse-step proof's quick test --------------------------
+
+// coarse_clear's exact test along the centre line (gap_holds of engine_run.c, the same operations)
+static int gap_exact(const double dc[3], double ce, double r1, double r2, double a, double T) {
+  double L = sqrt(dc[0] * dc[0] + dc[1] * dc[1] + dc[2] * dc[2]);
+  if (!(L > 0)) return 0;
+  double s = L - r1 - r2, c = ce / L;
+  return s > 0 && s > c * T + 0.5 * a * T * T;
+}
+
+// ur_gap_quick never passes a case the exact test fails: random cases placed at the exact test's
+// boundary (within 1e-16 .. 1 relative, closing and opening rates, a_clear 0 and 100, radii
+// summing to about the distance), and it still passes the far ones (distance 2 (r + A) or more at
+// rates where the exact test holds with room). NaN inputs and an overflowing right side go to the
+// exact test.
+// Without its 1 + 2^-20 (or with c T for 2 c T) it passes boundary cases the exact test fails.
+static void test_gap_quick(void** state) {
+  srand(3636);
+  long quick = 0, exact = 0, far = 0, farq = 0;
+  for (int n = 0; n < 400000; n++) {
+    double u[3], dc[3];
+    unit(u);
+    double r1 = urand(0.001, 0.3), r2 = n % 7 == 0 ? 0 : urand(0.001, 0.3);
+    double T = urand(1e-5, 1e-3), a = n % 3 ? 100 : 0, A = 0.5 * a * T * T;
+    double S = r1 + r2 + A, L = S * (1 + pow(10, urand(-16, 0)));
+    for (int k = 0; k < 3; k++) dc[k] = L * u[k];
+    // the rate at which L - S = c T / L holds, nudged either side (or a receding pair)
+    double c =
+        (L - S) / T * pow(10, urand(-3, 3)) * (n % 5 == 0 ? -1 : 1) * (1 + urand(-1e-9, 1e-9));
+    double ce = c * L;
+    int q = ur_gap_quick(dc, ce, r1 + r2, A, T), e = gap_exact(dc, ce, r1, r2, a, T);
+    if (q && !e) {
+      fail_msg("quick passes, exact fails: L %.17g r %.17g %.17g ce %.17g T %.17g a %g", L, r1, r2,
+               ce, T, a);
+    }
+    quick += q;
+    exact += e;
+    // far: twice the sum of radii away, closing at most at half of what the gap allows
+    for (int k = 0; k < 3; k++) dc[k] = 2 * S * u[k] * urand(1, 10);
+    double Lf = sqrt(dc[0] * dc[0] + dc[1] * dc[1] + dc[2] * dc[2]);
+    ce = 0.5 * (Lf - S) / T * Lf * urand(-1, 1);
+    far += gap_exact(dc, ce, r1, r2, a, T);
+    farq += ur_gap_quick(dc, ce, r1 + r2, A, T);
+  }
+  print_message("gap quick: %ld of %ld exact passes at the boundary; far %ld of %ld\n", quick,
+                exact, farq, far);
+  assert_true(quick > 0 && exact > quick);
+  assert_true(far == 400000 && farq == far);
+  double dc[3] = {1, 0, 0};
+  assert_int_equal(ur_gap_quick(dc, NAN, 0.1, 0, 1e-4), 0);
+  assert_int_equal(ur_gap_quick(dc, INFINITY, 0.1, 0, 1e-4), 0);
+  assert_int_equal(ur_gap_quick(dc, 0, NAN, 0, 1e-4), 0);
+  assert_int_equal(ur_gap_quick(dc, 0, 0.1, NAN, 1e-4), 0);
+  assert_int_equal(ur_gap_quick(dc, 0, 0.1, 0, NAN), 0);
+  assert_int_equal(ur_gap_quick(dc, 0, 1, 0, 1e-4), 0); // touching: L = r
+  assert_int_equal(ur_gap_quick(dc, 0, 0.5, 0, 1e-4), 1);
+  double big[3] = {1e200, 1e200, 0}; // the distance overflows: both pass
+  assert_int_equal(ur_gap_quick(big, 0, 0.1, 0, 1e-4), gap_exact(big, 0, 0.1, 0, 0, 1e-4));
+  assert_int_equal(ur_gap_quick(dc, 0, 1e200, 0, 1e-4), 0); // the right side overflows
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_threads_bitwise),       cmocka_unit_test(test_symmetric_impact),
@@ -572,7 +633,7 @@ int main(void) {
       cmocka_unit_test(test_history_and_names),     cmocka_unit_test(test_clear_ends_early),
       cmocka_unit_test(test_clear_keeps_recontact), cmocka_unit_test(test_clear_sliding_past),
       cmocka_unit_test(test_adapt_clear_only),      cmocka_unit_test(test_spin_bound),
-      cmocka_unit_test(test_clear_membrane_bag),
+      cmocka_unit_test(test_clear_membrane_bag),    cmocka_unit_test(test_gap_quick),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
