@@ -927,6 +927,15 @@ AI void tri_pass_t(const urMembrane* mb, const double* x, const double* v, doubl
       }
       for (int l = 0; l < nl; l++) {
         V += vv[l];
+      }
+      if (nl == 4) { /* the spheres of 4 consecutive triangles: a vector store each */
+        *(urm4u*)(tb + 4 * b) = cg[0];
+        *(urm4u*)(tb + nt + 4 * b) = cg[1];
+        *(urm4u*)(tb + 2 * nt + 4 * b) = cg[2];
+        *(urm4u*)(tb + 3 * nt + 4 * b) = r2;
+        continue;
+      }
+      for (int l = 0; l < nl; l++) {
         int t = 4 * b + l;
         tb[t] = cg[0][l];
         tb[nt + t] = cg[1][l];

@@ -572,6 +572,26 @@ static void test_forces_bitwise(void** state) {
       size_t w0 = 18 * (size_t)nn + urMEMS_N + 36 * (size_t)mb->ntb;
       assert_memory_equal(st + w0, st2 + w0, 2 * (size_t)mb->nt * sizeof(double));
       assert_true(a.strain > 0 && a.efabric > 0 && a.volume > 0);
+      // each triangle's bounding sphere for the contact's culling (after the warm starts, SoA:
+      // the centroids' x, y, z, the farthest node's squared distance), as one triangle alone
+      const double* tb = st + w0 + 8 * (size_t)mb->ntb;
+      int nt = mb->nt;
+      for (int t = 0; t < nt; t++) {
+        const int* n3 = mb->tri + 3 * t;
+        double cg[3], r2 = 0;
+        for (int c = 0; c < 3; c++) {
+          cg[c] = (st2[3 * n3[0] + c] + st2[3 * n3[1] + c] + st2[3 * n3[2] + c]) * (1.0 / 3);
+        }
+        for (int j = 0; j < 3; j++) {
+          double dc[3];
+          urm_sub(dc, st2 + 3 * n3[j], cg);
+          double rr = dc[0] * dc[0] + dc[1] * dc[1] + dc[2] * dc[2];
+          r2 = rr > r2 ? rr : r2;
+        }
+        double want[4] = {cg[0], cg[1], cg[2], r2};
+        double got[4] = {tb[t], tb[nt + t], tb[2 * nt + t], tb[3 * nt + t]};
+        assert_memory_equal(got, want, sizeof want);
+      }
     }
     free(f);
     free(g);
