@@ -3,7 +3,8 @@
  * and the front one of A2); one change to one side of it, each in its own kind of part (a body's
  * centre of mass, one arm's mass, one restraint's stop, an ellipsoid's place or size, a bag's
  * mount or tilt, an injury sensor's point, a contact pair's law on one side), makes it
- * asymmetric and the reason names that part; a tilt about the plane's normal keeps it. */
+ * asymmetric and the reason names that part; a tilt about the plane's normal keeps it. Pairs
+ * and bags pair off one to one: a duplicate on one side is asymmetric. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -121,11 +122,38 @@ static void membranes(void** state) {
        1, "ellipsoid cargo");
 }
 
+/* contact pairs and bags pair off one to one: a second one on one side only has no partner
+   (before, it matched the other side's partner again and the model passed as symmetric) */
+#define FRONT_SENSOR "sensor bag_front_p type=airbag obj=bag_front enable=$bag_front"
+#define SIDE_BAGS                                                                                  \
+  FRONT_SENSOR                                                                                     \
+  "\nellipsoid wl body=arm1 pos=0.3,0,0 size=0.05,0.05,0.05"                                       \
+  "\nellipsoid wr body=arm2 pos=0.3,0,0 size=0.05,0.05,0.05"                                       \
+  "\nairbag bl geom=wl p0=101325 patm=101325 v0=0.001 gamma=1.4 kappa=1 "                          \
+  "thickness=0.05 targets=head_cranium"                                                            \
+  "\nairbag br geom=wr p0=101325 patm=101325 v0=0.001 gamma=1.4 kappa=1 "                          \
+  "thickness=0.05 targets=head_cranium"
+
+static void one_to_one(void** state) {
+  char why[urMSGLEN];
+  asym(0, "pairs sole a=heel_l,ball_l,heel_r,ball_r b=ground law=sole",
+       "pairs sole a=heel_l,ball_l,heel_r,ball_r b=ground law=sole\n"
+       "pairs sole2 a=heel_r b=ground law=sole",
+       0, "contact pair sole2");
+  /* a left and a right bag on the arms 1 and 2 (each other's images) keep it symmetric */
+  assert_true(verdict(2, FRONT_SENSOR, SIDE_BAGS, 0, 1, why, sizeof why));
+  asym(2, FRONT_SENSOR,
+       SIDE_BAGS
+       "\nairbag br2 geom=wr p0=101325 patm=101325 v0=0.001 gamma=1.4 kappa=1 "
+       "thickness=0.05 targets=head_cranium",
+       0, "airbag br2 has no mirror image");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(builtin_symmetric), cmocka_unit_test(bodies),
       cmocka_unit_test(restraints),        cmocka_unit_test(ellipsoids_pairs_sensors),
-      cmocka_unit_test(membranes),
+      cmocka_unit_test(membranes),         cmocka_unit_test(one_to_one),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
