@@ -423,6 +423,18 @@ static int sensor_ok(const urModel* m, int id, const int* bm, int sig1) {
   return bm[s->obj] == s->obj && eq(s->pos[1], 0) && (s->type != urSENS_JOINTLOAD || eqv(MR, R, 9));
 }
 
+/* a plate's joint coordinate (sensor s, jointpos or jointvel) keeps its sign in the mirror
+   (sig: the joint signs of its body); a free joint's coordinates (translations, a quaternion or
+   angular velocity) and a ball's quaternion have no sign per axis here: refused */
+static int plate_keeps(const urModel* m, const urSensor* s, const int* sig) {
+  urJointType t = m->body[s->obj].jtype;
+  if (t == urJNT_FREE || t == urJNT_FIXED || s->dof < 0 || s->dof >= 3 ||
+      (t == urJNT_SPHERICAL && s->type == urSENS_JOINTPOS)) {
+    return 0;
+  }
+  return sig[3 * s->obj + s->dof] > 0;
+}
+
 //---------------------------------- the model -----------------------------------------------------
 
 int ur_model_mirror(const urModel* m, char* why, size_t n) {
@@ -557,7 +569,7 @@ int ur_model_mirror(const urModel* m, char* why, size_t n) {
   int plate[2] = {r->chest, r->abdomen};
   for (int k = 0; k < 2 && ok; k++) {
     int id = plate[k];
-    int s1 = id < 0 || sig[3 * m->sensor[id].obj + (m->sensor[id].dof % 3)] > 0;
+    int s1 = id < 0 || plate_keeps(m, m->sensor + id, sig);
     if (!sensor_ok(m, id, bm, s1)) {
       ok = fail(why, n, "the %s sensor does not read the same in the mirror image",
                 k ? "abdomen" : "chest");
