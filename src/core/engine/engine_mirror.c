@@ -11,7 +11,8 @@
  * up to sign, and restraints that act the same on the mirrored coordinates; each body's
  * ellipsoids pair with its partner's, each contact pair with the pair of the partners under the
  * same law, each airbag with its partner's bag (a membrane's mesh node for node, triangle for
- * triangle, with the same masses, reference areas and damping, its material axes mirrored); the
+ * triangle, with the same masses, reference areas and damping, its material axes mirrored), all
+ * one to one as the bodies (a second pair or bag on one side only has no partner); the
  * injury sensors sit on the plane and read what the mirror keeps (head acceleration's
  * magnitude, the neck's axial force and flexion moment, the plates' deflections), and gravity
  * lies in the plane. Anything else (a part off to one side, a restraint's stop on one side
@@ -422,6 +423,18 @@ static int sensor_ok(const urModel* m, int id, const int* bm, int sig1) {
   return bm[s->obj] == s->obj && eq(s->pos[1], 0) && (s->type != urSENS_JOINTLOAD || eqv(MR, R, 9));
 }
 
+/* a plate's joint coordinate (sensor s, jointpos or jointvel) keeps its sign in the mirror
+   (sig: the joint signs of its body); a free joint's coordinates (translations, a quaternion or
+   angular velocity) and a ball's quaternion have no sign per axis here: refused */
+static int plate_keeps(const urModel* m, const urSensor* s, const int* sig) {
+  urJointType t = m->body[s->obj].jtype;
+  if (t == urJNT_FREE || t == urJNT_FIXED || s->dof < 0 || s->dof >= 3 ||
+      (t == urJNT_SPHERICAL && s->type == urSENS_JOINTPOS)) {
+    return 0;
+  }
+  return sig[3 * s->obj + s->dof] > 0;
+}
+
 //---------------------------------- the model -----------------------------------------------------
 
 int ur_model_mirror(const urModel* m, char* why, size_t n) {
@@ -434,12 +447,13 @@ int ur_model_mirror(const urModel* m, char* why, size_t n) {
   if (!eq(m->opt.gravity[1], 0)) {
     return fail(why, n, "gravity has a component across the plane y = 0");
   }
-  int nb = m->nbody, ng = m->ngeom, nbag = m->nbag;
-  int* bm = malloc(sizeof(int) * (size_t)(4 * nb + ng + nbag + 1));
+  int nb = m->nbody, ng = m->ngeom, nbag = m->nbag, np = m->npair;
+  int* bm = malloc(sizeof(int) * (size_t)(4 * nb + ng + nbag + np + 1));
   if (!bm) {
     return fail(why, n, "out of memory");
   }
-  int *sig = bm + nb, *gm = sig + 3 * nb, *km = gm + ng, ok = 1; /* sig: 3 per body */
+  int *sig = bm + nb, *gm = sig + 3 * nb, *km = gm + ng, *pm = km + nbag; /* sig: 3 per body */
+  int ok = 1;
   for (int i = 0; i < nb; i++) {
     bm[i] = -1;
   }
@@ -495,31 +509,52 @@ int ur_model_mirror(const urModel* m, char* why, size_t n) {
     }
   }
 
+  /* contact pairs and airbags pair off as the ellipsoids do, one partner each (a second pair
+     or bag on one side only has none: it would double a force there) */
+  for (int p = 0; p < np; p++) {
+    pm[p] = -1;
+  }
+  for (int k = 0; k < nbag; k++) {
+    km[k] = -1;
+  }
+
   // contact pairs: the partners' pair under the same law
-  for (int p = 0; p < m->npair && ok; p++) {
-    const urPair* a = m->pair + p;
-    int g1 = gm[a->geom1], g2 = a->geom2 < 0 ? -1 : gm[a->geom2], found = 0;
-    for (int q = 0; q < m->npair && !found; q++) {
-      const urPair* b = m->pair + q;
-      found = b->geom1 == g1 && b->geom2 == g2 && law_eq(&a->law, &b->law);
+  for (int p = 0; p < np && ok; p++) {
+    if (pm[p] >= 0) {
+      continue;
     }
-    if (!found) {
+    const urPair* a = m->pair + p;
+    int g1 = gm[a->geom1], g2 = a->geom2 < 0 ? -1 : gm[a->geom2];
+    for (int q = p; q < np && pm[p] < 0; q++) {
+      const urPair* b = m->pair + q;
+      if ((q == p || pm[q] < 0) && b->geom1 == g1 && b->geom2 == g2 && law_eq(&a->law, &b->law)) {
+        pm[p] = q;
+        pm[q] = p;
+      }
+    }
+    if (pm[p] < 0) {
       ok = fail(why, n, "contact pair %s has no mirror image", a->name);
     }
   }
 
-  // airbags: each one's partner on the partner ellipsoid
+  // airbags: each one's partner on the partner ellipsoid, both ways (the first one's reason)
   for (int k = 0; k < nbag && ok; k++) {
-    km[k] = -1;
-    for (int l = 0; l < nbag && km[k] < 0; l++) {
-      if (m->bag[l].geom == gm[m->bag[k].geom]) {
-        km[k] = l;
+    if (km[k] >= 0) {
+      continue;
+    }
+    int first = -1;
+    for (int l = k; l < nbag && km[k] < 0; l++) {
+      if ((l == k || km[l] < 0) && m->bag[l].geom == gm[m->bag[k].geom]) {
+        first = first < 0 ? l : first;
+        if (bag_pair(m, k, l, gm, NULL, 0) && (l == k || bag_pair(m, l, k, gm, NULL, 0))) {
+          km[k] = l;
+          km[l] = k;
+        }
       }
     }
     if (km[k] < 0) {
-      ok = fail(why, n, "airbag %s has no mirror image", m->bag[k].name);
-    } else {
-      ok = bag_pair(m, k, km[k], gm, why, n);
+      ok = first < 0 ? fail(why, n, "airbag %s has no mirror image", m->bag[k].name)
+                     : bag_pair(m, k, first, gm, why, n) && bag_pair(m, first, k, gm, why, n);
     }
   }
 
@@ -534,7 +569,7 @@ int ur_model_mirror(const urModel* m, char* why, size_t n) {
   int plate[2] = {r->chest, r->abdomen};
   for (int k = 0; k < 2 && ok; k++) {
     int id = plate[k];
-    int s1 = id < 0 || sig[3 * m->sensor[id].obj + (m->sensor[id].dof % 3)] > 0;
+    int s1 = id < 0 || plate_keeps(m, m->sensor + id, sig);
     if (!sensor_ok(m, id, bm, s1)) {
       ok = fail(why, n, "the %s sensor does not read the same in the mirror image",
                 k ? "abdomen" : "chest");
