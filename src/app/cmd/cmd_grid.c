@@ -139,7 +139,8 @@ int ura_grid_mirror(uraCtx* c, char* why, size_t n) {
                    : !m->mirror                        ? m->nomirror
                                                        : NULL;
   if (why) snprintf(why, n, "%s", no ? no : "");
-  if (!m) c->err[0] = 0;
+  /* the model's failure is said in why; an earlier error is not this function's to clear */
+  if (no == c->err) c->err[0] = 0;
   return no == NULL;
 }
 
