@@ -19,10 +19,12 @@
 #define urBC(x)   (x)
 #include "kernels/engine_spatial.h"
 #include "kernels/engine_xinertia_rows.h"
-#define urSTORAGE static inline __attribute__((always_inline))
-#define urALL(c)  (c)
-#define urSQRT(x) sqrt(x)
+#define urSTORAGE   static inline __attribute__((always_inline))
+#define urALL(c)    (c)
+#define urSQRT(x)   sqrt(x)
+#define urINVUNROLL urUNROLL
 #include "kernels/engine_invsym.h"
+#undef urINVUNROLL
 #undef urSTORAGE
 #undef urALL
 #undef urSQRT

@@ -1,9 +1,16 @@
 /* engine_invsym.h: the inverse of a small symmetric matrix (joint-space inertias), as a template
  * like engine_spatial.h: urT the element type, urK(name) the name, urSTORAGE the linkage,
  * urBC(x) a double broadcast, urALL(c) true if comparison c holds (in every lane), urSQRT(x) the
- * square root (lane by lane). For lanes, -1 means some lane's matrix is singular. No include
- * guard: included once per instance; the protocol (who defines and undefines the parameters, the
- * bit-exactness rules): src/README. */
+ * square root (lane by lane), urINVUNROLL (optional) a pragma unrolling the Cholesky's loops, for
+ * an instance inlined with n constant (the same operations in the same order, so the same bits;
+ * with n variable GCC would warn of the peeled copies' bounds). For lanes, -1 means some lane's
+ * matrix is singular. No include guard: included once per instance; the protocol (who defines
+ * and undefines the parameters, the bit-exactness rules): src/README. */
+
+#ifndef urINVUNROLL
+#define urINVUNROLL
+#define urINVUNROLL_DEFAULT
+#endif
 
 // inverse of a small n x n symmetric matrix (closed forms up to 3, Cholesky beyond, which
 // needs positive definiteness); -1 if singular
@@ -48,18 +55,18 @@ urSTORAGE int urK(invsym)(urT* Ainv, const urT* A, int n) {
   }
   // Cholesky A = L L^T, then A^-1 = L^-T L^-1 (A symmetric positive definite)
   urT L[36] = {0}, Li[36] = {0};
-  for (int j = 0; j < n; j++) {
+  urINVUNROLL for (int j = 0; j < n; j++) {
     urT s = A[n * j + j];
-    for (int k = 0; k < j; k++) {
+    urINVUNROLL for (int k = 0; k < j; k++) {
       s -= L[6 * j + k] * L[6 * j + k];
     }
     if (!urALL(s > 0)) {
       return -1;
     }
     L[6 * j + j] = urSQRT(s);
-    for (int i = j + 1; i < n; i++) {
+    urINVUNROLL for (int i = j + 1; i < n; i++) {
       urT t = A[n * i + j];
-      for (int k = 0; k < j; k++) {
+      urINVUNROLL for (int k = 0; k < j; k++) {
         t -= L[6 * i + k] * L[6 * j + k];
       }
       L[6 * i + j] = t / L[6 * j + j];
@@ -67,11 +74,11 @@ urSTORAGE int urK(invsym)(urT* Ainv, const urT* A, int n) {
   }
 
   // invert the triangle
-  for (int j = 0; j < n; j++) {
+  urINVUNROLL for (int j = 0; j < n; j++) {
     Li[6 * j + j] = 1 / L[6 * j + j];
-    for (int i = j + 1; i < n; i++) {
+    urINVUNROLL for (int i = j + 1; i < n; i++) {
       urT t = urBC(0);
-      for (int k = j; k < i; k++) {
+      urINVUNROLL for (int k = j; k < i; k++) {
         t -= L[6 * i + k] * Li[6 * k + j];
       }
       Li[6 * i + j] = t / L[6 * i + i];
@@ -79,10 +86,10 @@ urSTORAGE int urK(invsym)(urT* Ainv, const urT* A, int n) {
   }
 
   // A^-1 = Li^T Li
-  for (int i = 0; i < n; i++) {
-    for (int j = i; j < n; j++) {
+  urINVUNROLL for (int i = 0; i < n; i++) {
+    urINVUNROLL for (int j = i; j < n; j++) {
       urT t = urBC(0);
-      for (int k = j; k < n; k++) {
+      urINVUNROLL for (int k = j; k < n; k++) {
         t += Li[6 * k + i] * Li[6 * k + j];
       }
       Ainv[n * i + j] = t;
@@ -91,3 +98,8 @@ urSTORAGE int urK(invsym)(urT* Ainv, const urT* A, int n) {
   }
   return 0;
 }
+
+#ifdef urINVUNROLL_DEFAULT
+#undef urINVUNROLL
+#undef urINVUNROLL_DEFAULT
+#endif

@@ -8,6 +8,6 @@
     defined(urNEL) || defined(urEL) || defined(urASI) || defined(urAST) || defined(urSQRT) ||      \
     defined(urSTORAGE) || defined(urSETENERGY) || defined(urINVSYM) || defined(urAXISROT) ||       \
     defined(urABA_ATTR) || defined(urKIN_ATTR) || defined(urKIN_PRE) || defined(urCROSSK) ||       \
-    defined(urSTEPH)
+    defined(urSTEPH) || defined(urINVUNROLL)
 #error "a template parameter is still defined after its instances (src/README, Templates)"
 #endif
