@@ -277,8 +277,10 @@ static int membrane_pair(const urMembrane* b1, const urMembrane* b2, char* why, 
       s1->temp != s2->temp || s1->vent_area != s2->vent_area || s1->vent_cd != s2->vent_cd ||
       s1->leak != s2->leak || s1->kc_alpha != s2->kc_alpha || s1->kc_dt != s2->kc_dt ||
       s1->zeta_c != s2->zeta_c || s1->mu != s2->mu || s1->v_eps != s2->v_eps ||
-      s1->damp != s2->damp || s1->rhot != s2->rhot) {
-    return fail(why, n, "airbag %s's fabric, gas or contact differs from its mirror partner's",
+      s1->damp != s2->damp || s1->rhot != s2->rhot || s1->inflate != s2->inflate ||
+      s1->dt_factor != s2->dt_factor || s1->mscale != s2->mscale) {
+    return fail(why, n,
+                "airbag %s's fabric, gas, contact or numerics differ from its mirror partner's",
                 name);
   }
   int nn = b1->nn, nt = b1->nt, ok = 1;
