@@ -132,12 +132,12 @@ int ura_grid_symmetric(const uraState* st) {
 int ura_grid_mirror(uraCtx* c, char* why, size_t n) {
   double f = fmod(fabs(c->st.face), 180.0);
   const urModel* m = NULL;
-  const char* no = !c->st.mirror                       ? "set mirror off"
-                   : c->st.roll != 0 || c->st.yaw != 0 ? "roll or yaw breaks the symmetry"
-                   : f != 0                            ? "the face is neither 0 nor 180 deg"
-                   : !(m = ura_model(c))               ? c->err
-                   : !m->mirror                        ? m->nomirror
-                                                       : NULL;
+  const char* no = !c->st.mirror                 ? "set mirror off"
+                   : !ura_grid_symmetric(&c->st) ? "roll or yaw breaks the symmetry"
+                   : f != 0                      ? "the face is neither 0 nor 180 deg"
+                   : !(m = ura_model(c))         ? c->err
+                   : !m->mirror                  ? m->nomirror
+                                                 : NULL;
   if (why) snprintf(why, n, "%s", no ? no : "");
   /* the model's failure is said in why; an earlier error is not this function's to clear */
   if (no == c->err) c->err[0] = 0;
