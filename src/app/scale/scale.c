@@ -141,13 +141,9 @@ static int d_end(void* ctx, urGrid* g, const long* todo, long ntodo) {
 static unsigned long long settings_hash(uraCtx* c) {
   static const char* const skip[] = {"set format ",  "set terminal ", "set output ",
                                      "set threads ", "set recall ",   NULL};
-  char* text = NULL;
-  size_t n = 0;
   unsigned long long h = uraFNV0;
-  FILE* f = open_memstream(&text, &n);
-  if (!f) return h;
-  ura_session_write(c, f);
-  fclose(f);
+  char* text = ura_session_text(c);
+  if (!text) return h;
   for (char* line = text; line && *line;) {
     char* end = strchr(line, '\n');
     size_t len = end ? (size_t)(end - line + 1) : strlen(line);
