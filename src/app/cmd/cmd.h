@@ -54,6 +54,9 @@ extern const uraNamed ura_named[]; /* ends with {NULL} */
 const uraNamed* ura_named_find(const char* name);
 /* set n from argv (set NAME WORD [UNIT]): 0, or -1 with one error line */
 int ura_named_set(uraCtx* c, const uraNamed* n, int argc, char** argv);
+/* the word n's parameter stands for (NULL: a value that is neither 0 nor 1) and the value: 0,
+   or -1 with one error line when the model lacks it */
+int ura_named_word(uraCtx* c, const uraNamed* n, const char** word, double* v);
 
 /* run one command line (may hold several commands separated by ';'); 0 or -1 */
 int ura_run_line(uraCtx* c, const char* line);
