@@ -194,6 +194,10 @@ void ura_mc_free(uraCtx* c);
 int ura_risk_devices(uraCtx* c, const uraState* st, urDeploy* dep, int* bag);
 /* the name of the k-th carried bag (bag[k] indexes "bag_bottom", "bag_front") */
 const char* ura_risk_bag(int which);
+/* the airbags of the live model that no bag_bottom or bag_front parameter switches (fitted in
+   every branch, p_bag not applied): their number, and a note naming them in text (empty when
+   none) */
+int ura_risk_fixed_bags(uraCtx* c, const urDeploy* dep, const int* bag, char* text, size_t n);
 /* a branch's name: "none", "chute", "chute+bag_bottom", ... */
 void ura_risk_branch_name(int mask, const urDeploy* dep, const int* bag, char* buf, size_t n);
 /* the state of a branch: base with the parachute (area_chute 0 and case C's Table 2 column
