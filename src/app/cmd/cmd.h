@@ -144,6 +144,10 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv); /* cmd_history.c */
 /* every sensor channel's samples of the last impact from from to to (s from tau) */
 int ura_history_samples(uraCtx* c, double from, double to);
+/* a note when a range FROM:TO (s; infinite: open) kept none of the n sample times t[0], t[stride],
+   ...: where the samples run instead */
+void ura_history_range_note(uraTable* t, const double* ts, int n, size_t stride, double from,
+                            double to);
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
 int ura_impact_cond(uraCtx* c, urImpactCond* cond); /* refuses angles below uraANGLE_DELTA */
 #define uraANGLE_DELTA 1.0 /* deg: the least descent angle of an offset Delta (grids) */
