@@ -427,6 +427,18 @@ static int show_lines(uraCtx* c, int argc, char** argv) {
       show_model_param(c, &c->model->param[k]);
       return 0;
     }
+    /* a name set also takes (set bag_model membrane): the word, and the parameter it sets */
+    const uraNamed* nv = p || i >= 0 ? NULL : ura_named_find(argv[1]);
+    if (nv) {
+      const char* word;
+      double v;
+      if (ura_named_word(c, nv, &word, &v)) return -1;
+      char note[200];
+      snprintf(note, sizeof note, "  (%s %g; set %s %s|%s)", nv->param, v, nv->name, nv->word[0],
+               nv->word[1]);
+      show_line(c, nv->name, word ? word : "?", "", note);
+      return 0;
+    }
     if (!p && i < 0) {
       int found = show_prefix(c, argv[1]);
       if (found) return found < 0 ? -1 : 0;

@@ -54,6 +54,9 @@ extern const uraNamed ura_named[]; /* ends with {NULL} */
 const uraNamed* ura_named_find(const char* name);
 /* set n from argv (set NAME WORD [UNIT]): 0, or -1 with one error line */
 int ura_named_set(uraCtx* c, const uraNamed* n, int argc, char** argv);
+/* the word n's parameter stands for (NULL: a value that is neither 0 nor 1) and the value: 0,
+   or -1 with one error line when the model lacks it */
+int ura_named_word(uraCtx* c, const uraNamed* n, const char** word, double* v);
 
 /* run one command line (may hold several commands separated by ';'); 0 or -1 */
 int ura_run_line(uraCtx* c, const char* line);
@@ -142,6 +145,10 @@ int ura_cmd_impact(uraCtx* c, int argc, char** argv);
 int ura_cmd_history(uraCtx* c, int argc, char** argv); /* cmd_history.c */
 /* every sensor channel's samples of the last impact from from to to (s from tau) */
 int ura_history_samples(uraCtx* c, double from, double to);
+/* a note when a range FROM:TO (s; infinite: open) kept none of the n sample times t[0], t[stride],
+   ...: where the samples run instead */
+void ura_history_range_note(uraTable* t, const double* ts, int n, size_t stride, double from,
+                            double to);
 int ura_cmd_contacts(uraCtx* c, int argc, char** argv);
 int ura_impact_cond(uraCtx* c, urImpactCond* cond); /* refuses angles below uraANGLE_DELTA */
 #define uraANGLE_DELTA 1.0 /* deg: the least descent angle of an offset Delta (grids) */
@@ -192,6 +199,10 @@ void ura_mc_free(uraCtx* c);
 int ura_risk_devices(uraCtx* c, const uraState* st, urDeploy* dep, int* bag);
 /* the name of the k-th carried bag (bag[k] indexes "bag_bottom", "bag_front") */
 const char* ura_risk_bag(int which);
+/* the airbags of the live model that no bag_bottom or bag_front parameter switches (fitted in
+   every branch, p_bag not applied): their number, and a note naming them in text (empty when
+   none) */
+int ura_risk_fixed_bags(uraCtx* c, const urDeploy* dep, const int* bag, char* text, size_t n);
 /* a branch's name: "none", "chute", "chute+bag_bottom", ... */
 void ura_risk_branch_name(int mask, const urDeploy* dep, const int* bag, char* buf, size_t n);
 /* the state of a branch: base with the parachute (area_chute 0 and case C's Table 2 column

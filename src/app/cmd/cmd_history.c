@@ -135,6 +135,21 @@ static int summary(uraCtx* c, const uraTrace* tr) {
   return 0;
 }
 
+void ura_history_range_note(uraTable* t, const double* ts, int n, size_t stride, double from,
+                            double to) {
+  int kept = 0;
+  for (int i = 0; i < n; i++)
+    kept += ts[(size_t)i * stride] >= from && ts[(size_t)i * stride] <= to;
+  if (kept || n < 1) return;
+  char a[32] = "", b[32] = "";
+  if (isfinite(from)) snprintf(a, sizeof a, "%g", 1e3 * from);
+  if (isfinite(to)) snprintf(b, sizeof b, "%g", 1e3 * to);
+  ura_table_note(t,
+                 "no samples in %s:%s ms from tau: the last impact's samples run from %.4g to "
+                 "%.4g ms",
+                 a, b, 1e3 * ts[0], 1e3 * ts[(size_t)(n - 1) * stride]);
+}
+
 /* some signals' samples in [from, to] s */
 static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double from, double to) {
   int* sel = malloc(sizeof(int) * (size_t)nsel);
@@ -177,6 +192,7 @@ static int samples(uraCtx* c, const uraTrace* tr, int nsel, char** names, double
                  "head_acc m/s^2, neck forces N, moments N m, deflections m, airbag channels "
                  "_p Pa (absolute), _v m^3, _f N, _strain 1 (Green), other sensor channels in "
                  "the units 'history' lists");
+  ura_history_range_note(t, tr->t, tr->n, 1, from, to);
   for (int i = 0; i < tr->n; i++) {
     if (tr->t[i] < from || tr->t[i] > to) continue;
     ura_table_cell(t, "%.9g", tr->t[i]);

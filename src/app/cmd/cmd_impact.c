@@ -197,6 +197,7 @@ int ura_history_samples(uraCtx* c, double from, double to) {
                  "(uasimpact-model(5))",
                  c->last_aim ? "aimed at the head, up and side" : "at", c->last_dpar,
                  c->last_dperp);
+  ura_history_range_note(t, d->hist, d->nhist, (size_t)ncol, from, to);
   for (int r = 0; r < d->nhist; r++) {
     double tr = d->hist[(size_t)r * ncol];
     if (tr < from || tr > to) continue;

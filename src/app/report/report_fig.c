@@ -110,7 +110,7 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
            rg->diff ? "difference \u0394P = P_b \u2212 P_a in %; " : "P{F|Delta} in %; ", q);
   ura_plot_text(f, "title", title);
   double h = g->step / 2;
-  fprintf(f, "set xlabel \"cross offset dperp (m)\" noenhanced\n");
+  fprintf(f, "set xlabel \"cross offset dperp (m), + left of the course\" noenhanced\n");
   fprintf(f, "set ylabel \"along offset dpar (m), + ahead\" noenhanced\n");
   fprintf(f, "set size ratio -1\nset xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", g->perp_min - h,
           g->perp_min + (g->ncol - 1) * g->step + h, g->par_max - (g->nrow - 1) * g->step - h,
@@ -124,13 +124,10 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
         "'#b2182b')\nset cbrange [%.9g:%.9g]\nset cblabel \"\u0394P = P_b \u2212 P_a (%%)\" noenhanced\n",
         -big, big);
   } else {
-    fprintf(f,
-            "set palette defined (0 '#ffffff', 0.001 '#fff3b0', %g '#fff3b0', %g '#ffe000', "
-            "%g '#ffe000', %g '#ff9000', %g '#ff9000', %g '#d7191c', 100 '#d7191c')\n",
-            uraBAND_MED, uraBAND_MED, uraBAND_HIGH, uraBAND_HIGH, uraBAND_SEVERE, uraBAND_SEVERE);
-    fprintf(f, "set cbrange [0:100]\nset cblabel \"P{F|Delta} (%%)\" noenhanced\n");
+    ura_plot_band_palette(f);
+    fprintf(f, "set cblabel \"P{F|Delta} (%%)\" noenhanced\n");
   }
-  fprintf(f, "plot $D using 1:2:3 with image notitle\n");
+  fprintf(f, "plot $D using 1:2:3 %s notitle\n", URA_PLOT_CELLS);
   return 0;
 }
 

@@ -25,8 +25,9 @@
 
 /* ---- the grid as a heat map ---- */
 
-/* the band colours as a stepped palette over 0..100 % */
-static void band_palette(FILE* f) {
+/* the band colours as a stepped palette over 0..100 %, the colour bar ticked at the bands'
+   edges (the report's heat maps too) */
+void ura_plot_band_palette(FILE* f) {
   fprintf(f,
           "set palette defined (0 '#ffffff', 0.001 '#fff3b0', %g '#fff3b0', %g '#ffe000', "
           "%g '#ffe000', %g '#ff9000', %g '#ff9000', %g '#d7191c', 100 '#d7191c')\n",
@@ -105,8 +106,8 @@ static int write_grid(uraCtx* c, FILE* f, const void* arg) {
   if (diff)
     diff_palette(f, pmax > 0 ? ceil(pmax) : 1);
   else
-    band_palette(f);
-  fprintf(f, "plot $D using 1:2:3 with image notitle\n");
+    ura_plot_band_palette(f);
+  fprintf(f, "plot $D using 1:2:3 %s notitle\n", URA_PLOT_CELLS);
   return 0;
 }
 

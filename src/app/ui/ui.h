@@ -52,6 +52,12 @@ int ura_plot_xy(uraCtx* c, const char* who, const char* title, const char* xlabe
 
 /* heat map of P{F|Delta} of c->last in the band colours, axes in m */
 int ura_plot_grid(uraCtx* c);
+/* how a heat map's cells are drawn: one filled rectangle each, so that a viewer that scales
+   the figure (a browser showing an SVG, a PDF reader) cannot blend neighbouring cells into
+   colours of no band, as it smooths the one bitmap of 'with image' */
+#define URA_PLOT_CELLS "with image pixels"
+/* the band palette over 0..100 % and its colour bar ticked at the bands' edges */
+void ura_plot_band_palette(FILE* f);
 
 /* the PoF curves of HIC, Nij (with its AIS curves) and VC; p NULL: the documented defaults */
 int ura_plot_pof(uraCtx* c, const urInjuryParams* p);

@@ -845,15 +845,18 @@ static void inputs_note(uraCtx* c, struct uraMc* m, char* buf, size_t n) {
   }
   if (k < n) {
     if (m->dep.chute) {
-      snprintf(buf + k, n - k,
-               "; deployment drawn per sample: p_chute %g, p_bag %g (%d "
-               "airbag%s), h_chute_min %g m",
-               c->st.risk.p_chute, c->st.risk.p_bag, m->dep.nbag, m->dep.nbag == 1 ? "" : "s",
-               c->st.risk.h_chute_min);
+      k += (size_t)snprintf(buf + k, n - k,
+                            "; deployment drawn per sample: p_chute %g, p_bag %g (%d "
+                            "airbag%s), h_chute_min %g m",
+                            c->st.risk.p_chute, c->st.risk.p_bag, m->dep.nbag,
+                            m->dep.nbag == 1 ? "" : "s", c->st.risk.h_chute_min);
     } else {
-      snprintf(buf + k, n - k, "; no parachute: nothing deploys");
+      k += (size_t)snprintf(buf + k, n - k, "; no parachute: nothing deploys");
     }
   }
+  char fixed[800];
+  if (k < n && ura_risk_fixed_bags(c, &m->dep, m->bag, fixed, sizeof fixed))
+    snprintf(buf + k, n - k, "; %s", fixed);
 }
 
 static double mean_of(const double* y, int n) {

@@ -70,11 +70,14 @@ static int run_branches(uraCtx* c, const char* who, branches* b) {
 /* the notes every deployment table shares */
 static void deploy_notes(uraCtx* c, uraTable* t, const branches* b) {
   const uraRiskSet* r = &c->st.risk;
+  char fixed[800];
+  int nfixed = ura_risk_fixed_bags(c, &b->dep, b->bag, fixed, sizeof fixed);
   if (!b->dep.chute) {
     ura_table_note(t,
                    "case %s carries no parachute (area_chute 0): one branch, nothing to "
                    "deploy",
                    c->st.casename);
+    if (nfixed) ura_table_note(t, "%s", fixed);
     return;
   }
   ura_table_note(t,
@@ -88,6 +91,7 @@ static void deploy_notes(uraCtx* c, uraTable* t, const branches* b) {
                  "branch none: no parachute, and no airbag credited (the drone falls as case "
                  "C at %.3f m/s, %.2f deg); with the parachute %.3f m/s, %.2f deg",
                  b->speed[0], b->angle[0], b->speed[1], b->angle[1]);
+  if (nfixed) ura_table_note(t, "%s", fixed);
 }
 
 int ura_cmd_risk(uraCtx* c, int argc, char** argv) {

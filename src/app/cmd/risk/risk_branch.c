@@ -34,6 +34,29 @@ int ura_risk_devices(uraCtx* c, const uraState* st, urDeploy* dep, int* bag) {
   return 0;
 }
 
+int ura_risk_fixed_bags(uraCtx* c, const urDeploy* dep, const int* bag, char* text, size_t n) {
+  const urModel* m = ura_model(c);
+  text[0] = 0;
+  int nfixed = m ? m->nbag - dep->nbag : 0;
+  if (nfixed <= 0) return 0;
+  /* their names: the airbags not named as the parameters that switch the carried ones */
+  char names[400] = "";
+  size_t k = 0;
+  for (int i = 0; i < m->nbag && k < sizeof names; i++) {
+    int on = 0;
+    for (int j = 0; j < dep->nbag; j++) on |= !strcmp(m->bag[i].name, bag_names[bag[j]]);
+    if (!on)
+      k += (size_t)snprintf(names + k, sizeof names - k, "%s%s", k ? ", " : "", m->bag[i].name);
+  }
+  snprintf(
+      text, n,
+      "fitted in every branch, not a device: airbag%s %s (no parameter bag_bottom or "
+      "bag_front switches %s: p_bag does not apply and branch none keeps %s; enable=$bag_bottom "
+      "or $bag_front makes an airbag a device, uasimpact(1), RISK FIGURES)",
+      nfixed == 1 ? "" : "s", names, nfixed == 1 ? "it" : "them", nfixed == 1 ? "it" : "them");
+  return nfixed;
+}
+
 void ura_risk_branch_name(int mask, const urDeploy* dep, const int* bag, char* buf, size_t n) {
   size_t k = (size_t)snprintf(buf, n, "%s", mask & 1 ? "chute" : "none");
   for (int j = 0; j < dep->nbag && k < n; j++) {
