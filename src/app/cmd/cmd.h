@@ -246,6 +246,7 @@ int ura_risk_igrc(const uraState* st, double ca, double* raw1, int* igrc, int* t
 typedef struct {
   double dim, speed, density;
   int dim_set, speed_set;
+  int dim_ra3; /* dim is the RA3's (width and length at their defaults) for another drone */
   int col, row, igrc;
   int nclamp;
 } uraSora25;
