@@ -125,8 +125,8 @@ int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], 
              "step)",
              dname);
   else
-    snprintf(base_text, sizeof base_text,
-             "the unmitigated drone (no parachute, no airbag: case C)");
+    snprintf(base_text, sizeof base_text, "the unmitigated drone (no parachute, no airbag: %s%s)",
+             strcmp(ura_risk_none_name(c), "C") ? "branch " : "case ", ura_risk_none_name(c));
   if (b8 && s->col < 0) {
     return ura_fail(c,
                     "sora: m2_baseline table_b8 needs a Table 2 column; the drone (%g m, %g m/s) "
