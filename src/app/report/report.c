@@ -668,8 +668,9 @@ int ura_cmd_report(uraCtx* c, int argc, char** argv) {
   }
   xmlFree(mem);
   if (rc == 0 && c->msg && !c->mute) {
-    fprintf(c->msg, "report: %s written (%d results, %d figures' grids, %d warnings)\n", argv[1],
-            r->nt, r->ng, r->nwarn);
+    fprintf(c->msg, "report: %s written (%d result%s, %d grid%s drawn, %d warning%s)\n", argv[1],
+            r->nt, r->nt == 1 ? "" : "s", r->ng, r->ng == 1 ? "" : "s", r->nwarn,
+            r->nwarn == 1 ? "" : "s");
   }
   return rc;
 }
