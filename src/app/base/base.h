@@ -278,7 +278,8 @@ const char* ura_role_name(uraRole r);
 const char* ura_role_label(uraRole r);
 
 /* scheme for text on a stream: PLAIN unless it is a terminal and NO_COLOR is unset; XTERM when
-   TERM or COLORTERM promise 256 colours, BASIC otherwise */
+   TERM or COLORTERM promise 256 colours, PLAIN when terminfo gives TERM fewer than 8 colours
+   (vt100), BASIC otherwise */
 uraScheme ura_scheme_for_stream(FILE* f);
 
 /* true when the NO_COLOR convention (https://no-color.org) asks for no colour */

@@ -1,8 +1,10 @@
 /* colors.c: the colour roles of base.h: band of a probability, one style table per scheme,
  * the legend texts, the choice of scheme for a stream, and ANSI SGR sequences */
+#include <curses.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <term.h>
 #include <unistd.h>
 
 #include "base.h"
@@ -143,6 +145,25 @@ int ura_no_color(void) {
   return v && *v;
 }
 
+/* the colours terminfo gives terminal type term (-1: none; 8 when terminfo does not know the
+   type, which keeps the 8 ANSI colours); the terminal in use (readline's, the viewer's) stays
+   current, and the answer is kept per type */
+static int term_colors(const char* term) {
+  static char last[128];
+  static int ncol = -2; /* -2: not asked yet */
+  if (ncol != -2 && !strcmp(last, term)) return ncol;
+  TERMINAL* keep = cur_term;
+  int err = 0;
+  ncol = 8;
+  if (setupterm(term, -1, &err) == OK) {
+    ncol = tigetnum("colors");
+    del_curterm(cur_term);
+  }
+  set_curterm(keep);
+  snprintf(last, sizeof last, "%s", term);
+  return ncol;
+}
+
 uraScheme ura_scheme_for_stream(FILE* f) {
   /* colour only for a terminal, and only when NO_COLOR is unset */
   if (!ura_tty(f) || ura_no_color()) return uraSCHEME_PLAIN;
@@ -150,6 +171,8 @@ uraScheme ura_scheme_for_stream(FILE* f) {
   const char* ct = getenv("COLORTERM");
   if (term && !strcmp(term, "dumb")) return uraSCHEME_PLAIN;
   if ((ct && *ct) || (term && strstr(term, "256"))) return uraSCHEME_XTERM;
+  /* a terminal type terminfo knows without colours (vt100, vt220): plain, as the man page says */
+  if (term && *term && strlen(term) < 128 && term_colors(term) < 8) return uraSCHEME_PLAIN;
   return uraSCHEME_BASIC;
 }
 

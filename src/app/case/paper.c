@@ -15,7 +15,8 @@ static const double table2[6][5] = {
 };
 
 const char* ura_paper_descent_column(const char* casename) {
-  return !strcmp(casename, "C") ? "C" : "B";
+  /* none: the deployment branch without parachute of a drone that has no case C (risk) */
+  return !strcmp(casename, "C") || !strcmp(casename, "none") ? "C" : "B";
 }
 
 int ura_paper_descent(uraCtx* c, const char* casename, double wind, double* speed, double* angle) {

@@ -205,10 +205,13 @@ const char* ura_risk_bag(int which);
 int ura_risk_fixed_bags(uraCtx* c, const urDeploy* dep, const int* bag, char* text, size_t n);
 /* a branch's name: "none", "chute", "chute+bag_bottom", ... */
 void ura_risk_branch_name(int mask, const urDeploy* dep, const int* bag, char* buf, size_t n);
-/* the state of a branch: base with the parachute (area_chute 0 and case C's Table 2 column
-   without it) and each carried airbag as the mask says */
+/* the name of the branch without devices as a case: C where the live model has a preset C
+   (the RA3's case without parachute and airbag), else none (another drone has no case C) */
+const char* ura_risk_none_name(uraCtx* c);
+/* the state of a branch: base with the parachute (area_chute 0, case name none, ura_risk_none_name,
+   whose Table 2 column is case C's, without it) and each carried airbag as the mask says */
 void ura_risk_branch_state(const uraState* base, int mask, const urDeploy* dep, const int* bag,
-                           uraState* ns);
+                           const char* none, uraState* ns);
 /* a model parameter value in a state's overrides (set by the user when user) */
 void ura_risk_override(uraState* ns, const char* name, double v, int user);
 /* Q of the grid of state ns (it becomes the live state; the caller restores its own) */
@@ -247,6 +250,7 @@ int ura_risk_igrc(const uraState* st, double ca, double* raw1, int* igrc, int* t
 typedef struct {
   double dim, speed, density;
   int dim_set, speed_set;
+  int dim_ra3; /* dim is the RA3's (width and length at their defaults) for another drone */
   int col, row, igrc;
   int nclamp;
 } uraSora25;

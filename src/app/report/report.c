@@ -486,10 +486,11 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
       "Ground-crash rate lambda_system = %g per flight hour and P_shelter = %g are inputs of eq. "
       "(1.1), not results; the target is %g fatalities per flight hour (SORA 2.5 TLOS).",
       r->lambda, r->p_shelter, r->tlos);
+  int ra3_c = !strcmp(ura_risk_none_name(c), "C"); /* the model's case C is the unmitigated one */
   elf(ul, "li",
       "Deployment: the parachute deploys with probability %g above %g m, each airbag with %g; "
-      "without the parachute no airbag is credited (the drone falls as case C).",
-      r->p_chute, r->h_chute_min, r->p_bag);
+      "without the parachute no airbag is credited (the drone falls %s).",
+      r->p_chute, r->h_chute_min, r->p_bag, ra3_c ? "as case C" : "without them: branch none");
   elf(ul, "li",
       "SORA 2.5 Table 2 column: characteristic dimension %s, maximum speed %s; density bands have "
       "strict upper edges (5, 50, 500, 5 000 go one band up; 50 000 is taken as '> 50 000').",
@@ -509,7 +510,8 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
       m2 == uraM2_TABLE_B8 ? "Annex B Table B.8's critical area of the column (warned: double "
                              "counting with Step #2)"
       : m2 == uraM2_DESIGN ? m2_text
-                           : "the same drone without parachute and airbag (case C)");
+      : ra3_c              ? "the same drone without parachute and airbag (case C)"
+                           : "the same drone without parachute and airbag (branch none)");
   el(ul, "li",
      "What the simulation cannot show: that the devices deploy (activation tests, reliability "
      "evidence), automatic activation (required for high), that a failure of the mitigation does "
@@ -683,8 +685,9 @@ int ura_cmd_report(uraCtx* c, int argc, char** argv) {
   }
   xmlFree(mem);
   if (rc == 0 && c->msg && !c->mute) {
-    fprintf(c->msg, "report: %s written (%d results, %d figures' grids, %d warnings)\n", argv[1],
-            r->nt, r->ng, r->nwarn);
+    fprintf(c->msg, "report: %s written (%d result%s, %d grid%s drawn, %d warning%s)\n", argv[1],
+            r->nt, r->nt == 1 ? "" : "s", r->ng, r->ng == 1 ? "" : "s", r->nwarn,
+            r->nwarn == 1 ? "" : "s");
   }
   return rc;
 }

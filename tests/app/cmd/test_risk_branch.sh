@@ -48,6 +48,19 @@ run -c "$LOAD; model load $TMP/bag_bottom.urm; set area_chute 1; set p_bag 0.5; 
 check device_bag cond '[ "$RC" -eq 0 ] && grep -q "^chute+bag_bottom " "$TMP/out" &&
   grep -q "(each of 1 airbag)" "$TMP/out" && ! grep -q "not a device" "$TMP/out"'
 
+# the name of the branch without devices: none, in sora's rows, risk's, the notes and the grid
+run -c "$LOAD; model load $TMP/bag_bottom.urm; set area_chute 1; set p_bag 0.5; set format csv;
+  sora; risk; grid show"
+check none_sora_rows cond '[ "$RC" -eq 0 ] && grep -q "^none,q," "$TMP/out" &&
+  grep -q "^none,annex_f," "$TMP/out" && ! grep -q "^C," "$TMP/out"'
+check none_notes cond 'grep -q "no parachute, no airbag: branch none" "$TMP/out" &&
+  grep -q "the drone falls without them at" "$TMP/out" && ! grep -q "case C" "$TMP/out"'
+check none_last_grid grep -q "^case none, wind 0 m/s" "$TMP/out"
+# the RA3 keeps its case C
+run -c "set step 0.3; case B; set p_chute 0.9; set format csv; sora; grid show"
+check ra3_case_c cond '[ "$RC" -eq 0 ] && grep -q "^C,q," "$TMP/out" &&
+  grep -q "no parachute, no airbag: case C" "$TMP/out" && grep -q "^case C, wind 0 m/s" "$TMP/out"'
+
 # the RA3: its bags are devices
 run -c "set step 0.3; case A2; set bag_model analytic; set p_bag 0.9; risk"
 check ra3_no_note cond '[ "$RC" -eq 0 ] && grep -q "^chute+bag_bottom+bag_front " "$TMP/out" &&

@@ -155,4 +155,18 @@ check b8_beyond cond '[ "$(tcol "$TMP/out" quantity, q "" baseline)" = 650 ] &&
   [ "$(tcol "$TMP/out" quantity, q "" factor | cut -d. -f1)" -ge 1000 ] && grep -q "^# a factor of 1000 or more" "$TMP/out" &&
   [ "$(tcol "$TMP/out" quantity, q "" grc_credit)" = -2 ]'
 
+# another drone whose presets do not set width and length: the Table 2 column comes from the
+# RA3's 1.3 m, which a warning says (and the report lists); set, the warning goes; the RA3 has none
+QUAD="model drop airbags; model drop ra3; model load $(pwd)/sessions/quad/quad.urm; case Q; set step 0.3"
+U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
+run -c "$QUAD; sora"
+check dim_ra3_warned cond '[ "$RC" -eq 0 ] &&
+  grep -q "^# warning: the characteristic dimension is not the drone.s: width and length are the workbench.s defaults, the RA3.s (1.3 m)" "$TMP/out"'
+run -c "$QUAD; set ua_dimension 0.35; sora; set ua_dimension auto; set width 0.35; set length 0.35; sora"
+check dim_set_not_warned cond '[ "$RC" -eq 0 ] && ! grep -q "characteristic dimension is not" "$TMP/out"'
+run -c "set step 0.3; case C; sora"
+check dim_ra3_not_warned cond '[ "$RC" -eq 0 ] && ! grep -q "characteristic dimension is not" "$TMP/out"'
+(cd "$TMP" && "$U" -c "$QUAD; sora; report q.html" >/dev/null 2>&1)
+check dim_ra3_in_report grep -q "characteristic dimension is not the drone" "$TMP/q.html"
+
 finish

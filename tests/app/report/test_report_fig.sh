@@ -2,7 +2,8 @@
 # each cell as its own filled rectangle, not as one bitmap that a browser or PDF reader scales
 # smoothly (which blended neighbouring cells into colours of no band, so that a dossier showed a
 # blurred footprint); the report's colour bar is ticked at the band edges (5, 30, 90 %) as plot
-# grid's is. Case C on a coarse 0.2 m grid: a second or two.
+# grid's is; the line saying what was written counts in words. Case C on a coarse 0.2 m grid:
+# a second or two.
 . tests/lib.sh
 
 if ! command -v gnuplot >/dev/null 2>&1; then
@@ -14,6 +15,8 @@ U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
   >"$TMP/out" 2>"$TMP/err")
 RC=$?
 check status cond '[ "$RC" -eq 0 ] && [ -s "$TMP/r.html" ] && [ -s "$TMP/g.svg" ]'
+# what was written, in words (it said "1 figures' grids")
+check written_line grep -q "^report: r.html written (1 result, 1 grid drawn, 1 warning)$" "$TMP/err"
 
 # the report's first figure is the grid's heat map: decode it
 grep -o 'data:image/svg+xml;base64,[A-Za-z0-9+/=]*' "$TMP/r.html" | head -1 |

@@ -37,6 +37,7 @@ struct uraMc {
   char casename[8];
   double seed;
   char note[5][1000]; /* inputs, method, surface check, timing, surface tolerance */
+  char none[8];       /* the name of the branch without devices (ura_risk_none_name) */
   double surf_err;    /* the surface check's largest relative error (NAN: not measured) */
   char* settings;     /* the session text it ran under (sora mc checks it) */
 };
@@ -285,7 +286,7 @@ static void node_state(const struct uraMc* m, const surface* s, const uraState* 
     apply_input(tmp, m->name[a->col], a->node[idx % a->n]);
     idx /= a->n;
   }
-  ura_risk_branch_state(tmp, mask, &m->dep, m->bag, ns);
+  ura_risk_branch_state(tmp, mask, &m->dep, m->bag, m->none, ns);
 }
 
 static double surface_at(const struct uraMc* m, const surface* s, int mask, int i) {
@@ -492,7 +493,7 @@ static int by_surface(uraCtx* c, struct uraMc* m, const uraState* base, uraState
   for (int i = 0; i < nchk && rc == 0; i++) {
     progress(tty, "surface check", i + 1, nchk);
     sample_state(m, base, i, tmp);
-    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
+    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, m->none, ns);
     rc = mc_grid(c, ns, &qchk[i], NULL);
     if (rc) mc_fail_sample(c, m, i);
   }
@@ -632,7 +633,7 @@ static int by_grids(uraCtx* c, struct uraMc* m, const uraState* base, uraState* 
         m->q_c[i] = m->q[i];
         break;
       }
-      ura_risk_branch_state(tmp, mask, &m->dep, m->bag, ns);
+      ura_risk_branch_state(tmp, mask, &m->dep, m->bag, m->none, ns);
       int mir;
       rc = mc_grid(c, ns, b ? &m->q_c[i] : &m->q[i], &mir);
       if (rc) mc_fail_sample(c, m, i);
@@ -763,6 +764,7 @@ int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv) {
   m->seed = st->risk.seed;
   snprintf(m->casename, sizeof m->casename, "%s", st->casename);
   int rc = ura_risk_devices(c, st, &m->dep, m->bag);
+  snprintf(m->none, sizeof m->none, "%s", ura_risk_none_name(c));
   if (rc == 0) rc = draw(c, m, st, ns);
 
   /* Q of each sample, then the Annex F areas at each sample's impact conditions */
@@ -775,12 +777,12 @@ int ura_cmd_montecarlo(uraCtx* c, int argc, char** argv) {
   for (int i = 0; i < m->n && rc == 0; i++) {
     double sp, an;
     sample_state(m, st, i, tmp);
-    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, ns);
+    ura_risk_branch_state(tmp, m->mask[i], &m->dep, m->bag, m->none, ns);
     rc = ura_risk_annexf(c, ns, &m->ca[i], &sp, &an);
     if (rc == 0 && m->mask[i] == 0)
       m->ca_c[i] = m->ca[i];
     else if (rc == 0) {
-      ura_risk_branch_state(tmp, 0, &m->dep, m->bag, ns);
+      ura_risk_branch_state(tmp, 0, &m->dep, m->bag, m->none, ns);
       rc = ura_risk_annexf(c, ns, &m->ca_c[i], &sp, &an);
     }
   }

@@ -39,8 +39,9 @@ static int run_branches(uraCtx* c, const char* who, branches* b) {
   uraState* ns = orig + 1;
   *orig = c->st;
   int rc = 0;
+  const char* none = ura_risk_none_name(c);
   for (int i = 0; i < b->nbr && rc == 0; i++) {
-    ura_risk_branch_state(orig, b->br[i].mask, &b->dep, b->bag, ns);
+    ura_risk_branch_state(orig, b->br[i].mask, &b->dep, b->bag, none, ns);
     rc = ura_risk_grid(c, ns, who, 0, &b->q[i]);
     if (rc == 0) {
       b->mixed += b->br[i].weight * b->q[i];
@@ -87,9 +88,11 @@ static void deploy_notes(uraCtx* c, uraTable* t, const branches* b) {
                  c->st.descent.altitude, c->st.descent.altitude >= r->h_chute_min ? ">=" : "<",
                  r->h_chute_min,
                  c->st.descent.altitude < r->h_chute_min ? ": the parachute cannot help" : "");
+  const char* none = ura_risk_none_name(c);
   ura_table_note(t,
-                 "branch none: no parachute, and no airbag credited (the drone falls as case "
-                 "C at %.3f m/s, %.2f deg); with the parachute %.3f m/s, %.2f deg",
+                 "branch none: no parachute, and no airbag credited (the drone falls %s%s at "
+                 "%.3f m/s, %.2f deg); with the parachute %.3f m/s, %.2f deg",
+                 strcmp(none, "C") ? "without them" : "as case ", strcmp(none, "C") ? "" : none,
                  b->speed[0], b->angle[0], b->speed[1], b->angle[1]);
   if (nfixed) ura_table_note(t, "%s", fixed);
 }
@@ -187,7 +190,7 @@ static int unmitigated_speed(uraCtx* c, double* speed) {
   if (!ns) return ura_fail(c, "sora: out of memory");
   int rc = ura_risk_devices(c, &c->st, &dep, bag);
   if (rc == 0) {
-    ura_risk_branch_state(&c->st, 0, &dep, bag, ns);
+    ura_risk_branch_state(&c->st, 0, &dep, bag, ura_risk_none_name(c), ns);
     rc = ura_risk_annexf(c, ns, &ca, speed, &angle);
   }
   free(ns);
@@ -330,14 +333,16 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
                  "0.65, CoR(angle), 290 J, obstacle factor %s; casex "
                  "CriticalAreaModels.critical_area)",
                  c->st.descent.mass, c->st.para.width, r->annexf_obstacles ? "on" : "off");
+  const char* none = ura_risk_none_name(c);
   ura_table_note(t,
-                 "reduction: the unmitigated drone's CA (no parachute, no airbag: case C) over "
-                 "the row's, per model; each factor 10 lowers raw by 1");
+                 "reduction: the unmitigated drone's CA (no parachute, no airbag: %s %s) over "
+                 "the row's, per model; each factor 10 lowers raw by 1",
+                 strcmp(none, "C") ? "branch" : "case", none);
   if (argc == 1) deploy_notes(c, t, &b);
   ura_table_note(t, "%s", note);
   soraFlags fl = {"", "", ""};
-  sora_row(c, t, "C", "q", &fig[0], &fl, &s25);
-  sora_row(c, t, "C", "annex_f", &fig[1], &fl, &s25);
+  sora_row(c, t, none, "q", &fig[0], &fl, &s25);
+  sora_row(c, t, none, "annex_f", &fig[1], &fl, &s25);
   if (mitigated) {
     sora_row(c, t, c->st.casename, "q", &fig[2], &fl, &s25);
     sora_row(c, t, c->st.casename, "annex_f", &fig[3], &fl, &s25);
@@ -357,14 +362,17 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
   if ((mitigated || ds) &&
       ura_sora25_m2_table(c, &s25, fig, c->st.casename, argc == 2, ds ? named : NULL))
     return -1;
-  const char* lab[2] = {c->st.casename, "C"};
+  const char* lab[2] = {c->st.casename, none};
   double q[2] = {fig[2].ca, fig[0].ca}, lo[2] = {fig[2].lo, fig[0].lo},
          hi[2] = {fig[2].hi, fig[0].hi};
   if (!mitigated) q[0] = q[1], lo[0] = lo[1], hi[0] = hi[1];
-  ura_eq11_table(c, mitigated ? 2 : 1, lab, q, lo, hi,
-                 argc == 2 ? "Q: the last montecarlo's mean with its 95 % interval of the mean "
-                             "(the design's drawn deployment; C without any device)"
-                           : "Q: the deterministic grids (the design's deployment mixture; C "
-                             "without any device); lo95 = hi95");
+  char qnote[300];
+  snprintf(qnote, sizeof qnote,
+           argc == 2 ? "Q: the last montecarlo's mean with its 95 %% interval of the mean (the "
+                       "design's drawn deployment; %s without any device)"
+                     : "Q: the deterministic grids (the design's deployment mixture; %s without "
+                       "any device); lo95 = hi95",
+           none);
+  ura_eq11_table(c, mitigated ? 2 : 1, lab, q, lo, hi, qnote);
   return 0;
 }

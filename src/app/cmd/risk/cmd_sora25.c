@@ -8,6 +8,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../cmd.h"
@@ -20,9 +21,25 @@ const char* ura_sora25_col_name(int col) {
   return col >= 0 && col < urSORA25_NCOL ? col_names[col] : "outside Table 2";
 }
 
+/* the characteristic dimension is the RA3's for another drone: width and length at the
+   workbench's defaults (the RA3's; no preset or set changed them) while the built-in RA3 part is
+   not loaded */
+static int dim_of_ra3(const uraCtx* c) {
+  for (int i = 0; i < c->npart; i++) {
+    if (!strcmp(c->part[i].name, "ra3") && !strcmp(c->part[i].origin, "built-in")) return 0;
+  }
+  uraState* d = malloc(sizeof *d);
+  if (!d) return 0;
+  ura_state_defaults(d);
+  int same = c->st.para.width == d->para.width && c->st.para.length == d->para.length;
+  free(d);
+  return same;
+}
+
 void ura_sora25_inputs(uraCtx* c, double unmit_speed, uraSora25* s) {
   const uraRiskSet* r = &c->st.risk;
   s->dim_set = r->ua_dim_set;
+  s->dim_ra3 = !r->ua_dim_set && dim_of_ra3(c);
   s->dim = r->ua_dim_set ? r->ua_dim : fmax(c->st.para.width, c->st.para.length);
   s->speed_set = r->ua_speed_set;
   s->speed = r->ua_speed_set ? r->ua_speed : unmit_speed;
@@ -60,6 +77,14 @@ void ura_sora25_notes(uraTable* t, const uraSora25* s) {
                  s->igrc == 0  ? ": grey cell, not part of SORA (certified category)"
                  : s->igrc < 0 ? ": outside the table (Annex F appendices A and B)"
                                : "");
+  if (s->dim_ra3) {
+    ura_table_note(t,
+                   "warning: the characteristic dimension is not the drone's: width and length "
+                   "are the workbench's defaults, the RA3's (%g m), and the loaded drone's "
+                   "presets do not set them: 'set ua_dimension D' (or width and length) with the "
+                   "drone's",
+                   s->dim);
+  }
   if (!s->speed_set) {
     ura_table_note(t,
                    "maximum speed: the unmitigated impact speed stands in for the designer's "
@@ -100,8 +125,8 @@ int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], 
              "step)",
              dname);
   else
-    snprintf(base_text, sizeof base_text,
-             "the unmitigated drone (no parachute, no airbag: case C)");
+    snprintf(base_text, sizeof base_text, "the unmitigated drone (no parachute, no airbag: %s%s)",
+             strcmp(ura_risk_none_name(c), "C") ? "branch " : "case ", ura_risk_none_name(c));
   if (b8 && s->col < 0) {
     return ura_fail(c,
                     "sora: m2_baseline table_b8 needs a Table 2 column; the drone (%g m, %g m/s) "

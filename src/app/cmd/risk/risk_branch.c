@@ -78,15 +78,23 @@ void ura_risk_override(uraState* ns, const char* name, double v, int user) {
   ns->ov_user[ns->nov++] = user;
 }
 
+const char* ura_risk_none_name(uraCtx* c) {
+  const urModel* m = ura_model(c);
+  for (int i = 0; m && i < m->npreset; i++) {
+    if (!strcmp(m->preset[i].name, "C")) return "C";
+  }
+  return "none";
+}
+
 void ura_risk_branch_state(const uraState* base, int mask, const urDeploy* dep, const int* bag,
-                           uraState* ns) {
+                           const char* none, uraState* ns) {
   *ns = *base;
   if (!(mask & 1)) {
     /* no parachute: the drone falls as case C (and takes C's column of the paper's Table 2);
        a speed and angle set are the descent under the parachute, so they are derived again */
     if (dep->chute) ns->speed_set = ns->angle_set = 0;
     ns->descent.area_chute = 0;
-    snprintf(ns->casename, sizeof ns->casename, "C");
+    snprintf(ns->casename, sizeof ns->casename, "%s", none);
   }
   for (int j = 0; j < dep->nbag; j++) {
     ura_risk_override(ns, bag_names[bag[j]], (mask >> (j + 1)) & 1, 0);
