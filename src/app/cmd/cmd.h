@@ -106,8 +106,9 @@ int ura_grid_show(uraCtx* c);
 int ura_cmd_report(uraCtx* c, int argc, char** argv);
 
 int ura_cmd_save(uraCtx* c, int argc, char** argv);
-/* the commands of save session (session.c) */
+/* the commands of save session (session.c); the same as one allocated text (NULL: no memory) */
 void ura_session_write(uraCtx* c, FILE* f);
+char* ura_session_text(uraCtx* c);
 
 int ura_cmd_sweep(uraCtx* c, int argc, char** argv);
 int ura_cmd_design(uraCtx* c, int argc, char** argv); /* designs.c */

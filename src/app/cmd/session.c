@@ -57,6 +57,19 @@ void ura_session_write(uraCtx* c, FILE* f) {
   ura_dist_save(c, f);
 }
 
+char* ura_session_text(uraCtx* c) {
+  char* text = NULL;
+  size_t n = 0;
+  FILE* f = open_memstream(&text, &n);
+  if (!f) return NULL;
+  ura_session_write(c, f);
+  if (fclose(f)) {
+    free(text);
+    return NULL;
+  }
+  return text;
+}
+
 int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   if (strcmp(argv[1], "session")) {
     return ura_fail(c, "save: unknown '%s'; accepted: save session FILE", argv[1]);

@@ -523,12 +523,28 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
      "texts are in Appendix B.");
 }
 
+/* a grid's row, or a sweep over wind or face: not a sweep of another parameter, whose rows each
+   ran with a value of their own */
+static int paper_columns(const uraRepTable* t) {
+  static const char* const cols[] = {"case",    "wind",     "speed",         "angle",
+                                     "face",    "step",     "cells",         "q",
+                                     "seconds", "complete", "contact_cells", NULL};
+  for (int j = 0; j < t->ncol; j++) {
+    int k = 0;
+    while (cols[k] && strcmp(cols[k], t->names[j])) k++;
+    if (!cols[k]) return 0;
+  }
+  return 1;
+}
+
 static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
   xmlNodePtr s = section(body, "validity", "5. Model validity");
   el(s, "h3", "5.1 The paper's Table 17 beside this session's grids");
   el(s, "p",
      "Q in m^2 at face 0; the printed values of Jiang, Blom and Rattanagraikanakorn (2025); "
-     "'this session' is the last grid or sweep of that case and wind the session computed "
+     "'this session' is the last grid or sweep of that case and wind the session computed at the "
+     "paper's conditions (any step, descent and tau; nothing else set that changes a grid: no "
+     "model part or parameter, attitude, speed, angle, extents or injury setting of its own) "
      "(none: not computed here; 'make reproduce' computes all). A at 0 m/s: the caption's 0.031 "
      "is the half plane, the full-plane sum of the paper's Table 4 grid is 0.058.");
   xmlNodePtr tb = el(s, "table", NULL);
@@ -542,6 +558,7 @@ static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
     for (int i = 0; i < r->nt; i++) {
       const uraRepTable* t = &r->t[i];
       if (strcmp(t->name, "grid") && strcmp(t->name, "sweep")) continue;
+      if (!t->paper || !paper_columns(t)) continue;
       for (int row = 0; row < t->nrow; row++) {
         const char *tc = cell(t, row, "case"), *tw = cell(t, row, "wind"),
                    *tf = cell(t, row, "face"), *tq = cell(t, row, "q");

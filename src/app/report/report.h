@@ -22,6 +22,7 @@ typedef struct {
   int settings; /* index of the settings text it ran under */
   int grid;     /* index of the grid kept with it, or -1 */
   int failed;   /* the command failed after printing it */
+  int paper;    /* it ran at the paper's conditions but for case, wind, face, step (Table 17) */
 } uraRepTable;
 
 /* one kept grid with its conditions */

@@ -151,6 +151,68 @@ static int keep_grid(uraCtx* c, uraReport* r) {
   return r->ng++;
 }
 
+/* whether the live state is the paper's but for the case, wind, face, step, descent source and
+   tau: the session text after its last reset sets nothing else that changes a grid (a model
+   part, a model or injury parameter, the attitude, the speed, the extents, ...); Table 17 of the
+   report stands only such grids beside the paper's */
+static int paper_state(uraCtx* c) {
+  static const char* const ok[] = {"wind",
+                                   "face",
+                                   "step",
+                                   "descent",
+                                   "tau",
+                                   "threads",
+                                   "recall",
+                                   "mirror",
+                                   "format",
+                                   "pager",
+                                   "terminal",
+                                   "output",
+                                   "winds",
+                                   "p_chute",
+                                   "p_bag",
+                                   "h_chute_min",
+                                   "seed",
+                                   "mc_method",
+                                   "mc_mirror",
+                                   "surface_nodes",
+                                   "surface_check",
+                                   "pop_density",
+                                   "lambda_system",
+                                   "p_shelter",
+                                   "ua_dimension",
+                                   "ua_max_speed",
+                                   "m2_baseline",
+                                   "mc_quantiles",
+                                   "mc_surface_tol",
+                                   "tlos",
+                                   "igrc_compensation",
+                                   "annexf_obstacles",
+                                   NULL};
+  char* text = ura_session_text(c);
+  if (!text) return 0;
+  int paper = 1;
+  for (char* line = text; line && *line;) {
+    char* end = strchr(line, '\n');
+    if (end) *end = 0;
+    char w0[16] = "", w1[32] = "";
+    sscanf(line, "%15s %31s", w0, w1);
+    if (!strcmp(w0, "reset")) {
+      paper = 1;
+    } else if (!strcmp(w0, "set")) {
+      int k = 0;
+      while (ok[k] && strcmp(ok[k], w1)) k++;
+      if (!ok[k]) paper = 0;
+    } else if (w0[0] && w0[0] != '#' && strcmp(w0, "case") && strcmp(w0, "dist") &&
+               strcmp(w0, "design")) {
+      paper = 0; /* model drop, model load */
+    }
+    line = end ? end + 1 : NULL;
+  }
+  free(text);
+  return paper;
+}
+
 void ura_report_table(uraCtx* c, const uraTable* tab) {
   int ncol, ncell, nnote;
   char *const *names, *const *cells, *const *notes;
@@ -198,6 +260,7 @@ void ura_report_table(uraCtx* c, const uraTable* tab) {
     }
   }
   t->settings = r->nset - 1;
+  t->paper = paper_state(c);
   t->grid = -1;
   r->nt++;
 }

@@ -76,15 +76,26 @@ int ura_scale_args(uraCtx* c, int* argc, char*** argv) {
             "OUT FILE.ses\n");
     return 2;
   }
-  int work = 0;
   for (int i = 1; i < w; i++) {
     if (!strcmp(av[i], "-i")) {
       fprintf(stderr, "uasimpact: --shard runs a script, not a session; -i is not accepted\n");
       return 2;
     }
-    work = 1;
   }
-  if (!work) {
+  /* -n changes nothing in a script run (only a session reads the start-up file), so the part
+     does not record it: its merge takes the command line without it */
+  int kept = 1;
+  for (int i = 1; i < w; i++) {
+    if (!strcmp(av[i], "-c") && i + 1 < w) {
+      av[kept++] = av[i++];
+    } else if (!strcmp(av[i], "-n")) {
+      continue;
+    }
+    av[kept++] = av[i];
+  }
+  av[kept] = NULL;
+  *argc = w = kept;
+  if (w == 1) {
     fprintf(stderr,
             "uasimpact: --shard needs the script as FILE or -c COMMANDS; standard input is "
             "not accepted (merge could not replay it)\n");
@@ -130,13 +141,9 @@ static int d_end(void* ctx, urGrid* g, const long* todo, long ntodo) {
 static unsigned long long settings_hash(uraCtx* c) {
   static const char* const skip[] = {"set format ",  "set terminal ", "set output ",
                                      "set threads ", "set recall ",   NULL};
-  char* text = NULL;
-  size_t n = 0;
   unsigned long long h = uraFNV0;
-  FILE* f = open_memstream(&text, &n);
-  if (!f) return h;
-  ura_session_write(c, f);
-  fclose(f);
+  char* text = ura_session_text(c);
+  if (!text) return h;
   for (char* line = text; line && *line;) {
     char* end = strchr(line, '\n');
     size_t len = end ? (size_t)(end - line + 1) : strlen(line);

@@ -55,6 +55,21 @@ check r2_sum awk -F, '/^#/ || /^branch/ || NF != 3 { next } $1 == "mixed" { m = 
 check r2_formula cond 'near "$(col "$TMP/r2" mixed q)" \
   "$(awk -v a="$QA" -v b="$QB" -v c="$QC" "BEGIN { print 0.7 * (0.6 * a + 0.4 * b) + 0.3 * c }")" 1e-4'
 
+# a speed and angle set are the descent under the parachute: the branch without it falls as case
+# C (its own grid, QC), the branch with it keeps them (B's grid at that speed and angle); before,
+# the failed parachute fell at the set 9 m/s too, and sora saw no reduction
+run -c 'set format csv; set step 0.3; case B; set speed 9; set angle 60; grid'
+QB9=$(col "$TMP/out" B q)
+run -c 'set format csv; set step 0.3; case B; set speed 9; set angle 60; set p_chute 0.5; risk'
+check set_speed_branches cond '[ -n "$QB9" ] && [ "$QB9" != "$QC" ] &&
+  [ "$(printf "%.4f" "$(col "$TMP/out" none q)")" = "$QC" ] &&
+  [ "$(printf "%.4f" "$(col "$TMP/out" chute q)")" = "$QB9" ]'
+run -c 'set format csv; set step 0.3; case C; set speed 30; set angle 70; grid'
+QC30=$(col "$TMP/out" C q)
+run -c 'set format csv; set step 0.3; case C; set speed 30; set angle 70; risk'
+check set_speed_no_chute cond '[ -n "$QC30" ] && [ "$QC30" != "$QC" ] &&
+  [ "$(printf "%.4f" "$(col "$TMP/out" none q)")" = "$QC30" ]'
+
 # below the minimum deployment height the parachute cannot help
 run -c 'set format csv; set step 0.3; case A; set bag_model analytic; set h_chute_min 150; risk'
 check hmin cond 'grep -q "^none,1," "$TMP/out" && grep -q "the parachute cannot help" "$TMP/out" &&

@@ -66,6 +66,17 @@ check latin1 cond '[ "$RC" -eq 0 ] && grep -q "caf&#65533; au lait &#65533; in L
 run -c "set step 0.3; set along_min -0.3; grid; report $TMP/w.html"
 check warnings cond '[ "$RC" -eq 0 ] && grep -q "<li>grid: extents set: Q covers only" "$TMP/w.html" &&
   grep -q "class=\"warnbox\"" "$TMP/w.html"'
+# Table 17 stands beside the paper's values only grids at its conditions (any step and descent):
+# not B at pitch 20, not a sweep of bag_p0, not A with bag_p0 set (each was quoted before)
+run -c "case B; set step 0.3; set wind 10; set p_chute 0.9; grid; set pitch 20; grid; set pitch 0;
+  case A; set wind 0; set descent paper; grid; sweep bag_p0 1.5 atm; sweep wind 4; set bag_p0 1.2 atm;
+  sweep wind 10; report $TMP/t17.html"
+t17() { tr -d '\n' <"$TMP/t17.html" | grep -o "<tr><td>$1</td><td>$2</td><td>[^<]*</td><td>[^<]*</td>" |
+  sed 's/.*<td>//; s/<.td>$//'; }
+q() { awk -v c="$1" -v s="$2" -v k="$3" 'NF == 11 && $1 == c && $6 == s && ++n == k { print $9 }' "$TMP/out"; }
+check table17_paper_only cond '[ "$RC" -eq 0 ] && [ -n "$(q B 0.3 1)" ] && [ "$(q B 0.3 1)" != "$(q B 0.3 2)" ] &&
+  [ "$(t17 B 10)" = "$(q B 0.3 1)" ] && [ "$(t17 A 0)" = "$(q A 0.3 1)" ] && [ "$(t17 A 4)" != none ] &&
+  [ "$(t17 A 10)" = none ]'
 # nothing computed: a report that says so
 run -c "report $TMP/empty.html"
 check empty cond '[ "$RC" -eq 0 ] && grep -q "The session computed no result" "$TMP/empty.html" &&

@@ -286,6 +286,14 @@ check shard_needs_part cond '[ $rc -eq 2 ] && grep -q "go together" e'
 check shard_no_i cond '[ $rc -eq 2 ] && grep -q "not accepted" e && [ ! -e px ]'
 "$U" --shard 0/2 --part px <t.ses >o 2>e; rc=$?
 check shard_no_stdin cond '[ $rc -eq 2 ] && grep -q "standard input is not accepted" e && [ ! -e px ]'
+# -n changes nothing in a script run (only a session reads the start-up file): a shard given it
+# writes the part it writes without it, which merges (it recorded -n, which no merge took)
+cmds='set format csv; case B; set step 0.3; grid'
+"$U" -n --shard 0/1 --part pn -c "$cmds" >o 2>e; rc=$?
+"$U" --shard 0/1 --part pn0 -c "$cmds" && "$U" -c "$cmds" >on0 && mask on0 >on
+"$U" merge -c "$cmds" pn >o 2>e; rc2=$?
+check shard_n_merges cond '[ $rc -eq 0 ] && [ $rc2 -eq 0 ] && [ ! -s e ] && mask o | cmp -s - on'
+check shard_n_same_part cmp -s pn pn0
 
 # Ctrl-C stops a shard with status 130 and no part (nor a temporary file of one)
 printf 'set threads 1\nset step 0.02\ncase C\ngrid\ngrid\n' >long.ses

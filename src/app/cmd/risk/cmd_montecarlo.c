@@ -70,12 +70,8 @@ static char* settings_text(uraCtx* c) {
                                      "set m2_baseline ",
                                      "set mc_quantiles ",
                                      NULL};
-  char* s = NULL;
-  size_t n = 0;
-  FILE* f = open_memstream(&s, &n);
-  if (!f) return NULL;
-  ura_session_write(c, f);
-  fclose(f);
+  char* s = ura_session_text(c);
+  if (!s) return NULL;
   char* w = s;
   for (char* line = s; *line;) {
     char* end = strchr(line, '\n');

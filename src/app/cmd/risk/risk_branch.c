@@ -90,7 +90,9 @@ void ura_risk_branch_state(const uraState* base, int mask, const urDeploy* dep, 
                            const char* none, uraState* ns) {
   *ns = *base;
   if (!(mask & 1)) {
-    /* no parachute: the drone falls as case C (and takes C's column of the paper's Table 2) */
+    /* no parachute: the drone falls as case C (and takes C's column of the paper's Table 2);
+       a speed and angle set are the descent under the parachute, so they are derived again */
+    if (dep->chute) ns->speed_set = ns->angle_set = 0;
     ns->descent.area_chute = 0;
     snprintf(ns->casename, sizeof ns->casename, "%s", none);
   }
