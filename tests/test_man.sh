@@ -1,6 +1,7 @@
 # test_man.sh: the man pages cover the command table: every command listed by help, and every
 # keyword of its usage (plot sweep, export sweep, sweep clear, model load, ...), has an entry in
-# man/uasimpact.1; the pages format without errors; make install installs all three.
+# man/uasimpact.1, and a usage the page gives whole is help's; the pages format without errors;
+# make install installs all three.
 . tests/lib.sh
 
 run -c help
@@ -32,6 +33,19 @@ while read -r cmd args; do
   for kw in $(keywords "$args"); do
     check "man documents $cmd $kw" grep -Eq "^$cmd( [^ ]*)*( |\||\[)$kw( |\||\]|\$)" "$TMP/entries"
   done
+done <"$TMP/usages"
+
+# a usage of one form (no | outside brackets) that the man page gives whole (the name, then
+# arguments in capitals or brackets) is help's too (help said 'show [NAME]' while the page and
+# the command take 'show [NAME|PREFIX]')
+tr -s ' ' <"$TMP/entries" >"$TMP/entries1"
+one_form() { echo "$1" | awk '{ d = 0; for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1)
+  if (ch == "[") d++; if (ch == "]") d--; if (ch == "|" && d == 0) exit 1 } }'; }
+while read -r cmd args; do
+  one_form "$args" || continue
+  whole=$(grep -E "^$cmd [A-Z[]" "$TMP/entries1" | head -1)
+  [ -n "$whole" ] || continue
+  check "help's usage of $cmd is the page's" [ "$whole" = "$cmd $args" ]
 done <"$TMP/usages"
 
 # the pages format with no warning at all (groff -ww -z, on its default device and on the

@@ -13,8 +13,8 @@ const uraCmd ura_cmds[] = {
      "change a parameter of the live case (see 'show' for names, units and ranges); model "
      "parameters take an optional unit, speeds m/s, km/h or kt; set terminal takes the rest of "
      "the line (set terminal png size 1000,700)"},
-    {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME]",
-     "print the live case state with units, or one parameter; derived values say so"},
+    {"show", ura_cmd_show, 0, 1, uraC_PARAM, "show [NAME|PREFIX]",
+     "print the live case state with units, one parameter, or those whose names start with PREFIX (show bag); derived values say so"},
     {"case", ura_cmd_case, 1, 1, uraC_CASE, "case NAME",
      "load a preset of the model (the RA3's: A, B, C, A1, A2; 'model show' lists their preset lines); wind, "
      "face, step, recall and the output settings keep their values; a note names the settings "
