@@ -39,6 +39,8 @@ int ura_data_dir(char* buf, size_t n);
    data folder, its sessions/ and their subfolders; the name opened into found (n bytes); NULL
    with errno of the first attempt when none (datadir.c) */
 FILE* ura_data_open(const char* path, char* found, size_t n);
+/* the folder of path into buf (n bytes): "." for a bare name, "/" at the root (datadir.c) */
+void ura_dir_of(const char* path, char* buf, size_t n);
 /* a speed unit: m/s, km/h or kt (exactly so); 0 with the factor to m/s, or -1 (speedunit.c) */
 int ura_speed_unit(const char* unit, double* to_si);
 /* v in a unit ura_speed_unit accepts, in m/s (v * 1852 / 3600 for kt: 36 km/h is 10 m/s exactly) */

@@ -70,3 +70,13 @@ FILE* ura_data_open(const char* path, char* found, size_t n) {
   }
   return f;
 }
+
+void ura_dir_of(const char* path, char* buf, size_t n) {
+  const char* slash = strrchr(path, '/');
+  if (!slash)
+    snprintf(buf, n, ".");
+  else if (slash == path)
+    snprintf(buf, n, "/");
+  else
+    snprintf(buf, n, "%.*s", (int)(slash - path), path);
+}

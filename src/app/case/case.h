@@ -192,6 +192,10 @@ typedef struct uraCtx {
   int err_located;     /* err already starts with FILE:LINE: */
   int interactive;     /* a person is typing: errors do not stop anything */
   int depth;           /* nesting of source */
+  const char* srcdir;  /* folder of the script being run (a relative model load looks there
+                          first), or NULL at the prompt */
+  const char* savedir; /* folder of the session file being written (model load paths are
+                          written relative to it), or NULL: the paths as loaded */
   int quit;            /* set by quit */
   int dry;             /* fuzzing (tests/fuzz): commands parse their arguments but
                                       refuse to simulate, plot, open the viewer or touch files

@@ -1,10 +1,12 @@
 /* model.c: the model set (parts of model-language text), its parameters, the compiled model and
  * the settled stance, rebuilt lazily when something changes; the model command */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "case.h"
 #include "builtin.h"
@@ -480,9 +482,18 @@ static int model_load(uraCtx* c, const char* path) {
                     "neither uasimpact nor a shell expands",
                     path);
   }
-  /* the current folder first, then the installed example models (model load quad.urm) */
+  /* in a script or session file the file's own folder first (it replays from anywhere), then
+     the current folder, then the installed example models (model load quad.urm); only read */
   char found[4096];
-  FILE* f = ura_data_open(path, found, sizeof found);
+  FILE* f = NULL;
+  struct stat sb;
+  if (c->srcdir && path[0] != '/' && strcmp(c->srcdir, ".")) {
+    int w = snprintf(found, sizeof found, "%s/%s", c->srcdir, path);
+    if (w > 0 && (size_t)w < sizeof found && !ura_word_inert(found) && !stat(found, &sb) &&
+        S_ISREG(sb.st_mode))
+      f = fopen(found, "r"); /* a name save session can write back, as the one typed */
+  }
+  if (!f) f = ura_data_open(path, found, sizeof found);
   if (!f && ura_interrupted()) {
     return ura_fail(c, "model load: interrupted (Ctrl-C) while opening '%s'", path);
   }
@@ -580,6 +591,20 @@ static int model_drop(uraCtx* c, const char* name) {
   return 0;
 }
 
+/* the name a session file at c->savedir gives a model file: relative to that folder when the
+   file is in it or below, else absolute, so the session replays from any current folder (a
+   name it cannot resolve, or one the reader would not take back, stays as loaded) */
+static const char* saved_name(uraCtx* c, const char* origin, char* buf, size_t n) {
+  char dir[PATH_MAX], file[PATH_MAX];
+  if (!c->savedir || !realpath(c->savedir, dir) || !realpath(origin, file)) return origin;
+  size_t k = strlen(dir);
+  const char* name = file;
+  if (!strncmp(file, dir, k) && file[k] == '/') name = file + k + 1;
+  if (!strcmp(dir, "/")) name = file + 1;
+  if (ura_word_inert(name) || strlen(name) >= n) return origin;
+  return memcpy(buf, name, strlen(name) + 1);
+}
+
 /* the model parts of a session: the built-in parts it lacks dropped, the loaded ones loaded */
 void ura_model_write_parts(uraCtx* c, FILE* f) {
   int nb = 0;
@@ -593,8 +618,9 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
   }
   for (int i = 0; i < c->npart; i++) {
     if (strcmp(c->part[i].origin, "built-in")) {
+      char name[PATH_MAX];
       fprintf(f, "model load ");
-      ura_put_word(f, c->part[i].origin);
+      ura_put_word(f, saved_name(c, c->part[i].origin, name, sizeof name));
       fprintf(f, "   # part %s\n", c->part[i].name);
     }
   }

@@ -3,7 +3,8 @@
  * (membrane or analytic), the peak gauge pressure and its time, the volume lost at the smallest
  * volume, the peak fabric strain (membrane), the peak normal force on the person, and whether
  * the drone reached the person through the bag (bottoming: a part of the bag's carrier body
- * touched the person). The values come from the bag's sensor (type=airbag) in the impact's
+ * touched the person). A bag that never pressed on the person (no force) gets three: "no
+ * contact with the person" in place of force and bottoming, which it cannot have. The values come from the bag's sensor (type=airbag) in the impact's
  * histories and from the impact's contact records, as 'history' and 'contacts' print them. */
 #include <math.h>
 #include <stdio.h>
@@ -30,6 +31,16 @@ static int through_bag(const urImpactSetup* s, const urContactRec* rec, int cb) 
     if (best < 0 || rec[k].fmax > rec[best].fmax) best = k;
   }
   return best;
+}
+
+/* the volume lost, L and % of v0, as a change: "-1.2 L (-3.4 %)", or "0.0 L (0.0 %)" when it
+   rounds to nothing (never a negative zero) */
+static void volume_text(double v0, double vmin, char* buf, size_t n) {
+  double dl = 1e3 * (v0 - vmin), pct = v0 > 0 ? 100 * (v0 - vmin) / v0 : 0;
+  if (dl < 0.05 && pct < 0.05)
+    snprintf(buf, n, "0.0 L (0.0 %%)");
+  else
+    snprintf(buf, n, "-%.1f L (-%.1f %%)", fabs(dl), fabs(pct));
 }
 
 int ura_bag_summary(uraCtx* c, char (*lines)[160], int max) {
@@ -67,12 +78,17 @@ int ura_bag_summary(uraCtx* c, char (*lines)[160], int max) {
     double st = h[(size_t)is_ * stride + 1 + a + 3], fk = h[(size_t)iff * stride + 1 + a + 2];
     snprintf(lines[n++], 160, "%s (%s): peak %.1f kPa gauge at %.1f ms", b->name,
              mem ? "membrane" : "analytic", 1e-3 * (pk - patm), 1e3 * h[(size_t)ip * stride]);
+    char vol[64];
+    volume_text(v0, vmin, vol, sizeof vol);
     if (mem) {
-      snprintf(lines[n++], 160, "  volume -%.1f L (-%.1f %%), peak fabric strain %.1f %%",
-               1e3 * (v0 - vmin), v0 > 0 ? 100 * (v0 - vmin) / v0 : 0, 100 * st);
+      snprintf(lines[n++], 160, "  volume %s, peak fabric strain %.1f %%", vol, 100 * st);
     } else {
-      snprintf(lines[n++], 160, "  volume -%.1f L (-%.1f %%)", 1e3 * (v0 - vmin),
-               v0 > 0 ? 100 * (v0 - vmin) / v0 : 0);
+      snprintf(lines[n++], 160, "  volume %s", vol);
+    }
+    /* a bag that never pressed on the person: no force, and nothing to bottom through */
+    if (!(fk > 0)) {
+      snprintf(lines[n++], 160, "  no contact with the person");
+      continue;
     }
     snprintf(lines[n++], 160, "  peak force on the person %.3g kN at %.1f ms", 1e-3 * fk,
              1e3 * h[(size_t)iff * stride]);

@@ -211,9 +211,15 @@ int ura_run_file(uraCtx* c, const char* path) {
     return ura_fail(c, "cannot run '%s': it is a directory; accepted: a script file", path);
   }
   ura_input_seen(c, f, path); /* a shard's part may not replace it */
+  /* its folder, where the relative names of the models it loads are looked for first */
+  char dir[4096];
+  ura_dir_of(path, dir, sizeof dir);
+  const char* outer = c->srcdir;
+  c->srcdir = dir;
   c->depth++;
   int rc = ura_run_stream(c, f, path);
   c->depth--;
+  c->srcdir = outer;
   fclose(f);
   return rc;
 }

@@ -76,8 +76,14 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   }
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "save session")) return -1;
+  /* the model files named relative to the session's folder (or absolute): it replays from
+     any current folder */
+  char dir[4096];
+  ura_dir_of(argv[2], dir, sizeof dir);
+  c->savedir = dir;
   ura_designs_write(c, a.f, ura_session_write); /* each saved design, then the live state */
   ura_session_write(c, a.f);
+  c->savedir = NULL;
   return ura_atomic_close(c, &a, 1, "save session");
 }
 

@@ -3,7 +3,10 @@
 # backslashes and ! are written in single quotes (double ones only around a single quote with
 # nothing a shell expands), a name that cannot be written so is refused when loaded (a newline,
 # a single quote with $), the saved file replays to the same state, and a session saved in the
-# old form (double quotes around $(...)) is still read without running anything (issue 30, item 3)
+# old form (double quotes around $(...)) is still read without running anything (issue 30, item 3);
+# a session replays from any current folder: a relative model path in a script is looked for in
+# the script's folder first, then the current one, and save session writes the paths relative to
+# the session's folder (absolute outside it); resolving writes nothing and runs nothing
 . tests/lib.sh
 
 U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
@@ -67,4 +70,36 @@ printf 'part extra8\nparam extra_x8 8\n' >"$D/$nl"
 (cd "$D" && "$U" -c "model load \"$nl\"") >"$TMP/out" 2>"$TMP/err"
 RC=$?
 check newline_refused cond '[ "$RC" -eq 1 ] && has "$TMP/err" "model load: cannot use .n.x0ao.urm.: the name holds a control character"'
+
+# ---- where a session finds its models ----
+E="$TMP/e"
+F="$TMP/f"
+mkdir "$E" "$F"
+printf 'part extraq\nparam extra_q 1\n' >"$E/q.urm"
+(cd "$E" && "$U" -c "model load q.urm; set extra_q 4; save session s.ses; save session ../p.ses;
+  save session $F/o.ses") >"$TMP/out" 2>"$TMP/err"
+RC=$?
+EP=$(cd "$E" && pwd -P)
+check saved_paths cond '[ "$RC" -eq 0 ] && grep -qx "model load '"'"'q.urm'"'"'   # part extraq" "$E/s.ses" &&
+  grep -qx "model load '"'"'e/q.urm'"'"'   # part extraq" "$TMP/p.ses" &&
+  grep -qx "model load '"'"'$EP/q.urm'"'"'   # part extraq" "$F/o.ses"'
+# replayed from another folder (the form of the files before, too: a bare name beside them)
+(cd "$F" && "$U" "$E/s.ses" -c 'show extra_q' && "$U" ../p.ses -c 'show extra_q' &&
+  "$U" o.ses -c 'show extra_q' && cd / && "$U" -c "source $E/s.ses; show extra_q") \
+  >"$TMP/out" 2>"$TMP/err"
+RC=$?
+check replays_elsewhere cond '[ "$RC" -eq 0 ] && [ "$(grep -c "^extra_q  *4$" "$TMP/out")" -eq 4 ]'
+# the script's folder before the current one: its own model, not a namesake where it is run
+printf 'part extraq\nparam extra_q 2\nparam extra_other 1\n' >"$F/q.urm"
+(cd "$F" && "$U" "$E/s.ses" -c 'model parts') >"$TMP/out" 2>"$TMP/err"
+check own_folder_first cond 'has "$TMP/out" "^extraq  *$E/q.urm$"'
+(cd "$F" && "$U" -c 'model load q.urm; show extra_q') >"$TMP/out" 2>"$TMP/err"
+check prompt_current_folder cond 'has "$TMP/out" "^extra_q  *2$"'
+# a folder whose name a shell would expand: found, and nothing run or written beside it
+G="$TMP/g\$(touch pwned5)"
+mkdir "$G"
+cp "$E/s.ses" "$E/q.urm" "$G/"
+(cd "$F" && "$U" "$G/s.ses" -c 'show extra_q') >"$TMP/out" 2>"$TMP/err"
+check odd_folder cond 'has "$TMP/out" "^extra_q  *4$" && [ ! -e "$F/pwned5" ] && [ ! -e "$TMP/pwned5" ] &&
+  [ "$(ls "$G" | wc -l)" -eq 2 ]'
 finish

@@ -126,11 +126,16 @@ int ura_cmd_risk(uraCtx* c, int argc, char** argv) {
   ura_table_cell(t, "%.6g", wsum);
   ura_table_cell(t, "%.6f", b.mixed);
   ura_table_print(c, t);
-  const char* lab[2] = {c->st.casename, "none"};
+  /* the unmitigated row named as sora names it: C for a model with case C, else none */
+  const char* none = ura_risk_none_name(c);
+  const char* lab[2] = {c->st.casename, none};
   double q[2] = {b.mixed, b.q_none};
-  ura_eq11_table(c, b.dep.chute ? 2 : 1, lab, q, q, q,
-                 "Q: the mixed row (and branch none, the unmitigated drone); deterministic "
-                 "(lo95 = hi95: 'sora mc' after montecarlo gives intervals)");
+  char qnote[200];
+  snprintf(qnote, sizeof qnote,
+           "Q: the mixed row (and %s %s, the unmitigated drone); deterministic "
+           "(lo95 = hi95: 'sora mc' after montecarlo gives intervals)",
+           strcmp(none, "C") ? "branch" : "case", none);
+  ura_eq11_table(c, b.dep.chute ? 2 : 1, lab, q, q, q, qnote);
   return 0;
 }
 
