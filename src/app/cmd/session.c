@@ -22,7 +22,12 @@ void ura_session_write(uraCtx* c, FILE* f) {
   fprintf(f, "# uasimpact session: replay with 'uasimpact FILE' or 'source FILE'\n");
   fprintf(f, "reset\n");
   ura_model_write_parts(c, f);
-  fprintf(f, "case %s\n", c->st.casename);
+  /* a case the live model has no preset of (its parts replaced: model drop, model load) is not
+     replayed: the settings below are then written against the defaults */
+  if (ura_preset_find(c, c->st.casename))
+    fprintf(f, "case %s\n", c->st.casename);
+  else
+    fprintf(f, "# case %s: not a case of the loaded model, so not replayed\n", c->st.casename);
   for (const uraParam* p = ura_params; p->name; p++) {
     if (p->kind == uraP_CASE || !strcmp(p->name, "threads") || !strcmp(p->name, "output")) {
       continue;
