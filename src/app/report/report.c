@@ -466,12 +466,13 @@ static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
     int mq = findrow(t, "check", "mesh", "what", "q");
     char mesh[160] = "";
     if (mq >= 0) {
-      snprintf(mesh, sizeof mesh, "; doubling the membrane bag's mesh changes Q by %s (relative)",
+      snprintf(mesh, sizeof mesh, "; doubling the membrane bag's mesh changes Q by %s",
                cell(t, mq, "rel_change") ? cell(t, mq, "rel_change") : "?");
     }
     elf(ul, "li",
-        "Convergence: halving the grid step changes Q by %s (relative); halving the time step "
-        "changes P at the centre by %s (relative)%s.",
+        "Convergence (changes as fractions of the finer result): halving the grid step changes "
+        "Q by %s; halving the time step changes P at the centre by %s%s. These discretisation "
+        "changes are not in the intervals above, which are the sampling's alone.",
         q >= 0 ? cell(t, q, "rel_change") : "?", d >= 0 ? cell(t, d, "rel_change") : "?", mesh);
   } else {
     el(ul, "li", "Convergence: not run in this session (converge).");
