@@ -434,11 +434,12 @@ static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
       snprintf(formula, sizeof formula, "%s", f ? f : "?");
       char* cut = strstr(formula, ", per density band");
       if (cut) *cut = 0;
+      const char* qb = note_from(q, "Q: ", NULL);
       elf(ul, "li",
           "Risk per flight hour, eq. (1.1) of the paper, %s (lambda_system and P_shelter are "
-          "inputs, not results), against the target %s per flight hour: %s. The target is met up to "
-          "%s.",
-          formula, cell(q, 0, "tlos"), buf, limits);
+          "inputs, not results; %s), against the target %s per flight hour: %s. The target is "
+          "met up to %s.",
+          formula, qb ? qb : "Q: ?", cell(q, 0, "tlos"), buf, limits);
     }
   }
   int mc = last_table(r, "montecarlo", "n", "mean");
@@ -577,13 +578,22 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
       "(1.1), not results; the target is %g fatalities per flight hour (SORA 2.5 TLOS).",
       r->lambda, r->p_shelter, r->tlos);
   int ra3_c = !strcmp(ura_risk_none_name(c), "C"); /* the model's case C is the unmitigated one */
-  elf(ul, "li",
-      "Deployment: the parachute deploys with probability %g above %g m, each airbag with %g; "
-      "without the parachute no airbag is credited (the drone falls %s).",
-      r->p_chute, r->h_chute_min, r->p_bag, ra3_c ? "as case C" : "without them: branch none");
+  urDeploy dep;
+  int bag[urMAXBAGS];
+  if (ura_risk_devices(c, &c->st, &dep, bag)) dep.chute = 0;
+  if (dep.chute)
+    elf(ul, "li",
+        "Deployment: the parachute deploys with probability %g above %g m, each airbag with %g; "
+        "without the parachute no airbag is credited (the drone falls %s).",
+        r->p_chute, r->h_chute_min, r->p_bag, ra3_c ? "as case C" : "without them: branch none");
+  else
+    el(ul, "li",
+       "Deployment: none; the drone carries no parachute (area_chute 0), so p_chute and p_bag "
+       "do not apply (an airbag fitted in every branch is part of the drone).");
   elf(ul, "li",
       "SORA 2.5 Table 2 column: characteristic dimension %s, maximum speed %s; density bands have "
-      "strict upper edges (5, 50, 500, 5 000 go one band up; 50 000 is taken as '> 50 000').",
+      "strict upper edges (5, 50, 500, 5 000 go one band up; 50 000 is taken as '> 50 000'); "
+      "a UA of at most 250 g and 25 m/s has iGRC 1 outside assemblies of people (p. 24).",
       r->ua_dim_set ? "as set (ua_dimension)" : "the larger of width and length",
       r->ua_speed_set ? "as set (ua_max_speed)"
                       : "the unmitigated impact speed standing in for the designer's maximum "
@@ -600,6 +610,7 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
       m2 == uraM2_TABLE_B8 ? "Annex B Table B.8's critical area of the column (warned: double "
                              "counting with Step #2)"
       : m2 == uraM2_DESIGN ? m2_text
+      : !dep.chute         ? "none (nothing deployable to compare with)"
       : ra3_c              ? "the same drone without parachute and airbag (case C)"
                            : "the same drone without parachute and airbag (branch none)");
   el(ul, "li",

@@ -38,6 +38,7 @@ EC=$(awk -v q="$QC" 'BEGIN { printf "%.4g", 1e-3 * 5000e-6 * 0.7 * q }')
 LA=$(awk -v q="$QA" 'BEGIN { printf "%.4g", 1e-6 / (1e-3 * 1e-6 * 0.7 * q) }')
 echo "eq. (1.1) at 5000: A $EA, C $EC /h; A meets up to $LA ppl/km^2"
 check risk_formula cond 'txt "$H" | grep -qF "Risk per flight hour, eq. (1.1) of the paper, E{n_F} = lambda_system x density x (1 - P_shelter) x Q, with lambda_system 0.001 /h, P_shelter 0.3, Q in m^2"'
+check risk_q_basis cond 'txt "$H" | grep -qF "inputs, not results; Q: the deterministic grids (the design"'
 check risk_values cond 'txt "$H" | grep -qF "case A at 5000 ppl/km^2: $EA per flight hour (Q $QA m^2; meets: yes)" &&
   txt "$H" | grep -qF "case C at 5000 ppl/km^2: $EC per flight hour (Q $QC m^2; meets: no)" &&
   txt "$H" | grep -qF "The target is met up to case A $LA ppl/km^2"'
@@ -62,6 +63,8 @@ run -c "$Q; model load $TMP/top.urm; case Q; set mass 4; set step 0.3; set pop_d
 check own_question cond '[ "$RC" -eq 0 ] && txt "$TMP/q.html" | grep -qF "(4 kg; width 1.3 m, length 1.1 m: the workbench" &&
   txt "$TMP/q.html" | grep -qF "not this drone" && txt "$TMP/q.html" | grep -qF "carrying no parachute (area_chute 0) and no deployable airbag" &&
   ! txt "$TMP/q.html" | grep -qF "parachute deployment probability"'
+check own_assumptions cond 'txt "$TMP/q.html" | grep -qF "Deployment: none; the drone carries no parachute (area_chute 0)" &&
+  txt "$TMP/q.html" | grep -qF "M2 baseline: none (nothing deployable to compare with)"'
 check own_answer cond 'txt "$TMP/q.html" | grep -qF "case Q at 50 ppl/km^2: " &&
   txt "$TMP/q.html" | grep -qF "M2: no reduction factor" && txt "$TMP/q.html" | grep -qF "(warning: not the drone"'
 
