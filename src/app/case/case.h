@@ -334,6 +334,8 @@ int ura_m2_baseline(const uraRiskSet* r, const char** design);
 /* the value as text (without unit) into buf, exact (round-trips through set); a derivable
    value that is not set prints as auto */
 void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n);
+/* the same as show prints it: numbers through ura_num_show (5.14444 for 10 kt) */
+void ura_param_display(const uraCtx* c, const uraParam* p, char* buf, size_t n);
 
 /* the injury settings (core table) through set/show: index of NAME or -1; set; one show line */
 int ura_injury_find(const char* name);
@@ -492,6 +494,9 @@ void ura_recall_flush(uraCtx* c);
    ("1.1 atm", "26 kN", "0.25 m") */
 int ura_session_base(uraCtx* c, uraState* base);
 void ura_num_shortest(char* buf, size_t n, double v);
+/* v as show prints it: at most 10 significant digits when they give v but for rounding noise
+   (111457.5), else 6 (5.14444 for 10 kt) */
+void ura_num_show(char* buf, size_t n, double v);
 void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n);
 /* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
    (session_base.c) */

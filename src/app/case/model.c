@@ -654,8 +654,12 @@ static int model_params(uraCtx* c, const char* prefix) {
       ura_table_cell(t, "%s", u);
       ura_table_cell(t, "%s", who);
     } else {
-      fprintf(c->out, "%-16s %.10g%s%s  (%s)\n", m->param[i].name, m->param[i].value, *u ? " " : "",
-              u, who);
+      char val[64]; /* as show prints it; csv as before */
+      if (c->st.format == uraFMT_CSV)
+        snprintf(val, sizeof val, "%.10g", m->param[i].value);
+      else
+        ura_num_show(val, sizeof val, m->param[i].value);
+      fprintf(c->out, "%-16s %s%s%s  (%s)\n", m->param[i].name, val, *u ? " " : "", u, who);
     }
   }
   if (t && !found) ura_table_free(t);
