@@ -522,6 +522,11 @@ const char* ura_column_unit(const char* name);
    program, the command, the case and tables (the JSON array export gathered in
    c->export_meta); 0, or -1 with c->err */
 int ura_export_meta(uraCtx* c, const char* path, const char* what, json_t* tables);
+/* a file name a writer of one format takes (who writes writes, e.g. "HTML", in the extensions
+   exts, "html htm"): 0, or -1 with one line saying so when its extension names another format
+   (report x.txt; output.c) */
+int ura_name_fits(uraCtx* c, const char* who, const char* path, const char* writes,
+                  const char* exts);
 /* files written atomically (atomic.c) for a command: refused in dry mode, to /dev/null when
    muted (a shard, an MPI rank but 0); a failure recorded in c->err */
 int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);

@@ -466,6 +466,7 @@ static void write_parts(const uraCtx* c, FILE* f, int headers) {
 }
 
 static int model_save(uraCtx* c, const char* path) {
+  if (ura_name_fits(c, "model save", path, "model-language text", "urm txt")) return -1;
   uraAtomic a;
   if (ura_atomic_open(c, &a, path, "model save")) return -1;
   write_parts(c, a.f, 0);

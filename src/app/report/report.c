@@ -644,6 +644,7 @@ static void quiet(void* ctx, const char* msg, ...) {
 
 int ura_cmd_report(uraCtx* c, int argc, char** argv) {
   if (ura_dry(c, "report")) return -1;
+  if (ura_name_fits(c, "report", argv[1], "HTML", "html htm xhtml")) return -1;
   uraReport empty;
   memset(&empty, 0, sizeof empty);
   uraReport* r = c->rep ? c->rep : &empty;
