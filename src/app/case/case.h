@@ -468,6 +468,10 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv);
 /* the model parts as session commands: model drop for each built-in part missing, model load
    for each loaded one */
 void ura_model_write_parts(uraCtx* c, FILE* f);
+/* the name of a loaded model file (origin, as loaded) for a file written in folder at: relative
+   to at when the model is in it or below, else absolute; origin itself when at is NULL or a name
+   cannot be resolved (built-in) (model.c) */
+const char* ura_model_origin_at(const char* at, const char* origin, char* buf, size_t n);
 
 /* the model cache (modelcache.c): the key of the live parts with st's overrides, and equality */
 void ura_model_key(const uraCtx* c, const uraState* st, uraModelKey* k);

@@ -592,12 +592,12 @@ static int model_drop(uraCtx* c, const char* name) {
   return 0;
 }
 
-/* the name a session file at c->savedir gives a model file: relative to that folder when the
+/* the name a file written in folder at gives a model file: relative to that folder when the
    file is in it or below, else absolute, so the session replays from any current folder (a
    name it cannot resolve, or one the reader would not take back, stays as loaded) */
-static const char* saved_name(uraCtx* c, const char* origin, char* buf, size_t n) {
+const char* ura_model_origin_at(const char* at, const char* origin, char* buf, size_t n) {
   char dir[PATH_MAX], file[PATH_MAX];
-  if (!c->savedir || !realpath(c->savedir, dir) || !realpath(origin, file)) return origin;
+  if (!at || !realpath(at, dir) || !realpath(origin, file)) return origin;
   size_t k = strlen(dir);
   const char* name = file;
   if (!strncmp(file, dir, k) && file[k] == '/') name = file + k + 1;
@@ -621,7 +621,7 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
     if (strcmp(c->part[i].origin, "built-in")) {
       char name[PATH_MAX];
       fprintf(f, "model load ");
-      ura_put_word(f, saved_name(c, c->part[i].origin, name, sizeof name));
+      ura_put_word(f, ura_model_origin_at(c->savedir, c->part[i].origin, name, sizeof name));
       fprintf(f, "   # part %s\n", c->part[i].name);
     }
   }
