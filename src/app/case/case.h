@@ -468,6 +468,9 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv);
 /* the model parts as session commands: model drop for each built-in part missing, model load
    for each loaded one */
 void ura_model_write_parts(uraCtx* c, FILE* f);
+/* model save FILE: the model set with the parameters the user set written into their param
+   lines and the live case's preset (model_save.c) */
+int ura_model_save(uraCtx* c, const char* path);
 /* the name of a loaded model file (origin, as loaded) for a file written in folder at: relative
    to at when the model is in it or below, else absolute; origin itself when at is NULL or a name
    cannot be resolved (built-in) (model.c) */

@@ -465,12 +465,33 @@ static void write_parts(const uraCtx* c, FILE* f, int headers) {
   }
 }
 
-static int model_save(uraCtx* c, const char* path) {
-  if (ura_name_fits(c, "model save", path, "model-language text", "urm txt")) return -1;
-  uraAtomic a;
-  if (ura_atomic_open(c, &a, path, "model save")) return -1;
-  write_parts(c, a.f, 0);
-  return ura_atomic_close(c, &a, 1, "model save");
+/* after a load, the live case's parameters as the loaded text's preset of that case sets them:
+   the values the old preset set go, the user's stay (a model saved with its case changed gives
+   that case; a case the new text has no preset of keeps what it had) */
+static int case_again(uraCtx* c) {
+  const urModel* m = ura_model(c);
+  const urPreset* pr = NULL;
+  for (int i = 0; m && i < m->npreset; i++) {
+    if (!strcasecmp(m->preset[i].name, c->st.casename)) pr = m->preset + i;
+  }
+  if (!pr) return 0;
+  uraState ns = c->st;
+  ns.nov = 0;
+  for (int i = 0; i < c->st.nov; i++) {
+    if (!c->st.ov_user[i]) continue;
+    memcpy(ns.ov_name[ns.nov], c->st.ov_name[i], urNAMELEN);
+    ns.ov_val[ns.nov] = c->st.ov_val[i];
+    ns.ov_user[ns.nov++] = 1;
+  }
+  for (int k = 0; k < pr->n && ns.nov < uraMAXOV; k++) {
+    int user = 0;
+    for (int i = 0; i < ns.nov; i++) user |= !strcmp(ns.ov_name[i], pr->key[k]);
+    if (pr->param[k] < 0 || user) continue;
+    snprintf(ns.ov_name[ns.nov], urNAMELEN, "%s", pr->key[k]);
+    ns.ov_val[ns.nov] = pr->value[k];
+    ns.ov_user[ns.nov++] = 0;
+  }
+  return ura_model_state(c, &ns, "model load");
 }
 
 static int model_load(uraCtx* c, const char* path) {
@@ -543,7 +564,7 @@ static int model_load(uraCtx* c, const char* path) {
   }
   int rc = parts_merge(c, text, path, path);
   free(text);
-  return rc;
+  return rc ? rc : case_again(c);
 }
 
 /* model drop PART: the part leaves the model set (e.g. the RA3 and its airbags before another
@@ -806,7 +827,7 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
   }
   if (argc <= 3 && !strcmp(argv[1], "params")) return model_params(c, argc == 3 ? argv[2] : "");
   if (argc == 2 && !strcmp(argv[1], "notes")) return model_notes(c);
-  if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
+  if (argc == 3 && !strcmp(argv[1], "save")) return ura_model_save(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "drop")) return model_drop(c, argv[2]);
   if (argc == 2 && !strcmp(argv[1], "parts")) {
