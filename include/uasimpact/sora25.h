@@ -7,7 +7,7 @@
  * magnitude, 90 %, for medium; two, 99 %, for high) with Table 5's credit (p. 29: n/a, -1, -2),
  * the final GRC floor at the column's controlled-ground-area value (Annex B Table B.1 #8), and
  * the paper's eq. (1.1): expected fatalities per flight hour. Pure functions: no I/O, no state.
- * Every table cell is tested against the cited text (tests/test_sora25.c).
+ * Every table cell is tested against the cited text (tests/core/risk/test_sora25.c).
  */
 #ifndef UASIMPACT_SORA25_H
 #define UASIMPACT_SORA25_H
@@ -44,6 +44,15 @@ int ur_sora25_column_ca(double ca);
    50 000 fits no row of the text and is taken in the "> 50 000" row (the conservative choice);
    controlled != 0: row 0. -1 when density is negative or not a number */
 int ur_sora25_row(double density, int controlled);
+
+/* the note under the table (p. 24): "A single UA with a take-off mass less than or equal to 250 g
+   and having a maximum speed less than or equal to 25 m/s is considered to have an iGRC of 1
+   regardless of population density, unless operating over assemblies of people". 1 when it
+   applies to a UA of take-off mass (kg) and maximum speed (m/s) in row row, else 0 */
+int ur_sora25_small_ua(double mass, double speed, int row);
+/* the highest final GRC inside SORA: above it, "outside the scope of the SORA" and the certified
+   category (p. 5, p. 30) */
+#define urSORA25_FINAL_MAX 7
 
 /* a quantitative iGRC (e.g. from Q by the Annex F formula) clamped into column col of the
    table: below 1 it becomes 1, above the column's highest value it becomes that value; *where

@@ -252,6 +252,8 @@ typedef struct {
   int dim_set, speed_set;
   int dim_ra3; /* dim is the RA3's (width and length at their defaults) for another drone */
   int col, row, igrc;
+  double mass; /* take-off mass, kg */
+  int small;   /* iGRC 1 by the 250 g note (p. 24), not by the table */
   int nclamp;
 } uraSora25;
 void ura_sora25_inputs(uraCtx* c, double unmit_speed, uraSora25* s);

@@ -20,6 +20,7 @@
 #include <time.h>
 
 #include "report.h"
+#include "uasimpact/sora25.h"
 
 #define X(s) ((const xmlChar*)(s))
 
@@ -287,17 +288,46 @@ static void question(uraCtx* c, xmlNodePtr body) {
   for (int i = 0; i < r->npop && k < sizeof bands; i++) {
     k += (size_t)snprintf(bands + k, sizeof bands - k, "%s%g", i ? ", " : "", r->pop_density[i]);
   }
+  /* what it carries, as risk and sora count it: a parachute when area_chute > 0, an airbag as a
+     device when bag_bottom or bag_front switches it (uasimpact(1), RISK FIGURES) */
+  urDeploy dep;
+  int bag[urMAXBAGS];
+  char carries[300];
+  if (ura_risk_devices(c, &c->st, &dep, bag)) dep.chute = 0, dep.nbag = 0;
+  if (!dep.chute)
+    snprintf(carries, sizeof carries, "no parachute (area_chute 0) and no deployable airbag");
+  else if (!dep.nbag)
+    snprintf(carries, sizeof carries, "a parachute deploying with probability %g, no airbag",
+             r->p_chute);
+  else
+    snprintf(carries, sizeof carries,
+             "a parachute deploying with probability %g and %d airbag%s deploying with "
+             "probability %g each",
+             r->p_chute, dep.nbag, dep.nbag == 1 ? "" : "s", r->p_bag);
+  uraSora25 s25;
+  ura_sora25_inputs(c, 0, &s25);
   elf(s, "p",
-      "Does the drone of case %s (%g kg, %g m x %g m), with the mitigations it carries "
-      "(parachute deployment probability %g, each airbag %g), keep the expected number of "
-      "ground fatalities per flight hour at or below the target level of safety %g over the "
-      "population densities %s ppl/km^2, and which SORA 2.5 intrinsic ground-risk class and M2 "
-      "credit (effects of ground impact reduced) does the simulation support?",
-      c->st.casename, c->st.descent.mass, c->st.para.width, c->st.para.length, r->p_chute, r->p_bag,
-      r->tlos, bands);
+      "Does the drone of case %s (%g kg; width %g m, length %g m%s), carrying %s, keep the "
+      "expected number of ground fatalities per flight hour at or below the target level of "
+      "safety %g per flight hour over the population densities %s ppl/km^2, and which SORA 2.5 "
+      "intrinsic ground-risk class and M2 credit (effects of ground impact reduced) does the "
+      "simulation support?",
+      c->st.casename, c->st.descent.mass, c->st.para.width, c->st.para.length,
+      s25.dim_ra3 ? ": the workbench's defaults, the RA3's, not this drone's (warning)" : "",
+      carries, r->tlos, bands);
   el(s, "p",
      "The answer below is read from the last results of the session; every number it quotes is "
      "in the evidence with its command, settings and notes.");
+}
+
+/* the text of the first note of t beginning with head, from the first from in it (the whole
+   note when from is NULL); NULL when there is none */
+static const char* note_from(const uraRepTable* t, const char* head, const char* from) {
+  for (int k = 0; k < t->nnote; k++) {
+    if (strncmp(t->notes[k], head, strlen(head))) continue;
+    return from ? strstr(t->notes[k], from) : t->notes[k];
+  }
+  return NULL;
 }
 
 static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
@@ -313,45 +343,104 @@ static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
   } else {
     const uraRepTable* t = &r->t[so];
     const char* g = cell(t, 0, "igrc_sora25");
+    const char* basis = note_from(t, "igrc_sora25: ", "column ");
+    const char* dimwarn = note_from(t, "warning: the characteristic dimension", NULL);
     elf(ul, "li",
         "Intrinsic ground-risk class for the submission (SORA 2.5 Table 2, by characteristic "
-        "dimension and maximum speed at the highest density): %s%s. Command: %s.",
+        "dimension and maximum speed at the highest density): %s%s; basis: %s%s. Command: %s.",
         g ? g : "?", g && !strcmp(g, "grey") ? " (not part of SORA: certified category)" : "",
+        basis ? basis : "not stated", dimwarn ? " (warning: not the drone's dimension, 3.2)" : "",
         t->cmd);
     int rq = t->nrow >= 3 ? 2 : 0;
-    elf(ul, "li",
-        "Quantitative iGRC from Q (Annex F's formula, clamped into Table 2): %s for case %s, %s "
-        "unmitigated (Q %s and %s m^2).",
-        cell(t, rq, "igrc_quant") ? cell(t, rq, "igrc_quant") : "?", cell(t, rq, "case"),
-        cell(t, 0, "igrc_quant") ? cell(t, 0, "igrc_quant") : "?", cell(t, rq, "ca"),
-        cell(t, 0, "ca"));
+    const char* at = note_from(t, "SORA 2.5 at ", "SORA 2.5 at ");
+    char atb[200];
+    snprintf(atb, sizeof atb, "%s", at ? at + strlen("SORA 2.5 at ") : "?");
+    atb[strcspn(atb, ":")] = 0; /* "D ppl/km^2, TLOS T /h, compensation C" */
+    if (rq)
+      elf(ul, "li",
+          "Quantitative iGRC from Q (Annex F's formula at %s, clamped into Table 2; supports, "
+          "does not replace, the table's class): %s for case %s, %s unmitigated (Q %s and %s "
+          "m^2).",
+          atb, cell(t, rq, "igrc_quant") ? cell(t, rq, "igrc_quant") : "?", cell(t, rq, "case"),
+          cell(t, 0, "igrc_quant") ? cell(t, 0, "igrc_quant") : "?", cell(t, rq, "ca"),
+          cell(t, 0, "ca"));
+    else
+      elf(ul, "li",
+          "Quantitative iGRC from Q (Annex F's formula at %s, clamped into Table 2; supports, "
+          "does not replace, the table's class): %s for the drone as it is (Q %s m^2; no "
+          "mitigated design to compare).",
+          atb, cell(t, 0, "igrc_quant") ? cell(t, 0, "igrc_quant") : "?", cell(t, 0, "ca"));
     int m2 = sibling(r, so, "quantity");
     if (m2 >= 0) {
       const uraRepTable* m = &r->t[m2];
       int row = findrow(m, "quantity", "q", NULL, NULL);
+      const char* lv = cell(m, row, "m2_integrity");
+      int none = !lv || !strcmp(lv, "none");
+      char claim[600];
+      if (none)
+        snprintf(claim, sizeof claim,
+                 "below the about one order of magnitude (factor 10, 90 %%) that integrity "
+                 "criterion #1 asks for at medium: no M2 credit");
+      else
+        snprintf(claim, sizeof claim,
+                 "the reduction that integrity criterion #1 asks for at level %s (lower bound: "
+                 "%s); the rest of criterion #1 (activation elements, a failure of the "
+                 "mitigation not degrading safety%s), criteria #2 and #3 and the assurance are "
+                 "not shown by a simulation",
+                 lv, cell(m, row, "m2_lo95") ? cell(m, row, "m2_lo95") : "?",
+                 strcmp(lv, "high") ? "" : ", automated activation");
+      const char *lo = cell(m, row, "lo95"), *hi = cell(m, row, "hi95");
+      char iv[160];
+      if (lo && hi && strcmp(lo, hi))
+        snprintf(iv, sizeof iv, "95 %% interval %s to %s", lo, hi);
+      else
+        snprintf(iv, sizeof iv, "deterministic, no interval: 'sora mc' gives one");
       elf(ul, "li",
-          "M2 evidence: Q is reduced by a factor %s (95 %% interval %s to %s; %s orders of "
-          "magnitude), which meets integrity criterion #1 at level %s (lower bound: %s), GRC "
-          "credit %s, final GRC %s (M1 not applied). A simulation cannot show deployment "
-          "reliability, automatic activation or post-impact hazards: see the assumptions.",
-          cell(m, row, "factor"), cell(m, row, "lo95"), cell(m, row, "hi95"),
-          cell(m, row, "orders"), cell(m, row, "m2_integrity"), cell(m, row, "m2_lo95"),
-          cell(m, row, "grc_credit"), cell(m, row, "final_grc"));
+          "M2 evidence: Q is reduced by a factor %s (%s; %s orders of magnitude, a reduction of "
+          "%s %%): %s; GRC credit %s, final GRC %s%s (M1 not applied). A simulation cannot show "
+          "deployment reliability, automatic activation or post-impact hazards: see the "
+          "assumptions.",
+          cell(m, row, "factor"), iv, cell(m, row, "orders"), cell(m, row, "reduction_pct"), claim,
+          cell(m, row, "grc_credit"), cell(m, row, "final_grc"),
+          atoi(cell(m, row, "final_grc") ? cell(m, row, "final_grc") : "0") > urSORA25_FINAL_MAX
+              ? " (above 7: outside the SORA, the certified category)"
+              : "");
     } else {
-      el(ul, "li", "M2: the drone carries no parachute; nothing to credit.");
+      el(ul, "li",
+         "M2: no reduction factor: the drone carries no parachute or deployable airbag to "
+         "compare it with (an airbag fitted in every branch is part of the drone; 'set "
+         "m2_baseline design:NAME' compares with a design kept by 'design save').");
     }
     int e = sibling(r, so, "case");
     if (e >= 0 && colix(&r->t[e], "fatalities_per_fh") >= 0) {
       const uraRepTable* q = &r->t[e];
-      char buf[1500];
-      size_t k = 0;
+      char buf[2500], limits[400];
+      size_t k = 0, kl = 0;
+      limits[0] = 0;
       for (int i = 0; i < q->nrow && k < sizeof buf; i++) {
-        k += (size_t)snprintf(buf + k, sizeof buf - k, "%s%s at %s ppl/km^2: %s /h (%s)",
-                              i ? "; " : "", cell(q, i, "case"), cell(q, i, "density"),
-                              cell(q, i, "fatalities_per_fh"), cell(q, i, "meets"));
+        const char *lo = cell(q, i, "lo95"), *hi = cell(q, i, "hi95");
+        char iv[120] = "";
+        if (lo && hi && strcmp(lo, hi)) snprintf(iv, sizeof iv, ", 95 %% interval %s..%s", lo, hi);
+        k += (size_t)snprintf(
+            buf + k, sizeof buf - k,
+            "%scase %s at %s ppl/km^2: %s per flight hour (Q %s m^2%s; meets: %s)", i ? "; " : "",
+            cell(q, i, "case"), cell(q, i, "density"), cell(q, i, "fatalities_per_fh"),
+            cell(q, i, "q"), iv, cell(q, i, "meets"));
+        if ((i == 0 || strcmp(cell(q, i, "case"), cell(q, i - 1, "case"))) && kl < sizeof limits)
+          kl += (size_t)snprintf(limits + kl, sizeof limits - kl, "%scase %s %s ppl/km^2",
+                                 kl ? ", " : "", cell(q, i, "case"), cell(q, i, "density_limit"));
       }
-      elf(ul, "li", "Risk per flight hour, eq. (1.1) of the paper, against the target %s /h: %s.",
-          cell(q, 0, "tlos"), buf);
+      const char* f = note_from(q, "risk per flight hour, eq. (1.1)", "E{n_F} = ");
+      char formula[400];
+      snprintf(formula, sizeof formula, "%s", f ? f : "?");
+      char* cut = strstr(formula, ", per density band");
+      if (cut) *cut = 0;
+      const char* qb = note_from(q, "Q: ", NULL);
+      elf(ul, "li",
+          "Risk per flight hour, eq. (1.1) of the paper, %s (lambda_system and P_shelter are "
+          "inputs, not results; %s), against the target %s per flight hour: %s. The target is "
+          "met up to %s.",
+          formula, qb ? qb : "Q: ?", cell(q, 0, "tlos"), buf, limits);
     }
   }
   int mc = last_table(r, "montecarlo", "n", "mean");
@@ -365,7 +454,8 @@ static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
                             t->cells[j]);
     }
     elf(ul, "li",
-        "Uncertainty (%s): mean Q %s m^2 over %s samples, interval of the mean %s to %s; the "
+        "Uncertainty (%s): mean Q %s m^2 over %s samples, 95 %% interval of the mean %s to %s "
+        "m^2; the "
         "spread of Q itself: %s m^2.",
         t->cmd, cell(t, 0, "mean"), cell(t, 0, "n"), cell(t, 0, "lo95"), cell(t, 0, "hi95"),
         buf[0] ? buf : "no quantiles");
@@ -378,12 +468,13 @@ static void answer(uraCtx* c, xmlNodePtr body, const uraReport* r) {
     int mq = findrow(t, "check", "mesh", "what", "q");
     char mesh[160] = "";
     if (mq >= 0) {
-      snprintf(mesh, sizeof mesh, "; doubling the membrane bag's mesh changes Q by %s (relative)",
+      snprintf(mesh, sizeof mesh, "; doubling the membrane bag's mesh changes Q by %s",
                cell(t, mq, "rel_change") ? cell(t, mq, "rel_change") : "?");
     }
     elf(ul, "li",
-        "Convergence: halving the grid step changes Q by %s (relative); halving the time step "
-        "changes P at the centre by %s (relative)%s.",
+        "Convergence (changes as fractions of the finer result): halving the grid step changes "
+        "Q by %s; halving the time step changes P at the centre by %s%s. These discretisation "
+        "changes are not in the intervals above, which are the sampling's alone.",
         q >= 0 ? cell(t, q, "rel_change") : "?", d >= 0 ? cell(t, d, "rel_change") : "?", mesh);
   } else {
     el(ul, "li", "Convergence: not run in this session (converge).");
@@ -488,13 +579,22 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
       "(1.1), not results; the target is %g fatalities per flight hour (SORA 2.5 TLOS).",
       r->lambda, r->p_shelter, r->tlos);
   int ra3_c = !strcmp(ura_risk_none_name(c), "C"); /* the model's case C is the unmitigated one */
-  elf(ul, "li",
-      "Deployment: the parachute deploys with probability %g above %g m, each airbag with %g; "
-      "without the parachute no airbag is credited (the drone falls %s).",
-      r->p_chute, r->h_chute_min, r->p_bag, ra3_c ? "as case C" : "without them: branch none");
+  urDeploy dep;
+  int bag[urMAXBAGS];
+  if (ura_risk_devices(c, &c->st, &dep, bag)) dep.chute = 0;
+  if (dep.chute)
+    elf(ul, "li",
+        "Deployment: the parachute deploys with probability %g above %g m, each airbag with %g; "
+        "without the parachute no airbag is credited (the drone falls %s).",
+        r->p_chute, r->h_chute_min, r->p_bag, ra3_c ? "as case C" : "without them: branch none");
+  else
+    el(ul, "li",
+       "Deployment: none; the drone carries no parachute (area_chute 0), so p_chute and p_bag "
+       "do not apply (an airbag fitted in every branch is part of the drone).");
   elf(ul, "li",
       "SORA 2.5 Table 2 column: characteristic dimension %s, maximum speed %s; density bands have "
-      "strict upper edges (5, 50, 500, 5 000 go one band up; 50 000 is taken as '> 50 000').",
+      "strict upper edges (5, 50, 500, 5 000 go one band up; 50 000 is taken as '> 50 000'); "
+      "a UA of at most 250 g and 25 m/s has iGRC 1 outside assemblies of people (p. 24).",
       r->ua_dim_set ? "as set (ua_dimension)" : "the larger of width and length",
       r->ua_speed_set ? "as set (ua_max_speed)"
                       : "the unmitigated impact speed standing in for the designer's maximum "
@@ -511,6 +611,7 @@ static void assumptions(uraCtx* c, xmlNodePtr body) {
       m2 == uraM2_TABLE_B8 ? "Annex B Table B.8's critical area of the column (warned: double "
                              "counting with Step #2)"
       : m2 == uraM2_DESIGN ? m2_text
+      : !dep.chute         ? "none (nothing deployable to compare with)"
       : ra3_c              ? "the same drone without parachute and airbag (case C)"
                            : "the same drone without parachute and airbag (branch none)");
   el(ul, "li",
@@ -546,15 +647,19 @@ static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
      "'this session' is the last grid or sweep of that case and wind the session computed at the "
      "paper's conditions (any step, descent and tau; nothing else set that changes a grid: no "
      "model part or parameter, attitude, speed, angle, extents or injury setting of its own) "
-     "(none: not computed here; 'make reproduce' computes all). A at 0 m/s: the caption's 0.031 "
-     "is the half plane, the full-plane sum of the paper's Table 4 grid is 0.058.");
+     "(none: not computed here; 'make reproduce' computes all). The ratio is taken against the "
+     "basis the calibration declares (uasimpact-model(5), CALIBRATION, Scoring): the full-plane "
+     "sum of the paper's own grid where it prints one, else the printed value. A at 0 m/s: the "
+     "caption's 0.031 is the half plane, the full-plane sum of the paper's Table 4 grid is "
+     "0.058; B at 0 m/s: the caption's 0.256 matches neither sum of Table 5's grid (full plane "
+     "0.286); A1 and A2 at 0 m/s print no grid: against the printed value / twice it.");
   xmlNodePtr tb = el(s, "table", NULL);
   xmlNodePtr tr = el(tb, "tr", NULL);
-  const char* hd[] = {"case", "wind (m/s)", "paper", "this session", "ratio", "step (m)"};
-  for (int j = 0; j < 6; j++) el(tr, "th", hd[j]);
+  const char* hd[] = {"case", "wind (m/s)", "paper", "this session", "basis", "ratio", "step (m)"};
+  for (int j = 0; j < 7; j++) el(tr, "th", hd[j]);
   const char* cn;
-  double wind, q;
-  for (int k = 0; ura_report_table17(k, &cn, &wind, &q) == 0; k++) {
+  double wind, q, basis;
+  for (int k = 0; ura_report_table17(k, &cn, &wind, &q, &basis) == 0; k++) {
     const char *ours = NULL, *step = "";
     for (int i = 0; i < r->nt; i++) {
       const uraRepTable* t = &r->t[i];
@@ -575,8 +680,16 @@ static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
     elf(tr, "td", "%g", wind);
     elf(tr, "td", "%.3f", q);
     el(tr, "td", ours ? ours : "none");
-    if (ours)
-      elf(tr, "td", "%.2f", atof(ours) / q);
+    if (basis > 0)
+      elf(tr, "td", "%.4f (grid, full plane)", basis);
+    else if (basis < 0)
+      elf(tr, "td", "%.3f / %.3f (printed / twice)", q, 2 * q);
+    else
+      elf(tr, "td", "%.3f (printed)", q);
+    if (ours && basis < 0)
+      elf(tr, "td", "%.2f / %.2f", atof(ours) / q, atof(ours) / (2 * q));
+    else if (ours)
+      elf(tr, "td", "%.2f", atof(ours) / (basis > 0 ? basis : q));
     else
       el(tr, "td", "");
     el(tr, "td", step);

@@ -71,7 +71,9 @@ char* ura_report_svg_plot(uraCtx* c, const char* what); /* sweep, montecarlo, to
 const char* ura_report_check(int k, const char** proves); /* test suite's physics checks */
 const char* ura_report_limit(int k);                      /* the model's known limits */
 const char* ura_report_source(int k);                     /* cited documents */
-/* the paper's Table 17 as printed: case, wind, Q; 0, or -1 past the end */
-int ura_report_table17(int k, const char** casename, double* wind, double* q);
+/* the paper's Table 17 as printed: case, wind, Q, and the ratio's basis (the full plane of the
+   paper's grid, 0 for the printed value, -1 for the printed value and twice it); 0, or -1 past
+   the end */
+int ura_report_table17(int k, const char** casename, double* wind, double* q, double* basis);
 
 #endif

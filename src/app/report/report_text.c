@@ -81,15 +81,20 @@ static const char* const limits[] = {
     "fatality probability of an unsheltered person.",
     NULL};
 
-/* Table 17 of the paper as printed (face 0; A at 0 m/s: the caption's 0.031 is the half plane,
-   the full-plane sum of the paper's Table 4 grid is 0.058) */
+/* Table 17 of the paper as printed (face 0), with the value a ratio is taken against: the
+   full-plane sum of the paper's own grid where it prints one (sessions/paper/grids/README.md,
+   Q_full; uasimpact-model(5), CALIBRATION, Scoring), else the printed value (basis 0). A at 0
+   m/s: the caption's 0.031 is the half plane, the grid's full plane 0.0581; B at 0 m/s: the
+   caption's 0.256 matches neither sum, the full plane is 0.2861. A1 and A2 at 0 m/s have no grid:
+   their ratio is given against the printed value and twice it (basis -1). */
 static const struct {
   const char* c;
-  double wind, q;
-} t17[] = {{"C", 0, 0.849},  {"C", 4, 0.853},  {"C", 10, 0.859}, {"B", 0, 0.256},
-           {"B", 4, 0.382},  {"B", 10, 0.858}, {"A", 0, 0.031},  {"A", 4, 0.216},
-           {"A", 10, 0.677}, {"A1", 0, 0.026}, {"A1", 4, 0.086}, {"A1", 10, 0.638},
-           {"A2", 0, 0.025}, {"A2", 4, 0.049}, {"A2", 10, 0.452}};
+  double wind, q, basis;
+} t17[] = {{"C", 0, 0.849, 0.8469}, {"C", 4, 0.853, 0},  {"C", 10, 0.859, 0.8588},
+           {"B", 0, 0.256, 0.2861}, {"B", 4, 0.382, 0},  {"B", 10, 0.858, 0.8582},
+           {"A", 0, 0.031, 0.0581}, {"A", 4, 0.216, 0},  {"A", 10, 0.677, 0.6766},
+           {"A1", 0, 0.026, -1},    {"A1", 4, 0.086, 0}, {"A1", 10, 0.638, 0.6378},
+           {"A2", 0, 0.025, -1},    {"A2", 4, 0.049, 0}, {"A2", 10, 0.452, 0.4515}};
 
 const char* ura_report_source(int k) {
   return k >= 0 && k < (int)(sizeof sources / sizeof *sources) ? sources[k] : NULL;
@@ -105,10 +110,11 @@ const char* ura_report_limit(int k) {
   return k >= 0 && k < (int)(sizeof limits / sizeof *limits) ? limits[k] : NULL;
 }
 
-int ura_report_table17(int k, const char** casename, double* wind, double* q) {
+int ura_report_table17(int k, const char** casename, double* wind, double* q, double* basis) {
   if (k < 0 || k >= (int)(sizeof t17 / sizeof *t17)) return -1;
   *casename = t17[k].c;
   *wind = t17[k].wind;
   *q = t17[k].q;
+  *basis = t17[k].basis;
   return 0;
 }

@@ -63,6 +63,11 @@ int ur_sora25_row(double density, int controlled) {
   return urSORA25_NROW - 1;
 }
 
+int ur_sora25_small_ua(double mass, double speed, int row) {
+  return mass > 0 && mass <= 0.25 && speed > 0 && speed <= 25 && row >= 0 &&
+         row < urSORA25_NROW - 1;
+}
+
 /* the highest value of a column (its lowest non-grey row from the bottom) */
 static int column_max(int col) {
   for (int r = urSORA25_NROW - 1; r >= 0; r--) {

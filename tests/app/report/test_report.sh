@@ -35,7 +35,7 @@ check settings cond 'grep -q "id=\"settings-1\"" "$H" && grep -q "href=\"#settin
 check model_texts cond 'grep -q "FNV-1a 64 [0-9a-f]\{16\}" "$H" && grep -q "^param dt" "$H"'
 check answer cond 'grep -q "Intrinsic ground-risk class for the submission (SORA 2.5 Table 2" "$H" &&
   grep -q "M2 evidence: Q is reduced by a factor" "$H" && grep -q "Risk per flight hour, eq. (1.1)" "$H" &&
-  grep -q "Convergence: halving the grid step" "$H"'
+  grep -q "Convergence (changes as fractions of the finer result): halving the grid step" "$H"'
 
 # figures: grids of A, C and the difference, the sweeps, the montecarlo histogram and shares
 NFIG=$(grep -o "<figure" "$H" | wc -l)

@@ -179,6 +179,18 @@ static void final_floor(void** state) {
   assert_int_equal(ur_sora25_final(4, 5, 0, 0), -1);
 }
 
+/* the note under the table (p. 24): at most 250 g and 25 m/s, iGRC 1 whatever the density,
+   unless over assemblies of people (the "> 50 000" row); both edges inclusive */
+static void small_ua(void** state) {
+  assert_int_equal(ur_sora25_small_ua(0.25, 25, 5), 1);
+  assert_int_equal(ur_sora25_small_ua(0.249, 19, 0), 1);
+  assert_int_equal(ur_sora25_small_ua(0.25, 25, urSORA25_NROW - 1), 0);
+  assert_int_equal(ur_sora25_small_ua(0.2501, 25, 5), 0);
+  assert_int_equal(ur_sora25_small_ua(0.25, 25.01, 5), 0);
+  assert_int_equal(ur_sora25_small_ua(0, 10, 5), 0);
+  assert_int_equal(ur_sora25_small_ua(0.2, 10, -1), 0);
+}
+
 /* eq. (1.1) by hand: 1e-3 /h x 5000 ppl/km^2 x 1e-6 km^2/m^2 x (1 - 0.5) x 0.849 m^2 =
    2.1225e-6 /h; the density limits of sora25-m2.md section 7 (lambda 1e-3, no shelter: Q_C 0.849
    1 178, Q_A 0.031 32 258; with P_s 0.9 Q_A 322 581) */
@@ -202,6 +214,7 @@ int main(void) {
       cmocka_unit_test(m2_levels),
       cmocka_unit_test(m2_interval),
       cmocka_unit_test(final_floor),
+      cmocka_unit_test(small_ua),
       cmocka_unit_test(eq_1_1),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

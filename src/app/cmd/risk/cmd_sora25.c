@@ -47,6 +47,9 @@ void ura_sora25_inputs(uraCtx* c, double unmit_speed, uraSora25* s) {
   s->col = ur_sora25_column(s->dim, s->speed);
   s->row = ur_sora25_row(s->density, 0);
   s->igrc = s->col >= 0 ? ur_sora25_cell(s->row, s->col) : -1;
+  s->mass = c->st.descent.mass;
+  s->small = ur_sora25_small_ua(s->mass, s->speed, s->row);
+  if (s->small) s->igrc = 1;
   s->nclamp = 0;
 }
 
@@ -77,6 +80,13 @@ void ura_sora25_notes(uraTable* t, const uraSora25* s) {
                  s->igrc == 0  ? ": grey cell, not part of SORA (certified category)"
                  : s->igrc < 0 ? ": outside the table (Annex F appendices A and B)"
                                : "");
+  if (s->small) {
+    ura_table_note(t,
+                   "igrc_sora25 1: a take-off mass of %g kg (<= 250 g) and a maximum speed of %g "
+                   "m/s (<= 25 m/s) give an iGRC of 1 whatever the density, unless over "
+                   "assemblies of people (the note under Table 2, p. 24); the table's cell is %d",
+                   s->mass, s->speed, ur_sora25_cell(s->row, s->col));
+  }
   if (s->dim_ra3) {
     ura_table_note(t,
                    "warning: the characteristic dimension is not the drone's: width and length "
@@ -161,7 +171,7 @@ int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], 
                    "column in Step #2 is credited twice (column change and M2); Annex B p. 91 "
                    "asks for B.8 only when Step #2 used it");
   }
-  int any_beyond = 0;
+  int any_beyond = 0, any_final_out = 0;
   for (int k = 0; k < 2; k++) {
     const uraSoraFig* u = &fig[k]; /* unmitigated */
     const uraSoraFig* d = &fig[2 + k];
@@ -187,11 +197,19 @@ int ura_sora25_m2_table(uraCtx* c, const uraSora25* s, const uraSoraFig fig[4], 
     ura_table_cell(t, "%s", level_names[m.level]);
     ura_table_cell(t, "%s", oklo ? level_names[mlo.level] : "none");
     ura_table_cell(t, "%d", m.credit);
-    if (s->igrc > 0)
-      ura_table_cell(t, "%d", ur_sora25_final(s->igrc, s->col, 0, m.credit));
-    else
+    if (s->igrc > 0) {
+      int fin = ur_sora25_final(s->igrc, s->col, 0, m.credit);
+      ura_table_cell(t, "%d", fin);
+      any_final_out |= fin > urSORA25_FINAL_MAX;
+    } else
       ura_table_cell(t, "none");
     any_beyond |= m.beyond;
+  }
+  if (any_final_out) {
+    ura_table_note(t,
+                   "final_grc above %d: outside the scope of the SORA (p. 5, p. 30): the "
+                   "operation belongs to the certified category",
+                   urSORA25_FINAL_MAX);
   }
   if (any_beyond) {
     ura_table_note(t,
