@@ -638,13 +638,19 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
     }
     if (!have) fprintf(f, "model drop %s\n", builtin_order[b]);
   }
+  /* one load per run of parts from the same file (a model save'd set is one file of four
+     parts: loading it once loads them all) */
   for (int i = 0; i < c->npart; i++) {
-    if (strcmp(c->part[i].origin, "built-in")) {
-      char name[PATH_MAX];
-      fprintf(f, "model load ");
-      ura_put_word(f, ura_model_origin_at(c->savedir, c->part[i].origin, name, sizeof name));
-      fprintf(f, "   # part %s\n", c->part[i].name);
-    }
+    if (!strcmp(c->part[i].origin, "built-in")) continue;
+    int n = 1;
+    while (i + n < c->npart && !strcmp(c->part[i + n].origin, c->part[i].origin)) n++;
+    char name[PATH_MAX];
+    fprintf(f, "model load ");
+    ura_put_word(f, ura_model_origin_at(c->savedir, c->part[i].origin, name, sizeof name));
+    fprintf(f, "   # part%s %s", n > 1 ? "s" : "", c->part[i].name);
+    for (int k = 1; k < n; k++) fprintf(f, ", %s", c->part[i + k].name);
+    fputc('\n', f);
+    i += n - 1;
   }
 }
 

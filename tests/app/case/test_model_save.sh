@@ -3,7 +3,8 @@
 # their param lines, in each line's own unit, and into the live case's preset line where it sets
 # them; settings that are not model text (wind, grid step) leave the file as the model's own.
 # Loading the file in a fresh session gives the same parameters and the same impact, bit for bit;
-# a session saved after model save and model load replays to the same impact row.
+# a session saved after model save and model load (one model load line for the file's parts,
+# case/model.c) replays to the same impact row.
 . tests/lib.sh
 
 U=$(cd "$(dirname "$UASIMPACT")" && pwd)/$(basename "$UASIMPACT")
@@ -39,7 +40,10 @@ in_tmp -c 'case B; set wind 2; set format csv; impact 0 0'
 check builtin_differs cond '[ -n "$(grep "^0,0," "$TMP/out")" ] &&
   [ "$(grep "^0,0," "$TMP/out")" != "$(grep "^0,0," "$TMP/live" | head -n 1)" ]'
 
-# the session saved after model save and model load replays to the same impact
+# the session saved after model save and model load loads the file once for its four parts,
+# and replays to the same impact
+check session_one_load cond '[ "$(grep -c "^model load" "$TMP/s.ses")" -eq 1 ] &&
+  grep -qx "model load .m.urm.   # parts human, ra3, airbags, sim" "$TMP/s.ses"'
 in_tmp -c 'source s.ses; set format csv; impact 0 0'
 check session_replays cond '[ "$RC" -eq 0 ] && [ "$(grep "^0,0," "$TMP/out")" = "$(grep "^0,0," "$TMP/live" | head -n 1)" ]'
 [ "$RC" -eq 0 ] || cat "$TMP/err"
