@@ -192,6 +192,7 @@ static int settings(uraCtx* c, const char* who, char* term, size_t nt, char* out
     snprintf(term, nt, "%s", t);
   }
   int kind = ura_term_kind(term);
+  if (*out && ura_plot_name_check(c, who, term, out)) return -1;
   if (!*out && kind == uraTERM_FILE) {
     return ura_fail(c, "%s: terminal '%s' writes a file; use 'set output FILE'", who, term);
   }

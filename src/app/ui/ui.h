@@ -92,6 +92,9 @@ int ura_plot_bag(uraCtx* c);
 /* the file tmp that gnuplot wrote under terminal term for the output shown is complete: not
    empty, the format's first bytes and end marker (PNG, JPEG, GIF, PDF, EPS, PostScript, SVG,
    HTML), for a text terminal a disk not left full (plot_file.c); 0, or -1 with c->err set */
+/* the output's extension against the format the terminal writes (set output x.svg with set
+   terminal png): 0, or -1 with one line naming both (plot_file.c) */
+int ura_plot_name_check(uraCtx* c, const char* who, const char* term, const char* out);
 int ura_plot_file_check(uraCtx* c, const char* who, const char* tmp, const char* term,
                         const char* shown);
 
