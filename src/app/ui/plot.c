@@ -85,6 +85,13 @@ void ura_plot_num(FILE* f, double v) {
     fputs("NaN", f);
 }
 
+double ura_plot_tic_step(double lo, double hi, int n) {
+  double span = hi - lo;
+  if (!(span > 0) || !isfinite(span)) return 0;
+  double raw = span / n, p = pow(10, floor(log10(raw))), m = raw / p;
+  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+}
+
 /* seconds on a monotonic clock */
 static double now(void) {
   struct timespec ts;

@@ -53,15 +53,8 @@ static void head_block(FILE* f, const char* name, const double* r, const double 
 }
 
 
-/* a tic step that gives at most about five labels over [lo, hi] (1, 2 or 5 times a power of ten), so
-   that the labels of a narrow panel do not run into each other */
-static double tic_step(double lo, double hi) {
-  double r = (hi - lo) / 4, p = pow(10, floor(log10(r > 0 ? r : 1e-3)));
-  double m = r / p;
-  return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * p;
-}
-
-/* the x and y tic steps of a panel: the mesh x (nn nodes) and the head at hc, radius hr */
+/* the x and y tic steps (about three intervals: the labels of a narrow panel do not run into
+   each other) of a panel: the mesh x (nn nodes) and the head at hc, radius hr */
 static void panel_tics(FILE* f, const double* x, int nn, const double* hc, const double* hr) {
   double lo[2] = {hc[0] - hr[0], hc[1] - hr[1]}, hi[2] = {hc[0] + hr[0], hc[1] + hr[1]};
   for (int i = 0; i < nn; i++) {
@@ -70,7 +63,8 @@ static void panel_tics(FILE* f, const double* x, int nn, const double* hc, const
       hi[d] = fmax(hi[d], x[3 * i + d]);
     }
   }
-  fprintf(f, "set xtics %g\nset ytics %g\n", tic_step(lo[0], hi[0]), tic_step(lo[1], hi[1]));
+  fprintf(f, "set xtics %g\nset ytics %g\n", ura_plot_tic_step(lo[0], hi[0], 3),
+          ura_plot_tic_step(lo[1], hi[1], 3));
 }
 
 static int write_bag(uraCtx* c, FILE* f, const void* arg) {

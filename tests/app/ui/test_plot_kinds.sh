@@ -73,6 +73,9 @@ check history_all_no_si cond '! gp history_all "(SI)" && gp history_all "head_ac
   gp history_all "bag_bottom_p_p (Pa)"'
 check history_all_no_duplicate cond '! gp history_all "neck_load_fz" && ! gp history_all "neck_load_my" &&
   [ "$(grep -c "set ylabel .chest_defl " "$TMP/history_all.gp")" -eq 1 ]'
+# a left margin of 14 characters: neck_load_mx's tic labels (-1.5x10^-5) and its y label fit in
+# it (12 cut the label at the image's edge; looked at in the PNG)
+check history_all_margin cond 'gp history_all "^set lmargin 14$"'
 # many rows: small type and two tic intervals a panel, so that neighbouring panels' labels and
 # tic marks do not run into each other (the six-signal plot keeps the normal type)
 check history_all_small_type cond 'gp history_all "set tics font \",8\"" && ! gp history "set tics font"'
