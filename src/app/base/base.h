@@ -41,6 +41,14 @@ int ura_data_dir(char* buf, size_t n);
 FILE* ura_data_open(const char* path, char* found, size_t n);
 /* the folder of path into buf (n bytes): "." for a bare name, "/" at the root (datadir.c) */
 void ura_dir_of(const char* path, char* buf, size_t n);
+/* the format a file name's extension names ("HTML" for x.html, "text" for x.txt, "PNG", ...;
+   case ignored), or NULL for none or one unknown here; whether the name fits a writer of the
+   extensions exts (blank-separated, "html htm"): 1 when its extension is one of them or names no
+   format here (fileext.c) */
+const char* ura_ext_format(const char* path);
+int ura_ext_fits(const char* path, const char* exts);
+/* the first extension of a format ura_ext_format names ("png" for "PNG"), or NULL */
+const char* ura_format_ext(const char* format);
 /* a speed unit: m/s, km/h or kt (exactly so); 0 with the factor to m/s, or -1 (speedunit.c) */
 int ura_speed_unit(const char* unit, double* to_si);
 /* v in a unit ura_speed_unit accepts, in m/s (v * 1852 / 3600 for kt: 36 km/h is 10 m/s exactly) */

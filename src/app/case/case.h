@@ -334,6 +334,8 @@ int ura_m2_baseline(const uraRiskSet* r, const char** design);
 /* the value as text (without unit) into buf, exact (round-trips through set); a derivable
    value that is not set prints as auto */
 void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n);
+/* the same as show prints it: numbers through ura_num_show (5.14444 for 10 kt) */
+void ura_param_display(const uraCtx* c, const uraParam* p, char* buf, size_t n);
 
 /* the injury settings (core table) through set/show: index of NAME or -1; set; one show line */
 int ura_injury_find(const char* name);
@@ -466,6 +468,13 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv);
 /* the model parts as session commands: model drop for each built-in part missing, model load
    for each loaded one */
 void ura_model_write_parts(uraCtx* c, FILE* f);
+/* model save FILE: the model set with the parameters the user set written into their param
+   lines and the live case's preset (model_save.c) */
+int ura_model_save(uraCtx* c, const char* path);
+/* the name of a loaded model file (origin, as loaded) for a file written in folder at: relative
+   to at when the model is in it or below, else absolute; origin itself when at is NULL or a name
+   cannot be resolved (built-in) (model.c) */
+const char* ura_model_origin_at(const char* at, const char* origin, char* buf, size_t n);
 
 /* the model cache (modelcache.c): the key of the live parts with st's overrides, and equality */
 void ura_model_key(const uraCtx* c, const uraState* st, uraModelKey* k);
@@ -492,6 +501,9 @@ void ura_recall_flush(uraCtx* c);
    ("1.1 atm", "26 kN", "0.25 m") */
 int ura_session_base(uraCtx* c, uraState* base);
 void ura_num_shortest(char* buf, size_t n, double v);
+/* v as show prints it: at most 10 significant digits when they give v but for rounding noise
+   (111457.5), else 6 (5.14444 for 10 kt) */
+void ura_num_show(char* buf, size_t n, double v);
 void ura_model_value_text(uraCtx* c, const char* name, double v, char* buf, size_t n);
 /* the settings a grid depends on that differ from the case preset, "name=value ..." or "none"
    (session_base.c) */
@@ -517,6 +529,11 @@ const char* ura_column_unit(const char* name);
    program, the command, the case and tables (the JSON array export gathered in
    c->export_meta); 0, or -1 with c->err */
 int ura_export_meta(uraCtx* c, const char* path, const char* what, json_t* tables);
+/* a file name a writer of one format takes (who writes writes, e.g. "HTML", in the extensions
+   exts, "html htm"): 0, or -1 with one line saying so when its extension names another format
+   (report x.txt; output.c) */
+int ura_name_fits(uraCtx* c, const char* who, const char* path, const char* writes,
+                  const char* exts);
 /* files written atomically (atomic.c) for a command: refused in dry mode, to /dev/null when
    muted (a shard, an MPI rank but 0); a failure recorded in c->err */
 int ura_atomic_open(uraCtx* c, uraAtomic* a, const char* path, const char* who);

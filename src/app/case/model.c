@@ -465,11 +465,33 @@ static void write_parts(const uraCtx* c, FILE* f, int headers) {
   }
 }
 
-static int model_save(uraCtx* c, const char* path) {
-  uraAtomic a;
-  if (ura_atomic_open(c, &a, path, "model save")) return -1;
-  write_parts(c, a.f, 0);
-  return ura_atomic_close(c, &a, 1, "model save");
+/* after a load, the live case's parameters as the loaded text's preset of that case sets them:
+   the values the old preset set go, the user's stay (a model saved with its case changed gives
+   that case; a case the new text has no preset of keeps what it had) */
+static int case_again(uraCtx* c) {
+  const urModel* m = ura_model(c);
+  const urPreset* pr = NULL;
+  for (int i = 0; m && i < m->npreset; i++) {
+    if (!strcasecmp(m->preset[i].name, c->st.casename)) pr = m->preset + i;
+  }
+  if (!pr) return 0;
+  uraState ns = c->st;
+  ns.nov = 0;
+  for (int i = 0; i < c->st.nov; i++) {
+    if (!c->st.ov_user[i]) continue;
+    memcpy(ns.ov_name[ns.nov], c->st.ov_name[i], urNAMELEN);
+    ns.ov_val[ns.nov] = c->st.ov_val[i];
+    ns.ov_user[ns.nov++] = 1;
+  }
+  for (int k = 0; k < pr->n && ns.nov < uraMAXOV; k++) {
+    int user = 0;
+    for (int i = 0; i < ns.nov; i++) user |= !strcmp(ns.ov_name[i], pr->key[k]);
+    if (pr->param[k] < 0 || user) continue;
+    snprintf(ns.ov_name[ns.nov], urNAMELEN, "%s", pr->key[k]);
+    ns.ov_val[ns.nov] = pr->value[k];
+    ns.ov_user[ns.nov++] = 0;
+  }
+  return ura_model_state(c, &ns, "model load");
 }
 
 static int model_load(uraCtx* c, const char* path) {
@@ -542,7 +564,7 @@ static int model_load(uraCtx* c, const char* path) {
   }
   int rc = parts_merge(c, text, path, path);
   free(text);
-  return rc;
+  return rc ? rc : case_again(c);
 }
 
 /* model drop PART: the part leaves the model set (e.g. the RA3 and its airbags before another
@@ -591,12 +613,12 @@ static int model_drop(uraCtx* c, const char* name) {
   return 0;
 }
 
-/* the name a session file at c->savedir gives a model file: relative to that folder when the
+/* the name a file written in folder at gives a model file: relative to that folder when the
    file is in it or below, else absolute, so the session replays from any current folder (a
    name it cannot resolve, or one the reader would not take back, stays as loaded) */
-static const char* saved_name(uraCtx* c, const char* origin, char* buf, size_t n) {
+const char* ura_model_origin_at(const char* at, const char* origin, char* buf, size_t n) {
   char dir[PATH_MAX], file[PATH_MAX];
-  if (!c->savedir || !realpath(c->savedir, dir) || !realpath(origin, file)) return origin;
+  if (!at || !realpath(at, dir) || !realpath(origin, file)) return origin;
   size_t k = strlen(dir);
   const char* name = file;
   if (!strncmp(file, dir, k) && file[k] == '/') name = file + k + 1;
@@ -616,13 +638,19 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
     }
     if (!have) fprintf(f, "model drop %s\n", builtin_order[b]);
   }
+  /* one load per run of parts from the same file (a model save'd set is one file of four
+     parts: loading it once loads them all) */
   for (int i = 0; i < c->npart; i++) {
-    if (strcmp(c->part[i].origin, "built-in")) {
-      char name[PATH_MAX];
-      fprintf(f, "model load ");
-      ura_put_word(f, saved_name(c, c->part[i].origin, name, sizeof name));
-      fprintf(f, "   # part %s\n", c->part[i].name);
-    }
+    if (!strcmp(c->part[i].origin, "built-in")) continue;
+    int n = 1;
+    while (i + n < c->npart && !strcmp(c->part[i + n].origin, c->part[i].origin)) n++;
+    char name[PATH_MAX];
+    fprintf(f, "model load ");
+    ura_put_word(f, ura_model_origin_at(c->savedir, c->part[i].origin, name, sizeof name));
+    fprintf(f, "   # part%s %s", n > 1 ? "s" : "", c->part[i].name);
+    for (int k = 1; k < n; k++) fprintf(f, ", %s", c->part[i + k].name);
+    fputc('\n', f);
+    i += n - 1;
   }
 }
 
@@ -654,8 +682,12 @@ static int model_params(uraCtx* c, const char* prefix) {
       ura_table_cell(t, "%s", u);
       ura_table_cell(t, "%s", who);
     } else {
-      fprintf(c->out, "%-16s %.10g%s%s  (%s)\n", m->param[i].name, m->param[i].value, *u ? " " : "",
-              u, who);
+      char val[64]; /* as show prints it; csv as before */
+      if (c->st.format == uraFMT_CSV)
+        snprintf(val, sizeof val, "%.10g", m->param[i].value);
+      else
+        ura_num_show(val, sizeof val, m->param[i].value);
+      fprintf(c->out, "%-16s %s%s%s  (%s)\n", m->param[i].name, val, *u ? " " : "", u, who);
     }
   }
   if (t && !found) ura_table_free(t);
@@ -801,7 +833,7 @@ int ura_cmd_model(uraCtx* c, int argc, char** argv) {
   }
   if (argc <= 3 && !strcmp(argv[1], "params")) return model_params(c, argc == 3 ? argv[2] : "");
   if (argc == 2 && !strcmp(argv[1], "notes")) return model_notes(c);
-  if (argc == 3 && !strcmp(argv[1], "save")) return model_save(c, argv[2]);
+  if (argc == 3 && !strcmp(argv[1], "save")) return ura_model_save(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "load")) return model_load(c, argv[2]);
   if (argc == 3 && !strcmp(argv[1], "drop")) return model_drop(c, argv[2]);
   if (argc == 2 && !strcmp(argv[1], "parts")) {

@@ -120,6 +120,23 @@ int ura_export_meta(uraCtx* c, const char* path, const char* what, json_t* table
   return ura_atomic_close(c, &a, ok, "export");
 }
 
+int ura_name_fits(uraCtx* c, const char* who, const char* path, const char* writes,
+                  const char* exts) {
+  if (ura_ext_fits(path, exts)) return 0;
+  char list[128];
+  size_t k = 0;
+  for (const char* e = exts; *e && k < sizeof list;) { /* "html htm": ".html or .htm" */
+    size_t n = strcspn(e, " ");
+    const char* sep = !k ? "" : e[n] ? ", " : " or ";
+    k += (size_t)snprintf(list + k, sizeof list - k, "%s.%.*s", sep, (int)n, e);
+    e += n + strspn(e + n, " ");
+  }
+  return ura_fail(c,
+                  "%s: the extension of '%s' says %s, but %s writes %s; accepted: a name ending "
+                  "in %s, or one whose extension names no other format",
+                  who, path, ura_ext_format(path), who, writes, list);
+}
+
 void ura_input_seen(uraCtx* c, FILE* f, const char* path) {
   if (c->scale && c->scale_input) c->scale_input(c, f, path);
 }

@@ -3,6 +3,7 @@
  * shortest text that reads back exactly, a model parameter in the unit that makes it shortest
  * (set bag_p0 1.1 atm). And the same question for a grid's label: the settings it depends on
  * that differ from the case preset (ura_sweep_changes: sweeps, designs). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +43,21 @@ void ura_num_shortest(char* buf, size_t n, double v) {
     fx[0] = 0;
   }
   snprintf(buf, n, "%s", *fx && strlen(fx) <= strlen(g) ? fx : g);
+}
+
+/* v as show prints it: its text of at most 10 significant digits that is v but for rounding
+   noise (0.3, 111457.5 for 1.1 atm), else 6 digits (10 kt: 5.14444, not 5.144444444444445) */
+void ura_num_show(char* buf, size_t n, double v) {
+  for (int prec = 1; prec <= 10; prec++) {
+    char g[64];
+    snprintf(g, sizeof g, "%.*g", prec, v);
+    double r = strtod(g, NULL);
+    if (fabs(r - v) <= 1e-12 * fabs(v)) {
+      ura_num_shortest(buf, n, r); /* 10, not 1e+01 */
+      return;
+    }
+  }
+  snprintf(buf, n, "%.6g", v);
 }
 
 /* the units a value in SI unit si may be written in (those of the model language that convert

@@ -336,7 +336,8 @@ static int fmt_exact(char* buf, size_t n, double v) {
   return 0;
 }
 
-void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
+/* numbers exact (save session) or as show prints them */
+static void param_text(const uraCtx* c, const uraParam* p, char* buf, size_t n, int shown) {
   const char* base = (const char*)&c->st;
   switch (p->kind) {
   case uraP_CASE: snprintf(buf, n, "%s", c->st.casename); break;
@@ -355,7 +356,12 @@ void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
     const double* v = (const double*)(base + p->off);
     for (int i = 0; i < cnt && k < n; i++) {
       if (i) k += snprintf(buf + k, n - k, ",");
-      if (k < n) k += fmt_exact(buf + k, n - k, v[i]);
+      if (k >= n) break;
+      if (shown)
+        ura_num_show(buf + k, n - k, v[i]);
+      else
+        fmt_exact(buf + k, n - k, v[i]);
+      k += strlen(buf + k);
     }
     break;
   }
@@ -363,10 +369,20 @@ void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
   case uraP_NUM:
     if (p->setoff && !*(const int*)(base + p->setoff))
       snprintf(buf, n, "auto");
+    else if (shown)
+      ura_num_show(buf, n, *(const double*)(base + p->off));
     else
       fmt_exact(buf, n, *(const double*)(base + p->off));
     break;
   }
+}
+
+void ura_param_format(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
+  param_text(c, p, buf, n, 0);
+}
+
+void ura_param_display(const uraCtx* c, const uraParam* p, char* buf, size_t n) {
+  param_text(c, p, buf, n, 1);
 }
 
 int ura_injury_find(const char* name) {

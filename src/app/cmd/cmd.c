@@ -256,6 +256,12 @@ static void show_line(uraCtx* c, const char* name, const char* val, const char* 
   ura_table_cell(show_tab, "%s", src);
 }
 
+/* numbers as they read back (csv and json: scripts read them) or as a person reads them (the
+   table format: 6 significant digits for a converted 10 kt, not 17) */
+static int show_exact(const uraCtx* c) {
+  return show_tab || c->st.format == uraFMT_CSV;
+}
+
 /* one line of show: name, value, unit, and where a derived value comes from; ext (NULL: one
    parameter alone) keeps the derived grid extents across the lines of a listing (ext[3]: 0 not
    sized yet, 1 sized, -1 not available) */
@@ -317,7 +323,10 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
       snprintf(val, sizeof val, "%.6g", x);
     }
   } else {
-    ura_param_format(c, p, val, sizeof val);
+    if (show_exact(c))
+      ura_param_format(c, p, val, sizeof val);
+    else
+      ura_param_display(c, p, val, sizeof val);
     if (p->setoff)
       note = "  (set)";
     else
@@ -339,24 +348,30 @@ static int show_one(uraCtx* c, const uraParam* p, double ext[4]) {
 
 /* one injury setting */
 static void show_injury(uraCtx* c, int i) {
-  const char* name;
+  const char *name, *unit;
   char val[128];
-  ur_injury_param_info(i, &name, NULL, NULL);
+  ur_injury_param_info(i, &name, &unit, NULL);
   ura_injury_line(c, i, val, sizeof val, !show_tab);
-  if (show_tab) {
-    const char* unit;
-    ur_injury_param_info(i, &name, &unit, NULL);
-    show_line(c, name, val, unit ? unit : "", "  (injury criteria)");
-  } else {
-    fprintf(c->out, "%-16s %s\n", name, val);
+  if (!show_exact(c)) { /* as a person reads it, with its unit */
+    double v;
+    ur_injury_param_get(&c->st.injury, name, &v);
+    ura_num_show(val, sizeof val, v);
+    if (unit && *unit) snprintf(val + strlen(val), sizeof val - strlen(val), " %s", unit);
   }
+  if (show_tab)
+    show_line(c, name, val, unit ? unit : "", "  (injury criteria)");
+  else
+    fprintf(c->out, "%-16s %s\n", name, val);
 }
 
 /* one model parameter: name, SI value, its unit; one that follows another (param NAME $OTHER)
    says so while it is not set */
 static void show_model_param(uraCtx* c, const urParam* p) {
   char val[64], from[2 * urNAMELEN], note[4 * urNAMELEN + 80];
-  snprintf(val, sizeof val, "%.10g", p->value);
+  if (show_exact(c))
+    snprintf(val, sizeof val, "%.10g", p->value);
+  else
+    ura_num_show(val, sizeof val, p->value);
   const urModel* m = ura_model(c);
   if (m && !ura_model_param_from(m, p, from, sizeof from)) {
     const urParam* o = &m->param[p->from];

@@ -79,6 +79,7 @@ int ura_cmd_save(uraCtx* c, int argc, char** argv) {
   if (strcmp(argv[1], "session")) {
     return ura_fail(c, "save: unknown '%s'; accepted: save session FILE", argv[1]);
   }
+  if (ura_name_fits(c, "save session", argv[2], "a script of commands", "ses txt")) return -1;
   uraAtomic a;
   if (ura_atomic_open(c, &a, argv[2], "save session")) return -1;
   /* the model files named relative to the session's folder (or absolute): it replays from
@@ -112,6 +113,7 @@ int ura_cmd_export(uraCtx* c, int argc, char** argv) {
                     "export sweep: no sweep yet; run 'sweep wind LIST' or 'sweep face LIST' "
                     "(or 'sweep NAME LIST [UNIT]')");
   }
+  if (ura_name_fits(c, "export", argv[2], "CSV", "csv txt")) return -1;
   uraAtomic a;
   int notes = ura_at_terminal(c); /* the notes at the prompt also to standard error */
   if (ura_atomic_open(c, &a, argv[2], "export")) return -1;

@@ -10,6 +10,7 @@
 #include <libxml/HTMLtree.h>
 #include <libxml/xmlerror.h>
 #include <libxml/xmlstring.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -725,7 +726,7 @@ static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
   for (int k = 0; (lim = ura_report_limit(k)); k++) el(ul, "li", lim);
 }
 
-static void appendix(uraCtx* c, xmlNodePtr body, const uraReport* r) {
+static void appendix(uraCtx* c, xmlNodePtr body, const uraReport* r, const char* dir) {
   xmlNodePtr s = section(body, "appendix", "Appendices");
   el(s, "h3", "A. Inputs: every setting, derived or set ('show')");
   char id[32];
@@ -739,7 +740,9 @@ static void appendix(uraCtx* c, xmlNodePtr body, const uraReport* r) {
   el(s, "h3", "B. Model texts");
   for (int i = 0; i < c->npart; i++) {
     unsigned long long h = ura_fnv(uraFNV0, c->part[i].text, strlen(c->part[i].text));
-    elf(s, "h4", "%s (%s, FNV-1a 64 %016llx)", c->part[i].name, c->part[i].origin, h);
+    char name[PATH_MAX]; /* a loaded file as named from the report's folder */
+    const char* from = ura_model_origin_at(dir, c->part[i].origin, name, sizeof name);
+    elf(s, "h4", "%s (%s, FNV-1a 64 %016llx)", c->part[i].name, from, h);
     el(s, "pre", c->part[i].text);
   }
   el(s, "h3", "C. Sources");
@@ -757,6 +760,7 @@ static void quiet(void* ctx, const char* msg, ...) {
 
 int ura_cmd_report(uraCtx* c, int argc, char** argv) {
   if (ura_dry(c, "report")) return -1;
+  if (ura_name_fits(c, "report", argv[1], "HTML", "html htm xhtml")) return -1;
   uraReport empty;
   memset(&empty, 0, sizeof empty);
   uraReport* r = c->rep ? c->rep : &empty;
@@ -780,7 +784,9 @@ int ura_cmd_report(uraCtx* c, int argc, char** argv) {
   evidence(c, body, r);
   assumptions(c, body);
   validity(c, body, r);
-  appendix(c, body, r);
+  char dir[4096];
+  ura_dir_of(argv[1], dir, sizeof dir);
+  appendix(c, body, r, dir);
   r->busy = 0;
 
   xmlChar* mem = NULL;

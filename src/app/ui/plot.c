@@ -85,6 +85,13 @@ void ura_plot_num(FILE* f, double v) {
     fputs("NaN", f);
 }
 
+double ura_plot_tic_step(double lo, double hi, int n) {
+  double span = hi - lo;
+  if (!(span > 0) || !isfinite(span)) return 0;
+  double raw = span / n, p = pow(10, floor(log10(raw))), m = raw / p;
+  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+}
+
 /* seconds on a monotonic clock */
 static double now(void) {
   struct timespec ts;
@@ -192,6 +199,7 @@ static int settings(uraCtx* c, const char* who, char* term, size_t nt, char* out
     snprintf(term, nt, "%s", t);
   }
   int kind = ura_term_kind(term);
+  if (*out && ura_plot_name_check(c, who, term, out)) return -1;
   if (!*out && kind == uraTERM_FILE) {
     return ura_fail(c, "%s: terminal '%s' writes a file; use 'set output FILE'", who, term);
   }

@@ -53,6 +53,20 @@ static void head_block(FILE* f, const char* name, const double* r, const double 
 }
 
 
+/* the x and y tic steps (about three intervals: the labels of a narrow panel do not run into
+   each other) of a panel: the mesh x (nn nodes) and the head at hc, radius hr */
+static void panel_tics(FILE* f, const double* x, int nn, const double* hc, const double* hr) {
+  double lo[2] = {hc[0] - hr[0], hc[1] - hr[1]}, hi[2] = {hc[0] + hr[0], hc[1] + hr[1]};
+  for (int i = 0; i < nn; i++) {
+    for (int d = 0; d < 2; d++) {
+      lo[d] = fmin(lo[d], x[3 * i + d]);
+      hi[d] = fmax(hi[d], x[3 * i + d]);
+    }
+  }
+  fprintf(f, "set xtics %g\nset ytics %g\n", ura_plot_tic_step(lo[0], hi[0], 3),
+          ura_plot_tic_step(lo[1], hi[1], 3));
+}
+
 static int write_bag(uraCtx* c, FILE* f, const void* arg) {
   const bagargs* a = arg;
   const urModel* m = a->m;
@@ -83,19 +97,28 @@ static int write_bag(uraCtx* c, FILE* f, const void* arg) {
                     "('set bag_model membrane', then 'impact')");
   }
 
-  // one panel per bag and instant
+  /* one panel per bag and instant, two to a row (a bag's first contact beside its peak), each
+     row as tall as one bag's panels; the z label along its axis, left of its tic labels, and
+     the x and y tic labels moved off the corners where the axes meet */
+  int cols = np > 1 ? 2 : 1, rows = (np + cols - 1) / cols;
+  ura_plot_canvas(c, 1600, rows > 1 ? 700 * rows : 760);
   fprintf(f,
-          "set view equal xyz\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset zlabel 'z (m)'\n"
+          "set view equal xyz\nset xlabel 'x (m)' offset 0,-1.2\nset ylabel 'y (m)' offset 3,-1\n"
+          "set zlabel 'z (m)' rotate parallel offset -1,0\nset xtics offset 0,-0.4\n"
+          "set ytics offset 2,-0.3\nset ztics offset -0.4,0\nset lmargin 8\nset rmargin 6\n"
           "set view 70, 30\nset key top left\nset ticslevel 0\n");
-  fprintf(f, "set multiplot layout 1,%d\n", np);
+  fprintf(f, "set multiplot layout %d,%d\n", rows, cols);
   for (int ib = 0; ib < m->nbag; ib++) {
     const urAirbag* b = m->bag + ib;
     if (b->type != urBAG_MEMBRANE) continue;
     const urMembrane* mb = b->mem;
-    const double* sc = a->d->mem + b->madr + 18 * mb->nn;
+    const double* st = a->d->mem + b->madr;
+    const double* sc = st + 18 * mb->nn;
     for (int k = 0; k < 2; k++) {
       double t = sc[k ? urMEMS_TPEAK : urMEMS_TFIRST];
       if (t < 0) continue;
+      panel_tics(f, st + (k ? 15 : 12) * mb->nn, mb->nn, sc + (k ? urMEMS_HPEAK : urMEMS_HFIRST),
+                 hr);
       char title[160];
       if (k) {
         snprintf(title, sizeof title, "%s at peak pressure %.1f kPa (gauge), t = %.2f ms", b->name,
@@ -118,7 +141,6 @@ static int write_bag(uraCtx* c, FILE* f, const void* arg) {
 int ura_plot_bag(uraCtx* c) {
   if (!c->have_impact) return ura_fail(c, "plot bag: no impact yet; run 'impact DPAR DPERP'");
   bagargs a = {c->setup.m, c->work.d};
-  ura_plot_canvas(c, 1600, 760);
   int rc = ura_plot_script(c, "plot bag", write_bag, &a);
   ura_plot_canvas(c, 0, 0);
   return rc;

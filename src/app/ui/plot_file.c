@@ -54,6 +54,31 @@ static const format* format_of(const char* term) {
   return NULL;
 }
 
+int ura_plot_name_check(uraCtx* c, const char* who, const char* term, const char* out) {
+  const char* ext = ura_ext_format(out);
+  const format* fm = format_of(term);
+  if (!ext) return 0;
+  const char* writes = fm ? fm->name : "text";
+  /* gnuplot's postscript terminal writes EPS too (set terminal postscript eps) */
+  if (!strcmp(ext, writes) || (!strcmp(ext, "EPS") && !strcmp(writes, "PostScript"))) return 0;
+  const char* t = NULL;
+  for (size_t i = 0; i < sizeof formats / sizeof formats[0]; i++) {
+    if (!strcmp(formats[i].name, ext)) t = formats[i].terms;
+  }
+  char want[40] = "";
+  if (t) snprintf(want, sizeof want, "%.*s", (int)strcspn(t + 1, " "), t + 1);
+  if (!strcmp(ext, "text")) snprintf(want, sizeof want, "dumb");
+  size_t nt = strcspn(term, " \t");
+  const char* mine = ura_format_ext(writes);
+  char named[64] = "one named for its terminal's format";
+  if (mine) snprintf(named, sizeof named, "a name ending in .%s", mine);
+  return ura_fail(c,
+                  "%s: the extension of output '%s' says %s, but terminal '%.*s' writes %s; "
+                  "accepted: %s%s%s",
+                  who, out, ext, (int)nt, term, writes, named, *want ? ", or set terminal " : "",
+                  want);
+}
+
 /* n bytes in the last m of buf (k bytes) */
 static int ends_with(const char* buf, size_t k, const char* s, size_t n, size_t m) {
   if (m > k) m = k;

@@ -39,14 +39,6 @@ double ura_trace_scale(const uraTrace* tr, int k, const char** unit) {
   return g ? 1.0 / urGRAVITY : mm ? 1000.0 : 1.0;
 }
 
-/* a round tic spacing that gives about four intervals over [lo, hi] */
-static double tic_step(double lo, double hi, int n) {
-  double span = hi - lo;
-  if (!(span > 0) || !isfinite(span)) return 0;
-  double raw = span / n, p = pow(10, floor(log10(raw))), m = raw / p;
-  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
-}
-
 /* what a derived signal is, for the legend (sensor channels are named by the model) */
 static const char* describe(const char* name) {
   static const char* const d[][2] = {{"head_acc", "head CG acceleration, resultant"},
@@ -112,7 +104,7 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
       ura_plot_quote(f, tr->title);
       fprintf(f, " noenhanced");
     }
-    fprintf(f, "\nset lmargin 12\nset key font \",9\"\n");
+    fprintf(f, "\nset lmargin 14\nset key font \",9\"\n");
     /* many rows (history all): small type, so that labels and tic marks of neighbouring panels
        do not run into each other */
     if (rows > 4) fprintf(f, "set tics font \",8\"\nset key font \",8\"\n");
@@ -141,7 +133,7 @@ static int write_trace(uraCtx* c, FILE* f, const void* arg) {
       }
     }
     /* in small panels about four tic intervals, in the many rows of history all two */
-    double dy = a->nsel > 1 ? tic_step(lo, hi, rows > 4 ? 2 : 4) : 0;
+    double dy = a->nsel > 1 ? ura_plot_tic_step(lo, hi, rows > 4 ? 2 : 4) : 0;
     if (dy > 0)
       fprintf(f, "set ytics %.9g\n", dy);
     else

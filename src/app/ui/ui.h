@@ -41,6 +41,9 @@ typedef int (*uraPlotWriter)(uraCtx* c, FILE* f, const void* arg);
 int ura_plot_script(uraCtx* c, const char* who, uraPlotWriter fn, const void* arg);
 void ura_plot_num(FILE* f, double v);
 void ura_plot_text(FILE* f, const char* name, const char* text);
+/* a round tic spacing (1, 2 or 5 times a power of ten) that gives about n intervals over
+   [lo, hi], or 0 for an empty span (the panels of plot history and plot bag) */
+double ura_plot_tic_step(double lo, double hi, int n);
 
 /* the canvas size (pixels) the next plot asks of a file terminal named without options (png,
    svg, pdfcairo, ...); 0, 0: the terminal's default */
@@ -92,6 +95,9 @@ int ura_plot_bag(uraCtx* c);
 /* the file tmp that gnuplot wrote under terminal term for the output shown is complete: not
    empty, the format's first bytes and end marker (PNG, JPEG, GIF, PDF, EPS, PostScript, SVG,
    HTML), for a text terminal a disk not left full (plot_file.c); 0, or -1 with c->err set */
+/* the output's extension against the format the terminal writes (set output x.svg with set
+   terminal png): 0, or -1 with one line naming both (plot_file.c) */
+int ura_plot_name_check(uraCtx* c, const char* who, const char* term, const char* out);
 int ura_plot_file_check(uraCtx* c, const char* who, const char* tmp, const char* term,
                         const char* shown);
 

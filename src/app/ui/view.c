@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include <curses.h>
+#include <termcap.h>
 
 #include "ui.h"
 
@@ -670,6 +671,12 @@ static void run(viewer* v) {
   }
 }
 
+/* tputs' writer: the viewer's terminal */
+static FILE* view_out;
+static int put_out(int ch) {
+  return putc(ch, view_out);
+}
+
 int ura_cmd_view(uraCtx* c, int argc, char** argv) {
   if (!c->last.g) return ura_fail(c, "view: no grid yet; run 'grid' or 'grid load FILE'");
   if (ura_dry(c, "view")) return -1;
@@ -728,9 +735,20 @@ int ura_cmd_view(uraCtx* c, int argc, char** argv) {
   v.left = v.col - vis_cols() / 2;
   run(&v);
 
-  /* back to the prompt: the terminal as it was, nothing else changed */
+  /* back to the prompt: the terminal as it was, nothing else changed; a terminal without an
+     alternate screen to leave (vt100: no rmcup) is cleared, so that the viewer does not stay
+     on it, the prompt at the top as on a fresh screen */
+  const char* rmcup = tigetstr("rmcup");
+  const char* clr = tigetstr("clear");
+  int wipe = (!rmcup || rmcup == (char*)-1) && clr && clr != (char*)-1;
   curs_set(1);
   endwin();
+  if (wipe) {
+    fflush(c->out);
+    view_out = c->out;
+    tputs(clr, 1, put_out);
+    fflush(c->out);
+  }
   delscreen(scr);
   for (int i = 0; i < 4; i++) sigaction(sigs[i], &saved[i], NULL);
   fflush(c->out);

@@ -8,7 +8,9 @@
 run -c 'set wind 36 km/h; show wind; set wind 10 kt; show wind; set wind 3 m/s; show wind'
 check set_status [ "$RC" -eq 0 ]
 check kmh_exact cond 'sed -n 1p "$TMP/out" | grep -q "^wind  *10 m/s$"'
-check kt_value cond 'sed -n 2p "$TMP/out" | grep -q "^wind  *5.144444444444445 m/s$"'
+# show prints what a person reads (6 significant digits for a converted value, 10 at most where
+# they are the value but for rounding noise); format csv and save session keep every digit
+check kt_value cond 'sed -n 2p "$TMP/out" | grep -q "^wind  *5.14444 m/s$"'
 check ms_still cond 'sed -n 3p "$TMP/out" | grep -q "^wind  *3 m/s$"'
 
 run -c 'set winds 0,7.2,36 km/h; show winds'
@@ -16,9 +18,24 @@ check list_kmh cond '[ "$RC" -eq 0 ] && grep -q "^winds  *0,2,10 m/s$" "$TMP/out
 run -c 'set speed 72 km/h; show speed'
 check speed_kmh cond '[ "$RC" -eq 0 ] && grep -q "^speed  *20 m/s" "$TMP/out"'
 
-# saved sessions keep m/s: the value replays without a unit
-run -c "set wind 10 kt; save session $TMP/s.ses"
-check saved_si cond 'grep -q "^set wind 5.144444444444445$" "$TMP/s.ses"'
+run -c 'set winds 0,10,20 kt; show winds; set format csv; show wind; show winds'
+check list_kt_shown cond 'sed -n 1p "$TMP/out" | grep -q "^winds  *0,5.14444,10.2889 m/s$"'
+check csv_exact cond 'sed -n 2p "$TMP/out" | grep -q "^wind  *0 m/s$" &&
+  sed -n 3p "$TMP/out" | grep -q "^winds  *0,5.144444444444445,10.28888888888889 m/s$"'
+# model parameters in another unit: 30 deg, 1.1 atm (1.1 x 101325 = 111457.5 Pa but for the
+# last bit), 26.3333 kN/m; model params prints them so too
+sets='set bag_lock 30 deg; set bag_p0 1.1 atm; set thorax_k 26.3333 kN/m'
+run -c "$sets; show bag_lock; show bag_p0; show thorax_k; model params bag_lock; set format json; show bag_lock"
+check model_deg cond 'sed -n 1p "$TMP/out" | grep -q "^bag_lock  *0.523599 rad$" &&
+  sed -n 2p "$TMP/out" | grep -q "^bag_p0  *111457.5 Pa$" &&
+  sed -n 3p "$TMP/out" | grep -q "^thorax_k  *26333.3 N/m$" &&
+  sed -n 4p "$TMP/out" | grep -q "^bag_lock  *0.523599 rad  (set)$" &&
+  grep -q "\"value\":0.5235987756," "$TMP/out"'
+
+# saved sessions keep m/s: the value replays without a unit, every digit kept
+run -c "set wind 10 kt; set bag_lock 30 deg; save session $TMP/s.ses"
+check saved_si cond 'grep -q "^set wind 5.144444444444445$" "$TMP/s.ses" &&
+  grep -q "^set bag_lock 0.5235987755982988 rad$" "$TMP/s.ses"'
 
 # refusals: an unknown unit, a value out of range once converted, a list for a number
 run -c 'set wind 3 mph'
@@ -52,5 +69,5 @@ check velocity_kmh cond 'sed -n 1p "$TMP/out" | grep -q "^speed  *10 m/s  (set)$
 run -c 'show ua_max_speed; show ua_dimension; set ua_max_speed 20 kt; show ua_max_speed'
 check sora_speed_show cond 'sed -n 1p "$TMP/out" | grep -q "^ua_max_speed  *auto m/s  (derived at sora: the unmitigated drone.s impact speed)$" &&
   sed -n 2p "$TMP/out" | grep -q "^ua_dimension  *1.3 m  (derived: the larger of the drone.s width and length)$" &&
-  sed -n 3p "$TMP/out" | grep -q "^ua_max_speed  *10.28888888888889 m/s  (set)$"'
+  sed -n 3p "$TMP/out" | grep -q "^ua_max_speed  *10.2889 m/s  (set)$"'
 finish

@@ -102,4 +102,16 @@ else
   skip browser "chromium missing: scripts/setup.sh browser"
 fi
 
+# the model texts name a loaded file as it is found from the report's folder (as save session
+# does): relative to it when the model is in it or below, else absolute
+mkdir -p "$TMP/w/m" "$TMP/w/out" "$TMP/w/far"
+cp sessions/quad/quad.urm "$TMP/w/m/quad.urm"
+(cd "$TMP/w" && "$U" -c 'model drop airbags; model drop ra3; model load m/quad.urm; report out/r.html; report r.html; report far/../r2.html' >"$TMP/out" 2>"$TMP/err")
+RC=$?
+check model_path_below cond '[ "$RC" -eq 0 ] && grep -q "<h4>quad (m/quad.urm, FNV" "$TMP/w/r.html" &&
+  grep -q "<h4>quad (m/quad.urm, FNV" "$TMP/w/r2.html"'
+check model_path_elsewhere cond 'grep -q "<h4>quad ($TMP/w/m/quad.urm, FNV" "$TMP/w/out/r.html" ||
+  grep -q "<h4>quad ($(cd "$TMP/w/m" && pwd -P)/quad.urm, FNV" "$TMP/w/out/r.html"'
+[ "$RC" -eq 0 ] || cat "$TMP/err"
+
 finish

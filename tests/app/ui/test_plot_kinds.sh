@@ -73,6 +73,9 @@ check history_all_no_si cond '! gp history_all "(SI)" && gp history_all "head_ac
   gp history_all "bag_bottom_p_p (Pa)"'
 check history_all_no_duplicate cond '! gp history_all "neck_load_fz" && ! gp history_all "neck_load_my" &&
   [ "$(grep -c "set ylabel .chest_defl " "$TMP/history_all.gp")" -eq 1 ]'
+# a left margin of 14 characters: neck_load_mx's tic labels (-1.5x10^-5) and its y label fit in
+# it (12 cut the label at the image's edge; looked at in the PNG)
+check history_all_margin cond 'gp history_all "^set lmargin 14$"'
 # many rows: small type and two tic intervals a panel, so that neighbouring panels' labels and
 # tic marks do not run into each other (the six-signal plot keeps the normal type)
 check history_all_small_type cond 'gp history_all "set tics font \",8\"" && ! gp history "set tics font"'
@@ -101,6 +104,24 @@ check tornado_title cond 'gp tornado "set title \"Variance shares of Q (first-or
 # bag: the membrane airbag at first contact and at peak pressure
 plot_png bag "case A; set bag_model membrane; impact 0 0" bag
 check bag_panels cond 'gp bag "at first contact" && gp bag "at peak pressure"'
+# every label readable: the z label along its axis (set horizontally left of the tic labels, a
+# narrow panel's margin cut it), two panels a row (A2's two bags made four in one row, 400 px
+# each: titles ran into each other, z cut), and per panel tic steps that give at most 6 labels
+# along x and y over the mesh and head drawn (5 cm steps over 0.8 m ran into each other)
+tics_ok() { awk '/^\$M[0-9]+_[0-9]+ << EOD/ { b = substr($1, 2); inb = 1; next }
+  /^EOD/ { inb = 0; next }
+  inb && NF == 3 { if (!(b in lo)) { lo[b] = hi[b] = $1; ly[b] = hy[b] = $2 }
+    if ($1 < lo[b]) lo[b] = $1; if ($1 > hi[b]) hi[b] = $1
+    if ($2 < ly[b]) ly[b] = $2; if ($2 > hy[b]) hy[b] = $2; next }
+  /^set xtics [0-9.e+-]+$/ { sx = $3 } /^set ytics [0-9.e+-]+$/ { sy = $3 }
+  /^splot \$M/ { b = substr($2, 2); n++
+    if (!(sx > 0 && sy > 0) || (hi[b] - lo[b]) / sx > 6 || (hy[b] - ly[b]) / sy > 6) bad = 1 }
+  END { exit !(n > 0 && !bad) }' "$TMP/$1.gp"; }
+check bag_labels cond 'gp bag "set multiplot layout 1,2" && gp bag "size 1600,760" &&
+  gp bag "set zlabel .z (m). rotate parallel" && tics_ok bag'
+plot_png bag2 "case A2; set bag_model membrane; impact -0.2 0" bag
+check bag2_two_bags cond 'gp bag2 "bag_bottom at peak pressure" && gp bag2 "bag_front at first contact" &&
+  gp bag2 "set multiplot layout 2,2" && gp bag2 "size 1600,1400" && tics_ok bag2'
 
 ls "$TMP"/*.png | sed 's|.*/|  (rendered: |; s|$|)|'
 # KEEP_PNG=DIR keeps the PNGs for a person to look at

@@ -137,6 +137,21 @@ check nc_glyph_not_suffix cond '! grep -Eq "[0-9][.:#@] " "$TMP/screen"'
 check nc_legend wait_for v3 '  0 / no contact . 0-5 % : 5-30 % # 30-90 % @ >=90 %'
 keys v3 q
 
+# ---- TERM=vt100 (no alternate screen, no rmcup): on leaving, the viewer does not stay on the
+# screen; it is cleared as the colour viewer's is restored, and the prompt comes back on it ----
+start vt 100 30 TERM=vt100
+check vt_prompt wait_for vt 'uasimpact'
+line vt "grid load $T6"
+line vt "show wind"
+check vt_before wait_for vt '^wind +0 m/s$'
+line vt "view"
+check vt_view wait_for vt 'Enter inspect  p plot  b bag  q back'
+keys vt q
+check vt_view_gone wait_gone vt 'Enter inspect|0 / no contact|dpar 0.00 m  dperp 0.00 m'
+line vt "show face"
+check vt_prompt_back wait_for vt '^face +0 deg$'
+check vt_screen_clean cond '! grep -Eq "Enter inspect|no contact|dperp|Q = 0.8469" "$TMP/screen" || { sed "s/^/  | /" "$TMP/screen"; false; }'
+
 # ---- scrolling: Table 8 (48 x 33 cells) in 100 x 30 ----
 start v4 100 30
 check sc_prompt wait_for v4 'uasimpact'
