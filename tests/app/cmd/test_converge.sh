@@ -3,7 +3,8 @@
 # model's dt equals 'impact 0 0', and with dt / 2 equals 'impact 0 0' after 'set dt' to half;
 # the live state (step, dt) is back afterwards; dry mode refuses. With a membrane bag, the mesh
 # rows: Q at twice bag_mesh equals that grid run by hand, and the report quotes the row; without
-# one, a note says the mesh is not refined. Coarse grids keep it short.
+# one, a note says the mesh is not refined. A warning when halving the step or doubling the mesh
+# moves Q by more than 10 % of the finer result, none within. Coarse grids keep it short.
 . tests/lib.sh
 
 col() {
@@ -56,6 +57,19 @@ check mesh_worst cond '[ -n "$(conv "$TMP/m" mesh p_worst dpar)" ] && [ -n "$(co
 check mesh_note grep -q "^# mesh: the membrane bag.s mesh refined: .* bag_mesh 3 (coarse) and 6 (fine)" "$TMP/m"
 check mesh_restored grep -q "^bag_mesh *3 *(set)" "$TMP/m"
 check mesh_report cond 'grep -q "doubling the membrane bag.s mesh changes Q by $(conv "$TMP/m" mesh q rel_change)\. These discretisation" "$TMP/mesh.html"'
+
+# a warning when Q moves by more than 10 % of the finer result, with the numbers of the row; none
+# within it (case C at 0.1 m moves by about 1 %)
+pct() { awk -v r="$(conv "$1" "$2" q rel_change)" 'BEGIN { printf "%.0f", 100 * r }'; }
+big() { awk -v r="$(conv "$1" "$2" q rel_change)" 'BEGIN { exit !(r > 0.1 || r < -0.1) }'; }
+check warn_step cond 'big "$TMP/c" step && grep -q "^# warning: halving the step moves Q by $(pct "$TMP/c" step) % of the finer result ($(conv "$TMP/c" step q coarse) -> $(conv "$TMP/c" step q fine) m^2), more than 10 %" "$TMP/c"'
+check warn_mesh cond 'big "$TMP/m" mesh && grep -q "^# warning: doubling bag_mesh moves Q by $(pct "$TMP/m" mesh) % of the finer result" "$TMP/m" &&
+  grep -q "converge: warning: doubling bag_mesh moves Q" "$TMP/mesh.html"'
+run -c 'set format csv; case C; set step 0.1; converge'
+cp "$TMP/out" "$TMP/q"
+[ "$RC" -eq 0 ] || cat "$TMP/err"
+check warn_none cond '[ "$RC" -eq 0 ] && [ -n "$(conv "$TMP/q" step q rel_change)" ] && ! big "$TMP/q" step &&
+  ! grep -q "warning: halving the step" "$TMP/q"'
 
 run -c 'converge now'
 check args cond '[ "$RC" -eq 1 ] && has "$TMP/err" "converge"'

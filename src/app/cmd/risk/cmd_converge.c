@@ -181,6 +181,19 @@ static void row(uraTable* t, const char* check, const char* what, const double* 
   ura_table_cell(t, "%.3g", b > 0 ? (b - a) / b : 0);
 }
 
+/* a warning when Q moves by more than CONV_TOL of the finer result: the grid's Q is not
+   converged to the accuracy a dossier quotes it with */
+#define CONV_TOL 0.1
+static void conv_warn(uraTable* t, const char* what, double coarse, double fine, double step) {
+  double rel = fine > 0 ? (fine - coarse) / fine : 0;
+  if (fabs(rel) <= CONV_TOL) return;
+  ura_table_note(t,
+                 "warning: %s moves Q by %.0f %% of the finer result (%.6g -> %.6g m^2), more "
+                 "than %.0f %% (this note's tolerance, not a standard): the coarser Q (step %g "
+                 "m) is not converged to that accuracy",
+                 what, 100 * rel, coarse, fine, 100 * CONV_TOL, step);
+}
+
 /* the mesh rows: Q, and the cell whose P moved most */
 static void mesh_rows(uraTable* t, const conv* v) {
   const double at[2] = {v->mworst_dpar, v->mworst_dperp};
@@ -262,6 +275,8 @@ int ura_cmd_converge(uraCtx* c, int argc, char** argv) {
     for (int w = 0; w < 2; w++) row(t, "dt", what[w], at[w], v.p_dt[w][0], v.p_dt[w][1]);
   }
   if (v.have_mesh == 1) mesh_rows(t, &v);
+  conv_warn(t, "halving the step", v.q_h, v.q_h2, step);
+  if (v.have_mesh == 1) conv_warn(t, "doubling bag_mesh", v.q_h, v.q_mesh, step);
   if (v.shared_max > 0) {
     ura_table_note(t, "warning: shared cells differ by up to %.3g: the grids are not repeatable",
                    v.shared_max);
