@@ -3,7 +3,8 @@
 # factor montecarlo printed; eq. (1.1) per band against a hand computation from the printed Q;
 # the Table 2 column and row; iGRC clamping with its note; the density list in show and save
 # session; montecarlo's quantile columns (mc_quantiles), the truncated interval and its flags;
-# the response surface's tolerance (warns and refines, or fails with a clear message); refusals.
+# the response surface's tolerance (warns and refines, or fails with a clear message); refusals;
+# the Annex F row's width against ua_dimension.
 # Coarse 0.3 m grids keep it short, and the analytic bag after every 'case A' (set bag_model
 # analytic): what is checked is arithmetic on the program's Q, whatever the bag; the membrane bag,
 # A's default at the switch, costs ~10 s CPU per coarse grid. Every expectation comes from the
@@ -174,5 +175,13 @@ run -c "set step 0.3; case C; sora"
 check dim_ra3_not_warned cond '[ "$RC" -eq 0 ] && ! grep -q "characteristic dimension is not" "$TMP/out"'
 (cd "$TMP" && "$U" -c "$QUAD; sora; report q.html" >/dev/null 2>&1)
 check dim_ra3_in_report grep -q "characteristic dimension is not the drone" "$TMP/q.html"
+
+# the Annex F row takes the width parameter: a ua_dimension that differs from it is warned of,
+# one equal to it is not
+runs "set format csv; set step 0.3; case C; set ua_dimension 0.5; set ua_max_speed 20; sora"
+check annexf_width_warned cond '[ "$RC" -eq 0 ] &&
+  grep -q "^# warning: annex_f takes the width parameter, 1.3 m, as Annex F.s characteristic dimension, not ua_dimension 0.5 m" "$TMP/out"'
+runs "set format csv; set step 0.3; case C; set ua_dimension 1.3; set ua_max_speed 20; sora"
+check annexf_width_same cond '[ "$RC" -eq 0 ] && ! grep -q "annex_f takes the width" "$TMP/out"'
 
 finish

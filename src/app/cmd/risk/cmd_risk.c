@@ -338,6 +338,12 @@ int ura_cmd_sora(uraCtx* c, int argc, char** argv) {
                  "0.65, CoR(angle), 290 J, obstacle factor %s; casex "
                  "CriticalAreaModels.critical_area)",
                  c->st.descent.mass, c->st.para.width, r->annexf_obstacles ? "on" : "off");
+  if (r->ua_dim_set && r->ua_dim != c->st.para.width) {
+    ura_table_note(t,
+                   "warning: annex_f takes the width parameter, %g m, as Annex F's characteristic "
+                   "dimension, not ua_dimension %g m: 'set width %g' for that row",
+                   c->st.para.width, r->ua_dim, r->ua_dim);
+  }
   const char* none = ura_risk_none_name(c);
   ura_table_note(t,
                  "reduction: the unmitigated drone's CA (no parachute, no airbag: %s %s) over "
