@@ -15,6 +15,7 @@
 #include <fcntl.h>
 #include <math.h>
 #include <poll.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -310,8 +311,15 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
     return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(e));
   }
   fflush(NULL);
+  /* every signal held from the fork until the child is armed: one that ended us in between left
+     gnuplot running (the sanitized suite's plot_sig_HUP_cleaned, once); the child takes the old
+     mask back before it runs gnuplot */
+  sigset_t all, mask;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, &mask);
   pid_t pid = fork();
   if (pid == 0) {
+    pthread_sigmask(SIG_SETMASK, &mask, NULL);
     dup2(fd[0], STDIN_FILENO);
     dup2(fileno(of), STDOUT_FILENO);
     dup2(fileno(ef), STDERR_FILENO);
@@ -324,6 +332,9 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
       execlp("gnuplot", "gnuplot", "/dev/stdin", (char*)NULL);
     _exit(127);
   }
+  /* a signal that ends us kills it before removing the temporary file */
+  if (pid > 0) ura_child_arm(pid);
+  pthread_sigmask(SIG_SETMASK, &mask, NULL);
   close(fd[0]);
   if (pid < 0) {
     int e = errno;
@@ -334,7 +345,6 @@ int ura_gnuplot_run(uraCtx* c, const char* who, const char* script, size_t len) 
     if (file) ura_atomic_close(c, &a, 0, who);
     return ura_fail(c, "%s: cannot start gnuplot: %s", who, strerror(e));
   }
-  ura_child_arm(pid); /* a signal that ends us kills it before removing the temporary file */
 
   /* the script, with SIGPIPE ignored (a gnuplot that died shows as EPIPE) and a deadline
      (a gnuplot that stops reading does not hold us) */
