@@ -69,6 +69,18 @@ urModel* ur_model_parse_cache(const urModelSource* src, int nsrc, const urOverri
 int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart, char* err,
                    int errlen);
 
+/* one word of a model-language text as the parser reads it */
+typedef struct {
+  size_t at, len; /* its place in the text: [at, at + len) (blanks joined at ',' included) */
+  int stmt;       /* its statement (logical line), from 0 */
+} urModelWord;
+
+/* The words of text as the parser reads them (comments removed, continued lines joined, blanks
+   next to ',' not separating), for a tool that edits the text in place: *words a new array of
+   *nword (the caller frees it; NULL when there are none). Returns 0, or -1 with a message in err
+   ("model:LINE: ..."). */
+int ur_model_words(const char* text, urModelWord** words, int* nword, char* err, int errlen);
+
 /* factor from a unit of the language (m, mm, atm, deg, ...; several joined by '*' and '/':
    N*m/rad, kN/m) to SI; 0, or -1 if unknown. ur_unit_parse also gives the SI unit (kN/m: N/m,
    atm: Pa, none: "") into si (n bytes; NULL: not wanted). */

@@ -4,7 +4,8 @@
  * loaded in a fresh session gives the drone the session has now (the saved case included).
  * Settings that are not model text (wind, grid step, threads, the descent's and the parametric
  * model's figures) stay out: save session keeps them. The rest of the text is kept byte for
- * byte, comments and continuation lines included. */
+ * byte, comments and continuation lines included; the words are the parser's own
+ * (ur_model_words). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,68 +15,13 @@
 #include "case.h"
 
 
-/* a word of a part's text: where it is, and the statement (logical line) it belongs to */
-typedef struct {
-  size_t at, len;
-  int stmt;
-} Word;
-
 /* a replacement of text[at, at + len) */
 typedef struct {
   size_t at, len;
   char with[96];
 } Edit;
 
-static int blank(char ch) {
-  return ch == ' ' || ch == '\t' || ch == '\r' || ch == '\v' || ch == '\f';
-}
-
-/* the words of text as the model language reads them: # comments dropped, a line ending in \
-   continued, a blank or comment-only line ending the statement; *n words into a new array */
-static Word* words_of(const char* text, int* n) {
-  size_t len = strlen(text), a = 0;
-  int cap = 64, stmt = 0, open = 0;
-  Word* w = malloc((size_t)cap * sizeof *w);
-  *n = 0;
-  if (len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3)) a = 3;
-  while (w && a < len) {
-    const char* nl = memchr(text + a, '\n', len - a);
-    size_t e = nl ? (size_t)(nl - text) : len;
-    const char* hash = memchr(text + a, '#', e - a);
-    size_t te = hash ? (size_t)(hash - text) : e;
-    while (te > a && blank(text[te - 1])) te--;
-    int cont = te > a && text[te - 1] == '\\';
-    if (cont) te--;
-    size_t i = a;
-    int any = 0;
-    while (i < te) {
-      while (i < te && blank(text[i])) i++;
-      size_t s = i;
-      while (i < te && !blank(text[i])) i++;
-      if (i == s) break;
-      if (*n == cap) {
-        Word* g = realloc(w, (size_t)(cap *= 2) * sizeof *w);
-        if (!g) {
-          free(w);
-          return NULL;
-        }
-        w = g;
-      }
-      w[(*n)++] = (Word){s, i - s, stmt};
-      any = 1;
-    }
-    if (!any || !cont) { /* the statement ends here */
-      if (any || open) stmt++;
-      open = 0;
-    } else {
-      open = 1;
-    }
-    a = e + 1;
-  }
-  return w;
-}
-
-static int word_is(const char* text, const Word* w, const char* s) {
+static int word_is(const char* text, const urModelWord* w, const char* s) {
   return w->len == strlen(s) && !strncmp(text + w->at, s, w->len);
 }
 
@@ -109,8 +55,8 @@ static int in_unit(double v, double f, char* buf, size_t n) {
 /* the edits that write the user's value of parameter name (SI v) into part p's text: its param
    line (the last one, the one that counts) and the key of preset pre; *found set when the part
    defines it */
-static int edits_for(uraCtx* c, const uraPart* p, const Word* w, int nw, const char* name, double v,
-                     const char* pre, Edit* ed, int* ned, int max, int* found) {
+static int edits_for(uraCtx* c, const uraPart* p, const urModelWord* w, int nw, const char* name,
+                     double v, const char* pre, Edit* ed, int* ned, int max, int* found) {
   const char* t = p->text;
   int last = -1;
   for (int i = 0; i + 2 < nw; i++) {
@@ -119,8 +65,8 @@ static int edits_for(uraCtx* c, const uraPart* p, const Word* w, int nw, const c
       last = i;
   }
   if (last >= 0 && *ned < max) {
-    const Word* val = &w[last + 2];
-    const Word* u = last + 3 < nw && w[last + 3].stmt == val->stmt ? &w[last + 3] : NULL;
+    const urModelWord* val = &w[last + 2];
+    const urModelWord* u = last + 3 < nw && w[last + 3].stmt == val->stmt ? &w[last + 3] : NULL;
     double f = 1;
     char unit[64] = "";
     if (u && !memchr(t + u->at, '=', u->len) && u->len < sizeof unit) {
@@ -181,8 +127,9 @@ static int by_place(const void* a, const void* b) {
 static int write_part(uraCtx* c, FILE* f, int ip, int* defined) {
   const uraPart* p = &c->part[ip];
   int nw;
-  Word* w = words_of(p->text, &nw);
-  if (!w) return ura_fail(c, "model save: out of memory");
+  urModelWord* w;
+  char err[300];
+  if (ur_model_words(p->text, &w, &nw, err, sizeof err)) return ura_fail(c, "model save: %s", err);
   Edit ed[2 * uraMAXOV];
   int ned = 0;
   for (int k = 0; k < c->st.nov; k++) {

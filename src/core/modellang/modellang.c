@@ -463,6 +463,32 @@ urModel* ur_model_parse_cache(const urModelSource* src, int nsrc, const urOverri
 
 //---------------------------------- parts ---------------------------------------------------------
 
+int ur_model_words(const char* text, urModelWord** words, int* nword, char* err, int errlen) {
+  urlLex lx;
+  char msg[MSGLEN];
+  memset(&lx, 0, sizeof(lx));
+  *words = NULL;
+  *nword = 0;
+  if (url_lex(&lx, text, 0, NULL, 1, msg, sizeof(msg))) {
+    url_free(&lx);
+    snprintf(err, (size_t)errlen, "%s", msg);
+    return -1;
+  }
+  if (lx.nword > 0 && !(*words = malloc(sizeof(urModelWord) * (size_t)lx.nword))) {
+    url_free(&lx);
+    snprintf(err, (size_t)errlen, "model: out of memory");
+    return -1;
+  }
+  for (int s = 0; s < lx.nstmt; s++) {
+    for (int k = 0; k < lx.stmt[s].nword; k++) {
+      const urlWord* w = lx.word + lx.stmt[s].word + k;
+      (*words)[(*nword)++] = (urModelWord){w->at, w->len, s};
+    }
+  }
+  url_free(&lx);
+  return 0;
+}
+
 int ur_model_split(const char* text, const char* file, urModelPart* parts, int maxpart, char* err,
                    int errlen) {
   urlLex lx;

@@ -10,8 +10,9 @@
 
 /* one word of a statement: a keyword, a name, a positional value or key=value */
 typedef struct {
-  size_t off; /* text offset in urlLex.buf (0-terminated there) */
-  int line;   /* physical line of its first character */
+  size_t off;     /* text offset in urlLex.buf (0-terminated there) */
+  int line;       /* physical line of its first character */
+  size_t at, len; /* its place in the source text: [at, at + len), blanks joined at ',' included */
 } urlWord;
 
 /* one statement: a logical line with at least one word */

@@ -105,8 +105,8 @@ static int clean(Clean* cl, const char* text, const char* file, int firstline, c
 }
 
 
-/* append one word [c, c+n) to the lexer */
-static int addword(urlLex* lx, const char* c, size_t n, int line) {
+/* append one word [c, c+n) to the lexer, from source text [at, at + len) */
+static int addword(urlLex* lx, const char* c, size_t n, int line, size_t at, size_t len) {
   if (reserve((void**)&lx->buf, &lx->capbuf, lx->nbuf + n + 1, 1) ||
       reserve_i((void**)&lx->word, &lx->capword, lx->nword + 1, sizeof(urlWord))) {
     return -1;
@@ -115,6 +115,8 @@ static int addword(urlLex* lx, const char* c, size_t n, int line) {
   lx->buf[lx->nbuf + n] = 0;
   lx->word[lx->nword].off = lx->nbuf;
   lx->word[lx->nword].line = line;
+  lx->word[lx->nword].at = at;
+  lx->word[lx->nword].len = len;
   lx->nword++;
   lx->nbuf += n + 1;
   return 0;
@@ -173,7 +175,7 @@ int url_lex(urlLex* lx, const char* text, int src, const char* file, int firstli
       if (lx->nword == first) {
         firstoff = cl.off[start];
       }
-      if (addword(lx, w, n, cl.line[start])) {
+      if (addword(lx, w, n, cl.line[start], cl.off[start], cl.off[i - 1] + 1 - cl.off[start])) {
         snprintf(err, errlen, "%s: out of memory", file);
         rc = -1;
         break;

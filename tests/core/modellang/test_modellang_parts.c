@@ -310,13 +310,39 @@ static void test_split(void** state) {
                       "unique");
 }
 
+/* ur_model_words: the parser's words with their places in the text (what model save edits):
+   comments dropped, a continued line one statement, blanks next to ',' inside one word */
+static void test_words(void** state) {
+  (void)state;
+  const char* text =
+      "# a comment\nparam a 1.5 atm  # why\n\npreset A a=2atm \\\n  b=3\n"
+      "ellipsoid e pos=0, 0.1 ,0\n";
+  urModelWord* w;
+  int n;
+  char err[200];
+  assert_int_equal(ur_model_words(text, &w, &n, err, sizeof err), 0);
+  const char* want[] = {"param",  "a",   "1.5",       "atm", "preset",       "A",
+                        "a=2atm", "b=3", "ellipsoid", "e",   "pos=0, 0.1 ,0"};
+  const int stmt[] = {0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2};
+  assert_int_equal(n, 11);
+  for (int i = 0; i < n; i++) {
+    assert_int_equal(w[i].len, strlen(want[i]));
+    assert_memory_equal(text + w[i].at, want[i], w[i].len);
+    assert_int_equal(w[i].stmt, stmt[i]);
+  }
+  free(w);
+  assert_int_equal(ur_model_words("# nothing\n\n", &w, &n, err, sizeof err), 0);
+  assert_int_equal(n, 0);
+  assert_null(w);
+  assert_int_equal(ur_model_words("param a 1 \\", &w, &n, err, sizeof err), -1);
+  assert_true(!strncmp(err, "model:1: '\\' at the end of the text continues nothing", 50));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_roles_presets),
-      cmocka_unit_test(test_pairs),
-      cmocka_unit_test(test_degree),
-      cmocka_unit_test(test_sources),
-      cmocka_unit_test(test_preset_later_param),
+      cmocka_unit_test(test_words),   cmocka_unit_test(test_roles_presets),
+      cmocka_unit_test(test_pairs),   cmocka_unit_test(test_degree),
+      cmocka_unit_test(test_sources), cmocka_unit_test(test_preset_later_param),
       cmocka_unit_test(test_split),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
