@@ -43,6 +43,12 @@ typedef enum {
   urMEM_FIRE       /* FIRE (Bitzek et al. 2006): velocity mixing, adaptive step */
 } urMemInflate;
 
+typedef enum {
+  urMEM_RELAXED = 0, /* wrinkling by the relaxed energy (tension-field theory): a potential */
+  urMEM_REDUCE       /* the compressive principal stress scaled by re (OpenRadioss LAW19's rule):
+                        no Newton, no potential (uasimpact-model(5), BAGS, wrinkle) */
+} urMemWrinkle;
+
 /* a declared bag (model language 'airbag ... mesh=N'): SI units */
 typedef struct {
   urMemPlan plan;
@@ -57,12 +63,14 @@ typedef struct {
                          carrier (the rigid mount patch, a fixed joint), 0..1 */
   int mesh;        /* rings per panel: 2 + 6 mesh^2 nodes, 12 mesh^2 triangles */
   int inflate;     /* the inflation's relaxation: urMEM_RELAX (default) or urMEM_FIRE */
+  int wrinkle;     /* the wrinkling law: urMEM_RELAXED (default) or urMEM_REDUCE */
   /* fabric (membrane stiffnesses: modulus times thickness) */
   double e1t, e2t; /* warp, weft tensile stiffness, N/m */
   double nu12;     /* Poisson ratio (warp strain -> weft) */
   double g0t, gtt; /* shear stiffness before and after locking, N/m */
   double lock;     /* locking shear angle, rad */
-  double re;       /* share of the taut law kept beside the relaxed (wrinkling) energy, 0..1 */
+  double re;       /* share of the taut law kept beside the relaxed (wrinkling) energy, 0..1;
+                      with urMEM_REDUCE the factor on the compressive principal stress */
   double rhot;     /* areal density, kg/m^2 */
   double damp;     /* material damping: fraction of critical at the element frequency */
   /* gas */

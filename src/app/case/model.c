@@ -811,12 +811,15 @@ void ura_bag_derived(uraCtx* c, FILE* f, uraTable* t) {
                     "; stable step %.3g us: %d sub-step%s per %.3g us step; ", 1e6 * mb->dt_stable,
                     b->nsub, b->nsub > 1 ? "s" : "", 1e6 * m->opt.dt);
       if (b->inflated)
-        snprintf(line + k, sizeof line - k,
-                 "inflated %.4g L at %.6g Pa (gauge %.4g Pa), largest yarn strain %.3g %%",
-                 1e3 * mb->vref, mb->pref, mb->pref - mb->spec.patm, 100 * mb->strain0);
+        k += snprintf(line + k, sizeof line - k,
+                      "inflated %.4g L at %.6g Pa (gauge %.4g Pa), largest yarn strain %.3g %%",
+                      1e3 * mb->vref, mb->pref, mb->pref - mb->spec.patm, 100 * mb->strain0);
       else
+        k += snprintf(line + k, sizeof line - k,
+                      "not inflated yet (when a run first needs it; 'show bag' inflates it)");
+      if (mb->spec.wrinkle == urMEM_REDUCE && k > 0 && (size_t)k < sizeof line)
         snprintf(line + k, sizeof line - k,
-                 "not inflated yet (when a run first needs it; 'show bag' inflates it)");
+                 "; wrinkling by LAW19's reduction (wrinkle=1: faster, no potential)");
     }
     if (t)
       ura_table_note(t, "%s", line);

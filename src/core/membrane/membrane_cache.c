@@ -38,7 +38,7 @@ struct urMemCache {
 //---------------------------------- the key -------------------------------------------------------
 
 /* a field added to urMemSpec must be compared in urm_mem_spec_same (LP64 size) */
-_Static_assert(sizeof(void*) != 8 || sizeof(urMemSpec) == 304,
+_Static_assert(sizeof(void*) != 8 || sizeof(urMemSpec) == 312,
                "urMemSpec changed: update urm_mem_spec_same");
 
 static int dsame(const double* a, const double* b, int n) {
@@ -57,12 +57,13 @@ static int dsame(const double* a, const double* b, int n) {
 
 int urm_mem_spec_same(const urMemSpec* a, const urMemSpec* b) {
   return a->plan == b->plan && a->pattern == b->pattern && a->mesh == b->mesh &&
-         a->inflate == b->inflate && SAME(a) && SAME(b) && SAME(depth) && SAME(top) &&
-         dsame(a->mount, b->mount, 3) && dsame(a->quat, b->quat, 4) && SAME(mount_r) && SAME(e1t) &&
-         SAME(e2t) && SAME(nu12) && SAME(g0t) && SAME(gtt) && SAME(lock) && SAME(re) &&
-         SAME(rhot) && SAME(damp) && SAME(p0) && SAME(patm) && SAME(gamma) && SAME(temp) &&
-         SAME(vent_area) && SAME(vent_cd) && SAME(leak) && SAME(kc_alpha) && SAME(kc_dt) &&
-         SAME(zeta_c) && SAME(mu) && SAME(v_eps) && SAME(dt_factor) && SAME(mscale) && SAME(hstep);
+         a->inflate == b->inflate && a->wrinkle == b->wrinkle && SAME(a) && SAME(b) &&
+         SAME(depth) && SAME(top) && dsame(a->mount, b->mount, 3) && dsame(a->quat, b->quat, 4) &&
+         SAME(mount_r) && SAME(e1t) && SAME(e2t) && SAME(nu12) && SAME(g0t) && SAME(gtt) &&
+         SAME(lock) && SAME(re) && SAME(rhot) && SAME(damp) && SAME(p0) && SAME(patm) &&
+         SAME(gamma) && SAME(temp) && SAME(vent_area) && SAME(vent_cd) && SAME(leak) &&
+         SAME(kc_alpha) && SAME(kc_dt) && SAME(zeta_c) && SAME(mu) && SAME(v_eps) &&
+         SAME(dt_factor) && SAME(mscale) && SAME(hstep);
 }
 
 //---------------------------------- the copy ------------------------------------------------------

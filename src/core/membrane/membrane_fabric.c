@@ -30,6 +30,7 @@ typedef struct {
   double a11, a12, a22; /* and back: E11 = a11 S11 + a12 S22, E22 = a12 S11 + a22 S22 */
   double g0, gt, gl;    /* shear stiffness before and after the lock, sine of the lock angle */
   double re;            /* share of the taut law kept (its compression) */
+  int reduce;           /* wrinkle=1: LAW19's rule in place of the relaxed energy (reduce()) */
   struct {              /* the vector law's constants, each broadcast to 4 lanes */
     urm4 a11, a12, a22, g0, gt, gl, tl, ig0, igt, a12x2, wk0;
   } v;
@@ -40,6 +41,7 @@ static lawk law_constants(const urMemSpec* s) {
   double gmin = 1e-6 * fmax(s->e1t, s->e2t);
   lawk k = {q * s->e1t, q * s->e1t * nu21,  q * s->e2t,         1 / s->e1t,   -s->nu12 / s->e1t,
             1 / s->e2t, fmax(s->g0t, gmin), fmax(s->gtt, gmin), sin(s->lock), s->re};
+  k.reduce = s->wrinkle == urMEM_REDUCE;
   double tl = k.g0 * k.gl;
 #define urmBC(x) ((urm4){x, x, x, x})
   k.v.a11 = urmBC(k.a11);
@@ -233,6 +235,31 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, d
    E22, 2 E12): re times the taut law plus 1 - re times its relaxed energy's gradient (tension
    field: taut, wrinkled or slack, never a compressive principal stress); uw: the triangle's
    warm start (wrinkled(), may be NULL) */
+/* wrinkle=1 (urMEM_REDUCE), OpenRadioss LAW19's rule on a taut stress S that has a compressive
+   principal stress (m, h: the half sum and half difference of S11, S22): both principal stresses
+   compressive, S becomes re S; else the compressive one alone is scaled by re, the principal axes
+   and the tensile one kept: S <- beta (S - p2 I) + p2 I, beta = ((1 - re) m / r + 1 + re) / 2,
+   r = sqrt(h^2 + S12^2), p2 = m + r. No Newton and no warm start; no potential either: the energy
+   density given is the secant 1/2 S:E of the result (at least 0), so an undamped bag's energy
+   balance holds only roughly (uasimpact-model(5), BAGS, wrinkle) */
+static inline void reduce(const lawk* k, const double e[3], double m, double h, double S[3],
+                          double* w) {
+  double re = k->re, r = sqrt(h * h + S[2] * S[2]), p2 = m + r;
+  if (p2 > 0) {
+    double beta = 0.5 * ((1 - re) * m / r + 1 + re);
+    S[0] = beta * (S[0] - p2) + p2;
+    S[1] = beta * (S[1] - p2) + p2;
+    S[2] = beta * S[2];
+  } else {
+    S[0] = re * S[0];
+    S[1] = re * S[1];
+    S[2] = re * S[2];
+  }
+  double wr = 0.5 * (S[0] * e[0] + S[1] * e[1] + S[2] * e[2]);
+  *w = wr > 0 ? wr : 0;
+}
+
+
 static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], double S[3],
                           double* w, double* uw) {
   double ws;
@@ -245,6 +272,10 @@ static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], 
   // taut when the taut stress has no compressive principal stress
   double m = 0.5 * (S[0] + S[1]), h = 0.5 * (S[0] - S[1]);
   if (m >= 0 && m * m >= h * h + S[2] * S[2]) {
+    return;
+  }
+  if (k->reduce) {
+    reduce(k, e, m, h, S, w);
     return;
   }
   double Sr[3] = {0, 0, 0}, wr = 0;
@@ -328,6 +359,22 @@ AI urm4 shear4(const lawk* k, urm4 g, urm4* w) {
   urm4 sk = copysign4(bc4(k->g0 * gl) + bc4(k->gt) * d, g);
   *w = sel4(lin, wl, wk);
   return sel4(lin, sl, sk);
+}
+
+/* reduce() over the lanes of mask act (the others kept), each lane reduce()'s operations */
+AI void reduce4(const lawk* k, const urm4 e[3], urm4i act, urm4 m, urm4 h, urm4 S[3], urm4* w) {
+  urm4 re = bc4(k->re), r = sqrt4(h * h + S[2] * S[2]), p2 = m + r;
+  urm4i one = p2 > bc4(0); /* one principal stress compressive: r > 0 there */
+  urm4 beta = bc4(0.5) * ((bc4(1) - re) * m / r + bc4(1) + re);
+  urm4 S0 = sel4(one, beta * (S[0] - p2) + p2, re * S[0]);
+  urm4 S1 = sel4(one, beta * (S[1] - p2) + p2, re * S[1]);
+  urm4 S2 = sel4(one, beta * S[2], re * S[2]);
+  urm4 wr = bc4(0.5) * (S0 * e[0] + S1 * e[1] + S2 * e[2]);
+  wr = sel4(wr > bc4(0), wr, bc4(0));
+  S[0] = sel4(act, S0, S[0]);
+  S[1] = sel4(act, S1, S[1]);
+  S[2] = sel4(act, S2, S[2]);
+  *w = sel4(act, wr, *w);
 }
 
 /* 1 where any lane of the mask is set; 1 where every lane is. A mask's lanes are all ones or
@@ -601,6 +648,10 @@ AI void stress4(const urMemSpec* s, const lawk* k, const urm4 e[3], urm4 S[3], u
   if (!any4(~taut)) {
     return;
   }
+  if (k->reduce) {
+    reduce4(k, e, ~taut, m, h, S, w);
+    return;
+  }
   urm4i slow = ~taut;
   if (uw) {
     urm4 me = bc4(0.5) * (e[0] + e[1]), he = bc4(0.5) * (e[0] - e[1]);
@@ -718,6 +769,10 @@ AI void stress4_chunk(const urMemSpec* s, const lawk* k, int nb, const urm4 (*e)
     urm4 m = bc4(0.5) * (Sq[0] + Sq[1]), h = bc4(0.5) * (Sq[0] - Sq[1]);
     urm4i taut = (m >= bc4(0)) & (m * m >= h * h + Sq[2] * Sq[2]);
     if (!any4(~taut)) {
+      continue;
+    }
+    if (k->reduce) {
+      reduce4(k, eq, ~taut, m, h, Sq, &w[q]);
       continue;
     }
     urm4 me = bc4(0.5) * (eq[0] + eq[1]), he = bc4(0.5) * (eq[0] - eq[1]);

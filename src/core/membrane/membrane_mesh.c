@@ -56,6 +56,8 @@ int ur_mem_spec_check(const urMemSpec* s, char* err, size_t n) {
     what = "mesh (rings per panel) must be in 2..64";
   } else if (s->inflate != urMEM_RELAX && s->inflate != urMEM_FIRE) {
     what = "inflate must be 0 (relax: kinetic damping) or 1 (fire)";
+  } else if (s->wrinkle != urMEM_RELAXED && s->wrinkle != urMEM_REDUCE) {
+    what = "wrinkle must be 0 (relaxed energy) or 1 (reduce: the compressive stress scaled by re)";
   } else if (!(s->mount_r >= 0 && s->mount_r < 1)) {
     what = "mount_r must be in [0, 1)";
   } else if (!(s->e1t > 0 && s->e2t > 0 && s->rhot > 0)) {

@@ -190,6 +190,7 @@ static int membrane_keys(Parser* p, const Bound* b, urAirbag* bag) {
   }
   s->mesh = (int)url_num(b, "mesh", s->mesh);
   s->inflate = (int)url_num(b, "inflate", s->inflate);
+  s->wrinkle = (int)url_num(b, "wrinkle", s->wrinkle);
   s->depth = url_num(b, "depth", s->depth);
   s->top = url_num(b, "top", s->top);
   s->mount_r = url_num(b, "mount_r", s->mount_r);

@@ -85,6 +85,10 @@ check show_derived has "$TMP/out" '^# derived, membrane bag_bottom: 152 nodes, 3
 check params_who has "$TMP/out" '^bag_e1t  *132000 N/m  (model)$'
 run -c "$A; set bag_mscale 0; show bag"
 check show_unscaled has "$TMP/out" '^# derived, membrane bag_bottom: 152 nodes, 300 triangles, 19 mount nodes, fabric 0.226 kg; stable step 46.2 us: 2 sub-steps'
+# the faster wrinkling law says so, the default says nothing (uasimpact-model(5), BAGS, wrinkle)
+run -c "$A; show bag; set bag_wrinkle 1; show bag"
+check show_wrinkle has "$TMP/out" '^# derived, membrane bag_bottom: 152 nodes, .*largest yarn strain .*; wrinkling by LAW19.s reduction (wrinkle=1: faster, no potential)$'
+check show_wrinkle_once cond '[ "$(grep -c "wrinkling by" "$TMP/out")" -eq 1 ] && has "$TMP/out" "^bag_wrinkle  *1$"'
 run -c 'case A; set bag_model analytic; show bag'
 check show_analytic has "$TMP/out" '^# derived, airbag bag_bottom: analytic uniform-pressure bag (bag_model analytic: fast, less faithful'
 # A2's front bag is a membrane too

@@ -138,13 +138,13 @@ static const size_t dfield[] = {
 /* any one field changed misses (by one ulp for a double; 0 and -0 differ); the spec itself hits */
 static void test_field_miss(void** state) {
   assert_true(sizeof(void*) != 8 ||
-              NDF * sizeof(double) + 3 * sizeof(int) + 4 /* padding after mesh */ ==
+              NDF * sizeof(double) + 5 * sizeof(int) + 4 /* padding after wrinkle */ ==
                   sizeof(urMemSpec));
   urMemSpec s = small(1.05 * 101325);
   urMemCache* c = urm_memcache_new_sized(64, 10000000); /* room for every variant */
   ur_mem_free(get(c, &s));
   long miss = 1;
-  for (size_t k = 0; k < NDF + 4; k++) {
+  for (size_t k = 0; k < NDF + 6; k++) {
     urMemSpec t = s;
     if (k < NDF) {
       double* v = (double*)((char*)&t + dfield[k]);
@@ -155,6 +155,10 @@ static void test_field_miss(void** state) {
       t.plan = urMEM_RECT;
     } else if (k == NDF + 2) {
       t.pattern = urMEM_FLAT;
+    } else if (k == NDF + 3) {
+      t.inflate = !t.inflate;
+    } else if (k == NDF + 4) {
+      t.wrinkle = !t.wrinkle;
     } else {
       assert_true(s.top == 0 && !signbit(s.top)); /* the default: a flat top */
       t.top = -0.0;

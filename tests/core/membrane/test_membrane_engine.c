@@ -20,6 +20,7 @@
 #include "../../../src/core/engine/engine_internal.h"
 
 static const double R = 0.0875, ATM = 101325;
+static int wrinkle_law = urMEM_RELAXED; /* the bags' wrinkling law (test_energy_reduce: 1) */
 
 /* a pillow bag hanging from a fixed body; a free sphere of 4.5 kg below it; the penalty
    kc_alpha (0: the default), the step dt */
@@ -43,6 +44,7 @@ static urModel* bagmodel_dt(int damped, double alpha, double dt) {
   s->a = s->b = 0.2;
   s->depth = 0.15;
   s->mesh = 4;
+  s->wrinkle = wrinkle_law;
   s->p0 = 1.1 * ATM;
   s->patm = ATM;
   if (alpha > 0) {
@@ -149,6 +151,25 @@ static void test_energy_damped(void** state) {
   assert_true(hi <= 1e-3);
   assert_true(vend > -4);
   ur_model_free(m);
+}
+
+
+/* wrinkle=1, LAW19's reduction, has no potential: its energy balance holds only roughly. Measured
+   on this drop: undamped -0.07 .. +1.06 % of KE0 (the relaxed law: 0 .. +0.10 %), damped -2.05 ..
+   +0.49 % (the relaxed law never gains: <= 0). Bounds 2 % and 1 %: a regression guard and the
+   man page's numbers (uasimpact-model(5), BAGS, wrinkle) */
+static void test_energy_reduce(void** state) {
+  wrinkle_law = urMEM_REDUCE;
+  urModel* m = bagmodel(0);
+  double lo, hi, lo1, hi1, vend, vend1;
+  drop(m, 4, &lo, &hi, &vend);
+  ur_model_free(m);
+  m = bagmodel(1);
+  drop(m, 4, &lo1, &hi1, &vend1);
+  ur_model_free(m);
+  wrinkle_law = urMEM_RELAXED;
+  assert_true(hi < 0.02 && lo > -0.02 && vend < -1);
+  assert_true(hi1 < 0.01 && vend1 > -4);
 }
 
 
@@ -490,9 +511,9 @@ static void test_plates(void** state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_energy_undamped), cmocka_unit_test(test_energy_damped),
-      cmocka_unit_test(test_energy_stiff),    cmocka_unit_test(test_layer_penalty),
-      cmocka_unit_test(test_grip_dt),         cmocka_unit_test(test_lanes_bitwise),
-      cmocka_unit_test(test_plates),
+      cmocka_unit_test(test_energy_reduce),   cmocka_unit_test(test_energy_stiff),
+      cmocka_unit_test(test_layer_penalty),   cmocka_unit_test(test_grip_dt),
+      cmocka_unit_test(test_lanes_bitwise),   cmocka_unit_test(test_plates),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -390,46 +390,105 @@ static double uni(unsigned long long* r, double lo, double hi) {
 }
 
 
-static void test_stress4_bitwise(void** state) {
-  // the force pass's vector law gives every lane the scalar law's bits, in each of its regimes:
-  // taut, wrinkled, slack, shear before and after the lock (of both signs), no strain
+/* wrinkle=1 (LAW19's reduction) against its closed forms: uniaxial warp tension with the weft
+   squeezed keeps the tensile principal stress and scales the compressive one by re (axes kept);
+   biaxial compression is re times the taut law, biaxial tension the taut law; on random strains the
+   principal axes and the tensile principal stress are the taut law's and the compressive one re
+   times it (1e-9 relative) */
+static void test_reduce_law(void** state) {
   urMemSpec s;
   ur_mem_spec_default(&s);
-  double nu21 = s.nu12 * s.e2t / s.e1t, q = 1 / (1 - s.nu12 * nu21), gl = sin(s.lock);
-  unsigned long long r = 12345;
-  int seen[3] = {0, 0, 0}, locked = 0, lin = 0;
-  for (int it = 0; it < 4000; it++) {
-    double e[12], S4[12], w4[4];
-    for (int l = 0; l < 4; l++) {
-      e[l] = uni(&r, -0.02, 0.03);
-      e[4 + l] = uni(&r, -0.02, 0.03);
-      e[8 + l] = uni(&r, -1, 1) * (it % 2 ? 1 : 0.1);
-    }
-    if (it == 0) {
-      e[0] = e[4] = e[8] = 0;
-    }
-    urm_fabric_stress4(&s, e, S4, w4);
-    for (int l = 0; l < 4; l++) {
-      double el[3] = {e[l], e[4 + l], e[8 + l]}, S[3], w;
-      urm_fabric_stress(&s, el, S, &w);
-      for (int j = 0; j < 3; j++) {
-        assert_memory_equal(&S[j], &S4[4 * j + l], sizeof(double));
-      }
-      assert_memory_equal(&w, &w4[l], sizeof(double));
-      // the regime of the taut law's principal stresses
-      double s1 = q * s.e1t * (el[0] + nu21 * el[1]), s2 = q * s.e2t * (el[1] + s.nu12 * el[0]);
-      double ag = fabs(el[2]);
-      double s3 = ag <= gl ? s.g0t * ag : s.g0t * gl + s.gtt * (ag - gl);
-      double m = 0.5 * (s1 + s2), h = 0.5 * (s1 - s2), rr = sqrt(h * h + s3 * s3);
-      seen[m + rr <= 0 ? 2 : m - rr < 0 ? 1 : 0]++;
-      if (fabs(el[2]) > gl) {
-        locked++;
-      } else {
-        lin++;
-      }
+  s.wrinkle = urMEM_REDUCE;
+  double S[3], T[3], w, re = s.re;
+  double e[3] = {0.01, -0.01, 0};
+  urm_fabric_stress(&s, e, S, &w);
+  taut(&s, e, T);
+  assert_true(T[0] > 0 && T[1] < 0);
+  assert_true(fabs(S[0] - T[0]) < 1e-9 * T[0]);
+  assert_true(fabs(S[1] - re * T[1]) < 1e-9 * fabs(T[1]));
+  assert_true(fabs(S[2]) < 1e-9 * T[0]);
+  assert_true(fabs(w - 0.5 * (S[0] * e[0] + S[1] * e[1])) < 1e-9 * w);
+  double c[3] = {-0.01, -0.02, 0.001};
+  urm_fabric_stress(&s, c, S, &w);
+  taut(&s, c, T);
+  for (int k = 0; k < 3; k++) {
+    assert_true(fabs(S[k] - re * T[k]) < 1e-9 * fabs(T[0]));
+  }
+  double t[3] = {0.01, 0.02, 0};
+  urm_fabric_stress(&s, t, S, &w);
+  taut(&s, t, T);
+  for (int k = 0; k < 3; k++) {
+    assert_memory_equal(&S[k], &T[k], sizeof(double));
+  }
+  unsigned long long r = 4242;
+  int mixed = 0;
+  for (int it = 0; it < 2000; it++) {
+    double el[3] = {uni(&r, -0.02, 0.03), uni(&r, -0.02, 0.03), uni(&r, -0.3, 0.3)};
+    urm_fabric_stress(&s, el, S, &w);
+    taut(&s, el, T);
+    double m = 0.5 * (T[0] + T[1]), h = 0.5 * (T[0] - T[1]), rr = sqrt(h * h + T[2] * T[2]);
+    double p1 = m - rr, p2 = m + rr, sc = fabs(p1) + fabs(p2) + 1e-12;
+    double ms = 0.5 * (S[0] + S[1]), hs = 0.5 * (S[0] - S[1]), rs = sqrt(hs * hs + S[2] * S[2]);
+    double q1 = ms - rs, q2 = ms + rs;
+    assert_true(w >= 0);
+    if (p1 >= 0) { /* taut: the taut law */
+      for (int k = 0; k < 3; k++) assert_true(fabs(S[k] - T[k]) < 1e-9 * sc);
+    } else if (p2 <= 0) { /* both compressive */
+      for (int k = 0; k < 3; k++) assert_true(fabs(S[k] - re * T[k]) < 1e-9 * sc);
+    } else { /* the tensile principal stress kept, the compressive one times re, same axes */
+      mixed++;
+      assert_true(fabs(q2 - p2) < 1e-9 * sc && fabs(q1 - re * p1) < 1e-9 * sc);
+      assert_true(fabs(hs * T[2] - h * S[2]) < 1e-9 * sc * sc);
     }
   }
-  assert_true(seen[0] > 100 && seen[1] > 100 && seen[2] > 100 && locked > 100 && lin > 100);
+  assert_true(mixed > 200);
+}
+
+
+static void test_stress4_bitwise(void** state) {
+  // the force pass's vector law gives every lane the scalar law's bits, in each of its regimes:
+  // taut, wrinkled, slack, shear before and after the lock (of both signs), no strain; for the
+  // relaxed law and for wrinkle=1's reduction
+  for (int law = 0; law < 2; law++) {
+    urMemSpec s;
+    ur_mem_spec_default(&s);
+    s.wrinkle = law;
+    double nu21 = s.nu12 * s.e2t / s.e1t, q = 1 / (1 - s.nu12 * nu21), gl = sin(s.lock);
+    unsigned long long r = 12345;
+    int seen[3] = {0, 0, 0}, locked = 0, lin = 0;
+    for (int it = 0; it < 4000; it++) {
+      double e[12], S4[12], w4[4];
+      for (int l = 0; l < 4; l++) {
+        e[l] = uni(&r, -0.02, 0.03);
+        e[4 + l] = uni(&r, -0.02, 0.03);
+        e[8 + l] = uni(&r, -1, 1) * (it % 2 ? 1 : 0.1);
+      }
+      if (it == 0) {
+        e[0] = e[4] = e[8] = 0;
+      }
+      urm_fabric_stress4(&s, e, S4, w4);
+      for (int l = 0; l < 4; l++) {
+        double el[3] = {e[l], e[4 + l], e[8 + l]}, S[3], w;
+        urm_fabric_stress(&s, el, S, &w);
+        for (int j = 0; j < 3; j++) {
+          assert_memory_equal(&S[j], &S4[4 * j + l], sizeof(double));
+        }
+        assert_memory_equal(&w, &w4[l], sizeof(double));
+        // the regime of the taut law's principal stresses
+        double s1 = q * s.e1t * (el[0] + nu21 * el[1]), s2 = q * s.e2t * (el[1] + s.nu12 * el[0]);
+        double ag = fabs(el[2]);
+        double s3 = ag <= gl ? s.g0t * ag : s.g0t * gl + s.gtt * (ag - gl);
+        double m = 0.5 * (s1 + s2), h = 0.5 * (s1 - s2), rr = sqrt(h * h + s3 * s3);
+        seen[m + rr <= 0 ? 2 : m - rr < 0 ? 1 : 0]++;
+        if (fabs(el[2]) > gl) {
+          locked++;
+        } else {
+          lin++;
+        }
+      }
+    }
+    assert_true(seen[0] > 100 && seen[1] > 100 && seen[2] > 100 && locked > 100 && lin > 100);
+  }
 }
 
 
@@ -535,13 +594,15 @@ static void test_forces_bitwise(void** state) {
   // the force pass (4 triangles at a time, sums and nodal forces in triangle order) against the
   // one-triangle-at-a-time reference, bit for bit: a bag stretched, squeezed and sheared at
   // random (every regime of the law), moving at random, with damping and without; the first
-  // evaluation cold, the next ones warm-started from the previous random state's solution
-  for (int damp = 0; damp < 2; damp++) {
+  // evaluation cold, the next ones warm-started from the previous random state's solution; the
+  // relaxed law, then wrinkle=1's reduction (with damping)
+  for (int damp = 0; damp < 3; damp++) {
     urMemSpec s;
     char err[200];
     ur_mem_spec_default(&s);
     s.mesh = 3;
     s.damp = damp ? 0.05 : 0;
+    s.wrinkle = damp == 2 ? urMEM_REDUCE : urMEM_RELAXED;
     urMembrane* mb = ur_mem_build(&s, err, sizeof err);
     assert_non_null(mb);
     int nn = mb->nn;
@@ -637,19 +698,13 @@ static void test_warm_start(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_mesh_closed),
-      cmocka_unit_test(test_mesh_shape),
-      cmocka_unit_test(test_laplace_sphere),
-      cmocka_unit_test(test_tension_field),
-      cmocka_unit_test(test_relaxed_law),
-      cmocka_unit_test(test_force_gradient),
-      cmocka_unit_test(test_shear_lock),
-      cmocka_unit_test(test_gas_law),
-      cmocka_unit_test(test_vent_flow),
-      cmocka_unit_test(test_stress4_bitwise),
-      cmocka_unit_test(test_stress4_warm_bitwise),
-      cmocka_unit_test(test_forces_bitwise),
-      cmocka_unit_test(test_warm_start),
+      cmocka_unit_test(test_mesh_closed),     cmocka_unit_test(test_mesh_shape),
+      cmocka_unit_test(test_laplace_sphere),  cmocka_unit_test(test_tension_field),
+      cmocka_unit_test(test_relaxed_law),     cmocka_unit_test(test_force_gradient),
+      cmocka_unit_test(test_shear_lock),      cmocka_unit_test(test_gas_law),
+      cmocka_unit_test(test_vent_flow),       cmocka_unit_test(test_reduce_law),
+      cmocka_unit_test(test_stress4_bitwise), cmocka_unit_test(test_stress4_warm_bitwise),
+      cmocka_unit_test(test_forces_bitwise),  cmocka_unit_test(test_warm_start),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
