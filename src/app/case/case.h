@@ -125,9 +125,11 @@ typedef struct {
 /* one part of the model set (human, ra3, airbags, sim, or loaded from a file) */
 typedef struct {
   char name[urNAMELEN];
-  char* text;       /* owned */
-  char origin[256]; /* "built-in" or the file it came from */
-  int line;         /* line of the origin where the part starts */
+  char* text;                          /* owned */
+  char origin[256];                    /* "built-in" or the file it came from */
+  int line;                            /* line of the origin where the part starts */
+  char group[uraMAXPARTS * urNAMELEN]; /* every part its load brought, in the text's order,
+                                          ' '-separated: save session drops those gone since */
 } uraPart;
 
 /* the last grid with the conditions it was computed (or loaded) for */

@@ -135,6 +135,13 @@ static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const ch
   if (n < 0) return ura_fail(c, "%s", err);
   if (n > uraMAXPARTS) return ura_fail(c, "%s: more than %d parts", file, uraMAXPARTS);
   if (n == 0) return ura_fail(c, "%s: no model text", file);
+  char group[uraMAXPARTS * urNAMELEN];
+  size_t gl = 0;
+  group[0] = 0;
+  for (int k = 0; k < n; k++) { /* at most uraMAXPARTS names of urNAMELEN - 1 and a blank */
+    gl += (size_t)snprintf(group + gl, sizeof group - gl, "%s%.*s", k ? " " : "",
+                           (int)urNAMELEN - 1, sp[k].name);
+  }
   for (int k = 0; k < n; k++) {
     int at = -1;
     for (int i = 0; i < *nn; i++) {
@@ -153,6 +160,7 @@ static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const ch
     free(np[at].text);
     np[at].text = t;
     snprintf(np[at].origin, sizeof np[at].origin, "%s", origin);
+    memcpy(np[at].group, group, gl + 1);
     np[at].line = sp[k].line;
   }
   return 0;
@@ -627,7 +635,37 @@ const char* ura_model_origin_at(const char* at, const char* origin, char* buf, s
   return memcpy(buf, name, strlen(name) + 1);
 }
 
-/* the model parts of a session: the built-in parts it lacks dropped, the loaded ones loaded */
+/* is there a part of that name in the model set */
+static int has_part(const uraCtx* c, const char* name, size_t n) {
+  for (int i = 0; i < c->npart; i++) {
+    if (strlen(c->part[i].name) == n && !strncmp(c->part[i].name, name, n)) return 1;
+  }
+  return 0;
+}
+
+/* after the load of a file: its parts that are no longer in the model set (dropped since, and
+   not brought back by another load), dropped in turn, the last first (later parts may use
+   earlier ones), so that the replay holds what the session held (a file of two drones' parts
+   loaded whole would not compile beside a second drone) */
+static void write_drops(const uraCtx* c, const char* group, FILE* f) {
+  const char* w[uraMAXPARTS];
+  size_t len[uraMAXPARTS];
+  int nw = 0;
+  for (const char* p = group; *p && nw < uraMAXPARTS;) {
+    size_t n = strcspn(p, " ");
+    w[nw] = p;
+    len[nw++] = n;
+    p += n;
+    p += strspn(p, " ");
+  }
+  for (int k = nw - 1; k >= 0; k--) {
+    if (!has_part(c, w[k], len[k]))
+      fprintf(f, "model drop %.*s   # a part of that file, dropped later\n", (int)len[k], w[k]);
+  }
+}
+
+/* the model parts of a session: the built-in parts it lacks dropped, the loaded ones loaded (and
+   the parts of a loaded file that were dropped since, dropped again) */
 void ura_model_write_parts(uraCtx* c, FILE* f) {
   int nb = 0;
   while (builtin_order[nb]) nb++;
@@ -650,6 +688,7 @@ void ura_model_write_parts(uraCtx* c, FILE* f) {
     fprintf(f, "   # part%s %s", n > 1 ? "s" : "", c->part[i].name);
     for (int k = 1; k < n; k++) fprintf(f, ", %s", c->part[i + k].name);
     fputc('\n', f);
+    write_drops(c, c->part[i].group, f);
     i += n - 1;
   }
 }

@@ -48,6 +48,21 @@ in_tmp -c 'source s.ses; set format csv; impact 0 0'
 check session_replays cond '[ "$RC" -eq 0 ] && [ "$(grep "^0,0," "$TMP/out")" = "$(grep "^0,0," "$TMP/live" | head -n 1)" ]'
 [ "$RC" -eq 0 ] || cat "$TMP/err"
 
+# a file loaded whole and then replaced in part: its RA3 and airbags dropped, a quad loaded (one
+# model has one drone). The session drops them again after the file's load, the last first, and
+# replays to the same parts (before: it loaded the file whole, then failed on the second drone)
+Q="$PWD/sessions/quad/quad.urm"
+in_tmp -c "model save w.urm; model load w.urm; model drop airbags; model drop ra3; model load '$Q'; save session q.ses"
+check drops_written cond '[ "$RC" -eq 0 ] && grep -A2 "^model load .w.urm.   # parts human, sim$" "$TMP/q.ses" |
+  tr "\n" "|" | grep -qx "model load .w.urm.   # parts human, sim|model drop airbags   # a part of that file, dropped later|model drop ra3   # a part of that file, dropped later|"'
+in_tmp -c 'source q.ses; model parts'
+check drops_replay cond '[ "$RC" -eq 0 ] && [ ! -s "$TMP/err" ] &&
+  [ "$(awk "{print \$1}" "$TMP/out" | tr "\n" " ")" = "human sim quad " ]'
+[ "$RC" -eq 0 ] || cat "$TMP/err"
+# a part dropped and brought back by another file is not dropped again
+in_tmp -c "model save w.urm; model load w.urm; model drop airbags; model load w.urm; save session r.ses"
+check drops_none cond '[ "$RC" -eq 0 ] && ! grep -q "^model drop airbags   #" "$TMP/r.ses"'
+
 # a parameter that follows another (bag_a: $frame_a) set: its line gets the number; set mass
 # writes the drone's mass parameter (drone_mass), the descent's mass is the session's
 in_tmp -c 'set bag_a 0.3 m; set mass 12; model save f.urm'
