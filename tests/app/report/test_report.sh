@@ -77,6 +77,11 @@ q() { awk -v c="$1" -v s="$2" -v k="$3" 'NF == 11 && $1 == c && $6 == s && ++n =
 check table17_paper_only cond '[ "$RC" -eq 0 ] && [ -n "$(q B 0.3 1)" ] && [ "$(q B 0.3 1)" != "$(q B 0.3 2)" ] &&
   [ "$(t17 B 10)" = "$(q B 0.3 1)" ] && [ "$(t17 A 0)" = "$(q A 0.3 1)" ] && [ "$(t17 A 4)" != none ] &&
   [ "$(t17 A 10)" = none ]'
+# its step column: a grid's own, and a sweep's (whose rows have no step: the settings it ran
+# under; it was empty before)
+t17step() { tr -d '\n' <"$TMP/t17.html" | grep -o "<tr><td>$1</td><td>$2</td>\(<td>[^<]*</td>\)\{5\}" |
+  sed 's/.*<td>//; s/<.td>$//'; }
+check table17_step cond '[ "$(t17step B 10)" = 0.3 ] && [ "$(t17step A 0)" = 0.3 ] && [ "$(t17step A 4)" = 0.3 ]'
 # nothing computed: a report that says so
 run -c "report $TMP/empty.html"
 check empty cond '[ "$RC" -eq 0 ] && grep -q "The session computed no result" "$TMP/empty.html" &&
