@@ -8,6 +8,8 @@
  * or slack, never a compressive principal stress, and its stress is exactly dW_r/dE, so the
  * undamped bag conserves energy; a share RE of the taut law is kept (a potential too),
  * stiffness-proportional material damping; and the uniform gas pressure on every triangle.
+ * wrinkle=1 replaces the relaxed energy by OpenRadioss LAW19's rule (reduce(): the compressive
+ * principal stress scaled by re; faster, no potential).
  * Sources: materials-membrane sheet C.1, C.2, A.3, C.3. */
 #include <math.h>
 #include <stdint.h>
@@ -231,10 +233,6 @@ static void wrinkled(const lawk* k, const double e[3], double S[3], double* w, d
 }
 
 
-/* the fabric's stress resultant S (S11, S22, S12) and energy density *w at Green strain e (E11,
-   E22, 2 E12): re times the taut law plus 1 - re times its relaxed energy's gradient (tension
-   field: taut, wrinkled or slack, never a compressive principal stress); uw: the triangle's
-   warm start (wrinkled(), may be NULL) */
 /* wrinkle=1 (urMEM_REDUCE), OpenRadioss LAW19's rule on a taut stress S that has a compressive
    principal stress (m, h: the half sum and half difference of S11, S22): both principal stresses
    compressive, S becomes re S; else the compressive one alone is scaled by re, the principal axes
@@ -260,6 +258,10 @@ static inline void reduce(const lawk* k, const double e[3], double m, double h, 
 }
 
 
+/* the fabric's stress resultant S (S11, S22, S12) and energy density *w at Green strain e (E11,
+   E22, 2 E12): re times the taut law plus 1 - re times its relaxed energy's gradient (tension
+   field: taut, wrinkled or slack, never a compressive principal stress), or with wrinkle=1 the
+   taut law reduced (reduce()); uw: the triangle's warm start (wrinkled(), may be NULL) */
 static inline void stress(const urMemSpec* s, const lawk* k, const double e[3], double S[3],
                           double* w, double* uw) {
   double ws;
