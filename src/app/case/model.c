@@ -141,6 +141,7 @@ static int parts_add(uraCtx* c, uraPart* np, int* nn, const char* text, const ch
   for (int k = 0; k < n; k++) { /* at most uraMAXPARTS names of urNAMELEN - 1 and a blank */
     gl += (size_t)snprintf(group + gl, sizeof group - gl, "%s%.*s", k ? " " : "",
                            (int)urNAMELEN - 1, sp[k].name);
+    if (gl >= sizeof group) gl = sizeof group - 1; /* cannot happen (the bound above); kept in */
   }
   for (int k = 0; k < n; k++) {
     int at = -1;
