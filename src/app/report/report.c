@@ -639,27 +639,6 @@ static int paper_columns(const uraRepTable* t) {
   return 1;
 }
 
-/* the step of a table's row: its own column, else (a sweep's rows) the step of the settings it
-   ran under ('show': "step <value> m"), in buf; "" when neither says */
-static const char* row_step(const uraReport* r, const uraRepTable* t, int row, char* buf,
-                            size_t n) {
-  const char* st = cell(t, row, "step");
-  if (st) return st;
-  buf[0] = 0;
-  if (t->settings < 0 || t->settings >= r->nset) return buf;
-  for (const char* p = r->settings[t->settings]; p && *p;
-       p = strchr(p, '\n') ? strchr(p, '\n') + 1 : NULL) {
-    double v;
-    char unit[8];
-    if (sscanf(p, "step %lf %7s", &v, unit) == 2 && !strcmp(unit, "m")) {
-      snprintf(buf, n, "%.*s", (int)strcspn(p + 4 + strspn(p + 4, " "), " \n"),
-               p + 4 + strspn(p + 4, " "));
-      break;
-    }
-  }
-  return buf;
-}
-
 static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
   xmlNodePtr s = section(body, "validity", "5. Model validity");
   el(s, "h3", "5.1 The paper's Table 17 beside this session's grids");
@@ -682,7 +661,7 @@ static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
   double wind, q, basis;
   for (int k = 0; ura_report_table17(k, &cn, &wind, &q, &basis) == 0; k++) {
     const char *ours = NULL, *step = "";
-    char sbuf[32];
+    char sbuf[32]; /* a sweep's rows: the step it ran with */
     for (int i = 0; i < r->nt; i++) {
       const uraRepTable* t = &r->t[i];
       if (strcmp(t->name, "grid") && strcmp(t->name, "sweep")) continue;
@@ -693,7 +672,11 @@ static void validity(uraCtx* c, xmlNodePtr body, const uraReport* r) {
         if (!tc || !tw || !tf || !tq || strcmp(tc, cn) || atof(tw) != wind || atof(tf) != 0)
           continue;
         ours = tq;
-        step = row_step(r, t, row, sbuf, sizeof sbuf);
+        step = cell(t, row, "step");
+        if (!step) {
+          snprintf(sbuf, sizeof sbuf, "%g", t->step);
+          step = sbuf;
+        }
       }
     }
     tr = el(tb, "tr", NULL);

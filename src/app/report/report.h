@@ -23,6 +23,7 @@ typedef struct {
   int grid;     /* index of the grid kept with it, or -1 */
   int failed;   /* the command failed after printing it */
   int paper;    /* it ran at the paper's conditions but for case, wind, face, step (Table 17) */
+  double step;  /* the grid pitch it ran with, m (a sweep's rows carry none of their own) */
 } uraRepTable;
 
 /* one kept grid with its conditions */

@@ -261,6 +261,7 @@ void ura_report_table(uraCtx* c, const uraTable* tab) {
   }
   t->settings = r->nset - 1;
   t->paper = paper_state(c);
+  t->step = c->st.step;
   t->grid = -1;
   r->nt++;
 }
