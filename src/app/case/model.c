@@ -660,8 +660,12 @@ static void write_drops(const uraCtx* c, const char* group, FILE* f) {
     p += strspn(p, " ");
   }
   for (int k = nw - 1; k >= 0; k--) {
-    if (!has_part(c, w[k], len[k]))
-      fprintf(f, "model drop %.*s   # a part of that file, dropped later\n", (int)len[k], w[k]);
+    if (has_part(c, w[k], len[k])) continue;
+    if (len[k])
+      fprintf(f, "model drop %.*s", (int)len[k], w[k]);
+    else
+      fprintf(f, "model drop ''"); /* the file's unnamed part (text before its first part line) */
+    fprintf(f, "   # a part of that file, dropped later\n");
   }
 }
 

@@ -59,6 +59,12 @@ in_tmp -c 'source q.ses; model parts'
 check drops_replay cond '[ "$RC" -eq 0 ] && [ ! -s "$TMP/err" ] &&
   [ "$(awk "{print \$1}" "$TMP/out" | tr "\n" " ")" = "human sim quad " ]'
 [ "$RC" -eq 0 ] || cat "$TMP/err"
+# a file's unnamed part (the text before its first part line), dropped: dropped again as ''
+printf 'param extra_q 1 m\npart extra2\nparam extra_r 2 m\n' >"$TMP/np2.urm"
+in_tmp -c "model load np2.urm; model drop ''; save session u.ses"
+check drops_unnamed cond '[ "$RC" -eq 0 ] && grep -qx "model drop '"''"'   # a part of that file, dropped later" "$TMP/u.ses"'
+in_tmp -c 'source u.ses; model parts'
+check drops_unnamed_replay cond '[ "$RC" -eq 0 ] && [ "$(awk "NF == 1" "$TMP/out" | wc -l)" -eq 0 ] && grep -q "^extra2 " "$TMP/out"'
 # a part dropped and brought back by another file is not dropped again
 in_tmp -c "model save w.urm; model load w.urm; model drop airbags; model load w.urm; save session r.ses"
 check drops_none cond '[ "$RC" -eq 0 ] && ! grep -q "^model drop airbags   #" "$TMP/r.ses"'
